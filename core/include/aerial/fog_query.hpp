@@ -1,0 +1,104 @@
+// aerial/fog_query.hpp — fog along a segment, on the CPU, for transparent
+// objects (which cannot read the fogged depth buffer; Wenzel 2006).
+//
+// Usage:
+//   aerial::FogSceneDesc desc;
+//   desc.heightFog = fog;  desc.volumes = volumes;  desc.emitters = emitters;
+//   desc.lights[0] = {sunDir, sunIlluminance, sky.horizonRayleigh, sky.horizonMie};
+//   aerial::FogScene scene(desc);                    // builds the BVH once
+//   aerial::FogQueryResult r = scene.query(camera, glassPane);
+//   // shade the pane: L = L_pane * r.transmittance + r.inScatter
+//
+// Compositing (the contract the renderer follows too):
+//   1. global fog over the whole segment:
+//        L <- L T_g + L_fog(v) (1 - T_g)
+//   2. every fog volume the segment crosses, back to front (by the entry
+//      distance of its clipped segment, farthest first; ties by index):
+//        L <- L T_v + C_v(v) (1 - T_v)
+//      where C_v is the volume's colour (see FogColourMode);
+//   3. every emitter adds its closed-form in-scatter (additive, on top).
+//   The result is affine in the scene radiance: L = L_scene T + S.
+// Volumes are found through a bounding-volume hierarchy over their world
+// bounds, so a query costs O(log n + crossed volumes).
+#pragma once
+
+#include <aerial/emitter.hpp>
+#include <aerial/fog_volume.hpp>
+#include <aerial/height_fog.hpp>
+
+#include <glm/vec3.hpp>
+
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+namespace aerial {
+
+/// A light that colours fog through the sky's horizon averages.
+struct FogLight {
+    glm::dvec3 direction{0.0, 1.0, 0.0};  ///< unit, from the scene to the light
+    glm::dvec3 illuminance{0.0};          ///< E, RGB (0 turns the light off)
+    glm::dvec3 horizonRayleigh{0.0};      ///< SkyTable::horizonRayleigh for this light
+    glm::dvec3 horizonMie{0.0};           ///< SkyTable::horizonMie for this light
+};
+
+struct FogSceneDesc {
+    HeightFogParams heightFog;
+    std::vector<FogVolume> volumes;
+    /// Emitters with their intensity for this moment (lightning flashes and
+    /// keyed values already applied).
+    std::vector<Emitter> emitters;
+    /// Sun and moon; a light with zero illuminance contributes nothing.
+    FogLight lights[2];
+    /// Anisotropy g of the Mie phase used for the fog colour.
+    double mieAnisotropy = 0.8;
+};
+
+/// One volume's share of a query.
+struct VolumeContribution {
+    std::size_t volumeIndex = 0;  ///< index into FogSceneDesc::volumes
+    double tIn = 0.0;             ///< clipped entry distance [m] from the segment start
+    double tOut = 0.0;            ///< clipped exit distance [m]
+    double opticalDepth = 0.0;
+    glm::dvec3 colour{0.0};       ///< C_v for this segment's direction
+};
+
+struct FogQueryResult {
+    glm::dvec3 transmittance{1.0};  ///< T, RGB, 0..1
+    glm::dvec3 inScatter{0.0};      ///< S, RGB radiance added in front of the object
+    double globalOpticalDepth = 0.0;
+    glm::dvec3 emitterInScatter{0.0};  ///< the emitters' share of inScatter
+};
+
+struct FogSegment {
+    glm::dvec3 from{0.0};
+    glm::dvec3 to{0.0};
+};
+
+class FogScene {
+public:
+    explicit FogScene(const FogSceneDesc& desc);
+    ~FogScene();
+    FogScene(FogScene&&) noexcept;
+    FogScene& operator=(FogScene&&) noexcept;
+
+    /// Fog between `from` (the camera) and `to` (the object).
+    FogQueryResult query(const glm::dvec3& from, const glm::dvec3& to) const;
+    /// The same, listing each crossed volume (back to front) in `volumes`
+    /// (cleared first).
+    FogQueryResult query(const glm::dvec3& from, const glm::dvec3& to,
+                         std::vector<VolumeContribution>& volumes) const;
+    /// Many segments at once; `results` must hold `count` entries.
+    void queryBatch(const FogSegment* segments, FogQueryResult* results, std::size_t count) const;
+
+    /// The fog colour of the sky in a view direction (global fog's L_fog).
+    glm::dvec3 fogColour(const glm::dvec3& viewDirection) const;
+
+    const FogSceneDesc& desc() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace aerial

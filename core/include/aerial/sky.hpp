@@ -1,0 +1,125 @@
+// aerial/sky.hpp — the Nishita 1993 single-scattering sky, solved on the CPU
+// into a hemisphere table that the renderer (or a game) samples per pixel.
+//
+// Usage:
+//   aerial::SkySolver solver;                       // 128 x 64 x 32, all cores
+//   solver.solve(air, sunDirection);                // whole table, now
+//   const aerial::SkyTable& sky = solver.table();
+//   glm::dvec3 L = aerial::skyRadiance(sky, air.mieAnisotropy, viewDir, sunIlluminance);
+//
+//   // A game with a tight frame budget spreads the work over frames:
+//   solver.beginSolve(air, sunDirection);
+//   while (!solver.continueSolve(4)) { /* next frame */ }  // 4 rows per call
+//   // table() keeps the last complete solve until the new one finishes.
+//
+// What the table holds (../shared/DESIGN.md, "Sky"): for each direction v of
+// the upper hemisphere the two phase-less single-scattering integrals
+//   I_R(v) = integral beta_R(h(s)) T(viewer -> x(s)) T(x(s) -> light) ds
+//   I_M(v) = integral beta_M(h(s)) T(viewer -> x(s)) T(x(s) -> light) ds
+// (RGB each, dimensionless), so that the radiance is
+//   L(v) = E * (P_R(mu) I_R(v) + P_M(mu) I_M(v)),  mu = dot(v, light),
+// with the phase functions applied per pixel.
+//
+// Table mapping (the one contract between the solver and every sampler):
+//   * rows j = 0..elevationCount-1 hold elevation
+//       el_j = pi/2 * (j / (elevationCount - 1))^2
+//     (quadratic: more rows near the horizon, where the sky changes fastest);
+//   * columns i = 0..azimuthCount-1 hold the azimuth relative to the light
+//       phi_i = 2 pi * i / azimuthCount,
+//     measured from the light's azimuth towards east (the same sense as the
+//     world azimuth); the azimuth wraps. Because single scattering is
+//     symmetric about the light's vertical plane, column i equals column
+//     azimuthCount - i;
+//   * texel (i, j) is stored at index (j * azimuthCount + i) * 3 (RGB, float).
+//   Directions below the horizon use row 0.
+#pragma once
+
+#include <aerial/atmosphere.hpp>
+
+#include <glm/vec3.hpp>
+
+#include <memory>
+#include <vector>
+
+namespace aerial {
+
+/// How the solver is built. Zero values mean defaults.
+struct SkySolverDesc {
+    int azimuthCount = 128;       ///< table columns (relative azimuth), >= 4
+    int elevationCount = 64;      ///< table rows (elevation 0..90 deg), >= 2
+    int layerCount = 32;          ///< exponentially spaced layers along each view ray, >= 2
+    int opticalDepthHeights = 0;  ///< optical-depth table rows (height); 0 = solver's default
+    int opticalDepthAngles = 0;   ///< optical-depth table columns (light zenith); 0 = default
+    int threadCount = 0;          ///< worker threads; 0 = all hardware threads, 1 = caller only
+};
+
+/// The solved hemisphere table for one light (sun or moon).
+struct SkyTable {
+    int azimuthCount = 0;
+    int elevationCount = 0;
+    std::vector<float> rayleigh;  ///< I_R, RGB per texel (see mapping above)
+    std::vector<float> mie;       ///< I_M, RGB per texel
+    /// Average of the horizon row(s), phase-less: the colour of far fog
+    /// is E * (P_R(mu) horizonRayleigh + P_M(mu) horizonMie).
+    glm::dvec3 horizonRayleigh{0.0};
+    glm::dvec3 horizonMie{0.0};
+    /// The light direction (unit, from the scene) the table was solved for.
+    glm::dvec3 lightDirection{0.0, 1.0, 0.0};
+    /// Azimuth of the light [rad], from north (-Z) towards east (+X).
+    double lightAzimuth = 0.0;
+    /// Bumped on every completed solve.
+    unsigned long long generation = 0;
+};
+
+/// Phase-less integrals in one direction, bilinearly interpolated.
+struct SkySample {
+    glm::dvec3 rayleigh{0.0};
+    glm::dvec3 mie{0.0};
+};
+
+/// Table lookup for a unit view direction (world space).
+SkySample sampleSkyTable(const SkyTable& table, const glm::dvec3& viewDirection);
+
+/// Radiance [same unit as illuminance / sr] in a view direction: the table
+/// sample with both phase functions applied for that direction.
+glm::dvec3 skyRadiance(const SkyTable& table, double mieAnisotropy,
+                       const glm::dvec3& viewDirection, const glm::dvec3& illuminance);
+
+/// Colour of far fog seen in a view direction: the horizon averages with the
+/// per-direction phase functions.
+glm::dvec3 horizonFogRadiance(const SkyTable& table, double mieAnisotropy,
+                              const glm::dvec3& viewDirection, const glm::dvec3& illuminance);
+
+/// The Nishita 1993 solver: a 2D optical-depth table (height x light zenith
+/// angle, Rayleigh, Mie and ozone) and integration over exponentially
+/// distributed layers along each view ray. Multithreaded; allocates nothing
+/// per solve (all storage is made when it is created).
+class SkySolver {
+public:
+    explicit SkySolver(const SkySolverDesc& desc = {});
+    ~SkySolver();
+    SkySolver(const SkySolver&) = delete;
+    SkySolver& operator=(const SkySolver&) = delete;
+
+    /// Solves the whole table for these parameters and light direction.
+    void solve(const AtmosphereParams& air, const glm::dvec3& lightDirection);
+
+    /// Starts an amortised solve; nothing is computed yet.
+    void beginSolve(const AtmosphereParams& air, const glm::dvec3& lightDirection);
+    /// Solves up to `rows` more rows (the optical-depth table counts as the
+    /// first step). Returns true when the new table is complete and
+    /// published through table().
+    bool continueSolve(int rows);
+    /// True while an amortised solve is in progress.
+    bool solving() const;
+
+    /// The last completed table.
+    const SkyTable& table() const;
+    const SkySolverDesc& desc() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace aerial

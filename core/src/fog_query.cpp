@@ -1,0 +1,2 @@
+// Placeholder while the implementation is being written.
+namespace aerial {}

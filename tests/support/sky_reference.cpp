@@ -1,0 +1,1 @@
+// Placeholder while the implementation is being written.
