@@ -1,2 +1,234 @@
-// Placeholder while the implementation is being written.
-namespace aerial {}
+// fog_query.cpp — CPU fog queries for transparent objects (../shared/
+// DESIGN.md, "Transparent objects"; Wenzel 2006, section 6.7: the volumes in
+// front of an object are found through a hierarchy and weighted back to
+// front, farthest first).
+//
+// A query: global fog over the whole segment, then every volume the BVH
+// reports and the exact object-space test confirms, sorted back to front,
+// then the emitters. No heap allocation unless a segment crosses more than
+// kInlineHits volumes.
+#include "bvh.hpp"
+
+#include <aerial/atmosphere.hpp>
+#include <aerial/fog_query.hpp>
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+namespace aerial {
+namespace {
+
+/// One crossed volume, in units of the segment parameter t in [0, 1].
+struct Hit {
+    std::uint32_t index;
+    double tIn;
+    double tOut;
+    double opticalDepth;
+};
+
+/// Back to front: larger entry first; equal entries by ascending index.
+bool backToFront(const Hit& a, const Hit& b) {
+    if (a.tIn != b.tIn) {
+        return a.tIn > b.tIn;
+    }
+    return a.index < b.index;
+}
+
+/// Hits on the stack, spilling into a heap vector only past kInlineHits.
+class HitBuffer {
+public:
+    static constexpr std::size_t kInlineHits = 64;
+
+    void push(const Hit& hit) {
+        if (size_ < kInlineHits) {
+            inline_[size_] = hit;
+        } else {
+            if (size_ == kInlineHits) {
+                spill_.assign(inline_.begin(), inline_.end());
+            }
+            spill_.push_back(hit);
+        }
+        ++size_;
+    }
+    Hit* begin() { return size_ <= kInlineHits ? inline_.data() : spill_.data(); }
+    Hit* end() { return begin() + size_; }
+    std::size_t size() const { return size_; }
+
+private:
+    std::array<Hit, kInlineHits> inline_;
+    std::vector<Hit> spill_;
+    std::size_t size_ = 0;
+};
+
+struct PreparedLight {
+    glm::dvec3 direction{0.0, 1.0, 0.0};
+    glm::dvec3 illuminance{0.0};
+    glm::dvec3 horizonRayleigh{0.0};
+    glm::dvec3 horizonMie{0.0};
+};
+
+}  // namespace
+
+struct FogScene::Impl {
+    FogSceneDesc desc;
+    std::vector<detail::PreparedVolume> volumes;
+    detail::VolumeBvh bvh;
+    std::array<PreparedLight, 2> lights;
+    std::size_t lightCount = 0;
+    double mieAnisotropy = 0.0;
+
+    explicit Impl(const FogSceneDesc& d) : desc(d) {
+        volumes.reserve(desc.volumes.size());
+        for (const FogVolume& v : desc.volumes) {
+            volumes.push_back(detail::prepareVolume(v));
+        }
+        bvh = detail::VolumeBvh(volumes);
+        for (const FogLight& light : desc.lights) {
+            PreparedLight p;
+            p.direction = detail::safeDirection(light.direction);
+            p.illuminance = detail::sanitiseColour(light.illuminance);
+            p.horizonRayleigh = detail::sanitiseColour(light.horizonRayleigh);
+            p.horizonMie = detail::sanitiseColour(light.horizonMie);
+            const bool on = glm::dot(p.illuminance, p.illuminance) > 0.0 &&
+                            (glm::dot(p.horizonRayleigh, p.horizonRayleigh) > 0.0 ||
+                             glm::dot(p.horizonMie, p.horizonMie) > 0.0);
+            if (on) {
+                lights[lightCount++] = p;
+            }
+        }
+        mieAnisotropy = std::isnan(desc.mieAnisotropy) ? 0.0 : std::clamp(desc.mieAnisotropy, -0.999, 0.999);
+    }
+
+    /// L_fog(v) for a unit (sanitised) direction.
+    glm::dvec3 fogColourUnit(const glm::dvec3& v) const {
+        glm::dvec3 colour(0.0);
+        for (std::size_t k = 0; k < lightCount; ++k) {
+            const PreparedLight& l = lights[k];
+            const double mu = std::clamp(glm::dot(v, l.direction), -1.0, 1.0);
+            colour += l.illuminance *
+                      (rayleighPhase(mu) * l.horizonRayleigh + miePhase(mu, mieAnisotropy) * l.horizonMie);
+        }
+        return colour;
+    }
+
+    /// Collects the crossed volumes of from + t delta, t in [0, 1].
+    void collect(const glm::dvec3& from, const glm::dvec3& delta, HitBuffer& hits) const {
+        bvh.traverse(from, delta, 1.0, [&](std::uint32_t index) {
+            const detail::PreparedVolume& v = volumes[index];
+            const VolumeSegment seg = detail::intersectPrepared(v, from, delta, 1.0);
+            if (seg.hit) {
+                hits.push({index, seg.tIn, seg.tOut, detail::opticalDepthPrepared(v, from, delta, seg)});
+            }
+        });
+        std::sort(hits.begin(), hits.end(), backToFront);
+    }
+
+    FogQueryResult run(const glm::dvec3& from, const glm::dvec3& to,
+                       std::vector<VolumeContribution>* contributions) const {
+        FogQueryResult result;
+        if (!detail::withinCoordinateRange(from) || !detail::withinCoordinateRange(to)) {
+            return result;  // non-finite or absurd input: no fog
+        }
+        const glm::dvec3 delta = to - from;
+        if (!detail::withinCoordinateRange(delta)) {
+            return result;
+        }
+        const double length = glm::length(delta);
+
+        HitBuffer hits;
+        collect(from, delta, hits);
+
+        // 1. Global fog over the whole segment.
+        const double tauGlobal = heightFogOpticalDepth(desc.heightFog, from, delta);
+        result.globalOpticalDepth = tauGlobal;
+
+        // The fog colour is needed only where some fog uses the sky's colour.
+        bool needFogColour = tauGlobal > 0.0;
+        for (const Hit& h : hits) {
+            needFogColour = needFogColour ||
+                            (h.opticalDepth > 0.0 && volumes[h.index].colourMode != FogColourMode::Custom);
+        }
+        if (contributions != nullptr) {
+            needFogColour = needFogColour || hits.size() > 0;
+        }
+        const glm::dvec3 fogColour =
+            needFogColour ? fogColourUnit(detail::safeDirection(delta)) : glm::dvec3(0.0);
+
+        double transmittance = std::exp(-tauGlobal);
+        glm::dvec3 inScatter = fogColour * -std::expm1(-tauGlobal);
+
+        // 2. Volumes, back to front: L <- L T_v + C_v (1 - T_v).
+        for (const Hit& h : hits) {
+            const detail::PreparedVolume& v = volumes[h.index];
+            glm::dvec3 colour;
+            switch (v.colourMode) {
+                case FogColourMode::Sky:
+                    colour = fogColour;
+                    break;
+                case FogColourMode::Tinted:
+                    colour = v.colour * fogColour;
+                    break;
+                case FogColourMode::Custom:
+                default:
+                    colour = v.colour;
+                    break;
+            }
+            const double tv = std::exp(-h.opticalDepth);
+            inScatter = inScatter * tv + colour * -std::expm1(-h.opticalDepth);
+            transmittance *= tv;
+            if (contributions != nullptr) {
+                VolumeContribution c;
+                c.volumeIndex = h.index;
+                c.tIn = h.tIn * length;
+                c.tOut = h.tOut * length;
+                c.opticalDepth = h.opticalDepth;
+                c.colour = colour;
+                contributions->push_back(c);
+            }
+        }
+
+        // 3. Emitters, additive.
+        glm::dvec3 emitted(0.0);
+        for (const Emitter& e : desc.emitters) {
+            emitted += emitterInScatter(e, from, delta, 1.0);
+        }
+        result.transmittance = glm::dvec3(transmittance);
+        result.inScatter = inScatter + emitted;
+        result.emitterInScatter = emitted;
+        return result;
+    }
+};
+
+FogScene::FogScene(const FogSceneDesc& desc) : impl_(std::make_unique<Impl>(desc)) {}
+FogScene::~FogScene() = default;
+FogScene::FogScene(FogScene&&) noexcept = default;
+FogScene& FogScene::operator=(FogScene&&) noexcept = default;
+
+FogQueryResult FogScene::query(const glm::dvec3& from, const glm::dvec3& to) const {
+    return impl_->run(from, to, nullptr);
+}
+
+FogQueryResult FogScene::query(const glm::dvec3& from, const glm::dvec3& to,
+                               std::vector<VolumeContribution>& volumes) const {
+    volumes.clear();
+    return impl_->run(from, to, &volumes);
+}
+
+void FogScene::queryBatch(const FogSegment* segments, FogQueryResult* results, std::size_t count) const {
+    for (std::size_t i = 0; i < count; ++i) {
+        results[i] = impl_->run(segments[i].from, segments[i].to, nullptr);
+    }
+}
+
+glm::dvec3 FogScene::fogColour(const glm::dvec3& viewDirection) const {
+    return impl_->fogColourUnit(detail::safeDirection(viewDirection));
+}
+
+const FogSceneDesc& FogScene::desc() const { return impl_->desc; }
+
+}  // namespace aerial

@@ -40,12 +40,14 @@ CelestialBody place(const Location& where, double dec, double hourAngle) {
     const double az = (x == 0.0 && y == 0.0) ? 0.0 : std::atan2(y, x);  // zenith: azimuth undefined
     body.azimuth = wrap(az + finiteOr(where.northOffsetDeg, 0.0) * kDegToRad, 2.0 * kPiD);
     const double cosEl = std::cos(body.elevation);
-    body.direction = glm::dvec3(cosEl * std::sin(body.azimuth), std::sin(body.elevation),
-                                -cosEl * std::cos(body.azimuth));
+    body.direction =
+        glm::dvec3(cosEl * std::sin(body.azimuth), std::sin(body.elevation), -cosEl * std::cos(body.azimuth));
     return body;
 }
 
-double hourAngleOf(double timeHours) { return 15.0 * kDegToRad * (wrap(finiteOr(timeHours, 12.0), 24.0) - 12.0); }
+double hourAngleOf(double timeHours) {
+    return 15.0 * kDegToRad * (wrap(finiteOr(timeHours, 12.0), 24.0) - 12.0);
+}
 
 }  // namespace
 

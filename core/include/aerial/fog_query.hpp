@@ -13,13 +13,26 @@
 //   1. global fog over the whole segment:
 //        L <- L T_g + L_fog(v) (1 - T_g)
 //   2. every fog volume the segment crosses, back to front (by the entry
-//      distance of its clipped segment, farthest first; ties by index):
+//      distance of its clipped segment, farthest first; equal entries by
+//      ascending index, i.e. the lower index is composited first, behind):
 //        L <- L T_v + C_v(v) (1 - T_v)
 //      where C_v is the volume's colour (see FogColourMode);
 //   3. every emitter adds its closed-form in-scatter (additive, on top).
 //   The result is affine in the scene radiance: L = L_scene T + S.
+//   T_g, T_v = exp(-optical depth) are grey (the densities are scalar), so
+//   transmittance has three equal components.
 // Volumes are found through a bounding-volume hierarchy over their world
-// bounds, so a query costs O(log n + crossed volumes).
+// bounds, so a query costs O(log n + crossed volumes). The BVH only prunes
+// (conservatively), and each candidate is tested exactly as
+// intersectFogVolume(volume, from, to - from, 1.0) and
+// fogVolumeOpticalDepth(...) would: a query equals that brute-force loop over
+// all volumes, composited as above.
+//
+// Queries are const and allocation-free (thread-safe on a shared FogScene);
+// only a segment that crosses more than 64 volumes spills its hit list to the
+// heap. Inputs are sanitised as in height_fog.hpp, fog_volume.hpp and
+// emitter.hpp: a segment with a non-finite end gives T = 1, S = 0, and no
+// query returns NaN or Inf.
 #pragma once
 
 #include <aerial/emitter.hpp>
@@ -46,11 +59,12 @@ struct FogSceneDesc {
     HeightFogParams heightFog;
     std::vector<FogVolume> volumes;
     /// Emitters with their intensity for this moment (lightning flashes and
-    /// keyed values already applied).
+    /// keyed values already applied: FogScene does not call lightningFlash).
     std::vector<Emitter> emitters;
     /// Sun and moon; a light with zero illuminance contributes nothing.
     FogLight lights[2];
-    /// Anisotropy g of the Mie phase used for the fog colour.
+    /// Anisotropy g of the Mie phase used for the fog colour, clamped to
+    /// [-0.999, 0.999]. Default 0.8.
     double mieAnisotropy = 0.8;
 };
 
@@ -60,7 +74,7 @@ struct VolumeContribution {
     double tIn = 0.0;             ///< clipped entry distance [m] from the segment start
     double tOut = 0.0;            ///< clipped exit distance [m]
     double opticalDepth = 0.0;
-    glm::dvec3 colour{0.0};       ///< C_v for this segment's direction
+    glm::dvec3 colour{0.0};  ///< C_v for this segment's direction
 };
 
 struct FogQueryResult {
@@ -77,21 +91,28 @@ struct FogSegment {
 
 class FogScene {
 public:
+    /// Copies the description, prepares every volume (object-from-world
+    /// transform, normalised gradient, bounds) and builds the BVH.
     explicit FogScene(const FogSceneDesc& desc);
     ~FogScene();
+    /// Movable (a moved-from scene may only be assigned to or destroyed).
     FogScene(FogScene&&) noexcept;
     FogScene& operator=(FogScene&&) noexcept;
 
     /// Fog between `from` (the camera) and `to` (the object).
     FogQueryResult query(const glm::dvec3& from, const glm::dvec3& to) const;
-    /// The same, listing each crossed volume (back to front) in `volumes`
-    /// (cleared first).
+    /// The same, listing each crossed volume (back to front, the order it was
+    /// composited in) in `volumes` (cleared first; reuse the vector to avoid
+    /// allocations).
     FogQueryResult query(const glm::dvec3& from, const glm::dvec3& to,
                          std::vector<VolumeContribution>& volumes) const;
     /// Many segments at once; `results` must hold `count` entries.
     void queryBatch(const FogSegment* segments, FogQueryResult* results, std::size_t count) const;
 
-    /// The fog colour of the sky in a view direction (global fog's L_fog).
+    /// The fog colour of the sky in a view direction (global fog's L_fog):
+    /// sum over the lights of E (P_R(mu) horizonRayleigh + P_M(mu, g)
+    /// horizonMie), mu = dot(v, light direction). The direction need not be
+    /// unit (zero or non-finite means +Y).
     glm::dvec3 fogColour(const glm::dvec3& viewDirection) const;
 
     const FogSceneDesc& desc() const;

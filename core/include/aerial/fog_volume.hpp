@@ -19,6 +19,17 @@
 // world-space unit gradient direction, offset [m] along it. Its integral is
 // the global-fog formula with o.y - h0 -> dot(o - position, g) - offset and
 // d.y -> dot(d, g) (see height_fog.hpp).
+//
+// Sanitising (no function here returns NaN or Inf):
+//   - a volume is degenerate, never hit and of density 0 everywhere, when a
+//     half extent is not in [1e-6, 1e30] m (zero, negative, NaN, Inf), its
+//     rotation is zero or not finite, or its position is beyond 1e30 m;
+//   - the rotation need not be unit (it is normalised); the gradient need not
+//     be unit either, and a zero or non-finite gradient means +Y;
+//   - a negative or non-finite density or falloff counts as 0, a non-finite
+//     offset as 0;
+//   - a ray whose origin or direction is not finite (or beyond 1e30 m), or
+//     whose tMax is NaN or <= 0, hits nothing.
 #pragma once
 
 #include <glm/gtc/quaternion.hpp>
@@ -71,20 +82,25 @@ struct VolumeSegment {
 };
 
 /// Intersects the ray origin + t * direction, t in [0, tMax], with the volume
-/// in object space and clips it. Degenerate volumes (a half extent <= 0 or
-/// not finite) are never hit.
+/// in object space and clips it to [max(t_in, 0), min(t_out, tMax)]; tMax may
+/// be +Inf. A clipped segment of zero length is no hit. Degenerate volumes
+/// (see above) are never hit.
 VolumeSegment intersectFogVolume(const FogVolume& volume, const glm::dvec3& origin,
                                  const glm::dvec3& direction, double tMax);
 
-/// Optical depth of the volume's density over a clipped segment.
-double fogVolumeOpticalDepth(const FogVolume& volume, const glm::dvec3& origin,
-                             const glm::dvec3& direction, const VolumeSegment& segment);
+/// Optical depth of the volume's density over a clipped segment (world
+/// distance (tOut - tIn) |direction|), in [0, kMaxOpticalDepth]; 0 when the
+/// segment is no hit or the volume degenerate.
+double fogVolumeOpticalDepth(const FogVolume& volume, const glm::dvec3& origin, const glm::dvec3& direction,
+                             const VolumeSegment& segment);
 
 /// Density [1/m] at a world point (0 outside the shape): the reference for
 /// numeric quadrature.
 double fogVolumeDensityAt(const FogVolume& volume, const glm::dvec3& point);
 
-/// World-space axis-aligned bounds of the volume.
+/// World-space axis-aligned bounds of the volume (tight: the rotated box's
+/// corners, the rotated ellipsoid's extremes). A degenerate volume gives
+/// boundsMin = boundsMax = its position (the origin when that is invalid).
 void fogVolumeBounds(const FogVolume& volume, glm::dvec3& boundsMin, glm::dvec3& boundsMax);
 
 }  // namespace aerial

@@ -12,6 +12,15 @@
 //   integral f = b exp(-c (o.y - h0)) |d| (1 - exp(-c d.y)) / (c d.y)
 // where (1 - e^-x)/x -> 1 as x = c d.y -> 0 is evaluated with expm1 so it is
 // finite and accurate for horizontal rays and for c = 0.
+//
+// Evaluation: the identical form b |d| exp(-c min(y0, y1)) g(|c d.y|), with
+// y0, y1 the heights of the two ends and g(x) = (1 - e^-x)/x in (0, 1], i.e.
+// the density at the denser end times a factor <= 1, so nothing overflows on
+// the way to a moderate result; a result beyond kMaxOpticalDepth saturates.
+//
+// Sanitising: non-finite inputs are treated as 0; a negative density,
+// falloff or length as 0; magnitudes are clamped to 1e150. Every function
+// here returns a finite number for every input.
 #pragma once
 
 #include <glm/vec3.hpp>
@@ -28,22 +37,24 @@ struct HeightFogParams {
     double baseHeight = 0.0;
 };
 
-/// (1 - exp(-x)) / x, accurate everywhere and 1 at x = 0. For very negative
-/// x it grows like exp(-x)/|x|; the result saturates at the largest finite
-/// double instead of becoming Inf.
+/// (1 - exp(-x)) / x, accurate to a few ulp everywhere (-expm1(-x) / x) and
+/// exactly 1 at x = 0, its limit. For very negative x it grows like
+/// exp(-x)/|x|; the result saturates at the largest finite double instead of
+/// becoming Inf. +Inf gives 0; NaN is treated as 0 (gives 1).
 double oneMinusExpOverX(double x);
 
 /// Optical depth (dimensionless) of an exponential density
 /// b exp(-c (dot(p, axis) - h0)) along o -> o + d, with `heightAtOrigin` =
-/// dot(o, axis) - h0 and `rise` = dot(d, axis). Shared by the global fog
-/// (axis = +Y) and fog volumes (axis = their gradient). Finite: saturates at
-/// kMaxOpticalDepth.
-double exponentialOpticalDepth(double density, double falloff, double heightAtOrigin,
-                               double rise, double length);
+/// dot(o, axis) - h0 [m], `rise` = dot(d, axis) [m] and `length` = |d| [m]
+/// (b = `density` [1/m], c = `falloff` [1/m]). Shared by the global fog
+/// (axis = +Y) and fog volumes (axis = their gradient). In [0,
+/// kMaxOpticalDepth]; 0 for a zero length or density.
+double exponentialOpticalDepth(double density, double falloff, double heightAtOrigin, double rise,
+                               double length);
 
-/// The global fog's optical depth along origin -> origin + delta.
-double heightFogOpticalDepth(const HeightFogParams& fog, const glm::dvec3& origin,
-                             const glm::dvec3& delta);
+/// The global fog's optical depth along origin -> origin + delta [m]. 0 when
+/// any coordinate (or the base height) is not finite.
+double heightFogOpticalDepth(const HeightFogParams& fog, const glm::dvec3& origin, const glm::dvec3& delta);
 
 /// Optical depths are clamped to this (transmittance exp(-1e4) is 0 in float
 /// and double alike), so no Inf ever leaves the fog math.
