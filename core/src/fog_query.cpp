@@ -81,6 +81,8 @@ struct FogScene::Impl {
     std::array<PreparedLight, 2> lights;
     std::size_t lightCount = 0;
     double mieAnisotropy = 0.0;
+    FogColourMode heightFogColourMode = FogColourMode::Sky;
+    glm::dvec3 heightFogColour{1.0};
 
     explicit Impl(const FogSceneDesc& d) : desc(d) {
         volumes.reserve(desc.volumes.size());
@@ -102,6 +104,22 @@ struct FogScene::Impl {
             }
         }
         mieAnisotropy = std::isnan(desc.mieAnisotropy) ? 0.0 : std::clamp(desc.mieAnisotropy, -0.999, 0.999);
+        heightFogColourMode = desc.heightFogColourMode;
+        heightFogColour = detail::sanitiseColour(desc.heightFogColour);
+    }
+
+    /// The in-scattered colour of a fog with this colour mode, given the
+    /// sky's fog colour for the segment's direction.
+    static glm::dvec3 fogColourFor(FogColourMode mode, const glm::dvec3& colour, const glm::dvec3& sky) {
+        switch (mode) {
+            case FogColourMode::Sky:
+                return sky;
+            case FogColourMode::Tinted:
+                return colour * sky;
+            case FogColourMode::Custom:
+            default:
+                return colour;
+        }
     }
 
     /// L_fog(v) for a unit (sanitised) direction.
@@ -147,8 +165,8 @@ struct FogScene::Impl {
         const double tauGlobal = heightFogOpticalDepth(desc.heightFog, from, delta);
         result.globalOpticalDepth = tauGlobal;
 
-        // The fog colour is needed only where some fog uses the sky's colour.
-        bool needFogColour = tauGlobal > 0.0;
+        // The sky's fog colour is needed only where some fog uses it.
+        bool needFogColour = tauGlobal > 0.0 && desc.heightFogColourMode != FogColourMode::Custom;
         for (const Hit& h : hits) {
             needFogColour = needFogColour ||
                             (h.opticalDepth > 0.0 && volumes[h.index].colourMode != FogColourMode::Custom);
@@ -160,24 +178,13 @@ struct FogScene::Impl {
             needFogColour ? fogColourUnit(detail::safeDirection(delta)) : glm::dvec3(0.0);
 
         double transmittance = std::exp(-tauGlobal);
-        glm::dvec3 inScatter = fogColour * -std::expm1(-tauGlobal);
+        glm::dvec3 inScatter =
+            fogColourFor(heightFogColourMode, heightFogColour, fogColour) * -std::expm1(-tauGlobal);
 
         // 2. Volumes, back to front: L <- L T_v + C_v (1 - T_v).
         for (const Hit& h : hits) {
             const detail::PreparedVolume& v = volumes[h.index];
-            glm::dvec3 colour;
-            switch (v.colourMode) {
-                case FogColourMode::Sky:
-                    colour = fogColour;
-                    break;
-                case FogColourMode::Tinted:
-                    colour = v.colour * fogColour;
-                    break;
-                case FogColourMode::Custom:
-                default:
-                    colour = v.colour;
-                    break;
-            }
+            const glm::dvec3 colour = fogColourFor(v.colourMode, v.colour, fogColour);
             const double tv = std::exp(-h.opticalDepth);
             inScatter = inScatter * tv + colour * -std::expm1(-h.opticalDepth);
             transmittance *= tv;

@@ -439,6 +439,30 @@ TEST(FogQuery, WithoutVolumesEqualsGlobalFogAlone) {
     }
 }
 
+TEST(FogQuery, GlobalFogColourModes) {
+    SceneMaker maker(8);
+    FogSceneDesc desc = maker.scene(0, 0);
+    desc.heightFog = {0.002, 0.003, 10.0};
+    const glm::dvec3 tint(0.9, 0.6, 0.3);
+    for (FogColourMode mode : {FogColourMode::Sky, FogColourMode::Tinted, FogColourMode::Custom}) {
+        desc.heightFogColourMode = mode;
+        desc.heightFogColour = tint;
+        const FogScene scene(desc);
+        for (int q = 0; q < 100; ++q) {
+            const auto [from, to] = maker.segment(desc, q);
+            const glm::dvec3 delta = to - from;
+            const double t = std::exp(-aerial::heightFogOpticalDepth(desc.heightFog, from, delta));
+            const glm::dvec3 sky = referenceFogColour(desc, glm::normalize(delta));
+            const glm::dvec3 colour = mode == FogColourMode::Sky      ? sky
+                                      : mode == FogColourMode::Tinted ? tint * sky
+                                                                      : tint;
+            const FogQueryResult r = scene.query(from, to);
+            EXPECT_TRUE(near(r.inScatter, colour * (1.0 - t), 1e-12)) << int(mode);
+            EXPECT_TRUE(near(scene.fogColour(delta), sky, 1e-12));  // always the sky's
+        }
+    }
+}
+
 TEST(FogQuery, ZeroDensityIsClearAir) {
     SceneMaker maker(8);
     FogSceneDesc desc = maker.scene(32, 0);

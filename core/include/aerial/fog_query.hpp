@@ -66,6 +66,11 @@ struct FogSceneDesc {
     /// Anisotropy g of the Mie phase used for the fog colour, clamped to
     /// [-0.999, 0.999]. Default 0.8.
     double mieAnisotropy = 0.8;
+    /// Where the global fog's colour L_fog comes from, as for volumes: the
+    /// sky's fog colour, that times heightFogColour, or heightFogColour as
+    /// radiance (Environment::fogColourMode / fogColour of a preset).
+    FogColourMode heightFogColourMode = FogColourMode::Sky;
+    glm::dvec3 heightFogColour{1.0, 1.0, 1.0};
 };
 
 /// One volume's share of a query.

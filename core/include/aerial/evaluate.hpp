@@ -1,0 +1,113 @@
+// aerial/evaluate.hpp — a preset at a time of day: the one call a game
+// makes per frame.
+//
+// Usage:
+//   aerial::CompiledPreset compiled(preset);    // once: binds tracks to fields
+//   aerial::PresetState state;                  // caller-owned, reused
+//   compiled.evaluate(timeHours, state);        // per frame, no allocation
+//                                               // once `state` has its shape
+//   sunSky.solve(state.environment.atmosphere, state.sunLight.body.direction);
+//   moonSky.solve(state.environment.atmosphere, state.moonLight.body.direction);
+//   aerial::FogScene fog(aerial::fogSceneDesc(state, sunSky.table(), moonSky.table()));
+//
+// What evaluate does, in order:
+//   1. copies the preset's values, then writes every track's value at t
+//      into its (pre-bound) field;
+//   2. clamps animated values into their table range and keeps the Mie
+//      extinction >= scattering per channel;
+//   3. the sun and moon: aerial::sunPosition / moonPosition (sun.hpp); their
+//      illuminance above the atmosphere = colour * intensity (the moon's
+//      times its phaseIrradiance), and the light that reaches the viewer =
+//      that times aerial::transmittanceToSpace(atmosphere, viewerHeight,
+//      direction.y) (atmosphere.hpp);
+//   4. lightning: every emitter's intensity is multiplied by
+//      aerial::lightningFlash(emitter, t) (emitter.hpp), kept in
+//      emitterFlash.
+//
+// Cost: transmittanceToSpace is a fine quadrature, so the compiled preset
+// tabulates the three unit optical depths (Rayleigh, Mie, ozone) over the
+// light's zenith cosine once (computed with transmittanceToSpace itself)
+// and evaluate combines them with the animated coefficients; when a track
+// animates a quantity the table depends on (scale heights, viewer height)
+// evaluate calls transmittanceToSpace directly (slower).
+#pragma once
+
+#include <aerial/emitter.hpp>
+#include <aerial/fog_query.hpp>
+#include <aerial/fog_volume.hpp>
+#include <aerial/preset.hpp>
+#include <aerial/sky.hpp>
+#include <aerial/sun.hpp>
+#include <aerial/timeline.hpp>
+
+#include <glm/vec3.hpp>
+
+#include <memory>
+#include <vector>
+
+namespace aerial {
+
+/// A sun or moon at one moment.
+struct LightState {
+    CelestialBody body;
+    /// Illuminance above the atmosphere, RGB: colour * intensity (moon:
+    /// times body.phaseIrradiance).
+    glm::dvec3 illuminanceSpace{0.0};
+    /// T(viewer -> light), RGB, 0..1; 0 below the horizon.
+    glm::dvec3 transmittance{0.0};
+    /// What lights the scene: illuminanceSpace * transmittance.
+    glm::dvec3 illuminance{0.0};
+};
+
+/// The complete state of a preset at one time of day.
+struct PresetState {
+    double timeHours = 0.0;
+    Environment environment;
+    std::vector<FogVolume> volumes;
+    /// Intensities with keyed values and lightning flashes applied.
+    std::vector<Emitter> emitters;
+    /// The flash multiplier applied to each emitter (1 for point emitters).
+    std::vector<double> emitterFlash;
+    LightState sunLight;
+    LightState moonLight;
+};
+
+/// A preset with its tracks bound to the fields they animate.
+class CompiledPreset {
+public:
+    /// Compiles defaultPreset().
+    CompiledPreset();
+    /// Binds every track once. Tracks that do not validate (unknown target,
+    /// bad keys) are skipped and listed in issues(); a preset that passed
+    /// validatePreset has none.
+    explicit CompiledPreset(Preset preset);
+    ~CompiledPreset();
+    CompiledPreset(CompiledPreset&&) noexcept;
+    CompiledPreset& operator=(CompiledPreset&&) noexcept;
+    CompiledPreset(const CompiledPreset&) = delete;
+    CompiledPreset& operator=(const CompiledPreset&) = delete;
+
+    const Preset& preset() const;
+    const std::vector<PresetIssue>& issues() const;
+
+    /// The state at time t [h] (wrapped into [0, 24)). Allocates only when
+    /// `state` does not yet have this preset's shape (first call).
+    void evaluate(double timeHours, PresetState& state) const;
+    PresetState evaluate(double timeHours) const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+/// The fog of a state for CPU fog queries (FogScene): global fog with the
+/// preset's fog colour mode, volumes, emitters (flashes applied) and the two
+/// fog lights — direction, illuminance above the atmosphere and the horizon
+/// averages of the sky tables solved for this state's sun and moon.
+FogSceneDesc fogSceneDesc(const PresetState& state, const SkyTable& sunSky, const SkyTable& moonSky);
+
+/// Convenience: compile and evaluate once (slow path; a game keeps a
+/// CompiledPreset).
+PresetState evaluate(const Preset& preset, double timeHours);
+
+}  // namespace aerial

@@ -1,0 +1,187 @@
+// aerial/preset.hpp — a time-of-day preset: every parameter of the sky, the
+// fog, the volumes and the emitters, plus the timeline that animates them.
+// Loading, validating and saving presets (JSON, "version": 1).
+//
+// Usage:
+//   aerial::PresetLoadResult r = aerial::loadPreset("presets/hazy_sunset.json");
+//   if (!r.preset) { for (auto& e : r.errors) log(e.toString()); return; }
+//   for (auto& w : r.warnings) log(w.toString());        // e.g. unknown fields
+//   aerial::Preset preset = std::move(*r.preset);
+//   preset.environment.fog.density = 0.003;
+//   aerial::SaveResult s = aerial::savePreset(preset, "presets/mine.json");
+//   if (!s.ok()) log(s.errors[0].toString());
+//
+// File format (../shared/DESIGN.md, "Presets"): a JSON object with
+// "version": 1, "name", "description", the global parameters grouped as
+// "location", "atmosphere" {"rayleigh", "mie", "ozone"}, "sun", "moon",
+// "fog", then "volumes" and "emitters" (arrays of objects with string "id"s)
+// and "tracks" (see timeline.hpp). Every key that carries a unit says it
+// (`scale_height_m`, `density_per_m`). The keys, ranges and defaults come
+// from the parameter table (param_table.hpp); the JSON Schema in
+// presets/aerial-preset.schema.json is generated from the same table.
+//
+// Errors never escape as exceptions and never crash: loading returns either
+// a complete preset or the list of errors, each naming the file, the JSON
+// pointer of the field, its line:column in the file and the reason.
+#pragma once
+
+#include <aerial/atmosphere.hpp>
+#include <aerial/emitter.hpp>
+#include <aerial/fog_volume.hpp>
+#include <aerial/height_fog.hpp>
+#include <aerial/sun.hpp>
+#include <aerial/timeline.hpp>
+
+#include <glm/vec3.hpp>
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace aerial {
+
+/// The preset file format this library writes and the newest it reads.
+constexpr int kPresetVersion = 1;
+
+/// Default sun intensity (dimensionless scale of the renderer's radiance
+/// unit): 20, as in common Nishita implementations (e.g. the GPU Gems 2 /
+/// scratchapixel skies), so a daylight sky lands near 1 after exposure.
+constexpr double kDefaultSunIntensity = 20.0;
+/// Physical ratio of full-moon to sun illuminance at the ground, ~0.25 lx
+/// / ~100 000 lx = 2.5e-6. Documented for reference; not used as default.
+constexpr double kPhysicalMoonToSunRatio = 2.5e-6;
+/// Default moon intensity at full phase: an artistic 0.05 = 2.5e-3 of the
+/// default sun (1000x the physical ratio), so moonlit scenes read without
+/// a separate night exposure. Set it to kDefaultSunIntensity *
+/// kPhysicalMoonToSunRatio (5e-5) for a physical moon.
+constexpr double kDefaultMoonIntensity = 0.05;
+
+/// A sun or moon as the preset describes it, above the atmosphere.
+/// Illuminance (RGB) = colour * intensity; the moon's is further scaled by
+/// its phase (CelestialBody::phaseIrradiance).
+struct LightParams {
+    /// Colour, scene-linear Rec.709, each channel 0..100. Default white.
+    glm::dvec3 colour{1.0, 1.0, 1.0};
+    /// Intensity, dimensionless multiplier of the colour, 0..1e5. Default
+    /// kDefaultSunIntensity (the moon's default is set in Environment).
+    double intensity = kDefaultSunIntensity;
+
+    glm::dvec3 illuminance() const { return colour * intensity; }
+};
+
+/// Every global (not per-object) parameter of a preset.
+struct Environment {
+    Location location;
+    AtmosphereParams atmosphere;
+    LightParams sun;
+    /// Artistic moon default: slightly cool, kDefaultMoonIntensity.
+    LightParams moon{glm::dvec3(0.85, 0.92, 1.0), kDefaultMoonIntensity};
+    HeightFogParams fog;
+    /// Where the global fog's in-scattered colour comes from.
+    FogColourMode fogColourMode = FogColourMode::Sky;
+    /// Global fog tint or radiance (see fogColourMode), scene-linear Rec.709.
+    glm::dvec3 fogColour{1.0, 1.0, 1.0};
+};
+
+/// A whole preset: what a file holds, what the editor edits.
+struct Preset {
+    /// Shown to the artist.
+    std::string name;
+    std::string description;
+    Environment environment;
+    /// Fog volumes; ids unique among volumes.
+    std::vector<FogVolume> volumes;
+    /// Emitters; ids unique among emitters.
+    std::vector<Emitter> emitters;
+    /// At most one track per target.
+    std::vector<Track> tracks;
+};
+
+/// One problem with a preset (an error or a warning).
+struct PresetIssue {
+    enum class Severity { Error, Warning };
+    Severity severity = Severity::Error;
+    /// The file it concerns ("" for presets built in code).
+    std::string file;
+    /// JSON pointer of the field (RFC 6901), e.g. "/volumes/2/half_extents_m/1";
+    /// "" for the whole document.
+    std::string pointer;
+    /// 1-based position in the file of the value (or syntax error); 0 when
+    /// unknown (presets built in code, or a missing field: its parent's).
+    int line = 0;
+    int column = 0;  ///< in UTF-8 code points
+    /// Why, in words.
+    std::string message;
+
+    /// "file:line:column: error: /pointer: message".
+    std::string toString() const;
+};
+
+struct PresetLoadResult {
+    /// The preset, only when there are no errors (never half-loaded).
+    std::optional<Preset> preset;
+    std::vector<PresetIssue> errors;
+    /// Unknown fields and other harmless oddities; the preset still loaded.
+    std::vector<PresetIssue> warnings;
+
+    bool ok() const { return preset.has_value(); }
+};
+
+struct SaveResult {
+    /// Empty on success. On failure the old file (if any) is untouched.
+    std::vector<PresetIssue> errors;
+    bool ok() const { return errors.empty(); }
+};
+
+/// The track animating `target`, or null.
+Track* findTrack(Preset& preset, const TrackTarget& target);
+const Track* findTrack(const Preset& preset, const TrackTarget& target);
+
+/// Editing helper: gives a volume (scope Volume) or emitter (scope Emitter)
+/// a new id and retargets its tracks. Returns false and changes nothing when
+/// `oldId` is unknown or `newId` is malformed or taken.
+bool changeObjectId(Preset& preset, ParamScope scope, const std::string& oldId, const std::string& newId);
+
+/// Editing helper: removes a volume or emitter and the tracks that target
+/// it. Returns false when there is no such object.
+bool removeObject(Preset& preset, ParamScope scope, const std::string& id);
+
+/// The built-in preset the editor opens on: Earth's atmosphere at 45 deg N
+/// in June, a light global fog, a morning ground-fog volume that burns off
+/// by noon and a lamp that is lit at night, keyed over the day.
+Preset defaultPreset();
+
+/// Reads a preset file. Never throws.
+PresetLoadResult loadPreset(const std::string& path);
+
+/// Parses preset JSON text; `fileName` only names the source in issues.
+/// Never throws.
+PresetLoadResult parsePreset(std::string_view jsonText, std::string_view fileName = "<memory>");
+
+/// Checks a preset built in code against the parameter table: ranges,
+/// finite numbers, unit vectors, unique and well-formed ids, Mie extinction
+/// >= scattering, tracks (known animatable targets, keys in [0, 24) h,
+/// strictly increasing, values in range). Issues carry JSON pointers but
+/// no positions. The loader runs exactly these checks.
+std::vector<PresetIssue> validatePreset(const Preset& preset);
+
+/// The canonical JSON text of a preset: stable key order (the parameter
+/// table's), every parameter written, numbers in the shortest form that
+/// reads back bit-exact. Does not validate.
+std::string presetToJson(const Preset& preset);
+
+/// Validates, then writes atomically: a temporary file in the same
+/// directory, flushed and fsync'ed, then renamed over `path`. On any failure
+/// the old file survives and the reason is returned. Never throws.
+SaveResult savePreset(const Preset& preset, const std::string& path);
+
+/// True when both presets hold the same values, bit for bit on every
+/// number (compared through the parameter table, plus tracks).
+bool presetsIdentical(const Preset& a, const Preset& b);
+
+/// The JSON Schema (draft 2020-12) of the preset format, generated from the
+/// parameter table; presets/aerial-preset.schema.json is this text.
+std::string presetJsonSchema();
+
+}  // namespace aerial

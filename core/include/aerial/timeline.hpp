@@ -1,0 +1,110 @@
+// aerial/timeline.hpp — keyframe tracks over the 24-hour day.
+//
+// Usage:
+//   aerial::Track t;
+//   t.target = aerial::TrackTarget::volume("valley_fog", "density_per_m");
+//   t.interpolation = aerial::Interpolation::Smooth;
+//   t.keys = {{5.0, glm::dvec3(0.0)}, {7.0, glm::dvec3(0.03)}, {12.0, glm::dvec3(0.0)}};
+//   aerial::CompiledTrack c = aerial::compileTrack(t, 1);   // tangents, once
+//   double d = aerial::evaluateTrack(c, 6.5).x;
+//
+// Model (../shared/DESIGN.md, "Timeline"):
+//   * Time t is local solar time [h], 0 <= t < 24, and the day wraps: the
+//     segment after the last key runs to the first key + 24 h, so a key at
+//     22:00 and one at 02:00 interpolate through midnight. A track with one
+//     key is constant.
+//   * Step: the value of the last key at or before t (wrapping).
+//   * Linear: per component, along the (wrapping) segment.
+//   * Smooth: periodic monotone cubic Hermite per component, tangents by
+//     Fritsch & Carlson (1980): secants d_k, initial tangents their mean,
+//     0 where the secants change sign or vanish, then (alpha, beta) =
+//     (m_k, m_k+1) / d_k scaled onto the circle of radius 3 where they leave
+//     it. Each segment is then monotone, so the curve never leaves the range
+//     of its two keys (a density keyed 0 -> 0.01 -> 0 never goes negative);
+//     evaluation also clamps to that range against rounding.
+//   * Colours interpolate per channel in scene-linear RGB.
+//   * Targets are stable: a global parameter by its path
+//     ("fog.density_per_m"), a volume's or emitter's parameter by the
+//     object's id and the parameter key, so renaming or reordering objects
+//     never breaks a track.
+#pragma once
+
+#include <glm/vec3.hpp>
+
+#include <string>
+#include <vector>
+
+namespace aerial {
+
+/// Which struct a parameter lives in.
+enum class ParamScope {
+    Global,   ///< Environment (location, atmosphere, sun, moon, fog)
+    Volume,   ///< FogVolume
+    Emitter,  ///< Emitter
+};
+
+enum class Interpolation { Step, Linear, Smooth };
+
+/// What a track animates.
+struct TrackTarget {
+    ParamScope scope = ParamScope::Global;
+    /// The volume's or emitter's id; empty for globals.
+    std::string objectId;
+    /// Global: the parameter path ("fog.density_per_m",
+    /// "atmosphere.mie.scattering_per_m"); volume/emitter: the parameter
+    /// key ("density_per_m").
+    std::string param;
+
+    static TrackTarget global(std::string path) { return {ParamScope::Global, {}, std::move(path)}; }
+    static TrackTarget volume(std::string id, std::string key) {
+        return {ParamScope::Volume, std::move(id), std::move(key)};
+    }
+    static TrackTarget emitter(std::string id, std::string key) {
+        return {ParamScope::Emitter, std::move(id), std::move(key)};
+    }
+    bool operator==(const TrackTarget&) const = default;
+};
+
+struct TrackKey {
+    /// Time of day [h], 0 <= t < 24.
+    double timeHours = 0.0;
+    /// The value in the parameter's unit; scalars use .x only (y, z are 0).
+    glm::dvec3 value{0.0};
+};
+
+struct Track {
+    TrackTarget target;
+    Interpolation interpolation = Interpolation::Smooth;
+    /// At least one key; strictly increasing times in [0, 24).
+    std::vector<TrackKey> keys;
+};
+
+/// A track ready to evaluate: keys sorted (as validated) plus the smooth
+/// tangents, computed once.
+struct CompiledTrack {
+    Interpolation interpolation = Interpolation::Smooth;
+    int components = 1;         ///< 1 (scalar) or 3 (vec3 / colour)
+    std::vector<double> times;  ///< [h], strictly increasing in [0, 24)
+    std::vector<glm::dvec3> values;
+    std::vector<glm::dvec3> tangents;  ///< d value / d t [unit per h] (Smooth only)
+};
+
+/// Prepares a track; keys must be valid (validatePreset checks them). An
+/// empty key list gives a track that evaluates to 0.
+CompiledTrack compileTrack(const Track& track, int components);
+
+/// The track's value at time t [h] (wrapped into [0, 24); a non-finite t
+/// reads as 0). Unused components are 0.
+glm::dvec3 evaluateTrack(const CompiledTrack& track, double timeHours);
+
+/// Convenience: compile and evaluate once (slow path, for tools and tests).
+glm::dvec3 evaluateTrack(const Track& track, double timeHours, int components = 3);
+
+/// Editing helper: sets the key at `timeHours` (wrapped into [0, 24)),
+/// replacing a key at exactly that time or inserting one in order.
+void setKey(Track& track, double timeHours, const glm::dvec3& value);
+
+/// t wrapped into [0, 24) [h]; non-finite values give 0.
+double wrapHours(double timeHours);
+
+}  // namespace aerial

@@ -1,0 +1,222 @@
+// evaluate.cpp — a compiled preset: tracks bound once to the fields they
+// animate, then the per-frame evaluation (see evaluate.hpp for the steps).
+#include <aerial/evaluate.hpp>
+
+#include <aerial/atmosphere.hpp>
+#include <aerial/param_table.hpp>
+
+#include <glm/common.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace aerial {
+namespace {
+
+// Transmittance to space as a function of the light's zenith cosine, for a
+// fixed geometry (radii, viewer height, scale heights, ozone profile): the
+// optical depths per unit coefficient of Rayleigh, Mie and ozone, sampled
+// with transmittanceToSpace itself (one coefficient per RGB channel). The
+// coefficients (the usual animated quantities) are applied per evaluation.
+class OpticalDepthTable {
+public:
+    // 48 samples, cubic in u with mu = muHorizon + (1 - muHorizon) u^3 (dense
+    // near the horizon): max |T_table - T_direct| ~1e-4 for Earth-like and
+    // hazy atmospheres, viewer at 0 and 2000 m (build cost 48 quadratures).
+    static constexpr int kSamples = 48;
+    static constexpr double kProbe = 1e-7;  // [1/m]: keeps k * tau << 700
+
+    void build(const AtmosphereParams& air) {
+        const double r = air.planetRadius + std::max(air.viewerHeight, 0.0);
+        const double ratio = air.planetRadius / r;
+        muHorizon_ = -std::sqrt(std::max(0.0, 1.0 - ratio * ratio));
+        AtmosphereParams probe = air;
+        probe.rayleighScattering = glm::dvec3(kProbe, 0.0, 0.0);
+        probe.mieExtinction = glm::dvec3(0.0, kProbe, 0.0);
+        probe.ozoneAbsorption = glm::dvec3(0.0, 0.0, kProbe);
+        for (int i = 0; i < kSamples; ++i) {
+            const double u = double(i) / (kSamples - 1);
+            // Exactly at the horizon a downward-grazing ray may count as
+            // hitting the ground; start a hair above it.
+            const double mu = muHorizon_ + (1.0 - muHorizon_) * std::max(u * u * u, 1e-9);
+            const glm::dvec3 t = transmittanceToSpace(probe, air.viewerHeight, mu);
+            for (int c = 0; c < 3; ++c) depth_[i + 1][c] = t[c] > 0.0 ? -std::log(t[c]) / kProbe : 0.0;
+        }
+        // Ghost samples, extrapolated linearly, for the end segments.
+        depth_[0] = 2.0 * depth_[1] - depth_[2];
+        depth_[kSamples + 1] = 2.0 * depth_[kSamples] - depth_[kSamples - 1];
+    }
+
+    glm::dvec3 transmittance(const AtmosphereParams& air, double muZenith) const {
+        if (!(muZenith > muHorizon_)) return glm::dvec3(0.0);
+        const double u = std::cbrt(std::clamp((muZenith - muHorizon_) / (1.0 - muHorizon_), 0.0, 1.0));
+        const double x = u * (kSamples - 1);
+        const int i = std::min(int(x), kSamples - 2);
+        const double f = x - i;
+        // Catmull-Rom through samples i-1 .. i+2 (stored at +1).
+        const glm::dvec3& p0 = depth_[i];
+        const glm::dvec3& p1 = depth_[i + 1];
+        const glm::dvec3& p2 = depth_[i + 2];
+        const glm::dvec3& p3 = depth_[i + 3];
+        const glm::dvec3 d =
+            p1 +
+            0.5 * f * (p2 - p0 + f * (2.0 * p0 - 5.0 * p1 + 4.0 * p2 - p3 + f * (3.0 * (p1 - p2) + p3 - p0)));
+        const glm::dvec3 tau =
+            glm::max(air.rayleighScattering * d.x + air.mieExtinction * d.y + air.ozoneAbsorption * d.z,
+                     glm::dvec3(0.0));
+        return glm::dvec3(std::exp(-tau.x), std::exp(-tau.y), std::exp(-tau.z));
+    }
+
+private:
+    double muHorizon_ = 0.0;
+    glm::dvec3 depth_[kSamples + 2] = {};
+};
+
+struct Binding {
+    const ParamDesc* desc = nullptr;
+    ParamScope scope = ParamScope::Global;
+    std::size_t object = 0;  // index into volumes / emitters
+    CompiledTrack track;
+};
+
+bool tableDependsOn(const ParamDesc& p) {
+    return p.scope == ParamScope::Global &&
+           (p.path == "atmosphere.viewer_height_m" || p.path == "atmosphere.rayleigh.scale_height_m" ||
+            p.path == "atmosphere.mie.scale_height_m" || p.path == "atmosphere.ozone.peak_height_m" ||
+            p.path == "atmosphere.ozone.width_m");
+}
+
+template <class Object>
+std::size_t indexOf(const std::vector<Object>& objects, const std::string& id) {
+    for (std::size_t i = 0; i < objects.size(); ++i)
+        if (objects[i].id == id) return i;
+    return objects.size();
+}
+
+}  // namespace
+
+struct CompiledPreset::Impl {
+    Preset preset;
+    std::vector<PresetIssue> issues;
+    std::vector<Binding> bindings;
+    bool useTable = true;
+    OpticalDepthTable table;
+
+    explicit Impl(Preset p) : preset(std::move(p)) {
+        issues = validatePreset(preset);
+        for (std::size_t i = 0; i < preset.tracks.size(); ++i) {
+            const Track& track = preset.tracks[i];
+            const std::string prefix = "/tracks/" + std::to_string(i);
+            const bool broken = std::any_of(issues.begin(), issues.end(), [&](const PresetIssue& e) {
+                return e.pointer.compare(0, prefix.size(), prefix) == 0 &&
+                       (e.pointer.size() == prefix.size() || e.pointer[prefix.size()] == '/');
+            });
+            const ParamDesc* desc = findParam(track.target.scope, track.target.param);
+            if (broken || !desc || !desc->animatable || track.keys.empty()) continue;
+            Binding b;
+            b.desc = desc;
+            b.scope = track.target.scope;
+            if (b.scope == ParamScope::Volume) {
+                b.object = indexOf(preset.volumes, track.target.objectId);
+                if (b.object >= preset.volumes.size()) continue;
+            } else if (b.scope == ParamScope::Emitter) {
+                b.object = indexOf(preset.emitters, track.target.objectId);
+                if (b.object >= preset.emitters.size()) continue;
+            }
+            b.track = compileTrack(track, desc->type == ParamType::Scalar ? 1 : 3);
+            if (tableDependsOn(*desc)) useTable = false;
+            bindings.push_back(std::move(b));
+        }
+        if (useTable) table.build(preset.environment.atmosphere);
+    }
+
+    glm::dvec3 transmittance(const AtmosphereParams& air, const glm::dvec3& direction) const {
+        return useTable ? table.transmittance(air, direction.y)
+                        : transmittanceToSpace(air, air.viewerHeight, direction.y);
+    }
+};
+
+CompiledPreset::CompiledPreset() : CompiledPreset(defaultPreset()) {}
+CompiledPreset::CompiledPreset(Preset preset) : impl_(std::make_unique<Impl>(std::move(preset))) {}
+CompiledPreset::~CompiledPreset() = default;
+CompiledPreset::CompiledPreset(CompiledPreset&&) noexcept = default;
+CompiledPreset& CompiledPreset::operator=(CompiledPreset&&) noexcept = default;
+
+const Preset& CompiledPreset::preset() const { return impl_->preset; }
+const std::vector<PresetIssue>& CompiledPreset::issues() const { return impl_->issues; }
+
+void CompiledPreset::evaluate(double timeHours, PresetState& state) const {
+    const Impl& impl = *impl_;
+    const Preset& preset = impl.preset;
+    const double t = wrapHours(timeHours);
+    state.timeHours = t;
+
+    // 1. Base values (element-wise copy: no allocation once the shapes match).
+    state.environment = preset.environment;
+    state.volumes = preset.volumes;
+    state.emitters = preset.emitters;
+    state.emitterFlash.resize(preset.emitters.size());
+
+    // 2. Tracks, written through their pre-bound accessors, clamped to range.
+    for (const Binding& b : impl.bindings) {
+        void* object = b.scope == ParamScope::Global   ? static_cast<void*>(&state.environment)
+                       : b.scope == ParamScope::Volume ? static_cast<void*>(&state.volumes[b.object])
+                                                       : static_cast<void*>(&state.emitters[b.object]);
+        const glm::dvec3 v = evaluateTrack(b.track, t);
+        const ParamDesc& d = *b.desc;
+        if (d.type == ParamType::Scalar)
+            *d.scalar(object) = std::clamp(v.x, d.minValue, d.maxValue);
+        else
+            *d.vec3(object) = glm::clamp(v, glm::dvec3(d.minValue), glm::dvec3(d.maxValue));
+    }
+    AtmosphereParams& air = state.environment.atmosphere;
+    air.mieExtinction = glm::max(air.mieExtinction, air.mieScattering);
+
+    // 3. Sun and moon.
+    const Environment& env = state.environment;
+    LightState& sun = state.sunLight;
+    sun.body = sunPosition(env.location, t);
+    sun.illuminanceSpace = env.sun.illuminance();
+    sun.transmittance = impl.transmittance(air, sun.body.direction);
+    sun.illuminance = sun.illuminanceSpace * sun.transmittance;
+    LightState& moon = state.moonLight;
+    moon.body = moonPosition(env.location, t);
+    moon.illuminanceSpace = env.moon.illuminance() * moon.body.phaseIrradiance;
+    moon.transmittance = impl.transmittance(air, moon.body.direction);
+    moon.illuminance = moon.illuminanceSpace * moon.transmittance;
+
+    // 4. Lightning.
+    for (std::size_t i = 0; i < state.emitters.size(); ++i) {
+        Emitter& e = state.emitters[i];
+        const double flash = e.kind == EmitterKind::Lightning ? lightningFlash(e, t) : 1.0;
+        state.emitterFlash[i] = flash;
+        e.intensity *= flash;
+    }
+}
+
+PresetState CompiledPreset::evaluate(double timeHours) const {
+    PresetState state;
+    evaluate(timeHours, state);
+    return state;
+}
+
+PresetState evaluate(const Preset& preset, double timeHours) {
+    return CompiledPreset(preset).evaluate(timeHours);
+}
+
+FogSceneDesc fogSceneDesc(const PresetState& state, const SkyTable& sunSky, const SkyTable& moonSky) {
+    FogSceneDesc desc;
+    desc.heightFog = state.environment.fog;
+    desc.heightFogColourMode = state.environment.fogColourMode;
+    desc.heightFogColour = state.environment.fogColour;
+    desc.volumes = state.volumes;
+    desc.emitters = state.emitters;
+    desc.mieAnisotropy = state.environment.atmosphere.mieAnisotropy;
+    desc.lights[0] = {state.sunLight.body.direction, state.sunLight.illuminanceSpace, sunSky.horizonRayleigh,
+                      sunSky.horizonMie};
+    desc.lights[1] = {state.moonLight.body.direction, state.moonLight.illuminanceSpace,
+                      moonSky.horizonRayleigh, moonSky.horizonMie};
+    return desc;
+}
+
+}  // namespace aerial

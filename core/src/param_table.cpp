@@ -1,0 +1,430 @@
+// param_table.cpp — the one declaration of every editable parameter
+// (../shared/STYLE.md, point 3). Defaults mirror the structs' default member
+// initialisers (test_param_table checks they agree); ranges are the valid
+// ranges the loader enforces.
+#include <aerial/param_table.hpp>
+
+#include <array>
+#include <cmath>
+
+namespace aerial {
+namespace {
+
+using sv = std::string_view;
+
+Environment& env(void* o) { return *static_cast<Environment*>(o); }
+FogVolume& vol(void* o) { return *static_cast<FogVolume*>(o); }
+Emitter& emi(void* o) { return *static_cast<Emitter*>(o); }
+
+constexpr std::array<sv, 3> kColourModeNames = {"sky", "tinted", "custom"};
+constexpr std::array<sv, 2> kShapeNames = {"box", "ellipsoid"};
+constexpr std::array<sv, 2> kEmitterKindNames = {"point", "lightning"};
+constexpr std::array<sv, 3> kInterpolationNames = {"step", "linear", "smooth"};
+
+struct Range {
+    double min, max, uiMin, uiMax;
+};
+
+ParamDesc scalar(ParamScope scope, sv path, sv label, sv unit, Range r, double def, bool log, bool animatable,
+                 double* (*access)(void*), sv doc) {
+    ParamDesc p;
+    p.scope = scope;
+    p.type = ParamType::Scalar;
+    p.path = path;
+    p.label = label;
+    p.unit = unit;
+    p.doc = doc;
+    p.minValue = r.min;
+    p.maxValue = r.max;
+    p.uiMin = r.uiMin;
+    p.uiMax = r.uiMax;
+    p.defaultValue[0] = def;
+    p.logScale = log;
+    p.animatable = animatable;
+    p.scalar = access;
+    return p;
+}
+
+ParamDesc triple(ParamScope scope, ParamType type, sv path, sv label, sv unit, Range r, glm::dvec3 def,
+                 bool log, bool animatable, glm::dvec3* (*access)(void*), sv doc) {
+    ParamDesc p;
+    p.scope = scope;
+    p.type = type;
+    p.path = path;
+    p.label = label;
+    p.unit = unit;
+    p.doc = doc;
+    p.minValue = r.min;
+    p.maxValue = r.max;
+    p.uiMin = r.uiMin;
+    p.uiMax = r.uiMax;
+    p.defaultValue[0] = def.x;
+    p.defaultValue[1] = def.y;
+    p.defaultValue[2] = def.z;
+    p.logScale = log;
+    p.animatable = animatable;
+    p.vec3 = access;
+    return p;
+}
+
+ParamDesc enumeration(ParamScope scope, sv path, sv label, std::span<const sv> names, int def,
+                      std::int64_t (*get)(const void*), void (*set)(void*, std::int64_t), sv doc) {
+    ParamDesc p;
+    p.scope = scope;
+    p.type = ParamType::Enum;
+    p.path = path;
+    p.label = label;
+    p.doc = doc;
+    p.minValue = p.uiMin = 0.0;
+    p.maxValue = p.uiMax = double(names.size() - 1);
+    p.defaultValue[0] = def;
+    p.enumNames = names;
+    p.getInt = get;
+    p.setInt = set;
+    return p;
+}
+
+ParamDesc text(ParamScope scope, sv path, sv label, bool required, std::string* (*access)(void*), sv doc) {
+    ParamDesc p;
+    p.scope = scope;
+    p.type = ParamType::String;
+    p.path = path;
+    p.label = label;
+    p.doc = doc;
+    p.required = required;
+    p.string = access;
+    return p;
+}
+
+constexpr ParamScope G = ParamScope::Global;
+constexpr ParamScope V = ParamScope::Volume;
+constexpr ParamScope E = ParamScope::Emitter;
+constexpr double kTopOfAtmosphere = 60000.0;  // Rt - Rg with the default radii [m]
+
+const std::vector<ParamDesc>& globalTable() {
+    static const std::vector<ParamDesc> table = {
+        // Location (sun.hpp).
+        scalar(
+            G, "location.latitude_deg", "Latitude", "deg", {-90, 90, -90, 90}, 45, false, false,
+            [](void* o) { return &env(o).location.latitudeDeg; },
+            "Geographic latitude [deg], -90..90, north positive. Default 45."),
+        scalar(
+            G, "location.day_of_year", "Day of year", "day", {1, 365, 1, 365}, 172, false, false,
+            [](void* o) { return &env(o).location.dayOfYear; },
+            "Day of the year [1..365]; sets the solar declination. Default 172 (June solstice)."),
+        scalar(
+            G, "location.north_offset_deg", "North offset", "deg", {-360, 360, -180, 180}, 0, false, false,
+            [](void* o) { return &env(o).location.northOffsetDeg; },
+            "Rotation of the whole sky about +Y [deg], added to every azimuth. Default 0."),
+        scalar(
+            G, "location.moon_phase_offset_days", "Moon phase offset", "day", {0, 29.530589, 0, 29.530589}, 0,
+            false, false, [](void* o) { return &env(o).location.moonPhaseOffsetDays; },
+            "Shifts the moon's age [days], 0..29.53: chooses the night of the month "
+            "(~14.8 after a new moon is full). Default 0."),
+        // Atmosphere (atmosphere.hpp).
+        scalar(
+            G, "atmosphere.viewer_height_m", "Viewer height", "m", {0, kTopOfAtmosphere, 0, 20000}, 0, false,
+            false, [](void* o) { return &env(o).atmosphere.viewerHeight; },
+            "Viewer height above the ground [m], 0..60000. Default 0."),
+        triple(
+            G, ParamType::Vec3, "atmosphere.rayleigh.scattering_per_m", "Rayleigh scattering", "1/m",
+            {0, 1e-3, 1e-7, 1e-4}, {5.802e-6, 13.558e-6, 33.1e-6}, true, true,
+            [](void* o) { return &env(o).atmosphere.rayleighScattering; },
+            "Rayleigh scattering at sea level [1/m] per RGB channel, 0..1e-3 "
+            "(extinction equals scattering). Default (5.802, 13.558, 33.1)e-6."),
+        scalar(
+            G, "atmosphere.rayleigh.scale_height_m", "Rayleigh scale height", "m", {10, 100000, 1000, 20000},
+            8000, false, true, [](void* o) { return &env(o).atmosphere.rayleighScaleHeight; },
+            "Rayleigh density scale height H_R [m], 10..100000. Default 8000."),
+        triple(
+            G, ParamType::Vec3, "atmosphere.mie.scattering_per_m", "Mie scattering", "1/m",
+            {0, 1e-3, 1e-7, 1e-3}, glm::dvec3(3.996e-6), true, true,
+            [](void* o) { return &env(o).atmosphere.mieScattering; },
+            "Mie (aerosol) scattering at sea level [1/m] per RGB channel, 0..1e-3; haze and "
+            "dust raise it. Default 3.996e-6."),
+        triple(
+            G, ParamType::Vec3, "atmosphere.mie.extinction_per_m", "Mie extinction", "1/m",
+            {0, 2e-3, 1e-7, 2e-3}, glm::dvec3(3.996e-6 / 0.9), true, true,
+            [](void* o) { return &env(o).atmosphere.mieExtinction; },
+            "Mie extinction at sea level [1/m] per RGB channel, 0..2e-3, >= scattering. "
+            "Default scattering / 0.9 = 4.44e-6."),
+        scalar(
+            G, "atmosphere.mie.scale_height_m", "Mie scale height", "m", {10, 100000, 100, 10000}, 1200,
+            false, true, [](void* o) { return &env(o).atmosphere.mieScaleHeight; },
+            "Mie density scale height H_M [m], 10..100000. Default 1200."),
+        scalar(
+            G, "atmosphere.mie.anisotropy", "Mie anisotropy", "", {-0.999, 0.999, 0.0, 0.99}, 0.8, false,
+            true, [](void* o) { return &env(o).atmosphere.mieAnisotropy; },
+            "Cornette-Shanks asymmetry g, -0.999..0.999; larger is a tighter sun halo. "
+            "Default 0.8."),
+        triple(
+            G, ParamType::Vec3, "atmosphere.ozone.absorption_per_m", "Ozone absorption", "1/m",
+            {0, 1e-4, 1e-8, 1e-5}, {0.650e-6, 1.881e-6, 0.085e-6}, true, true,
+            [](void* o) { return &env(o).atmosphere.ozoneAbsorption; },
+            "Ozone absorption at the peak of its tent profile [1/m] per RGB channel, 0..1e-4; "
+            "0 turns it off. Default (0.650, 1.881, 0.085)e-6 (Bruneton 2017)."),
+        scalar(
+            G, "atmosphere.ozone.peak_height_m", "Ozone peak height", "m",
+            {0, kTopOfAtmosphere, 0, kTopOfAtmosphere}, 25000, false, false,
+            [](void* o) { return &env(o).atmosphere.ozoneCenterHeight; },
+            "Height of the ozone peak [m], 0..60000. Default 25000."),
+        scalar(
+            G, "atmosphere.ozone.width_m", "Ozone layer width", "m",
+            {1, 2 * kTopOfAtmosphere, 1000, kTopOfAtmosphere}, 30000, false, false,
+            [](void* o) { return &env(o).atmosphere.ozoneWidth; },
+            "Full width of the ozone tent [m], 1..120000 (zero density at peak +- width/2). "
+            "Default 30000."),
+        // Sun and moon (preset.hpp, LightParams).
+        triple(
+            G, ParamType::Colour, "sun.colour_rgb", "Sun colour", "", {0, 100, 0, 2}, glm::dvec3(1.0), false,
+            true, [](void* o) { return &env(o).sun.colour; },
+            "Sun colour above the atmosphere, scene-linear Rec.709, 0..100 per channel; "
+            "illuminance = colour x intensity. Default white."),
+        scalar(
+            G, "sun.intensity", "Sun intensity", "", {0, 1e5, 0.01, 1000}, kDefaultSunIntensity, true, true,
+            [](void* o) { return &env(o).sun.intensity; },
+            "Sun intensity (multiplier of the colour, renderer radiance units), 0..1e5. "
+            "Default 20, as in common Nishita implementations."),
+        triple(
+            G, ParamType::Colour, "moon.colour_rgb", "Moon colour", "", {0, 100, 0, 2}, {0.85, 0.92, 1.0},
+            false, true, [](void* o) { return &env(o).moon.colour; },
+            "Moon colour above the atmosphere, scene-linear Rec.709, 0..100 per channel. "
+            "Default (0.85, 0.92, 1.0): an artistic cool tint."),
+        scalar(
+            G, "moon.intensity", "Moon intensity", "", {0, 1e5, 1e-6, 10}, kDefaultMoonIntensity, true, true,
+            [](void* o) { return &env(o).moon.intensity; },
+            "Moon intensity at full phase (scaled by the phase law), 0..1e5. Default 0.05 = "
+            "2.5e-3 x the default sun: artistic; the physical full-moon / sun ratio is "
+            "~2.5e-6 (0.00005 here)."),
+        // Global height fog (height_fog.hpp).
+        scalar(
+            G, "fog.density_per_m", "Fog density", "1/m", {0, 10, 1e-6, 0.1}, 0.0, true, true,
+            [](void* o) { return &env(o).fog.density; },
+            "Global fog density b at the base height [1/m], 0..10; 0 is no fog. Default 0."),
+        scalar(
+            G, "fog.falloff_per_m", "Fog height falloff", "1/m", {0, 10, 1e-5, 1}, 0.0, true, true,
+            [](void* o) { return &env(o).fog.falloff; },
+            "Height falloff c [1/m], 0..10; 0 is a uniform fog. Default 0."),
+        scalar(
+            G, "fog.base_height_m", "Fog base height", "m", {-1e5, 1e5, -500, 2000}, 0.0, false, true,
+            [](void* o) { return &env(o).fog.baseHeight; },
+            "Base height h0 [m] where the density equals b, -1e5..1e5. Default 0."),
+        enumeration(
+            G, "fog.colour_mode", "Fog colour mode", kColourModeNames, 0,
+            [](const void* o) { return std::int64_t(static_cast<const Environment*>(o)->fogColourMode); },
+            [](void* o, std::int64_t v) { env(o).fogColourMode = FogColourMode(v); },
+            "Where the fog colour comes from: sky (horizon colour with phase), tinted (sky x "
+            "colour), custom (colour as radiance). Default sky."),
+        triple(
+            G, ParamType::Colour, "fog.colour_rgb", "Fog colour", "", {0, 1e5, 0, 2}, glm::dvec3(1.0), false,
+            true, [](void* o) { return &env(o).fogColour; },
+            "Fog tint (tinted) or in-scattered radiance (custom), scene-linear Rec.709, "
+            "0..1e5 per channel. Default white."),
+    };
+    return table;
+}
+
+const std::vector<ParamDesc>& volumeTable() {
+    static const std::vector<ParamDesc> table = [] {
+        std::vector<ParamDesc> t = {
+            text(
+                V, "id", "Id", true, [](void* o) { return &vol(o).id; },
+                "Stable identifier (1..64 of A-Z a-z 0-9 _ - .), unique among volumes; "
+                "timeline tracks refer to it. Required."),
+            text(
+                V, "name", "Name", false, [](void* o) { return &vol(o).name; },
+                "Name shown to the artist. Default empty."),
+            enumeration(
+                V, "shape", "Shape", kShapeNames, 0,
+                [](const void* o) { return std::int64_t(static_cast<const FogVolume*>(o)->shape); },
+                [](void* o, std::int64_t v) { vol(o).shape = FogVolumeShape(v); },
+                "box (unit cube [-1,1]^3) or ellipsoid (unit sphere) in object space. "
+                "Default box."),
+            triple(
+                V, ParamType::Vec3, "position_m", "Position", "m", {-1e7, 1e7, -1000, 1000}, glm::dvec3(0.0),
+                false, true, [](void* o) { return &vol(o).position; },
+                "Centre [m], world space (Y up, north -Z), -1e7..1e7. Default 0."),
+        };
+        ParamDesc rotation;
+        rotation.scope = V;
+        rotation.type = ParamType::Quaternion;
+        rotation.path = "rotation_xyzw";
+        rotation.label = "Rotation";
+        rotation.doc =
+            "Orientation, world from object, unit quaternion [x, y, z, w]. "
+            "Default identity [0, 0, 0, 1].";
+        rotation.minValue = rotation.uiMin = -1.0;
+        rotation.maxValue = rotation.uiMax = 1.0;
+        rotation.defaultValue[3] = 1.0;
+        rotation.quat = [](void* o) { return &vol(o).rotation; };
+        t.push_back(rotation);
+        t.push_back(triple(
+            V, ParamType::Vec3, "half_extents_m", "Half extents", "m", {1e-3, 1e7, 0.1, 1000},
+            glm::dvec3(10.0), false, true, [](void* o) { return &vol(o).halfExtents; },
+            "Half extents along the object axes [m], 0.001..1e7. Default 10."));
+        t.push_back(scalar(
+            V, "density_per_m", "Density", "1/m", {0, 10, 1e-5, 1}, 0.02, true, true,
+            [](void* o) { return &vol(o).density; },
+            "Density b_v at the offset plane [1/m], 0..10. Default 0.02."));
+        t.push_back(scalar(
+            V, "falloff_per_m", "Falloff", "1/m", {0, 10, 1e-4, 1}, 0.0, true, true,
+            [](void* o) { return &vol(o).falloff; },
+            "Density falloff c_v along the gradient [1/m], 0..10; 0 is uniform. "
+            "Default 0."));
+        ParamDesc gradient = triple(
+            V, ParamType::Vec3, "gradient_direction", "Gradient direction", "", {-1, 1, -1, 1},
+            {0.0, 1.0, 0.0}, false, false, [](void* o) { return &vol(o).gradientDirection; },
+            "Direction g the density falls off along, world space, unit "
+            "length. Default +Y [0, 1, 0].");
+        gradient.unitLength = true;
+        t.push_back(gradient);
+        t.push_back(scalar(
+            V, "gradient_offset_m", "Gradient offset", "m", {-1e7, 1e7, -100, 100}, 0.0, false, true,
+            [](void* o) { return &vol(o).gradientOffset; },
+            "Offset of the b_v plane from the centre along g [m]. Default 0."));
+        t.push_back(enumeration(
+            V, "colour_mode", "Colour mode", kColourModeNames, 0,
+            [](const void* o) { return std::int64_t(static_cast<const FogVolume*>(o)->colourMode); },
+            [](void* o, std::int64_t v) { vol(o).colourMode = FogColourMode(v); },
+            "sky (the sky's fog colour), tinted (sky x colour) or custom (colour as radiance). "
+            "Default sky."));
+        t.push_back(triple(
+            V, ParamType::Colour, "colour_rgb", "Colour", "", {0, 1e5, 0, 2}, glm::dvec3(1.0), false, true,
+            [](void* o) { return &vol(o).colour; },
+            "Tint or radiance (see colour mode), scene-linear Rec.709, 0..1e5 per "
+            "channel. Default white."));
+        return t;
+    }();
+    return table;
+}
+
+const std::vector<ParamDesc>& emitterTable() {
+    static const std::vector<ParamDesc> table = [] {
+        std::vector<ParamDesc> t = {
+            text(
+                E, "id", "Id", true, [](void* o) { return &emi(o).id; },
+                "Stable identifier (1..64 of A-Z a-z 0-9 _ - .), unique among emitters; "
+                "timeline tracks refer to it. Required."),
+            text(
+                E, "name", "Name", false, [](void* o) { return &emi(o).name; },
+                "Name shown to the artist. Default empty."),
+            enumeration(
+                E, "kind", "Kind", kEmitterKindNames, 0,
+                [](const void* o) { return std::int64_t(static_cast<const Emitter*>(o)->kind); },
+                [](void* o, std::int64_t v) { emi(o).kind = EmitterKind(v); },
+                "point (steady) or lightning (seeded flashes). Default point."),
+            triple(
+                E, ParamType::Vec3, "position_m", "Position", "m", {-1e7, 1e7, -1000, 1000}, glm::dvec3(0.0),
+                false, true, [](void* o) { return &emi(o).position; },
+                "Position [m], world space. Default 0."),
+            scalar(
+                E, "intensity_per_m", "Intensity", "1/m", {0, 1e5, 1e-3, 100}, 1.0, true, true,
+                [](void* o) { return &emi(o).intensity; },
+                "In-scattered radiance per metre next to the emitter, i [1/m] (times the "
+                "colour), 0..1e5. Default 1."),
+            scalar(
+                E, "attenuation_per_m2", "Attenuation", "1/m^2", {0, 1e4, 1e-5, 10}, 0.01, true, true,
+                [](void* o) { return &emi(o).attenuation; },
+                "Attenuation a [1/m^2], 0..1e4: the field halves at 1/sqrt(a). Default 0.01 "
+                "(half at 10 m)."),
+            triple(
+                E, ParamType::Colour, "colour_rgb", "Colour", "", {0, 1e5, 0, 2}, glm::dvec3(1.0), false,
+                true, [](void* o) { return &emi(o).colour; },
+                "Colour, scene-linear Rec.709, 0..1e5 per channel. Default white."),
+        };
+        ParamDesc seed;
+        seed.scope = E;
+        seed.type = ParamType::Int;
+        seed.path = "seed";
+        seed.label = "Seed";
+        seed.doc = "Seed of the lightning flash pattern, 0..4294967295. Default 1.";
+        seed.minValue = seed.uiMin = 0.0;
+        seed.maxValue = seed.uiMax = 4294967295.0;
+        seed.defaultValue[0] = 1.0;
+        seed.getInt = [](const void* o) { return std::int64_t(static_cast<const Emitter*>(o)->seed); };
+        seed.setInt = [](void* o, std::int64_t v) { emi(o).seed = std::uint32_t(v); };
+        t.push_back(seed);
+        t.push_back(scalar(
+            E, "flashes_per_minute", "Flashes per minute", "1/min", {0, 6000, 0, 120}, 6.0, false, false,
+            [](void* o) { return &emi(o).flashesPerMinute; },
+            "Lightning: mean flashes per minute of the flash clock, 0..6000. "
+            "Default 6."));
+        t.push_back(scalar(
+            E, "flash_duration_s", "Flash duration", "s", {1e-3, 3600, 0.01, 5}, 0.35, true, false,
+            [](void* o) { return &emi(o).flashDurationSeconds; },
+            "Lightning: length of one flash [s of the flash clock], 0.001..3600. "
+            "Default 0.35."));
+        t.push_back(scalar(
+            E, "time_scale", "Time scale", "", {1e-3, 1e6, 1, 3600}, 60.0, true, false,
+            [](void* o) { return &emi(o).timeScale; },
+            "Lightning: game seconds per second of the flash clock, 0.001..1e6 "
+            "(a day at 60x shows real-time flashes). Default 60."));
+        return t;
+    }();
+    return table;
+}
+
+}  // namespace
+
+int ParamDesc::components() const {
+    switch (type) {
+        case ParamType::Scalar:
+        case ParamType::Enum:
+        case ParamType::Int:
+            return 1;
+        case ParamType::Colour:
+        case ParamType::Vec3:
+            return 3;
+        case ParamType::Quaternion:
+            return 4;
+        case ParamType::String:
+            return 0;
+    }
+    return 0;
+}
+
+std::span<const ParamDesc> paramTable(ParamScope scope) {
+    switch (scope) {
+        case ParamScope::Global:
+            return globalTable();
+        case ParamScope::Volume:
+            return volumeTable();
+        case ParamScope::Emitter:
+            return emitterTable();
+    }
+    return {};
+}
+
+const ParamDesc* findParam(ParamScope scope, std::string_view path) {
+    for (const ParamDesc& p : paramTable(scope))
+        if (p.path == path) return &p;
+    return nullptr;
+}
+
+std::string_view scopeName(ParamScope scope) {
+    switch (scope) {
+        case ParamScope::Global:
+            return "global";
+        case ParamScope::Volume:
+            return "volume";
+        case ParamScope::Emitter:
+            return "emitter";
+    }
+    return "";
+}
+
+std::string_view interpolationName(Interpolation interpolation) {
+    return kInterpolationNames[std::size_t(interpolation)];
+}
+
+bool parseInterpolation(std::string_view name, Interpolation& out) {
+    for (std::size_t i = 0; i < kInterpolationNames.size(); ++i) {
+        if (kInterpolationNames[i] == name) {
+            out = Interpolation(i);
+            return true;
+        }
+    }
+    return false;
+}
+
+}  // namespace aerial

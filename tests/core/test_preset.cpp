@@ -1,0 +1,705 @@
+// Presets: JSON round trips bit-exact, the shipped presets load cleanly,
+// malformed files give located errors, saving is atomic, and evaluation
+// binds tracks by id and uses the sun, atmosphere and emitter models.
+#include <aerial/atmosphere.hpp>
+#include <aerial/emitter.hpp>
+#include <aerial/evaluate.hpp>
+#include <aerial/param_table.hpp>
+#include <aerial/preset.hpp>
+#include <aerial/sun.hpp>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <csignal>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+
+#include <sys/resource.h>
+#include <unistd.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kSourceRoot = fs::path(__FILE__).parent_path().parent_path().parent_path();
+const fs::path kPresetDir = kSourceRoot / "presets";
+const fs::path kFixtureDir = kSourceRoot / "tests" / "data" / "presets";
+
+std::string readFile(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+void writeFile(const fs::path& path, const std::string& text) {
+    std::ofstream out(path, std::ios::binary);
+    out << text;
+}
+
+std::string joinIssues(const std::vector<aerial::PresetIssue>& issues) {
+    std::string s;
+    for (const auto& i : issues) s += i.toString() + "\n";
+    return s;
+}
+
+// A scratch directory per test, removed afterwards.
+class TempDir {
+public:
+    TempDir() {
+        std::string tmpl = (fs::temp_directory_path() / "aerial_preset_XXXXXX").string();
+        path_ = ::mkdtemp(tmpl.data());
+    }
+    ~TempDir() {
+        std::error_code ec;
+        fs::permissions(path_, fs::perms::owner_all, fs::perm_options::add, ec);
+        fs::remove_all(path_, ec);
+    }
+    const fs::path& path() const { return path_; }
+
+private:
+    fs::path path_;
+};
+
+std::vector<fs::path> shippedPresets() {
+    std::vector<fs::path> out;
+    for (const auto& entry : fs::directory_iterator(kPresetDir)) {
+        const fs::path& p = entry.path();
+        if (p.extension() == ".json" && p.filename().string().find("schema") == std::string::npos)
+            out.push_back(p);
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+bool sameBits(double a, double b) {
+    return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+}
+
+// ---------------------------------------------------------------------------
+// Round trips
+
+TEST(Preset, DefaultPresetIsValid) {
+    const aerial::Preset p = aerial::defaultPreset();
+    EXPECT_TRUE(aerial::validatePreset(p).empty()) << joinIssues(aerial::validatePreset(p));
+    EXPECT_FALSE(p.volumes.empty());
+    EXPECT_FALSE(p.emitters.empty());
+    EXPECT_FALSE(p.tracks.empty());
+}
+
+TEST(Preset, AwkwardDoublesRoundTripBitExact) {
+    aerial::Preset p = aerial::defaultPreset();
+    const double awkward[] = {0.1,
+                              1e-7,
+                              5.802e-6,
+                              1.0 / 3.0,
+                              std::nextafter(1.0, 2.0),
+                              -0.0,
+                              2.0 / 3.0e5,
+                              4.440000000000001e-06,
+                              9007199.254740993,
+                              4503599627370497.0 / 1e9,
+                              1e-300,
+                              123456.78901234567};
+    p.volumes.clear();
+    for (std::size_t i = 0; i < std::size(awkward); ++i) {
+        aerial::FogVolume v;
+        v.id = "v";
+        v.id += std::to_string(i);
+        v.position = glm::dvec3(awkward[i], -awkward[i] * 1e-3, 0.1 + 0.2);
+        v.density = std::min(std::abs(awkward[i]), 10.0);
+        p.volumes.push_back(v);
+    }
+    p.environment.fog.baseHeight = 0.1 + 0.2;  // 0.30000000000000004
+    p.environment.atmosphere.mieScattering = glm::dvec3(5.802e-6, 1e-7, 3.996e-6);
+    p.environment.atmosphere.mieExtinction = p.environment.atmosphere.mieScattering / 0.9;
+    p.tracks.clear();
+    ASSERT_TRUE(aerial::validatePreset(p).empty()) << joinIssues(aerial::validatePreset(p));
+
+    const std::string text = aerial::presetToJson(p);
+    const aerial::PresetLoadResult r = aerial::parsePreset(text, "awkward.json");
+    ASSERT_TRUE(r.ok()) << joinIssues(r.errors);
+    EXPECT_TRUE(r.warnings.empty()) << joinIssues(r.warnings);
+    for (std::size_t i = 0; i < p.volumes.size(); ++i) {
+        for (int c = 0; c < 3; ++c)
+            EXPECT_TRUE(sameBits(r.preset->volumes[i].position[c], p.volumes[i].position[c]))
+                << i << "," << c << ": " << r.preset->volumes[i].position[c];
+        EXPECT_TRUE(sameBits(r.preset->volumes[i].density, p.volumes[i].density)) << i;
+    }
+    EXPECT_TRUE(sameBits(r.preset->environment.fog.baseHeight, 0.1 + 0.2));
+    EXPECT_TRUE(std::signbit(r.preset->volumes[5].position.x)) << "-0.0 keeps its sign";
+    EXPECT_TRUE(aerial::presetsIdentical(p, *r.preset));
+    // save -> load -> save gives the same text.
+    EXPECT_EQ(aerial::presetToJson(*r.preset), text);
+}
+
+TEST(Preset, RandomDoublesRoundTripBitExact) {
+    std::mt19937_64 rng(2026);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    aerial::Preset p;
+    aerial::Track track;
+    track.target = aerial::TrackTarget::global("fog.base_height_m");
+    for (int i = 0; i < 2000; ++i) {
+        // Normal doubles over many decades (denormals excluded), both signs.
+        const double magnitude = std::pow(10.0, -300.0 + 305.0 * unit(rng));
+        const double v = (unit(rng) < 0.5 ? -1.0 : 1.0) * magnitude;
+        track.keys.push_back({24.0 * i / 2000.0, glm::dvec3(v, 0.0, 0.0)});
+    }
+    p.tracks.push_back(track);
+    ASSERT_TRUE(aerial::validatePreset(p).empty()) << joinIssues(aerial::validatePreset(p));
+    const aerial::PresetLoadResult r = aerial::parsePreset(aerial::presetToJson(p));
+    ASSERT_TRUE(r.ok()) << joinIssues(r.errors);
+    ASSERT_EQ(r.preset->tracks.size(), 1u);
+    const auto& keys = r.preset->tracks[0].keys;
+    ASSERT_EQ(keys.size(), track.keys.size());
+    for (std::size_t i = 0; i < keys.size(); ++i) {
+        ASSERT_TRUE(sameBits(keys[i].value.x, track.keys[i].value.x)) << track.keys[i].value.x;
+        ASSERT_TRUE(sameBits(keys[i].timeHours, track.keys[i].timeHours));
+    }
+}
+
+TEST(Preset, DefaultPresetSaveLoadSave) {
+    const aerial::Preset p = aerial::defaultPreset();
+    TempDir dir;
+    const fs::path file = dir.path() / "default.json";
+    ASSERT_TRUE(aerial::savePreset(p, file.string()).ok());
+    const aerial::PresetLoadResult r = aerial::loadPreset(file.string());
+    ASSERT_TRUE(r.ok()) << joinIssues(r.errors);
+    EXPECT_TRUE(aerial::presetsIdentical(p, *r.preset));
+    const fs::path again = dir.path() / "again.json";
+    ASSERT_TRUE(aerial::savePreset(*r.preset, again.string()).ok());
+    EXPECT_EQ(readFile(file), readFile(again));
+    // Only the two files: no temporary file left behind.
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir.path()), fs::directory_iterator()), 2);
+}
+
+TEST(Preset, PresetsIdenticalSeesOneBit) {
+    const aerial::Preset a = aerial::defaultPreset();
+    aerial::Preset b = a;
+    EXPECT_TRUE(aerial::presetsIdentical(a, b));
+    b.volumes[0].density = std::nextafter(b.volumes[0].density, 1.0);
+    EXPECT_FALSE(aerial::presetsIdentical(a, b));
+    b = a;
+    b.tracks[0].keys[1].value.x = std::nextafter(b.tracks[0].keys[1].value.x, 1.0);
+    EXPECT_FALSE(aerial::presetsIdentical(a, b));
+}
+
+// ---------------------------------------------------------------------------
+// Shipped presets and the schema
+
+TEST(Preset, ShippedPresetsLoadCleanlyAndAreCanonical) {
+    const auto files = shippedPresets();
+    ASSERT_GE(files.size(), 5u);
+    for (const fs::path& file : files) {
+        SCOPED_TRACE(file.string());
+        const aerial::PresetLoadResult r = aerial::loadPreset(file.string());
+        ASSERT_TRUE(r.ok()) << joinIssues(r.errors);
+        EXPECT_TRUE(r.warnings.empty()) << joinIssues(r.warnings);
+        // The files are written by savePreset: load -> save gives the file back.
+        EXPECT_EQ(aerial::presetToJson(*r.preset), readFile(file));
+        const aerial::PresetLoadResult again = aerial::parsePreset(aerial::presetToJson(*r.preset));
+        ASSERT_TRUE(again.ok());
+        EXPECT_TRUE(aerial::presetsIdentical(*r.preset, *again.preset));
+        // Keyed over the whole day: some track has keys before 06:00 and after 18:00.
+        bool wholeDay = false;
+        for (const aerial::Track& t : r.preset->tracks)
+            wholeDay = wholeDay || (t.keys.front().timeHours < 6.0 && t.keys.back().timeHours > 18.0);
+        EXPECT_TRUE(wholeDay);
+        EXPECT_GE(r.preset->tracks.size(), 4u);
+        EXPECT_FALSE(r.preset->name.empty());
+    }
+}
+
+TEST(Preset, ShippedPresetsLookDifferent) {
+    auto load = [](const char* name) {
+        const aerial::PresetLoadResult r = aerial::loadPreset((kPresetDir / name).string());
+        EXPECT_TRUE(r.ok()) << name << "\n" << joinIssues(r.errors);
+        return r.ok() ? *r.preset : aerial::Preset{};
+    };
+    const aerial::Preset clear = load("clear_summer_day.json");
+    const aerial::Preset hazy = load("hazy_sunset.json");
+    const aerial::Preset valley = load("foggy_valley_morning.json");
+    const aerial::Preset storm = load("stormy_night.json");
+    const aerial::Preset desert = load("desert_dusk.json");
+    const double defaultMie = aerial::AtmosphereParams{}.mieScattering.x;
+
+    // Hazy sunset: strong Mie.
+    EXPECT_GT(hazy.environment.atmosphere.mieScattering.x, 4.0 * defaultMie);
+    // Foggy valley: volumes that are dense at dawn and gone by noon.
+    ASSERT_FALSE(valley.volumes.empty());
+    const aerial::PresetState dawn = aerial::evaluate(valley, 6.5);
+    const aerial::PresetState noon = aerial::evaluate(valley, 12.0);
+    for (std::size_t i = 0; i < valley.volumes.size(); ++i) {
+        EXPECT_GT(dawn.volumes[i].density, 0.005) << valley.volumes[i].id;
+        EXPECT_EQ(noon.volumes[i].density, 0.0) << valley.volumes[i].id;
+    }
+    // Stormy night: lightning emitters and a moon.
+    const auto lightning =
+        std::count_if(storm.emitters.begin(), storm.emitters.end(),
+                      [](const aerial::Emitter& e) { return e.kind == aerial::EmitterKind::Lightning; });
+    EXPECT_GE(lightning, 2);
+    EXPECT_GT(storm.environment.moon.intensity, 0.0);
+    // Desert dusk: dusty (Mie scattering reddish-brown: more in red than blue, and strong).
+    EXPECT_GT(desert.environment.atmosphere.mieScattering.x, desert.environment.atmosphere.mieScattering.z);
+    EXPECT_GT(desert.environment.atmosphere.mieScattering.z, 2.0 * defaultMie);
+    // Clear day: close to the Earth defaults, little fog.
+    EXPECT_LT(clear.environment.atmosphere.mieScattering.x, 2.0 * defaultMie);
+    EXPECT_LT(aerial::evaluate(clear, 13.0).environment.fog.density, 1e-3);
+}
+
+TEST(Preset, ShippedPresetsEvaluateInRangeAllDay) {
+    // Every parameter of every shipped preset, every 10 minutes: finite and
+    // inside its table range (tracks are clamped; base values validated).
+    for (const fs::path& file : shippedPresets()) {
+        SCOPED_TRACE(file.string());
+        const aerial::PresetLoadResult r = aerial::loadPreset(file.string());
+        ASSERT_TRUE(r.ok()) << joinIssues(r.errors);
+        const aerial::CompiledPreset compiled(*r.preset);
+        EXPECT_TRUE(compiled.issues().empty()) << joinIssues(compiled.issues());
+        aerial::PresetState s;
+        for (int i = 0; i < 24 * 6; ++i) {
+            compiled.evaluate(i / 6.0, s);
+            aerial::Preset snapshot;
+            snapshot.environment = s.environment;
+            snapshot.volumes = s.volumes;
+            snapshot.emitters = s.emitters;
+            // Lightning multiplies intensities by a flash in [0, 1]: still in range.
+            const auto issues = aerial::validatePreset(snapshot);
+            ASSERT_TRUE(issues.empty()) << "t = " << i / 6.0 << "\n" << joinIssues(issues);
+            for (const aerial::LightState* light : {&s.sunLight, &s.moonLight}) {
+                for (int c = 0; c < 3; ++c) {
+                    ASSERT_TRUE(std::isfinite(light->illuminance[c]));
+                    ASSERT_GE(light->transmittance[c], 0.0);
+                    ASSERT_LE(light->transmittance[c], 1.0);
+                }
+            }
+            for (double flash : s.emitterFlash) {
+                ASSERT_GE(flash, 0.0);
+                ASSERT_LE(flash, 1.0);
+            }
+        }
+    }
+}
+
+TEST(Preset, SchemaFileMatchesTheTable) {
+    const std::string shipped = readFile(kPresetDir / "aerial-preset.schema.json");
+    EXPECT_EQ(shipped, aerial::presetJsonSchema())
+        << "regenerate presets/aerial-preset.schema.json from aerial::presetJsonSchema()";
+}
+
+// ---------------------------------------------------------------------------
+// Malformed files
+
+struct Fixture {
+    const char* file;
+    const char* pointer;
+    int line;
+    int column;
+    const char* reason;  // a substring of the message
+};
+
+// Positions counted in the fixture files (1-based, the first character of
+// the offending value, key or token).
+const Fixture kFixtures[] = {
+    {"syntax_missing_comma.json", "", 4, 3, "unexpected string literal"},
+    {"syntax_truncated.json", "/fog", 4, 1, "unexpected end of input"},
+    {"syntax_bad_literal.json", "/fog/density_per_m", 3, 28, "invalid literal"},
+    {"infinite.json", "/atmosphere/mie/scale_height_m", 4, 31, "overflow"},
+    {"out_of_range.json", "/volumes/1/half_extents_m/1", 5, 40, "out of range: -3"},
+    {"wrong_type.json", "/fog/density_per_m", 4, 22, "expected a number, got a string"},
+    {"duplicate_ids.json", "/volumes/2/id", 6, 12, "duplicate id \"mist\""},
+    {"unknown_target.json", "/tracks/1/volume", 6, 16, "no volume with id \"nope\""},
+    {"unknown_param.json", "/tracks/0/param", 4, 15, "unknown global parameter \"fog.thickness\""},
+    {"newer_version.json", "/version", 2, 14, "newer than this library reads"},
+    {"missing_version.json", "/version", 1, 1, "missing \"version\""},
+    {"bad_key_times.json", "/tracks/0/keys/1/time_h", 5, 54, "increase strictly"},
+    {"key_time_24.json", "/tracks/0/keys/0/time_h", 4, 52, "[0, 24)"},
+    {"not_animatable.json", "/tracks/0/param", 4, 15, "cannot be animated"},
+    {"duplicate_json_key.json", "/fog/density_per_m", 3, 34, "duplicate key"},
+    {"missing_id.json", "/emitters/1/id", 5, 5, "missing required field \"id\""},
+    {"bad_enum.json", "/volumes/0/shape", 3, 36, "unknown value \"sphere\""},
+    {"wrong_arity.json", "/sun/colour_rgb", 3, 25, "array of 3 numbers"},
+    {"mie_extinction_below_scattering.json", "/atmosphere/mie/extinction_per_m/1", 6, 37, "must be >="},
+    {"not_an_object.json", "", 1, 1, "expected an object"},
+    {"bad_track_value.json", "/tracks/0/keys/0/value", 4, 65, "array of 3 numbers"},
+};
+
+TEST(Preset, MalformedFilesGiveLocatedErrors) {
+    for (const Fixture& f : kFixtures) {
+        SCOPED_TRACE(f.file);
+        const fs::path path = kFixtureDir / f.file;
+        ASSERT_TRUE(fs::exists(path));
+        const aerial::PresetLoadResult r = aerial::loadPreset(path.string());
+        EXPECT_FALSE(r.ok());
+        EXPECT_FALSE(r.preset.has_value()) << "never half-loaded";
+        ASSERT_FALSE(r.errors.empty());
+        const auto it = std::find_if(r.errors.begin(), r.errors.end(),
+                                     [&](const aerial::PresetIssue& e) { return e.pointer == f.pointer; });
+        ASSERT_NE(it, r.errors.end()) << "no error at " << f.pointer << "; got:\n" << joinIssues(r.errors);
+        EXPECT_EQ(it->file, path.string());
+        EXPECT_EQ(it->line, f.line) << it->toString();
+        EXPECT_EQ(it->column, f.column) << it->toString();
+        EXPECT_NE(it->message.find(f.reason), std::string::npos) << it->toString();
+        EXPECT_EQ(it->severity, aerial::PresetIssue::Severity::Error);
+        // The one-line form names file, position, pointer and reason.
+        const std::string line = it->toString();
+        EXPECT_NE(line.find(path.string() + ":" + std::to_string(f.line) + ":" + std::to_string(f.column)),
+                  std::string::npos)
+            << line;
+    }
+}
+
+TEST(Preset, SecondOutOfRangeValueInTrackReported) {
+    const aerial::PresetLoadResult r = aerial::loadPreset((kFixtureDir / "bad_track_value.json").string());
+    ASSERT_FALSE(r.ok());
+    const auto it = std::find_if(r.errors.begin(), r.errors.end(), [](const aerial::PresetIssue& e) {
+        return e.pointer == "/tracks/1/keys/0/value";
+    });
+    ASSERT_NE(it, r.errors.end()) << joinIssues(r.errors);
+    EXPECT_EQ(it->line, 5);
+    EXPECT_EQ(it->column, 68);
+    EXPECT_NE(it->message.find("out of range"), std::string::npos);
+}
+
+TEST(Preset, UnknownFieldsAreWarnings) {
+    const fs::path path = kFixtureDir / "unknown_field.json";
+    const aerial::PresetLoadResult r = aerial::loadPreset(path.string());
+    ASSERT_TRUE(r.ok()) << joinIssues(r.errors);
+    ASSERT_EQ(r.warnings.size(), 2u) << joinIssues(r.warnings);
+    EXPECT_EQ(r.warnings[0].pointer, "/fog/colour");
+    EXPECT_EQ(r.warnings[0].line, 3);
+    EXPECT_EQ(r.warnings[0].column, 34);
+    EXPECT_EQ(r.warnings[0].severity, aerial::PresetIssue::Severity::Warning);
+    EXPECT_EQ(r.warnings[1].pointer, "/sky");
+    EXPECT_EQ(r.preset->environment.fog.density, 0.01);
+}
+
+TEST(Preset, MissingFileIsAnError) {
+    const aerial::PresetLoadResult r = aerial::loadPreset("/nonexistent/dir/none.json");
+    ASSERT_FALSE(r.ok());
+    ASSERT_EQ(r.errors.size(), 1u);
+    EXPECT_EQ(r.errors[0].file, "/nonexistent/dir/none.json");
+    EXPECT_NE(r.errors[0].message.find("cannot open"), std::string::npos);
+}
+
+TEST(Preset, MissingFieldsTakeTableDefaults) {
+    const aerial::PresetLoadResult r = aerial::parsePreset(R"({"version": 1, "volumes": [{"id": "v"}]})");
+    ASSERT_TRUE(r.ok()) << joinIssues(r.errors);
+    const aerial::FogVolume defaults;
+    EXPECT_EQ(r.preset->volumes[0].density, defaults.density);
+    EXPECT_EQ(r.preset->volumes[0].halfExtents, defaults.halfExtents);
+    EXPECT_EQ(r.preset->environment.sun.intensity, aerial::kDefaultSunIntensity);
+    EXPECT_EQ(r.preset->environment.moon.intensity, aerial::kDefaultMoonIntensity);
+}
+
+TEST(Preset, MangledInputNeverCrashes) {
+    // Truncations and byte flips of a valid preset: the loader returns a
+    // preset or errors, never crashes, and never a preset with errors.
+    const std::string text = aerial::presetToJson(aerial::defaultPreset());
+    std::mt19937 rng(99);
+    for (int i = 0; i < 400; ++i) {
+        std::string mangled = text;
+        if (i % 2 == 0) {
+            mangled.resize(rng() % text.size());
+        } else {
+            for (int k = 0; k < 3; ++k) mangled[rng() % mangled.size()] = char(rng() % 256);
+        }
+        const aerial::PresetLoadResult r = aerial::parsePreset(mangled, "mangled.json");
+        EXPECT_EQ(r.ok(), r.errors.empty());
+        for (const auto& e : r.errors) EXPECT_FALSE(e.message.empty());
+    }
+}
+
+TEST(Preset, ValidateNamesPointersForCodeBuiltPresets) {
+    aerial::Preset p = aerial::defaultPreset();
+    p.volumes[0].density = std::nan("");
+    p.emitters[0].id = "bad id!";
+    p.volumes[0].gradientDirection = glm::dvec3(0.0, 2.0, 0.0);
+    const auto issues = aerial::validatePreset(p);
+    auto has = [&](const char* pointer) {
+        return std::any_of(issues.begin(), issues.end(),
+                           [&](const aerial::PresetIssue& i) { return i.pointer == pointer; });
+    };
+    EXPECT_TRUE(has("/volumes/0/density_per_m")) << joinIssues(issues);
+    EXPECT_TRUE(has("/emitters/0/id")) << joinIssues(issues);
+    EXPECT_TRUE(has("/volumes/0/gradient_direction")) << joinIssues(issues);
+    for (const auto& i : issues) EXPECT_EQ(i.line, 0);
+}
+
+// ---------------------------------------------------------------------------
+// Atomic save
+
+TEST(PresetSave, MissingDirectoryFailsWithReason) {
+    const aerial::SaveResult r = aerial::savePreset(aerial::defaultPreset(), "/nonexistent/dir/x.json");
+    ASSERT_FALSE(r.ok());
+    EXPECT_NE(r.errors[0].message.find("No such file or directory"), std::string::npos)
+        << r.errors[0].toString();
+}
+
+TEST(PresetSave, FailedWriteLeavesOldFileIntact) {
+    TempDir dir;
+    const fs::path file = dir.path() / "scene.json";
+    const std::string old = "old contents, not even JSON\n";
+    writeFile(file, old);
+
+    aerial::Preset big = aerial::defaultPreset();
+    for (int i = 0; i < 200; ++i) {
+        aerial::FogVolume v;
+        v.id = "v";
+        v.id += std::to_string(i);
+        big.volumes.push_back(v);
+    }
+    // Make the write fail half-way: a file size limit (works as root too).
+    std::signal(SIGXFSZ, SIG_IGN);
+    rlimit saved{};
+    ASSERT_EQ(getrlimit(RLIMIT_FSIZE, &saved), 0);
+    rlimit small = saved;
+    small.rlim_cur = 4096;
+    ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &small), 0);
+    const aerial::SaveResult r = aerial::savePreset(big, file.string());
+    ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &saved), 0);
+
+    ASSERT_FALSE(r.ok());
+    EXPECT_NE(r.errors[0].message.find("write failed"), std::string::npos) << r.errors[0].toString();
+    EXPECT_EQ(readFile(file), old);
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir.path()), fs::directory_iterator()), 1)
+        << "the temporary file is removed";
+}
+
+TEST(PresetSave, ReadOnlyDirectoryLeavesOldFileIntact) {
+    if (::geteuid() == 0)
+        GTEST_SKIP() << "root ignores directory permissions (covered by the size-limit test)";
+    TempDir dir;
+    const fs::path file = dir.path() / "scene.json";
+    writeFile(file, "old\n");
+    fs::permissions(dir.path(), fs::perms::owner_read | fs::perms::owner_exec);
+    const aerial::SaveResult r = aerial::savePreset(aerial::defaultPreset(), file.string());
+    fs::permissions(dir.path(), fs::perms::owner_all);
+    ASSERT_FALSE(r.ok());
+    EXPECT_NE(r.errors[0].message.find("Permission denied"), std::string::npos) << r.errors[0].toString();
+    EXPECT_EQ(readFile(file), "old\n");
+}
+
+TEST(PresetSave, InvalidPresetIsNotWritten) {
+    TempDir dir;
+    const fs::path file = dir.path() / "scene.json";
+    writeFile(file, "old\n");
+    aerial::Preset p = aerial::defaultPreset();
+    p.environment.fog.density = INFINITY;
+    const aerial::SaveResult r = aerial::savePreset(p, file.string());
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.errors[0].pointer, "/fog/density_per_m");
+    EXPECT_EQ(readFile(file), "old\n");
+}
+
+TEST(PresetSave, ReplacesAndKeepsPermissions) {
+    TempDir dir;
+    const fs::path file = dir.path() / "scene.json";
+    writeFile(file, "old\n");
+    fs::permissions(file, fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
+    ASSERT_TRUE(aerial::savePreset(aerial::defaultPreset(), file.string()).ok());
+    EXPECT_EQ(readFile(file), aerial::presetToJson(aerial::defaultPreset()));
+    EXPECT_EQ(fs::status(file).permissions() & fs::perms::all,
+              fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
+}
+
+// ---------------------------------------------------------------------------
+// Evaluation
+
+aerial::Preset twoVolumePreset() {
+    aerial::Preset p;
+    aerial::FogVolume a, b;
+    a.id = "alpha";
+    a.name = "Alpha";
+    a.density = 0.1;
+    b.id = "beta";
+    b.name = "Beta";
+    b.density = 0.2;
+    p.volumes = {a, b};
+    aerial::Track ta;
+    ta.target = aerial::TrackTarget::volume("alpha", "density_per_m");
+    ta.interpolation = aerial::Interpolation::Linear;
+    ta.keys = {{0.0, glm::dvec3(0.0)}, {12.0, glm::dvec3(1.2, 0, 0)}};
+    aerial::Track tb;
+    tb.target = aerial::TrackTarget::volume("beta", "colour_rgb");
+    tb.interpolation = aerial::Interpolation::Step;
+    tb.keys = {{6.0, glm::dvec3(1.0, 0.0, 0.0)}, {18.0, glm::dvec3(0.0, 0.0, 1.0)}};
+    p.tracks = {ta, tb};
+    return p;
+}
+
+TEST(Evaluate, TracksSurviveReorderAndRename) {
+    const aerial::Preset p = twoVolumePreset();
+    aerial::Preset q = p;
+    std::reverse(q.volumes.begin(), q.volumes.end());
+    q.volumes[0].name = "Renamed beta";
+    q.volumes[1].name = "Renamed alpha";
+    std::reverse(q.tracks.begin(), q.tracks.end());
+    ASSERT_TRUE(aerial::validatePreset(q).empty());
+    // Through the file as well.
+    const aerial::PresetLoadResult r = aerial::parsePreset(aerial::presetToJson(q));
+    ASSERT_TRUE(r.ok()) << joinIssues(r.errors);
+
+    for (double t : {3.0, 9.0, 20.0}) {
+        const aerial::PresetState s = aerial::evaluate(p, t);
+        const aerial::PresetState u = aerial::evaluate(*r.preset, t);
+        EXPECT_EQ(u.volumes[1].id, "alpha");
+        // Linear 0 -> 1.2 from 00:00 to 12:00, back to 0 at 24:00.
+        const double expected = t <= 12.0 ? t * 0.1 : 1.2 * (24.0 - t) / 12.0;
+        EXPECT_NEAR(s.volumes[0].density, expected, 1e-12) << t;
+        EXPECT_EQ(u.volumes[1].density, s.volumes[0].density) << t;
+        EXPECT_EQ(u.volumes[0].colour, s.volumes[1].colour) << t;
+        EXPECT_EQ(u.volumes[0].name, "Renamed beta");
+    }
+    EXPECT_EQ(aerial::evaluate(p, 9.0).volumes[1].colour, glm::dvec3(1.0, 0.0, 0.0));
+    EXPECT_EQ(aerial::evaluate(p, 3.0).volumes[1].colour, glm::dvec3(0.0, 0.0, 1.0));
+}
+
+TEST(Evaluate, SunMoonAndTransmittanceFollowTheModels) {
+    aerial::Preset p = aerial::defaultPreset();
+    p.environment.location.moonPhaseOffsetDays = 10.0;
+    p.environment.sun.colour = glm::dvec3(1.0, 0.9, 0.8);
+    const aerial::CompiledPreset compiled(p);
+    EXPECT_TRUE(compiled.issues().empty()) << joinIssues(compiled.issues());
+    for (double t = 0.0; t < 24.0; t += 0.37) {
+        const aerial::PresetState s = compiled.evaluate(t);
+        const aerial::CelestialBody sun = aerial::sunPosition(p.environment.location, t);
+        const aerial::CelestialBody moon = aerial::moonPosition(p.environment.location, t);
+        EXPECT_EQ(s.sunLight.body.direction, sun.direction);
+        EXPECT_EQ(s.moonLight.body.direction, moon.direction);
+        const aerial::AtmosphereParams& air = s.environment.atmosphere;
+        const glm::dvec3 tSun = aerial::transmittanceToSpace(air, air.viewerHeight, sun.direction.y);
+        const glm::dvec3 tMoon = aerial::transmittanceToSpace(air, air.viewerHeight, moon.direction.y);
+        for (int c = 0; c < 3; ++c) {
+            // Tabulated optical depths: within 5e-4 of the direct quadrature.
+            EXPECT_NEAR(s.sunLight.transmittance[c], tSun[c], 5e-4) << "t " << t;
+            EXPECT_NEAR(s.moonLight.transmittance[c], tMoon[c], 5e-4) << "t " << t;
+        }
+        const glm::dvec3 eSun = p.environment.sun.colour * p.environment.sun.intensity;
+        EXPECT_EQ(s.sunLight.illuminanceSpace, eSun);
+        EXPECT_EQ(s.sunLight.illuminance, eSun * s.sunLight.transmittance);
+        EXPECT_EQ(s.moonLight.illuminanceSpace,
+                  p.environment.moon.colour * p.environment.moon.intensity * moon.phaseIrradiance);
+    }
+}
+
+TEST(Evaluate, HazyAtmosphereTransmittanceMatchesDirect) {
+    aerial::Preset p;
+    p.environment.atmosphere.mieScattering = glm::dvec3(8e-5, 6e-5, 4e-5);
+    p.environment.atmosphere.mieExtinction = glm::dvec3(1e-4, 8e-5, 6e-5);
+    p.environment.atmosphere.viewerHeight = 1500.0;
+    const aerial::CompiledPreset compiled(p);
+    for (double t = 3.0; t < 21.0; t += 0.05) {
+        const aerial::PresetState s = compiled.evaluate(t);
+        const aerial::AtmosphereParams& air = s.environment.atmosphere;
+        const glm::dvec3 direct =
+            aerial::transmittanceToSpace(air, air.viewerHeight, s.sunLight.body.direction.y);
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(s.sunLight.transmittance[c], direct[c], 5e-4) << t;
+    }
+}
+
+TEST(Evaluate, AnimatedScaleHeightUsesDirectTransmittance) {
+    aerial::Preset p;
+    aerial::Track t;
+    t.target = aerial::TrackTarget::global("atmosphere.mie.scale_height_m");
+    t.keys = {{6.0, glm::dvec3(800.0, 0, 0)}, {15.0, glm::dvec3(2500.0, 0, 0)}};
+    p.tracks = {t};
+    const aerial::PresetState s = aerial::evaluate(p, 10.0);
+    const aerial::AtmosphereParams& air = s.environment.atmosphere;
+    EXPECT_GT(air.mieScaleHeight, 800.0);
+    EXPECT_LT(air.mieScaleHeight, 2500.0);
+    EXPECT_EQ(s.sunLight.transmittance,
+              aerial::transmittanceToSpace(air, air.viewerHeight, s.sunLight.body.direction.y));
+}
+
+TEST(Evaluate, LightningFlashIsApplied) {
+    aerial::Preset p;
+    aerial::Emitter bolt;
+    bolt.id = "bolt";
+    bolt.kind = aerial::EmitterKind::Lightning;
+    bolt.intensity = 5.0;
+    bolt.flashesPerMinute = 30.0;
+    aerial::Emitter lamp;
+    lamp.id = "lamp";
+    lamp.intensity = 2.0;
+    p.emitters = {bolt, lamp};
+    const aerial::CompiledPreset compiled(p);
+    aerial::PresetState s;
+    int lit = 0;
+    for (int i = 0; i < 2000; ++i) {
+        const double t = 22.0 + i * 0.001;
+        compiled.evaluate(t, s);
+        const double flash = aerial::lightningFlash(bolt, s.timeHours);
+        EXPECT_EQ(s.emitterFlash[0], flash);
+        EXPECT_EQ(s.emitters[0].intensity, 5.0 * flash);
+        EXPECT_EQ(s.emitterFlash[1], 1.0);
+        EXPECT_EQ(s.emitters[1].intensity, 2.0);
+        lit += flash > 0.0;
+    }
+    EXPECT_GT(lit, 0) << "30 flashes per minute of flash clock must flash within 2 h of game time";
+}
+
+TEST(Evaluate, ClampsAnimatedValuesAndKeepsExtinctionAboveScattering) {
+    aerial::Preset p;
+    aerial::Track t;
+    t.target = aerial::TrackTarget::global("atmosphere.mie.scattering_per_m");
+    t.interpolation = aerial::Interpolation::Linear;
+    t.keys = {{0.0, glm::dvec3(1e-5)}, {12.0, glm::dvec3(1e-4)}};
+    p.tracks = {t};
+    const aerial::PresetState s = aerial::evaluate(p, 12.0);
+    EXPECT_EQ(s.environment.atmosphere.mieScattering, glm::dvec3(1e-4));
+    EXPECT_EQ(s.environment.atmosphere.mieExtinction, glm::dvec3(1e-4));
+}
+
+TEST(Evaluate, ReusesTheCallersStateWithoutReallocating) {
+    const aerial::CompiledPreset compiled(aerial::defaultPreset());
+    aerial::PresetState s;
+    compiled.evaluate(5.0, s);
+    const void* volumes = s.volumes.data();
+    const void* emitters = s.emitters.data();
+    const void* id = s.volumes[0].id.data();
+    compiled.evaluate(6.0, s);
+    EXPECT_EQ(s.volumes.data(), volumes);
+    EXPECT_EQ(s.emitters.data(), emitters);
+    EXPECT_EQ(s.volumes[0].id.data(), id);
+    EXPECT_EQ(s.timeHours, 6.0);
+}
+
+TEST(Evaluate, BrokenTracksAreSkippedAndReported) {
+    aerial::Preset p = twoVolumePreset();
+    p.tracks[0].target.objectId = "gone";
+    const aerial::CompiledPreset compiled(p);
+    ASSERT_FALSE(compiled.issues().empty());
+    EXPECT_EQ(compiled.issues()[0].pointer, "/tracks/0/volume");
+    const aerial::PresetState s = compiled.evaluate(9.0);
+    EXPECT_EQ(s.volumes[0].density, 0.1);                       // untouched base value
+    EXPECT_EQ(s.volumes[1].colour, glm::dvec3(1.0, 0.0, 0.0));  // the good track still runs
+}
+
+TEST(Evaluate, ChangingAnIdRetargetsTracksAndRemovingDropsThem) {
+    aerial::Preset p = twoVolumePreset();
+    ASSERT_TRUE(aerial::changeObjectId(p, aerial::ParamScope::Volume, "alpha", "alpha_2"));
+    EXPECT_EQ(p.volumes[0].id, "alpha_2");
+    EXPECT_NE(aerial::findTrack(p, aerial::TrackTarget::volume("alpha_2", "density_per_m")), nullptr);
+    EXPECT_TRUE(aerial::validatePreset(p).empty()) << joinIssues(aerial::validatePreset(p));
+    EXPECT_NEAR(aerial::evaluate(p, 9.0).volumes[0].density, 0.9, 1e-12);
+    // Taken, malformed or unknown ids change nothing.
+    EXPECT_FALSE(aerial::changeObjectId(p, aerial::ParamScope::Volume, "alpha_2", "beta"));
+    EXPECT_FALSE(aerial::changeObjectId(p, aerial::ParamScope::Volume, "alpha_2", "has space"));
+    EXPECT_FALSE(aerial::changeObjectId(p, aerial::ParamScope::Volume, "nope", "fresh"));
+    EXPECT_EQ(p.volumes[0].id, "alpha_2");
+
+    ASSERT_TRUE(aerial::removeObject(p, aerial::ParamScope::Volume, "alpha_2"));
+    ASSERT_EQ(p.volumes.size(), 1u);
+    ASSERT_EQ(p.tracks.size(), 1u);
+    EXPECT_EQ(p.tracks[0].target.objectId, "beta");
+    EXPECT_TRUE(aerial::validatePreset(p).empty());
+}
+
+}  // namespace

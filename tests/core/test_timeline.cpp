@@ -1,0 +1,206 @@
+// Timeline interpolation: known values for step / linear / smooth, the
+// wrap through midnight, and the no-overshoot property of the monotone
+// cubic over random keys.
+#include <aerial/timeline.hpp>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+namespace {
+
+using aerial::CompiledTrack;
+using aerial::Interpolation;
+using aerial::Track;
+using aerial::TrackKey;
+
+Track scalarTrack(Interpolation interp, std::vector<std::pair<double, double>> keys) {
+    Track t;
+    t.interpolation = interp;
+    for (auto [time, value] : keys) t.keys.push_back({time, glm::dvec3(value, 0.0, 0.0)});
+    return t;
+}
+
+double at(const Track& t, double hours) { return aerial::evaluateTrack(t, hours, 1).x; }
+
+TEST(Timeline, WrapHours) {
+    EXPECT_DOUBLE_EQ(aerial::wrapHours(-1.0), 23.0);
+    EXPECT_DOUBLE_EQ(aerial::wrapHours(24.0), 0.0);
+    EXPECT_DOUBLE_EQ(aerial::wrapHours(48.5), 0.5);
+    EXPECT_DOUBLE_EQ(aerial::wrapHours(std::nan("")), 0.0);
+    EXPECT_DOUBLE_EQ(aerial::wrapHours(INFINITY), 0.0);
+    // A tiny negative time must not wrap to 24 (outside [0, 24)).
+    EXPECT_LT(aerial::wrapHours(-1e-300), 24.0);
+}
+
+TEST(Timeline, SingleKeyIsConstant) {
+    const Track t = scalarTrack(Interpolation::Smooth, {{7.0, 0.25}});
+    for (double h : {0.0, 6.9, 7.0, 13.0, 23.99}) EXPECT_EQ(at(t, h), 0.25) << h;
+}
+
+TEST(Timeline, StepKnownValues) {
+    const Track t = scalarTrack(Interpolation::Step, {{6.0, 1.0}, {12.0, 2.0}, {18.0, 3.0}});
+    EXPECT_EQ(at(t, 6.0), 1.0);
+    EXPECT_EQ(at(t, 11.999), 1.0);
+    EXPECT_EQ(at(t, 12.0), 2.0);
+    EXPECT_EQ(at(t, 17.5), 2.0);
+    EXPECT_EQ(at(t, 23.0), 3.0);
+    // Before the first key the day wraps: the last key still holds.
+    EXPECT_EQ(at(t, 0.0), 3.0);
+    EXPECT_EQ(at(t, 5.99), 3.0);
+}
+
+TEST(Timeline, LinearKnownValues) {
+    const Track t = scalarTrack(Interpolation::Linear, {{6.0, 0.0}, {12.0, 6.0}, {18.0, 0.0}});
+    EXPECT_NEAR(at(t, 9.0), 3.0, 1e-12);
+    EXPECT_NEAR(at(t, 13.5), 4.5, 1e-12);
+    // 18:00 -> 06:00 next day is flat at 0.
+    EXPECT_NEAR(at(t, 23.0), 0.0, 1e-12);
+    EXPECT_NEAR(at(t, 2.0), 0.0, 1e-12);
+}
+
+TEST(Timeline, LinearWrapsThroughMidnight) {
+    // Keys at 02:00 (4) and 22:00 (0): the 4-hour segment crosses midnight.
+    const Track t = scalarTrack(Interpolation::Linear, {{2.0, 4.0}, {22.0, 0.0}});
+    EXPECT_NEAR(at(t, 23.0), 1.0, 1e-12);
+    EXPECT_NEAR(at(t, 0.0), 2.0, 1e-12);
+    EXPECT_NEAR(at(t, 1.0), 3.0, 1e-12);
+    EXPECT_NEAR(at(t, 24.0 + 1.0), 3.0, 1e-12);  // t wraps
+    // The long segment 02:00 -> 22:00 goes down linearly.
+    EXPECT_NEAR(at(t, 12.0), 2.0, 1e-12);
+}
+
+TEST(Timeline, SmoothWrapsThroughMidnight) {
+    // Symmetric about midnight: the value at 00:00 is the mean of the keys,
+    // and the curve is continuous across 24 -> 0.
+    const Track t = scalarTrack(Interpolation::Smooth, {{2.0, 4.0}, {12.0, 10.0}, {22.0, 0.0}});
+    const double before = at(t, 24.0 - 1e-9);
+    const double after = at(t, 0.0);
+    EXPECT_NEAR(before, after, 1e-8);
+    EXPECT_GT(at(t, 0.0), 0.0);
+    EXPECT_LT(at(t, 0.0), 4.0);
+}
+
+TEST(Timeline, SmoothZeroTangentsAtExtrema) {
+    // Alternating keys: every key is an extremum, so every tangent is 0 and
+    // each segment is the Hermite basis h01(s) = 3 s^2 - 2 s^3.
+    const Track t = scalarTrack(Interpolation::Smooth, {{0.0, 0.0}, {6.0, 1.0}, {12.0, 0.0}, {18.0, 1.0}});
+    EXPECT_NEAR(at(t, 3.0), 0.5, 1e-15);
+    EXPECT_NEAR(at(t, 1.5), 5.0 / 32.0, 1e-15);
+    EXPECT_NEAR(at(t, 22.5), 5.0 / 32.0, 1e-15);  // 18 -> 24 (= 0), s = 3/4: 1 - h01(3/4)
+    for (double h : {0.0, 6.0, 12.0, 18.0}) EXPECT_EQ(at(t, h), std::fmod(h, 12.0) == 0.0 ? 0.0 : 1.0);
+}
+
+TEST(Timeline, SmoothDensityNeverNegative) {
+    // The design's example: 0 -> 0.01 -> 0 must never dip below 0.
+    const Track t = scalarTrack(Interpolation::Smooth, {{5.0, 0.0}, {7.0, 0.01}, {8.0, 0.002}, {12.0, 0.0}});
+    for (int i = 0; i < 24 * 600; ++i) {
+        const double v = at(t, i / 600.0);
+        ASSERT_GE(v, 0.0) << "t = " << i / 600.0;
+        ASSERT_LE(v, 0.01) << "t = " << i / 600.0;
+    }
+    // Flat between 12:00 and 05:00 (keys equal there).
+    EXPECT_EQ(at(t, 15.0), 0.0);
+    EXPECT_EQ(at(t, 2.0), 0.0);
+}
+
+TEST(Timeline, SmoothIsMonotoneOnMonotoneData) {
+    // Steep then flat: a plain Catmull-Rom would overshoot past 1 after 6:00.
+    const Track t = scalarTrack(Interpolation::Smooth, {{5.0, 0.0}, {6.0, 1.0}, {12.0, 1.02}, {20.0, 1.03}});
+    double previous = at(t, 5.0);
+    for (int i = 1; i <= 15 * 100; ++i) {
+        const double v = at(t, 5.0 + i / 100.0);
+        ASSERT_GE(v, previous - 1e-15) << 5.0 + i / 100.0;
+        previous = v;
+    }
+}
+
+TEST(Timeline, SmoothNeverOvershootsRandomKeys) {
+    std::mt19937 rng(12345);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int trial = 0; trial < 500; ++trial) {
+        const int n = 2 + int(unit(rng) * 9);
+        std::vector<double> times;
+        while (int(times.size()) < n) {
+            const double t = std::floor(unit(rng) * 24.0 * 64.0) / 64.0;  // 1/64 h grid
+            if (std::find(times.begin(), times.end(), t) == times.end()) times.push_back(t);
+        }
+        std::sort(times.begin(), times.end());
+        Track track;
+        track.interpolation = Interpolation::Smooth;
+        for (double t : times) {
+            // Mix of zeros (densities), repeated values and spread values.
+            const double r = unit(rng);
+            const double v = r < 0.25 ? 0.0 : r < 0.35 ? 1.0 : std::pow(10.0, -6.0 + 6.0 * unit(rng));
+            track.keys.push_back({t, glm::dvec3(v, -v, 1.0 - v)});
+        }
+        const CompiledTrack c = aerial::compileTrack(track, 3);
+        for (int k = 0; k < n; ++k) {
+            const TrackKey& a = track.keys[std::size_t(k)];
+            const TrackKey& b = track.keys[std::size_t((k + 1) % n)];
+            const double t0 = a.timeHours;
+            const double t1 = k + 1 < n ? b.timeHours : b.timeHours + 24.0;
+            for (int s = 0; s <= 64; ++s) {
+                const double t = t0 + (t1 - t0) * s / 64.0;
+                const glm::dvec3 v = aerial::evaluateTrack(c, t);
+                for (int ch = 0; ch < 3; ++ch) {
+                    const double lo = std::min(a.value[ch], b.value[ch]);
+                    const double hi = std::max(a.value[ch], b.value[ch]);
+                    ASSERT_GE(v[ch], lo) << "trial " << trial << " segment " << k << " t " << t;
+                    ASSERT_LE(v[ch], hi) << "trial " << trial << " segment " << k << " t " << t;
+                }
+            }
+        }
+    }
+}
+
+TEST(Timeline, SmoothInterpolatesKeysAndIsContinuous) {
+    const Track t =
+        scalarTrack(Interpolation::Smooth, {{1.0, 0.3}, {4.5, 0.9}, {9.0, 0.1}, {13.0, 0.4}, {20.0, 0.35}});
+    for (const TrackKey& k : t.keys) EXPECT_EQ(at(t, k.timeHours), k.value.x);
+    // C1: left and right difference quotients agree at every key.
+    const double h = 1e-6;
+    for (const TrackKey& k : t.keys) {
+        const double left = (at(t, k.timeHours) - at(t, k.timeHours - h)) / h;
+        const double right = (at(t, k.timeHours + h) - at(t, k.timeHours)) / h;
+        EXPECT_NEAR(left, right, 1e-4) << k.timeHours;
+    }
+}
+
+TEST(Timeline, ColoursInterpolatePerChannelInLinearRgb) {
+    Track t;
+    t.interpolation = Interpolation::Linear;
+    t.keys = {{6.0, glm::dvec3(1.0, 0.5, 0.0)}, {8.0, glm::dvec3(0.0, 0.5, 1.0)}};
+    const glm::dvec3 mid = aerial::evaluateTrack(t, 7.0);
+    // Linear RGB average, not an sRGB-encoded or hue interpolation.
+    EXPECT_NEAR(mid.x, 0.5, 1e-15);
+    EXPECT_NEAR(mid.y, 0.5, 1e-15);
+    EXPECT_NEAR(mid.z, 0.5, 1e-15);
+}
+
+TEST(Timeline, ScalarTracksIgnoreUnusedComponents) {
+    Track t;
+    t.interpolation = Interpolation::Linear;
+    t.keys = {{6.0, glm::dvec3(1.0, 5.0, 5.0)}, {8.0, glm::dvec3(3.0, 5.0, 5.0)}};
+    const glm::dvec3 v = aerial::evaluateTrack(t, 7.0, 1);
+    EXPECT_NEAR(v.x, 2.0, 1e-15);
+    EXPECT_EQ(v.y, 0.0);
+    EXPECT_EQ(v.z, 0.0);
+}
+
+TEST(Timeline, SetKeyKeepsKeysOrdered) {
+    Track t;
+    aerial::setKey(t, 12.0, glm::dvec3(1.0));
+    aerial::setKey(t, 6.0, glm::dvec3(2.0));
+    aerial::setKey(t, 25.0, glm::dvec3(3.0));  // wraps to 01:00
+    aerial::setKey(t, 12.0, glm::dvec3(4.0));  // replaces
+    ASSERT_EQ(t.keys.size(), 3u);
+    EXPECT_EQ(t.keys[0].timeHours, 1.0);
+    EXPECT_EQ(t.keys[1].timeHours, 6.0);
+    EXPECT_EQ(t.keys[2].timeHours, 12.0);
+    EXPECT_EQ(t.keys[2].value, glm::dvec3(4.0));
+}
+
+}  // namespace
