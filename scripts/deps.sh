@@ -11,6 +11,11 @@ packages=(
   libglm-dev nlohmann-json3-dev
   # the aerial CLI
   libcli11-dev
+  # `aerial bake` writes EXR sky tables (linked into the CLI only, never core)
+  libopenexr-dev
+  # renderer: GL loader, headless EGL on Mesa (llvmpipe in CI), EXR/PNG
+  # capture, OCIO display transform, glTF scenes (libopenexr-dev: above)
+  libepoxy-dev libegl-dev libgl1-mesa-dri libegl-mesa0 libopencolorio-dev libtinygltf-dev libstb-dev
   # tests and benchmarks
   libgtest-dev libbenchmark-dev python3 python3-jsonschema
 )

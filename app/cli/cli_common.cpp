@@ -1,0 +1,386 @@
+// cli_common.cpp — see cli_common.hpp.
+#include "cli_common.hpp"
+
+#include <aerial/atmosphere.hpp>
+
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <vector>
+
+namespace aerial::cli {
+
+void usageError(const std::string& message) { throw CommandError(kExitUsageError, message); }
+void dataError(const std::string& message) { throw CommandError(kExitDataError, message); }
+
+std::string helpFooter(const std::string& examples) {
+    return "\nExample" + std::string(examples.find('\n') != std::string::npos ? "s" : "") + ":\n" + examples +
+           "\n\nExit codes: 0 success; 1 bad input or data (missing file, invalid preset, I/O error);\n"
+           "2 bad command line (unknown flag, bad value). Errors print one line on stderr.";
+}
+
+const CLI::Validator& finiteNumber() {
+    static const CLI::Validator check(
+        [](std::string& text) {
+            double value = 0.0;
+            return parseNumber(text, value) ? std::string() : "\"" + text + "\" is not a finite number";
+        },
+        "FINITE");
+    return check;
+}
+
+CLI::Option* addTimeOption(CLI::App& app, std::string& text) {
+    text = "12:00";
+    return app.add_option("--time,-t", text, "Local solar time: HH:MM (00:00..23:59) or hours in [0, 24)")
+        ->type_name("TIME")
+        ->capture_default_str();
+}
+
+// ---------------------------------------------------------------------------
+// Parsing
+
+namespace {
+
+std::string trim(const std::string& text) {
+    std::size_t begin = 0, end = text.size();
+    while (begin < end && std::isspace(static_cast<unsigned char>(text[begin]))) ++begin;
+    while (end > begin && std::isspace(static_cast<unsigned char>(text[end - 1]))) --end;
+    return text.substr(begin, end - begin);
+}
+
+std::vector<std::string> split(const std::string& text, char separator) {
+    std::vector<std::string> parts;
+    std::size_t start = 0;
+    for (;;) {
+        const std::size_t at = text.find(separator, start);
+        parts.push_back(text.substr(start, at == std::string::npos ? std::string::npos : at - start));
+        if (at == std::string::npos) return parts;
+        start = at + 1;
+    }
+}
+
+bool parseDigits(const std::string& text, int maxDigits, int& out) {
+    if (text.empty() || int(text.size()) > maxDigits) return false;
+    out = 0;
+    for (char c : text) {
+        if (c < '0' || c > '9') return false;
+        out = out * 10 + (c - '0');
+    }
+    return true;
+}
+
+/// Strips a unit suffix (case-insensitive) if present.
+bool stripSuffix(std::string& text, const std::string& suffix) {
+    if (text.size() <= suffix.size()) return false;
+    const std::string tail = text.substr(text.size() - suffix.size());
+    for (std::size_t i = 0; i < suffix.size(); ++i)
+        if (std::tolower(static_cast<unsigned char>(tail[i])) != suffix[i]) return false;
+    text = trim(text.substr(0, text.size() - suffix.size()));
+    return true;
+}
+
+std::string quoted(const std::string& text) { return "\"" + text + "\""; }
+
+}  // namespace
+
+bool parseNumber(const std::string& text, double& out) {
+    const std::string t = trim(text);
+    if (t.empty()) return false;
+    // Only decimal numbers: no "nan", "inf" or hex floats.
+    for (char c : t)
+        if (!(std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '+' || c == 'e' ||
+              c == 'E'))
+            return false;
+    char* end = nullptr;
+    out = std::strtod(t.c_str(), &end);
+    return end == t.c_str() + t.size() && std::isfinite(out);
+}
+
+double parseTimeOfDay(const std::string& text, const std::string& option) {
+    const std::string t = trim(text);
+    const std::string why = option + ": " + quoted(text) +
+                            " is not a time of day (HH:MM with HH 00..23 and MM 00..59, or hours in [0, 24))";
+    if (t.find(':') != std::string::npos) {
+        const std::vector<std::string> parts = split(t, ':');
+        if (parts.size() != 2 && parts.size() != 3) usageError(why);
+        int hours = 0, minutes = 0, seconds = 0;
+        if (!parseDigits(parts[0], 2, hours) || !parseDigits(parts[1], 2, minutes) || parts[1].size() != 2)
+            usageError(why);
+        if (parts.size() == 3 && (!parseDigits(parts[2], 2, seconds) || parts[2].size() != 2))
+            usageError(why);
+        if (hours > 23 || minutes > 59 || seconds > 59) usageError(why);
+        return hours + minutes / 60.0 + seconds / 3600.0;
+    }
+    std::string number = t;
+    stripSuffix(number, "h");
+    double hours = 0.0;
+    if (!parseNumber(number, hours) || hours < 0.0 || hours >= 24.0) usageError(why);
+    return hours;
+}
+
+double parseStepHours(const std::string& text, const std::string& option) {
+    std::string t = trim(text);
+    double scale = 1.0;  // to hours
+    if (stripSuffix(t, "min") || stripSuffix(t, "m"))
+        scale = 1.0 / 60.0;
+    else
+        stripSuffix(t, "h");
+    double value = 0.0;
+    if (!parseNumber(t, value))
+        usageError(option + ": " + quoted(text) +
+                   " is not a duration (hours like 0.5 or 0.5h, or minutes like 30m)");
+    const double hours = value * scale;
+    if (!(hours >= 1.0 / 60.0 - 1e-12) || hours > 24.0)
+        usageError(option + ": " + quoted(text) + " is out of range (1 minute to 24 hours)");
+    return hours;
+}
+
+glm::dvec3 parseVec3(const std::string& text, const std::string& option) {
+    const std::vector<std::string> parts = split(text, ',');
+    glm::dvec3 v(0.0);
+    bool ok = parts.size() == 3;
+    for (std::size_t i = 0; ok && i < 3; ++i) ok = parseNumber(parts[i], v[int(i)]);
+    if (!ok) usageError(option + ": " + quoted(text) + " is not three finite numbers x,y,z");
+    for (int i = 0; i < 3; ++i)
+        if (std::abs(v[i]) > 1e7)
+            usageError(option + ": " + quoted(text) + " is out of range (|x|, |y|, |z| <= 1e7)");
+    return v;
+}
+
+glm::dvec3 parseDirection(const std::string& text, const std::string& option) {
+    const glm::dvec3 v = parseVec3(text, option);
+    const double length = std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
+    if (!(length > 1e-12))
+        usageError(option + ": " + quoted(text) + " has zero length; a direction is needed");
+    return v / length;
+}
+
+void parseTableSize(const std::string& text, const std::string& option, int& azimuthCount,
+                    int& elevationCount) {
+    const std::string t = trim(text);
+    const std::size_t x = t.find_first_of("xX");
+    const std::string why = option + ": " + quoted(text) +
+                            " is not a table size WxH (azimuth columns 4..4096 x elevation rows 2..2048)";
+    if (x == std::string::npos) usageError(why);
+    int w = 0, h = 0;
+    if (!parseDigits(trim(t.substr(0, x)), 5, w) || !parseDigits(trim(t.substr(x + 1)), 5, h))
+        usageError(why);
+    if (w < 4 || w > 4096 || h < 2 || h > 2048) usageError(why);
+    azimuthCount = w;
+    elevationCount = h;
+}
+
+// ---------------------------------------------------------------------------
+// Presets
+
+std::string formatIssue(const PresetIssue& issue) {
+    std::string s = issue.file.empty() ? std::string("<preset>") : issue.file;
+    if (issue.line > 0) s += ":" + std::to_string(issue.line) + ":" + std::to_string(issue.column);
+    s += ": ";
+    if (issue.severity == PresetIssue::Severity::Warning) s += "warning: ";
+    if (!issue.pointer.empty()) s += issue.pointer + ": ";
+    s += issue.message;
+    return s;
+}
+
+Preset loadPresetOrFail(const std::string& path, const std::string& command) {
+    PresetLoadResult result = loadPreset(path);
+    for (const PresetIssue& w : result.warnings)
+        std::cerr << "aerial " << command << ": " << formatIssue(w) << "\n";
+    if (!result.ok()) {
+        std::string message =
+            result.errors.empty() ? path + ": cannot load preset" : formatIssue(result.errors[0]);
+        if (result.errors.size() > 1)
+            message += " (and " + std::to_string(result.errors.size() - 1) + " more; see aerial validate " +
+                       path + ")";
+        dataError(message);
+    }
+    return std::move(*result.preset);
+}
+
+// ---------------------------------------------------------------------------
+// Text and JSON
+
+std::string formatTime(double hours) {
+    const long long seconds = std::llround(wrapHours(hours) * 3600.0) % 86400;
+    char text[16];
+    if (seconds % 60 == 0)
+        std::snprintf(text, sizeof text, "%02lld:%02lld", seconds / 3600, seconds / 60 % 60);
+    else
+        std::snprintf(text, sizeof text, "%02lld:%02lld:%02lld", seconds / 3600, seconds / 60 % 60,
+                      seconds % 60);
+    return text;
+}
+
+Json toJson(const glm::dvec3& v) { return Json::array({v.x, v.y, v.z}); }
+
+namespace {
+
+/// A parameter's value as JSON, as the preset file spells it.
+Json paramValueToJson(const ParamDesc& p, void* object) {
+    switch (p.type) {
+        case ParamType::Scalar:
+            return *p.scalar(object);
+        case ParamType::Colour:
+        case ParamType::Vec3:
+            return toJson(*p.vec3(object));
+        case ParamType::Quaternion: {
+            const glm::dquat& q = *p.quat(object);
+            return Json::array({q.x, q.y, q.z, q.w});
+        }
+        case ParamType::Enum: {
+            const std::int64_t v = p.getInt(object);
+            if (v >= 0 && std::size_t(v) < p.enumNames.size())
+                return std::string(p.enumNames[std::size_t(v)]);
+            return v;
+        }
+        case ParamType::Int:
+            return p.getInt(object);
+        case ParamType::String:
+            return *p.string(object);
+    }
+    return nullptr;
+}
+
+template <class Object>
+Json flatParametersToJson(ParamScope scope, const Object& object) {
+    Json out = Json::object();
+    for (const ParamDesc& p : paramTable(scope))
+        out[std::string(p.path)] = paramValueToJson(p, paramObject(p, const_cast<Object&>(object)));
+    return out;
+}
+
+std::string formatNumber(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g", v);
+    return text;
+}
+
+}  // namespace
+
+Json parametersToJson(const Environment& environment) {
+    Json out = Json::object();
+    for (const ParamDesc& p : paramTable(ParamScope::Global)) {
+        std::string pointer = "/" + std::string(p.path);
+        for (char& c : pointer)
+            if (c == '.') c = '/';
+        out[Json::json_pointer(pointer)] =
+            paramValueToJson(p, paramObject(p, const_cast<Environment&>(environment)));
+    }
+    return out;
+}
+
+Json parametersToJson(const FogVolume& volume) { return flatParametersToJson(ParamScope::Volume, volume); }
+
+Json parametersToJson(const Emitter& emitter) { return flatParametersToJson(ParamScope::Emitter, emitter); }
+
+std::string formatParam(const ParamDesc& p, const void* object) {
+    const Json v = paramValueToJson(p, const_cast<void*>(object));
+    if (v.is_string()) return v.get<std::string>();
+    if (v.is_number_integer()) return std::to_string(v.get<std::int64_t>());
+    if (v.is_number()) return formatNumber(v.get<double>());
+    if (v.is_array()) {
+        std::string s = "(";
+        for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + formatNumber(v[i].get<double>());
+        return s + ")";
+    }
+    return v.dump();
+}
+
+Json lightToJson(const LightState& light) {
+    return {{"elevation_deg", light.body.elevation * kDegreesPerRadian},
+            {"azimuth_deg", light.body.azimuth * kDegreesPerRadian},
+            {"direction", toJson(light.body.direction)},
+            {"illuminated_fraction", light.body.illuminatedFraction},
+            {"phase_irradiance", light.body.phaseIrradiance},
+            {"illuminance_space_rgb", toJson(light.illuminanceSpace)},
+            {"transmittance_rgb", toJson(light.transmittance)},
+            {"illuminance_rgb", toJson(light.illuminance)}};
+}
+
+Json stateToJson(const PresetState& state) {
+    Json volumes = Json::array();
+    for (const FogVolume& v : state.volumes) volumes.push_back(parametersToJson(v));
+    Json emitters = Json::array();
+    for (std::size_t i = 0; i < state.emitters.size(); ++i) {
+        Json e = parametersToJson(state.emitters[i]);
+        e["flash"] = i < state.emitterFlash.size() ? state.emitterFlash[i] : 1.0;
+        emitters.push_back(std::move(e));
+    }
+    return {{"time_h", state.timeHours},
+            {"time", formatTime(state.timeHours)},
+            {"sun", lightToJson(state.sunLight)},
+            {"moon", lightToJson(state.moonLight)},
+            {"parameters", parametersToJson(state.environment)},
+            {"volumes", std::move(volumes)},
+            {"emitters", std::move(emitters)}};
+}
+
+namespace {
+
+bool isFlatArray(const Json& json) {
+    if (!json.is_array() || json.empty()) return false;
+    for (const Json& element : json)
+        if (element.is_structured()) return false;
+    return true;
+}
+
+void appendJson(std::string& out, const Json& json, int indent) {
+    const std::string pad(std::size_t(indent + 2), ' ');
+    if (json.is_object() && !json.empty()) {
+        out += "{\n";
+        std::size_t i = 0;
+        for (auto it = json.begin(); it != json.end(); ++it, ++i) {
+            out += pad + Json(it.key()).dump() + ": ";
+            appendJson(out, it.value(), indent + 2);
+            out += i + 1 < json.size() ? ",\n" : "\n";
+        }
+        out += std::string(std::size_t(indent), ' ') + "}";
+    } else if (json.is_array() && !json.empty() && !isFlatArray(json)) {
+        out += "[\n";
+        for (std::size_t i = 0; i < json.size(); ++i) {
+            out += pad;
+            appendJson(out, json[i], indent + 2);
+            out += i + 1 < json.size() ? ",\n" : "\n";
+        }
+        out += std::string(std::size_t(indent), ' ') + "]";
+    } else if (isFlatArray(json)) {
+        out += "[";
+        for (std::size_t i = 0; i < json.size(); ++i) out += (i ? ", " : "") + json[i].dump();
+        out += "]";
+    } else {
+        out += json.dump();
+    }
+}
+
+}  // namespace
+
+std::string jsonText(const Json& json) {
+    std::string out;
+    appendJson(out, json, 0);
+    return out;
+}
+
+void printJson(const Json& json) { std::cout << jsonText(json) << "\n"; }
+
+// ---------------------------------------------------------------------------
+// Sky and fog
+
+SkyTables::SkyTables(const SkySolverDesc& desc)
+    : sun_(std::make_unique<SkySolver>(desc)), moon_(std::make_unique<SkySolver>(desc)) {}
+
+void SkyTables::solve(const PresetState& state) {
+    const AtmosphereParams& air = state.environment.atmosphere;
+    sun_->solve(air, state.sunLight.body.direction);
+    moon_->solve(air, state.moonLight.body.direction);
+}
+
+glm::dvec3 tableSkyRadiance(const PresetState& state, const SkyTables& tables, const glm::dvec3& direction) {
+    const double g = state.environment.atmosphere.mieAnisotropy;
+    return skyRadiance(tables.sun(), g, direction, state.sunLight.illuminanceSpace) +
+           skyRadiance(tables.moon(), g, direction, state.moonLight.illuminanceSpace);
+}
+
+}  // namespace aerial::cli

@@ -1,0 +1,335 @@
+// command_bake.cpp — `aerial bake PRESET --out DIR [--step 0.5h] [--size
+// 128x64]`: everything a game that does not link aerial_core needs to show
+// the preset's sky and fog over the day.
+//
+// Layout of DIR:
+//   sky_<NNN>_<HHMM>_sun.exr, sky_<NNN>_<HHMM>_moon.exr
+//       one file per time step per light: the light's hemisphere sky table
+//       (sky.hpp), W x H pixels, half float, ZIP compressed (--compression),
+//       six channels
+//         rayleigh.R rayleigh.G rayleigh.B   phase-less Rayleigh integral I_R
+//         mie.R mie.G mie.B                  phase-less Mie integral I_M
+//       pixel (x, y) = table texel (column i = x, row j = y): the first line
+//       (y = 0) is the horizon, the last the zenith. Header attributes:
+//       aerialLight ("sun"/"moon"), aerialTimeHours, aerialLightAzimuthRad,
+//       aerialLightDirection (V3d), aerialMapping (the mapping in words).
+//   manifest.json
+//       format, preset, steps and table mapping, and for every step: the
+//       time, the full evaluated state (sun, moon, every parameter, volumes,
+//       emitters: as `aerial eval --json`) and per light its EXR file name,
+//       light direction and azimuth, and horizon averages (the fog colour).
+//
+// Radiance in a world direction v (unit): for each light,
+//   el = asin(max(v.y, 0)), j = (H - 1) sqrt(el / (pi/2))   (quadratic rows)
+//   phi = (atan2(v.x, -v.z) - light_azimuth_rad) mod 2 pi,  i = W phi / (2 pi)
+//   I_R, I_M = bilinear(i, j), the azimuth wrapping;  mu = dot(v, light)
+//   L += E (3/(16 pi) (1 + mu^2) I_R + P_CS(mu, g) I_M),
+// E = illuminance_space_rgb of that light, g = parameters.atmosphere.mie.
+// anisotropy. Far fog: the same with horizon_rayleigh / horizon_mie.
+//
+// Writing is atomic: every file is written to a hidden temporary beside
+// it, fsync'ed and renamed into place, and manifest.json is removed first and
+// written last, so a directory with a manifest always holds a complete bake.
+#include "cli_common.hpp"
+
+#include <Imath/half.h>
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfDoubleAttribute.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfStringAttribute.h>
+#include <OpenEXR/ImfVecAttribute.h>
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <string>
+#include <system_error>
+#include <vector>
+
+#ifndef AERIAL_VERSION
+#define AERIAL_VERSION "unknown"
+#endif
+
+namespace aerial::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kManifestName = "manifest.json";
+constexpr int kManifestFormatVersion = 1;
+constexpr const char* kChannelNames[6] = {"rayleigh.R", "rayleigh.G", "rayleigh.B",
+                                          "mie.R",      "mie.G",      "mie.B"};
+
+constexpr const char* kRowMapping =
+    "row j = EXR line y (y = 0 first) holds elevation el_j = pi/2 * (j / (H - 1))^2 rad above the horizon "
+    "(quadratic: more rows near the horizon); directions below the horizon use row 0";
+constexpr const char* kColumnMapping =
+    "column i = EXR pixel x holds the azimuth relative to the light phi_i = 2 pi i / W rad, measured from "
+    "the "
+    "light's azimuth towards east; the azimuth wraps (column W = column 0) and column i equals column W - i";
+
+struct BakeOptions {
+    std::string preset;
+    std::string out;
+    std::string step = "0.5h";
+    std::string size = "128x64";
+    std::string compression = "zip";
+    bool quiet = false;
+};
+
+/// The --compression choices: all lossless.
+Imf::Compression exrCompression(const std::string& name) {
+    if (name == "none") return Imf::NO_COMPRESSION;
+    if (name == "zip") return Imf::ZIP_COMPRESSION;
+    if (name == "piz") return Imf::PIZ_COMPRESSION;
+    usageError("--compression: \"" + name + "\" is not one of none, zip, piz");
+}
+
+std::string errnoText(int error) { return std::generic_category().message(error); }
+
+/// fsync a file (or directory) by path; false on failure.
+bool syncPath(const fs::path& path, bool directory) {
+    const int fd = ::open(path.c_str(), directory ? (O_RDONLY | O_DIRECTORY) : O_RDONLY);
+    if (fd < 0) return false;
+    const bool ok = ::fsync(fd) == 0;
+    ::close(fd);
+    return ok;
+}
+
+/// Writes `path` through a temporary beside it: write(temp), fsync, rename.
+template <class Write>
+void writeAtomically(const fs::path& path, Write&& write) {
+    const fs::path temp =
+        path.parent_path() / ("." + path.filename().string() + ".tmp" + std::to_string(::getpid()));
+    try {
+        write(temp);
+        if (!syncPath(temp, false)) dataError("cannot flush " + temp.string() + ": " + errnoText(errno));
+        std::error_code ec;
+        fs::rename(temp, path, ec);
+        if (ec) dataError("cannot rename " + temp.string() + " to " + path.string() + ": " + ec.message());
+    } catch (...) {
+        std::error_code ignored;
+        fs::remove(temp, ignored);
+        throw;
+    }
+}
+
+Imath::half toHalf(float value) {
+    // No NaN or Inf reaches a file; half's largest finite value is 65504.
+    if (!std::isfinite(value) || value < 0.0f) return Imath::half(0.0f);
+    return Imath::half(std::min(value, 65504.0f));
+}
+
+void writeSkyExr(const fs::path& path, const SkyTable& table, const char* light, double timeHours,
+                 Imf::Compression compression) {
+    const int w = table.azimuthCount, h = table.elevationCount;
+    std::vector<Imath::half> pixels(std::size_t(w) * std::size_t(h) * 6);
+    for (std::size_t texel = 0; texel < std::size_t(w) * std::size_t(h); ++texel) {
+        for (int c = 0; c < 3; ++c) {
+            pixels[texel * 6 + std::size_t(c)] = toHalf(table.rayleigh[texel * 3 + std::size_t(c)]);
+            pixels[texel * 6 + 3 + std::size_t(c)] = toHalf(table.mie[texel * 3 + std::size_t(c)]);
+        }
+    }
+    writeAtomically(path, [&](const fs::path& temp) {
+        try {
+            Imf::Header header(w, h);
+            header.compression() = compression;
+            for (const char* name : kChannelNames) header.channels().insert(name, Imf::Channel(Imf::HALF));
+            header.insert("aerialLight", Imf::StringAttribute(light));
+            header.insert("aerialTimeHours", Imf::DoubleAttribute(timeHours));
+            header.insert("aerialLightAzimuthRad", Imf::DoubleAttribute(table.lightAzimuth));
+            header.insert("aerialLightDirection",
+                          Imf::V3dAttribute(Imath::V3d(table.lightDirection.x, table.lightDirection.y,
+                                                       table.lightDirection.z)));
+            header.insert("aerialMapping",
+                          Imf::StringAttribute(std::string(kRowMapping) + "; " + kColumnMapping));
+            Imf::FrameBuffer frame;
+            const std::size_t xStride = sizeof(Imath::half) * 6, yStride = xStride * std::size_t(w);
+            for (int k = 0; k < 6; ++k)
+                frame.insert(
+                    kChannelNames[k],
+                    Imf::Slice(Imf::HALF, reinterpret_cast<char*>(pixels.data() + k), xStride, yStride));
+            Imf::OutputFile file(temp.c_str(), header);
+            file.setFrameBuffer(frame);
+            file.writePixels(h);
+        } catch (const CommandError&) {
+            throw;
+        } catch (const std::exception& e) {
+            dataError("cannot write " + path.string() + ": " + e.what());
+        }
+    });
+}
+
+void writeText(const fs::path& path, const std::string& text) {
+    writeAtomically(path, [&](const fs::path& temp) {
+        std::ofstream file(temp, std::ios::binary | std::ios::trunc);
+        file << text;
+        file.flush();
+        if (!file) dataError("cannot write " + path.string() + ": " + errnoText(errno));
+    });
+}
+
+/// A progress bar on a terminal, plain lines otherwise (or nothing, --quiet).
+class Progress {
+public:
+    Progress(int total, bool quiet) : total_(total), quiet_(quiet), tty_(::isatty(STDERR_FILENO) == 1) {}
+
+    /// `clock` shows on the bar, `detail` only on plain lines.
+    void update(int done, const std::string& clock, const std::string& detail) {
+        if (quiet_) return;
+        if (!tty_) {
+            std::fprintf(stderr, "aerial bake: %d/%d %s %s\n", done, total_, clock.c_str(), detail.c_str());
+            return;
+        }
+        constexpr int kWidth = 32;
+        const int filled = total_ > 0 ? done * kWidth / total_ : kWidth;
+        std::string bar(std::size_t(filled), '#');
+        bar.resize(kWidth, '.');
+        std::fprintf(stderr, "\r[%s] %*d/%d  %s ", bar.c_str(), int(std::to_string(total_).size()), done,
+                     total_, clock.c_str());
+        std::fflush(stderr);
+    }
+    void finish() {
+        if (!quiet_ && tty_) std::fprintf(stderr, "\n");
+    }
+
+private:
+    int total_;
+    bool quiet_;
+    bool tty_;
+};
+
+Json lightBakeToJson(const SkyTable& table, const std::string& file) {
+    return {{"table_file", file},
+            {"light_direction", toJson(table.lightDirection)},
+            {"light_azimuth_rad", table.lightAzimuth},
+            {"horizon_rayleigh", toJson(table.horizonRayleigh)},
+            {"horizon_mie", toJson(table.horizonMie)}};
+}
+
+int runBake(const BakeOptions& options) {
+    const double stepHours = parseStepHours(options.step, "--step");
+    SkySolverDesc desc;
+    parseTableSize(options.size, "--size", desc.azimuthCount, desc.elevationCount);
+    const Imf::Compression compression = exrCompression(options.compression);
+    Preset preset = loadPresetOrFail(options.preset, "bake");
+    const Json presetInfo = {
+        {"file", options.preset}, {"name", preset.name}, {"description", preset.description}};
+    const CompiledPreset compiled(std::move(preset));
+
+    const fs::path dir(options.out);
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    if (ec || !fs::is_directory(dir))
+        dataError("--out: cannot create directory " + dir.string() + ": " + ec.message());
+    // An older manifest would vouch for files this bake is about to replace.
+    fs::remove(dir / kManifestName, ec);
+    if (ec) dataError("cannot remove the old " + (dir / kManifestName).string() + ": " + ec.message());
+
+    const int stepCount = std::max(1, int(std::ceil(24.0 / stepHours - 1e-9)));
+    const int indexWidth = std::max(3, int(std::to_string(stepCount - 1).size()));
+    const auto start = std::chrono::steady_clock::now();
+    SkyTables tables(desc);
+    PresetState state;
+    Json steps = Json::array();
+    Progress progress(stepCount, options.quiet);
+    for (int k = 0; k < stepCount; ++k) {
+        const double t = k * stepHours;
+        compiled.evaluate(t, state);
+        tables.solve(state);
+        std::string clock = formatTime(t);
+        clock.erase(std::remove(clock.begin(), clock.end(), ':'), clock.end());
+        std::string index = std::to_string(k);
+        index.insert(0, std::size_t(std::max(0, indexWidth - int(index.size()))), '0');
+        const std::string stem = "sky_" + index + "_" + clock;
+        const std::string sunFile = stem + "_sun.exr", moonFile = stem + "_moon.exr";
+        writeSkyExr(dir / sunFile, tables.sun(), "sun", t, compression);
+        writeSkyExr(dir / moonFile, tables.moon(), "moon", t, compression);
+
+        Json step = {{"index", k}};
+        step.update(stateToJson(state));
+        step["sun"].update(lightBakeToJson(tables.sun(), sunFile));
+        step["moon"].update(lightBakeToJson(tables.moon(), moonFile));
+        steps.push_back(std::move(step));
+        progress.update(k + 1, formatTime(t), sunFile + ", " + moonFile);
+    }
+    progress.finish();
+
+    const Json manifest = {
+        {"format", "aerial-bake"},
+        {"format_version", kManifestFormatVersion},
+        {"generator", "aerial bake " AERIAL_VERSION},
+        {"preset", presetInfo},
+        {"step_h", stepHours},
+        {"step_count", stepCount},
+        {"table",
+         {{"azimuth_count", desc.azimuthCount},
+          {"elevation_count", desc.elevationCount},
+          {"file_pattern", "sky_<index>_<HHMM>_<light>.exr, light = sun | moon"},
+          {"pixel_type", "half"},
+          {"compression", options.compression},
+          {"channels", Json(std::vector<std::string>(std::begin(kChannelNames), std::end(kChannelNames)))},
+          {"pixel", "pixel (x, y) = texel (column i = x, row j = y); y = 0 is the first line in the file"},
+          {"rows", kRowMapping},
+          {"columns", kColumnMapping},
+          {"world_azimuth",
+           "from north (-Z) towards east (+X): direction = (cos(el) sin(az), sin(el), -cos(el) cos(az)); "
+           "light_azimuth_rad per step and light"},
+          {"sampling", "bilinear in (i, j); i wraps, j clamps to [0, H - 1]"},
+          {"radiance",
+           "L(v) = sum over sun and moon of E * (P_R(mu) * rayleigh + P_M(mu, g) * mie), mu = dot(v, "
+           "light_direction), E = illuminance_space_rgb, g = parameters.atmosphere.mie.anisotropy"},
+          {"phase_rayleigh", "P_R(mu) = 3 / (16 pi) * (1 + mu^2)"},
+          {"phase_mie",
+           "P_M(mu, g) = 3 / (8 pi) * (1 - g^2) (1 + mu^2) / ((2 + g^2) (1 + g^2 - 2 g mu)^1.5)"},
+          {"fog_colour",
+           "far fog seen along v: the radiance formula with horizon_rayleigh / horizon_mie in place of the "
+           "table sample"},
+          {"values", "phase-less single-scattering integrals (dimensionless), scene-linear"}}},
+        {"steps", steps}};
+    writeText(dir / kManifestName, jsonText(manifest) + "\n");
+    syncPath(dir, true);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::printf("baked %d steps (%d EXR files, %dx%d) and %s into %s in %.2f s\n", stepCount, 2 * stepCount,
+                desc.azimuthCount, desc.elevationCount, kManifestName, dir.string().c_str(), seconds);
+    return kExitOk;
+}
+
+}  // namespace
+
+Command addBakeCommand(CLI::App& parent) {
+    auto options = std::make_shared<BakeOptions>();
+    CLI::App* app = parent.add_subcommand(
+        "bake",
+        "Sky tables (EXR, per step and light) and every evaluated parameter (manifest.json) over the day, "
+        "for games that do not link the library");
+    app->add_option("preset", options->preset, "Preset file (JSON)")->required()->type_name("PRESET");
+    app->add_option("--out,-o", options->out, "Output directory (created if missing)")
+        ->required()
+        ->type_name("DIR");
+    app->add_option("--step", options->step, "Time between steps: hours (0.5, 0.5h) or minutes (30m)")
+        ->type_name("DURATION")
+        ->capture_default_str();
+    app->add_option("--size", options->size, "Sky table size: azimuth columns x elevation rows")
+        ->type_name("WxH")
+        ->capture_default_str();
+    app->add_option("--compression", options->compression, "EXR compression (lossless): zip, piz or none")
+        ->type_name("KIND")
+        ->capture_default_str();
+    app->add_flag("--quiet,-q", options->quiet, "No progress output");
+    app->footer(
+        helpFooter("  aerial bake presets/hazy_sunset.json --out bake/hazy_sunset --step 0.5h\n"
+                   "  aerial bake presets/stormy_night.json --out /tmp/storm --step 15m --size 256x128"));
+    return {app, [options] { return runBake(*options); }};
+}
+
+}  // namespace aerial::cli

@@ -1,0 +1,103 @@
+// command_eval.cpp — `aerial eval PRESET --time T [--json]`: the preset's
+// complete state at one time of day (CompiledPreset::evaluate).
+//
+// --json prints stateToJson (cli_common.hpp) plus the preset's file and name:
+//   {"preset": {"file", "name"}, "time_h", "time",
+//    "sun": {"elevation_deg", "azimuth_deg", "direction", "illuminated_fraction",
+//            "phase_irradiance", "illuminance_space_rgb", "transmittance_rgb",
+//            "illuminance_rgb"},
+//    "moon": {...},
+//    "parameters": {every global parameter, nested as in the preset file},
+//    "volumes": [{every volume parameter}], "emitters": [{every emitter
+//    parameter, "flash"}]}
+// Keyed values are applied; emitter intensities include the lightning flash.
+// Without --json: a readable summary, one parameter per line with its unit.
+#include "cli_common.hpp"
+
+#include <cstdio>
+#include <memory>
+#include <string>
+
+namespace aerial::cli {
+namespace {
+
+struct EvalOptions {
+    std::string preset;
+    std::string time;
+    bool json = false;
+};
+
+void printLight(const char* name, const LightState& light) {
+    const CelestialBody& b = light.body;
+    std::printf("%-6s elevation %7.3f deg   azimuth %7.3f deg   direction (%.4f, %.4f, %.4f)\n", name,
+                b.elevation * kDegreesPerRadian, b.azimuth * kDegreesPerRadian, b.direction.x, b.direction.y,
+                b.direction.z);
+    std::printf(
+        "%-6s illuminance (%.6g, %.6g, %.6g) = above the atmosphere (%.6g, %.6g, %.6g) x "
+        "transmittance (%.4f, %.4f, %.4f)",
+        "", light.illuminance.x, light.illuminance.y, light.illuminance.z, light.illuminanceSpace.x,
+        light.illuminanceSpace.y, light.illuminanceSpace.z, light.transmittance.x, light.transmittance.y,
+        light.transmittance.z);
+    if (b.illuminatedFraction < 1.0) std::printf("; %.0f %% lit", b.illuminatedFraction * 100.0);
+    std::printf("\n");
+}
+
+template <class Object>
+void printParameters(ParamScope scope, const Object& object, const char* indent) {
+    for (const ParamDesc& p : paramTable(scope)) {
+        if (p.type == ParamType::String) continue;  // ids and names are in the heading
+        const std::string value = formatParam(p, &object);
+        std::printf("%s%-40s %-36s %s\n", indent, std::string(p.path).c_str(), value.c_str(),
+                    std::string(p.unit).c_str());
+    }
+}
+
+int runEval(const EvalOptions& options) {
+    const double t = parseTimeOfDay(options.time, "--time");
+    Preset preset = loadPresetOrFail(options.preset, "eval");
+    const std::string name = preset.name;
+    const CompiledPreset compiled(std::move(preset));
+    const PresetState state = compiled.evaluate(t);
+
+    if (options.json) {
+        Json out = {{"preset", {{"file", options.preset}, {"name", name}}}};
+        out.update(stateToJson(state));
+        printJson(out);
+        return kExitOk;
+    }
+    std::printf("%s (%s) at %s\n\n", name.c_str(), options.preset.c_str(),
+                formatTime(state.timeHours).c_str());
+    printLight("sun", state.sunLight);
+    printLight("moon", state.moonLight);
+    std::printf("\nparameters\n");
+    printParameters(ParamScope::Global, state.environment, "  ");
+    for (const FogVolume& v : state.volumes) {
+        std::printf("\nvolume %s \"%s\"\n", v.id.c_str(), v.name.c_str());
+        printParameters(ParamScope::Volume, v, "  ");
+    }
+    for (std::size_t i = 0; i < state.emitters.size(); ++i) {
+        const Emitter& e = state.emitters[i];
+        const double flash = i < state.emitterFlash.size() ? state.emitterFlash[i] : 1.0;
+        std::printf("\nemitter %s \"%s\" (flash x%.3g applied to the intensity)\n", e.id.c_str(),
+                    e.name.c_str(), flash);
+        printParameters(ParamScope::Emitter, e, "  ");
+    }
+    return kExitOk;
+}
+
+}  // namespace
+
+Command addEvalCommand(CLI::App& parent) {
+    auto options = std::make_shared<EvalOptions>();
+    CLI::App* app = parent.add_subcommand(
+        "eval", "The preset at a time of day: sun, moon, every parameter, volumes and emitters");
+    app->add_option("preset", options->preset, "Preset file (JSON)")->required()->type_name("PRESET");
+    addTimeOption(*app, options->time);
+    app->add_flag("--json", options->json, "Machine-readable output");
+    app->footer(
+        helpFooter("  aerial eval presets/hazy_sunset.json --time 18:30\n"
+                   "  aerial eval presets/hazy_sunset.json --time 18.5 --json"));
+    return {app, [options] { return runEval(*options); }};
+}
+
+}  // namespace aerial::cli

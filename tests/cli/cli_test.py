@@ -1,0 +1,546 @@
+#!/usr/bin/env python3
+"""End-to-end tests of the real `aerial` binary (no pip packages).
+
+    cli_test.py --aerial PATH --source-dir REPO_ROOT --work-dir DIR [unittest args]
+
+Every command is run as a subprocess and judged by its exit code, stdout and
+stderr. Known answers are recomputed here, independently of aerial_core:
+the sun direction from the formulas in DESIGN.md ("Sun position"), and the
+global-fog transmittance from the closed-form integral ("Global height
+fog"). The sky table is compared with the library's brute-force reference
+(`aerial sky` prints both). EXR files are checked by parsing their header
+by hand (python3 has no OpenEXR module).
+"""
+
+import argparse
+import json
+import math
+import os
+import shutil
+import struct
+import subprocess
+import sys
+import unittest
+
+AERIAL = ""
+ROOT = ""
+WORK = ""
+
+SHIPPED = ["clear_summer_day", "desert_dusk", "foggy_valley_morning", "hazy_sunset", "stormy_night"]
+
+
+def preset(name):
+    return os.path.join(ROOT, "presets", name + ".json")
+
+
+def run(*args, timeout=120):
+    """Runs aerial with args; returns (exit code, stdout, stderr)."""
+    p = subprocess.run([AERIAL, *args], capture_output=True, text=True, timeout=timeout)
+    return p.returncode, p.stdout, p.stderr
+
+
+def run_json(testcase, *args):
+    code, out, err = run(*args, "--json")
+    testcase.assertEqual(code, 0, err)
+    return json.loads(out)
+
+
+# ---------------------------------------------------------------------------
+# Independent references
+
+
+def sun_direction(latitude_deg, day_of_year, north_offset_deg, t):
+    """DESIGN.md "Sun position", with the azimuth formula from sun.hpp."""
+    rad = math.radians
+    decl = rad(-23.44) * math.cos(rad(360.0 / 365.0 * (day_of_year + 10.0)))
+    hour_angle = rad(15.0 * (t - 12.0))
+    lat = rad(latitude_deg)
+    sin_el = math.sin(lat) * math.sin(decl) + math.cos(lat) * math.cos(decl) * math.cos(hour_angle)
+    el = math.asin(max(-1.0, min(1.0, sin_el)))
+    az = math.atan2(-math.cos(decl) * math.sin(hour_angle),
+                    math.sin(decl) * math.cos(lat) - math.cos(decl) * math.cos(hour_angle) * math.sin(lat))
+    az += rad(north_offset_deg)
+    return (math.cos(el) * math.sin(az), math.sin(el), -math.cos(el) * math.cos(az))
+
+
+def height_fog_optical_depth(b, c, h0, o, to):
+    """DESIGN.md: b exp(-c (o.y - h0)) |d| (1 - exp(-c d.y)) / (c d.y)."""
+    d = [to[i] - o[i] for i in range(3)]
+    length = math.sqrt(sum(x * x for x in d))
+    x = c * d[1]
+    factor = 1.0 if x == 0.0 else -math.expm1(-x) / x
+    return b * math.exp(-c * (o[1] - h0)) * length * factor
+
+
+# ---------------------------------------------------------------------------
+# A hand-written OpenEXR header reader: magic, version, then attributes
+# (name \0 type \0 int32 size, value) until a null byte.
+
+
+def read_exr_header(path):
+    with open(path, "rb") as f:
+        data = f.read()
+    version, attributes, _ = parse_exr_header(data, path)
+    return version, attributes
+
+
+def parse_exr_header(data, path):
+    """Returns (version, attributes, offset of the first byte after the header)."""
+    if data[:4] != bytes([0x76, 0x2F, 0x31, 0x01]):
+        raise ValueError(path + ": not an OpenEXR file (magic %s)" % data[:4].hex())
+    version = struct.unpack("<i", data[4:8])[0]
+    pos, attributes = 8, {}
+    while data[pos] != 0:
+        end = data.index(b"\0", pos)
+        name = data[pos:end].decode()
+        pos = end + 1
+        end = data.index(b"\0", pos)
+        kind = data[pos:end].decode()
+        pos = end + 1
+        (size,) = struct.unpack("<i", data[pos:pos + 4])
+        pos += 4
+        attributes[name] = (kind, data[pos:pos + size])
+        pos += size
+    return version, attributes, pos + 1
+
+
+def read_uncompressed_exr(path):
+    """Pixels of a single-part, uncompressed, HALF scanline file: {channel: rows of values}."""
+    with open(path, "rb") as f:
+        data = f.read()
+    _, attributes, pos = parse_exr_header(data, path)
+    if attributes["compression"][1] != b"\0":
+        raise ValueError(path + ": compressed")
+    channels = list(read_chlist(attributes["channels"][1]))  # stored in this (sorted) order
+    x0, y0, x1, y1 = struct.unpack("<4i", attributes["dataWindow"][1])
+    width, height = x1 - x0 + 1, y1 - y0 + 1
+    offsets = struct.unpack("<%dQ" % height, data[pos:pos + 8 * height])
+    pixels = {c: [None] * height for c in channels}
+    for offset in offsets:
+        y, size = struct.unpack("<2i", data[offset:offset + 8])
+        line = struct.unpack("<%de" % (width * len(channels)), data[offset + 8:offset + 8 + size])
+        for k, c in enumerate(channels):
+            pixels[c][y - y0] = line[k * width:(k + 1) * width]
+    return width, height, pixels
+
+
+def read_chlist(value):
+    """name \0, int32 pixel type, uint8 pLinear, 3 reserved, int32 xSampling, int32 ySampling; ends with \0."""
+    channels, pos = {}, 0
+    while value[pos] != 0:
+        end = value.index(b"\0", pos)
+        name = value[pos:end].decode()
+        pos = end + 1
+        (pixel_type,) = struct.unpack("<i", value[pos:pos + 4])
+        pos += 16
+        channels[name] = pixel_type
+    return channels
+
+
+def leaf_paths(obj, prefix=""):
+    if isinstance(obj, dict):
+        out = set()
+        for k, v in obj.items():
+            out |= leaf_paths(v, prefix + "/" + k)
+        return out
+    return {prefix}
+
+
+# ---------------------------------------------------------------------------
+
+
+class Help(unittest.TestCase):
+    def test_every_command_has_help_with_an_example_and_exit_codes(self):
+        for command in ([], ["validate"], ["eval"], ["sky"], ["fog"], ["bake"], ["day"]):
+            with self.subTest(command=command):
+                code, out, err = run(*command, "--help")
+                self.assertEqual(code, 0, err)
+                self.assertIn("Example", out)
+                self.assertIn("aerial " + (command[0] if command else ""), out)
+                self.assertIn("Exit codes: 0", out)
+                self.assertEqual(err, "")
+
+    def test_version(self):
+        code, out, _ = run("--version")
+        self.assertEqual(code, 0)
+        self.assertTrue(out.startswith("aerial "), out)
+
+
+class Validate(unittest.TestCase):
+    # Positions counted in the fixtures (as tests/core/test_preset.cpp).
+    FIXTURES = [
+        ("syntax_missing_comma.json", "", 4, 3, "unexpected string literal"),
+        ("syntax_truncated.json", "/fog", 4, 1, "unexpected end of input"),
+        ("syntax_bad_literal.json", "/fog/density_per_m", 3, 28, "invalid literal"),
+        ("infinite.json", "/atmosphere/mie/scale_height_m", 4, 31, "overflow"),
+        ("out_of_range.json", "/volumes/1/half_extents_m/1", 5, 40, "out of range: -3"),
+        ("wrong_type.json", "/fog/density_per_m", 4, 22, "expected a number, got a string"),
+        ("duplicate_ids.json", "/volumes/2/id", 6, 12, 'duplicate id "mist"'),
+        ("unknown_target.json", "/tracks/1/volume", 6, 16, 'no volume with id "nope"'),
+        ("unknown_param.json", "/tracks/0/param", 4, 15, 'unknown global parameter "fog.thickness"'),
+        ("newer_version.json", "/version", 2, 14, "newer than this library reads"),
+        ("missing_version.json", "/version", 1, 1, 'missing "version"'),
+        ("bad_key_times.json", "/tracks/0/keys/1/time_h", 5, 54, "increase strictly"),
+        ("key_time_24.json", "/tracks/0/keys/0/time_h", 4, 52, "[0, 24)"),
+        ("not_animatable.json", "/tracks/0/param", 4, 15, "cannot be animated"),
+        ("duplicate_json_key.json", "/fog/density_per_m", 3, 34, "duplicate key"),
+        ("missing_id.json", "/emitters/1/id", 5, 5, 'missing required field "id"'),
+        ("bad_enum.json", "/volumes/0/shape", 3, 36, 'unknown value "sphere"'),
+        ("wrong_arity.json", "/sun/colour_rgb", 3, 25, "array of 3 numbers"),
+        ("mie_extinction_below_scattering.json", "/atmosphere/mie/extinction_per_m/1", 6, 37, "must be >="),
+        ("not_an_object.json", "", 1, 1, "expected an object"),
+        ("bad_track_value.json", "/tracks/0/keys/0/value", 4, 65, "array of 3 numbers"),
+    ]
+
+    def test_every_shipped_preset_is_valid(self):
+        paths = [preset(name) for name in SHIPPED]
+        code, out, err = run("validate", *paths)
+        self.assertEqual(code, 0, out + err)
+        self.assertEqual(out.splitlines(), [p + ": ok" for p in paths])
+        self.assertEqual(err, "")
+
+    def test_fixtures_fail_with_located_messages(self):
+        for name, pointer, line, column, reason in self.FIXTURES:
+            with self.subTest(fixture=name):
+                path = os.path.join(ROOT, "tests", "data", "presets", name)
+                code, out, err = run("validate", path)
+                self.assertEqual(code, 1, out + err)
+                prefix = "%s:%d:%d: %s" % (path, line, column, pointer + ": " if pointer else "")
+                lines = [l for l in out.splitlines() if l.startswith(prefix)]
+                self.assertTrue(lines, "no line starts with %r in:\n%s" % (prefix, out))
+                self.assertIn(reason, lines[0][len(prefix):])
+                self.assertEqual(len(err.splitlines()), 1, err)
+                self.assertTrue(err.startswith("aerial validate: 1 of 1 preset invalid"), err)
+
+    def test_exact_lines(self):
+        path = os.path.join(ROOT, "tests", "data", "presets", "out_of_range.json")
+        code, out, _ = run("validate", path)
+        self.assertEqual(code, 1)
+        self.assertIn(path + ":5:40: /volumes/1/half_extents_m/1: out of range: -3 is not in 0.001..1e+07 m",
+                      out.splitlines())
+        path = os.path.join(ROOT, "tests", "data", "presets", "wrong_type.json")
+        code, out, _ = run("validate", path)
+        self.assertEqual(out.splitlines(),
+                         [path + ":4:22: /fog/density_per_m: expected a number, got a string"])
+
+    def test_warnings_do_not_fail(self):
+        path = os.path.join(ROOT, "tests", "data", "presets", "unknown_field.json")
+        code, out, err = run("validate", path)
+        self.assertEqual(code, 0, out + err)
+        lines = out.splitlines()
+        self.assertEqual(lines[0], path + ':3:34: warning: /fog/colour: unknown field "colour" (ignored)')
+        self.assertTrue(lines[1].startswith(path + ":4:3: warning: /sky: "), lines[1])
+        self.assertEqual(lines[2], path + ": ok (2 warnings)")
+
+    def test_mixed_valid_and_invalid_and_json(self):
+        bad = os.path.join(ROOT, "tests", "data", "presets", "bad_enum.json")
+        code, out, err = run("validate", preset("hazy_sunset"), bad, "--json")
+        self.assertEqual(code, 1, err)
+        report = json.loads(out)
+        self.assertFalse(report["valid"])
+        self.assertEqual([p["valid"] for p in report["presets"]], [True, False])
+        error = report["presets"][1]["errors"][0]
+        self.assertEqual((error["line"], error["column"], error["pointer"]), (3, 36, "/volumes/0/shape"))
+
+
+class Eval(unittest.TestCase):
+    def test_sun_direction_matches_the_design_formula(self):
+        for name in ("clear_summer_day", "foggy_valley_morning", "hazy_sunset"):
+            with open(preset(name)) as f:
+                location = json.load(f)["location"]
+            for time_text, t in (("06:30", 6.5), ("12:00", 12.0), ("17.25", 17.25), ("23:45", 23.75)):
+                with self.subTest(preset=name, time=time_text):
+                    state = run_json(self, "eval", preset(name), "--time", time_text)
+                    self.assertEqual(state["time_h"], t)
+                    expected = sun_direction(location["latitude_deg"], location["day_of_year"],
+                                             location.get("north_offset_deg", 0.0), t)
+                    for got, want in zip(state["sun"]["direction"], expected):
+                        self.assertAlmostEqual(got, want, delta=1e-9)
+                    self.assertAlmostEqual(state["sun"]["elevation_deg"], math.degrees(math.asin(expected[1])),
+                                           delta=1e-7)
+
+    def test_every_parameter_is_in_the_output(self):
+        with open(preset("foggy_valley_morning")) as f:
+            document = json.load(f)
+        state = run_json(self, "eval", preset("foggy_valley_morning"), "--time", "06:00")
+        globals_in_file = leaf_paths({k: document[k] for k in ("location", "atmosphere", "sun", "moon", "fog")})
+        self.assertEqual(leaf_paths(state["parameters"]), globals_in_file)
+        self.assertEqual([v["id"] for v in state["volumes"]], [v["id"] for v in document["volumes"]])
+        for volume, in_file in zip(state["volumes"], document["volumes"]):
+            self.assertEqual(set(volume), set(in_file))
+        for emitter, in_file in zip(state["emitters"], document["emitters"]):
+            self.assertEqual(set(emitter) - {"flash"}, set(in_file))
+            self.assertTrue(0.0 <= emitter["flash"] <= 1.0)
+        for light in ("sun", "moon"):
+            for key in ("direction", "illuminance_space_rgb", "transmittance_rgb", "illuminance_rgb"):
+                self.assertEqual(len(state[light][key]), 3)
+
+    def test_time_forms_agree(self):
+        a = run_json(self, "eval", preset("hazy_sunset"), "--time", "18:30")
+        b = run_json(self, "eval", preset("hazy_sunset"), "--time", "18.5h")
+        self.assertEqual(a, b)
+
+    def test_readable_summary(self):
+        code, out, err = run("eval", preset("stormy_night"), "--time", "02:00")
+        self.assertEqual(code, 0, err)
+        self.assertIn("Stormy night", out)
+        self.assertIn("fog.density_per_m", out)
+        self.assertRegex(out, r"(?m)^sun +elevation")
+
+
+class Sky(unittest.TestCase):
+    def test_table_matches_the_exact_integral_above_the_horizon(self):
+        directions = ["0,1,0", "1,0.2,0", "0,0.05,-1", "-0.8,0.45,0.3", "0.3,0.1,0.95", "0.6,0.02,-0.8"]
+        for direction in directions:
+            with self.subTest(direction=direction):
+                r = run_json(self, "sky", preset("clear_summer_day"), "--time", "12:00", "--dir=" + direction)
+                v = [float(x) for x in direction.split(",")]
+                n = math.sqrt(sum(x * x for x in v))
+                for got, want in zip(r["direction"], v):
+                    self.assertAlmostEqual(got, want / n, delta=1e-12)
+                for c in range(3):
+                    table, exact = r["table"]["radiance_rgb"][c], r["reference"]["radiance_rgb"][c]
+                    self.assertGreater(exact, 0.0)
+                    self.assertLess(abs(table / exact - 1.0), 0.03, r)
+                self.assertLess(r["max_abs_relative_difference"], 0.03)
+
+    def test_readable_output(self):
+        code, out, err = run("sky", preset("hazy_sunset"), "--time", "18:30", "--dir", "0,0.1,-1")
+        self.assertEqual(code, 0, err)
+        self.assertIn("exact integral", out)
+        self.assertIn("relative difference", out)
+
+
+class Fog(unittest.TestCase):
+    FIXTURE = None  # set in setUpClass
+
+    @classmethod
+    def setUpClass(cls):
+        cls.FIXTURE = os.path.join(ROOT, "tests", "data", "cli", "global_fog_only.json")
+        with open(cls.FIXTURE) as f:
+            fog = json.load(f)["fog"]
+        cls.fog = (fog["density_per_m"], fog["falloff_per_m"], fog["base_height_m"])
+
+    def test_global_fog_transmittance_is_the_closed_form(self):
+        segments = [((10, 2, 0), (-300, 80, -900)),  # rising
+                    ((0, 150, 0), (400, 1, 250)),      # falling
+                    ((0, 3, 0), (0, 3, -2000)),        # horizontal
+                    ((5, 0, 5), (5, 500, 5)),          # vertical
+                    ((1, 2, 3), (1, 2, 3))]            # empty
+        for o, to in segments:
+            with self.subTest(segment=(o, to)):
+                r = run_json(self, "fog", self.FIXTURE, "--time", "09:00",
+                             "--from=%g,%g,%g" % o, "--to=%g,%g,%g" % to)
+                tau = height_fog_optical_depth(*self.fog, o, to)
+                expected = math.exp(-tau)
+                for t in r["transmittance_rgb"]:
+                    self.assertLessEqual(abs(t - expected), 1e-9 * expected, (t, expected))
+                self.assertLessEqual(abs(r["global_fog"]["optical_depth"] - tau), 1e-9 * max(tau, 1e-300))
+                self.assertEqual(r["volumes"], [])
+                self.assertEqual(r["emitter_in_scatter_rgb"], [0.0, 0.0, 0.0])
+                for s in r["in_scatter_rgb"]:
+                    self.assertTrue(math.isfinite(s) and s >= 0.0)
+
+    def test_volumes_are_listed_and_composited(self):
+        r = run_json(self, "fog", preset("foggy_valley_morning"), "--time", "07:00", "--from=-50,5,0",
+                     "--to", "0,2,-300")
+        ids = [v["id"] for v in r["volumes"]]
+        self.assertIn("valley_floor", ids)
+        total = r["global_fog"]["optical_depth"]
+        for v in r["volumes"]:
+            self.assertLess(v["entry_m"], v["exit_m"])
+            self.assertGreater(v["optical_depth"], 0.0)
+            self.assertLessEqual(v["exit_m"], r["length_m"] + 1e-9)
+            total += v["optical_depth"]
+        # Grey transmittances multiply: T = exp(-(global + every volume)).
+        for t in r["transmittance_rgb"]:
+            self.assertAlmostEqual(t / math.exp(-total), 1.0, delta=1e-9)
+        # Back to front: entry distances do not increase.
+        entries = [v["entry_m"] for v in r["volumes"]]
+        self.assertEqual(entries, sorted(entries, reverse=True))
+        self.assertEqual(set(r["lights"]), {"sun", "moon"})
+
+
+class Bake(unittest.TestCase):
+    CHANNELS = {"rayleigh.R", "rayleigh.G", "rayleigh.B", "mie.R", "mie.G", "mie.B"}
+
+    def test_bake_writes_exr_tables_and_a_manifest(self):
+        out_dir = os.path.join(WORK, "bake_hazy_sunset")
+        shutil.rmtree(out_dir, ignore_errors=True)
+        code, out, err = run("bake", preset("hazy_sunset"), "--out", out_dir, "--step", "6h")
+        self.assertEqual(code, 0, err)
+        self.assertIn("baked 4 steps", out)
+        files = sorted(os.listdir(out_dir))
+        self.assertEqual(len([f for f in files if f.endswith(".exr")]), 8, files)
+        self.assertIn("manifest.json", files)
+        self.assertFalse([f for f in files if f.startswith(".")], "temporary files left behind")
+
+        with open(os.path.join(out_dir, "manifest.json")) as f:
+            manifest = json.load(f)
+        self.assertEqual(manifest["format"], "aerial-bake")
+        self.assertEqual(manifest["step_count"], 4)
+        table = manifest["table"]
+        self.assertEqual((table["azimuth_count"], table["elevation_count"]), (128, 64))
+        self.assertEqual(set(table["channels"]), self.CHANNELS)
+        self.assertIn("pi/2 * (j / (H - 1))^2", table["rows"])
+        self.assertEqual([s["time_h"] for s in manifest["steps"]], [0.0, 6.0, 12.0, 18.0])
+
+        referenced = set()
+        for step in manifest["steps"]:
+            for light in ("sun", "moon"):
+                name = step[light]["table_file"]
+                referenced.add(name)
+                version, attributes = read_exr_header(os.path.join(out_dir, name))
+                self.assertEqual(version & 0xFF, 2)
+                kind, value = attributes["channels"]
+                self.assertEqual(kind, "chlist")
+                channels = read_chlist(value)
+                self.assertEqual(set(channels), self.CHANNELS)
+                self.assertEqual(set(channels.values()), {1}, "HALF pixels")
+                kind, value = attributes["dataWindow"]
+                self.assertEqual(kind, "box2i")
+                x0, y0, x1, y1 = struct.unpack("<4i", value)
+                self.assertEqual((x1 - x0 + 1, y1 - y0 + 1), (128, 64))
+                kind, value = attributes["aerialLight"]
+                self.assertEqual(value.decode(), light)
+                self.assertEqual(len(step[light]["horizon_rayleigh"]), 3)
+        self.assertEqual(referenced, {f for f in files if f.endswith(".exr")})
+
+        # The manifest's parameters are exactly what `aerial eval` gives.
+        noon = run_json(self, "eval", preset("hazy_sunset"), "--time", "12:00")
+        step = manifest["steps"][2]
+        for key in ("parameters", "volumes", "emitters"):
+            self.assertEqual(step[key], noon[key], key)
+        self.assertEqual(step["sun"]["direction"], noon["sun"]["direction"])
+
+        # Baking again over the same directory works and stays complete.
+        code, _, err = run("bake", preset("hazy_sunset"), "--out", out_dir, "--step", "12h", "--size", "32x16",
+                           "--quiet")
+        self.assertEqual(code, 0, err)
+        self.assertEqual(err, "")
+        with open(os.path.join(out_dir, "manifest.json")) as f:
+            self.assertEqual(json.load(f)["step_count"], 2)
+
+    def test_pixels_follow_the_documented_table_mapping(self):
+        # Texel (i, j) of a baked file holds the table value in the direction
+        # the manifest's mapping gives; `aerial sky` samples the same table.
+        out_dir = os.path.join(WORK, "bake_pixels")
+        code, _, err = run("bake", preset("clear_summer_day"), "--out", out_dir, "--step", "6h", "--size",
+                           "16x8", "--compression", "none", "--quiet")
+        self.assertEqual(code, 0, err)
+        with open(os.path.join(out_dir, "manifest.json")) as f:
+            manifest = json.load(f)
+        step = manifest["steps"][1]  # a low morning sun: the sky varies strongly with azimuth
+        self.assertEqual(step["time"], "06:00")
+        width, height, pixels = read_uncompressed_exr(os.path.join(out_dir, step["sun"]["table_file"]))
+        self.assertEqual((width, height), (16, 8))
+        light_azimuth = step["sun"]["light_azimuth_rad"]
+        for i, j in ((0, 0), (3, 2), (8, 5), (13, 6), (5, 1)):
+            with self.subTest(texel=(i, j)):
+                el = math.pi / 2 * (j / (height - 1)) ** 2
+                az = light_azimuth + 2 * math.pi * i / width
+                v = (math.cos(el) * math.sin(az), math.sin(el), -math.cos(el) * math.cos(az))
+                sky = run_json(self, "sky", preset("clear_summer_day"), "--time", "06:00", "--size", "16x8",
+                               "--dir=%.17g,%.17g,%.17g" % v)
+                for layer in ("rayleigh", "mie"):
+                    for c, name in enumerate("RGB"):
+                        baked = pixels[layer + "." + name][j][i]
+                        table = sky["table"]["sun"][layer][c]
+                        self.assertAlmostEqual(baked, table, delta=1e-3 * abs(table) + 1e-7)
+
+    def test_plain_progress_lines_when_not_a_terminal(self):
+        out_dir = os.path.join(WORK, "bake_progress")
+        code, _, err = run("bake", preset("clear_summer_day"), "--out", out_dir, "--step", "8h", "--size", "16x8")
+        self.assertEqual(code, 0, err)
+        self.assertNotIn("\r", err)
+        self.assertEqual(len(err.splitlines()), 3, err)
+
+
+class CommandLineErrors(unittest.TestCase):
+    def test_bad_input_gives_one_line_and_the_right_exit_code(self):
+        good = preset("hazy_sunset")
+        invalid = os.path.join(ROOT, "tests", "data", "presets", "out_of_range.json")
+        missing = os.path.join(WORK, "no_such_preset.json")
+        out_dir = os.path.join(WORK, "bake_never")
+        cases = [
+            (["eval", good, "--time", "25:00"], 2, "--time"),
+            (["eval", good, "--time", "24:00"], 2, "--time"),
+            (["eval", good, "--time", "12:75"], 2, "--time"),
+            (["eval", good, "--time", "-1"], 2, "--time"),
+            (["eval", good, "--time", "nan"], 2, "--time"),
+            (["eval", good, "--frobnicate"], 2, "--frobnicate"),
+            (["eval"], 2, "preset"),
+            (["sky", good, "--dir", "0,0,0"], 2, "--dir"),
+            (["sky", good, "--dir", "nan,1,0"], 2, "--dir"),
+            (["sky", good, "--dir", "0,inf,0"], 2, "--dir"),
+            (["sky", good, "--dir", "1,2"], 2, "--dir"),
+            (["sky", good], 2, "--dir"),
+            (["fog", good, "--from", "0,1,0", "--to", "0,1"], 2, "--to"),
+            (["bake", good, "--out", out_dir, "--size", "0x5"], 2, "--size"),
+            (["bake", good, "--out", out_dir, "--size", "128"], 2, "--size"),
+            (["bake", good, "--out", out_dir, "--step", "0"], 2, "--step"),
+            (["bake", good, "--out", out_dir, "--step", "1s"], 2, "--step"),
+            (["bake", good, "--out", out_dir, "--compression", "lzw"], 2, "--compression"),
+            (["bake", good], 2, "--out"),
+            (["day", "--latitude", "91"], 2, "--latitude"),
+            (["day", "--step", "nan"], 2, "--step"),
+            (["frobnicate"], 2, "frobnicate"),
+            ([], 2, "subcommand"),
+            (["eval", missing], 1, missing),
+            (["sky", missing, "--dir", "0,1,0"], 1, missing),
+            (["fog", missing, "--from", "0,1,0", "--to", "0,1,-5"], 1, missing),
+            (["bake", missing, "--out", out_dir], 1, missing),
+            (["day", missing], 1, missing),
+            (["validate", missing], 1, missing),
+            (["eval", invalid], 1, invalid + ":5:40: /volumes/1/half_extents_m/1: out of range"),
+            (["bake", invalid, "--out", out_dir], 1, invalid + ":5:40:"),
+        ]
+        for args, expected_code, mention in cases:
+            with self.subTest(args=args):
+                code, out, err = run(*args)
+                self.assertEqual(code, expected_code, err)
+                self.assertEqual(len(err.splitlines()), 1, err)
+                self.assertTrue(err.startswith("aerial"), err)
+                if args and args[0] == "validate":
+                    self.assertIn(mention, out)  # validate reports on stdout, sums up on stderr
+                else:
+                    self.assertIn(mention, err)
+                    self.assertEqual(out, "")
+        self.assertFalse(os.path.exists(os.path.join(out_dir, "manifest.json")))
+
+
+class Day(unittest.TestCase):
+    def test_day_on_the_built_in_default(self):
+        code, out, err = run("day")
+        self.assertEqual(code, 0, err)
+        lines = out.splitlines()
+        self.assertEqual(len(lines), 2 + 24, out)  # title, header, 24 hours
+        self.assertTrue(lines[2].startswith("00:00"))
+        r = run_json(self, "day", "--step", "6")
+        self.assertEqual(len(r["steps"]), 4)
+        for step in r["steps"]:
+            for t in step["fog_1km_north"]["transmittance_rgb"]:
+                self.assertTrue(0.0 <= t <= 1.0)
+
+    def test_day_on_a_preset(self):
+        code, out, err = run("day", preset("stormy_night"), "--step", "12")
+        self.assertEqual(code, 0, err)
+        self.assertIn("Stormy night", out)
+
+
+def main():
+    global AERIAL, ROOT, WORK
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--aerial", required=True, help="the aerial binary")
+    parser.add_argument("--source-dir", required=True, help="the repository root")
+    parser.add_argument("--work-dir", required=True, help="a scratch directory (emptied first)")
+    args, rest = parser.parse_known_args()
+    AERIAL, ROOT, WORK = os.path.abspath(args.aerial), os.path.abspath(args.source_dir), os.path.abspath(
+        args.work_dir)
+    shutil.rmtree(WORK, ignore_errors=True)
+    os.makedirs(WORK)
+    unittest.main(argv=[sys.argv[0], *rest], verbosity=2)
+
+
+if __name__ == "__main__":
+    main()
