@@ -30,13 +30,15 @@
 //     their shape p + q t along the layer; and per shell the coefficients of
 //     the light's zenith cosine there, alpha + beta cos(phi) (phi: azimuth
 //     from the light; cos = (r0 sinL + s mu) / r, mu = dot(view, light)).
-//  4. Per texel (columns 0..azimuthCount/2, then mirrored): for each layer
-//     tau to the light at its upper shell (table lookup, linear in the mapped
-//     angle), the integral of (p + q t) T_a e^(-(tau_b - tau_a) t) over the
-//     layer in closed form (plus a curvature term, see skyLayer), times the
-//     lit fraction of the layer: the part of it outside the planet's shadow
-//     cylinder, which is solved exactly per texel, so the earth-shadow
-//     boundary (sun below the horizon) falls smoothly inside a layer.
+//  4. Per texel (columns 0..azimuthCount/2, then mirrored): first tau to
+//     the light at every shell (table lookup, linear in the mapped angle),
+//     then for each layer the integral of (p + q t) T_a e^(-(tau_b - tau_a) t)
+//     over it in closed form, times a curvature term (tau along the layer is
+//     not a straight line: the cubic through four neighbouring shells, see
+//     curvatureFactor), times the lit fraction of the layer: the part of it
+//     outside the planet's shadow cylinder, which is solved exactly per
+//     texel, so the earth-shadow boundary (sun below the horizon) falls
+//     smoothly inside a layer.
 //
 // Threads: a persistent pool made in the constructor; one dispatch per solve
 // (table rows first, then sky rows, pulled from an atomic counter). Every
@@ -130,8 +132,8 @@ AERIAL_INLINE float expNeg(float x) {
 /// the Rayleigh and Mie profiles (1 each): half of the shells are spread
 /// evenly in height, which keeps the upper layers thin enough to follow the
 /// earth-shadow boundary of a set sun (measured against the reference: with
-/// 32 layers the worst texel at a -5 deg sun is 1.7% off with this mix,
-/// 2.4% with a third, 3.7% with a quarter).
+/// 32 layers the worst texel at a -5 deg sun is 1.3% off with this mix,
+/// 2.2% with a third, 3.9% with a quarter).
 constexpr double kUniformShare = 2.0;
 
 /// sqrt(x) for x > 0 (relative error < 1e-5) by Newton steps on the
@@ -279,20 +281,36 @@ AERIAL_HOT_KERNEL void nodeKernel(const NodeKernelArgs& a) {
     }
 }
 
-/// Optical depth to the light at one shell for every column: the light's
-/// zenith cosine alpha + beta cos(phi) -> mapped column of that table row.
+/// The light at one shell for every column: its zenith cosine
+/// alpha + beta cos(phi) -> mapped column of that table row -> the record
+/// tau rgb, T = e^-tau rgb, sqrt(tau) rgb and the margin above the shell's
+/// horizon cosine (negative: the light is below it, the lookup clamped).
 AERIAL_INLINE void skyShell(int nc, float alpha, float beta, float ch, float scale, float knee, float maxU,
                             const float* __restrict t0, const float* __restrict t1,
                             const float* __restrict t2, const float* __restrict cosPhi,
-                            float* __restrict out0, float* __restrict out1, float* __restrict out2) {
+                            float* __restrict tau0, float* __restrict tau1, float* __restrict tau2,
+                            float* __restrict tr0, float* __restrict tr1, float* __restrict tr2,
+                            float* __restrict root0, float* __restrict root1, float* __restrict root2,
+                            float* __restrict margins) {
     for (int i = 0; i < nc; ++i) {
-        const float x = maxZero(alpha + beta * cosPhi[i] - ch);
+        const float margin = alpha + beta * cosPhi[i] - ch;
+        const float x = maxZero(margin);
         const float u = minNonNegative(x / (x + knee) * scale, maxU);
         const int iu = static_cast<int>(u);
         const float f = u - float(iu);
-        out0[i] = t0[iu] + f * (t0[iu + 1] - t0[iu]);
-        out1[i] = t1[iu] + f * (t1[iu + 1] - t1[iu]);
-        out2[i] = t2[iu] + f * (t2[iu + 1] - t2[iu]);
+        const float d0 = t0[iu] + f * (t0[iu + 1] - t0[iu]);
+        const float d1 = t1[iu] + f * (t1[iu + 1] - t1[iu]);
+        const float d2 = t2[iu] + f * (t2[iu + 1] - t2[iu]);
+        tau0[i] = d0;
+        tau1[i] = d1;
+        tau2[i] = d2;
+        tr0[i] = expNeg(d0);
+        tr1[i] = expNeg(d1);
+        tr2[i] = expNeg(d2);
+        root0[i] = fastSqrt(d0);
+        root1[i] = fastSqrt(d1);
+        root2[i] = fastSqrt(d2);
+        margins[i] = margin;
     }
 }
 
@@ -313,16 +331,33 @@ AERIAL_INLINE void exponentialMoments(float ta, float tb, float d, float& f1, fl
     f2 = std::bit_cast<float>((std::bit_cast<int>(s2) & small) | (std::bit_cast<int>(c2) & ~small));
 }
 
-/// 2/3 of the gap at mid-layer between the straight line from tau_a to
-/// tau_b < tau_a and a density-shaped (exponential) fall: the smaller of the
-/// shape with the Rayleigh scale height, curv (tau_a - tau_b), and the one
-/// through both ends, (sqrt tau_a - sqrt tau_b)^2 / 3. 0 where tau rises.
-/// Returns e^bump (bump capped at 1: a quartic, error < 0.4%
-/// at the cap and < 3e-4 below 0.5), given sqrt(tau) at both ends.
-AERIAL_INLINE float bumpFactor(float tauA, float tauB, float rootA, float rootB, float curv) {
+/// e^x, x the correction of the layer's mean transmittance to the light for
+/// the curvature of tau along the layer: 2/3 of the gap at mid-layer between
+/// the straight line from tau_a to tau_b and tau itself (2/3: the mean of a
+/// parabolic gap), positive where tau sags below the line (convex), negative
+/// where it bulges above it (concave).
+///  * Where the light is above the geometric horizon at every shell of the
+///    layer's stencil, tau is smooth and the gap is `cubic`: the cubic through
+///    tau at four shells around the layer at its middle, minus the chord,
+///    times -2/3 (LayerConstants::stencil).
+///  * Otherwise (a shell in the earth shadow, where the table lookup clamps to
+///    the grazing ray) tau falling along the layer is taken to fall like the
+///    density, tau_b + (tau_a - tau_b) (e^(-lambda t) - e^-lambda) / (1 - e^-lambda)
+///    with lambda = (h_b - h_a) / H_R, which lies below the straight line by
+///    curv (tau_a - tau_b), curv = tanh(lambda / 4) / 3 with the 2/3, capped by
+///    the exponential through both ends, (sqrt tau_a - sqrt tau_b)^2 / 3;
+///    0 where tau rises.
+/// `shadowed` is negative (sign bit set) where the second case applies.
+/// x is clamped to [-1/2, 1]: a quartic, error < 0.4% at 1 and < 0.05% at -1/2.
+AERIAL_INLINE float curvatureFactor(float cubic, int shadowed, float tauA, float tauB, float rootA,
+                                    float rootB, float curv) {
     const float rootGap = rootA - rootB;
-    const float x = minNonNegative(
-        minNonNegative(curv * maxZero(tauA - tauB), maxZero(rootGap) * rootGap * (1.0f / 3.0f)), 1.0f);
+    const float bump =
+        minNonNegative(curv * maxZero(tauA - tauB), maxZero(rootGap) * rootGap * (1.0f / 3.0f));
+    const int mask = shadowed >> 31;  // all ones where shadowed
+    float x = std::bit_cast<float>((std::bit_cast<int>(bump) & mask) | (std::bit_cast<int>(cubic) & ~mask));
+    x = minNonNegative(x, 1.0f);
+    x = x + maxZero(-0.5f - x);  // max(x, -1/2)
     return 1.0f + x * (1.0f + x * (0.5f + x * (1.0f / 6.0f + x * (1.0f / 24.0f))));
 }
 
@@ -331,57 +366,61 @@ struct LayerConstants {
     float alpha, beta, horizonCos, angleScale;  // upper shell: light cosine alpha + beta cos(phi), table row
     float start, end, invLength;                // layer extent along the view ray
     float p[6], q[6];                           // weight p + q t: R rgb, M rgb
-    float curvature;                            // tanh(lambda / 4) / 3, see skyLayer
+    float curvature;                            // tanh(lambda / 4) / 3, see curvatureFactor
+    int stencilC, stencilD;  // the stencil's two shells besides the layer's own (curvatureFactor)
+    float stencil[4];        // -2/3 (cubic at mid-layer - chord): weights of tau at shells a, b, C, D
 };
 
 /// One layer for every column. Along the layer (t = 0..1) the optical depth
 /// to the light is linear between the two shells, so the transmittance is
 /// T_a e^(-d t) (exact where it changes by orders of magnitude, as near the
 /// earth shadow), and the weight beta_X T(viewer -> s) is p + q t. The layer
-/// adds lit * (p F1 + q F2); the upper shell's tau and T become the next
-/// layer's lower ones. Where tau falls along the layer it falls roughly like
-/// the density, tau_b + (tau_a - tau_b) (e^(-lambda t) - e^-lambda) / (1 - e^-lambda)
-/// with lambda = (h_b - h_a) / H_R, which lies below the straight line by
-/// (tau_a - tau_b) tanh(lambda / 4) / 2 at the middle (capped by the
-/// exponential through both ends, see bump()); the transmittance is raised by
-/// e^(2/3 of that) (the mean of the bump), a second-order term that removes
-/// most of the bias of the straight line in thick upper layers.
-AERIAL_INLINE void skyLayer(int nc, const LayerConstants& k, float knee, float maxU,
-                            const float* __restrict t0, const float* __restrict t1,
-                            const float* __restrict t2, const float* __restrict cosPhi,
-                            const float* __restrict sIn, const float* __restrict sOut,
-                            float* __restrict tauLow0, float* __restrict tauLow1, float* __restrict tauLow2,
-                            float* __restrict tLow0, float* __restrict tLow1, float* __restrict tLow2,
-                            float* __restrict rootLow0, float* __restrict rootLow1,
-                            float* __restrict rootLow2, float* __restrict acc0, float* __restrict acc1,
-                            float* __restrict acc2, float* __restrict acc3, float* __restrict acc4,
-                            float* __restrict acc5) {
-    const float alpha = k.alpha, beta = k.beta, ch = k.horizonCos, scale = k.angleScale;
+/// adds lit * e^x * (p F1 + q F2), e^x the correction for the curvature of
+/// tau along the layer (curvatureFactor): a second-order term that removes
+/// most of the bias of the straight line, which matters where a thick layer
+/// is seen at a grazing angle. For a low sun near the horizon tau first rises
+/// along the view ray (the light crosses the dense air below the point) and
+/// bulges above the line: without the term the first layer of a horizon row
+/// is 3% too bright in blue there, and the texel 2%.
+AERIAL_INLINE void skyLayer(
+    int nc, const LayerConstants& k, const float* __restrict sIn, const float* __restrict sOut,
+    const float* __restrict tauA0, const float* __restrict tauA1, const float* __restrict tauA2,
+    const float* __restrict tA0, const float* __restrict tA1, const float* __restrict tA2,
+    const float* __restrict rA0, const float* __restrict rA1, const float* __restrict rA2,
+    const float* __restrict tauB0, const float* __restrict tauB1, const float* __restrict tauB2,
+    const float* __restrict tB0, const float* __restrict tB1, const float* __restrict tB2,
+    const float* __restrict rB0, const float* __restrict rB1, const float* __restrict rB2,
+    const float* __restrict tauC0, const float* __restrict tauC1, const float* __restrict tauC2,
+    const float* __restrict tauD0, const float* __restrict tauD1, const float* __restrict tauD2,
+    const float* __restrict mA, const float* __restrict mB, const float* __restrict mC,
+    const float* __restrict mD, float* __restrict acc0, float* __restrict acc1, float* __restrict acc2,
+    float* __restrict acc3, float* __restrict acc4, float* __restrict acc5) {
     const float s0 = k.start, s1 = k.end, invLen = k.invLength;
     const float p0 = k.p[0], p1 = k.p[1], p2 = k.p[2], p3 = k.p[3], p4 = k.p[4], p5 = k.p[5];
     const float q0 = k.q[0], q1 = k.q[1], q2 = k.q[2], q3 = k.q[3], q4 = k.q[4], q5 = k.q[5];
     const float curv = k.curvature;
+    const float wA = k.stencil[0], wB = k.stencil[1], wC = k.stencil[2], wD = k.stencil[3];
     for (int i = 0; i < nc; ++i) {
-        const float x = maxZero(alpha + beta * cosPhi[i] - ch);
-        const float u = minNonNegative(x / (x + knee) * scale, maxU);
-        const int iu = static_cast<int>(u);
-        const float f = u - float(iu);
-        const float up0 = t0[iu] + f * (t0[iu + 1] - t0[iu]);
-        const float up1 = t1[iu] + f * (t1[iu + 1] - t1[iu]);
-        const float up2 = t2[iu] + f * (t2[iu + 1] - t2[iu]);
-        const float tb0 = expNeg(up0), tb1 = expNeg(up1), tb2 = expNeg(up2);
         // Lit fraction: the layer [s0, s1] minus the shadow [sIn, sOut].
         const float lo = maxNonNegative(sIn[i], s0);
         const float hi = minNonNegative(sOut[i], s1);
         const float lit = maxZero(1.0f - maxZero((hi - lo) * invLen));
+        // Sign bit set where a stencil shell has the light below its horizon.
+        // (Loaded into locals first: a bit_cast of the array element itself
+        // makes GCC lose the restrict information and the loop stays scalar.)
+        const float marginA = mA[i], marginB = mB[i], marginC = mC[i], marginD = mD[i];
+        const int shadowed = std::bit_cast<int>(marginA) | std::bit_cast<int>(marginB) |
+                             std::bit_cast<int>(marginC) | std::bit_cast<int>(marginD);
+        const float x0 = wA * tauA0[i] + wB * tauB0[i] + wC * tauC0[i] + wD * tauD0[i];
+        const float x1 = wA * tauA1[i] + wB * tauB1[i] + wC * tauC1[i] + wD * tauD1[i];
+        const float x2 = wA * tauA2[i] + wB * tauB2[i] + wC * tauC2[i] + wD * tauD2[i];
         float a1, a2, b1, b2, c1, c2;
-        exponentialMoments(tLow0[i], tb0, up0 - tauLow0[i], a1, a2);
-        exponentialMoments(tLow1[i], tb1, up1 - tauLow1[i], b1, b2);
-        exponentialMoments(tLow2[i], tb2, up2 - tauLow2[i], c1, c2);
-        const float r0 = fastSqrt(up0), r1 = fastSqrt(up1), r2 = fastSqrt(up2);
-        const float g0 = lit * bumpFactor(tauLow0[i], up0, rootLow0[i], r0, curv);
-        const float g1 = lit * bumpFactor(tauLow1[i], up1, rootLow1[i], r1, curv);
-        const float g2 = lit * bumpFactor(tauLow2[i], up2, rootLow2[i], r2, curv);
+        exponentialMoments(tA0[i], tB0[i], tauB0[i] - tauA0[i], a1, a2);
+        exponentialMoments(tA1[i], tB1[i], tauB1[i] - tauA1[i], b1, b2);
+        exponentialMoments(tA2[i], tB2[i], tauB2[i] - tauA2[i], c1, c2);
+        const float g0 = lit * curvatureFactor(x0, shadowed, tauA0[i], tauB0[i], rA0[i], rB0[i], curv);
+        const float g1 = lit * curvatureFactor(x1, shadowed, tauA1[i], tauB1[i], rA1[i], rB1[i], curv);
+        const float g2 = lit * curvatureFactor(x2, shadowed, tauA2[i], tauB2[i], rA2[i], rB2[i], curv);
         a1 *= g0;
         a2 *= g0;
         b1 *= g1;
@@ -394,15 +433,6 @@ AERIAL_INLINE void skyLayer(int nc, const LayerConstants& k, float knee, float m
         acc3[i] += p3 * a1 + q3 * a2;
         acc4[i] += p4 * b1 + q4 * b2;
         acc5[i] += p5 * c1 + q5 * c2;
-        tauLow0[i] = up0;
-        tauLow1[i] = up1;
-        tauLow2[i] = up2;
-        tLow0[i] = tb0;
-        tLow1[i] = tb1;
-        tLow2[i] = tb2;
-        rootLow0[i] = r0;
-        rootLow1[i] = r1;
-        rootLow2[i] = r2;
     }
 }
 
@@ -428,35 +458,98 @@ struct SkyKernelArgs {
     const float* shadowOut;                         // [columns]
     const LayerConstants* layer;                    // [layers]
     const float* depth;                             // [3][layers + 1][angles] optical depth to the light
-    float* lower;  // [9][columns] scratch: tau, T and sqrt(tau) at the lower shell
-    float* acc;    // [6][columns]
+    float* shells;  // [kShellSlots][kShellRecord][columns] scratch: the light at the shells in use
+    float* acc;     // [6][columns]
 };
 
+/// Floats per column of a shell record (skyShell).
+constexpr int kShellRecord = 10;
+/// Shell records kept at a time: a layer's stencil spans four shells.
+constexpr int kShellSlots = 4;
+
+/// The light at shell j (0: the viewer's, j > 0: the upper shell of layer
+/// j - 1) into its record slot.
+AERIAL_INLINE void lightAtShell(const SkyKernelArgs& a, int j, float maxU) {
+    const int nc = a.columns;
+    const int na = a.angles;
+    const std::size_t rows = std::size_t(a.layers) + 1;
+    const float alpha = j == 0 ? a.alpha0 : a.layer[j - 1].alpha;
+    const float beta = j == 0 ? a.beta0 : a.layer[j - 1].beta;
+    const float ch = j == 0 ? a.horizonCos0 : a.layer[j - 1].horizonCos;
+    const float scale = j == 0 ? a.angleScale0 : a.layer[j - 1].angleScale;
+    const float* t0 = a.depth + std::size_t(j) * na;
+    const float* t1 = a.depth + (rows + std::size_t(j)) * na;
+    const float* t2 = a.depth + (2 * rows + std::size_t(j)) * na;
+    float* r = a.shells + std::size_t(j % kShellSlots) * kShellRecord * nc;
+    skyShell(nc, alpha, beta, ch, scale, a.knee, maxU, t0, t1, t2, a.cosPhi, r, r + nc, r + 2 * nc,
+             r + 3 * nc, r + 4 * nc, r + 5 * nc, r + 6 * nc, r + 7 * nc, r + 8 * nc, r + 9 * nc);
+}
+
 /// The inner loop of a sky row over contiguous float arrays, no branch.
+/// Shell records are made just ahead of the layers that use them, into
+/// kShellSlots slots (shell j in slot j % kShellSlots): layer l's stencil
+/// spans shells l-1 .. l+2 (0 .. 3 for the first layer, see layerStencil),
+/// so shell l + 2 replaces shell l - 2 before layer l >= 2.
 AERIAL_HOT_KERNEL void skyKernel(const SkyKernelArgs& a) {
     const int nc = a.columns;
     const int nl = a.layers;
-    const int na = a.angles;
-    const std::size_t rows = std::size_t(nl) + 1;
-    const float maxU = float(na - 1) - 1e-3f;
+    const float maxU = float(a.angles - 1) - 1e-3f;
     float* acc = a.acc;
-    float* low = a.lower;
+    auto shell = [&](int j) { return a.shells + std::size_t(j % kShellSlots) * kShellRecord * nc; };
+    for (int j = 0; j <= std::min(nl, kShellSlots - 1); ++j) lightAtShell(a, j, maxU);
     for (int i = 0; i < 6 * nc; ++i) acc[i] = 0.0f;
-    auto row = [&](int channel, int shell) {
-        return a.depth + (std::size_t(channel) * rows + std::size_t(shell)) * na;
-    };
-    skyShell(nc, a.alpha0, a.beta0, a.horizonCos0, a.angleScale0, a.knee, maxU, row(0, 0), row(1, 0),
-             row(2, 0), a.cosPhi, low, low + nc, low + 2 * nc);
-    for (int i = 0; i < 3 * nc; ++i) {
-        low[3 * nc + i] = expNeg(low[i]);
-        low[6 * nc + i] = fastSqrt(low[i]);
-    }
     for (int l = 0; l < nl; ++l) {
-        skyLayer(nc, a.layer[l], a.knee, maxU, row(0, l + 1), row(1, l + 1), row(2, l + 1), a.cosPhi,
-                 a.shadowIn, a.shadowOut, low, low + nc, low + 2 * nc, low + 3 * nc, low + 4 * nc,
-                 low + 5 * nc, low + 6 * nc, low + 7 * nc, low + 8 * nc, acc, acc + nc, acc + 2 * nc,
-                 acc + 3 * nc, acc + 4 * nc, acc + 5 * nc);
+        if (l >= 2 && l + 2 <= nl) lightAtShell(a, l + 2, maxU);
+        const LayerConstants& k = a.layer[l];
+        const float* lo = shell(l);
+        const float* up = shell(l + 1);
+        const float* c = shell(k.stencilC);
+        const float* d = shell(k.stencilD);
+        skyLayer(nc, k, a.shadowIn, a.shadowOut, lo, lo + nc, lo + 2 * nc, lo + 3 * nc, lo + 4 * nc,
+                 lo + 5 * nc, lo + 6 * nc, lo + 7 * nc, lo + 8 * nc, up, up + nc, up + 2 * nc, up + 3 * nc,
+                 up + 4 * nc, up + 5 * nc, up + 6 * nc, up + 7 * nc, up + 8 * nc, c, c + nc, c + 2 * nc, d,
+                 d + nc, d + 2 * nc, lo + 9 * nc, up + 9 * nc, c + 9 * nc, d + 9 * nc, acc, acc + nc,
+                 acc + 2 * nc, acc + 3 * nc, acc + 4 * nc, acc + 5 * nc);
     }
+}
+
+/// The curvature stencil of layer l (LayerConstants::stencil): the cubic
+/// through tau at the four shells nearest the layer (l-1 .. l+2, shifted to
+/// stay within 0 .. layers; a parabola through three where there are only
+/// three) taken at the layer's middle, minus the chord, times -2/3, as
+/// weights of tau at the layer's shells a = l and b = l + 1 and at the other
+/// two, C and D. Shells at the same distance (a viewer at the top) give no
+/// correction.
+void layerStencil(const double* crossing, int layers, int l, LayerConstants& lc) {
+    const int n = std::min(4, layers + 1);
+    const int first = std::clamp(l - 1, 0, layers + 1 - n);
+    const double mid = 0.5 * (crossing[l] + crossing[l + 1]);
+    double weight[4] = {0.0, 0.0, 0.0, 0.0};  // a, b, C, D
+    int other[2] = {l, l};                    // C and D (unused: a, weight 0)
+    int others = 0;
+    bool distinct = true;
+    for (int j = 0; j < n; ++j) {
+        const int shellIndex = first + j;
+        double lagrange = 1.0;
+        for (int m = 0; m < n; ++m) {
+            if (m == j) continue;
+            const double gap = crossing[shellIndex] - crossing[first + m];
+            if (!(std::abs(gap) > 0.0)) distinct = false;
+            lagrange *= (mid - crossing[first + m]) / gap;
+        }
+        if (shellIndex == l) {
+            weight[0] = lagrange - 0.5;
+        } else if (shellIndex == l + 1) {
+            weight[1] = lagrange - 0.5;
+        } else {
+            other[others] = shellIndex;
+            weight[2 + others] = lagrange;
+            ++others;
+        }
+    }
+    lc.stencilC = other[0];
+    lc.stencilD = other[1];
+    for (int j = 0; j < 4; ++j) lc.stencil[j] = distinct ? float(-2.0 / 3.0 * weight[j]) : 0.0f;
 }
 
 }  // namespace
@@ -471,7 +564,7 @@ struct SkySolver::Impl {
         std::vector<LayerConstants> layer;                      // [layers]
         std::vector<double> mass;                               // [3 layers]: R, M, O column masses
         std::vector<float> layerDepth, layerT, nodeT0, nodeT1;  // [3 layers]
-        std::vector<float> lower;                               // [9 padded columns]
+        std::vector<float> shells;                              // [kShellSlots][kShellRecord][padded columns]
         std::vector<float> shadowIn, shadowOut;                 // [padded columns]
         std::vector<float> acc;                                 // [6 padded columns]
         // optical-depth rows
@@ -490,7 +583,7 @@ struct SkySolver::Impl {
     std::vector<double> shellHeight;            // [layers + 1], shellHeight[0] = viewer height
     std::vector<float> horizonCos, angleScale;  // [layers + 1]
     std::vector<double> horizonCosD;            // [layers + 1]
-    std::vector<float> layerCurvature;          // [layers] tanh(lambda / 4) / 3, see skyLayer
+    std::vector<float> layerCurvature;          // [layers] tanh(lambda / 4) / 3, see curvatureFactor
     std::vector<float> depth;                   // [3][layers + 1][angles]
     DensityConstants density;
 
@@ -579,7 +672,7 @@ SkySolver::Impl::Impl(const SkySolverDesc& d) : desc(d) {
         s.mass.assign(std::size_t(3) * layers, 0.0);
         for (auto* v : {&s.layerDepth, &s.layerT, &s.nodeT0, &s.nodeT1})
             v->assign(std::size_t(3) * layers, 0.0f);
-        s.lower.assign(std::size_t(9) * paddedColumns, 0.0f);
+        s.shells.assign(std::size_t(kShellSlots) * kShellRecord * paddedColumns, 0.0f);
         s.shadowIn.assign(std::size_t(paddedColumns), -1.0f);  // padding stays unshadowed
         s.shadowOut.assign(std::size_t(paddedColumns), -1.0f);
         s.acc.assign(std::size_t(6) * paddedColumns, 0.0f);
@@ -891,6 +984,7 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
             viewT[c] *= layerT;
         }
         lc.curvature = layerCurvature[std::size_t(l)];
+        layerStencil(s.crossing.data(), layers, l, lc);
         lc.start = float(a);
         lc.end = float(b);
         lc.invLength = len > 0.0 ? float(1.0 / len) : 0.0f;
@@ -963,7 +1057,7 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
     k.shadowOut = s.shadowOut.data();
     k.layer = s.layer.data();
     k.depth = depth.data();
-    k.lower = s.lower.data();
+    k.shells = s.shells.data();
     k.acc = s.acc.data();
     skyKernel(k);
     SkyTable& out = tables[1 - front];
