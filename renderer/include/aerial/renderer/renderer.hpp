@@ -1,0 +1,196 @@
+// aerial/renderer/renderer.hpp — the OpenGL 4.5 renderer: opaque scene with
+// linear depth, sky, global height fog, fog volumes and emitters into an HDR
+// frame (DESIGN.md; Wenzel 2006). It renders with whatever context is
+// current, into its own framebuffers, and saves and restores the GL state it
+// touches.
+//
+// Usage:
+//   aerial::renderer::RendererDesc desc;
+//   desc.logger = {myLogFunction, myUserData};
+//   aerial::renderer::Renderer renderer(desc);   // a GL 4.5 context is current
+//   if (!renderer.valid()) fail(renderer.error());
+//   renderer.setScene(aerial::renderer::makeBuiltinScene());
+//   renderer.setSky(sunSolver.table(), moonSolver.table());    // when re-solved
+//   aerial::renderer::AtmosphereFrame air = aerial::renderer::atmosphereFrameFromState(state);
+//   renderer.render(camera, air, {320, 180});
+//   aerial::renderer::Image hdr = renderer.readColour();
+//
+// Passes, in order, into one HDR colour target (DESIGN.md "Global height fog"
+// and fog_query.hpp's compositing contract):
+//   1. scene: lit meshes, writing colour and normalised linear depth;
+//   2. sky where no geometry is (a full-screen triangle at the far plane,
+//      depth-tested): both tables with per-pixel phase functions, sun and
+//      moon discs;
+//   3. global fog: L <- L T_g + L_fog (1 - T_g);
+//   4. fog volumes, back to front: L <- L T_v + C_v (1 - T_v);
+//   5. emitters: L <- L + S_e.
+// Ordering of volumes: sorted once per frame by the distance from the eye to
+// each volume's world bounds (0 when inside), farthest first, ties by index.
+// fog_query.hpp sorts per segment by the clipped entry distance; the two
+// orders agree on every pixel whose ray crosses volumes whose bounds do not
+// overlap along it, in particular for disjoint volumes seen from outside, and
+// trivially for one volume. For interpenetrating volumes the per-pixel order
+// may differ.
+#pragma once
+
+#include <aerial/fog_query.hpp>
+#include <aerial/renderer/camera.hpp>
+#include <aerial/renderer/image.hpp>
+#include <aerial/renderer/log.hpp>
+#include <aerial/renderer/scene.hpp>
+
+#include <glm/vec3.hpp>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace aerial {
+struct PresetState;
+struct SkyTable;
+}  // namespace aerial
+
+namespace aerial::renderer {
+
+/// How the renderer is created. Zero values mean defaults.
+struct RendererDesc {
+    Logger logger;
+    /// Directory of the GLSL sources for reloadShaders() (hot reload); ""
+    /// = defaultShaderDirectory(). Creation always uses the sources embedded
+    /// at build time.
+    std::string shaderDirectory;
+    /// Route GL debug output (KHR_debug) to the logger while the renderer
+    /// works (the caller's callback is restored afterwards).
+    bool debugOutput = true;
+};
+
+/// The source tree's shaders/ directory, compiled in (for hot reload in a
+/// development build).
+std::string defaultShaderDirectory();
+
+/// A sun or moon as the passes see it.
+struct RenderLight {
+    glm::dvec3 direction{0.0, 1.0, 0.0};  ///< unit, from the scene to the light
+    /// Illuminance above the atmosphere E, RGB: multiplies the sky tables
+    /// and the horizon averages (sky and fog colour).
+    glm::dvec3 illuminanceSpace{0.0};
+    /// Illuminance reaching the ground (E T(viewer -> light)), RGB: lights
+    /// the scene and the disc.
+    glm::dvec3 illuminance{0.0};
+};
+
+/// The atmosphere of one frame: what the passes need from a PresetState.
+struct AtmosphereFrame {
+    RenderLight sun;
+    RenderLight moon;
+    /// Cornette-Shanks anisotropy g of the sky and fog colour, -0.999..0.999.
+    double mieAnisotropy = 0.8;
+    HeightFogParams fog;
+    /// Global fog colour: the sky's (FogScene's), tinted, or custom radiance.
+    FogColourMode fogColourMode = FogColourMode::Sky;
+    glm::dvec3 fogColour{1.0};
+    std::vector<FogVolume> volumes;
+    /// Intensities as they are this frame (keys and lightning flashes applied).
+    std::vector<Emitter> emitters;
+    /// Angular radius of the sun disc [rad]; 0 hides it. Default 0.2666 deg.
+    double sunDiscRadius = 0.004653;
+    /// Angular radius of the moon disc [rad]; 0 hides it. Default 0.2588 deg.
+    double moonDiscRadius = 0.004517;
+};
+
+/// The frame for a preset state (sun and moon from sunLight / moonLight).
+AtmosphereFrame atmosphereFrameFromState(const PresetState& state);
+
+/// The CPU counterpart of a frame's fog (the contract in fog_query.hpp):
+/// global fog with its colour mode, volumes, emitters and both lights with
+/// the tables' horizon averages. A transparent object shaded with
+/// FogScene(fogSceneDesc(...)).query(eye, object) gets the fog the passes
+/// put on an opaque pixel at the same place.
+FogSceneDesc fogSceneDesc(const AtmosphereFrame& frame, const SkyTable& sunTable, const SkyTable& moonTable);
+
+enum class ColourPrecision {
+    /// RGBA16F (default): the editor and captures. Every pass output is
+    /// capped at 3e4 so no pixel overflows the half range (the sun disc,
+    /// ~3e5 for the default sun, is clipped there).
+    Half,
+    /// RGBA32F: comparisons against the CPU reference (cap 1e30).
+    Float,
+};
+
+/// Which passes run (all by default).
+struct RenderPasses {
+    bool sky = true;
+    bool scene = true;
+    bool globalFog = true;
+    bool volumes = true;
+    bool emitters = true;
+};
+
+struct FrameDesc {
+    int width = 0;   ///< [px]; 0 = 1280
+    int height = 0;  ///< [px]; 0 = 720
+    ColourPrecision precision = ColourPrecision::Half;
+    RenderPasses passes;
+};
+
+struct ShaderReloadResult {
+    bool ok = true;
+    /// Compile and link logs of every program that failed (with the file
+    /// each #line source number stands for); empty when ok.
+    std::string log;
+};
+
+/// Statistics of the last render.
+struct RenderStats {
+    int volumesDrawn = 0;
+    int volumesDrawnInside = 0;  ///< hulls drawn as back faces without depth test
+    int emitters = 0;
+    int glErrors = 0;  ///< GL errors seen (each also logged)
+};
+
+class Renderer {
+public:
+    /// Needs a current OpenGL 4.5 core context; compiles the embedded
+    /// shaders. Check valid() afterwards.
+    explicit Renderer(const RendererDesc& desc = {});
+    /// Must run with the same context current.
+    ~Renderer();
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    bool valid() const;
+    /// Why creation failed ("" when valid).
+    const std::string& error() const;
+
+    /// Uploads the opaque scene (replaces the previous one).
+    void setScene(const SceneDesc& scene);
+    /// Uploads the two hemisphere tables (sun, moon) as RGBA32F textures and
+    /// derives the sky ambient irradiance; call when a solve completes. A
+    /// table of the wrong size (or empty) counts as black.
+    void setSky(const SkyTable& sunTable, const SkyTable& moonTable);
+
+    /// Renders one frame into the renderer's HDR target (resized as needed).
+    void render(const Camera& camera, const AtmosphereFrame& atmosphere, const FrameDesc& frame);
+
+    /// Recompiles every program from RendererDesc::shaderDirectory. A
+    /// program that fails keeps its last good version; the log says why.
+    ShaderReloadResult reloadShaders();
+    /// Same, from another directory.
+    ShaderReloadResult reloadShaders(const std::string& directory);
+
+    /// The last frame: RGBA colour (scene-linear) and normalised linear
+    /// depth (1 channel, z_view / far; 1 where only sky is seen).
+    Image readColour() const;
+    Image readLinearDepth() const;
+    /// GL names of the frame's textures (for an editor's viewport).
+    unsigned int colourTexture() const;
+    unsigned int linearDepthTexture() const;
+
+    const RenderStats& stats() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace aerial::renderer

@@ -1,0 +1,78 @@
+// sky_textures.cpp — uploading the solver's tables (mapping in
+// <aerial/sky.hpp>) and integrating them into an ambient irradiance.
+#include "sky_textures.hpp"
+
+#include <aerial/atmosphere.hpp>
+
+#include <cmath>
+#include <vector>
+
+namespace aerial::renderer::detail {
+namespace {
+
+GLuint makeTexture(int columns, int rows, const std::vector<float>& rgba) {
+    GLuint texture = 0;
+    glCreateTextures(GL_TEXTURE_2D, 1, &texture);
+    glTextureStorage2D(texture, 1, GL_RGBA32F, columns, rows);
+    glTextureSubImage2D(texture, 0, 0, 0, columns, rows, GL_RGBA, GL_FLOAT, rgba.data());
+    glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(texture, GL_TEXTURE_WRAP_S, GL_REPEAT);         // azimuth wraps
+    glTextureParameteri(texture, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);  // elevation does not
+    return texture;
+}
+
+}  // namespace
+
+SkyTextures::~SkyTextures() {
+    if (rayleigh != 0) glDeleteTextures(1, &rayleigh);
+    if (mie != 0) glDeleteTextures(1, &mie);
+}
+
+void SkyTextures::upload(const SkyTable& table) {
+    if (rayleigh != 0) glDeleteTextures(1, &rayleigh);
+    if (mie != 0) glDeleteTextures(1, &mie);
+    const std::size_t texels = table.azimuthCount > 0 && table.elevationCount > 0
+                                   ? static_cast<std::size_t>(table.azimuthCount) * table.elevationCount
+                                   : 0;
+    valid = texels > 0 && table.rayleigh.size() >= texels * 3 && table.mie.size() >= texels * 3;
+    columns = valid ? table.azimuthCount : 1;
+    rows = valid ? table.elevationCount : 1;
+    std::vector<float> r(static_cast<std::size_t>(columns) * rows * 4, 0.0f);
+    std::vector<float> m(r.size(), 0.0f);
+    if (valid) {
+        for (std::size_t i = 0; i < texels; ++i) {
+            for (int c = 0; c < 3; ++c) {
+                r[i * 4 + c] = table.rayleigh[i * 3 + c];
+                m[i * 4 + c] = table.mie[i * 3 + c];
+            }
+        }
+    }
+    rayleigh = makeTexture(columns, rows, r);
+    mie = makeTexture(columns, rows, m);
+    lightAzimuth = valid ? table.lightAzimuth : 0.0;
+    lightDirection = table.lightDirection;
+    horizonRayleigh = valid ? table.horizonRayleigh : glm::dvec3(0.0);
+    horizonMie = valid ? table.horizonMie : glm::dvec3(0.0);
+}
+
+glm::dvec3 skyIrradiance(const SkyTable& table, double mieAnisotropy, const glm::dvec3& illuminance) {
+    if (table.azimuthCount < 1 || table.elevationCount < 1) return glm::dvec3(0.0);
+    constexpr int kAzimuths = 64;
+    constexpr int kElevations = 16;
+    glm::dvec3 sum(0.0);
+    for (int j = 0; j < kElevations; ++j) {
+        // Midpoint in elevation; dOmega = cos(el) d(el) d(az).
+        const double el = (j + 0.5) / kElevations * 0.5 * kPi;
+        const double weight =
+            std::sin(el) * std::cos(el) * (0.5 * kPi / kElevations) * (2.0 * kPi / kAzimuths);
+        for (int i = 0; i < kAzimuths; ++i) {
+            const double az = (i + 0.5) / kAzimuths * 2.0 * kPi;
+            const glm::dvec3 v(std::cos(el) * std::sin(az), std::sin(el), -std::cos(el) * std::cos(az));
+            sum += skyRadiance(table, mieAnisotropy, v, illuminance) * weight;
+        }
+    }
+    return sum;
+}
+
+}  // namespace aerial::renderer::detail

@@ -1,0 +1,36 @@
+// sky_textures.hpp — private: the two hemisphere tables of one light as GL
+// textures, and the sky's ambient irradiance derived from them.
+#pragma once
+
+#include <aerial/sky.hpp>
+
+#include <epoxy/gl.h>
+#include <glm/vec3.hpp>
+
+namespace aerial::renderer::detail {
+
+/// I_R and I_M of one table as RGBA32F textures (alpha 0), GL_LINEAR,
+/// GL_REPEAT on s (the azimuth wraps), GL_CLAMP_TO_EDGE on t.
+struct SkyTextures {
+    GLuint rayleigh = 0;
+    GLuint mie = 0;
+    int columns = 1;
+    int rows = 1;
+    double lightAzimuth = 0.0;
+    glm::dvec3 lightDirection{0.0, 1.0, 0.0};
+    glm::dvec3 horizonRayleigh{0.0};
+    glm::dvec3 horizonMie{0.0};
+    bool valid = false;  ///< false: the table was empty or malformed (black)
+
+    ~SkyTextures();
+    /// Uploads a table (a malformed one uploads one black texel).
+    void upload(const SkyTable& table);
+};
+
+/// Cosine-weighted sky irradiance on an upward surface from one table,
+/// E_sky = E * integral over the upper hemisphere of (P_R I_R + P_M I_M) v.y
+/// dOmega, by the midpoint rule on a 64 x 16 grid of directions sampled with
+/// sampleSkyTable.
+glm::dvec3 skyIrradiance(const SkyTable& table, double mieAnisotropy, const glm::dvec3& illuminance);
+
+}  // namespace aerial::renderer::detail

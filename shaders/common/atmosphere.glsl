@@ -1,0 +1,97 @@
+// common/atmosphere.glsl — phase functions, the sky's fog colour and the
+// analytic exponential-fog integral, mirroring the CPU reference in core/
+// (core/src/atmosphere.cpp, core/src/height_fog.cpp, core/src/fog_query.cpp).
+//
+// Papers: Nishita et al. 1993 (single scattering; Rayleigh and
+// Cornette-Shanks phase functions), Wenzel 2006 section 6.4 (analytic
+// exponential height fog). Units: lengths [m], coefficients [1/m], phase
+// functions [1/sr], radiance in the unit of the lights' illuminance per sr.
+// Requires common/frame.glsl.
+#ifndef AERIAL_ATMOSPHERE_GLSL
+#define AERIAL_ATMOSPHERE_GLSL
+
+const float kPi = 3.14159265358979;
+/// Optical depths saturate here (as kMaxOpticalDepth in height_fog.hpp).
+const float kMaxOpticalDepth = 1.0e4;
+
+/// atan(y, x) to float precision. GLSL's atan/asin are often polynomial
+/// approximations (Mesa's NIR lowering is good to ~1e-4 relative, enough for
+/// 4e-4 errors in a sky lookup); one Newton step on
+/// r sin(theta_true - theta) = y cos(theta) - x sin(theta) squares the error.
+/// (0, 0) gives 0.
+float preciseAtan2(float y, float x) {
+    if (x == 0.0 && y == 0.0) return 0.0;
+    float theta = atan(y, x);
+    float c = cos(theta);
+    float s = sin(theta);
+    return theta + (y * c - x * s) / (x * c + y * s);
+}
+
+/// Rayleigh phase 3/(16 pi) (1 + mu^2) [1/sr], mu = cos(view, light).
+float rayleighPhase(float mu) {
+    mu = clamp(mu, -1.0, 1.0);
+    return 3.0 / (16.0 * kPi) * (1.0 + mu * mu);
+}
+
+/// Cornette-Shanks 3/(8 pi) (1 - g^2)(1 + mu^2) / ((2 + g^2)(1 + g^2 - 2 g mu)^1.5) [1/sr].
+float miePhase(float mu, float g) {
+    mu = clamp(mu, -1.0, 1.0);
+    g = clamp(g, -0.999, 0.999);
+    float g2 = g * g;
+    float denom = max(1.0 + g2 - 2.0 * g * mu, 1e-12);
+    return 3.0 / (8.0 * kPi) * (1.0 - g2) * (1.0 + mu * mu) / ((2.0 + g2) * denom * sqrt(denom));
+}
+
+/// (1 - exp(-x)) / x for x >= 0, the factor of the fog integral that tends
+/// to 1 as x -> 0. GLSL has no expm1: below 0.1 a Taylor series to x^4
+/// (truncation < x^5/720 = 1.4e-8 at 0.1), above it the direct form
+/// (cancellation error ~ 6e-8 / x <= 6e-7). Both agree to float precision at
+/// the switch, so there is no visible jump as c d.y -> 0 (horizontal rays,
+/// c = 0 gives exactly 1).
+float oneMinusExpOverX(float x) {
+    if (x < 0.1) {
+        return 1.0 + x * (-0.5 + x * (1.0 / 6.0 + x * (-1.0 / 24.0 + x * (1.0 / 120.0))));
+    }
+    return (1.0 - exp(-x)) / x;
+}
+
+/// 1 - exp(-tau), tau >= 0, accurate near 0 (-expm1(-tau)).
+float oneMinusExp(float tau) { return tau * oneMinusExpOverX(tau); }
+
+/// Optical depth of b exp(-c (h - h0)) along a segment: `height` = height of
+/// the start above the plane of density b [m], `rise` = height change over
+/// the segment [m], `len` = its length [m]. The form of height_fog.cpp:
+/// b L exp(-min(y0, y1)) g(|c rise|), the density at the denser end times a
+/// factor <= 1, so nothing overflows; saturates at kMaxOpticalDepth.
+float exponentialOpticalDepth(float b, float c, float height, float rise, float len) {
+    if (!(b > 0.0) || !(len > 0.0)) return 0.0;
+    c = max(c, 0.0);
+    float x = c * rise;
+    float y0 = c * height;
+    float yDense = min(y0, y0 + x);
+    float m = b * len * oneMinusExpOverX(abs(x));
+    // exp(80) ~ 5.5e34: beyond it the result saturates anyway for any m that
+    // matters (m e^80 > 1e4 needs m > 2e-31).
+    return min(m * exp(min(-yDense, 80.0)), kMaxOpticalDepth);
+}
+
+/// The sky's fog colour in direction v (unit): sum over sun and moon of
+/// E (P_R(mu) I_R,horizon + P_M(mu, g) I_M,horizon) (FogScene::fogColour).
+vec3 skyFogColour(vec3 v) {
+    float g = frame.sunHorizonRayleigh.w;
+    float muSun = dot(v, frame.sunDirection.xyz);
+    float muMoon = dot(v, frame.moonDirection.xyz);
+    return frame.sunIlluminanceSpace.rgb * (rayleighPhase(muSun) * frame.sunHorizonRayleigh.rgb +
+                                            miePhase(muSun, g) * frame.sunHorizonMie.rgb) +
+           frame.moonIlluminanceSpace.rgb * (rayleighPhase(muMoon) * frame.moonHorizonRayleigh.rgb +
+                                             miePhase(muMoon, g) * frame.moonHorizonMie.rgb);
+}
+
+/// Colour of fog in a colour mode (0 sky, 1 tinted, 2 custom; FogColourMode).
+vec3 fogColourFor(float mode, vec3 colour, vec3 v) {
+    if (mode > 1.5) return colour;
+    vec3 sky = skyFogColour(v);
+    return mode > 0.5 ? colour * sky : sky;
+}
+
+#endif

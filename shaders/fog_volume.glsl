@@ -1,0 +1,100 @@
+// fog_volume.glsl — one box or ellipsoid fog volume (DESIGN.md, "Fog
+// volumes"; Wenzel 2006, section 6.6): the bounding hull (the unit cube in
+// object space, for both shapes) is rasterised, each fragment traces the
+// pixel's ray in object space and integrates the volume's exponential density
+// analytically over the clipped segment.
+//
+// Inputs:
+//   frame (common/frame.glsl): eye [m], far-plane corner rays, lights
+//   VolumeBlock (std140, binding 1; VolumeBlock in renderer/src/gpu_types.hpp):
+//     worldFromObject (hull transform: position + rotation * halfExtents),
+//     the rows of objectFromWorld (S^-1 R^T; w of row0: shape, 0 box,
+//     1 ellipsoid; w of row1: density b_v [1/m]; w of row2: falloff c_v [1/m]),
+//     position [m] (w: gradient offset [m]), unit gradient g (w: colour mode
+//     0 sky, 1 tinted, 2 custom), colour (rgb)
+//   uLinearDepth (unit 4): normalised linear eye depth z/far
+// Output (location 0), blended with glBlendFunc(GL_ONE, GL_SRC_ALPHA):
+//   rgb = C_v (1 - T_v), a = T_v: L <- L T_v + C_v (1 - T_v).
+//
+// The ray is eye + t farRay, t in [0, 1] to the far plane; the scene point is
+// at t = depth01. The segment is [max(t_in, 0), min(t_out, depth01)] (the
+// viewer may stand inside; geometry inside the volume ends it). Its optical
+// depth is the global-fog formula with o.y - h0 -> dot(o - centre, g) - offset
+// and d.y -> dot(d, g) (core/src/bvh.hpp, opticalDepthPrepared).
+#include "common/frame.glsl"
+
+layout(std140, binding = 1) uniform VolumeBlock {
+    mat4 worldFromObject;
+    vec4 objectFromWorld0;
+    vec4 objectFromWorld1;
+    vec4 objectFromWorld2;
+    vec4 positionOffset;
+    vec4 gradientMode;
+    vec4 colour;
+} volume;
+
+#ifdef AERIAL_VERTEX_SHADER
+layout(location = 0) in vec3 aPosition;  // unit cube corner, object space
+
+void main() { gl_Position = frame.clipFromWorld * (volume.worldFromObject * vec4(aPosition, 1.0)); }
+#else
+#include "common/atmosphere.glsl"
+
+layout(binding = 4) uniform sampler2D uLinearDepth;
+layout(location = 0) out vec4 outColour;
+
+vec3 toObject(vec3 w) {
+    return vec3(dot(volume.objectFromWorld0.xyz, w), dot(volume.objectFromWorld1.xyz, w),
+                dot(volume.objectFromWorld2.xyz, w));
+}
+
+/// Entry and exit parameters of o + t d against the unit cube or unit
+/// sphere (object space); tNear > tFar when missed.
+vec2 intersectUnitShape(vec3 o, vec3 d) {
+    if (volume.objectFromWorld0.w < 0.5) {
+        // Slabs |o_i + t d_i| <= 1.
+        float tNear = -3.0e38;
+        float tFar = 3.0e38;
+        for (int i = 0; i < 3; ++i) {
+            if (abs(d[i]) > 1e-30) {
+                float t1 = (-1.0 - o[i]) / d[i];
+                float t2 = (1.0 - o[i]) / d[i];
+                tNear = max(tNear, min(t1, t2));
+                tFar = min(tFar, max(t1, t2));
+            } else if (abs(o[i]) > 1.0) {
+                return vec2(1.0, 0.0);
+            }
+        }
+        return vec2(tNear, tFar);
+    }
+    // Unit sphere from the closest approach (no B^2 - AC cancellation).
+    float a = dot(d, d);
+    if (!(a > 0.0)) return vec2(1.0, 0.0);
+    float tMid = -dot(o, d) / a;
+    vec3 perp = o + tMid * d;
+    float h = 1.0 - dot(perp, perp);
+    if (!(h > 0.0)) return vec2(1.0, 0.0);
+    float halfChord = sqrt(h / a);
+    return vec2(tMid - halfChord, tMid + halfChord);
+}
+
+void main() {
+    float depth01 = texelFetch(uLinearDepth, ivec2(gl_FragCoord.xy), 0).r;
+    vec3 farRay = farRayAtFragment(gl_FragCoord.xy);
+    vec3 eye = frame.eyeFar.xyz;
+    vec3 centre = volume.positionOffset.xyz;
+    vec2 hit = intersectUnitShape(toObject(eye - centre), toObject(farRay));
+    float tIn = max(hit.x, 0.0);
+    float tOut = min(hit.y, depth01);
+    if (!(tIn < tOut)) discard;
+
+    vec3 g = volume.gradientMode.xyz;
+    float span = tOut - tIn;
+    float rate = dot(farRay, g);  // height change per unit t
+    float height = dot(eye - centre, g) + tIn * rate - volume.positionOffset.w;
+    float tau = exponentialOpticalDepth(volume.objectFromWorld1.w, volume.objectFromWorld2.w, height,
+                                        span * rate, span * length(farRay));
+    vec3 colour = min(fogColourFor(volume.gradientMode.w, volume.colour.rgb, normalize(farRay)), vec3(frame.fogColour.w));
+    outColour = vec4(colour * oneMinusExp(tau), exp(-tau));
+}
+#endif

@@ -1,0 +1,34 @@
+// global_fog.glsl — the global height-fog pass (DESIGN.md, "Global height
+// fog"; Wenzel 2006, section 6.4): full screen, analytic integral of
+// f(p) = b exp(-c (p.y - h0)) from the eye to the pixel's scene point.
+//
+// Inputs:
+//   frame (common/frame.glsl): eye [m], far-plane corner rays, fog b [1/m],
+//     c [1/m], h0 [m], colour mode and colour, lights for the sky's fog colour
+//   uLinearDepth (unit 4): normalised linear eye depth z/far (sky = 1: the
+//     sky is fogged up to the far plane)
+// Output (location 0), blended with glBlendFunc(GL_ONE, GL_SRC_ALPHA):
+//   rgb = L_fog(v) (1 - T), a = T, T = exp(-integral f), so the target becomes
+//   L = L_scene T + L_fog (1 - T); L_fog is the horizon average with the
+//   per-pixel phase functions (FogScene::fogColour) in colour mode "sky".
+#include "common/frame.glsl"
+
+#ifdef AERIAL_VERTEX_SHADER
+#include "common/fullscreen.glsl"
+#else
+#include "common/atmosphere.glsl"
+
+layout(binding = 4) uniform sampler2D uLinearDepth;
+
+in vec3 vFarRay;
+layout(location = 0) out vec4 outColour;
+
+void main() {
+    float depth01 = texelFetch(uLinearDepth, ivec2(gl_FragCoord.xy), 0).r;
+    vec3 d = depth01 * vFarRay;  // eye -> scene point [m]
+    float tau = exponentialOpticalDepth(frame.fogParams.x, frame.fogParams.y,
+                                        frame.eyeFar.y - frame.fogParams.z, d.y, length(d));
+    vec3 colour = min(fogColourFor(frame.fogParams.w, frame.fogColour.rgb, normalize(vFarRay)), vec3(frame.fogColour.w));
+    outColour = vec4(colour * oneMinusExp(tau), exp(-tau));
+}
+#endif

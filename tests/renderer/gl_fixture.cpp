@@ -1,0 +1,122 @@
+// gl_fixture.cpp — see gl_fixture.hpp.
+#include "gl_fixture.hpp"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+// Leaks inside Mesa's drivers (llvmpipe's JIT, the DRI loader) are not ours;
+// LeakSanitizer reads these suppressions in an ASan build and ignores them
+// otherwise.
+extern "C" __attribute__((used)) const char* __lsan_default_suppressions() {
+    return "leak:libEGL_mesa\nleak:libgallium\nleak:libLLVM\nleak:swrast_dri\nleak:libglapi\nleak:libdrm\n"
+           "leak:llvmpipe\nleak:libEGL.so\nleak:libepoxy\n";
+}
+
+namespace aerial::test {
+
+renderer::HeadlessContext* glContext(std::string& error) {
+    // Never destroyed: tearing the context down at exit unloads Mesa's
+    // driver (eglTerminate), after which LeakSanitizer cannot name the
+    // library of Mesa's own allocations and its suppressions (above) miss.
+    static renderer::HeadlessContext* context = nullptr;
+    static std::string creationError;
+    static bool tried = false;
+    if (!tried) {
+        tried = true;
+        auto c = std::make_unique<renderer::HeadlessContext>();
+        if (c->create()) {
+            context = c.release();
+            std::printf("[ renderer ] %s\n", context->rendererName().c_str());
+        } else {
+            creationError = c->error();
+        }
+    }
+    if (!context) {
+        error = creationError;
+        return nullptr;
+    }
+    if (!context->makeCurrent()) {
+        error = context->error();
+        return nullptr;
+    }
+    return context;
+}
+
+renderer::Logger LogCapture::logger() {
+    renderer::Logger l;
+    l.userData = this;
+    l.function = [](renderer::LogLevel level, const char* message, void* user) {
+        auto* self = static_cast<LogCapture*>(user);
+        if (level == renderer::LogLevel::Error) self->errors.emplace_back(message);
+        if (level == renderer::LogLevel::Warning) self->warnings.emplace_back(message);
+    };
+    return l;
+}
+
+void GlTest::SetUp() {
+    std::string error;
+    ASSERT_NE(glContext(error), nullptr)
+        << "cannot create a headless OpenGL 4.5 context through EGL (Mesa's surfaceless platform): " << error
+        << "\nThe renderer tests need Mesa (libegl-mesa0, libgl1-mesa-dri); they do not skip.";
+}
+
+SkyPair solveSky(const AtmosphereParams& air, const glm::dvec3& sunDirection, const glm::dvec3& moonDirection,
+                 int columns, int rows) {
+    SkySolverDesc desc;
+    desc.azimuthCount = columns;
+    desc.elevationCount = rows;
+    desc.layerCount = 16;
+    desc.opticalDepthAngles = 32;
+    SkySolver solver(desc);
+    SkyPair pair;
+    solver.solve(air, sunDirection);
+    pair.sun = solver.table();
+    solver.solve(air, moonDirection);
+    pair.moon = solver.table();
+    return pair;
+}
+
+FogComparison compareWithCpu(const renderer::Image& fogged, const renderer::Image& unfogged,
+                             const renderer::Image& depth01, const renderer::Camera& camera,
+                             const FogScene& scene, double floor) {
+    FogComparison result;
+    const renderer::CameraFrame frame = renderer::cameraFrame(camera);
+    double sumT = 0.0;
+    double sumS = 0.0;
+    for (int y = 0; y < fogged.height; ++y) {
+        for (int x = 0; x < fogged.width; ++x) {
+            const double d01 = depth01.at(x, y, 0);
+            const glm::dvec3 point =
+                frame.eye + d01 * renderer::farRayAtPixel(frame, x, y, fogged.width, fogged.height);
+            const FogQueryResult q = scene.query(frame.eye, point);
+            double unfoggedMax = 0.0;
+            double cpuMax = 0.0;
+            double difference = 0.0;
+            for (int c = 0; c < 3; ++c) {
+                const double scene0 = unfogged.at(x, y, c);
+                const double cpu = scene0 * q.transmittance[c] + q.inScatter[c];
+                unfoggedMax = std::max(unfoggedMax, std::fabs(scene0));
+                cpuMax = std::max(cpuMax, std::fabs(cpu));
+                const double gpu = fogged.at(x, y, c);
+                difference = std::max(difference, std::isfinite(gpu) ? std::fabs(gpu - cpu) : 1e30);
+            }
+            const double error = difference / std::max({unfoggedMax, cpuMax, floor});
+            if (error > result.maxError) {
+                result.maxError = error;
+                result.worstX = x;
+                result.worstY = y;
+            }
+            sumT += q.transmittance.x;
+            sumS += std::max({q.inScatter.x, q.inScatter.y, q.inScatter.z});
+        }
+    }
+    const double n = double(fogged.width) * fogged.height;
+    result.meanTransmittance = sumT / n;
+    result.meanInScatter = sumS / n;
+    return result;
+}
+
+}  // namespace aerial::test

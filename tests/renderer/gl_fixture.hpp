@@ -1,0 +1,66 @@
+// gl_fixture.hpp — shared helpers of test_renderer: one headless EGL context
+// per process (the tests FAIL, not skip, when it cannot be created: CI has
+// Mesa), a logger that records what the renderer reports, small sky tables,
+// and the per-pixel comparison against the CPU fog queries.
+#pragma once
+
+#include <aerial/fog_query.hpp>
+#include <aerial/renderer/egl_context.hpp>
+#include <aerial/renderer/renderer.hpp>
+#include <aerial/sky.hpp>
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+namespace aerial::test {
+
+/// The process-wide headless context, created on first use and made
+/// current; null (with `error` set) when EGL cannot give one.
+renderer::HeadlessContext* glContext(std::string& error);
+
+/// Records every message the renderer logs.
+struct LogCapture {
+    std::vector<std::string> errors;
+    std::vector<std::string> warnings;
+    renderer::Logger logger();
+};
+
+/// Test fixture: makes the context current, or fails the test.
+class GlTest : public ::testing::Test {
+protected:
+    void SetUp() override;
+    renderer::RendererDesc rendererDesc() {
+        renderer::RendererDesc d;
+        d.logger = log.logger();
+        return d;
+    }
+    LogCapture log;
+};
+
+/// A solved pair of tables (sun, moon) for the given light directions, small
+/// enough to solve quickly (64 x 32, 16 layers).
+struct SkyPair {
+    SkyTable sun;
+    SkyTable moon;
+};
+SkyPair solveSky(const AtmosphereParams& air, const glm::dvec3& sunDirection, const glm::dvec3& moonDirection,
+                 int columns = 64, int rows = 32);
+
+/// Largest per-pixel error of a fogged GPU frame against the CPU query on
+/// the same inputs: for every pixel, the scene point is reconstructed from
+/// the GPU's linear depth (in double), FogScene::query(eye, point) gives
+/// T and S, and the error is max_c |L_gpu - (L_scene T + S)| divided by
+/// max(max_c L_scene, max_c L_cpu, floor) ("relative to the unfogged value").
+struct FogComparison {
+    double maxError = 0.0;
+    int worstX = 0, worstY = 0;
+    double meanTransmittance = 0.0;  ///< of the CPU answers: shows the fog is not trivial
+    double meanInScatter = 0.0;      ///< mean of max_c S
+};
+FogComparison compareWithCpu(const renderer::Image& fogged, const renderer::Image& unfogged,
+                             const renderer::Image& depth01, const renderer::Camera& camera,
+                             const FogScene& scene, double floor = 1e-3);
+
+}  // namespace aerial::test

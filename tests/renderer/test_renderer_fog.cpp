@@ -1,0 +1,302 @@
+// test_renderer_fog.cpp — GPU fog against the CPU reference (FogScene, the
+// contract of fog_query.hpp) on the same inputs, every pixel: global height
+// fog, box and ellipsoid volumes (rotated, non-uniformly scaled, gradients in
+// arbitrary directions, offsets, colour modes) with the camera outside,
+// inside and straddling the hull (near-plane crossing), and emitters.
+//
+// Method: render the scene pass alone (L_scene) and the full frame into
+// RGBA32F targets, read back the linear depth, reconstruct each pixel's
+// scene point in double (eye + depth01 * farRay), query the CPU and compare
+// (gl_fixture.hpp, compareWithCpu). Tolerance: 1e-3 relative to the
+// unfogged value.
+#include "gl_fixture.hpp"
+
+#include <aerial/renderer/scene.hpp>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include <cmath>
+#include <cstdio>
+
+namespace aerial::test {
+namespace {
+
+using renderer::Camera;
+using renderer::FrameDesc;
+using renderer::Renderer;
+
+constexpr int kWidth = 160;
+constexpr int kHeight = 90;
+constexpr double kTolerance = 1e-3;
+
+Camera makeCamera(const glm::dvec3& eye, const glm::dvec3& target) {
+    Camera c;
+    c.eye = eye;
+    c.target = target;
+    c.verticalFov = 1.1;
+    c.nearDistance = 0.1;
+    c.farDistance = 1500.0;
+    c.aspect = double(kWidth) / kHeight;
+    return c;
+}
+
+/// Test geometry with known radiance (emission only): a wall perpendicular
+/// to the view at `wallDepth`, the ground y = 0 and a rotated box.
+renderer::SceneDesc testScene(const Camera& camera, double wallDepth) {
+    const renderer::CameraFrame f = renderer::cameraFrame(camera);
+    renderer::SceneDesc scene;
+    const double half = wallDepth * 4.0;
+    renderer::SceneMesh wall =
+        renderer::makeQuadMesh(f.eye + f.forward * wallDepth - f.right * half - f.up * half,
+                               f.right * (2 * half), f.up * (2 * half), glm::dvec3(0.0));
+    wall.emission = {1.0, 0.8, 0.6};
+    scene.meshes.push_back(wall);
+    renderer::SceneMesh ground = renderer::makeQuadMesh({-4000.0, 0.0, 4000.0}, {8000.0, 0.0, 0.0},
+                                                        {0.0, 0.0, -8000.0}, glm::dvec3(0.0));
+    ground.emission = {0.3, 0.35, 0.25};
+    scene.meshes.push_back(ground);
+    renderer::SceneMesh box = renderer::makeBoxMesh(
+        {15.0, 6.0, -70.0}, {5.0, 6.0, 3.0}, glm::angleAxis(0.6, glm::normalize(glm::dvec3(0.2, 1.0, 0.1))),
+        glm::dvec3(0.0));
+    box.emission = {0.9, 0.2, 0.1};
+    scene.meshes.push_back(box);
+    return scene;
+}
+
+class FogVsCpu : public GlTest {
+protected:
+    void SetUp() override {
+        GlTest::SetUp();
+        if (HasFatalFailure()) return;
+        static const SkyPair sky = solveSky(AtmosphereParams{}, sunDirection(), moonDirection());
+        sky_ = &sky;
+        renderer_ = std::make_unique<Renderer>(rendererDesc());
+        ASSERT_TRUE(renderer_->valid()) << renderer_->error();
+        renderer_->setSky(sky_->sun, sky_->moon);
+    }
+
+    static glm::dvec3 sunDirection() { return glm::normalize(glm::dvec3(0.5, 0.35, -0.8)); }
+    static glm::dvec3 moonDirection() { return glm::normalize(glm::dvec3(-0.6, 0.2, 0.5)); }
+
+    renderer::AtmosphereFrame baseFrame() const {
+        renderer::AtmosphereFrame air;
+        air.sun = {sunDirection(), glm::dvec3(20.0), glm::dvec3(12.0, 10.0, 8.0)};
+        air.moon = {moonDirection(), glm::dvec3(0.05, 0.055, 0.06), glm::dvec3(0.03)};
+        air.mieAnisotropy = 0.8;
+        return air;
+    }
+
+    /// Renders with and without fog and compares every pixel with the CPU.
+    FogComparison run(const char* name, const Camera& camera, const renderer::AtmosphereFrame& air,
+                      double wallDepth = 400.0) {
+        renderer_->setScene(testScene(camera, wallDepth));
+        FrameDesc frame;
+        frame.width = kWidth;
+        frame.height = kHeight;
+        frame.precision = renderer::ColourPrecision::Float;
+        frame.passes.sky = false;
+        frame.passes.globalFog = frame.passes.volumes = frame.passes.emitters = false;
+        renderer_->render(camera, air, frame);
+        const renderer::Image unfogged = renderer_->readColour();
+        frame.passes.globalFog = frame.passes.volumes = frame.passes.emitters = true;
+        renderer_->render(camera, air, frame);
+        const renderer::Image fogged = renderer_->readColour();
+        const renderer::Image depth = renderer_->readLinearDepth();
+        const FogScene scene(renderer::fogSceneDesc(air, sky_->sun, sky_->moon));
+        const FogComparison c = compareWithCpu(fogged, unfogged, depth, camera, scene);
+        std::printf(
+            "[ measured ] %-34s max error %.3g (pixel %d,%d), mean T %.3f, mean S %.3g, inside hulls %d\n",
+            name, c.maxError, c.worstX, c.worstY, c.meanTransmittance, c.meanInScatter,
+            renderer_->stats().volumesDrawnInside);
+        EXPECT_TRUE(log.errors.empty()) << log.errors.front();
+        return c;
+    }
+
+    const SkyPair* sky_ = nullptr;
+    std::unique_ptr<Renderer> renderer_;
+};
+
+TEST_F(FogVsCpu, GlobalHeightFog) {
+    renderer::AtmosphereFrame air = baseFrame();
+    air.fog = {0.004, 0.02, 3.0};
+    const FogComparison c = run("global fog", makeCamera({0, 25, 0}, {0, 18, -100}), air);
+    EXPECT_LT(c.maxError, kTolerance);
+    EXPECT_LT(c.meanTransmittance, 0.9);  // the fog is not trivial
+}
+
+TEST_F(FogVsCpu, GlobalFogHorizontalRaysAndUniformFog) {
+    // A level camera: the centre rows have d.y -> 0 (c d.y -> 0 must not jump).
+    renderer::AtmosphereFrame air = baseFrame();
+    air.fog = {0.003, 0.05, 0.0};
+    FogComparison c = run("global fog, level camera", makeCamera({0, 10, 0}, {0, 10, -100}), air);
+    EXPECT_LT(c.maxError, kTolerance);
+    air.fog = {0.002, 0.0, 0.0};  // c = 0: uniform
+    c = run("global fog, c = 0", makeCamera({0, 10, 0}, {0, 10, -100}), air);
+    EXPECT_LT(c.maxError, kTolerance);
+    air.fog = {0.01, 0.2, -40.0};  // thin air far above the base: large c y
+    c = run("global fog, far above the base", makeCamera({0, 30, 0}, {0, 5, -100}), air);
+    EXPECT_LT(c.maxError, kTolerance);
+}
+
+FogVolume testVolume(FogVolumeShape shape) {
+    FogVolume v;
+    v.shape = shape;
+    v.position = {-5.0, 8.0, -60.0};
+    v.rotation = glm::angleAxis(0.7, glm::normalize(glm::dvec3(0.3, 1.0, -0.4)));
+    v.halfExtents = {25.0, 9.0, 14.0};
+    v.density = 0.03;
+    v.falloff = 0.08;
+    v.gradientDirection = glm::normalize(glm::dvec3(0.4, 0.8, -0.45));
+    v.gradientOffset = 2.5;
+    return v;
+}
+
+TEST_F(FogVsCpu, BoxVolumeCameraOutside) {
+    renderer::AtmosphereFrame air = baseFrame();
+    air.fog = {0.001, 0.02, 0.0};
+    air.volumes.push_back(testVolume(FogVolumeShape::Box));
+    const FogComparison c = run("box, outside", makeCamera({0, 15, 10}, {0, 8, -60}), air);
+    EXPECT_LT(c.maxError, kTolerance);
+    EXPECT_EQ(renderer_->stats().volumesDrawn, 1);
+    EXPECT_EQ(renderer_->stats().volumesDrawnInside, 0);
+}
+
+TEST_F(FogVsCpu, EllipsoidVolumeCameraOutside) {
+    renderer::AtmosphereFrame air = baseFrame();
+    air.volumes.push_back(testVolume(FogVolumeShape::Ellipsoid));
+    const FogComparison c = run("ellipsoid, outside", makeCamera({0, 15, 10}, {0, 8, -60}), air);
+    EXPECT_LT(c.maxError, kTolerance);
+    EXPECT_EQ(renderer_->stats().volumesDrawnInside, 0);
+}
+
+TEST_F(FogVsCpu, VolumesCameraInside) {
+    for (FogVolumeShape shape : {FogVolumeShape::Box, FogVolumeShape::Ellipsoid}) {
+        renderer::AtmosphereFrame air = baseFrame();
+        FogVolume v = testVolume(shape);
+        air.volumes.push_back(v);
+        // Eye at the centre, looking out through the side, the box in view.
+        const FogComparison c = run(shape == FogVolumeShape::Box ? "box, inside" : "ellipsoid, inside",
+                                    makeCamera(v.position, v.position + glm::dvec3(30.0, -4.0, -40.0)), air);
+        EXPECT_LT(c.maxError, kTolerance);
+        EXPECT_EQ(renderer_->stats().volumesDrawnInside, 1);
+    }
+}
+
+TEST_F(FogVsCpu, VolumesStraddlingTheNearPlane) {
+    for (FogVolumeShape shape : {FogVolumeShape::Box, FogVolumeShape::Ellipsoid}) {
+        renderer::AtmosphereFrame air = baseFrame();
+        FogVolume v;
+        v.shape = shape;
+        v.position = {0.0, 10.0, -30.0};
+        v.halfExtents = {20.0, 10.0, 20.0};
+        v.density = 0.05;
+        v.gradientDirection = {1.0, 0.0, 0.0};
+        v.falloff = 0.03;
+        air.volumes.push_back(v);
+        // The eye 5 cm outside the +Z face (box) / surface (ellipsoid), near
+        // plane 10 cm: half of the view starts inside the volume.
+        const glm::dvec3 eye(0.0, 10.0, -10.0 + 0.05);
+        const FogComparison c = run(
+            shape == FogVolumeShape::Box ? "box, straddling near plane" : "ellipsoid, straddling near plane",
+            makeCamera(eye, eye + glm::dvec3(-0.3, -0.2, -1.0)), air);
+        EXPECT_LT(c.maxError, kTolerance);
+        EXPECT_EQ(renderer_->stats().volumesDrawnInside, 1);
+    }
+}
+
+TEST_F(FogVsCpu, VolumeColourModesAndTwoDisjointVolumes) {
+    renderer::AtmosphereFrame air = baseFrame();
+    air.fog = {0.002, 0.03, 0.0};
+    FogVolume a = testVolume(FogVolumeShape::Box);
+    a.colourMode = FogColourMode::Tinted;
+    a.colour = {1.0, 0.6, 0.3};
+    FogVolume b = testVolume(FogVolumeShape::Ellipsoid);
+    b.position = {30.0, 10.0, -160.0};
+    b.colourMode = FogColourMode::Custom;
+    b.colour = {0.2, 0.5, 1.5};
+    b.density = 0.02;
+    air.volumes = {b, a};  // the far one first in the list, the near one in front
+    const FogComparison c = run("tinted box + custom ellipsoid", makeCamera({0, 15, 10}, {10, 8, -100}), air);
+    EXPECT_LT(c.maxError, kTolerance);
+    EXPECT_EQ(renderer_->stats().volumesDrawn, 2);
+}
+
+TEST_F(FogVsCpu, Emitters) {
+    renderer::AtmosphereFrame air = baseFrame();
+    air.fog = {0.002, 0.03, 0.0};
+    Emitter lamp;
+    lamp.position = {-6.0, 4.0, -40.0};
+    lamp.intensity = 0.4;
+    lamp.attenuation = 0.05;
+    lamp.colour = {1.0, 0.7, 0.4};
+    Emitter far;
+    far.position = {40.0, 30.0, -300.0};
+    far.intensity = 0.05;
+    far.attenuation = 0.0004;
+    far.colour = {0.3, 0.5, 1.0};
+    Emitter hidden;  // behind the wall: contributes only along rays that pass near it
+    hidden.position = {0.0, 10.0, -600.0};
+    hidden.intensity = 2.0;
+    hidden.attenuation = 0.01;
+    air.emitters = {lamp, far, hidden};
+    const FogComparison c = run("emitters + global fog", makeCamera({0, 12, 0}, {0, 8, -100}), air);
+    EXPECT_LT(c.maxError, kTolerance);
+    EXPECT_GT(c.meanInScatter, 0.0);
+    EXPECT_EQ(renderer_->stats().emitters, 3);
+}
+
+TEST_F(FogVsCpu, GlobalFogTintedAndCustomColour) {
+    for (FogColourMode mode : {FogColourMode::Tinted, FogColourMode::Custom}) {
+        renderer::AtmosphereFrame air = baseFrame();
+        air.fog = {0.004, 0.02, 3.0};
+        air.fogColourMode = mode;
+        air.fogColour = {0.9, 0.5, 0.25};
+        const FogComparison c =
+            run(mode == FogColourMode::Custom ? "global fog, custom colour" : "global fog, tinted colour",
+                makeCamera({0, 25, 0}, {0, 18, -100}), air);
+        EXPECT_LT(c.maxError, kTolerance);
+    }
+}
+
+TEST_F(FogVsCpu, TheComparisonSeesAMissingPass) {
+    // Negative control: the same frame without the volume pass is far off.
+    renderer::AtmosphereFrame air = baseFrame();
+    air.volumes.push_back(testVolume(FogVolumeShape::Box));
+    const Camera camera = makeCamera({0, 15, 10}, {0, 8, -60});
+    renderer_->setScene(testScene(camera, 400.0));
+    FrameDesc frame;
+    frame.width = kWidth;
+    frame.height = kHeight;
+    frame.precision = renderer::ColourPrecision::Float;
+    frame.passes.sky = frame.passes.globalFog = frame.passes.volumes = frame.passes.emitters = false;
+    renderer_->render(camera, air, frame);
+    const renderer::Image unfogged = renderer_->readColour();
+    frame.passes.globalFog = frame.passes.emitters = true;
+    renderer_->render(camera, air, frame);
+    const FogScene scene(renderer::fogSceneDesc(air, sky_->sun, sky_->moon));
+    const FogComparison c =
+        compareWithCpu(renderer_->readColour(), unfogged, renderer_->readLinearDepth(), camera, scene);
+    EXPECT_GT(c.maxError, 0.05);
+}
+
+TEST_F(FogVsCpu, EverythingTogether) {
+    renderer::AtmosphereFrame air = baseFrame();
+    air.fog = {0.003, 0.04, 2.0};
+    air.volumes.push_back(testVolume(FogVolumeShape::Box));
+    FogVolume e = testVolume(FogVolumeShape::Ellipsoid);
+    e.position = {40.0, 5.0, -200.0};
+    e.colourMode = FogColourMode::Tinted;
+    e.colour = {0.5, 0.8, 1.0};
+    air.volumes.push_back(e);
+    Emitter lamp;
+    lamp.position = {-6.0, 4.0, -40.0};
+    lamp.intensity = 0.4;
+    lamp.attenuation = 0.05;
+    air.emitters.push_back(lamp);
+    const FogComparison c = run("global + 2 volumes + emitter", makeCamera({0, 15, 10}, {10, 8, -100}), air);
+    EXPECT_LT(c.maxError, kTolerance);
+}
+
+}  // namespace
+}  // namespace aerial::test

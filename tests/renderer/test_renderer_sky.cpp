@@ -1,0 +1,147 @@
+// test_renderer_sky.cpp — the sky pass against the CPU (sampleSkyTable /
+// skyRadiance, aerial/sky.hpp) per pixel: the table mapping inverted in GLSL,
+// bilinear RGBA32F texture filtering with the azimuth wrapping, both phase
+// functions per pixel for the sun and the moon; and the sun disc.
+#include "gl_fixture.hpp"
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <cstdio>
+
+namespace aerial::test {
+namespace {
+
+using renderer::Camera;
+using renderer::FrameDesc;
+using renderer::Renderer;
+using Image = renderer::Image;
+
+constexpr int kWidth = 160;
+constexpr int kHeight = 90;
+
+struct SkyCase {
+    const char* name;
+    glm::dvec3 eye;
+    glm::dvec3 target;
+    double fov;
+};
+
+class SkyVsCpu : public GlTest {
+protected:
+    static glm::dvec3 sunDirection() { return glm::normalize(glm::dvec3(0.3, 0.12, -0.9)); }
+    static glm::dvec3 moonDirection() { return glm::normalize(glm::dvec3(-0.7, 0.4, 0.3)); }
+
+    renderer::AtmosphereFrame frame() const {
+        renderer::AtmosphereFrame air;
+        air.sun = {sunDirection(), glm::dvec3(20.0, 19.0, 18.0), glm::dvec3(10.0, 8.0, 6.0)};
+        air.moon = {moonDirection(), glm::dvec3(0.5, 0.55, 0.6), glm::dvec3(0.3)};
+        air.mieAnisotropy = 0.76;
+        air.sunDiscRadius = 0.0;
+        air.moonDiscRadius = 0.0;
+        return air;
+    }
+
+    Image renderSky(Renderer& r, const Camera& camera, const renderer::AtmosphereFrame& air) {
+        FrameDesc f;
+        f.width = kWidth;
+        f.height = kHeight;
+        f.precision = renderer::ColourPrecision::Float;
+        f.passes.scene = f.passes.globalFog = f.passes.volumes = f.passes.emitters = false;
+        r.render(camera, air, f);
+        return r.readColour();
+    }
+};
+
+Camera skyCamera(const glm::dvec3& eye, const glm::dvec3& target, double fov) {
+    Camera c;
+    c.eye = eye;
+    c.target = target;
+    c.verticalFov = fov;
+    c.aspect = double(kWidth) / kHeight;
+    c.farDistance = 1000.0;
+    return c;
+}
+
+TEST_F(SkyVsCpu, EveryPixelMatchesSkyRadiance) {
+    const SkyPair sky = solveSky(AtmosphereParams{}, sunDirection(), moonDirection());
+    Renderer r(rendererDesc());
+    ASSERT_TRUE(r.valid()) << r.error();
+    r.setSky(sky.sun, sky.moon);
+    const renderer::AtmosphereFrame air = frame();
+    const SkyCase cases[] = {
+        {"towards the sun (halo)", {0, 2, 0}, {0, 2, 0}, 1.2},
+        {"away from the sun", {0, 2, 0}, {0, 2, 0}, 1.2},
+        {"zenith", {0, 2, 0}, {0, 2, 0}, 1.4},
+        {"horizon, wide", {0, 2, 0}, {0, 2, 0}, 2.2},
+        {"north (azimuth wrap)", {0, 2, 0}, {0, 2, 0}, 1.0},
+    };
+    const glm::dvec3 targets[] = {sunDirection() * 10.0 + glm::dvec3(0, 2, 0),
+                                  -sunDirection() * 10.0 + glm::dvec3(0, 6, 0), glm::dvec3(0.001, 12.0, 0.0),
+                                  glm::dvec3(-10.0, 2.5, 3.0), glm::dvec3(0.0, 3.0, -10.0)};
+    double worstAll = 0.0;
+    for (int k = 0; k < 5; ++k) {
+        Camera camera = skyCamera(cases[k].eye, targets[k], cases[k].fov);
+        if (k == 2) camera.up = {0.0, 0.0, -1.0};
+        const Image image = renderSky(r, camera, air);
+        const renderer::CameraFrame f = renderer::cameraFrame(camera);
+        double worst = 0.0;
+        int wx = 0, wy = 0;
+        for (int y = 0; y < kHeight; ++y) {
+            for (int x = 0; x < kWidth; ++x) {
+                const glm::dvec3 v = glm::normalize(renderer::farRayAtPixel(f, x, y, kWidth, kHeight));
+                const glm::dvec3 cpu = skyRadiance(sky.sun, air.mieAnisotropy, v, air.sun.illuminanceSpace) +
+                                       skyRadiance(sky.moon, air.mieAnisotropy, v, air.moon.illuminanceSpace);
+                for (int c = 0; c < 3; ++c) {
+                    const double gpu = image.at(x, y, c);
+                    const double error = std::fabs(gpu - cpu[c]) / std::max(std::fabs(cpu[c]), 1e-6);
+                    if (!(error <= worst)) {
+                        worst = std::isfinite(error) ? error : 1e30;
+                        wx = x;
+                        wy = y;
+                    }
+                }
+            }
+        }
+        std::printf("[ measured ] sky %-24s max relative error %.3g (pixel %d,%d)\n", cases[k].name, worst,
+                    wx, wy);
+        EXPECT_LT(worst, 1e-3) << cases[k].name;
+        worstAll = std::max(worstAll, worst);
+    }
+    EXPECT_TRUE(log.errors.empty());
+}
+
+TEST_F(SkyVsCpu, SunDiscHasTheTransmittedIlluminanceOverItsSolidAngle) {
+    const SkyPair sky = solveSky(AtmosphereParams{}, sunDirection(), moonDirection());
+    Renderer r(rendererDesc());
+    ASSERT_TRUE(r.valid());
+    r.setSky(sky.sun, sky.moon);
+    renderer::AtmosphereFrame air = frame();
+    air.sunDiscRadius = 0.004653;
+    const double fov = 0.05;  // ~5.6e-4 rad per pixel: the disc is ~17 px across
+    const Camera camera = skyCamera({0, 2, 0}, glm::dvec3(0, 2, 0) + sunDirection(), fov);
+    const Image withDisc = renderSky(r, camera, air);
+    air.sunDiscRadius = 0.0;
+    const Image without = renderSky(r, camera, air);
+    const double discRadiance = air.sun.illuminance.x / (2.0 * kPi * (1.0 - std::cos(0.004653)));
+    int discPixels = 0;
+    double worst = 0.0;
+    for (int y = 0; y < kHeight; ++y) {
+        for (int x = 0; x < kWidth; ++x) {
+            const double added = double(withDisc.at(x, y, 0)) - without.at(x, y, 0);
+            if (added > 0.0) {
+                ++discPixels;
+                worst = std::max(worst, std::fabs(added - discRadiance) / discRadiance);
+            }
+        }
+    }
+    const double pixelAngle = fov / kHeight;
+    const double expectedPixels = kPi * std::pow(0.004653 / pixelAngle, 2.0);
+    std::printf("[ measured ] sun disc: %d pixels (expected %.0f), radiance error %.3g\n", discPixels,
+                expectedPixels, worst);
+    EXPECT_NEAR(discPixels, expectedPixels, 0.1 * expectedPixels);
+    EXPECT_LT(worst, 1e-3);
+}
+
+}  // namespace
+}  // namespace aerial::test
