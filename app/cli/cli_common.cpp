@@ -3,11 +3,16 @@
 
 #include <aerial/atmosphere.hpp>
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
+#include <system_error>
 #include <vector>
 
 namespace aerial::cli {
@@ -170,6 +175,52 @@ void parseTableSize(const std::string& text, const std::string& option, int& azi
     if (w < 4 || w > 4096 || h < 2 || h > 2048) usageError(why);
     azimuthCount = w;
     elevationCount = h;
+}
+
+void parseImageSize(const std::string& text, const std::string& option, int maxSide, int& width,
+                    int& height) {
+    const std::string t = trim(text);
+    const std::size_t x = t.find_first_of("xX");
+    const std::string why = option + ": " + quoted(text) + " is not an image size WxH (each side 1.." +
+                            std::to_string(maxSide) + " pixels)";
+    if (x == std::string::npos) usageError(why);
+    int w = 0, h = 0;
+    if (!parseDigits(trim(t.substr(0, x)), 5, w) || !parseDigits(trim(t.substr(x + 1)), 5, h))
+        usageError(why);
+    if (w < 1 || w > maxSide || h < 1 || h > maxSide) usageError(why);
+    width = w;
+    height = h;
+}
+
+// ---------------------------------------------------------------------------
+// Files
+
+std::string errnoText(int error) { return std::generic_category().message(error); }
+
+bool syncPath(const std::filesystem::path& path, bool directory) {
+    const int fd = ::open(path.c_str(), directory ? (O_RDONLY | O_DIRECTORY) : O_RDONLY);
+    if (fd < 0) return false;
+    const bool ok = ::fsync(fd) == 0;
+    ::close(fd);
+    return ok;
+}
+
+void writeAtomically(const std::filesystem::path& path,
+                     const std::function<void(const std::filesystem::path& temp)>& write) {
+    namespace fs = std::filesystem;
+    const fs::path temp =
+        path.parent_path() / ("." + path.filename().string() + ".tmp" + std::to_string(::getpid()));
+    try {
+        write(temp);
+        if (!syncPath(temp, false)) dataError("cannot flush " + temp.string() + ": " + errnoText(errno));
+        std::error_code ec;
+        fs::rename(temp, path, ec);
+        if (ec) dataError("cannot rename " + temp.string() + " to " + path.string() + ": " + ec.message());
+    } catch (...) {
+        std::error_code ignored;
+        fs::remove(temp, ignored);
+        throw;
+    }
 }
 
 // ---------------------------------------------------------------------------

@@ -14,6 +14,7 @@
 #include <glm/vec3.hpp>
 #include <nlohmann/json.hpp>
 
+#include <filesystem>
 #include <functional>
 #include <memory>
 #include <stdexcept>
@@ -60,6 +61,8 @@ Command addSkyCommand(CLI::App& parent);
 Command addFogCommand(CLI::App& parent);
 Command addBakeCommand(CLI::App& parent);
 Command addDayCommand(CLI::App& parent);
+/// Only in a build with the renderer (AERIAL_HAVE_RENDERER).
+Command addRenderCommand(CLI::App& parent);
 
 /// The --help footer: the examples, then the exit codes.
 std::string helpFooter(const std::string& examples);
@@ -86,6 +89,8 @@ glm::dvec3 parseDirection(const std::string& text, const std::string& option);
 /// "WxH": table columns (azimuth, 4..4096) by rows (elevation, 2..2048).
 void parseTableSize(const std::string& text, const std::string& option, int& azimuthCount,
                     int& elevationCount);
+/// "WxH": an image size in pixels, each side 1..maxSide.
+void parseImageSize(const std::string& text, const std::string& option, int maxSide, int& width, int& height);
 /// A finite number, whole text.
 bool parseNumber(const std::string& text, double& out);
 
@@ -101,6 +106,21 @@ Preset loadPresetOrFail(const std::string& path, const std::string& command);
 /// (warnings "file:line:col: warning: /pointer: reason"); the position is
 /// left out when unknown, the pointer when it names the whole document.
 std::string formatIssue(const PresetIssue& issue);
+
+// ---------------------------------------------------------------------------
+// Files
+
+/// The text of an errno value ("No such file or directory").
+std::string errnoText(int error);
+
+/// fsync a file (or a directory) by path; false on failure.
+bool syncPath(const std::filesystem::path& path, bool directory);
+
+/// Writes `path` through a hidden temporary beside it (".NAME.tmpPID"):
+/// write(temp), fsync, rename over `path`; the temporary is removed when
+/// anything throws, so `path` is either its old self or complete.
+void writeAtomically(const std::filesystem::path& path,
+                     const std::function<void(const std::filesystem::path& temp)>& write);
 
 // ---------------------------------------------------------------------------
 // Text and JSON

@@ -40,7 +40,6 @@
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStringAttribute.h>
 #include <OpenEXR/ImfVecAttribute.h>
-#include <fcntl.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -92,35 +91,6 @@ Imf::Compression exrCompression(const std::string& name) {
     if (name == "zip") return Imf::ZIP_COMPRESSION;
     if (name == "piz") return Imf::PIZ_COMPRESSION;
     usageError("--compression: \"" + name + "\" is not one of none, zip, piz");
-}
-
-std::string errnoText(int error) { return std::generic_category().message(error); }
-
-/// fsync a file (or directory) by path; false on failure.
-bool syncPath(const fs::path& path, bool directory) {
-    const int fd = ::open(path.c_str(), directory ? (O_RDONLY | O_DIRECTORY) : O_RDONLY);
-    if (fd < 0) return false;
-    const bool ok = ::fsync(fd) == 0;
-    ::close(fd);
-    return ok;
-}
-
-/// Writes `path` through a temporary beside it: write(temp), fsync, rename.
-template <class Write>
-void writeAtomically(const fs::path& path, Write&& write) {
-    const fs::path temp =
-        path.parent_path() / ("." + path.filename().string() + ".tmp" + std::to_string(::getpid()));
-    try {
-        write(temp);
-        if (!syncPath(temp, false)) dataError("cannot flush " + temp.string() + ": " + errnoText(errno));
-        std::error_code ec;
-        fs::rename(temp, path, ec);
-        if (ec) dataError("cannot rename " + temp.string() + " to " + path.string() + ": " + ec.message());
-    } catch (...) {
-        std::error_code ignored;
-        fs::remove(temp, ignored);
-        throw;
-    }
 }
 
 Imath::half toHalf(float value) {

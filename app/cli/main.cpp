@@ -7,6 +7,8 @@
 //   aerial fog PRESET --from P --to P [--time T]    command_fog.cpp
 //   aerial bake PRESET --out DIR [--step 0.5h]      command_bake.cpp
 //   aerial day [PRESET] [--step 1] [--json]         command_day.cpp
+//   aerial render PRESET --out F.exr|png [--time T] command_render.cpp
+//                                                   (builds with the renderer only)
 //
 // Exit codes: 0 success, 1 bad input or data, 2 bad command line; every
 // error is one line on stderr ("aerial <command>: <reason>").
@@ -40,7 +42,11 @@ int main(int argc, char** argv) {
     using namespace aerial::cli;
     CLI::App app{
         "aerial — the Aerial sky and fog runtime from the shell: validate and evaluate presets, "
-        "sample the sky, query fog, bake sky tables for games.",
+        "sample the sky, query fog, bake sky tables for games"
+#ifdef AERIAL_HAVE_RENDERER
+        ", render a frame headless"
+#endif
+        ".",
         "aerial"};
     app.footer(
         helpFooter("  aerial validate presets/*.json\n"
@@ -48,19 +54,28 @@ int main(int argc, char** argv) {
                    "  aerial sky presets/clear_summer_day.json --time 12:00 --dir 0,1,0\n"
                    "  aerial fog presets/foggy_valley_morning.json --time 7 --from 0,2,0 --to 0,2,-500\n"
                    "  aerial bake presets/hazy_sunset.json --out bake/ --step 0.5h\n"
-                   "  aerial day"));
+                   "  aerial day"
+#ifdef AERIAL_HAVE_RENDERER
+                   "\n  aerial render presets/clear_summer_day.json --time 12:00 --out noon.png"
+#endif
+                   ));
     app.set_version_flag("--version", "aerial " AERIAL_VERSION);
     app.require_subcommand(1);
 
-    const std::vector<Command> commands = {addValidateCommand(app), addEvalCommand(app), addSkyCommand(app),
-                                           addFogCommand(app),      addBakeCommand(app), addDayCommand(app)};
+    std::vector<Command> commands = {addValidateCommand(app), addEvalCommand(app), addSkyCommand(app),
+                                     addFogCommand(app),      addBakeCommand(app), addDayCommand(app)};
+#ifdef AERIAL_HAVE_RENDERER
+    commands.push_back(addRenderCommand(app));
+#endif
     // A first word that is neither an option nor a command: say so plainly.
     if (argc > 1 && argv[1][0] != '-') {
         bool known = false;
         for (const Command& c : commands) known = known || c.app->check_name(argv[1]);
         if (!known) {
-            std::cerr << "aerial: unknown command \"" << argv[1]
-                      << "\" (commands: validate, eval, sky, fog, bake, day; see aerial --help)\n";
+            std::string names;
+            for (const Command& c : commands) names += (names.empty() ? "" : ", ") + c.app->get_name();
+            std::cerr << "aerial: unknown command \"" << argv[1] << "\" (commands: " << names
+                      << "; see aerial --help)\n";
             return kExitUsageError;
         }
     }

@@ -21,6 +21,7 @@ import struct
 import subprocess
 import sys
 import unittest
+import zlib
 
 AERIAL = ""
 ROOT = ""
@@ -137,6 +138,51 @@ def read_chlist(value):
     return channels
 
 
+def read_png(path):
+    """(width, height, colour type, bit depth, rows of bytes) of an 8-bit RGB/RGBA PNG, unfiltered by hand."""
+    with open(path, "rb") as f:
+        data = f.read()
+    if data[:8] != bytes([0x89, 0x50, 0x4E, 0x47, 0x0D, 0x0A, 0x1A, 0x0A]):
+        raise ValueError(path + ": not a PNG file (magic %s)" % data[:8].hex())
+    pos, ihdr, idat = 8, None, b""
+    while pos < len(data):
+        (length,) = struct.unpack(">I", data[pos:pos + 4])
+        kind, body = data[pos + 4:pos + 8], data[pos + 8:pos + 8 + length]
+        if kind == b"IHDR":
+            ihdr = body
+        elif kind == b"IDAT":
+            idat += body
+        pos += 12 + length
+    width, height, depth, colour = struct.unpack(">IIBB", ihdr[:10])
+    if depth != 8 or colour not in (2, 6):
+        return width, height, colour, depth, None
+    bpp = 3 if colour == 2 else 4
+    raw, stride, rows, prev = zlib.decompress(idat), width * bpp, [], bytearray(width * bpp)
+    for y in range(height):
+        kind, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
+        for i in range(stride):
+            a = line[i - bpp] if i >= bpp else 0
+            b, c = prev[i], prev[i - bpp] if i >= bpp else 0
+            if kind == 1:
+                line[i] = (line[i] + a) & 255
+            elif kind == 2:
+                line[i] = (line[i] + b) & 255
+            elif kind == 3:
+                line[i] = (line[i] + (a + b) // 2) & 255
+            elif kind == 4:
+                p = a + b - c
+                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+        rows.append(bytes(line))
+        prev = line
+    return width, height, colour, depth, rows
+
+
+def has_render_command():
+    code, out, _ = run("--help")
+    return code == 0 and "render" in out
+
+
 def leaf_paths(obj, prefix=""):
     if isinstance(obj, dict):
         out = set()
@@ -151,7 +197,10 @@ def leaf_paths(obj, prefix=""):
 
 class Help(unittest.TestCase):
     def test_every_command_has_help_with_an_example_and_exit_codes(self):
-        for command in ([], ["validate"], ["eval"], ["sky"], ["fog"], ["bake"], ["day"]):
+        commands = [[], ["validate"], ["eval"], ["sky"], ["fog"], ["bake"], ["day"]]
+        if has_render_command():
+            commands.append(["render"])
+        for command in commands:
             with self.subTest(command=command):
                 code, out, err = run(*command, "--help")
                 self.assertEqual(code, 0, err)
@@ -507,6 +556,87 @@ class CommandLineErrors(unittest.TestCase):
                     self.assertIn(mention, err)
                     self.assertEqual(out, "")
         self.assertFalse(os.path.exists(os.path.join(out_dir, "manifest.json")))
+
+
+class Render(unittest.TestCase):
+    """`aerial render` (only in a build with the renderer): one headless frame, EXR or PNG."""
+
+    def setUp(self):
+        if not has_render_command():
+            self.skipTest("aerial was built without the renderer (AERIAL_BUILD_RENDERER=OFF)")
+        self.dir = os.path.join(WORK, "render")
+        os.makedirs(self.dir, exist_ok=True)
+
+    def assertNoTemporaries(self):
+        self.assertEqual([f for f in os.listdir(self.dir) if f.startswith(".")], [], "a temporary was left")
+
+    def test_exr_is_half_float_with_the_requested_data_window(self):
+        out = os.path.join(self.dir, "morning.exr")
+        r = run_json(self, "render", preset("foggy_valley_morning"), "--time", "07:00", "--size", "64x36",
+                     "--out", out)
+        self.assertEqual((r["file"], r["format"], r["width"], r["height"]), (out, "exr", 64, 36))
+        self.assertEqual(r["time"], "07:00")
+        self.assertIsNone(r["exposure_ev"])
+        for key in ("solve_ms", "render_ms"):
+            self.assertGreaterEqual(r[key], 0.0)
+        with open(out, "rb") as f:
+            self.assertEqual(f.read(4), bytes([0x76, 0x2F, 0x31, 0x01]))
+        _, attributes = read_exr_header(out)
+        x0, y0, x1, y1 = struct.unpack("<4i", attributes["dataWindow"][1])
+        self.assertEqual((x0, y0, x1 - x0 + 1, y1 - y0 + 1), (0, 0, 64, 36))
+        channels = read_chlist(attributes["channels"][1])
+        self.assertEqual(set(channels), {"R", "G", "B", "A"})
+        self.assertEqual(set(channels.values()), {1}, "HALF pixels")
+        self.assertNoTemporaries()
+
+    def test_png_has_the_requested_size_and_a_sky(self):
+        out = os.path.join(self.dir, "morning.png")
+        for attempt in range(2):  # the second replaces the first
+            code, stdout, err = run("render", preset("foggy_valley_morning"), "--time", "07:00", "--size",
+                                    "64x36", "--out", out)
+            self.assertEqual(code, 0, err)
+            self.assertEqual(len(stdout.splitlines()), 1, stdout)
+            self.assertIn(out, stdout)
+            self.assertIn("64x36", stdout)
+            self.assertIn("ms", stdout)
+        width, height, colour, depth, rows = read_png(out)
+        self.assertEqual((width, height, colour, depth), (64, 36, 2, 8))
+        self.assertTrue(any(rows[0]), "the top row (sky) is black")
+        self.assertGreater(len(set(b"".join(rows))), 16, "a flat image")
+        self.assertNoTemporaries()
+
+    def test_built_in_default_preset(self):
+        out = os.path.join(self.dir, "default.png")
+        r = run_json(self, "render", "default", "--size", "16x9", "--exposure", "-1", "--out", out)
+        self.assertEqual(r["preset"]["file"], "<built-in default>")
+        self.assertEqual((r["time"], r["exposure_ev"]), ("12:00", -1.0))
+        self.assertEqual(read_png(out)[:2], (16, 9))
+
+    def test_bad_input(self):
+        good = preset("hazy_sunset")
+        missing = os.path.join(WORK, "no_such_preset.json")
+        png = os.path.join(self.dir, "never.png")
+        cases = [
+            (["render", good, "--out", os.path.join(self.dir, "never.tif")], 2, ".tif"),
+            (["render", good, "--out", png, "--size", "0x10"], 2, "--size"),
+            (["render", good, "--out", png, "--size", "8193x10"], 2, "--size"),
+            (["render", good, "--out", png, "--fov", "179"], 2, "--fov"),
+            (["render", good, "--out", png, "--eye", "1,2,3", "--target", "1,2,3"], 2, "--eye"),
+            (["render", good, "--out", png, "--eye", "nan,2,3"], 2, "--eye"),
+            (["render", good, "--out", os.path.join(self.dir, "never.exr"), "--exposure", "1"], 2, "--exposure"),
+            (["render", good], 2, "--out"),
+            (["render", missing, "--out", png], 1, missing),
+            (["render", good, "--out", os.path.join(WORK, "no_such_dir", "x.png")], 1, "no_such_dir"),
+        ]
+        for args, expected_code, mention in cases:
+            with self.subTest(args=args):
+                code, out, err = run(*args)
+                self.assertEqual(code, expected_code, err)
+                self.assertEqual(len(err.splitlines()), 1, err)
+                self.assertTrue(err.startswith("aerial render: "), err)
+                self.assertIn(mention, err)
+                self.assertEqual(out, "")
+        self.assertEqual(sorted(f for f in os.listdir(self.dir) if "never" in f), [])
 
 
 class Day(unittest.TestCase):

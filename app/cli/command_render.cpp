@@ -1,0 +1,310 @@
+// command_render.cpp — `aerial render PRESET --out FILE.exr|png [--time T]
+// [--eye x,y,z --target x,y,z --fov deg] [--size WxH] [--exposure EV]
+// [--float] [--json]`: one frame of the built-in scene (renderer/scene.hpp:
+// terrain with a valley, a few boxes) under the preset at one time of day,
+// rendered headless (EGL on Mesa's surfaceless platform, no window) by the
+// same renderer the editor uses.
+//
+// PRESET is a preset file, or the word `default` for the built-in default
+// preset (aerial::defaultPreset(); a file literally named "default" is
+// ./default).
+//
+// Output by extension (case-insensitive):
+//   .exr  scene-linear Rec.709 radiance, RGBA half float, ZIP compressed;
+//         values beyond the half range clamp to 65504. --exposure does not
+//         apply (a usage error): the file holds the unscaled radiance.
+//   .png  8-bit sRGB: radiance * 2^EV (--exposure, default 0 EV: a daylight
+//         sky lands near 1), clamped to [0, 1], plain sRGB curve, no tone
+//         mapping.
+// The frame renders into RGBA16F (every pass capped at 3e4), or RGBA32F with
+// --float. A frame with any non-finite value is an error and nothing is
+// written; the file is written to a hidden temporary beside it, fsync'ed and
+// renamed, so FILE is either untouched or complete.
+//
+// Camera: Y up, metres; the default looks north (-Z) up the valley from
+// 30 m above the terrain at z = 120 towards a point 10 m above it at
+// z = -200, so both the valley floor and the horizon are in view.
+//
+// Prints one line: the file, its size, the time and how long the sky solve
+// and the render took. --json:
+//   {"file", "format" ("exr"/"png"), "width", "height",
+//    "preset": {"file", "name"}, "time_h", "time",
+//    "camera": {"eye", "target", "fov_deg"}, "precision" ("half"/"float"),
+//    "exposure_ev" (null for EXR), "renderer" (GL_RENDERER and version),
+//    "setup_ms" (context, shaders, scene), "solve_ms" (sun and moon tables),
+//    "render_ms" (render and read-back), "write_ms"}
+#include "cli_common.hpp"
+
+#include <aerial/renderer/camera.hpp>
+#include <aerial/renderer/egl_context.hpp>
+#include <aerial/renderer/image.hpp>
+#include <aerial/renderer/renderer.hpp>
+#include <aerial/renderer/scene.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <system_error>
+#include <vector>
+
+namespace aerial::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kMaxImageSide = 8192;
+constexpr double kMaxExposureEv = 30.0;
+
+struct RenderOptions {
+    std::string preset;
+    std::string time;
+    std::string eye;
+    std::string target;
+    double fovDeg = 60.0;
+    std::string size = "320x180";
+    std::string out;
+    std::string exposure;  // "" = not given (0 EV for PNG)
+    bool floatTarget = false;
+    bool json = false;
+};
+
+enum class Format { Exr, Png };
+
+/// The format from the file name's extension; a usage error otherwise.
+Format formatOf(const std::string& out) {
+    std::string extension = fs::path(out).extension().string();
+    for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+    if (extension == ".exr") return Format::Exr;
+    if (extension == ".png") return Format::Png;
+    usageError("--out: \"" + out + "\" must end in .exr (scene-linear half float) or .png (8-bit sRGB)" +
+               (extension.empty() ? std::string() : "; \"" + extension + "\" is neither"));
+}
+
+/// The default camera: above the valley floor, looking north up the valley.
+void defaultView(glm::dvec3& eye, glm::dvec3& target) {
+    eye = {0.0, renderer::builtinTerrainHeight(0.0, 120.0) + 30.0, 120.0};
+    target = {0.0, renderer::builtinTerrainHeight(0.0, -200.0) + 10.0, -200.0};
+}
+
+/// The renderer's messages: warnings go to stderr at once, errors are kept
+/// (the first one fails the command).
+struct RenderLog {
+    std::vector<std::string> errors;
+
+    renderer::Logger logger() {
+        renderer::Logger l;
+        l.userData = this;
+        l.function = [](renderer::LogLevel level, const char* message, void* user) {
+            auto* self = static_cast<RenderLog*>(user);
+            if (level == renderer::LogLevel::Error)
+                self->errors.emplace_back(message);
+            else if (level == renderer::LogLevel::Warning)
+                std::fprintf(stderr, "aerial render: warning: %s\n", message);
+        };
+        return l;
+    }
+};
+
+std::string formatNumber(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", value);
+    return text;
+}
+
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// The number of non-finite values in the colour channels (alpha included).
+std::size_t nonFiniteCount(const renderer::Image& image) {
+    return std::size_t(
+        std::count_if(image.pixels.begin(), image.pixels.end(), [](float v) { return !std::isfinite(v); }));
+}
+
+/// writeExr / writePng name the temporary in their message; name the file.
+std::string writerReason(const std::string& error, const fs::path& temp) {
+    const std::string prefix = temp.string() + ": ";
+    return error.compare(0, prefix.size(), prefix) == 0 ? error.substr(prefix.size()) : error;
+}
+
+void writeImage(const renderer::Image& image, const fs::path& path, Format format, double exposureScale) {
+    writeAtomically(path, [&](const fs::path& temp) {
+        std::string error;
+        errno = 0;
+        const bool ok = format == Format::Exr
+                            ? renderer::writeExr(image, temp.string(), error)
+                            : renderer::writePng(image, temp.string(), exposureScale, error);
+        if (!ok) {
+            const int saved = errno;
+            std::string reason = writerReason(error, temp);
+            if (saved != 0) reason += " (" + errnoText(saved) + ")";
+            dataError("cannot write " + path.string() + ": " + reason);
+        }
+    });
+    syncPath(path.parent_path().empty() ? fs::path(".") : path.parent_path(), true);
+}
+
+int runRender(const RenderOptions& options) {
+    // The command line first (exit 2), then the data (exit 1).
+    const Format format = formatOf(options.out);
+    const double t = parseTimeOfDay(options.time, "--time");
+    int width = 0, height = 0;
+    parseImageSize(options.size, "--size", kMaxImageSide, width, height);
+    glm::dvec3 eye, target;
+    defaultView(eye, target);
+    if (!options.eye.empty()) eye = parseVec3(options.eye, "--eye");
+    if (!options.target.empty()) target = parseVec3(options.target, "--target");
+    if (glm::dvec3(target - eye) == glm::dvec3(0.0))
+        usageError("--eye and --target are the same point; the camera needs a direction");
+    if (!(options.fovDeg > 1.0 && options.fovDeg < 179.0))
+        usageError("--fov: " + formatNumber(options.fovDeg) + " is out of range (1 < fov < 179 degrees)");
+    double exposureEv = 0.0;
+    if (!options.exposure.empty()) {
+        if (format == Format::Exr)
+            usageError("--exposure applies to PNG only; an EXR holds the unscaled scene-linear radiance");
+        if (!parseNumber(options.exposure, exposureEv) || std::abs(exposureEv) > kMaxExposureEv)
+            usageError("--exposure: \"" + options.exposure + "\" is not a number of stops in [-30, 30]");
+    }
+
+    const bool builtin = options.preset == "default";
+    Preset preset = builtin ? defaultPreset() : loadPresetOrFail(options.preset, "render");
+    const std::string name = preset.name;
+    const CompiledPreset compiled(std::move(preset));
+
+    const fs::path out(options.out);
+    const fs::path dir = out.parent_path().empty() ? fs::path(".") : out.parent_path();
+    std::error_code ec;
+    if (!fs::is_directory(dir, ec))
+        dataError("--out: cannot write " + out.string() + ": the directory " + dir.string() +
+                  " does not exist");
+    if (fs::is_directory(out, ec)) dataError("--out: " + out.string() + " is a directory");
+
+    // GL: a headless context, then the renderer (destroyed first, while the
+    // context is still current).
+    const auto setupStart = std::chrono::steady_clock::now();
+    renderer::HeadlessContext context;
+    renderer::HeadlessContextDesc contextDesc;
+    contextDesc.debug = true;  // GL errors reach the log
+    if (!context.create(contextDesc))
+        dataError("cannot create a headless OpenGL 4.5 context: " + context.error());
+    RenderLog log;
+    renderer::RendererDesc rendererDesc;
+    rendererDesc.logger = log.logger();
+    renderer::Renderer renderer(rendererDesc);
+    if (!renderer.valid()) dataError("cannot create the renderer: " + renderer.error());
+    renderer.setScene(renderer::makeBuiltinScene());
+    const double setupMs = millisecondsSince(setupStart);
+
+    const auto solveStart = std::chrono::steady_clock::now();
+    const PresetState state = compiled.evaluate(t);
+    SkyTables tables;
+    tables.solve(state);
+    const double solveMs = millisecondsSince(solveStart);
+
+    const auto renderStart = std::chrono::steady_clock::now();
+    renderer.setSky(tables.sun(), tables.moon());
+    renderer::Camera camera;
+    camera.eye = eye;
+    camera.target = target;
+    camera.verticalFov = options.fovDeg / kDegreesPerRadian;
+    camera.aspect = double(width) / double(height);
+    renderer::FrameDesc frame;
+    frame.width = width;
+    frame.height = height;
+    frame.precision =
+        options.floatTarget ? renderer::ColourPrecision::Float : renderer::ColourPrecision::Half;
+    renderer.render(camera, renderer::atmosphereFrameFromState(state), frame);
+    const renderer::Image image = renderer.readColour();
+    const double renderMs = millisecondsSince(renderStart);
+
+    if (!log.errors.empty())
+        dataError("the renderer reported an error: " + log.errors.front() +
+                  (log.errors.size() > 1 ? " (and " + std::to_string(log.errors.size() - 1) + " more)" : ""));
+    if (image.width != width || image.height != height || image.channels < 3 ||
+        image.pixels.size() != std::size_t(width) * std::size_t(height) * std::size_t(image.channels))
+        dataError("the renderer returned a " + std::to_string(image.width) + "x" +
+                  std::to_string(image.height) + " frame, not " + std::to_string(width) + "x" +
+                  std::to_string(height) + "; nothing written");
+    if (const std::size_t bad = nonFiniteCount(image); bad > 0)
+        dataError("the rendered frame has " + std::to_string(bad) + " non-finite values (NaN or Inf); " +
+                  out.string() + " not written");
+
+    const auto writeStart = std::chrono::steady_clock::now();
+    writeImage(image, out, format, std::exp2(exposureEv));
+    const double writeMs = millisecondsSince(writeStart);
+
+    const char* formatName = format == Format::Exr ? "exr" : "png";
+    if (options.json) {
+        printJson(
+            {{"file", out.string()},
+             {"format", formatName},
+             {"width", width},
+             {"height", height},
+             {"preset", {{"file", builtin ? "<built-in default>" : options.preset}, {"name", name}}},
+             {"time_h", state.timeHours},
+             {"time", formatTime(state.timeHours)},
+             {"camera", {{"eye", toJson(eye)}, {"target", toJson(target)}, {"fov_deg", options.fovDeg}}},
+             {"precision", options.floatTarget ? "float" : "half"},
+             {"exposure_ev", format == Format::Png ? Json(exposureEv) : Json(nullptr)},
+             {"renderer", context.rendererName()},
+             {"setup_ms", setupMs},
+             {"solve_ms", solveMs},
+             {"render_ms", renderMs},
+             {"write_ms", writeMs}});
+        return kExitOk;
+    }
+    std::printf("wrote %s (%dx%d %s, %s at %s): sky solve %.1f ms, render %.1f ms\n", out.string().c_str(),
+                width, height, format == Format::Exr ? "EXR" : "PNG", name.c_str(),
+                formatTime(state.timeHours).c_str(), solveMs, renderMs);
+    return kExitOk;
+}
+
+}  // namespace
+
+Command addRenderCommand(CLI::App& parent) {
+    auto options = std::make_shared<RenderOptions>();
+    CLI::App* app = parent.add_subcommand(
+        "render",
+        "Render one frame of the built-in scene headless (no window): scene-linear EXR or sRGB PNG");
+    app->add_option("preset", options->preset,
+                    "Preset file (JSON), or the word `default` for the built-in default preset")
+        ->required()
+        ->type_name("PRESET");
+    app->add_option("--out,-o", options->out, "Output image: .exr (scene-linear half float) or .png (sRGB)")
+        ->required()
+        ->type_name("FILE");
+    addTimeOption(*app, options->time);
+    app->add_option("--eye", options->eye,
+                    "Camera position x,y,z [m] (default: 30 m above the valley floor at z = 120)")
+        ->type_name("X,Y,Z");
+    app->add_option("--target", options->target,
+                    "Point the camera looks at x,y,z [m] (default: up the valley, 10 m above it at z = -200)")
+        ->type_name("X,Y,Z");
+    app->add_option("--fov", options->fovDeg, "Vertical field of view [deg], between 1 and 179")
+        ->type_name("DEG")
+        ->check(finiteNumber())
+        ->capture_default_str();
+    app->add_option("--size", options->size, "Image size in pixels, each side 1..8192")
+        ->type_name("WxH")
+        ->capture_default_str();
+    app->add_option("--exposure", options->exposure,
+                    "PNG only: scale the radiance by 2^EV before the sRGB encoding (default 0)")
+        ->type_name("EV");
+    app->add_flag("--float", options->floatTarget,
+                  "Render into RGBA32F instead of RGBA16F (the EXR is half float either way)");
+    app->add_flag("--json", options->json, "Machine-readable output");
+    app->footer(
+        helpFooter("  aerial render presets/clear_summer_day.json --time 12:00 --out noon.png\n"
+                   "  aerial render default --time 18:30 --size 1280x720 --out dusk.exr --json\n"
+                   "  aerial render presets/foggy_valley_morning.json --time 7 --eye 0,20,150 "
+                   "--target=0,5,-100 --fov 45 --exposure 1 --out fog.png"));
+    return {app, [options] { return runRender(*options); }};
+}
+
+}  // namespace aerial::cli
