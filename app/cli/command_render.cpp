@@ -188,11 +188,21 @@ int runRender(const RenderOptions& options) {
     // GL: a headless context, then the renderer (destroyed first, while the
     // context is still current).
     const auto setupStart = std::chrono::steady_clock::now();
-    renderer::HeadlessContext context;
-    renderer::HeadlessContextDesc contextDesc;
-    contextDesc.debug = true;  // GL errors reach the log
-    if (!context.create(contextDesc))
-        dataError("cannot create a headless OpenGL 4.5 context: " + context.error());
+    // The context lives until the process exits: tearing it down
+    // (eglTerminate) only unloads Mesa's driver moments before exit, after
+    // which LeakSanitizer can no longer attribute Mesa's own allocations to
+    // Mesa (see the suppressions in main.cpp).
+    static renderer::HeadlessContext* processContext = nullptr;
+    if (processContext == nullptr) {
+        auto created = std::make_unique<renderer::HeadlessContext>();
+        renderer::HeadlessContextDesc contextDesc;
+        contextDesc.debug = true;  // GL errors reach the log
+        if (!created->create(contextDesc))
+            dataError("cannot create a headless OpenGL 4.5 context: " + created->error());
+        processContext = created.release();
+    }
+    renderer::HeadlessContext& context = *processContext;
+    if (!context.makeCurrent()) dataError("cannot make the OpenGL context current: " + context.error());
     RenderLog log;
     renderer::RendererDesc rendererDesc;
     rendererDesc.logger = log.logger();

@@ -26,6 +26,17 @@
 #define AERIAL_VERSION "unknown"
 #endif
 
+#ifdef AERIAL_HAVE_RENDERER
+#include <aerial/renderer/egl_context.hpp>
+
+// Leaks inside Mesa's drivers (llvmpipe's JIT, the DRI loader) are not ours:
+// LeakSanitizer reads these suppressions in a sanitizer build; otherwise the
+// function is never called.
+extern "C" __attribute__((used)) const char* __lsan_default_suppressions() {
+    return aerial::renderer::kMesaLeakSuppressions;
+}
+#endif
+
 namespace {
 
 /// One line: CLI11 messages may span several.

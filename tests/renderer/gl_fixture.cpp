@@ -11,8 +11,7 @@
 // LeakSanitizer reads these suppressions in an ASan build and ignores them
 // otherwise.
 extern "C" __attribute__((used)) const char* __lsan_default_suppressions() {
-    return "leak:libEGL_mesa\nleak:libgallium\nleak:libLLVM\nleak:swrast_dri\nleak:libglapi\nleak:libdrm\n"
-           "leak:llvmpipe\nleak:libEGL.so\nleak:libepoxy\n";
+    return aerial::renderer::kMesaLeakSuppressions;
 }
 
 namespace aerial::test {

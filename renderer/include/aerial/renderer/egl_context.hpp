@@ -21,6 +21,15 @@ struct HeadlessContextDesc {
     bool debug = true;
 };
 
+/// LeakSanitizer suppressions for allocations inside Mesa's own libraries
+/// (llvmpipe's JIT, the DRI loader): not Aerial's leaks. A sanitizer build of
+/// a program that renders headless returns this from its
+/// __lsan_default_suppressions(), and keeps its context alive until exit
+/// (once Mesa's driver is unloaded its allocations can no longer be named).
+inline constexpr const char* kMesaLeakSuppressions =
+    "leak:libEGL_mesa\nleak:libgallium\nleak:libLLVM\nleak:swrast_dri\nleak:libglapi\nleak:libdrm\n"
+    "leak:llvmpipe\nleak:libEGL.so\nleak:libepoxy\n";
+
 /// Owns an EGL display connection and a context with no surface; the
 /// context renders only into framebuffer objects.
 class HeadlessContext {
