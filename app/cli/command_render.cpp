@@ -1,6 +1,6 @@
 // command_render.cpp — `aerial render PRESET --out FILE.exr|png [--time T]
 // [--eye x,y,z --target x,y,z --fov deg] [--size WxH] [--exposure EV]
-// [--float] [--json]`: one frame of the built-in scene (renderer/scene.hpp:
+// [--display NAME] [--view NAME] [--float] [--json]`: one frame of the built-in scene (renderer/scene.hpp:
 // terrain with a valley, a few boxes) under the preset at one time of day,
 // rendered headless (EGL on Mesa's surfaceless platform, no window) by the
 // same renderer the editor uses.
@@ -13,13 +13,23 @@
 //   .exr  scene-linear Rec.709 radiance, RGBA half float, ZIP compressed;
 //         values beyond the half range clamp to 65504. --exposure does not
 //         apply (a usage error): the file holds the unscaled radiance.
-//   .png  8-bit sRGB: radiance * 2^EV (--exposure, default 0 EV: a daylight
-//         sky lands near 1), clamped to [0, 1], plain sRGB curve, no tone
-//         mapping.
+//   .png  8-bit display-referred, through the OpenColorIO display transform
+//         (renderer/display.hpp): radiance * 2^EV (--exposure, default 0 EV:
+//         a daylight sky lands near 1), then the view (--view, default the
+//         config's default: "Un-tone-mapped" in Aerial's built-in config,
+//         i.e. clamped to [0, 1] and sRGB-encoded; "ACES 1.0 - SDR Video"
+//         tone-maps) of the display (--display, default "sRGB - Display").
+//         The config is $OCIO when set (a broken one falls back to the
+//         built-in config with a warning), else the built-in one. An unknown
+//         display or view is a usage error that lists the known ones.
 // The frame renders into RGBA16F (every pass capped at 3e4), or RGBA32F with
 // --float. A frame with any non-finite value is an error and nothing is
 // written; the file is written to a hidden temporary beside it, fsync'ed and
 // renamed, so FILE is either untouched or complete.
+//
+// --scene FILE.gltf|.glb renders a glTF 2.0 scene (renderer/gltf.hpp)
+// instead of the built-in one; a bad or unsupported file is exit 1 with the
+// loader's one-line message, the loader's warnings go to stderr.
 //
 // Camera: Y up, metres; the default looks north (-Z) up the valley from
 // 30 m above the terrain at z = 120 towards a point 10 m above it at
@@ -30,13 +40,16 @@
 //   {"file", "format" ("exr"/"png"), "width", "height",
 //    "preset": {"file", "name"}, "time_h", "time",
 //    "camera": {"eye", "target", "fov_deg"}, "precision" ("half"/"float"),
-//    "exposure_ev" (null for EXR), "renderer" (GL_RENDERER and version),
+//    "exposure_ev", "display", "view", "ocio_config" (null for EXR),
+//    "renderer" (GL_RENDERER and version),
 //    "setup_ms" (context, shaders, scene), "solve_ms" (sun and moon tables),
 //    "render_ms" (render and read-back), "write_ms"}
 #include "cli_common.hpp"
 
 #include <aerial/renderer/camera.hpp>
+#include <aerial/renderer/display.hpp>
 #include <aerial/renderer/egl_context.hpp>
+#include <aerial/renderer/gltf.hpp>
 #include <aerial/renderer/image.hpp>
 #include <aerial/renderer/renderer.hpp>
 #include <aerial/renderer/scene.hpp>
@@ -69,7 +82,10 @@ struct RenderOptions {
     double fovDeg = 60.0;
     std::string size = "320x180";
     std::string out;
+    std::string scene;     // "" = the built-in scene
     std::string exposure;  // "" = not given (0 EV for PNG)
+    std::string display;   // "" = the OCIO config's default display
+    std::string view;      // "" = the display's default view
     bool floatTarget = false;
     bool json = false;
 };
@@ -133,13 +149,13 @@ std::string writerReason(const std::string& error, const fs::path& temp) {
     return error.compare(0, prefix.size(), prefix) == 0 ? error.substr(prefix.size()) : error;
 }
 
-void writeImage(const renderer::Image& image, const fs::path& path, Format format, double exposureScale) {
+void writeImage(const renderer::Image& image, const fs::path& path, Format format,
+                const renderer::DisplayTransform* display) {
     writeAtomically(path, [&](const fs::path& temp) {
         std::string error;
         errno = 0;
-        const bool ok = format == Format::Exr
-                            ? renderer::writeExr(image, temp.string(), error)
-                            : renderer::writePng(image, temp.string(), exposureScale, error);
+        const bool ok = format == Format::Exr ? renderer::writeExr(image, temp.string(), error)
+                                              : renderer::writePng(image, temp.string(), *display, error);
         if (!ok) {
             const int saved = errno;
             std::string reason = writerReason(error, temp);
@@ -172,6 +188,31 @@ int runRender(const RenderOptions& options) {
             usageError("--exposure: \"" + options.exposure + "\" is not a number of stops in [-30, 30]");
     }
 
+    if (format == Format::Exr && (!options.display.empty() || !options.view.empty()))
+        usageError(std::string(options.view.empty() ? "--display" : "--view") +
+                   " applies to PNG only; an EXR holds the scene-linear radiance");
+    RenderLog log;
+    std::unique_ptr<renderer::DisplayTransform> display;
+    if (format == Format::Png) {
+        renderer::DisplayDesc displayDesc;
+        displayDesc.display = options.display;
+        displayDesc.view = options.view;
+        displayDesc.exposureEv = exposureEv;
+        displayDesc.logger = log.logger();  // a broken $OCIO: a warning on stderr
+        display = std::make_unique<renderer::DisplayTransform>(displayDesc);
+        if (!display->valid()) {
+            auto contains = [](const std::vector<std::string>& names, const std::string& name) {
+                return std::find(names.begin(), names.end(), name) != names.end();
+            };
+            const std::vector<std::string> displays = display->displays();
+            if (!displays.empty() && !contains(displays, display->display()))
+                usageError("--display: " + display->error());
+            if (!displays.empty() && !contains(display->views(), display->view()))
+                usageError("--view: " + display->error());
+            dataError("cannot set up the display transform: " + display->error());
+        }
+    }
+
     const bool builtin = options.preset == "default";
     Preset preset = builtin ? defaultPreset() : loadPresetOrFail(options.preset, "render");
     const std::string name = preset.name;
@@ -184,6 +225,14 @@ int runRender(const RenderOptions& options) {
         dataError("--out: cannot write " + out.string() + ": the directory " + dir.string() +
                   " does not exist");
     if (fs::is_directory(out, ec)) dataError("--out: " + out.string() + " is a directory");
+    renderer::SceneDesc scene;
+    if (!options.scene.empty()) {
+        renderer::GltfLoadResult loaded = renderer::loadGltfScene(options.scene);
+        if (!loaded.ok()) dataError("--scene: " + loaded.error);
+        for (const std::string& warning : loaded.warnings)
+            std::fprintf(stderr, "aerial render: warning: %s\n", warning.c_str());
+        scene = std::move(loaded.scene);
+    }
 
     // GL: a headless context, then the renderer (destroyed first, while the
     // context is still current).
@@ -203,12 +252,11 @@ int runRender(const RenderOptions& options) {
     }
     renderer::HeadlessContext& context = *processContext;
     if (!context.makeCurrent()) dataError("cannot make the OpenGL context current: " + context.error());
-    RenderLog log;
     renderer::RendererDesc rendererDesc;
     rendererDesc.logger = log.logger();
     renderer::Renderer renderer(rendererDesc);
     if (!renderer.valid()) dataError("cannot create the renderer: " + renderer.error());
-    renderer.setScene(renderer::makeBuiltinScene());
+    renderer.setScene(options.scene.empty() ? renderer::makeBuiltinScene() : scene);
     const double setupMs = millisecondsSince(setupStart);
 
     const auto solveStart = std::chrono::steady_clock::now();
@@ -246,7 +294,7 @@ int runRender(const RenderOptions& options) {
                   out.string() + " not written");
 
     const auto writeStart = std::chrono::steady_clock::now();
-    writeImage(image, out, format, std::exp2(exposureEv));
+    writeImage(image, out, format, display.get());
     const double writeMs = millisecondsSince(writeStart);
 
     const char* formatName = format == Format::Exr ? "exr" : "png";
@@ -262,6 +310,9 @@ int runRender(const RenderOptions& options) {
              {"camera", {{"eye", toJson(eye)}, {"target", toJson(target)}, {"fov_deg", options.fovDeg}}},
              {"precision", options.floatTarget ? "float" : "half"},
              {"exposure_ev", format == Format::Png ? Json(exposureEv) : Json(nullptr)},
+             {"display", display ? Json(display->display()) : Json(nullptr)},
+             {"view", display ? Json(display->view()) : Json(nullptr)},
+             {"ocio_config", display ? Json(display->configSource()) : Json(nullptr)},
              {"renderer", context.rendererName()},
              {"setup_ms", setupMs},
              {"solve_ms", solveMs},
@@ -290,6 +341,8 @@ Command addRenderCommand(CLI::App& parent) {
         ->required()
         ->type_name("FILE");
     addTimeOption(*app, options->time);
+    app->add_option("--scene", options->scene, "glTF 2.0 scene (.gltf or .glb) instead of the built-in one")
+        ->type_name("FILE");
     app->add_option("--eye", options->eye,
                     "Camera position x,y,z [m] (default: 30 m above the valley floor at z = 120)")
         ->type_name("X,Y,Z");
@@ -304,8 +357,15 @@ Command addRenderCommand(CLI::App& parent) {
         ->type_name("WxH")
         ->capture_default_str();
     app->add_option("--exposure", options->exposure,
-                    "PNG only: scale the radiance by 2^EV before the sRGB encoding (default 0)")
+                    "PNG only: scale the radiance by 2^EV before the display transform (default 0)")
         ->type_name("EV");
+    app->add_option("--display", options->display,
+                    "PNG only: OpenColorIO display (default: the config's default, \"sRGB - Display\")")
+        ->type_name("NAME");
+    app->add_option(
+           "--view", options->view,
+           "PNG only: OpenColorIO view, e.g. \"Un-tone-mapped\" (default) or \"ACES 1.0 - SDR Video\"")
+        ->type_name("NAME");
     app->add_flag("--float", options->floatTarget,
                   "Render into RGBA32F instead of RGBA16F (the EXR is half float either way)");
     app->add_flag("--json", options->json, "Machine-readable output");
@@ -313,7 +373,9 @@ Command addRenderCommand(CLI::App& parent) {
         helpFooter("  aerial render presets/clear_summer_day.json --time 12:00 --out noon.png\n"
                    "  aerial render default --time 18:30 --size 1280x720 --out dusk.exr --json\n"
                    "  aerial render presets/foggy_valley_morning.json --time 7 --eye 0,20,150 "
-                   "--target=0,5,-100 --fov 45 --exposure 1 --out fog.png"));
+                   "--target=0,5,-100 --fov 45 --exposure 1 --out fog.png\n"
+                   "  aerial render presets/hazy_sunset.json --time 19:00 --view \"ACES 1.0 - SDR Video\" "
+                   "--out sunset.png"));
     return {app, [options] { return runRender(*options); }};
 }
 

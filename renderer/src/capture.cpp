@@ -1,5 +1,6 @@
 // capture.cpp — writing read-back frames: scene-linear half-float OpenEXR,
 // and an 8-bit PNG with the plain sRGB transfer curve (Debian's libstb).
+#include <aerial/renderer/display.hpp>
 #include <aerial/renderer/image.hpp>
 
 #include <ImfArray.h>
@@ -67,6 +68,33 @@ bool writePng(const Image& image, const std::string& path, double exposure, std:
         for (int c = 0; c < 3; ++c) {
             const double v = std::clamp(finiteOrZero(channelOf(image, i, c)) * exposure, 0.0, 1.0);
             bytes[i * 3 + c] = static_cast<unsigned char>(std::lround(srgbEncode(v) * 255.0));
+        }
+    }
+    if (stbi_write_png(path.c_str(), image.width, image.height, 3, bytes.data(), image.width * 3) == 0) {
+        error = path + ": cannot write PNG";
+        return false;
+    }
+    return true;
+}
+
+bool writePng(const Image& image, const std::string& path, const DisplayTransform& display,
+              std::string& error) {
+    if (!checkImage(image, path, error)) return false;
+    if (!display.valid()) {
+        error = path + ": invalid display transform: " + display.error();
+        return false;
+    }
+    const Image shown = display.applyCpu(image);
+    const std::size_t count = static_cast<std::size_t>(image.width) * image.height;
+    if (shown.pixels.size() != count * 4) {
+        error = path + ": the display transform failed";
+        return false;
+    }
+    std::vector<unsigned char> bytes(count * 3);
+    for (std::size_t i = 0; i < count; ++i) {
+        for (int c = 0; c < 3; ++c) {
+            const double v = std::clamp(static_cast<double>(finiteOrZero(shown.pixels[i * 4 + c])), 0.0, 1.0);
+            bytes[i * 3 + c] = static_cast<unsigned char>(std::lround(v * 255.0));
         }
     }
     if (stbi_write_png(path.c_str(), image.width, image.height, 3, bytes.data(), image.width * 3) == 0) {

@@ -13,6 +13,7 @@ by hand (python3 has no OpenEXR module).
 """
 
 import argparse
+import base64
 import json
 import math
 import os
@@ -612,6 +613,25 @@ class Render(unittest.TestCase):
         self.assertEqual((r["time"], r["exposure_ev"]), ("12:00", -1.0))
         self.assertEqual(read_png(out)[:2], (16, 9))
 
+    def test_png_views_through_opencolorio(self):
+        plain = os.path.join(self.dir, "plain.png")
+        aces = os.path.join(self.dir, "aces.png")
+        r = run_json(self, "render", "default", "--size", "16x9", "--out", plain)
+        self.assertEqual((r["display"], r["view"], r["ocio_config"]),
+                         ("sRGB - Display", "Un-tone-mapped", "built-in"))
+        r = run_json(self, "render", "default", "--size", "16x9", "--view", "ACES 1.0 - SDR Video", "--out", aces)
+        self.assertEqual(r["view"], "ACES 1.0 - SDR Video")
+        self.assertNotEqual(read_png(plain)[4], read_png(aces)[4], "the tone-mapped view changed nothing")
+        # A broken $OCIO: a warning, and the built-in config.
+        env = dict(os.environ, OCIO=os.path.join(WORK, "no_such_config.ocio"))
+        p = subprocess.run([AERIAL, "render", "default", "--size", "16x9", "--out", plain, "--json"],
+                           capture_output=True, text=True, timeout=120, env=env)
+        self.assertEqual(p.returncode, 0, p.stderr)
+        self.assertIn("warning", p.stderr)
+        self.assertIn("no_such_config.ocio", p.stderr)
+        self.assertEqual(json.loads(p.stdout)["ocio_config"], "built-in")
+        self.assertNoTemporaries()
+
     def test_bad_input(self):
         good = preset("hazy_sunset")
         missing = os.path.join(WORK, "no_such_preset.json")
@@ -625,6 +645,9 @@ class Render(unittest.TestCase):
             (["render", good, "--out", png, "--eye", "nan,2,3"], 2, "--eye"),
             (["render", good, "--out", os.path.join(self.dir, "never.exr"), "--exposure", "1"], 2, "--exposure"),
             (["render", good], 2, "--out"),
+            (["render", good, "--out", png, "--view", "Filmic"], 2, "ACES 1.0 - SDR Video"),
+            (["render", good, "--out", png, "--display", "Nope"], 2, "sRGB - Display"),
+            (["render", good, "--out", os.path.join(self.dir, "never.exr"), "--view", "Raw"], 2, "--view"),
             (["render", missing, "--out", png], 1, missing),
             (["render", good, "--out", os.path.join(WORK, "no_such_dir", "x.png")], 1, "no_such_dir"),
         ]
@@ -637,6 +660,47 @@ class Render(unittest.TestCase):
                 self.assertIn(mention, err)
                 self.assertEqual(out, "")
         self.assertEqual(sorted(f for f in os.listdir(self.dir) if "never" in f), [])
+
+    def test_gltf_scene(self):
+        """--scene: a glTF cube (a data-URI buffer) renders; bad files are exit 1 with one line."""
+        corners = [(x, y, z) for z in (-1, 1) for y in (-1, 1) for x in (-1, 1)]
+        faces = [(0, 2, 3, 1), (4, 5, 7, 6), (0, 1, 5, 4), (2, 6, 7, 3), (0, 4, 6, 2), (1, 3, 7, 5)]
+        indices = [q[k] for q in faces for k in (0, 1, 2, 0, 2, 3)]
+        data = b"".join(struct.pack("<3f", *c) for c in corners) + struct.pack("<36H", *indices)
+        uri = "data:application/octet-stream;base64," + base64.b64encode(data).decode()
+        doc = {"asset": {"version": "2.0"}, "scenes": [{"nodes": [0]}],
+               "nodes": [{"mesh": 0, "translation": [0, 5, -20], "scale": [3, 3, 3]}],
+               "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+               "buffers": [{"byteLength": len(data), "uri": uri}],
+               "bufferViews": [{"buffer": 0, "byteLength": 96}, {"buffer": 0, "byteOffset": 96, "byteLength": 72}],
+               "accessors": [{"bufferView": 0, "componentType": 5126, "count": 8, "type": "VEC3"},
+                             {"bufferView": 1, "componentType": 5123, "count": 36, "type": "SCALAR"}]}
+        good = os.path.join(self.dir, "cube.gltf")
+        with open(good, "w") as f:
+            json.dump(doc, f)
+        out = os.path.join(self.dir, "cube.png")
+        code, stdout, err = run("render", "default", "--scene", good, "--eye", "0,5,0", "--target", "0,5,-20",
+                                "--size", "16x9", "--out", out)
+        self.assertEqual(code, 0, err)
+        self.assertEqual(read_png(out)[:2], (16, 9))
+        bad = os.path.join(self.dir, "bad.gltf")
+        doc["nodes"][0]["children"] = [0]
+        with open(bad, "w") as f:
+            json.dump(doc, f)
+        truncated = os.path.join(self.dir, "truncated.glb")
+        with open(truncated, "wb") as f:
+            f.write(b"glTF\x02\x00\x00\x00")
+        png = os.path.join(self.dir, "never.png")
+        for path, mention in ((bad, "its own ancestor"), (truncated, "GLB header"),
+                              (os.path.join(WORK, "no_such.glb"), "no such file")):
+            with self.subTest(path=path):
+                code, stdout, err = run("render", "default", "--scene", path, "--out", png)
+                self.assertEqual(code, 1, err)
+                self.assertEqual(len(err.splitlines()), 1, err)
+                self.assertTrue(err.startswith("aerial render: --scene: " + path + ": "), err)
+                self.assertIn(mention, err)
+                self.assertEqual(stdout, "")
+        self.assertFalse(os.path.exists(png))
 
 
 class Day(unittest.TestCase):

@@ -5,7 +5,9 @@
 //   aerial::renderer::Image hdr = renderer.readColour();
 //   std::string error;
 //   if (!aerial::renderer::writeExr(hdr, "frame.exr", error)) log(error);
-//   aerial::renderer::writePng(hdr, "frame.png", 1.0, error);
+//   aerial::renderer::writePng(hdr, "frame.png", 1.0, error);   // plain sRGB curve
+//   aerial::renderer::DisplayTransform display({});             // display.hpp (OCIO)
+//   aerial::renderer::writePng(hdr, "frame.png", display, error);
 #pragma once
 
 #include <cstddef>
@@ -13,6 +15,8 @@
 #include <vector>
 
 namespace aerial::renderer {
+
+class DisplayTransform;  // display.hpp
 
 /// Pixels row by row, the TOP row first, `channels` floats per pixel
 /// (scene-linear Rec.709 radiance for colour; normalised linear depth for
@@ -39,5 +43,13 @@ bool writeExr(const Image& image, const std::string& path, std::string& error);
 /// display transform with tone mapping. Returns false and sets `error` on
 /// failure.
 bool writePng(const Image& image, const std::string& path, double exposure, std::string& error);
+
+/// Writes an 8-bit PNG of the display-referred image: `display` (its
+/// exposure, display and view; DisplayTransform::applyCpu) maps the
+/// scene-linear colour, which is then clamped to [0, 1] and quantised
+/// (alpha dropped). Returns false and sets `error` on failure (including an
+/// invalid transform).
+bool writePng(const Image& image, const std::string& path, const DisplayTransform& display,
+              std::string& error);
 
 }  // namespace aerial::renderer

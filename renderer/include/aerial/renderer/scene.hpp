@@ -10,15 +10,33 @@
 
 #include <glm/gtc/quaternion.hpp>
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace aerial::renderer {
 
+/// How a material's alpha is used (glTF alphaMode).
+enum class AlphaMode { Opaque, Mask, Blend };
+
+/// An 8-bit RGBA image, sRGB-encoded colour and linear alpha, rows top first
+/// (width * height * 4 bytes).
+struct SceneTexture {
+    int width = 0;
+    int height = 0;
+    std::vector<std::uint8_t> rgba;
+};
+
 /// One triangle mesh: positions [m] and unit normals in object space,
 /// counter-clockwise front faces.
+///
+/// The material fields after `emission` come from glTF files
+/// (renderer/gltf.hpp). The scene pass draws with `albedo` and `emission`
+/// only for now (Lambert, opaque): metal/roughness, the base-colour texture
+/// and the alpha mode are carried for the passes to come.
 struct SceneMesh {
     std::vector<glm::vec3> positions;
     std::vector<glm::vec3> normals;
@@ -28,6 +46,16 @@ struct SceneMesh {
     glm::dvec3 albedo{0.5};
     /// Emitted radiance, scene-linear Rec.709 (unlit test surfaces use albedo 0).
     glm::dvec3 emission{0.0};
+    /// TEXCOORD_0 per vertex (empty when the mesh has none).
+    std::vector<glm::vec2> texcoords;
+    /// Base-colour alpha factor, 0..1 (glTF baseColorFactor[3]).
+    double opacity{1.0};
+    double metallic{0.0};   ///< 0..1
+    double roughness{1.0};  ///< 0..1
+    AlphaMode alphaMode{AlphaMode::Opaque};
+    double alphaCutoff{0.5};  ///< for AlphaMode::Mask
+    /// Base-colour texture (multiplies albedo/opacity), shared between meshes; may be null.
+    std::shared_ptr<const SceneTexture> baseColorTexture;
 };
 
 struct SceneDesc {

@@ -1,0 +1,104 @@
+// aerial/renderer/display.hpp — the display transform: scene-linear Rec.709
+// radiance to display-referred values through OpenColorIO (DESIGN.md "Units
+// and axes": display encoding happens only here).
+//
+// The config is, in order: DisplayDesc::config when not empty, else the file
+// named by $OCIO when set, else Aerial's built-in config
+// (renderer/ocio/config.ocio, embedded at build time; display "sRGB -
+// Display", views "Un-tone-mapped", "ACES 1.0 - SDR Video" and "Raw"). A
+// config that fails to load falls back to the built-in one with a warning
+// through the logger (DisplayTransform::fellBack()).
+//
+// Exposure is in EV: the scene-linear colour is multiplied by 2^EV before
+// the view. Alpha passes through unchanged.
+//
+// Two paths that agree to ~1e-4: the CPU (OCIO's CPUProcessor; no GL
+// needed, used for PNG capture) and the GPU (OCIO's GLSL 4.0 shader, run by
+// applyGpu with a current OpenGL 4.5 context; its GL objects are created on
+// first use and must be destroyed with the same context current).
+//
+// Usage:
+//   aerial::renderer::DisplayDesc desc;
+//   desc.view = "ACES 1.0 - SDR Video";
+//   desc.exposureEv = 1.0;
+//   aerial::renderer::DisplayTransform display(desc);
+//   if (!display.valid()) log(display.error());
+//   aerial::renderer::Image shown = display.applyCpu(hdr);  // RGBA, [0, 1] for an SDR display
+#pragma once
+
+#include <aerial/renderer/image.hpp>
+#include <aerial/renderer/log.hpp>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace aerial::renderer {
+
+struct DisplayDesc {
+    std::string config;   ///< config file; "" = $OCIO when set, else the built-in config
+    std::string display;  ///< "" = the config's default display
+    std::string view;     ///< "" = the display's default view
+    double exposureEv = 0.0;
+    Logger logger;
+};
+
+/// Precision of the GPU target of applyGpu.
+enum class DisplayTarget { Rgba8, Rgba16F, Rgba32F };
+
+class DisplayTransform {
+public:
+    explicit DisplayTransform(const DisplayDesc& desc = {});
+    ~DisplayTransform();
+    DisplayTransform(const DisplayTransform&) = delete;
+    DisplayTransform& operator=(const DisplayTransform&) = delete;
+
+    /// False when the display or view is unknown (error() says which, and
+    /// lists what there is) or OCIO cannot build the processor.
+    bool valid() const;
+    const std::string& error() const;
+
+    /// Where the config came from: "built-in", or a file path.
+    const std::string& configSource() const;
+    /// True when DisplayDesc::config or $OCIO named a config that could not
+    /// be loaded and the built-in config is used instead.
+    bool fellBack() const;
+
+    std::vector<std::string> displays() const;
+    /// The views of `display` ("" = the current display).
+    std::vector<std::string> views(const std::string& display = "") const;
+    const std::string& display() const;
+    const std::string& view() const;
+
+    double exposureEv() const;
+    void setExposureEv(double ev);
+
+    /// Display-referred RGBA floats (alpha copied; 1 for RGB or grey input),
+    /// the same size as `image`. Non-finite inputs are treated as 0.
+    Image applyCpu(const Image& image) const;
+    /// One colour (scene-linear in, display-referred out).
+    void applyCpu(float rgb[3]) const;
+
+    /// Runs the OCIO shader on the GPU: reads `sourceTexture` (an RGBA16F or
+    /// RGBA32F 2D texture, texelFetch per pixel) and writes `targetTexture`
+    /// (RGBA8 or RGBA16F, same size). Needs a current OpenGL 4.5 context.
+    /// False (and logs an error) when the shader cannot be built.
+    bool applyGpu(unsigned sourceTexture, unsigned targetTexture, int width, int height);
+    /// Convenience for tests and capture: uploads `image`, runs applyGpu into
+    /// a target of the given precision and reads it back (RGBA floats; RGBA8
+    /// values are byte / 255). An empty image on failure.
+    Image applyGpu(const Image& image, DisplayTarget target = DisplayTarget::Rgba8);
+
+    /// The GLSL OCIO generated (function `vec4 OCIODisplay(vec4)`), for
+    /// diagnostics.
+    std::string shaderText() const;
+
+    /// The text of the built-in config.
+    static std::string builtinConfigText();
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace aerial::renderer
