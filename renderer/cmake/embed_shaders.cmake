@@ -4,25 +4,15 @@
 #   cmake -DSHADER_ROOT=<dir> -DSHADER_FILES="a.glsl;common/b.glsl" -DOUTPUT=<file.cpp> -P embed_shaders.cmake
 #
 # The generated file defines aerial::renderer::detail::embeddedShaders(), a
-# table of {path relative to shaders/, text}. Each text is split into raw
-# string literals of at most ~8000 characters (MSVC's literal limit is 16 KiB)
-# that the compiler concatenates.
+# table of {path relative to shaders/, text} (raw_string_pieces.cmake).
 cmake_minimum_required(VERSION 3.25)
+
+include(${CMAKE_CURRENT_LIST_DIR}/raw_string_pieces.cmake)
 
 set(body "")
 foreach(relative IN LISTS SHADER_FILES)
   file(READ "${SHADER_ROOT}/${relative}" text)
-  string(LENGTH "${text}" length)
-  set(pieces "")
-  set(offset 0)
-  while(offset LESS length)
-    string(SUBSTRING "${text}" ${offset} 8000 piece)
-    string(APPEND pieces "R\"aerial_glsl(${piece})aerial_glsl\"\n")
-    math(EXPR offset "${offset} + 8000")
-  endwhile()
-  if(pieces STREQUAL "")
-    set(pieces "\"\"")
-  endif()
+  aerial_raw_string_pieces("${text}" aerial_glsl pieces)
   string(APPEND body "    {\"${relative}\",\n${pieces}},\n")
 endforeach()
 

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "gl_state.hpp"
+#include "shader_library.hpp"
 
 namespace aerial::renderer {
 
@@ -39,25 +40,6 @@ void main() {
     gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);
 }
 )glsl";
-
-GLuint compileStage(GLenum stage, const std::string& source, std::string& log) {
-    const GLuint shader = glCreateShader(stage);
-    const char* text = source.c_str();
-    glShaderSource(shader, 1, &text, nullptr);
-    glCompileShader(shader);
-    GLint ok = GL_FALSE;
-    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-    if (ok != GL_TRUE) {
-        GLint length = 0;
-        glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
-        std::string info(static_cast<std::size_t>(std::max(length, 1)), '\0');
-        glGetShaderInfoLog(shader, length, nullptr, info.data());
-        log += info;
-        glDeleteShader(shader);
-        return 0;
-    }
-    return shader;
-}
 
 struct LutTexture {
     GLuint texture = 0;
@@ -194,8 +176,8 @@ void main() {
 }
 )glsl";
         std::string log;
-        const GLuint vs = compileStage(GL_VERTEX_SHADER, kVertexShader, log);
-        const GLuint fs = compileStage(GL_FRAGMENT_SHADER, fragment, log);
+        const GLuint vs = detail::compileStage(GL_VERTEX_SHADER, kVertexShader, log);
+        const GLuint fs = detail::compileStage(GL_FRAGMENT_SHADER, fragment, log);
         if (vs == 0 || fs == 0) {
             if (vs != 0) glDeleteShader(vs);
             if (fs != 0) glDeleteShader(fs);

@@ -76,6 +76,8 @@ std::string fileLegend(const std::vector<std::string>& files) {
     return legend.append(")\n");
 }
 
+}  // namespace
+
 GLuint compileStage(GLenum stage, const std::string& source, std::string& log) {
     const GLuint shader = glCreateShader(stage);
     const char* text = source.c_str();
@@ -94,8 +96,6 @@ GLuint compileStage(GLenum stage, const std::string& source, std::string& log) {
     }
     return shader;
 }
-
-}  // namespace
 
 ShaderReader embeddedShaderReader() {
     return [](const std::string& path, std::string& text, std::string& error) {

@@ -28,6 +28,10 @@ ShaderReader directoryShaderReader(const std::string& directory);
 bool resolveIncludes(const std::string& path, const ShaderReader& reader, std::string& out,
                      std::vector<std::string>& files, std::string& error);
 
+/// Compiles one shader stage. Returns 0 and appends the compile log to `log`
+/// on failure.
+GLuint compileStage(GLenum stage, const std::string& source, std::string& log);
+
 /// Compiles and links the program of one pass file. Returns 0 and fills
 /// `log` on failure.
 GLuint buildProgram(const std::string& path, const ShaderReader& reader, std::string& log);
