@@ -1649,6 +1649,8 @@ Preset defaultPreset() {
         "Earth's atmosphere at 45 deg N in June; a light haze, a morning ground fog that burns off "
         "by noon and a lamp lit at night.";
     Environment& env = p.environment;
+    // A full moon on the default day (172): night reads as moonlit.
+    env.location.moonPhaseOffsetDays = 20.0;
     env.fog.density = 0.0004;
     env.fog.falloff = 0.02;
     env.fog.baseHeight = 0.0;
@@ -1668,7 +1670,7 @@ Preset defaultPreset() {
     lamp.name = "Lamp";
     lamp.position = {6.0, 4.0, -20.0};
     lamp.intensity = 0.0;
-    lamp.attenuation = 0.04;
+    lamp.attenuation = 0.5;  // a glow of ~1.4 m half radius
     lamp.colour = {1.0, 0.72, 0.4};
     p.emitters.push_back(lamp);
 
@@ -1690,10 +1692,10 @@ Preset defaultPreset() {
                               {9.0, glm::dvec3(0.01, 0, 0)},
                               {12.0, glm::dvec3(0.0)}}));
     p.tracks.push_back(track(TrackTarget::emitter("lamp", "intensity_per_m"), Interpolation::Linear,
-                             {{5.5, glm::dvec3(0.6, 0, 0)},
+                             {{5.5, glm::dvec3(0.005, 0, 0)},
                               {6.5, glm::dvec3(0.0)},
                               {19.5, glm::dvec3(0.0)},
-                              {20.5, glm::dvec3(0.6, 0, 0)}}));
+                              {20.5, glm::dvec3(0.005, 0, 0)}}));
     return p;
 }
 
