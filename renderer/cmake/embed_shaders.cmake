@@ -4,10 +4,10 @@
 #   cmake -DSHADER_ROOT=<dir> -DSHADER_FILES="a.glsl;common/b.glsl" -DOUTPUT=<file.cpp> -P embed_shaders.cmake
 #
 # The generated file defines aerial::renderer::detail::embeddedShaders(), a
-# table of {path relative to shaders/, text} (raw_string_pieces.cmake).
+# table of {path relative to shaders/, text} (embed_common.cmake).
 cmake_minimum_required(VERSION 3.25)
 
-include(${CMAKE_CURRENT_LIST_DIR}/raw_string_pieces.cmake)
+include(${CMAKE_CURRENT_LIST_DIR}/embed_common.cmake)
 
 set(body "")
 foreach(relative IN LISTS SHADER_FILES)
@@ -29,12 +29,4 @@ ${body}    };
 
 }  // namespace aerial::renderer::detail
 ")
-# Only touch the output when it changes, so dependants do not rebuild.
-if(EXISTS "${OUTPUT}")
-  file(READ "${OUTPUT}" previous)
-else()
-  set(previous "")
-endif()
-if(NOT previous STREQUAL content)
-  file(WRITE "${OUTPUT}" "${content}")
-endif()
+aerial_write_if_changed("${OUTPUT}" "${content}")

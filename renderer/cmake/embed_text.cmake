@@ -6,7 +6,7 @@
 # The generated file defines `const char* FUNCTION()`.
 cmake_minimum_required(VERSION 3.25)
 
-include(${CMAKE_CURRENT_LIST_DIR}/raw_string_pieces.cmake)
+include(${CMAKE_CURRENT_LIST_DIR}/embed_common.cmake)
 
 file(READ "${INPUT}" text)
 aerial_raw_string_pieces("${text}" aerial_text pieces)
@@ -22,11 +22,4 @@ ${pieces};
 
 }  // namespace ${CMAKE_MATCH_1}
 ")
-if(EXISTS "${OUTPUT}")
-  file(READ "${OUTPUT}" previous)
-else()
-  set(previous "")
-endif()
-if(NOT previous STREQUAL content)
-  file(WRITE "${OUTPUT}" "${content}")
-endif()
+aerial_write_if_changed("${OUTPUT}" "${content}")
