@@ -96,6 +96,16 @@ ParamDesc text(ParamScope scope, sv path, sv label, bool required, std::string* 
     return p;
 }
 
+/// The id and name every placed object (volume, emitter) carries.
+template <class Object>
+std::vector<ParamDesc> identityParams(ParamScope scope, sv idDoc) {
+    return {text(
+                scope, "id", "Id", true, [](void* o) { return &static_cast<Object*>(o)->id; }, idDoc),
+            text(
+                scope, "name", "Name", false, [](void* o) { return &static_cast<Object*>(o)->name; },
+                "Name shown to the artist. Default empty.")};
+}
+
 constexpr ParamScope G = ParamScope::Global;
 constexpr ParamScope V = ParamScope::Volume;
 constexpr ParamScope E = ParamScope::Emitter;
@@ -226,25 +236,23 @@ const std::vector<ParamDesc>& globalTable() {
 
 const std::vector<ParamDesc>& volumeTable() {
     static const std::vector<ParamDesc> table = [] {
-        std::vector<ParamDesc> t = {
-            text(
-                V, "id", "Id", true, [](void* o) { return &vol(o).id; },
-                "Stable identifier (1..64 of A-Z a-z 0-9 _ - .), unique among volumes; "
-                "timeline tracks refer to it. Required."),
-            text(
-                V, "name", "Name", false, [](void* o) { return &vol(o).name; },
-                "Name shown to the artist. Default empty."),
-            enumeration(
-                V, "shape", "Shape", kShapeNames, 0,
-                [](const void* o) { return std::int64_t(static_cast<const FogVolume*>(o)->shape); },
-                [](void* o, std::int64_t v) { vol(o).shape = FogVolumeShape(v); },
-                "box (unit cube [-1,1]^3) or ellipsoid (unit sphere) in object space. "
-                "Default box."),
-            triple(
-                V, ParamType::Vec3, "position_m", "Position", "m", {-1e7, 1e7, -1000, 1000}, glm::dvec3(0.0),
-                false, true, [](void* o) { return &vol(o).position; },
-                "Centre [m], world space (Y up, north -Z), -1e7..1e7. Default 0."),
-        };
+        std::vector<ParamDesc> t =
+            identityParams<FogVolume>(V,
+                                      "Stable identifier (1..64 of A-Z a-z 0-9 _ - .), unique among volumes; "
+                                      "timeline tracks refer to it. Required.");
+        t.insert(t.end(),
+                 {
+                     enumeration(
+                         V, "shape", "Shape", kShapeNames, 0,
+                         [](const void* o) { return std::int64_t(static_cast<const FogVolume*>(o)->shape); },
+                         [](void* o, std::int64_t v) { vol(o).shape = FogVolumeShape(v); },
+                         "box (unit cube [-1,1]^3) or ellipsoid (unit sphere) in object space. "
+                         "Default box."),
+                     triple(
+                         V, ParamType::Vec3, "position_m", "Position", "m", {-1e7, 1e7, -1000, 1000},
+                         glm::dvec3(0.0), false, true, [](void* o) { return &vol(o).position; },
+                         "Centre [m], world space (Y up, north -Z), -1e7..1e7. Default 0."),
+                 });
         ParamDesc rotation;
         rotation.scope = V;
         rotation.type = ParamType::Quaternion;
@@ -300,38 +308,36 @@ const std::vector<ParamDesc>& volumeTable() {
 
 const std::vector<ParamDesc>& emitterTable() {
     static const std::vector<ParamDesc> table = [] {
-        std::vector<ParamDesc> t = {
-            text(
-                E, "id", "Id", true, [](void* o) { return &emi(o).id; },
-                "Stable identifier (1..64 of A-Z a-z 0-9 _ - .), unique among emitters; "
-                "timeline tracks refer to it. Required."),
-            text(
-                E, "name", "Name", false, [](void* o) { return &emi(o).name; },
-                "Name shown to the artist. Default empty."),
-            enumeration(
-                E, "kind", "Kind", kEmitterKindNames, 0,
-                [](const void* o) { return std::int64_t(static_cast<const Emitter*>(o)->kind); },
-                [](void* o, std::int64_t v) { emi(o).kind = EmitterKind(v); },
-                "point (steady) or lightning (seeded flashes). Default point."),
-            triple(
-                E, ParamType::Vec3, "position_m", "Position", "m", {-1e7, 1e7, -1000, 1000}, glm::dvec3(0.0),
-                false, true, [](void* o) { return &emi(o).position; },
-                "Position [m], world space. Default 0."),
-            scalar(
-                E, "intensity_per_m", "Intensity", "1/m", {0, 1e5, 1e-3, 100}, 1.0, true, true,
-                [](void* o) { return &emi(o).intensity; },
-                "In-scattered radiance per metre next to the emitter, i [1/m] (times the "
-                "colour), 0..1e5. Default 1."),
-            scalar(
-                E, "attenuation_per_m2", "Attenuation", "1/m^2", {0, 1e4, 1e-5, 10}, 0.01, true, true,
-                [](void* o) { return &emi(o).attenuation; },
-                "Attenuation a [1/m^2], 0..1e4: the field halves at 1/sqrt(a). Default 0.01 "
-                "(half at 10 m)."),
-            triple(
-                E, ParamType::Colour, "colour_rgb", "Colour", "", {0, 1e5, 0, 2}, glm::dvec3(1.0), false,
-                true, [](void* o) { return &emi(o).colour; },
-                "Colour, scene-linear Rec.709, 0..1e5 per channel. Default white."),
-        };
+        std::vector<ParamDesc> t =
+            identityParams<Emitter>(E,
+                                    "Stable identifier (1..64 of A-Z a-z 0-9 _ - .), unique among emitters; "
+                                    "timeline tracks refer to it. Required.");
+        t.insert(t.end(),
+                 {
+                     enumeration(
+                         E, "kind", "Kind", kEmitterKindNames, 0,
+                         [](const void* o) { return std::int64_t(static_cast<const Emitter*>(o)->kind); },
+                         [](void* o, std::int64_t v) { emi(o).kind = EmitterKind(v); },
+                         "point (steady) or lightning (seeded flashes). Default point."),
+                     triple(
+                         E, ParamType::Vec3, "position_m", "Position", "m", {-1e7, 1e7, -1000, 1000},
+                         glm::dvec3(0.0), false, true, [](void* o) { return &emi(o).position; },
+                         "Position [m], world space. Default 0."),
+                     scalar(
+                         E, "intensity_per_m", "Intensity", "1/m", {0, 1e5, 1e-3, 100}, 1.0, true, true,
+                         [](void* o) { return &emi(o).intensity; },
+                         "In-scattered radiance per metre next to the emitter, i [1/m] (times the "
+                         "colour), 0..1e5. Default 1."),
+                     scalar(
+                         E, "attenuation_per_m2", "Attenuation", "1/m^2", {0, 1e4, 1e-5, 10}, 0.01, true,
+                         true, [](void* o) { return &emi(o).attenuation; },
+                         "Attenuation a [1/m^2], 0..1e4: the field halves at 1/sqrt(a). Default 0.01 "
+                         "(half at 10 m)."),
+                     triple(
+                         E, ParamType::Colour, "colour_rgb", "Colour", "", {0, 1e5, 0, 2}, glm::dvec3(1.0),
+                         false, true, [](void* o) { return &emi(o).colour; },
+                         "Colour, scene-linear Rec.709, 0..1e5 per channel. Default white."),
+                 });
         ParamDesc seed;
         seed.scope = E;
         seed.type = ParamType::Int;

@@ -184,22 +184,9 @@ void main() {
             this->log(LogLevel::Error, "the OpenColorIO display shader does not compile: " + log);
             return false;
         }
-        program = glCreateProgram();
-        glAttachShader(program, vs);
-        glAttachShader(program, fs);
-        glLinkProgram(program);
-        glDeleteShader(vs);
-        glDeleteShader(fs);
-        GLint ok = GL_FALSE;
-        glGetProgramiv(program, GL_LINK_STATUS, &ok);
-        if (ok != GL_TRUE) {
-            GLint length = 0;
-            glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
-            std::string info(static_cast<std::size_t>(std::max(length, 1)), '\0');
-            glGetProgramInfoLog(program, length, nullptr, info.data());
-            this->log(LogLevel::Error, "the OpenColorIO display shader does not link: " + info);
-            glDeleteProgram(program);
-            program = 0;
+        program = detail::linkProgram(vs, fs, log);
+        if (program == 0) {
+            this->log(LogLevel::Error, "the OpenColorIO display shader does not link: " + log);
             return false;
         }
         sourceLocation = glGetUniformLocation(program, "aerialSource");

@@ -97,6 +97,27 @@ GLuint compileStage(GLenum stage, const std::string& source, std::string& log) {
     return shader;
 }
 
+GLuint linkProgram(GLuint vertexStage, GLuint fragmentStage, std::string& log) {
+    const GLuint program = glCreateProgram();
+    glAttachShader(program, vertexStage);
+    glAttachShader(program, fragmentStage);
+    glLinkProgram(program);
+    glDeleteShader(vertexStage);
+    glDeleteShader(fragmentStage);
+    GLint ok = GL_FALSE;
+    glGetProgramiv(program, GL_LINK_STATUS, &ok);
+    if (!ok) {
+        GLint length = 0;
+        glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
+        std::string info(static_cast<std::size_t>(length > 0 ? length : 1), '\0');
+        glGetProgramInfoLog(program, length, nullptr, info.data());
+        log += info.c_str();
+        glDeleteProgram(program);
+        return 0;
+    }
+    return program;
+}
+
 ShaderReader embeddedShaderReader() {
     return [](const std::string& path, std::string& text, std::string& error) {
         for (const EmbeddedShader& s : embeddedShaders()) {
@@ -153,23 +174,9 @@ GLuint buildProgram(const std::string& path, const ShaderReader& reader, std::st
             return 0;
         }
     }
-    const GLuint program = glCreateProgram();
-    glAttachShader(program, stages[0]);
-    glAttachShader(program, stages[1]);
-    glLinkProgram(program);
-    glDeleteShader(stages[0]);
-    glDeleteShader(stages[1]);
-    GLint ok = GL_FALSE;
-    glGetProgramiv(program, GL_LINK_STATUS, &ok);
-    if (!ok) {
-        GLint length = 0;
-        glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
-        std::string info(static_cast<std::size_t>(length > 0 ? length : 1), '\0');
-        glGetProgramInfoLog(program, length, nullptr, info.data());
-        log.append(join({path, ": link failed: ", info.c_str(), "\n"}));
-        glDeleteProgram(program);
-        return 0;
-    }
+    std::string linkLog;
+    const GLuint program = linkProgram(stages[0], stages[1], linkLog);
+    if (program == 0) log.append(join({path, ": link failed: ", linkLog, "\n"}));
     return program;
 }
 

@@ -32,6 +32,10 @@ bool resolveIncludes(const std::string& path, const ShaderReader& reader, std::s
 /// on failure.
 GLuint compileStage(GLenum stage, const std::string& source, std::string& log);
 
+/// Links a program from two compiled stages and deletes the stages. Returns 0
+/// and appends the link log to `log` on failure.
+GLuint linkProgram(GLuint vertexStage, GLuint fragmentStage, std::string& log);
+
 /// Compiles and links the program of one pass file. Returns 0 and fills
 /// `log` on failure.
 GLuint buildProgram(const std::string& path, const ShaderReader& reader, std::string& log);
