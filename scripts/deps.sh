@@ -16,8 +16,12 @@ packages=(
   # renderer: GL loader, headless EGL on Mesa (llvmpipe in CI), EXR/PNG
   # capture, OCIO display transform, glTF scenes (libopenexr-dev: above)
   libepoxy-dev libegl-dev libgl1-mesa-dri libegl-mesa0 libopencolorio-dev libtinygltf-dev libstb-dev
-  # tests and benchmarks
-  libgtest-dev libbenchmark-dev python3 python3-jsonschema
+  # the editor: GLFW window, Dear ImGui 1.86 (needs libstb, above)
+  libglfw3-dev libimgui-dev
+  # tests and benchmarks; the editor's window tests run under Xvfb
+  libgtest-dev libbenchmark-dev python3 python3-jsonschema xvfb xauth
+  # fuzzing the loaders: clang with libFuzzer (tests/fuzz)
+  clang libclang-rt-14-dev
 )
 
 missing=()
