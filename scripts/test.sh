@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # Builds Aerial and runs every test: first the release build, then the whole
-# suite again under AddressSanitizer + UndefinedBehaviorSanitizer.
-#   AERIAL_SKIP_ASAN=1 scripts/test.sh   # release only (quicker, local use)
+# suite again under AddressSanitizer + UndefinedBehaviorSanitizer, then each
+# libFuzzer target for a bounded time (scripts/fuzz.sh; clang).
+#   AERIAL_SKIP_ASAN=1 scripts/test.sh   # no sanitizer pass (quicker, local use)
+#   AERIAL_SKIP_FUZZ=1 scripts/test.sh   # no fuzzing
+#   AERIAL_FUZZ_SECONDS=300 scripts/test.sh   # fuzz longer (default 30 s per target)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/deps.sh
@@ -18,4 +21,8 @@ run_preset() {
 run_preset release
 if [[ ${AERIAL_SKIP_ASAN:-0} != 1 ]]; then
   run_preset asan
+fi
+if [[ ${AERIAL_SKIP_FUZZ:-0} != 1 ]]; then
+  echo "== fuzz: each loader for ${AERIAL_FUZZ_SECONDS:-30} s"
+  scripts/fuzz.sh "${AERIAL_FUZZ_SECONDS:-30}"
 fi

@@ -1,6 +1,9 @@
 // cli_common.cpp — see cli_common.hpp.
 #include "cli_common.hpp"
 
+#include <aerial/detail/file_system.hpp>
+#include <aerial/limits.hpp>
+
 #include <aerial/atmosphere.hpp>
 
 #include <fcntl.h>
@@ -11,6 +14,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
 #include <iostream>
 #include <system_error>
 #include <vector>
@@ -166,13 +170,16 @@ void parseTableSize(const std::string& text, const std::string& option, int& azi
                     int& elevationCount) {
     const std::string t = trim(text);
     const std::size_t x = t.find_first_of("xX");
+    // The caps of aerial/limits.hpp (kMaxSkyAzimuthCount, kMaxSkyElevationCount).
     const std::string why = option + ": " + quoted(text) +
                             " is not a table size WxH (azimuth columns 4..4096 x elevation rows 2..2048)";
+    static_assert(limits::kMaxSkyAzimuthCount == 4096 && limits::kMaxSkyElevationCount == 2048);
     if (x == std::string::npos) usageError(why);
     int w = 0, h = 0;
     if (!parseDigits(trim(t.substr(0, x)), 5, w) || !parseDigits(trim(t.substr(x + 1)), 5, h))
         usageError(why);
-    if (w < 4 || w > 4096 || h < 2 || h > 2048) usageError(why);
+    if (w < 4 || w > limits::kMaxSkyAzimuthCount || h < 2 || h > limits::kMaxSkyElevationCount)
+        usageError(why);
     azimuthCount = w;
     elevationCount = h;
 }
@@ -207,20 +214,27 @@ bool syncPath(const std::filesystem::path& path, bool directory) {
 
 void writeAtomically(const std::filesystem::path& path,
                      const std::function<void(const std::filesystem::path& temp)>& write) {
-    namespace fs = std::filesystem;
-    const fs::path temp =
-        path.parent_path() / ("." + path.filename().string() + ".tmp" + std::to_string(::getpid()));
-    try {
-        write(temp);
-        if (!syncPath(temp, false)) dataError("cannot flush " + temp.string() + ": " + errnoText(errno));
-        std::error_code ec;
-        fs::rename(temp, path, ec);
-        if (ec) dataError("cannot rename " + temp.string() + " to " + path.string() + ": " + ec.message());
-    } catch (...) {
-        std::error_code ignored;
-        fs::remove(temp, ignored);
-        throw;
-    }
+    // Through core's atomic writer (and its fault-injection seam): the
+    // temporary is ".NAME.tmp-PID-XXXXXX", fsync'ed, renamed over `path`,
+    // and removed on any failure.
+    std::exception_ptr thrown;
+    const std::string why =
+        detail::writeFileAtomicallyWith(path.string(), [&](const std::string& temp) -> std::string {
+            try {
+                write(temp);
+                return {};
+            } catch (...) {
+                thrown = std::current_exception();
+                return "failed";
+            }
+        });
+    if (thrown) std::rethrow_exception(thrown);
+    if (!why.empty()) dataError(why);
+}
+
+void writeFileAtomically(const std::filesystem::path& path, std::string_view bytes) {
+    const std::string why = detail::writeFileAtomically(path.string(), bytes);
+    if (!why.empty()) dataError(why);
 }
 
 // ---------------------------------------------------------------------------

@@ -19,6 +19,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace aerial::cli {
 
@@ -116,11 +117,15 @@ std::string errnoText(int error);
 /// fsync a file (or a directory) by path; false on failure.
 bool syncPath(const std::filesystem::path& path, bool directory);
 
-/// Writes `path` through a hidden temporary beside it (".NAME.tmpPID"):
-/// write(temp), fsync, rename over `path`; the temporary is removed when
-/// anything throws, so `path` is either its old self or complete.
+/// Writes `path` through a hidden temporary beside it
+/// (".NAME.tmp-PID-XXXXXX", aerial/detail/file_system.hpp): write(temp),
+/// fsync, rename over `path`; the temporary is removed when anything fails
+/// or throws, so `path` is either its old self or complete. Failures throw
+/// dataError naming the file and the reason.
 void writeAtomically(const std::filesystem::path& path,
                      const std::function<void(const std::filesystem::path& temp)>& write);
+/// The same for bytes in memory (every byte through the writer's seam).
+void writeFileAtomically(const std::filesystem::path& path, std::string_view bytes);
 
 // ---------------------------------------------------------------------------
 // Text and JSON

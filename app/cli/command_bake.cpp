@@ -38,6 +38,7 @@
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfStdIO.h>
 #include <OpenEXR/ImfStringAttribute.h>
 #include <OpenEXR/ImfVecAttribute.h>
 #include <unistd.h>
@@ -109,7 +110,10 @@ void writeSkyExr(const fs::path& path, const SkyTable& table, const char* light,
             pixels[texel * 6 + 3 + std::size_t(c)] = toHalf(table.mie[texel * 3 + std::size_t(c)]);
         }
     }
-    writeAtomically(path, [&](const fs::path& temp) {
+    // Encoded in memory, then written atomically (every byte through the
+    // writer's fault-injection seam, aerial/detail/file_system.hpp).
+    Imf::StdOSStream encoded;
+    {
         try {
             Imf::Header header(w, h);
             header.compression() = compression;
@@ -128,25 +132,17 @@ void writeSkyExr(const fs::path& path, const SkyTable& table, const char* light,
                 frame.insert(
                     kChannelNames[k],
                     Imf::Slice(Imf::HALF, reinterpret_cast<char*>(pixels.data() + k), xStride, yStride));
-            Imf::OutputFile file(temp.c_str(), header);
+            Imf::OutputFile file(encoded, header);
             file.setFrameBuffer(frame);
             file.writePixels(h);
-        } catch (const CommandError&) {
-            throw;
         } catch (const std::exception& e) {
-            dataError("cannot write " + path.string() + ": " + e.what());
+            dataError("cannot encode " + path.string() + ": " + e.what());
         }
-    });
+    }
+    writeFileAtomically(path, encoded.str());
 }
 
-void writeText(const fs::path& path, const std::string& text) {
-    writeAtomically(path, [&](const fs::path& temp) {
-        std::ofstream file(temp, std::ios::binary | std::ios::trunc);
-        file << text;
-        file.flush();
-        if (!file) dataError("cannot write " + path.string() + ": " + errnoText(errno));
-    });
-}
+void writeText(const fs::path& path, const std::string& text) { writeFileAtomically(path, text); }
 
 /// A progress bar on a terminal, plain lines otherwise (or nothing, --quiet).
 class Progress {

@@ -1,7 +1,8 @@
 // command_render.cpp — `aerial render PRESET --out FILE.exr|png [--time T]
 // [--eye x,y,z --target x,y,z --fov deg] [--size WxH] [--exposure EV]
 // [--display NAME] [--view NAME] [--float] [--json]`: one frame of the built-in scene (renderer/scene.hpp:
-// terrain with a valley, a few boxes) under the preset at one time of day,
+// terrain with a valley, a lake, rocks, buildings, glass, a fence, steam)
+// under the preset at one time of day,
 // rendered headless (EGL on Mesa's surfaceless platform, no window) by the
 // same renderer the editor uses.
 //

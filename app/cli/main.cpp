@@ -14,7 +14,12 @@
 // error is one line on stderr ("aerial <command>: <reason>").
 #include "cli_common.hpp"
 
+#include <aerial/detail/file_system.hpp>
+
 #include <CLI/CLI.hpp>
+
+#include <cstdlib>
+#include <optional>
 
 #include <exception>
 #include <iostream>
@@ -51,6 +56,20 @@ std::string oneLine(std::string text) {
 
 int main(int argc, char** argv) {
     using namespace aerial::cli;
+    // Test hook (tests/cli/cli_test.py): AERIAL_TEST_FILE_FAULT=missing-directory |
+    // not-writable | disk-full | sync | rename | crash makes every file this
+    // run writes fail at that step (aerial/detail/file_system.hpp).
+    static std::optional<aerial::detail::FaultyFileSystem> faulty;
+    static std::optional<aerial::detail::ScopedFileSystem> useFaulty;
+    if (const char* fault = std::getenv("AERIAL_TEST_FILE_FAULT"); fault && *fault) {
+        aerial::detail::FileFault f{};
+        if (!aerial::detail::parseFileFault(fault, f)) {
+            std::cerr << "aerial: AERIAL_TEST_FILE_FAULT=" << fault << " is not a known fault\n";
+            return kExitUsageError;
+        }
+        faulty.emplace(f);
+        useFaulty.emplace(*faulty);
+    }
     CLI::App app{
         "aerial — the Aerial sky and fog runtime from the shell: validate and evaluate presets, "
         "sample the sky, query fog, bake sky tables for games"

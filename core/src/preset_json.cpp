@@ -10,6 +10,8 @@
 //
 // Writing: our own emitter, stable key order (the table's), numbers in the
 // shortest form that reads back bit-exact (std::to_chars).
+#include <aerial/detail/file_system.hpp>
+#include <aerial/limits.hpp>
 #include <aerial/param_table.hpp>
 #include <aerial/preset.hpp>
 
@@ -20,6 +22,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -107,6 +110,32 @@ bool validUtf8(sv s) {
     return true;
 }
 
+// `text` with every byte that is not part of valid UTF-8 written as \xNN,
+// so messages quoting a broken file stay valid text.
+std::string printable(sv text) {
+    std::string out;
+    out.reserve(text.size());
+    std::size_t i = 0;
+    while (i < text.size()) {
+        const unsigned char c = static_cast<unsigned char>(text[i]);
+        const std::size_t length = c < 0x80             ? 1
+                                   : (c & 0xE0) == 0xC0 ? 2
+                                   : (c & 0xF0) == 0xE0 ? 3
+                                   : (c & 0xF8) == 0xF0 ? 4
+                                                        : 0;
+        if (length > 0 && i + length <= text.size() && validUtf8(text.substr(i, length))) {
+            out.append(text.substr(i, length));
+            i += length;
+        } else {
+            char buf[8];
+            std::snprintf(buf, sizeof buf, "\\x%02X", c);
+            out += buf;
+            ++i;
+        }
+    }
+    return out;
+}
+
 bool validId(sv id) {
     if (id.empty() || id.size() > 64) return false;
     for (char c : id) {
@@ -121,7 +150,9 @@ bool validId(sv id) {
 // Number formatting: shortest text that reads back to the same double.
 
 std::string formatDouble(double v) {
-    if (!std::isfinite(v)) return "null";  // never written by savePreset (validated)
+    // Never written by savePreset (it validates first); in messages only.
+    if (std::isnan(v)) return "nan";
+    if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
     char buf[64];
     const auto r = std::to_chars(buf, buf + sizeof buf, v);
     std::string s(buf, r.ptr);
@@ -250,30 +281,36 @@ public:
     TreeBuilder(sv text, std::size_t start, std::vector<JNode>& nodes)
         : text_(text), nodes_(nodes), cursor_(start) {}
 
-    bool null() override { return add(JNode::Null); }
+    bool null() override { return room() && add(JNode::Null); }
     bool boolean(bool v) override {
+        if (!room()) return false;
         JNode& n = nodes_[std::size_t(addIndex(JNode::Bool))];
         n.boolean = v;
         return true;
     }
     bool number_integer(number_integer_t v) override {
+        if (!room()) return false;
         nodes_[std::size_t(addIndex(JNode::Integer))].integer = v;
         return true;
     }
     bool number_unsigned(number_unsigned_t v) override {
+        if (!room()) return false;
         nodes_[std::size_t(addIndex(JNode::Unsigned))].unsignedInteger = v;
         return true;
     }
     bool number_float(number_float_t v, const string_t&) override {
+        if (!room()) return false;
         nodes_[std::size_t(addIndex(JNode::Float))].number = v;
         return true;
     }
     bool string(string_t& v) override {
+        if (!room()) return false;
         nodes_[std::size_t(addIndex(JNode::String))].text = std::move(v);
         return true;
     }
     bool binary(binary_t&) override { return false; }
     bool start_object(std::size_t) override {
+        if (!enter()) return false;
         stack_.push_back(addIndex(JNode::Object));
         return true;
     }
@@ -288,6 +325,7 @@ public:
         return true;
     }
     bool start_array(std::size_t) override {
+        if (!enter()) return false;
         stack_.push_back(addIndex(JNode::Array));
         return true;
     }
@@ -317,7 +355,7 @@ public:
             const std::size_t colon = what.find(": ");
             if (colon != std::string::npos) what.erase(0, colon + 2);
         }
-        error.message = what;
+        error.message = printable(what);
         // Where in the document: the open container and the member being read.
         if (!stack_.empty()) {
             const std::int32_t top = stack_.back();
@@ -337,6 +375,37 @@ public:
 
 private:
     static bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
+
+    // Refuses the value about to be added when it would nest deeper than
+    // limits::kMaxJsonDepth or make more than limits::kMaxJsonValues values
+    // (the caps that keep the tree small whatever the file holds).
+    bool enter() {
+        if (stack_.size() < limits::kMaxJsonDepth) return room();
+        refuse("nested deeper than " + std::to_string(limits::kMaxJsonDepth) + " levels (the limit)");
+        return false;
+    }
+    bool room() {
+        if (nodes_.size() < limits::kMaxJsonValues) return true;
+        refuse("more than " + std::to_string(limits::kMaxJsonValues) + " JSON values (the limit)");
+        return false;
+    }
+
+    void refuse(std::string why) {
+        std::size_t i = cursor_;
+        while (i < text_.size() && (isSpace(text_[i]) || text_[i] == ',' || text_[i] == ':')) ++i;
+        error.offset = i;
+        if (!stack_.empty()) {
+            const std::int32_t top = stack_.back();
+            const JNode& n = nodes_[std::size_t(top)];
+            error.pointer = pointerOfNode(nodes_, top);
+            if (n.kind == JNode::Object && !pendingKey_.empty())
+                error.pointer = pointerJoin(error.pointer, pendingKey_);
+            else if (n.kind == JNode::Array)
+                error.pointer = pointerJoin(error.pointer, std::size_t(n.childCount));
+        }
+        error.message = std::move(why);
+        failed = true;
+    }
 
     // The start of the next token after the previous one (skipping white
     // space and the ',' and ':' separators, which raise no SAX event), and
@@ -428,6 +497,28 @@ void checkNumber(const ParamDesc& p, double v, const std::string& pointer, Issue
     }
 }
 
+void checkText(const std::string& s, const std::string& pointer, Issues& issues) {
+    if (s.size() > limits::kMaxStringBytes) {
+        std::string m = "is ";
+        m += std::to_string(s.size());
+        m += " bytes long, over the limit of ";
+        m += std::to_string(limits::kMaxStringBytes);
+        issues.error(pointer, std::move(m));
+    } else if (!validUtf8(s)) {
+        issues.error(pointer, "must be valid UTF-8");
+    }
+}
+
+void checkCount(std::size_t count, std::size_t limit, const char* pointer, const char* what, Issues& issues) {
+    if (count <= limit) return;
+    std::string m = std::to_string(count);
+    m += " ";
+    m += what;
+    m += ", over the limit of ";
+    m += std::to_string(limit);
+    issues.error(pointer, std::move(m));
+}
+
 void checkParam(const ParamDesc& p, void* object, const std::string& pointer, Issues& issues) {
     switch (p.type) {
         case ParamType::Scalar:
@@ -475,8 +566,8 @@ void checkParam(const ParamDesc& p, void* object, const std::string& pointer, Is
                 if (!validId(s))
                     issues.error(pointer, "an id must be 1..64 characters of A-Z a-z 0-9 _ - . (got " +
                                               quoteString(validUtf8(s) ? s : std::string("?")) + ")");
-            } else if (!validUtf8(s)) {
-                issues.error(pointer, "must be valid UTF-8");
+            } else {
+                checkText(s, pointer, issues);
             }
             break;
         }
@@ -516,8 +607,11 @@ std::string globalPointer(sv path) {
 void validateInto(const Preset& constPreset, Issues& issues) {
     // The accessors take non-const objects; validation only reads.
     Preset& preset = const_cast<Preset&>(constPreset);
-    if (!validUtf8(preset.name)) issues.error("/name", "must be valid UTF-8");
-    if (!validUtf8(preset.description)) issues.error("/description", "must be valid UTF-8");
+    checkText(preset.name, "/name", issues);
+    checkText(preset.description, "/description", issues);
+    checkCount(preset.volumes.size(), limits::kMaxVolumes, "/volumes", "volumes", issues);
+    checkCount(preset.emitters.size(), limits::kMaxEmitters, "/emitters", "emitters", issues);
+    checkCount(preset.tracks.size(), limits::kMaxTracks, "/tracks", "tracks", issues);
     for (const ParamDesc& p : paramTable(ParamScope::Global))
         checkParam(p, &preset.environment, globalPointer(p.path), issues);
     const AtmosphereParams& air = preset.environment.atmosphere;
@@ -568,6 +662,7 @@ void validateInto(const Preset& constPreset, Issues& issues) {
             issues.error(pointerJoin(at, "interpolation"), "unknown interpolation");
         const std::string keysAt = pointerJoin(at, "keys");
         if (track.keys.empty()) issues.error(keysAt, "a track needs at least one key");
+        checkCount(track.keys.size(), limits::kMaxKeysPerTrack, keysAt.c_str(), "keys", issues);
         for (std::size_t k = 0; k < track.keys.size(); ++k) {
             const TrackKey& key = track.keys[k];
             const std::string keyAt = pointerJoin(keysAt, k);
@@ -605,6 +700,12 @@ public:
 
     void issue(PresetIssue::Severity severity, std::int32_t node, bool atKey, std::string pointer,
                std::string message) {
+        const bool isError = severity == PresetIssue::Severity::Error;
+        std::vector<PresetIssue>& list = isError ? errors : warnings;
+        if (list.size() >= limits::kMaxPresetIssues) {
+            ++(isError ? suppressedErrors_ : suppressedWarnings_);
+            return;
+        }
         PresetIssue i;
         i.severity = severity;
         i.file = file_;
@@ -612,9 +713,46 @@ public:
         i.message = std::move(message);
         if (node >= 0) {
             const JNode& n = nodes_[std::size_t(node)];
-            lineColumn(text_, atKey ? n.keyOffset : n.offset, i.line, i.column);
+            positions_.push_back({isError, list.size(), atKey ? n.keyOffset : n.offset});
         }
-        (severity == PresetIssue::Severity::Error ? errors : warnings).push_back(std::move(i));
+        list.push_back(std::move(i));
+    }
+
+    // Fills in line:column of every issue (one pass over the text, however
+    // many issues) and sums up the issues over limits::kMaxPresetIssues.
+    void finish() {
+        std::sort(positions_.begin(), positions_.end(),
+                  [](const Position& a, const Position& b) { return a.offset < b.offset; });
+        int line = 1, column = 1;
+        std::size_t at = 0;
+        for (const Position& p : positions_) {
+            const std::size_t end = std::min<std::size_t>(p.offset, text_.size());
+            for (; at < end; ++at) {
+                const unsigned char c = static_cast<unsigned char>(text_[at]);
+                if (c == '\n') {
+                    ++line;
+                    column = 1;
+                } else if ((c & 0xC0) != 0x80) {
+                    ++column;
+                }
+            }
+            PresetIssue& i = (p.error ? errors : warnings)[p.index];
+            i.line = line;
+            i.column = column;
+        }
+        positions_.clear();
+        auto summary = [&](std::vector<PresetIssue>& list, std::size_t more, PresetIssue::Severity severity,
+                           const char* what) {
+            if (more == 0) return;
+            PresetIssue i;
+            i.severity = severity;
+            i.file = file_;
+            i.message = std::to_string(more) + " more " + what + " not listed (at most " +
+                        std::to_string(limits::kMaxPresetIssues) + " are)";
+            list.push_back(std::move(i));
+        };
+        summary(errors, suppressedErrors_, PresetIssue::Severity::Error, "errors");
+        summary(warnings, suppressedWarnings_, PresetIssue::Severity::Warning, "warnings");
     }
     void error(std::int32_t node, std::string pointer, std::string message) {
         issue(PresetIssue::Severity::Error, node, false, std::move(pointer), std::move(message));
@@ -706,12 +844,16 @@ public:
             case ParamType::Colour:
             case ParamType::Vec3: {
                 double v[3];
-                if (readNumbers(node, pointer, v, 3)) *p.vec3(object) = glm::dvec3(v[0], v[1], v[2]);
+                if (!readNumbers(node, pointer, v, 3)) break;
+                if (p.unitLength && !normaliseOrRefuse(node, pointer, v, 3, "a unit vector")) break;
+                *p.vec3(object) = glm::dvec3(v[0], v[1], v[2]);
                 break;
             }
             case ParamType::Quaternion: {
                 double v[4];
-                if (readNumbers(node, pointer, v, 4)) *p.quat(object) = glm::dquat(v[3], v[0], v[1], v[2]);
+                if (readNumbers(node, pointer, v, 4) &&
+                    normaliseOrRefuse(node, pointer, v, 4, "a unit quaternion"))
+                    *p.quat(object) = glm::dquat(v[3], v[0], v[1], v[2]);
                 break;
             }
             case ParamType::Enum: {
@@ -754,6 +896,32 @@ public:
                 if (expectKind(node, pointer, JNode::String)) *p.string(object) = n.text;
                 break;
         }
+    }
+
+    // Unit vectors and quaternions in a file (docs: preset.hpp, "Numbers"):
+    // finite, non-zero and off unit length by more than 1e-6 -> normalised,
+    // with a warning; zero (or too small to have a direction) -> an error.
+    // Non-finite components are left for validation to report.
+    bool normaliseOrRefuse(std::int32_t node, const std::string& pointer, double* v, int n,
+                           const char* what) {
+        double largest = 0.0;
+        for (int i = 0; i < n; ++i) {
+            if (!std::isfinite(v[i])) return true;
+            largest = std::max(largest, std::abs(v[i]));
+        }
+        if (!(largest > 1e-150)) {
+            error(node, pointer, std::string("must be ") + what + "; a zero vector has no direction");
+            return false;
+        }
+        double scaled = 0.0;
+        for (int i = 0; i < n; ++i) scaled += (v[i] / largest) * (v[i] / largest);
+        const double length = std::sqrt(scaled) * largest;
+        if (std::abs(length - 1.0) <= 1e-6) return true;
+        const double norm = std::sqrt(scaled);
+        for (int i = 0; i < n; ++i) v[i] = (v[i] / largest) / norm;
+        issue(PresetIssue::Severity::Warning, node, false, pointer,
+              std::string("not ") + what + " (length " + formatDouble(length) + "); normalised");
+        return true;
     }
 
     void warnUnknown(std::int32_t node, const std::string& pointer) {
@@ -804,10 +972,27 @@ public:
         return false;
     }
 
+    // False (and an error) when an array holds more than `limit` elements.
+    bool withinLimit(std::int32_t node, const std::string& pointer, std::size_t limit, const char* what) {
+        const std::size_t count = nodes_[std::size_t(node)].childCount;
+        if (count <= limit) return true;
+        std::string m = std::to_string(count);
+        m += " ";
+        m += what;
+        m += ", over the limit of ";
+        m += std::to_string(limit);
+        error(node, pointer, std::move(m));
+        return false;
+    }
+
     template <class Object>
     void readObjectArray(std::int32_t node, ParamScope scope, const std::string& pointer,
                          std::vector<Object>& out) {
         if (!expectKind(node, pointer, JNode::Array)) return;
+        if (scope == ParamScope::Volume && !withinLimit(node, pointer, limits::kMaxVolumes, "volumes"))
+            return;
+        if (scope == ParamScope::Emitter && !withinLimit(node, pointer, limits::kMaxEmitters, "emitters"))
+            return;
         out.reserve(nodes_[std::size_t(node)].childCount);
         std::size_t i = 0;
         for (std::int32_t c = nodes_[std::size_t(node)].firstChild; c >= 0;
@@ -852,7 +1037,8 @@ public:
         const std::string keysAt = pointerJoin(pointer, "keys");
         if (keys < 0) {
             error(node, keysAt, "missing required field \"keys\"");
-        } else if (expectKind(keys, keysAt, JNode::Array)) {
+        } else if (expectKind(keys, keysAt, JNode::Array) &&
+                   withinLimit(keys, keysAt, limits::kMaxKeysPerTrack, "keys")) {
             track.keys.reserve(nodes_[std::size_t(keys)].childCount);
             std::size_t k = 0;
             for (std::int32_t c = nodes_[std::size_t(keys)].firstChild; c >= 0;
@@ -931,7 +1117,8 @@ public:
             } else if (n.key == "emitters") {
                 readObjectArray(c, ParamScope::Emitter, at, preset.emitters);
             } else if (n.key == "tracks") {
-                if (!expectKind(c, at, JNode::Array)) continue;
+                if (!expectKind(c, at, JNode::Array) || !withinLimit(c, at, limits::kMaxTracks, "tracks"))
+                    continue;
                 preset.tracks.reserve(n.childCount);
                 std::size_t i = 0;
                 for (std::int32_t t = n.firstChild; t >= 0; t = nodes_[std::size_t(t)].nextSibling, ++i) {
@@ -952,9 +1139,13 @@ public:
             if (n.kind != JNode::Object || n.childCount < 2) continue;
             std::set<sv> seen;
             for (std::int32_t c = n.firstChild; c >= 0; c = nodes_[std::size_t(c)].nextSibling) {
-                if (!seen.insert(nodes_[std::size_t(c)].key).second)
-                    issue(PresetIssue::Severity::Error, c, true, pointerOf(c),
-                          "duplicate key " + quoteString(nodes_[std::size_t(c)].key));
+                if (seen.insert(nodes_[std::size_t(c)].key).second) continue;
+                if (errors.size() >= limits::kMaxPresetIssues) {  // pointerOf is not free: count only
+                    ++suppressedErrors_;
+                    continue;
+                }
+                issue(PresetIssue::Severity::Error, c, true, pointerOf(c),
+                      "duplicate key " + quoteString(nodes_[std::size_t(c)].key));
             }
         }
     }
@@ -971,16 +1162,28 @@ public:
                        !e.pointer.empty();
             });
             if (covered) continue;
+            if (errors.size() >= limits::kMaxPresetIssues) {
+                ++suppressedErrors_;
+                continue;
+            }
             i.file = file_;
-            lineColumn(text_, nodes_[std::size_t(nodeAt(i.pointer))].offset, i.line, i.column);
+            positions_.push_back({true, errors.size(), nodes_[std::size_t(nodeAt(i.pointer))].offset});
             errors.push_back(std::move(i));
         }
     }
 
 private:
+    struct Position {
+        bool error;
+        std::size_t index;  // in errors or warnings
+        std::size_t offset;
+    };
     sv text_;
     std::string file_;
     const std::vector<JNode>& nodes_;
+    std::vector<Position> positions_;
+    std::size_t suppressedErrors_ = 0;
+    std::size_t suppressedWarnings_ = 0;
 };
 
 // ---------------------------------------------------------------------------
@@ -1174,6 +1377,15 @@ public:
     }
 };
 
+std::string tooLargeMessage(std::size_t bytes, bool atLeast = false) {
+    std::string m = atLeast ? "the file is at least " : "the file is ";
+    m += std::to_string(bytes);
+    m += " bytes, over the limit of ";
+    m += std::to_string(limits::kMaxPresetFileBytes);
+    m += " bytes (16 MiB) for a preset";
+    return m;
+}
+
 PresetIssue makeIssue(std::string file, std::string message) {
     PresetIssue i;
     i.file = std::move(file);
@@ -1208,15 +1420,28 @@ PresetLoadResult parsePreset(std::string_view jsonText, std::string_view fileNam
     PresetLoadResult result;
     const std::string file(fileName);
     try {
-        if (jsonText.size() > (std::size_t(1) << 30)) {
-            result.errors.push_back(makeIssue(file, "file too large"));
+        if (jsonText.size() > limits::kMaxPresetFileBytes) {
+            result.errors.push_back(makeIssue(file, tooLargeMessage(jsonText.size())));
             return result;
         }
         const sv body = jsonText;
+        // Text that is not UTF-8 JSON at all: say what it is.
+        if (body.substr(0, 2) == "\xFF\xFE" || body.substr(0, 2) == "\xFE\xFF") {
+            PresetIssue i = makeIssue(file, "UTF-16 text (byte order mark); a preset is UTF-8 JSON");
+            i.line = i.column = 1;
+            result.errors.push_back(std::move(i));
+            return result;
+        }
+        if (const std::size_t nul = body.find('\0'); nul != sv::npos) {
+            PresetIssue i = makeIssue(file, "a NUL byte: a preset is UTF-8 JSON text, not binary data");
+            lineColumn(body, nul, i.line, i.column);
+            result.errors.push_back(std::move(i));
+            return result;
+        }
         // nlohmann skips a UTF-8 byte order mark; so does the token re-scan.
         const std::size_t bom = body.substr(0, 3) == "\xEF\xBB\xBF" ? 3 : 0;
         std::vector<JNode> nodes;
-        nodes.reserve(jsonText.size() / 16 + 16);
+        nodes.reserve(std::min(jsonText.size() / 16 + 16, limits::kMaxJsonValues));
         TreeBuilder builder(body, bom, nodes);
         const bool parsed = nlohmann::json::sax_parse(body.begin(), body.end(), &builder,
                                                       nlohmann::json::input_format_t::json, true);
@@ -1233,6 +1458,7 @@ PresetLoadResult parsePreset(std::string_view jsonText, std::string_view fileNam
         reader.readPreset(preset);
         const bool versionRefused = !reader.errors.empty() && reader.errors.front().pointer == "/version";
         if (!versionRefused && nodes[0].kind == JNode::Object) reader.addValidation(validatePreset(preset));
+        reader.finish();
         result.warnings = std::move(reader.warnings);
         result.errors = std::move(reader.errors);
         if (result.errors.empty()) result.preset = std::move(preset);
@@ -1248,20 +1474,30 @@ PresetLoadResult parsePreset(std::string_view jsonText, std::string_view fileNam
 
 PresetLoadResult loadPreset(const std::string& path) {
     try {
+        auto failed = [&](std::string message) {
+            PresetLoadResult r;
+            r.errors.push_back(makeIssue(path, std::move(message)));
+            return r;
+        };
         std::ifstream in(path, std::ios::binary);
-        if (!in) {
-            PresetLoadResult r;
-            r.errors.push_back(makeIssue(path, std::string("cannot open: ") + std::strerror(errno)));
-            return r;
+        if (!in) return failed(std::string("cannot open: ") + std::strerror(errno));
+        std::error_code ec;
+        if (std::filesystem::is_directory(path, ec)) return failed("cannot open: Is a directory");
+        // Never read more than the limit (plus one byte to tell it is over),
+        // whatever the file (or a pipe, or /dev/zero) holds.
+        std::string text;
+        char chunk[65536];
+        while (in && text.size() <= limits::kMaxPresetFileBytes) {
+            in.read(chunk, sizeof chunk);
+            text.append(chunk, std::size_t(in.gcount()));
         }
-        std::ostringstream buffer;
-        buffer << in.rdbuf();
-        if (in.bad()) {
-            PresetLoadResult r;
-            r.errors.push_back(makeIssue(path, "read error"));
-            return r;
+        if (in.bad()) return failed("read error");
+        if (text.size() > limits::kMaxPresetFileBytes) {
+            // The size on disk when there is one (a pipe or a device has none).
+            const std::uintmax_t size = std::filesystem::file_size(path, ec);
+            return failed(!ec && size >= text.size() ? tooLargeMessage(std::size_t(size))
+                                                     : tooLargeMessage(text.size(), true));
         }
-        const std::string text = std::move(buffer).str();
         return parsePreset(text, path);
     } catch (const std::exception& e) {
         PresetLoadResult r;
@@ -1308,51 +1544,8 @@ SaveResult savePreset(const Preset& preset, const std::string& path) {
             return result;
         }
         const std::string text = presetToJson(preset);
-        namespace fs = std::filesystem;
-        const fs::path target(path);
-        if (target.filename().empty()) return fail("not saved: the path names no file");
-        const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
-        std::string tmpl = (dir / ("." + target.filename().string() + ".tmp-XXXXXX")).string();
-        const int fd = ::mkstemp(tmpl.data());
-        if (fd < 0)
-            return fail("not saved: cannot create a temporary file in " + dir.string() + ": " +
-                        std::strerror(errno));
-        auto abandon = [&](const std::string& what) {
-            const int saved = errno;
-            ::close(fd);
-            ::unlink(tmpl.c_str());
-            return fail("not saved: " + what + ": " + std::strerror(saved));
-        };
-        struct stat existing {};
-        const mode_t mode = ::stat(path.c_str(), &existing) == 0 ? (existing.st_mode & 07777) : 0644;
-        if (::fchmod(fd, mode) != 0) return abandon("cannot set permissions");
-        std::size_t written = 0;
-        while (written < text.size()) {
-            const ssize_t n = ::write(fd, text.data() + written, text.size() - written);
-            if (n < 0) {
-                if (errno == EINTR) continue;
-                return abandon("write failed");
-            }
-            written += std::size_t(n);
-        }
-        if (::fsync(fd) != 0) return abandon("fsync failed");
-        if (::close(fd) != 0) {
-            const int saved = errno;
-            ::unlink(tmpl.c_str());
-            return fail(std::string("not saved: close failed: ") + std::strerror(saved));
-        }
-        if (::rename(tmpl.c_str(), path.c_str()) != 0) {
-            const int saved = errno;
-            ::unlink(tmpl.c_str());
-            return fail(std::string("not saved: cannot rename the temporary file over the target: ") +
-                        std::strerror(saved));
-        }
-        // Make the rename durable (best effort: some file systems refuse).
-        const int dirFd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY);
-        if (dirFd >= 0) {
-            ::fsync(dirFd);
-            ::close(dirFd);
-        }
+        const std::string why = detail::writeFileAtomically(path, text);
+        if (!why.empty()) return fail("not saved: " + why);
     } catch (const std::exception& e) {
         return fail(std::string("not saved: ") + e.what());
     }

@@ -47,6 +47,7 @@
 // bit-identical. No allocation happens after construction. The hot loops
 // work on contiguous float arrays and are compiled for AVX-512, AVX2 and the
 // baseline (target_clones, chosen at load time): no global -march needed.
+#include <aerial/limits.hpp>
 #include <aerial/sky.hpp>
 
 #include <algorithm>
@@ -634,12 +635,17 @@ struct SkySolver::Impl {
 };
 
 SkySolver::Impl::Impl(const SkySolverDesc& d) : desc(d) {
-    desc.azimuthCount = desc.azimuthCount > 0 ? std::max(desc.azimuthCount, 4) : 128;
-    desc.elevationCount = desc.elevationCount > 0 ? std::max(desc.elevationCount, 2) : 64;
-    desc.layerCount = desc.layerCount > 0 ? std::max(desc.layerCount, 2) : SkySolverDesc{}.layerCount;
+    // Sizes over the caps of aerial/limits.hpp are clamped (desc() reports them).
+    desc.azimuthCount =
+        desc.azimuthCount > 0 ? std::clamp(desc.azimuthCount, 4, limits::kMaxSkyAzimuthCount) : 128;
+    desc.elevationCount =
+        desc.elevationCount > 0 ? std::clamp(desc.elevationCount, 2, limits::kMaxSkyElevationCount) : 64;
+    desc.layerCount = desc.layerCount > 0 ? std::clamp(desc.layerCount, 2, limits::kMaxSkyLayerCount)
+                                          : SkySolverDesc{}.layerCount;
     desc.opticalDepthHeights = desc.layerCount + 1;  // one row per shell
-    desc.opticalDepthAngles =
-        desc.opticalDepthAngles > 0 ? std::max(desc.opticalDepthAngles, 8) : kDefaultOpticalDepthAngles;
+    desc.opticalDepthAngles = desc.opticalDepthAngles > 0
+                                  ? std::clamp(desc.opticalDepthAngles, 8, limits::kMaxOpticalDepthAngles)
+                                  : kDefaultOpticalDepthAngles;
     if (desc.threadCount <= 0) desc.threadCount = int(std::max(1u, std::thread::hardware_concurrency()));
     desc.threadCount = std::min(desc.threadCount, 256);
 

@@ -703,6 +703,158 @@ class Render(unittest.TestCase):
         self.assertFalse(os.path.exists(png))
 
 
+class WriteFaults(unittest.TestCase):
+    """Every file aerial writes goes through core's atomic writer: faults injected
+    through its seam (AERIAL_TEST_FILE_FAULT, aerial/detail/file_system.hpp) and a
+    real file-size limit give exit 1 and one line naming the file and the reason;
+    the previous file is intact and no temporary is left (a killed process leaves
+    one, which the next write of that file removes)."""
+
+    OLD = b"old bake, must survive"
+    FIRST = "sky_000_0000_sun.exr"
+
+    def run_with(self, args, fault=None, preexec_fn=None):
+        env = dict(os.environ)
+        env.pop("AERIAL_TEST_FILE_FAULT", None)
+        if fault:
+            env["AERIAL_TEST_FILE_FAULT"] = fault
+        p = subprocess.run([AERIAL, *args], capture_output=True, text=True, timeout=120, env=env,
+                           preexec_fn=preexec_fn)
+        return p.returncode, p.stdout, p.stderr
+
+    def fresh_dir(self, name):
+        d = os.path.join(WORK, "faults", name)
+        shutil.rmtree(d, ignore_errors=True)
+        os.makedirs(d)
+        with open(os.path.join(d, self.FIRST), "wb") as f:
+            f.write(self.OLD)
+        return d
+
+    def assertOldIntact(self, d):
+        with open(os.path.join(d, self.FIRST), "rb") as f:
+            self.assertEqual(f.read(), self.OLD)
+
+    def bake(self, d, fault=None, preexec_fn=None):
+        return self.run_with(["bake", preset("hazy_sunset"), "--out", d, "--step", "12h", "--size", "16x8",
+                              "--quiet"], fault, preexec_fn)
+
+    def test_bake_faults(self):
+        cases = [
+            ("missing-directory", "cannot create a temporary file in {d}: No such file or directory"),
+            ("not-writable", "cannot create a temporary file in {d}: Permission denied"),
+            ("disk-full", "cannot write {d}/.sky_000_0000_sun.exr.tmp-"),
+            ("sync", "cannot flush {d}/.sky_000_0000_sun.exr.tmp-"),
+            ("rename", "cannot rename {d}/.sky_000_0000_sun.exr.tmp-"),
+        ]
+        reasons = {"disk-full": ": No space left on device", "sync": " to disk (fsync): Input/output error",
+                   "rename": " over {d}/sky_000_0000_sun.exr: Input/output error"}
+        for fault, start in cases:
+            with self.subTest(fault=fault):
+                d = self.fresh_dir(fault)
+                code, out, err = self.bake(d, fault)
+                self.assertEqual(code, 1, err)
+                self.assertEqual(len(err.splitlines()), 1, err)
+                self.assertTrue(err.startswith("aerial bake: " + start.format(d=d)), err)
+                if fault in reasons:
+                    self.assertTrue(err.rstrip("\n").endswith(reasons[fault].format(d=d)), err)
+                self.assertOldIntact(d)
+                self.assertEqual(sorted(os.listdir(d)), [self.FIRST], "a temporary was left")
+
+    def test_bake_past_a_file_size_limit(self):
+        import resource
+        import signal
+
+        def limit():
+            signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+            resource.setrlimit(resource.RLIMIT_FSIZE, (200, 200))
+
+        d = self.fresh_dir("fsize")
+        code, out, err = self.bake(d, preexec_fn=limit)
+        self.assertEqual(code, 1, err)
+        self.assertEqual(len(err.splitlines()), 1, err)
+        self.assertTrue(err.startswith("aerial bake: cannot write " + d + "/.sky_000_0000_sun.exr.tmp-"), err)
+        self.assertTrue(err.rstrip("\n").endswith(": File too large"), err)
+        self.assertOldIntact(d)
+        self.assertEqual(sorted(os.listdir(d)), [self.FIRST])
+
+    def test_bake_killed_mid_write(self):
+        d = self.fresh_dir("crash")
+        code, out, err = self.bake(d, "crash")
+        self.assertEqual(code, -9, err)  # SIGKILL
+        self.assertOldIntact(d)
+        left = sorted(os.listdir(d))
+        self.assertEqual(len(left), 2, left)
+        self.assertTrue(left[0].startswith(".sky_000_0000_sun.exr.tmp-"), left)
+        # The next bake replaces the file and removes the dead process's temporary.
+        code, out, err = self.bake(d)
+        self.assertEqual(code, 0, err)
+        self.assertFalse([f for f in os.listdir(d) if f.startswith(".")], os.listdir(d))
+        self.assertIn("manifest.json", os.listdir(d))
+
+    def test_render_faults(self):
+        if not has_render_command():
+            self.skipTest("aerial was built without the renderer")
+        d = os.path.join(WORK, "faults", "render")
+        shutil.rmtree(d, ignore_errors=True)
+        os.makedirs(d)
+        out_file = os.path.join(d, "frame.png")
+        with open(out_file, "wb") as f:
+            f.write(self.OLD)
+        cases = [("not-writable", "cannot create a temporary file in " + d + ": Permission denied"),
+                 ("sync", "cannot flush " + d + "/.frame.png.tmp-"),
+                 ("rename", "cannot rename " + d + "/.frame.png.tmp-")]
+        for fault, start in cases:
+            with self.subTest(fault=fault):
+                code, out, err = self.run_with(["render", "default", "--out", out_file, "--size", "16x8"], fault)
+                self.assertEqual(code, 1, err)
+                self.assertEqual(len(err.splitlines()), 1, err)
+                self.assertTrue(err.startswith("aerial render: " + start), err)
+                with open(out_file, "rb") as f:
+                    self.assertEqual(f.read(), self.OLD)
+                self.assertEqual(os.listdir(d), ["frame.png"])
+        # Killed before the rename (the image writer writes by name; the fault
+        # fires at the fsync that follows): the old frame survives, and the next
+        # render removes the dead process's temporary.
+        code, out, err = self.run_with(["render", "default", "--out", out_file, "--size", "16x8"], "crash")
+        self.assertEqual(code, -9, err)
+        with open(out_file, "rb") as f:
+            self.assertEqual(f.read(), self.OLD)
+        self.assertEqual(len(os.listdir(d)), 2, os.listdir(d))
+        code, out, err = self.run_with(["render", "default", "--out", out_file, "--size", "16x8"])
+        self.assertEqual(code, 0, err)
+        self.assertEqual(os.listdir(d), ["frame.png"])
+        with open(out_file, "rb") as f:
+            self.assertEqual(f.read(8), b"\x89PNG\r\n\x1a\n")
+
+    def test_unknown_fault_is_a_usage_error(self):
+        code, out, err = self.run_with(["day"], "meteor")
+        self.assertEqual(code, 2)
+        self.assertEqual(err, "aerial: AERIAL_TEST_FILE_FAULT=meteor is not a known fault\n")
+
+
+class Limits(unittest.TestCase):
+    """The caps of aerial/limits.hpp on the command line: one over is refused."""
+
+    def test_table_and_image_sizes(self):
+        out_dir = os.path.join(WORK, "limits_bake")
+        for size in ("4097x64", "128x2049"):
+            with self.subTest(size=size):
+                code, out, err = run("bake", preset("hazy_sunset"), "--out", out_dir, "--size", size)
+                self.assertEqual(code, 2, err)
+                self.assertIn("azimuth columns 4..4096 x elevation rows 2..2048", err)
+                self.assertFalse(os.path.exists(out_dir))
+
+    def test_huge_preset_file(self):
+        big = os.path.join(WORK, "huge_preset.json")
+        with open(big, "wb") as f:
+            f.write(b'{"version": 1}')
+            f.truncate(16 * 1024 * 1024 + 1)
+        code, out, err = run("validate", big)
+        self.assertEqual(code, 1, err)
+        self.assertEqual(out, big + ": the file is 16777217 bytes, over the limit of 16777216 bytes (16 MiB) for a "
+                              "preset\n")
+
+
 class Day(unittest.TestCase):
     def test_day_on_the_built_in_default(self):
         code, out, err = run("day")

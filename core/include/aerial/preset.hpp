@@ -23,6 +23,25 @@
 // Errors never escape as exceptions and never crash: loading returns either
 // a complete preset or the list of errors, each naming the file, the JSON
 // pointer of the field, its line:column in the file and the reason.
+//
+// Untrusted files: every size a file can ask for is capped (aerial/limits.hpp:
+// 16 MiB per file, 64 levels of nesting, 1 Mi JSON values, 1024 volumes and
+// emitters, 4096 tracks and keys per track, 4096-byte strings); over a cap
+// is an error naming the field and the limit.
+//
+// Numbers (what the loader does with each kind of bad value):
+//   * rejected, an error: NaN and infinities (JSON has no literal for them; a
+//     number too large for a double is a "number overflow" error), any value
+//     outside its parameter's range (param_table.hpp) — so negative
+//     densities and zero or negative half-extents (>= 0.001 m) are errors —,
+//     a zero quaternion and a zero gradient direction (no direction to
+//     normalise), Mie extinction below scattering;
+//   * repaired, a warning: a rotation quaternion or gradient direction that
+//     is finite, non-zero and off unit length by more than 1e-6 is
+//     normalised ("not a unit quaternion (length 2); normalised").
+// validatePreset (presets built in code) repairs nothing: it reports the
+// same values as errors, and savePreset refuses to write them — no NaN, Inf
+// or unnormalised rotation ever reaches a file.
 #pragma once
 
 #include <aerial/atmosphere.hpp>
@@ -171,9 +190,13 @@ std::vector<PresetIssue> validatePreset(const Preset& preset);
 /// reads back bit-exact. Does not validate.
 std::string presetToJson(const Preset& preset);
 
-/// Validates, then writes atomically: a temporary file in the same
-/// directory, flushed and fsync'ed, then renamed over `path`. On any failure
-/// the old file survives and the reason is returned. Never throws.
+/// Validates (so nothing non-finite or out of range is written), then
+/// writes atomically through aerial/detail/file_system.hpp: a temporary file
+/// in the same directory, flushed and fsync'ed, then renamed over `path`. On
+/// any failure (missing or read-only directory, full disk, fsync or rename
+/// error) the old file survives, no temporary is left, and the reason names
+/// the file ("not saved: cannot write dir/.x.json.tmp-...: No space left on
+/// device"). Never throws.
 SaveResult savePreset(const Preset& preset, const std::string& path);
 
 /// True when both presets hold the same values, bit for bit on every

@@ -49,9 +49,12 @@ namespace aerial {
 
 /// How the solver is built. Zero values mean defaults.
 struct SkySolverDesc {
-    int azimuthCount = 128;   ///< table columns (relative azimuth), >= 4
-    int elevationCount = 64;  ///< table rows (elevation 0..90 deg), >= 2
-    /// Layers along each view ray, >= 2: spherical shells between the
+    /// Table columns (relative azimuth), 4..limits::kMaxSkyAzimuthCount (4096).
+    /// Every size here is clamped into its range (aerial/limits.hpp);
+    /// SkySolver::desc() reports the sizes used.
+    int azimuthCount = 128;
+    int elevationCount = 64;  ///< table rows (elevation 0..90 deg), 2..kMaxSkyElevationCount (2048)
+    /// Layers along each view ray, 2..kMaxSkyLayerCount (1024): spherical shells between the
     /// viewer and the top holding equal mass of the mixed profile
     /// (exp(-h/H_R) and exp(-h/H_M) a quarter each, uniform in height half),
     /// so the 8 km Rayleigh and 1.2 km Mie scale heights and the upper air
@@ -66,7 +69,7 @@ struct SkySolverDesc {
     int opticalDepthHeights = 0;
     /// Optical-depth table columns: the light's zenith cosine from the
     /// geometric horizon at that height to 1, half of them within 0.05 of the
-    /// horizon; 0 = 128, >= 8.
+    /// horizon; 0 = 128, 8..kMaxOpticalDepthAngles (4096).
     int opticalDepthAngles = 0;
     int threadCount = 0;  ///< threads incl. the caller; 0 = all hardware threads, 1 = caller only
 };

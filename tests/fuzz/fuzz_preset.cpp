@@ -1,0 +1,86 @@
+// fuzz_preset.cpp — libFuzzer target for the preset loader
+// (aerial::parsePreset, the same code loadPreset runs on a file's bytes).
+//
+// For every input:
+//   * parsing never crashes, never throws, never hangs and allocates within
+//     the limits of aerial/limits.hpp (libFuzzer's -rss_limit_mb and
+//     -timeout catch the rest);
+//   * a failed load has at least one error, each naming the file;
+//   * a preset that loads is valid (validatePreset finds nothing), saves to
+//     JSON that loads back bit for bit (presetsIdentical), and evaluates at
+//     a few times of day to finite values only (nothing non-finite reaches
+//     the renderer).
+// Any broken property aborts, which libFuzzer reports as a crash.
+//
+// Built two ways (tests/fuzz/CMakeLists.txt): with clang and
+// -fsanitize=fuzzer as a real fuzzer (scripts/fuzz.sh), and in every normal
+// build with replay_main.cpp, which runs the seed corpus through it as a
+// CTest test.
+#include <aerial/evaluate.hpp>
+#include <aerial/preset.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <string_view>
+
+namespace {
+
+void check(bool ok, const char* what) {
+    if (!ok) {
+        std::fprintf(stderr, "fuzz_preset: property broken: %s\n", what);
+        std::abort();
+    }
+}
+
+bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+void checkState(const aerial::PresetState& s) {
+    check(finite(s.sunLight.body.direction) && finite(s.sunLight.illuminance), "finite sun");
+    check(finite(s.moonLight.body.direction) && finite(s.moonLight.illuminance), "finite moon");
+    const aerial::Environment& e = s.environment;
+    check(std::isfinite(e.fog.density) && std::isfinite(e.fog.falloff) && std::isfinite(e.fog.baseHeight),
+          "finite fog");
+    check(finite(e.atmosphere.rayleighScattering) && finite(e.atmosphere.mieScattering) &&
+              finite(e.atmosphere.mieExtinction),
+          "finite atmosphere");
+    for (const aerial::FogVolume& v : s.volumes)
+        check(finite(v.position) && finite(v.halfExtents) && std::isfinite(v.density) && finite(v.colour) &&
+                  finite(v.gradientDirection) && v.density >= 0.0 && v.halfExtents.x > 0.0 &&
+                  v.halfExtents.y > 0.0 && v.halfExtents.z > 0.0,
+              "finite, positive volume");
+    for (const aerial::Emitter& m : s.emitters)
+        check(finite(m.position) && std::isfinite(m.intensity) && finite(m.colour) && m.intensity >= 0.0,
+              "finite emitter");
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    const std::string_view text(reinterpret_cast<const char*>(data), size);
+    aerial::PresetLoadResult r = aerial::parsePreset(text, "fuzz.json");
+    if (!r.ok()) {
+        check(!r.errors.empty(), "a failed load reports an error");
+        for (const aerial::PresetIssue& e : r.errors)
+            check(e.file == "fuzz.json", "every error names the file");
+        return 0;
+    }
+    check(r.errors.empty(), "a loaded preset has no errors");
+    const aerial::Preset& preset = *r.preset;
+    check(aerial::validatePreset(preset).empty(), "a loaded preset validates");
+
+    const std::string saved = aerial::presetToJson(preset);
+    aerial::PresetLoadResult again = aerial::parsePreset(saved, "saved.json");
+    check(again.ok(), "the saved text loads");
+    check(aerial::presetsIdentical(preset, *again.preset), "save + load gives the same preset");
+
+    const aerial::CompiledPreset compiled(preset);
+    check(compiled.issues().empty(), "a valid preset compiles without issues");
+    aerial::PresetState state;
+    for (double t : {0.0, 6.25, 12.0, 18.75, 23.99}) {
+        compiled.evaluate(t, state);
+        checkState(state);
+    }
+    return 0;
+}
