@@ -22,16 +22,7 @@
 // depth is the global-fog formula with o.y - h0 -> dot(o - centre, g) - offset
 // and d.y -> dot(d, g) (core/src/bvh.hpp, opticalDepthPrepared).
 #include "common/frame.glsl"
-
-layout(std140, binding = 1) uniform VolumeBlock {
-    mat4 worldFromObject;
-    vec4 objectFromWorld0;
-    vec4 objectFromWorld1;
-    vec4 objectFromWorld2;
-    vec4 positionOffset;
-    vec4 gradientMode;
-    vec4 colour;
-} volume;
+#include "common/volume.glsl"
 
 #ifdef AERIAL_VERTEX_SHADER
 layout(location = 0) in vec3 aPosition;  // unit cube corner, object space
@@ -42,41 +33,6 @@ void main() { gl_Position = frame.clipFromWorld * (volume.worldFromObject * vec4
 
 layout(binding = 4) uniform sampler2D uLinearDepth;
 layout(location = 0) out vec4 outColour;
-
-vec3 toObject(vec3 w) {
-    return vec3(dot(volume.objectFromWorld0.xyz, w), dot(volume.objectFromWorld1.xyz, w),
-                dot(volume.objectFromWorld2.xyz, w));
-}
-
-/// Entry and exit parameters of o + t d against the unit cube or unit
-/// sphere (object space); tNear > tFar when missed.
-vec2 intersectUnitShape(vec3 o, vec3 d) {
-    if (volume.objectFromWorld0.w < 0.5) {
-        // Slabs |o_i + t d_i| <= 1.
-        float tNear = -3.0e38;
-        float tFar = 3.0e38;
-        for (int i = 0; i < 3; ++i) {
-            if (abs(d[i]) > 1e-30) {
-                float t1 = (-1.0 - o[i]) / d[i];
-                float t2 = (1.0 - o[i]) / d[i];
-                tNear = max(tNear, min(t1, t2));
-                tFar = min(tFar, max(t1, t2));
-            } else if (abs(o[i]) > 1.0) {
-                return vec2(1.0, 0.0);
-            }
-        }
-        return vec2(tNear, tFar);
-    }
-    // Unit sphere from the closest approach (no B^2 - AC cancellation).
-    float a = dot(d, d);
-    if (!(a > 0.0)) return vec2(1.0, 0.0);
-    float tMid = -dot(o, d) / a;
-    vec3 perp = o + tMid * d;
-    float h = 1.0 - dot(perp, perp);
-    if (!(h > 0.0)) return vec2(1.0, 0.0);
-    float halfChord = sqrt(h / a);
-    return vec2(tMid - halfChord, tMid + halfChord);
-}
 
 void main() {
     float depth01 = texelFetch(uLinearDepth, ivec2(gl_FragCoord.xy), 0).r;

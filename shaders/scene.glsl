@@ -1,71 +1,66 @@
-// scene.glsl — the opaque scene pass: meshes lit by the sun and moon light
-// that passes through the atmosphere, a sky ambient term and the emitters;
-// writes HDR colour and the normalised linear depth the fog passes read
-// (Wenzel 2006, section 6.3).
+// scene.glsl — the opaque scene pass: glTF metallic-roughness meshes (base
+// colour factor and sRGB texture, metallic, roughness, alpha mask) lit by
+// the sun and moon light that passes through the atmosphere, the sky and
+// the emitters (common/shading.glsl); writes HDR colour and the normalised
+// linear depth the fog passes read (Wenzel 2006, section 6.3). Meshes with
+// alpha mode "blend" are drawn later by transparent.glsl.
 //
 // Inputs:
 //   frame (common/frame.glsl): clipFromWorld, eye, forward, far; the lights'
 //     direction and illuminance at the ground E_ground (rgb); skyAmbient
-//     E_sky (rgb, cosine-weighted sky irradiance on an upward surface)
-//   ObjectBlock (std140, binding 3; ObjectBlock in renderer/src/gpu_types.hpp):
-//     worldFromObject, normal matrix (columns xyz of normalFromObject),
-//     albedo (rgb, 0..1), emission (rgb radiance)
+//     E_sky (rgb, cosine-weighted sky irradiance on an upward surface); the
+//     sky tables (units 0..3) for specular sky reflections
+//   ObjectBlock (common/object.glsl, binding 3): transform, material
+//   uBaseColour (unit 5): base-colour texture (sRGB, mipmapped), when used
 //   Emitters (std430 SSBO, binding 2): as in emitters.glsl
-//   vertex attributes: position [m] (0), normal (1), object space
+//   vertex attributes: position [m] (0), normal (1), object space;
+//     TEXCOORD_0 (2)
 // Outputs:
-//   location 0: radiance = emission + albedo / pi * (sum_lights E_ground
-//     max(n.l, 0) + E_sky (0.5 + 0.5 n.y) + sum_emitters colour i
-//     max(n.l, 0) / (1 + a r^2) [emitters: i read as irradiance per 1/m])
+//   location 0: radiance = emission + the shading of common/shading.glsl
+//     (exactly emission + base / pi (sum_lights E_ground max(n.l, 0) +
+//     E_sky (0.5 + 0.5 n.y) + sum_emitters colour i max(n.l, 0) / (1 + a r^2))
+//     for a non-metal with specular factor 0)
 //   location 1: depth01 = dot(p - eye, forward) / far (linear eye depth
 //     over the far distance)
+//   Mask: fragments whose alpha (opacity x texture alpha) is below the
+//   cutoff are discarded (colour and depth).
 #include "common/frame.glsl"
-
-layout(std140, binding = 3) uniform ObjectBlock {
-    mat4 worldFromObject;
-    mat4 normalFromObject;
-    vec4 albedo;
-    vec4 emission;
-} object;
+#include "common/object.glsl"
 
 #ifdef AERIAL_VERTEX_SHADER
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
+layout(location = 2) in vec2 aTexcoord;
 out vec3 vWorld;
 out vec3 vNormal;
+out vec2 vTexcoord;
 
 void main() {
     vec4 world = object.worldFromObject * vec4(aPosition, 1.0);
     vWorld = world.xyz;
     vNormal = mat3(object.normalFromObject) * aNormal;
+    vTexcoord = aTexcoord;
     gl_Position = frame.clipFromWorld * world;
 }
 #else
 #include "common/atmosphere.glsl"
-
-struct EmitterGpu {
-    vec4 positionIntensity;
-    vec4 colourAttenuation;
-};
-layout(std430, binding = 2) readonly buffer EmitterBlock { EmitterGpu emitters[]; };
+#include "common/sky_table.glsl"
+#include "common/shading.glsl"
 
 in vec3 vWorld;
 in vec3 vNormal;
+in vec2 vTexcoord;
 layout(location = 0) out vec4 outColour;
 layout(location = 1) out float outDepth01;
 
 void main() {
-    vec3 n = normalize(vNormal);
-    if (!gl_FrontFacing) n = -n;
-    vec3 irradiance = frame.sunIlluminance.rgb * max(dot(n, frame.sunDirection.xyz), 0.0) +
-                      frame.moonIlluminance.rgb * max(dot(n, frame.moonDirection.xyz), 0.0) +
-                      frame.skyAmbient.rgb * (0.5 + 0.5 * n.y);
-    for (int k = 0; k < frame.counts.x; ++k) {
-        vec3 toLight = emitters[k].positionIntensity.xyz - vWorld;
-        float r2 = dot(toLight, toLight);
-        float falloff = emitters[k].positionIntensity.w / (1.0 + max(emitters[k].colourAttenuation.w, 0.0) * r2);
-        irradiance += emitters[k].colourAttenuation.rgb * falloff * max(dot(n, toLight) * inversesqrt(max(r2, 1e-12)), 0.0);
-    }
-    outColour = vec4(min(object.emission.rgb + object.albedo.rgb / kPi * irradiance, vec3(frame.fogColour.w)), 1.0);
+    Surface s = surfaceAt(vTexcoord);
+    if (object.material.w > 0.5 && object.material.w < 1.5 && s.alpha < object.material.z) discard;
+    vec3 v = normalize(frame.eyeFar.xyz - vWorld);
+    vec3 n = shadingNormal(vNormal, gl_FrontFacing, v);
+    vec3 diffuse, specular;
+    shadeSurface(s, vWorld, n, v, diffuse, specular);
+    outColour = vec4(min(object.emission.rgb + diffuse + specular, vec3(frame.fogColour.w)), 1.0);
     outDepth01 = dot(vWorld - frame.eyeFar.xyz, frame.forwardNear.xyz) / frame.eyeFar.w;
 }
 #endif

@@ -655,21 +655,41 @@ bool refuseWrite(std::string* err, const std::string&, const std::vector<unsigne
 
 /// Images larger than this are refused before they are decoded (a small
 /// compressed file can claim a huge image).
-constexpr int kMaxImageSide = 16384;
-constexpr std::uint64_t kMaxImagePixels = 64ull << 20;
+/// (aerial/limits.hpp)
+constexpr int kMaxImageSide = limits::kMaxTextureSide;
+constexpr std::uint64_t kMaxImagePixels = limits::kMaxTexturePixels;
+
+/// What the scene's images may still decode to, over all of them: many small
+/// files that each claim a large image must not add up to gigabytes.
+struct ImageBudget {
+    std::uint64_t limit;  ///< GltfLoadOptions::maxImagePixels
+    std::uint64_t used = 0;
+};
 
 bool loadImageChecked(tinygltf::Image* image, const int index, std::string* err, std::string* warn,
                       int reqWidth, int reqHeight, const unsigned char* bytes, int size, void* user) {
     int w = 0, h = 0, comp = 0;
-    if (stbi_info_from_memory(bytes, size, &w, &h, &comp) &&
-        (w > kMaxImageSide || h > kMaxImageSide || std::uint64_t(w) * std::uint64_t(h) > kMaxImagePixels)) {
-        if (err)
-            *err += "images[" + std::to_string(index) + "] is " + std::to_string(w) + "x" +
-                    std::to_string(h) + ", over the limit of " + std::to_string(kMaxImageSide) +
-                    " per side and 64 Mi pixels\n";
-        return false;
+    if (stbi_info_from_memory(bytes, size, &w, &h, &comp)) {
+        if (w > kMaxImageSide || h > kMaxImageSide || std::uint64_t(w) * std::uint64_t(h) > kMaxImagePixels) {
+            if (err)
+                *err += "images[" + std::to_string(index) + "] is " + std::to_string(w) + "x" +
+                        std::to_string(h) + ", over the limit of " + std::to_string(kMaxImageSide) +
+                        " per side and 64 Mi pixels\n";
+            return false;
+        }
+        auto* budget = static_cast<ImageBudget*>(user);
+        const std::uint64_t pixels = std::uint64_t(w) * std::uint64_t(h);
+        if (budget && pixels > budget->limit - budget->used) {
+            if (err)
+                *err += "images[" + std::to_string(index) + "] (" + std::to_string(w) + "x" +
+                        std::to_string(h) + ") takes the scene's images over the limit of " +
+                        std::to_string(budget->limit) + " pixels in all\n";
+            return false;
+        }
+        if (budget) budget->used += pixels;
     }
-    return tinygltf::LoadImageData(image, index, err, warn, reqWidth, reqHeight, bytes, size, user);
+    // tinygltf reads its own options from the user pointer: pass none.
+    return tinygltf::LoadImageData(image, index, err, warn, reqWidth, reqHeight, bytes, size, nullptr);
 }
 
 /// The 12-byte GLB header, checked before tinygltf sees the file.
@@ -711,7 +731,8 @@ GltfLoadResult loadGltfScene(const std::string& path, const GltfLoadOptions& opt
 
         tinygltf::TinyGLTF gltf;
         FsLimit limit{options.maxFileBytes};
-        gltf.SetImageLoader(&loadImageChecked, nullptr);
+        ImageBudget imageBudget{options.maxImagePixels};
+        gltf.SetImageLoader(&loadImageChecked, &imageBudget);
         gltf.SetFsCallbacks({&fileExists, &expandNothing, &readCapped, &refuseWrite, &limit});
         tinygltf::Model model;
         std::string err, warn;

@@ -80,17 +80,37 @@ static_assert(offsetof(VolumeBlock, gradientMode) == 128);
 static_assert(offsetof(VolumeBlock, colour) == 144);
 static_assert(sizeof(VolumeBlock) == 160);
 
-/// shaders/scene.glsl, ObjectBlock (binding 3).
+/// shaders/common/object.glsl, ObjectBlock (binding 3; scene and
+/// transparent passes).
 struct ObjectBlock {
     Mat4 worldFromObject;
     Mat4 normalFromObject;
-    Vec4 albedo;
-    Vec4 emission;
+    Vec4 albedo;     ///< w: opacity
+    Vec4 emission;   ///< w: specular factor
+    Vec4 material;   ///< metallic, roughness, alpha cutoff, alpha mode (0, 1, 2)
+    Vec4 flags;      ///< x: base-colour texture used
+    Vec4 boundsMin;  ///< world bounds [m]
+    Vec4 boundsMax;
+    Vec4 cornerFog[8];  ///< rgb: in-scatter S', a: transmittance T'
 };
 static_assert(offsetof(ObjectBlock, normalFromObject) == 64);
 static_assert(offsetof(ObjectBlock, albedo) == 128);
 static_assert(offsetof(ObjectBlock, emission) == 144);
-static_assert(sizeof(ObjectBlock) == 160);
+static_assert(offsetof(ObjectBlock, material) == 160);
+static_assert(offsetof(ObjectBlock, flags) == 176);
+static_assert(offsetof(ObjectBlock, boundsMin) == 192);
+static_assert(offsetof(ObjectBlock, boundsMax) == 208);
+static_assert(offsetof(ObjectBlock, cornerFog) == 224);
+static_assert(sizeof(ObjectBlock) == 352);
+
+/// shaders/particles.glsl, per-instance vertex attributes (locations 0..3).
+struct SpriteInstance {
+    float centreRadius[4];
+    float albedoOpacity[4];
+    float emissionFade[4];
+    float localFog[4];  ///< volumes and emitters at the centre: rgb S', a T'
+};
+static_assert(sizeof(SpriteInstance) == 64);
 
 /// shaders/emitters.glsl and scene.glsl, EmitterGpu (std430, binding 2).
 struct EmitterGpu {
@@ -110,6 +130,7 @@ constexpr unsigned kSunMieUnit = 1;
 constexpr unsigned kMoonRayleighUnit = 2;
 constexpr unsigned kMoonMieUnit = 3;
 constexpr unsigned kLinearDepthUnit = 4;
-constexpr unsigned kTextureUnitCount = 5;
+constexpr unsigned kBaseColourUnit = 5;
+constexpr unsigned kTextureUnitCount = 6;
 
 }  // namespace aerial::renderer::detail

@@ -17,7 +17,10 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <limits>
+#include <map>
 #include <numeric>
 
 namespace aerial::renderer {
@@ -65,23 +68,33 @@ struct GpuMesh {
     GLuint vertexBuffer = 0;
     GLuint indexBuffer = 0;
     GLsizei indexCount = 0;
+    GLuint texture = 0;  ///< base colour (owned by Impl::textures); 0 = none
+    AlphaMode alphaMode = AlphaMode::Opaque;
+    glm::dvec3 boundsMin{0.0}, boundsMax{0.0};  ///< world bounds [m]
     detail::ObjectBlock block;
 };
+
+/// x when finite, clamped to [lo, hi]; `fallback` otherwise.
+double clampOr(double x, double lo, double hi, double fallback) {
+    return std::isfinite(x) ? std::clamp(x, lo, hi) : fallback;
+}
 
 GpuMesh uploadMesh(const SceneMesh& mesh, bool withNormals) {
     GpuMesh gpu;
     const std::size_t n = mesh.positions.size();
+    constexpr int kFloats = 8;  // position, normal, TEXCOORD_0
     std::vector<float> interleaved;
-    interleaved.reserve(n * 6);
+    interleaved.reserve(n * kFloats);
     for (std::size_t i = 0; i < n; ++i) {
         const glm::vec3 p = mesh.positions[i];
         const glm::vec3 nn = i < mesh.normals.size() ? mesh.normals[i] : glm::vec3(0, 1, 0);
-        interleaved.insert(interleaved.end(), {p.x, p.y, p.z, nn.x, nn.y, nn.z});
+        const glm::vec2 uv = i < mesh.texcoords.size() ? mesh.texcoords[i] : glm::vec2(0.0f);
+        interleaved.insert(interleaved.end(), {p.x, p.y, p.z, nn.x, nn.y, nn.z, uv.x, uv.y});
     }
     glCreateBuffers(1, &gpu.vertexBuffer);
     glNamedBufferStorage(
         gpu.vertexBuffer,
-        static_cast<GLsizeiptr>(std::max<std::size_t>(interleaved.size(), 6) * sizeof(float)),
+        static_cast<GLsizeiptr>(std::max<std::size_t>(interleaved.size(), kFloats) * sizeof(float)),
         interleaved.empty() ? nullptr : interleaved.data(), 0);
     glCreateBuffers(1, &gpu.indexBuffer);
     glNamedBufferStorage(
@@ -89,7 +102,7 @@ GpuMesh uploadMesh(const SceneMesh& mesh, bool withNormals) {
         static_cast<GLsizeiptr>(std::max<std::size_t>(mesh.indices.size(), 3) * sizeof(std::uint32_t)),
         mesh.indices.empty() ? nullptr : mesh.indices.data(), 0);
     glCreateVertexArrays(1, &gpu.vertexArray);
-    glVertexArrayVertexBuffer(gpu.vertexArray, 0, gpu.vertexBuffer, 0, 6 * sizeof(float));
+    glVertexArrayVertexBuffer(gpu.vertexArray, 0, gpu.vertexBuffer, 0, kFloats * sizeof(float));
     glVertexArrayElementBuffer(gpu.vertexArray, gpu.indexBuffer);
     glEnableVertexArrayAttrib(gpu.vertexArray, 0);
     glVertexArrayAttribFormat(gpu.vertexArray, 0, 3, GL_FLOAT, GL_FALSE, 0);
@@ -98,13 +111,79 @@ GpuMesh uploadMesh(const SceneMesh& mesh, bool withNormals) {
         glEnableVertexArrayAttrib(gpu.vertexArray, 1);
         glVertexArrayAttribFormat(gpu.vertexArray, 1, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float));
         glVertexArrayAttribBinding(gpu.vertexArray, 1, 0);
+        glEnableVertexArrayAttrib(gpu.vertexArray, 2);
+        glVertexArrayAttribFormat(gpu.vertexArray, 2, 2, GL_FLOAT, GL_FALSE, 6 * sizeof(float));
+        glVertexArrayAttribBinding(gpu.vertexArray, 2, 0);
     }
     gpu.indexCount = static_cast<GLsizei>(mesh.indices.size());
+    gpu.alphaMode = mesh.alphaMode;
     gpu.block.worldFromObject = mat4(mesh.worldFromObject);
     gpu.block.normalFromObject = mat4(glm::dmat4(glm::inverseTranspose(glm::dmat3(mesh.worldFromObject))));
-    gpu.block.albedo = vec4(colourOf(mesh.albedo));
-    gpu.block.emission = vec4(colourOf(mesh.emission));
+    gpu.block.albedo =
+        vec4(glm::clamp(colourOf(mesh.albedo), 0.0, 1.0), clampOr(mesh.opacity, 0.0, 1.0, 1.0));
+    gpu.block.emission = vec4(colourOf(mesh.emission), clampOr(mesh.specularFactor, 0.0, 1.0, 1.0));
+    const double mode = mesh.alphaMode == AlphaMode::Mask    ? 1.0
+                        : mesh.alphaMode == AlphaMode::Blend ? 2.0
+                                                             : 0.0;
+    gpu.block.material = {static_cast<float>(clampOr(mesh.metallic, 0.0, 1.0, 0.0)),
+                          static_cast<float>(clampOr(mesh.roughness, 0.0, 1.0, 1.0)),
+                          static_cast<float>(clampOr(mesh.alphaCutoff, 0.0, 1.0, 0.5)),
+                          static_cast<float>(mode)};
+    // World bounds of the referenced vertices (the transparent pass's fog corners).
+    glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+    for (std::uint32_t index : mesh.indices) {
+        const glm::dvec3 p =
+            glm::dvec3(mesh.worldFromObject * glm::dvec4(glm::dvec3(mesh.positions[index]), 1.0));
+        if (!finite(p)) continue;
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    if (!(lo.x <= hi.x)) lo = hi = glm::dvec3(0.0);
+    gpu.boundsMin = lo;
+    gpu.boundsMax = hi;
+    gpu.block.boundsMin = vec4(lo);
+    gpu.block.boundsMax = vec4(hi);
+    for (detail::Vec4& c : gpu.block.cornerFog) c = {0.0f, 0.0f, 0.0f, 1.0f};
     return gpu;
+}
+
+/// An sRGB8_A8 texture with a full mipmap chain, repeat wrapping, trilinear
+/// filtering (0 for a malformed image). Sets the unpack state it needs and
+/// restores it.
+GLuint uploadTexture(const SceneTexture& t) {
+    if (t.width <= 0 || t.height <= 0 || t.width > 16384 || t.height > 16384 ||
+        t.rgba.size() != std::size_t(t.width) * std::size_t(t.height) * 4)
+        return 0;
+    GLint unpackBuffer = 0, alignment = 4, rowLength = 0, skipRows = 0, skipPixels = 0;
+    glGetIntegerv(GL_PIXEL_UNPACK_BUFFER_BINDING, &unpackBuffer);
+    glGetIntegerv(GL_UNPACK_ALIGNMENT, &alignment);
+    glGetIntegerv(GL_UNPACK_ROW_LENGTH, &rowLength);
+    glGetIntegerv(GL_UNPACK_SKIP_ROWS, &skipRows);
+    glGetIntegerv(GL_UNPACK_SKIP_PIXELS, &skipPixels);
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+    glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
+    glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
+    int levels = 1;
+    while ((std::max(t.width, t.height) >> levels) > 0) ++levels;
+    GLuint texture = 0;
+    glCreateTextures(GL_TEXTURE_2D, 1, &texture);
+    glTextureStorage2D(texture, levels, GL_SRGB8_ALPHA8, t.width, t.height);
+    // Rows top first: glTF's (u, v) = (0, 0) is the image's top-left texel,
+    // which lands at t = 0 here, so TEXCOORD_0 is used unflipped.
+    glTextureSubImage2D(texture, 0, 0, 0, t.width, t.height, GL_RGBA, GL_UNSIGNED_BYTE, t.rgba.data());
+    glGenerateTextureMipmap(texture);
+    glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(texture, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTextureParameteri(texture, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, static_cast<GLuint>(unpackBuffer));
+    glPixelStorei(GL_UNPACK_ALIGNMENT, alignment);
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, rowLength);
+    glPixelStorei(GL_UNPACK_SKIP_ROWS, skipRows);
+    glPixelStorei(GL_UNPACK_SKIP_PIXELS, skipPixels);
+    return texture;
 }
 
 void destroyMesh(GpuMesh& mesh) {
@@ -212,6 +291,12 @@ struct Renderer::Impl {
     GLuint emptyVertexArray = 0;
     GpuMesh hull;  // unit cube
     std::vector<GpuMesh> meshes;
+    std::vector<GLuint> textures;  // base-colour textures of the meshes
+    GLuint whiteTexture = 0;       // bound to the base-colour unit when a mesh has none
+    std::vector<FogSprite> sprites;
+    GLuint spriteArray = 0, spriteBuffer = 0;
+    static constexpr int kTimers = 7;  // scene, sky, global fog, volumes, emitters, transparent, particles
+    GLuint timerQueries[kTimers] = {};
     GLuint frameBuffer = 0, volumeBuffer = 0, objectBuffer = 0, emitterBuffer = 0;
     GLsizeiptr emitterCapacity = 0;
 
@@ -300,6 +385,26 @@ struct Renderer::Impl {
         }
     }
 
+    void destroyScene() {
+        for (GpuMesh& m : meshes) destroyMesh(m);
+        meshes.clear();
+        if (!textures.empty()) glDeleteTextures(static_cast<GLsizei>(textures.size()), textures.data());
+        textures.clear();
+        sprites.clear();
+    }
+
+    /// The CPU fog of the volumes and emitters for the transparent meshes
+    /// and the particles (the global fog is theirs on the GPU).
+    FogScene localFog(const AtmosphereFrame& air, const FrameDesc& frameDesc) const {
+        FogSceneDesc fogDesc = fogSceneDesc(air, sunTable, moonTable);
+        fogDesc.heightFog.density = 0.0;
+        if (!frameDesc.passes.volumes) fogDesc.volumes.clear();
+        if (!frameDesc.passes.emitters) fogDesc.emitters.clear();
+        return FogScene(fogDesc);
+    }
+    void drawTransparent(const FogScene& fog, const CameraFrame& cam);
+    void drawParticles(const FogScene& fog, const CameraFrame& cam);
+
     void drawFullscreen(detail::Pass pass) {
         glUseProgram(shaders.program(pass));
         glBindVertexArray(emptyVertexArray);
@@ -327,6 +432,21 @@ Renderer::Renderer(const RendererDesc& desc) : impl_(std::make_unique<Impl>()) {
     }
     glCreateVertexArrays(1, &s.emptyVertexArray);
     s.hull = uploadMesh(makeBoxMesh(glm::dvec3(0.0), glm::dvec3(1.0)), false);
+    SceneTexture white;
+    white.width = white.height = 1;
+    white.rgba = {255, 255, 255, 255};
+    s.whiteTexture = uploadTexture(white);
+    glCreateBuffers(1, &s.spriteBuffer);
+    glNamedBufferData(s.spriteBuffer, sizeof(detail::SpriteInstance), nullptr, GL_STREAM_DRAW);
+    glCreateVertexArrays(1, &s.spriteArray);
+    glVertexArrayVertexBuffer(s.spriteArray, 0, s.spriteBuffer, 0, sizeof(detail::SpriteInstance));
+    glVertexArrayBindingDivisor(s.spriteArray, 0, 1);
+    for (GLuint a = 0; a < 4; ++a) {
+        glEnableVertexArrayAttrib(s.spriteArray, a);
+        glVertexArrayAttribFormat(s.spriteArray, a, 4, GL_FLOAT, GL_FALSE, a * 4 * sizeof(float));
+        glVertexArrayAttribBinding(s.spriteArray, a, 0);
+    }
+    glCreateQueries(GL_TIME_ELAPSED, Impl::kTimers, s.timerQueries);
     glCreateBuffers(1, &s.frameBuffer);
     glNamedBufferData(s.frameBuffer, sizeof(detail::FrameBlock), nullptr, GL_DYNAMIC_DRAW);
     glCreateBuffers(1, &s.volumeBuffer);
@@ -344,8 +464,12 @@ Renderer::~Renderer() {
     Impl& s = *impl_;
     if (s.emptyVertexArray == 0) return;  // never initialised (no context)
     s.destroyTargets();
-    for (GpuMesh& m : s.meshes) destroyMesh(m);
+    s.destroyScene();
     destroyMesh(s.hull);
+    glDeleteTextures(1, &s.whiteTexture);
+    glDeleteVertexArrays(1, &s.spriteArray);
+    glDeleteBuffers(1, &s.spriteBuffer);
+    glDeleteQueries(Impl::kTimers, s.timerQueries);
     glDeleteVertexArrays(1, &s.emptyVertexArray);
     for (GLuint b : {s.frameBuffer, s.volumeBuffer, s.objectBuffer, s.emitterBuffer}) glDeleteBuffers(1, &b);
 }
@@ -360,8 +484,8 @@ void Renderer::setScene(const SceneDesc& scene) {
     Impl& s = *impl_;
     if (s.emptyVertexArray == 0) return;
     detail::GlStateGuard guard(&s.desc.logger, s.desc.debugOutput, &s.stats.glErrors);
-    for (GpuMesh& m : s.meshes) destroyMesh(m);
-    s.meshes.clear();
+    s.destroyScene();
+    std::map<const SceneTexture*, GLuint> uploaded;  // textures shared between meshes upload once
     for (const SceneMesh& mesh : scene.meshes) {
         if (mesh.indices.empty()) continue;
         const std::size_t n = mesh.positions.size();
@@ -371,7 +495,35 @@ void Renderer::setScene(const SceneDesc& scene) {
             s.log(LogLevel::Warning, "renderer: a scene mesh has out-of-range indices; skipped");
             continue;
         }
-        s.meshes.push_back(uploadMesh(mesh, true));
+        GpuMesh gpu = uploadMesh(mesh, true);
+        if (const SceneTexture* texture = mesh.baseColorTexture.get()) {
+            auto found = uploaded.find(texture);
+            if (found == uploaded.end()) {
+                const GLuint name = uploadTexture(*texture);
+                if (name == 0) {
+                    s.log(LogLevel::Warning,
+                          "renderer: a base-colour texture has a bad size or pixel count; drawn untextured");
+                } else {
+                    s.textures.push_back(name);
+                }
+                found = uploaded.emplace(texture, name).first;
+            }
+            gpu.texture = found->second;
+            gpu.block.flags.x = gpu.texture != 0 ? 1.0f : 0.0f;
+        }
+        s.meshes.push_back(gpu);
+    }
+    for (const FogSprite& sprite : scene.sprites) {
+        const bool ok = finite(sprite.position) && std::isfinite(sprite.radius) && sprite.radius > 0.0 &&
+                        sprite.radius < 1e6 && std::fabs(sprite.position.x) < 1e15 &&
+                        std::fabs(sprite.position.y) < 1e15 && std::fabs(sprite.position.z) < 1e15;
+        if (!ok) continue;
+        FogSprite clean = sprite;
+        clean.albedo = glm::clamp(colourOf(sprite.albedo), 0.0, 1.0);
+        clean.opacity = clampOr(sprite.opacity, 0.0, 1.0, 0.0);
+        clean.emission = colourOf(sprite.emission);
+        clean.fadeDistance = clampOr(sprite.fadeDistance, 1e-3, 1e6, 1.0);
+        if (clean.opacity > 0.0) s.sprites.push_back(clean);
     }
     detail::drainGlErrors(s.desc.logger, "Renderer::setScene");
 }
@@ -439,9 +591,11 @@ void Renderer::Impl::render(const Camera& camera, const AtmosphereFrame& air, co
     fb.skyAmbient = vec4(colourOf(ambient));
     const double baseHeight =
         std::isfinite(air.fog.baseHeight) ? std::clamp(air.fog.baseHeight, -1e30, 1e30) : 0.0;
-    fb.fogParams = {static_cast<float>(nonNegative(air.fog.density, 1e30)),
-                    static_cast<float>(nonNegative(air.fog.falloff, 1e30)), static_cast<float>(baseHeight),
-                    static_cast<float>(static_cast<int>(air.fogColourMode))};
+    // Without the global fog pass, the transparent meshes and particles get
+    // no global fog either (they read the same density).
+    const double globalDensity = frameDesc.passes.globalFog ? nonNegative(air.fog.density, 1e30) : 0.0;
+    fb.fogParams = {static_cast<float>(globalDensity), static_cast<float>(nonNegative(air.fog.falloff, 1e30)),
+                    static_cast<float>(baseHeight), static_cast<float>(static_cast<int>(air.fogColourMode))};
     // Radiance cap per pass output: an RGBA16F target must never reach Inf
     // (the sun disc alone is ~3e5 for the default sun); see frame.glsl.
     const double cap = frameDesc.precision == ColourPrecision::Float ? 1e30 : 3.0e4;
@@ -458,10 +612,10 @@ void Renderer::Impl::render(const Camera& camera, const AtmosphereFrame& air, co
     glBindBufferBase(GL_UNIFORM_BUFFER, detail::kVolumeBinding, volumeBuffer);
     glBindBufferBase(GL_UNIFORM_BUFFER, detail::kObjectBinding, objectBuffer);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, detail::kEmitterBinding, emitterBuffer);
-    const GLuint textures[detail::kTextureUnitCount] = {sunSky.rayleigh, sunSky.mie, moonSky.rayleigh,
-                                                        moonSky.mie, linearDepth};
+    const GLuint unitTextures[detail::kTextureUnitCount] = {sunSky.rayleigh, sunSky.mie,  moonSky.rayleigh,
+                                                            moonSky.mie,     linearDepth, whiteTexture};
     for (unsigned unit = 0; unit < detail::kTextureUnitCount; ++unit) {
-        glBindTextureUnit(unit, textures[unit]);
+        glBindTextureUnit(unit, unitTextures[unit]);
         glBindSampler(unit, 0);
     }
 
@@ -484,22 +638,48 @@ void Renderer::Impl::render(const Camera& camera, const AtmosphereFrame& air, co
     glClearBufferfv(GL_COLOR, 1, far01);
     glClearBufferfi(GL_DEPTH_STENCIL, 0, 1.0f, 0);
 
-    // 1. Opaque scene: colour and linear depth.
+    // GPU timers (FrameDesc::gpuTimers): one GL_TIME_ELAPSED query per pass.
+    bool timerUsed[kTimers] = {};
+    double wallMs[kTimers] = {};
+    int openTimer = -1;
+    std::chrono::steady_clock::time_point passStart;
+    auto beginTimer = [&](int k) {
+        if (!frameDesc.gpuTimers) return;
+        glFinish();
+        passStart = std::chrono::steady_clock::now();
+        glBeginQuery(GL_TIME_ELAPSED, timerQueries[k]);
+        timerUsed[k] = true;
+        openTimer = k;
+    };
+    auto endTimer = [&] {
+        if (!frameDesc.gpuTimers) return;
+        glEndQuery(GL_TIME_ELAPSED);
+        glFinish();
+        wallMs[openTimer] =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - passStart).count();
+    };
+
+    // 1. Opaque and masked meshes: colour and linear depth.
     if (frameDesc.passes.scene && !meshes.empty()) {
+        beginTimer(0);
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LESS);
         glDepthMask(GL_TRUE);
         glUseProgram(shaders.program(detail::Pass::Scene));
         for (const GpuMesh& m : meshes) {
+            if (m.alphaMode == AlphaMode::Blend) continue;
             glNamedBufferSubData(objectBuffer, 0, sizeof m.block, &m.block);
+            glBindTextureUnit(detail::kBaseColourUnit, m.texture != 0 ? m.texture : whiteTexture);
             glBindVertexArray(m.vertexArray);
             glDrawElements(GL_TRIANGLES, m.indexCount, GL_UNSIGNED_INT, nullptr);
         }
+        endTimer();
     }
 
     // 2. Sky (colour only), drawn after the scene at the far plane (depth
     // 1, GL_LEQUAL): only pixels no geometry covered run the sky shader.
     if (frameDesc.passes.sky) {
+        beginTimer(1);
         const GLenum colourOnly[2] = {GL_COLOR_ATTACHMENT0, GL_NONE};
         glNamedFramebufferDrawBuffers(sceneTarget, 2, colourOnly);
         glEnable(GL_DEPTH_TEST);
@@ -507,6 +687,7 @@ void Renderer::Impl::render(const Camera& camera, const AtmosphereFrame& air, co
         glDepthMask(GL_FALSE);
         drawFullscreen(detail::Pass::Sky);
         glNamedFramebufferDrawBuffers(sceneTarget, 2, both);
+        endTimer();
     }
 
     // 3..5 composite into the colour, reading linear depth.
@@ -518,11 +699,14 @@ void Renderer::Impl::render(const Camera& camera, const AtmosphereFrame& air, co
     glBlendFuncSeparate(GL_ONE, GL_SRC_ALPHA, GL_ZERO, GL_ONE);
 
     if (frameDesc.passes.globalFog && fb.fogParams.x > 0.0f) {
+        beginTimer(2);
         glDisable(GL_DEPTH_TEST);
         drawFullscreen(detail::Pass::GlobalFog);
+        endTimer();
     }
 
     if (frameDesc.passes.volumes && !air.volumes.empty()) {
+        beginTimer(3);
         const double tanHalf = std::tan(0.5 * std::clamp(camera.verticalFov, 1e-4, 3.14149));
         const double aspect = camera.aspect > 0.0 && std::isfinite(camera.aspect) ? camera.aspect : 1.0;
         const double nearCorner =
@@ -538,7 +722,9 @@ void Renderer::Impl::render(const Camera& camera, const AtmosphereFrame& air, co
         std::stable_sort(
             volumes.begin(), volumes.end(),
             [](const PreparedVolume& a, const PreparedVolume& b) { return a.sortDistance > b.sortDistance; });
-        glUseProgram(shaders.program(detail::Pass::FogVolume));
+        glUseProgram(shaders.program(frameDesc.volumeMethod == VolumeMethod::RayMarched64
+                                         ? detail::Pass::FogVolumeMarched
+                                         : detail::Pass::FogVolume));
         glBindVertexArray(hull.vertexArray);
         glEnable(GL_DEPTH_CLAMP);  // hull parts beyond the far plane still rasterise (at depth 1)
         glEnable(GL_CULL_FACE);
@@ -562,13 +748,131 @@ void Renderer::Impl::render(const Camera& camera, const AtmosphereFrame& air, co
         glDisable(GL_CULL_FACE);
         glDisable(GL_DEPTH_CLAMP);
         glDisable(GL_DEPTH_TEST);
+        endTimer();
     }
 
     if (frameDesc.passes.emitters && emitterCount > 0) {
+        beginTimer(4);
         glDisable(GL_DEPTH_TEST);
         glBlendFuncSeparate(GL_ONE, GL_ONE, GL_ZERO, GL_ONE);
         drawFullscreen(detail::Pass::Emitters);
+        endTimer();
     }
+
+    // 6, 7: premultiplied "over", depth-tested against the opaque scene,
+    // without depth writes.
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+    const bool anyTransparent = std::any_of(meshes.begin(), meshes.end(),
+                                            [](const GpuMesh& m) { return m.alphaMode == AlphaMode::Blend; });
+    const bool drawMeshes = frameDesc.passes.transparent && anyTransparent;
+    const bool drawSprites = frameDesc.passes.particles && !sprites.empty();
+    if (drawMeshes || drawSprites) {
+        const FogScene fog = localFog(air, frameDesc);
+        if (drawMeshes) {
+            beginTimer(5);
+            drawTransparent(fog, cam);
+            endTimer();
+        }
+        if (drawSprites) {
+            beginTimer(6);
+            drawParticles(fog, cam);
+            endTimer();
+        }
+    }
+    glDisable(GL_DEPTH_TEST);
+
+    if (frameDesc.gpuTimers) {
+        double* out[kTimers] = {&stats.gpuMilliseconds.scene,     &stats.gpuMilliseconds.sky,
+                                &stats.gpuMilliseconds.globalFog, &stats.gpuMilliseconds.volumes,
+                                &stats.gpuMilliseconds.emitters,  &stats.gpuMilliseconds.transparent,
+                                &stats.gpuMilliseconds.particles};
+        double* wall[kTimers] = {&stats.wallMilliseconds.scene,     &stats.wallMilliseconds.sky,
+                                 &stats.wallMilliseconds.globalFog, &stats.wallMilliseconds.volumes,
+                                 &stats.wallMilliseconds.emitters,  &stats.wallMilliseconds.transparent,
+                                 &stats.wallMilliseconds.particles};
+        for (int k = 0; k < kTimers; ++k) {
+            GLuint64 ns = 0;
+            if (timerUsed[k]) glGetQueryObjectui64v(timerQueries[k], GL_QUERY_RESULT, &ns);
+            *out[k] = static_cast<double>(ns) * 1e-6;
+            *wall[k] = wallMs[k];
+        }
+        stats.timed = true;
+    }
+}
+
+void Renderer::Impl::drawTransparent(const FogScene& fog, const CameraFrame& cam) {
+    std::vector<std::pair<double, std::size_t>> order;  // (distance to the bounds centre, mesh)
+    for (std::size_t i = 0; i < meshes.size(); ++i) {
+        if (meshes[i].alphaMode != AlphaMode::Blend) continue;
+        order.emplace_back(glm::length(0.5 * (meshes[i].boundsMin + meshes[i].boundsMax) - cam.eye), i);
+    }
+    if (order.empty()) return;
+    // Back to front; equal distances keep the scene order.
+    std::stable_sort(order.begin(), order.end(),
+                     [](const auto& a, const auto& b) { return a.first > b.first; });
+    // Volumes and emitters per object from the CPU (the global fog is per
+    // vertex on the GPU and composited first, as fog_query.hpp's contract).
+    glUseProgram(shaders.program(detail::Pass::Transparent));
+    glEnable(GL_CULL_FACE);
+    for (const auto& entry : order) {
+        const GpuMesh& m = meshes[entry.second];
+        detail::ObjectBlock block = m.block;
+        for (int k = 0; k < 8; ++k) {
+            const glm::dvec3 corner((k & 1) ? m.boundsMax.x : m.boundsMin.x,
+                                    (k & 2) ? m.boundsMax.y : m.boundsMin.y,
+                                    (k & 4) ? m.boundsMax.z : m.boundsMin.z);
+            const FogQueryResult q = fog.query(cam.eye, corner);
+            block.cornerFog[k] = vec4(colourOf(q.inScatter), std::clamp(q.transmittance.x, 0.0, 1.0));
+        }
+        glNamedBufferSubData(objectBuffer, 0, sizeof block, &block);
+        glBindTextureUnit(detail::kBaseColourUnit, m.texture != 0 ? m.texture : whiteTexture);
+        glBindVertexArray(m.vertexArray);
+        // Back faces first, then front faces: a closed convex mesh blends in
+        // the right order without sorting its triangles.
+        glCullFace(GL_FRONT);
+        glDrawElements(GL_TRIANGLES, m.indexCount, GL_UNSIGNED_INT, nullptr);
+        glCullFace(GL_BACK);
+        glDrawElements(GL_TRIANGLES, m.indexCount, GL_UNSIGNED_INT, nullptr);
+        ++stats.transparentDrawn;
+    }
+    glDisable(GL_CULL_FACE);
+}
+
+void Renderer::Impl::drawParticles(const FogScene& fog, const CameraFrame& cam) {
+    std::vector<std::pair<double, std::size_t>> order;  // (view depth, sprite)
+    order.reserve(sprites.size());
+    for (std::size_t i = 0; i < sprites.size(); ++i)
+        order.emplace_back(glm::dot(sprites[i].position - cam.eye, cam.forward), i);
+    std::stable_sort(order.begin(), order.end(),
+                     [](const auto& a, const auto& b) { return a.first > b.first; });
+    std::vector<detail::SpriteInstance> instances;
+    instances.reserve(order.size());
+    for (const auto& entry : order) {
+        const FogSprite& p = sprites[entry.second];
+        if (entry.first + p.radius < cam.nearDistance) continue;  // wholly behind the eye
+        detail::SpriteInstance in;
+        // The volumes' and emitters' fog in front of the sprite, at its centre.
+        const FogQueryResult q = fog.query(cam.eye, p.position);
+        const glm::dvec4 values[4] = {
+            glm::dvec4(p.position, p.radius), glm::dvec4(p.albedo, p.opacity),
+            glm::dvec4(p.emission, p.fadeDistance),
+            glm::dvec4(colourOf(q.inScatter), std::clamp(q.transmittance.x, 0.0, 1.0))};
+        float* targets[4] = {in.centreRadius, in.albedoOpacity, in.emissionFade, in.localFog};
+        for (int a = 0; a < 4; ++a) {
+            for (int c = 0; c < 4; ++c) targets[a][c] = static_cast<float>(values[a][c]);
+        }
+        instances.push_back(in);
+    }
+    if (instances.empty()) return;
+    glNamedBufferData(spriteBuffer,
+                      static_cast<GLsizeiptr>(instances.size() * sizeof(detail::SpriteInstance)),
+                      instances.data(), GL_STREAM_DRAW);
+    glUseProgram(shaders.program(detail::Pass::Particles));
+    glBindVertexArray(spriteArray);
+    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(instances.size()));
+    stats.spritesDrawn = static_cast<int>(instances.size());
 }
 
 ShaderReloadResult Renderer::reloadShaders() { return reloadShaders(impl_->desc.shaderDirectory); }

@@ -198,6 +198,12 @@ const char* ShaderLibrary::fileOf(Pass pass) {
             return "fog_volume.glsl";
         case Pass::Emitters:
             return "emitters.glsl";
+        case Pass::Transparent:
+            return "transparent.glsl";
+        case Pass::Particles:
+            return "particles.glsl";
+        case Pass::FogVolumeMarched:
+            return "fog_volume_marched.glsl";
         case Pass::Count:
             break;
     }

@@ -41,7 +41,17 @@ GLuint linkProgram(GLuint vertexStage, GLuint fragmentStage, std::string& log);
 GLuint buildProgram(const std::string& path, const ShaderReader& reader, std::string& log);
 
 /// The renderer's programs by pass.
-enum class Pass { Sky, Scene, GlobalFog, FogVolume, Emitters, Count };
+enum class Pass {
+    Sky,
+    Scene,
+    GlobalFog,
+    FogVolume,
+    Emitters,
+    Transparent,
+    Particles,
+    FogVolumeMarched,
+    Count
+};
 
 class ShaderLibrary {
 public:

@@ -18,8 +18,9 @@
 //
 // Not read: cameras, lights, animations, skins, morph targets, texture
 // samplers (wrap/filter) and texture transforms, emissive, normal, occlusion
-// and metal/rough textures, TEXCOORD_1 and up, vertex colours. The scene
-// pass draws albedo (base colour factor) only for now: see SceneMesh.
+// and metal/rough textures, TEXCOORD_1 and up, vertex colours (the renderer
+// samples every texture with repeat wrapping and trilinear filtering). How
+// the material is shaded: SceneMesh.
 //
 // Errors (one line: "FILE: ELEMENT: reason", e.g. "cube.gltf:
 // meshes[0].primitives[0]: POSITION accessor (accessors[0]) has componentType
@@ -32,6 +33,7 @@
 // another mode than TRIANGLES (skipped), unusable normals (recomputed).
 #pragma once
 
+#include <aerial/limits.hpp>
 #include <aerial/renderer/scene.hpp>
 
 #include <cstdint>
@@ -45,10 +47,14 @@ enum class GltfNormals { Flat, Smooth };
 struct GltfLoadOptions {
     /// How normals are made for primitives that have none.
     GltfNormals computedNormals = GltfNormals::Flat;
-    std::uint64_t maxFileBytes = 64ull << 20;  ///< the .gltf/.glb and each external buffer or image
-    std::uint64_t maxVertices = 16u << 20;     ///< over all meshes, after node instancing
-    std::uint64_t maxTriangles = 16u << 20;    ///< over all meshes, after node instancing
-    int maxNodeDepth = 256;
+    // Caps (aerial/limits.hpp documents them all).
+    /// The .gltf/.glb and each external buffer or image [bytes].
+    std::uint64_t maxFileBytes = limits::kMaxGltfFileBytes;
+    std::uint64_t maxVertices = limits::kMaxGltfVertices;    ///< over all meshes, after node instancing
+    std::uint64_t maxTriangles = limits::kMaxGltfTriangles;  ///< over all meshes, after node instancing
+    int maxNodeDepth = limits::kMaxGltfNodeDepth;
+    /// Pixels of all images together, decoded (checked from each header first).
+    std::uint64_t maxImagePixels = limits::kMaxTexturePixelsTotal;
 };
 
 struct GltfLoadResult {

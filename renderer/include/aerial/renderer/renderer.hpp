@@ -17,13 +17,25 @@
 //
 // Passes, in order, into one HDR colour target (DESIGN.md "Global height fog"
 // and fog_query.hpp's compositing contract):
-//   1. scene: lit meshes, writing colour and normalised linear depth;
+//   1. scene: opaque and alpha-masked meshes (glTF metallic-roughness,
+//      shaders/common/shading.glsl), writing colour and normalised linear
+//      depth;
 //   2. sky where no geometry is (a full-screen triangle at the far plane,
 //      depth-tested): both tables with per-pixel phase functions, sun and
 //      moon discs;
 //   3. global fog: L <- L T_g + L_fog (1 - T_g);
 //   4. fog volumes, back to front: L <- L T_v + C_v (1 - T_v);
-//   5. emitters: L <- L + S_e.
+//   5. emitters: L <- L + S_e;
+//   6. transparent (alpha-blend) meshes, back to front by the distance from
+//      the eye to the centre of their world bounds (farthest first; back
+//      faces of a mesh before its front faces): global fog per vertex (the
+//      same integral as pass 3 for the optical depth, its colour per pixel
+//      with the phase functions), fog volumes and emitters per object from the
+//      CPU fog query (FogScene) at the 8 corners of the mesh's world bounds,
+//      interpolated trilinearly per fragment (Wenzel 2006);
+//   7. soft fog particles (SceneDesc::sprites), back to front, faded by the
+//      scene depth; global fog per vertex, the volumes' and emitters' fog
+//      from one CPU query per sprite (at its centre).
 // Ordering of volumes: sorted once per frame by the distance from the eye to
 // each volume's world bounds (0 when inside), farthest first, ties by index.
 // fog_query.hpp sorts per segment by the clipped entry distance; the two
@@ -124,6 +136,16 @@ struct RenderPasses {
     bool globalFog = true;
     bool volumes = true;
     bool emitters = true;
+    /// Alpha-blended meshes. Their fog follows the other switches: no global
+    /// fog when globalFog is off, no volume or emitter fog when those are off.
+    bool transparent = true;
+    bool particles = true;  ///< soft fog particles (SceneDesc::sprites)
+};
+
+/// How the fog-volume pass integrates a volume's density.
+enum class VolumeMethod {
+    Analytic,      ///< the closed form (default; DESIGN.md "Fog volumes")
+    RayMarched64,  ///< 64-step midpoint sum: the benchmark's reference
 };
 
 struct FrameDesc {
@@ -131,6 +153,13 @@ struct FrameDesc {
     int height = 0;  ///< [px]; 0 = 720
     ColourPrecision precision = ColourPrecision::Half;
     RenderPasses passes;
+    VolumeMethod volumeMethod = VolumeMethod::Analytic;
+    /// Measure every pass with GL timer queries (GL_TIME_ELAPSED) into
+    /// RenderStats::gpuMilliseconds, and on the CPU clock between glFinish
+    /// calls around each pass into RenderStats::wallMilliseconds; waits for
+    /// the GPU after every pass (for benchmarks, not for an interactive
+    /// frame).
+    bool gpuTimers = false;
 };
 
 struct ShaderReloadResult {
@@ -140,12 +169,33 @@ struct ShaderReloadResult {
     std::string log;
 };
 
+/// Time of each pass [ms] (FrameDesc::gpuTimers; RenderStats holds the
+/// timer-query and the wall-clock measure); 0 for a pass that did not run.
+struct PassTimes {
+    double scene = 0.0;
+    double sky = 0.0;
+    double globalFog = 0.0;
+    double volumes = 0.0;
+    double emitters = 0.0;
+    double transparent = 0.0;
+    double particles = 0.0;
+    double total() const { return scene + sky + globalFog + volumes + emitters + transparent + particles; }
+};
+
 /// Statistics of the last render.
 struct RenderStats {
     int volumesDrawn = 0;
     int volumesDrawnInside = 0;  ///< hulls drawn as back faces without depth test
     int emitters = 0;
-    int glErrors = 0;  ///< GL errors seen (each also logged)
+    int glErrors = 0;           ///< GL errors seen (each also logged)
+    int transparentDrawn = 0;   ///< alpha-blended meshes drawn
+    int spritesDrawn = 0;       ///< soft fog particles drawn
+    bool timed = false;         ///< the two timings below hold this frame's (FrameDesc::gpuTimers)
+    PassTimes gpuMilliseconds;  ///< GL timer queries
+    /// Wall time of each pass between glFinish calls: the steadier number on
+    /// a CPU rasteriser such as llvmpipe, which attributes queued work to
+    /// whichever query is open when it flushes.
+    PassTimes wallMilliseconds;
 };
 
 class Renderer {
@@ -162,7 +212,9 @@ public:
     /// Why creation failed ("" when valid).
     const std::string& error() const;
 
-    /// Uploads the opaque scene (replaces the previous one).
+    /// Uploads the scene (replaces the previous one): meshes (with their
+    /// base-colour textures, sRGB with mipmaps, shared when the meshes share
+    /// the texture) and fog sprites.
     void setScene(const SceneDesc& scene);
     /// Uploads the two hemisphere tables (sun, moon) as RGBA32F textures and
     /// derives the sky ambient irradiance; call when a solve completes. A
