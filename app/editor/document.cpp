@@ -1,0 +1,118 @@
+// editor/document.cpp — see document.hpp.
+#include "document.hpp"
+
+#include <filesystem>
+#include <utility>
+
+namespace aerial::editor {
+
+Document::Document() { reset(defaultPreset()); }
+
+void Document::reset(Preset preset, std::string path) {
+    preset_ = std::move(preset);
+    baseline_ = preset_;
+    path_ = std::move(path);
+    revision_ = nextRevision_++;
+    savedRevision_ = revision_;
+    clearHistory();
+}
+
+void Document::clearHistory() {
+    undo_.clear();
+    redo_.clear();
+    mergeKey_.clear();
+}
+
+PresetLoadResult Document::open(const std::string& path) {
+    PresetLoadResult result = loadPreset(path);
+    if (result.ok()) reset(*result.preset, path);
+    return result;
+}
+
+SaveResult Document::save(const std::string& path) {
+    SaveResult result = savePreset(preset_, path);
+    if (result.ok()) {
+        path_ = path;
+        savedRevision_ = revision_;
+        baseline_ = preset_;
+        mergeKey_.clear();
+    }
+    return result;
+}
+
+void Document::markDirty() {
+    if (savedRevision_ == revision_) savedRevision_ = 0;  // no state has revision 0
+}
+
+std::string Document::title() const {
+    std::string name =
+        path_.empty() ? std::string("Untitled") : std::filesystem::path(path_).filename().string();
+    if (dirty()) name += '*';
+    name += " - Aerial";
+    return name;
+}
+
+bool Document::apply(std::string_view label, std::string_view mergeKey,
+                     const std::function<void(Preset&)>& change) {
+    Preset before = preset_;
+    change(preset_);
+    if (presetsIdentical(before, preset_) && preset_.name == before.name &&
+        preset_.description == before.description)
+        return false;
+    redo_.clear();
+    const bool merge = !mergeKey.empty() && mergeKey == mergeKey_ && !undo_.empty();
+    if (!merge) {
+        undo_.push_back({std::string(label), std::move(before), revision_});
+        if (undo_.size() > kMaxUndoSteps) undo_.pop_front();
+    }
+    mergeKey_ = std::string(mergeKey);
+    revision_ = nextRevision_++;
+    return true;
+}
+
+std::string Document::undoLabel() const { return undo_.empty() ? std::string() : undo_.back().label; }
+std::string Document::redoLabel() const { return redo_.empty() ? std::string() : redo_.back().label; }
+
+bool Document::undo() {
+    if (undo_.empty()) return false;
+    Step step = std::move(undo_.back());
+    undo_.pop_back();
+    redo_.push_back({step.label, std::move(preset_), revision_});
+    preset_ = std::move(step.preset);
+    revision_ = step.revision;
+    mergeKey_.clear();
+    return true;
+}
+
+bool Document::redo() {
+    if (redo_.empty()) return false;
+    Step step = std::move(redo_.back());
+    redo_.pop_back();
+    undo_.push_back({step.label, std::move(preset_), revision_});
+    preset_ = std::move(step.preset);
+    revision_ = step.revision;
+    mergeKey_.clear();
+    return true;
+}
+
+std::string uniqueObjectId(const Preset& preset, bool volume, std::string_view base) {
+    auto taken = [&](const std::string& id) {
+        if (volume) {
+            for (const FogVolume& v : preset.volumes)
+                if (v.id == id) return true;
+        } else {
+            for (const Emitter& e : preset.emitters)
+                if (e.id == id) return true;
+        }
+        return false;
+    };
+    std::string id(base);
+    for (int n = 2; taken(id); ++n) {
+        id = base;
+        id += '_';
+        id += std::to_string(n);
+    }
+    return id;
+}
+
+}  // namespace aerial::editor

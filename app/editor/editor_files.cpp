@@ -1,0 +1,267 @@
+// editor/editor_files.cpp — files and safety: New, Open (dialog, recent,
+// drag and drop), Save / Save As, Load scene (glTF), the unsaved-changes
+// prompt (Save / Discard / Cancel) before anything that would lose work, the
+// load-error modal (the loader's errors, file:line:col: /pointer: reason; the
+// document is left as it was), crash recovery and Export for game.
+#include "editor.hpp"
+
+#include <imgui.h>
+
+#include <aerial/renderer/gltf.hpp>
+#include <aerial/renderer/scene.hpp>
+
+#include <glm/geometric.hpp>
+#include <glm/mat4x4.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <filesystem>
+
+namespace aerial::editor {
+namespace fs = std::filesystem;
+
+namespace {
+
+/// The CLI's validate format: "file:line:col: /pointer: reason".
+std::string issueText(const PresetIssue& issue) {
+    std::string text = issue.file;
+    if (issue.line > 0) {
+        text += ':';
+        text += std::to_string(issue.line);
+        text += ':';
+        text += std::to_string(issue.column);
+    }
+    text += ": ";
+    if (issue.severity == PresetIssue::Severity::Warning) text += "warning: ";
+    if (!issue.pointer.empty()) {
+        text += issue.pointer;
+        text += ": ";
+    }
+    text += issue.message;
+    return text;
+}
+
+std::string lowerExtension(const std::string& path) {
+    std::string e = fs::path(path).extension().string();
+    for (char& c : e) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return e;
+}
+
+}  // namespace
+
+void Editor::askUnsaved(Pending action, std::string path) {
+    pending_ = action;
+    pendingPath_ = std::move(path);
+    if (doc_.dirty())
+        openUnsavedModal_ = true;
+    else
+        runPending();
+}
+
+void Editor::requestNew() { askUnsaved(Pending::New, {}); }
+
+void Editor::requestOpen(const std::string& path) {
+    if (path.empty()) {
+        dialogPurpose_ = DialogPurpose::Open;
+        fileDialog_.open("Open preset", FileDialog::Mode::Open, {".json"},
+                         doc_.path().empty() ? std::string() : fs::path(doc_.path()).parent_path().string());
+        return;
+    }
+    askUnsaved(Pending::Open, path);
+}
+
+void Editor::requestQuit() { askUnsaved(Pending::Quit, {}); }
+
+void Editor::runPending() {
+    const Pending action = pending_;
+    pending_ = Pending::None;
+    continueAfterSave_ = false;
+    switch (action) {
+        case Pending::None:
+        case Pending::OpenRecovery:
+            break;
+        case Pending::New:
+            doc_.reset(defaultPreset());
+            select({Selection::Kind::Fog, -1});
+            selectedParam_.reset();
+            selectedKey_ = -1;
+            setStatus("New preset (the built-in default)");
+            break;
+        case Pending::Open:
+            openPreset(pendingPath_);
+            break;
+        case Pending::Quit:
+            quit_ = true;
+            break;
+    }
+}
+
+bool Editor::openPreset(const std::string& path) {
+    const PresetLoadResult result = doc_.open(path);
+    if (!result.ok()) {
+        std::string text;
+        for (const PresetIssue& e : result.errors) text += issueText(e) + "\n";
+        if (result.errors.empty()) text = path + ": cannot be loaded\n";
+        showError("Cannot open " + path + " (nothing was changed):", text);
+        std::error_code ec;
+        if (!fs::exists(path, ec)) recent_.remove(fs::absolute(path, ec).lexically_normal().string());
+        return false;
+    }
+    recent_.add(path);
+    select({Selection::Kind::Fog, -1});
+    selectedParam_.reset();
+    selectedKey_ = -1;
+    std::string status = "Opened " + path;
+    if (!result.warnings.empty()) {
+        status += " (";
+        status += std::to_string(result.warnings.size());
+        status += " warnings: ";
+        status += issueText(result.warnings.front());
+        status += ")";
+    }
+    setStatus(status);
+    return true;
+}
+
+bool Editor::savePresetTo(const std::string& path) {
+    const SaveResult result = doc_.save(path);
+    if (!result.ok()) {
+        std::string text;
+        for (const PresetIssue& e : result.errors) text += issueText(e) + "\n";
+        showError("Cannot save " + path + ":", text);
+        return false;
+    }
+    recent_.add(path);
+    setStatus("Saved " + path);
+    return true;
+}
+
+void Editor::saveOrSaveAs(bool forceDialog) {
+    if (!forceDialog && !doc_.path().empty()) {
+        savePresetTo(doc_.path());
+        return;
+    }
+    dialogPurpose_ = DialogPurpose::SaveAs;
+    std::string start = doc_.path();
+    if (start.empty()) start = (fs::current_path() / "untitled.json").string();
+    fileDialog_.open("Save preset as", FileDialog::Mode::Save, {".json"}, start);
+}
+
+bool Editor::loadScene(const std::string& path) {
+    renderer::GltfLoadResult loaded = renderer::loadGltfScene(path);
+    if (!loaded.ok()) {
+        showError("Cannot load the scene " + path + ":", loaded.error);
+        return false;
+    }
+    renderer_->setScene(loaded.scene);
+    lastRenderSignature_.clear();
+    scenePath_ = path;
+    // Frame the scene: the bounds of every vertex in world space.
+    glm::dvec3 lo(1e300), hi(-1e300);
+    for (const renderer::SceneMesh& mesh : loaded.scene.meshes)
+        for (const glm::vec3& p : mesh.positions) {
+            const glm::dvec3 w = glm::dvec3(mesh.worldFromObject * glm::dvec4(glm::dvec3(p), 1.0));
+            lo = glm::min(lo, w);
+            hi = glm::max(hi, w);
+        }
+    if (hi.x >= lo.x && viewportSize_.y > 0.0)
+        camera_.frame((lo + hi) * 0.5, std::max(0.5 * glm::length(hi - lo), 0.5),
+                      viewportSize_.x / viewportSize_.y);
+    std::string status = "Loaded scene " + path;
+    if (!loaded.warnings.empty()) {
+        status += " (";
+        status += loaded.warnings.front();
+        status += ")";
+    }
+    setStatus(status);
+    return true;
+}
+
+void Editor::handleDrops() {
+    std::vector<std::string> drops;
+    drops.swap(drops_);
+    for (const std::string& path : drops) {
+        const std::string ext = lowerExtension(path);
+        if (ext == ".json")
+            requestOpen(path);
+        else if (ext == ".gltf" || ext == ".glb")
+            loadScene(path);
+        else
+            setStatus("Cannot open " + path + ": drop a preset (.json) or a glTF scene (.gltf, .glb)");
+    }
+}
+
+void Editor::drawFileDialogs() {
+    const bool wasOpen = fileDialog_.isOpen();
+    if (fileDialog_.draw()) {
+        const std::string path = fileDialog_.result();
+        switch (dialogPurpose_) {
+            case DialogPurpose::Open:
+                askUnsaved(Pending::Open, path);
+                break;
+            case DialogPurpose::SaveAs:
+                if (savePresetTo(path) && continueAfterSave_) runPending();
+                break;
+            case DialogPurpose::Scene:
+                loadScene(path);
+                break;
+            case DialogPurpose::Screenshot: {
+                std::string error;
+                if (screenshot(path, error))
+                    setStatus("Screenshot " + path);
+                else
+                    showError("Cannot write the screenshot:", error);
+                break;
+            }
+            case DialogPurpose::Export:
+                startExport(path);
+                break;
+            case DialogPurpose::None:
+                break;
+        }
+        dialogPurpose_ = DialogPurpose::None;
+    } else if (wasOpen && !fileDialog_.isOpen()) {
+        // Cancelled: a Save As from the unsaved-changes prompt cancels what it guarded.
+        if (continueAfterSave_) {
+            continueAfterSave_ = false;
+            pending_ = Pending::None;
+        }
+        dialogPurpose_ = DialogPurpose::None;
+    }
+    if (export_.done()) {
+        if (export_.succeeded())
+            setStatus("Exported for game into " + export_.directory() + ": " + export_.summary());
+        else
+            showError("Export for game failed:", export_.summary());
+        export_.acknowledge();
+    }
+}
+
+void Editor::recover(bool accept) {
+    if (!recovery_) return;
+    if (accept) {
+        doc_.reset(recovery_->preset, recovery_->documentPath);
+        doc_.markDirty();
+        select({Selection::Kind::Fog, -1});
+        selectedParam_.reset();
+        setStatus("Recovered unsaved work from " + recovery_->recoveryFile);
+        std::fprintf(stderr, "aerial-editor: recovered unsaved work from %s\n",
+                     recovery_->recoveryFile.c_str());
+    } else {
+        setStatus("Discarded the unsaved work of the crashed session");
+    }
+    Autosave::discard(*recovery_);
+    recovery_.reset();
+}
+
+void Editor::startExport(const std::string& directory) {
+    std::string error;
+    if (!export_.start(doc_.preset(), directory, 0.5, error)) {
+        showError("Cannot export for game:", error);
+        return;
+    }
+    setStatus("Exporting for game (aerial bake) into " + directory);
+}
+
+}  // namespace aerial::editor

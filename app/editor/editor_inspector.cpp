@@ -1,0 +1,328 @@
+// editor/editor_inspector.cpp — the inspector, generated from the one
+// parameter table (core/include/aerial/param_table.hpp): every label carries
+// its unit, slider ranges are the table's ui range (logarithmic where the
+// table says so), tooltips are the table's doc with the valid range, colours
+// are linear-RGB pickers (float, HDR). Animatable parameters have a key
+// button (a diamond: filled = a key at the current time, outlined = the
+// parameter has a track, grey = constant). Editing a parameter that has a
+// track sets a key at the current time (auto-key); editing one without a
+// track changes its constant value. A slider drag is one undo step.
+#include "editor.hpp"
+
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include <glm/gtc/quaternion.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+namespace aerial::editor {
+namespace {
+
+constexpr double kDegrees = 180.0 / 3.14159265358979323846;
+
+std::string labelOf(const ParamDesc& p) {
+    std::string label(p.label);
+    if (!p.unit.empty()) {
+        label += " [";
+        label += p.unit;
+        label += ']';
+    }
+    return label;
+}
+
+bool startsWith(std::string_view text, std::string_view prefix) {
+    return text.substr(0, prefix.size()) == prefix;
+}
+
+/// The group a global parameter belongs to in the outliner.
+Selection::Kind globalGroup(const ParamDesc& p) {
+    if (startsWith(p.path, "sun.") || startsWith(p.path, "moon.")) return Selection::Kind::Lights;
+    if (startsWith(p.path, "fog.")) return Selection::Kind::Fog;
+    return Selection::Kind::Atmosphere;
+}
+
+/// Section title for a global parameter's path ("atmosphere.mie.x" -> "Mie").
+std::string sectionOf(const ParamDesc& p) {
+    const std::string_view path = p.path;
+    const std::size_t last = path.rfind('.');
+    if (last == std::string_view::npos) return {};
+    std::string_view head = path.substr(0, last);
+    const std::size_t dot = head.rfind('.');
+    if (dot != std::string_view::npos) head = head.substr(dot + 1);
+    std::string s(head);
+    if (!s.empty()) s[0] = char(std::toupper(static_cast<unsigned char>(s[0])));
+    return s;
+}
+
+bool lightningOnly(std::string_view key) {
+    return key == "seed" || key == "flashes_per_minute" || key == "flash_duration_s" || key == "time_scale";
+}
+
+}  // namespace
+
+void Editor::editParam(const ParamRef& ref, const double value[4], bool continuous) {
+    const std::string address = paramAddress(ref);
+    const double time = timeHours_;
+    const bool animated = trackOf(doc_.preset(), ref) != nullptr;
+    std::string label(ref.desc->label);
+    if (animated) label += " (key)";
+    doc_.apply(label, continuous ? "param:" + address : std::string(),
+               [&](Preset& p) { setValueAt(p, ref, value, time); });
+}
+
+bool Editor::keyButton(const ParamRef& ref) {
+    const float size = ImGui::GetFrameHeight();
+    const Track* track = trackOf(doc_.preset(), ref);
+    const int keyHere = track ? keyIndexAt(*track, timeHours_) : -1;
+    const bool clicked = ImGui::InvisibleButton("##key", ImVec2(size * 0.8f, size));
+    const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+    const ImVec2 c((lo.x + hi.x) * 0.5f, (lo.y + hi.y) * 0.5f);
+    const float r = size * 0.28f;
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    const ImU32 keyColour = IM_COL32(240, 190, 60, 255);
+    const ImU32 colour =
+        track ? keyColour
+              : (ImGui::IsItemHovered() ? IM_COL32(200, 200, 200, 255) : IM_COL32(110, 110, 110, 255));
+    const ImVec2 diamond[4] = {ImVec2(c.x, c.y - r), ImVec2(c.x + r, c.y), ImVec2(c.x, c.y + r),
+                               ImVec2(c.x - r, c.y)};
+    if (keyHere >= 0)
+        dl->AddConvexPolyFilled(diamond, 4, colour);
+    else
+        dl->AddPolyline(diamond, 4, colour, ImDrawFlags_Closed, 1.5f);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("%s", keyHere >= 0 ? "Remove the key at this time"
+                                : track      ? "Add a key at this time (the parameter is animated)"
+                                             : "Animate: add a key at this time");
+    if (clicked) {
+        const double time = timeHours_;
+        if (keyHere >= 0) {
+            const TrackTarget target = trackTargetOf(doc_.preset(), ref);
+            doc_.apply("Remove key", "", [&](Preset& p) { removeKey(p, target, keyHere); });
+        } else {
+            doc_.apply("Add key", "", [&](Preset& p) { keyParam(p, ref, time); });
+        }
+        selectedParam_ = ref;
+        const Track* after = trackOf(doc_.preset(), ref);
+        selectedKey_ = after ? keyIndexAt(*after, time) : -1;
+    }
+    return clicked;
+}
+
+void Editor::drawParam(const ParamRef& ref) {
+    const ParamDesc& p = *ref.desc;
+    ImGui::PushID(paramAddress(ref).c_str());
+    if (p.animatable)
+        keyButton(ref);
+    else
+        ImGui::Dummy(ImVec2(ImGui::GetFrameHeight() * 0.8f, ImGui::GetFrameHeight()));
+    ImGui::SameLine(0.0f, 4.0f);
+    const std::string label = labelOf(p);
+    double v[4];
+    readValueAt(doc_.preset(), ref, timeHours_, v);
+    const bool animated = trackOf(doc_.preset(), ref) != nullptr;
+    const bool selected = selectedParam_ && *selectedParam_ == ref;
+    if (animated) ImGui::PushStyleColor(ImGuiCol_FrameBg, ImVec4(0.35f, 0.27f, 0.10f, 0.8f));
+    if (selected) ImGui::PushStyleColor(ImGuiCol_Border, ImVec4(0.95f, 0.75f, 0.25f, 1.0f));
+    if (selected) ImGui::PushStyleVar(ImGuiStyleVar_FrameBorderSize, 1.0f);
+    bool changed = false;
+    bool continuous = true;
+    switch (p.type) {
+        case ParamType::Scalar: {
+            double lo = p.uiMin, hi = p.uiMax;
+            if (!(hi > lo)) lo = p.minValue, hi = p.maxValue;
+            const ImGuiSliderFlags flags = p.logScale ? ImGuiSliderFlags_Logarithmic : 0;
+            changed =
+                ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &v[0], &lo, &hi, "%.5g", flags);
+            break;
+        }
+        case ParamType::Vec3: {
+            const double lo = p.minValue, hi = p.maxValue;
+            const double span = (p.uiMax > p.uiMin ? p.uiMax - p.uiMin : 1.0);
+            changed = ImGui::DragScalarN(label.c_str(), ImGuiDataType_Double, v, 3, float(span / 400.0), &lo,
+                                         &hi, "%.4g");
+            break;
+        }
+        case ParamType::Colour: {
+            float c[3] = {float(v[0]), float(v[1]), float(v[2])};
+            changed =
+                ImGui::ColorEdit3(label.c_str(), c, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
+            v[0] = c[0], v[1] = c[1], v[2] = c[2];
+            break;
+        }
+        case ParamType::Quaternion: {
+            const glm::dquat q(v[3], v[0], v[1], v[2]);
+            glm::dvec3 euler = glm::eulerAngles(q) * kDegrees;
+            double e[3] = {euler.x, euler.y, euler.z};
+            const std::string eulerLabel = std::string(p.label) + " [deg XYZ]";
+            changed = ImGui::DragScalarN(eulerLabel.c_str(), ImGuiDataType_Double, e, 3, 0.5f, nullptr,
+                                         nullptr, "%.1f");
+            if (changed) {
+                const glm::dquat r(glm::dvec3(e[0], e[1], e[2]) / kDegrees);
+                v[0] = r.x, v[1] = r.y, v[2] = r.z, v[3] = r.w;
+            }
+            break;
+        }
+        case ParamType::Enum: {
+            int current = int(v[0]);
+            const std::string preview = current >= 0 && current < int(p.enumNames.size())
+                                            ? std::string(p.enumNames[std::size_t(current)])
+                                            : "?";
+            if (ImGui::BeginCombo(label.c_str(), preview.c_str())) {
+                for (std::size_t i = 0; i < p.enumNames.size(); ++i) {
+                    const std::string name(p.enumNames[i]);
+                    if (ImGui::Selectable(name.c_str(), int(i) == current)) {
+                        v[0] = double(i);
+                        changed = true;
+                    }
+                }
+                ImGui::EndCombo();
+            }
+            continuous = false;
+            break;
+        }
+        case ParamType::Int: {
+            long long i = (long long)(v[0]);
+            changed = ImGui::InputScalar(label.c_str(), ImGuiDataType_S64, &i, nullptr, nullptr, nullptr,
+                                         ImGuiInputTextFlags_EnterReturnsTrue);
+            v[0] = double(i);
+            continuous = false;
+            break;
+        }
+        case ParamType::String:
+            break;
+    }
+    if (selected) ImGui::PopStyleVar();
+    if (selected) ImGui::PopStyleColor();
+    if (animated) ImGui::PopStyleColor();
+    if (p.animatable && (ImGui::IsItemActivated() || ImGui::IsItemClicked())) {
+        if (!(selectedParam_ && *selectedParam_ == ref)) selectedKey_ = -1;
+        selectedParam_ = ref;
+    }
+    if (changed) editParam(ref, v, continuous);
+    if (ImGui::IsItemDeactivated()) doc_.closeMerge();
+    if (ImGui::IsItemHovered()) {
+        ImGui::BeginTooltip();
+        ImGui::PushTextWrapPos(360.0f);
+        ImGui::TextUnformatted(std::string(p.doc).c_str());
+        ImGui::PopTextWrapPos();
+        if (p.type != ParamType::Enum && p.type != ParamType::Quaternion && p.type != ParamType::String)
+            ImGui::TextDisabled("valid %g .. %g %s%s", p.minValue, p.maxValue, std::string(p.unit).c_str(),
+                                p.logScale ? "  (log slider)" : "");
+        ImGui::TextDisabled("%s", paramAddress(ref).c_str());
+        if (const Track* track = trackOf(doc_.preset(), ref))
+            ImGui::TextDisabled("animated: %zu keys (%s)", track->keys.size(),
+                                std::string(interpolationName(track->interpolation)).c_str());
+        ImGui::EndTooltip();
+    }
+    ImGui::PopID();
+}
+
+void Editor::drawInspector() {
+    const Preset& preset = doc_.preset();
+    ImGui::PushItemWidth(-std::min(190.0f, ImGui::GetWindowWidth() * 0.48f));
+    if (ImGui::Button("Key all changed")) {
+        int count = 0;
+        const Preset baseline = doc_.baseline();
+        doc_.apply("Key all changed", "", [&](Preset& p) { count = keyAllChanged(p, baseline, timeHours_); });
+        setStatus(std::to_string(count) + " keys set");
+    }
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Key every animatable parameter whose value here differs from the saved preset");
+    ImGui::Separator();
+
+    switch (selection_.kind) {
+        case Selection::Kind::None:
+            ImGui::TextDisabled("Nothing selected.");
+            ImGui::TextWrapped(
+                "Click a volume or an emitter in the viewport, or pick an item in the outliner.");
+            break;
+        case Selection::Kind::Atmosphere:
+        case Selection::Kind::Lights:
+        case Selection::Kind::Fog: {
+            if (selection_.kind == Selection::Kind::Atmosphere) {
+                std::string name = preset.name, description = preset.description;
+                if (ImGui::InputText("Preset name", &name))
+                    doc_.apply("Rename preset", "preset-name", [&](Preset& p) { p.name = name; });
+                if (ImGui::IsItemDeactivated()) doc_.closeMerge();
+                if (ImGui::InputTextMultiline("Description", &description,
+                                              ImVec2(0, ImGui::GetTextLineHeight() * 3)))
+                    doc_.apply("Edit description", "preset-description",
+                               [&](Preset& p) { p.description = description; });
+                if (ImGui::IsItemDeactivated()) doc_.closeMerge();
+            }
+            std::string section;
+            for (const ParamDesc& p : paramTable(ParamScope::Global)) {
+                if (globalGroup(p) != selection_.kind) continue;
+                const std::string s = sectionOf(p);
+                if (s != section) {
+                    section = s;
+                    ImGui::Spacing();
+                    ImGui::TextDisabled("%s", section.c_str());
+                    ImGui::Separator();
+                }
+                drawParam({&p, -1});
+            }
+            if (selection_.kind == Selection::Kind::Lights) {
+                ImGui::Spacing();
+                ImGui::TextDisabled("Now");
+                ImGui::Separator();
+                ImGui::Text("Sun elevation %.2f deg, azimuth %.1f deg",
+                            state_.sunLight.body.elevation * kDegrees,
+                            state_.sunLight.body.azimuth * kDegrees);
+                ImGui::Text("Moon elevation %.2f deg, lit %.0f%%", state_.moonLight.body.elevation * kDegrees,
+                            state_.moonLight.body.illuminatedFraction * 100.0);
+                const Location& where = preset.environment.location;
+                const double rise = sunriseHours(where), set = 24.0 - rise;
+                ImGui::Text("Sunrise %02d:%02d, sunset %02d:%02d, day %.1f h", int(rise),
+                            int((rise - int(rise)) * 60.0), int(set), int((set - int(set)) * 60.0),
+                            dayLengthHours(where));
+            }
+            break;
+        }
+        case Selection::Kind::Volume:
+        case Selection::Kind::Emitter: {
+            const bool volume = selection_.kind == Selection::Kind::Volume;
+            const ParamScope scope = volume ? ParamScope::Volume : ParamScope::Emitter;
+            const int index = selection_.index;
+            if (index < 0 || index >= int(volume ? preset.volumes.size() : preset.emitters.size())) break;
+            std::string name =
+                volume ? preset.volumes[std::size_t(index)].name : preset.emitters[std::size_t(index)].name;
+            const std::string id =
+                volume ? preset.volumes[std::size_t(index)].id : preset.emitters[std::size_t(index)].id;
+            ImGui::Dummy(ImVec2(ImGui::GetFrameHeight() * 0.8f, 1.0f));
+            ImGui::SameLine(0.0f, 4.0f);
+            if (ImGui::InputText("Name", &name))
+                doc_.apply("Rename", "rename:" + id, [&](Preset& p) { renameObject(p, scope, index, name); });
+            if (ImGui::IsItemDeactivated()) doc_.closeMerge();
+            if (ImGui::IsItemHovered())
+                ImGui::SetTooltip("id \"%s\" (what tracks refer to; never changes)", id.c_str());
+            const bool lightning =
+                !volume && preset.emitters[std::size_t(index)].kind == EmitterKind::Lightning;
+            for (const ParamDesc& p : paramTable(scope)) {
+                if (p.type == ParamType::String) continue;  // id and name above
+                if (!volume && !lightning && lightningOnly(p.path)) continue;
+                drawParam({&p, index});
+            }
+            if (lightning) {
+                ImGui::Spacing();
+                ImGui::Text("Flash now: %.2f",
+                            lightningFlash(preset.emitters[std::size_t(index)], timeHours_));
+            }
+            ImGui::Spacing();
+            if (ImGui::Button("Duplicate")) duplicateSelection();
+            ImGui::SameLine();
+            if (ImGui::Button("Delete")) deleteSelection();
+            ImGui::SameLine();
+            if (ImGui::Button("Frame (F)")) frameSelection();
+            break;
+        }
+    }
+    ImGui::PopItemWidth();
+}
+
+}  // namespace aerial::editor

@@ -1,0 +1,200 @@
+// editor/editor_outliner.cpp — the outliner (atmosphere, sun and moon,
+// global fog, every fog volume and emitter: select, rename inline, duplicate,
+// delete) and, below it, the sky preview: the solved sky seen from below as a
+// fisheye (zenith in the centre, the horizon on the rim, north up, east
+// right), through the same OCIO display transform as the viewport.
+#include "editor.hpp"
+
+#include <epoxy/gl.h>  // epoxy before any other GL header
+
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include <aerial/renderer/image.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <vector>
+
+namespace aerial::editor {
+namespace {
+
+constexpr int kSkyPreviewSize = 96;
+
+bool hasTracks(const Preset& preset, ParamScope scope, const std::string& id) {
+    for (const Track& t : preset.tracks)
+        if (t.target.scope == scope && t.target.objectId == id) return true;
+    return false;
+}
+
+}  // namespace
+
+void Editor::drawOutliner() {
+    const Preset& preset = doc_.preset();
+    const float previewHeight =
+        std::min(ImGui::GetContentRegionAvail().x, 150.0f) + ImGui::GetTextLineHeightWithSpacing();
+    ImGui::BeginChild("##outliner", ImVec2(0, -previewHeight), false);
+    auto item = [&](const char* label, Selection s) {
+        if (ImGui::Selectable(label, selection_ == s)) select(s);
+    };
+    item("Atmosphere", {Selection::Kind::Atmosphere, -1});
+    item("Sun & moon", {Selection::Kind::Lights, -1});
+    item("Global fog", {Selection::Kind::Fog, -1});
+
+    auto objects = [&](bool volume) {
+        const ParamScope scope = volume ? ParamScope::Volume : ParamScope::Emitter;
+        const Selection::Kind kind = volume ? Selection::Kind::Volume : Selection::Kind::Emitter;
+        const std::size_t count = volume ? preset.volumes.size() : preset.emitters.size();
+        char header[64];
+        std::snprintf(header, sizeof header, "%s (%zu)###%s", volume ? "Fog volumes" : "Emitters", count,
+                      volume ? "volumes" : "emitters");
+        if (!ImGui::TreeNodeEx(header, ImGuiTreeNodeFlags_DefaultOpen | ImGuiTreeNodeFlags_SpanAvailWidth))
+            return;
+        if (ImGui::BeginPopupContextItem()) {
+            if (volume) {
+                if (ImGui::MenuItem("Add box volume")) addVolumeInFront(FogVolumeShape::Box);
+                if (ImGui::MenuItem("Add ellipsoid volume")) addVolumeInFront(FogVolumeShape::Ellipsoid);
+            } else {
+                if (ImGui::MenuItem("Add emitter")) addEmitterInFront(EmitterKind::Point);
+                if (ImGui::MenuItem("Add lightning")) addEmitterInFront(EmitterKind::Lightning);
+            }
+            ImGui::EndPopup();
+        }
+        for (std::size_t i = 0; i < count; ++i) {
+            const std::string& id = volume ? preset.volumes[i].id : preset.emitters[i].id;
+            const std::string& name = volume ? preset.volumes[i].name : preset.emitters[i].name;
+            const Selection s{kind, int(i)};
+            ImGui::PushID(id.c_str());
+            if (renaming_ && selection_ == s) {
+                ImGui::SetNextItemWidth(-1.0f);
+                if (ImGui::IsWindowAppearing() || !ImGui::IsAnyItemActive()) ImGui::SetKeyboardFocusHere();
+                if (ImGui::InputText(
+                        "##rename", &renameBuffer_,
+                        ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll)) {
+                    const std::string newName = renameBuffer_;
+                    const int index = int(i);
+                    doc_.apply("Rename", "", [&](Preset& p) { renameObject(p, scope, index, newName); });
+                    renaming_ = false;
+                } else if (ImGui::IsItemDeactivated() || ImGui::IsKeyPressed(GLFW_KEY_ESCAPE)) {
+                    renaming_ = false;
+                }
+            } else {
+                std::string label = name.empty() ? id : name;
+                if (hasTracks(preset, scope, id)) label += "  ~";
+                if (ImGui::Selectable(label.c_str(), selection_ == s,
+                                      ImGuiSelectableFlags_AllowDoubleClick)) {
+                    select(s);
+                    if (ImGui::IsMouseDoubleClicked(0)) {
+                        renaming_ = true;
+                        renameBuffer_ = name;
+                    }
+                }
+                if (ImGui::IsItemHovered())
+                    ImGui::SetTooltip("%s (id %s)%s. Double-click to rename, right-click for more.",
+                                      name.c_str(), id.c_str(),
+                                      hasTracks(preset, scope, id) ? ", animated" : "");
+                if (ImGui::BeginPopupContextItem()) {
+                    select(s);
+                    if (ImGui::MenuItem("Rename")) {
+                        renaming_ = true;
+                        renameBuffer_ = name;
+                    }
+                    if (ImGui::MenuItem("Duplicate", "Ctrl+D")) duplicateSelection();
+                    if (ImGui::MenuItem("Delete", "Del")) deleteSelection();
+                    if (ImGui::MenuItem("Frame", "F")) frameSelection();
+                    ImGui::EndPopup();
+                }
+            }
+            ImGui::PopID();
+            if (volume ? i >= doc_.preset().volumes.size() : i >= doc_.preset().emitters.size()) break;
+        }
+        ImGui::TreePop();
+    };
+    objects(true);
+    objects(false);
+    ImGui::Spacing();
+    if (ImGui::SmallButton("+ Box")) addVolumeInFront(FogVolumeShape::Box);
+    ImGui::SameLine();
+    if (ImGui::SmallButton("+ Ellipsoid")) addVolumeInFront(FogVolumeShape::Ellipsoid);
+    ImGui::SameLine();
+    if (ImGui::SmallButton("+ Emitter")) addEmitterInFront(EmitterKind::Point);
+    ImGui::EndChild();
+    drawSkyPreview();
+}
+
+void Editor::updateSkyPreview() {
+    char settings[160];
+    std::snprintf(settings, sizeof settings, "%s|%s|%.6f", displayName_.c_str(), viewName_.c_str(),
+                  exposureEv_);
+    if (skyPreviewTexture_ && skyPreviewGeneration_ == skyGeneration_ && skyPreviewSettings_ == settings)
+        return;
+    // While scrubbing, refresh every 4th frame: the preview is small and the viewport matters more.
+    if (skyPreviewTexture_ && skyPreviewSettings_ == settings && (frameIndex_ % 4) != 0) return;
+    const int n = kSkyPreviewSize;
+    renderer::Image image;
+    image.width = image.height = n;
+    image.channels = 4;
+    image.pixels.assign(std::size_t(n) * std::size_t(n) * 4, 0.0f);
+    const double g = state_.environment.atmosphere.mieAnisotropy;
+    const SkyTable& sun = sunSolver_->table();
+    const SkyTable& moon = moonSolver_->table();
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) {
+            const double u = (x + 0.5) / n * 2.0 - 1.0, v = (y + 0.5) / n * 2.0 - 1.0;
+            const double r = std::sqrt(u * u + v * v);
+            float* px = &image.pixels[(std::size_t(y) * std::size_t(n) + std::size_t(x)) * 4];
+            if (r > 1.0) {
+                px[0] = px[1] = px[2] = 0.0f;
+                px[3] = 0.0f;
+                continue;
+            }
+            const double elevation = (1.0 - r) * kPi * 0.5;
+            const double azimuth = std::atan2(u, -v);  // north up, east right
+            const glm::dvec3 dir(std::cos(elevation) * std::sin(azimuth), std::sin(elevation),
+                                 -std::cos(elevation) * std::cos(azimuth));
+            glm::dvec3 L(0.0);
+            if (sun.generation > 0) L += skyRadiance(sun, g, dir, state_.sunLight.illuminanceSpace);
+            if (moon.generation > 0) L += skyRadiance(moon, g, dir, state_.moonLight.illuminanceSpace);
+            px[0] = float(L.x), px[1] = float(L.y), px[2] = float(L.z), px[3] = 1.0f;
+        }
+    const renderer::Image shown = display_->applyCpu(image);
+    std::vector<std::uint8_t> bytes(std::size_t(n) * std::size_t(n) * 4);
+    for (std::size_t i = 0; i < bytes.size(); ++i) {
+        const float c =
+            i % 4 == 3 ? image.pixels[i] : (shown.pixels.size() == bytes.size() ? shown.pixels[i] : 0.0f);
+        bytes[i] = std::uint8_t(std::lround(std::clamp(c, 0.0f, 1.0f) * 255.0f));
+    }
+    if (!skyPreviewTexture_) {
+        glCreateTextures(GL_TEXTURE_2D, 1, &skyPreviewTexture_);
+        glTextureStorage2D(skyPreviewTexture_, 1, GL_RGBA8, n, n);
+        glTextureParameteri(skyPreviewTexture_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTextureParameteri(skyPreviewTexture_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    }
+    GLint alignment = 4;
+    glGetIntegerv(GL_UNPACK_ALIGNMENT, &alignment);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTextureSubImage2D(skyPreviewTexture_, 0, 0, 0, n, n, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, alignment);
+    skyPreviewGeneration_ = skyGeneration_;
+    skyPreviewSettings_ = settings;
+}
+
+void Editor::drawSkyPreview() {
+    updateSkyPreview();
+    ImGui::TextDisabled("Sky preview");
+    const float size = std::min(ImGui::GetContentRegionAvail().x, 150.0f);
+    if (size < 8.0f || !skyPreviewTexture_) return;
+    ImGui::SetCursorPosX(ImGui::GetCursorPosX() + (ImGui::GetContentRegionAvail().x - size) * 0.5f);
+    ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(skyPreviewTexture_)),
+                 ImVec2(size, size));
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "The sun's and the moon's sky tables with the per-pixel phase functions\n"
+            "(zenith in the centre, horizon on the rim). Sky solve %.2f ms.",
+            skySolveMs_);
+}
+
+}  // namespace aerial::editor

@@ -1,0 +1,404 @@
+// editor/editor_timeline.cpp — the timeline along the bottom: controls
+// (play/pause, speed in game hours per real second, loop, jump to sunrise,
+// noon, sunset, the time as HH:MM), a 00:00-24:00 ruler to scrub on, a
+// summary row of every key in the preset, the selected parameter's track
+// (select, drag in time, double-click to add, right-click to delete or set
+// the interpolation; Delete, Ctrl+C / Ctrl+V while the mouse is over the
+// timeline) and the curve of its values over the day.
+#include "editor.hpp"
+
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <set>
+#include <string>
+
+namespace aerial::editor {
+namespace {
+
+std::string clock(double hours) {
+    const double t = wrapHours(hours);
+    const int minutes = int(std::floor(t * 60.0 + 1e-6));
+    char text[16];
+    std::snprintf(text, sizeof text, "%02d:%02d", (minutes / 60) % 24, minutes % 60);
+    return text;
+}
+
+bool parseClock(const std::string& text, double& hours) {
+    int h = 0, m = 0;
+    char extra = 0;
+    if (std::sscanf(text.c_str(), "%d:%d%c", &h, &m, &extra) == 2 && h >= 0 && h < 24 && m >= 0 && m < 60) {
+        hours = h + m / 60.0;
+        return true;
+    }
+    double v = 0.0;
+    if (std::sscanf(text.c_str(), "%lf%c", &v, &extra) == 1 && v >= 0.0 && v < 24.0) {
+        hours = v;
+        return true;
+    }
+    return false;
+}
+
+void diamond(ImDrawList* dl, ImVec2 c, float r, ImU32 colour, bool filled) {
+    const ImVec2 p[4] = {ImVec2(c.x, c.y - r), ImVec2(c.x + r, c.y), ImVec2(c.x, c.y + r),
+                         ImVec2(c.x - r, c.y)};
+    if (filled)
+        dl->AddConvexPolyFilled(p, 4, colour);
+    else
+        dl->AddPolyline(p, 4, colour, ImDrawFlags_Closed, 1.5f);
+}
+
+}  // namespace
+
+void Editor::advancePlayback(double dt) {
+    if (!playing_ || !(dt > 0.0)) return;
+    double t = timeHours_ + playSpeed_ * std::min(dt, 0.25);
+    if (t >= 24.0) {
+        if (loop_) {
+            t = std::fmod(t, 24.0);
+        } else {
+            t = 24.0 - 1.0 / 3600.0;
+            playing_ = false;
+        }
+    }
+    timeHours_ = t;
+}
+
+void Editor::jumpTo(double hours) { timeHours_ = wrapHours(hours); }
+
+void Editor::drawTimeline() {
+    const Preset& preset = doc_.preset();
+    const Location& where = preset.environment.location;
+
+    // --- controls ----------------------------------------------------------
+    if (ImGui::Button(playing_ ? "Pause" : "Play", ImVec2(54, 0))) playing_ = !playing_;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Play / pause (Space)");
+    ImGui::SameLine();
+    float speed = float(playSpeed_);
+    ImGui::SetNextItemWidth(90.0f);
+    if (ImGui::DragFloat("##speed", &speed, 0.02f, 0.01f, 24.0f, "%.2f h/s", ImGuiSliderFlags_Logarithmic))
+        playSpeed_ = std::clamp(double(speed), 0.01, 24.0);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Playback speed [game hours per real second]");
+    ImGui::SameLine();
+    ImGui::Checkbox("Loop", &loop_);
+    ImGui::SameLine();
+    if (ImGui::Button("Sunrise")) jumpTo(sunriseHours(where));
+    ImGui::SameLine();
+    if (ImGui::Button("Noon")) jumpTo(12.0);
+    ImGui::SameLine();
+    if (ImGui::Button("Sunset")) jumpTo(24.0 - sunriseHours(where));
+    ImGui::SameLine();
+    std::string timeText = clock(timeHours_);
+    ImGui::SetNextItemWidth(60.0f);
+    if (ImGui::InputText("##time", &timeText, ImGuiInputTextFlags_EnterReturnsTrue)) {
+        double t;
+        if (parseClock(timeText, t)) jumpTo(t);
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Time of day (HH:MM or hours), local solar time");
+
+    const Track* track = selectedParam_ ? trackOf(preset, *selectedParam_) : nullptr;
+    const TrackTarget target = selectedParam_ ? trackTargetOf(preset, *selectedParam_) : TrackTarget{};
+    ImGui::SameLine();
+    ImGui::TextDisabled("|");
+    ImGui::SameLine();
+    if (!selectedParam_) {
+        ImGui::TextDisabled("Select a parameter in the inspector to edit its keys");
+    } else {
+        const std::string address = paramAddress(*selectedParam_);
+        ImGui::Text("%s", address.c_str());
+        ImGui::SameLine();
+        if (ImGui::Button("Key")) {
+            const ParamRef ref = *selectedParam_;
+            const double t = timeHours_;
+            doc_.apply("Add key", "", [&](Preset& p) { keyParam(p, ref, t); });
+            if (const Track* after = trackOf(doc_.preset(), ref)) selectedKey_ = keyIndexAt(*after, t);
+            track = trackOf(doc_.preset(), ref);
+        }
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("Key the parameter at the current time");
+        ImGui::SameLine();
+        ImGui::BeginDisabled(!(track && selectedKey_ >= 0));
+        if (ImGui::Button("Delete key")) {
+            const int key = selectedKey_;
+            doc_.apply("Delete key", "", [&](Preset& p) { removeKey(p, target, key); });
+            selectedKey_ = -1;
+            track = trackOf(doc_.preset(), *selectedParam_);
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Copy") && track && selectedKey_ >= 0 && selectedKey_ < int(track->keys.size())) {
+            keyClipboard_ = {true, selectedParam_->desc->type, track->keys[std::size_t(selectedKey_)].value};
+            setStatus("Copied key");
+        }
+        ImGui::EndDisabled();
+        ImGui::SameLine();
+        ImGui::BeginDisabled(!keyClipboard_.valid);
+        if (ImGui::Button("Paste")) {
+            const ParamRef ref = *selectedParam_;
+            const double t = timeHours_;
+            const KeyClipboard clip = keyClipboard_;
+            bool ok = false;
+            doc_.apply("Paste key", "", [&](Preset& p) { ok = pasteKey(p, ref, clip, t); });
+            setStatus(ok ? "Pasted key at " + clock(t)
+                         : std::string("The copied key does not fit this parameter"));
+            track = trackOf(doc_.preset(), ref);
+        }
+        ImGui::EndDisabled();
+        if (track) {
+            ImGui::SameLine();
+            int interp = int(track->interpolation);
+            const char* names[] = {"step", "linear", "smooth"};
+            ImGui::SetNextItemWidth(80.0f);
+            if (ImGui::Combo("##interp", &interp, names, 3)) {
+                doc_.apply("Interpolation", "", [&](Preset& p) {
+                    if (Track* t = findTrack(p, target)) t->interpolation = Interpolation(interp);
+                });
+                track = trackOf(doc_.preset(), *selectedParam_);
+            }
+            if (ImGui::IsItemHovered())
+                ImGui::SetTooltip("Interpolation of the track (smooth never overshoots)");
+        }
+    }
+
+    // --- canvas: ruler, summary row, track row, curve ----------------------------
+    const float labelW = 110.0f;
+    const ImVec2 canvasPos = ImGui::GetCursorScreenPos();
+    const ImVec2 avail = ImGui::GetContentRegionAvail();
+    if (avail.x < labelW + 40.0f || avail.y < 50.0f) return;
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    const float x0 = canvasPos.x + labelW, x1 = canvasPos.x + avail.x - 8.0f;
+    const float rulerH = 18.0f, rowH = 18.0f;
+    const float yRuler = canvasPos.y, ySummary = yRuler + rulerH, yTrack = ySummary + rowH,
+                yCurve = yTrack + rowH;
+    const float yEnd = canvasPos.y + avail.y;
+    auto xOf = [&](double t) { return x0 + float(t / 24.0) * (x1 - x0); };
+    auto tOf = [&](float x) { return std::clamp(double(x - x0) / double(x1 - x0) * 24.0, 0.0, 24.0 - 1e-6); };
+
+    dl->AddRectFilled(ImVec2(x0, yRuler), ImVec2(x1, yEnd), IM_COL32(30, 30, 34, 255));
+    // Night shading: where the sun is below the horizon.
+    const double rise = sunriseHours(where), set = 24.0 - rise;
+    if (rise > 0.0 && rise < 12.0) {
+        dl->AddRectFilled(ImVec2(x0, ySummary), ImVec2(xOf(rise), yEnd), IM_COL32(20, 22, 40, 255));
+        dl->AddRectFilled(ImVec2(xOf(set), ySummary), ImVec2(x1, yEnd), IM_COL32(20, 22, 40, 255));
+    }
+    for (int h = 0; h <= 24; ++h) {
+        const float x = xOf(h);
+        const bool major = h % 3 == 0;
+        dl->AddLine(ImVec2(x, yRuler + (major ? 0.0f : rulerH * 0.55f)), ImVec2(x, yRuler + rulerH),
+                    IM_COL32(150, 150, 150, 255));
+        dl->AddLine(ImVec2(x, ySummary), ImVec2(x, yEnd), IM_COL32(255, 255, 255, major ? 22 : 10));
+        if (major && h < 24 && x1 - x0 > 200.0f) {
+            char label[8];
+            std::snprintf(label, sizeof label, "%02d:00", h);
+            dl->AddText(ImVec2(x + 3.0f, yRuler), IM_COL32(190, 190, 190, 255), label);
+        }
+    }
+    dl->AddText(ImVec2(canvasPos.x + 4.0f, ySummary + 2.0f), IM_COL32(170, 170, 170, 255), "All keys");
+    std::string rowLabel =
+        selectedParam_ ? std::string(selectedParam_->desc->label) : std::string("(no parameter)");
+    if (rowLabel.size() > 16) {
+        rowLabel.resize(15);
+        rowLabel += '~';
+    }
+    dl->AddText(ImVec2(canvasPos.x + 4.0f, yTrack + 2.0f), IM_COL32(230, 200, 120, 255), rowLabel.c_str());
+
+    // Ruler: scrub.
+    ImGui::SetCursorScreenPos(ImVec2(x0, yRuler));
+    ImGui::InvisibleButton("##ruler", ImVec2(x1 - x0, rulerH));
+    if (ImGui::IsItemActive()) {
+        timeHours_ = tOf(ImGui::GetIO().MousePos.x);
+        playing_ = false;
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Drag to scrub the time of day");
+
+    // Summary row: every key of every track; click jumps to its time.
+    std::set<double> times;
+    for (const Track& t : preset.tracks)
+        for (const TrackKey& k : t.keys) times.insert(k.timeHours);
+    ImGui::SetCursorScreenPos(ImVec2(x0, ySummary));
+    ImGui::InvisibleButton("##summary", ImVec2(x1 - x0, rowH));
+    const bool summaryClicked = ImGui::IsItemClicked();
+    const float mouseX = ImGui::GetIO().MousePos.x;
+    double nearest = -1.0;
+    for (double t : times) {
+        diamond(dl, ImVec2(xOf(t), ySummary + rowH * 0.5f), 4.0f, IM_COL32(170, 170, 170, 255), true);
+        if (std::abs(xOf(t) - mouseX) < 6.0f) nearest = t;
+    }
+    if (summaryClicked && nearest >= 0.0) jumpTo(nearest);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("%zu key times in %zu tracks; click a key to jump to it", times.size(),
+                          preset.tracks.size());
+
+    // Track row: select, drag, double-click to add, right-click menu.
+    ImGui::SetCursorScreenPos(ImVec2(x0, yTrack));
+    ImGui::InvisibleButton("##track", ImVec2(x1 - x0, rowH));
+    const bool trackHovered = ImGui::IsItemHovered(), trackActive = ImGui::IsItemActive();
+    if (track && selectedParam_) {
+        int hoveredKey = -1;
+        for (std::size_t i = 0; i < track->keys.size(); ++i) {
+            const float x = xOf(track->keys[i].timeHours);
+            const bool selected = int(i) == selectedKey_;
+            diamond(dl, ImVec2(x, yTrack + rowH * 0.5f), selected ? 6.0f : 5.0f,
+                    selected ? IM_COL32(255, 230, 120, 255) : IM_COL32(240, 190, 60, 255), true);
+            if (std::abs(x - mouseX) < 6.0f) hoveredKey = int(i);
+        }
+        if (ImGui::IsItemClicked(0)) {
+            selectedKey_ = hoveredKey;
+            draggingKey_ = hoveredKey >= 0;
+        }
+        if (ImGui::IsItemClicked(1) && hoveredKey >= 0) {
+            selectedKey_ = hoveredKey;
+            ImGui::OpenPopup("##keymenu");
+        }
+        if (trackHovered && ImGui::IsMouseDoubleClicked(0) && hoveredKey < 0) {
+            const ParamRef ref = *selectedParam_;
+            const double t = tOf(mouseX);
+            doc_.apply("Add key", "", [&](Preset& p) { keyParam(p, ref, t); });
+            if (const Track* after = trackOf(doc_.preset(), ref)) selectedKey_ = keyIndexAt(*after, t);
+            hoveredKey = -1;
+        }
+        if (draggingKey_ && trackActive && selectedKey_ >= 0 && ImGui::GetIO().MouseDelta.x != 0.0f) {
+            const int key = selectedKey_;
+            const double t = tOf(mouseX);
+            doc_.apply("Move key", "move-key:" + paramAddress(*selectedParam_), [&](Preset& p) {
+                if (Track* tr = findTrack(p, target)) moveKey(*tr, key, t);
+            });
+        }
+        if (draggingKey_ && !trackActive) {
+            draggingKey_ = false;
+            doc_.closeMerge();
+        }
+        track = trackOf(doc_.preset(), *selectedParam_);  // the edits above may have moved it
+        if (track && trackHovered && hoveredKey >= 0 && hoveredKey < int(track->keys.size()) &&
+            !ImGui::IsPopupOpen("##keymenu")) {
+            const TrackKey& k = track->keys[std::size_t(hoveredKey)];
+            if (selectedParam_->desc->type == ParamType::Scalar)
+                ImGui::SetTooltip("%s  %.6g", clock(k.timeHours).c_str(), k.value.x);
+            else
+                ImGui::SetTooltip("%s  (%.4g, %.4g, %.4g)", clock(k.timeHours).c_str(), k.value.x, k.value.y,
+                                  k.value.z);
+        }
+    }
+    if (ImGui::BeginPopup("##keymenu")) {
+        if (ImGui::MenuItem("Delete key", "Del") && selectedKey_ >= 0) {
+            const int key = selectedKey_;
+            doc_.apply("Delete key", "", [&](Preset& p) { removeKey(p, target, key); });
+            selectedKey_ = -1;
+        }
+        if (ImGui::MenuItem("Copy", "Ctrl+C")) {
+            if (const Track* t = selectedParam_ ? trackOf(doc_.preset(), *selectedParam_) : nullptr;
+                t && selectedKey_ >= 0 && selectedKey_ < int(t->keys.size()))
+                keyClipboard_ = {true, selectedParam_->desc->type, t->keys[std::size_t(selectedKey_)].value};
+        }
+        if (ImGui::MenuItem("Jump to key") && selectedParam_) {
+            if (const Track* t = trackOf(doc_.preset(), *selectedParam_);
+                t && selectedKey_ >= 0 && selectedKey_ < int(t->keys.size()))
+                jumpTo(t->keys[std::size_t(selectedKey_)].timeHours);
+        }
+        const char* names[] = {"Step", "Linear", "Smooth"};
+        for (int i = 0; i < 3; ++i)
+            if (ImGui::MenuItem(names[i])) {
+                doc_.apply("Interpolation", "", [&](Preset& p) {
+                    if (Track* t = findTrack(p, target)) t->interpolation = Interpolation(i);
+                });
+            }
+        ImGui::EndPopup();
+    }
+
+    // Keyboard on the timeline: Delete, Ctrl+C, Ctrl+V.
+    if (ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows) && !ImGui::GetIO().WantTextInput &&
+        selectedParam_) {
+        const Track* t = trackOf(doc_.preset(), *selectedParam_);
+        if (ImGui::IsKeyPressed(GLFW_KEY_DELETE, false) && t && selectedKey_ >= 0) {
+            const int key = selectedKey_;
+            doc_.apply("Delete key", "", [&](Preset& p) { removeKey(p, target, key); });
+            selectedKey_ = -1;
+        }
+        if (ImGui::GetIO().KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_C, false) && t && selectedKey_ >= 0 &&
+            selectedKey_ < int(t->keys.size()))
+            keyClipboard_ = {true, selectedParam_->desc->type, t->keys[std::size_t(selectedKey_)].value};
+        if (ImGui::GetIO().KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_V, false) && keyClipboard_.valid) {
+            const ParamRef ref = *selectedParam_;
+            const double now = timeHours_;
+            const KeyClipboard clip = keyClipboard_;
+            doc_.apply("Paste key", "", [&](Preset& p) { pasteKey(p, ref, clip, now); });
+        }
+    }
+    timelineHovered_ = ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows);
+
+    // Curve view: the selected parameter's value over the day.
+    track = selectedParam_ ? trackOf(doc_.preset(), *selectedParam_) : nullptr;
+    if (yEnd - yCurve > 24.0f && selectedParam_) {
+        const ParamRef ref = *selectedParam_;
+        const int components = ref.desc->type == ParamType::Scalar ? 1 : 3;
+        constexpr int kSamples = 192;
+        double values[kSamples + 1][3];
+        double lo = 1e300, hi = -1e300;
+        for (int s = 0; s <= kSamples; ++s) {
+            double v[4];
+            readValueAt(doc_.preset(), ref, 24.0 * s / kSamples * (1.0 - 1e-9), v);
+            for (int c = 0; c < components; ++c) {
+                values[s][c] = v[c];
+                lo = std::min(lo, v[c]);
+                hi = std::max(hi, v[c]);
+            }
+        }
+        if (!(hi > lo)) {
+            const double pad = std::max(std::abs(hi) * 0.1, 1e-6);
+            lo -= pad;
+            hi += pad;
+        }
+        const float top = yCurve + 6.0f, bottom = yEnd - 6.0f;
+        auto yOf = [&](double v) { return bottom - float((v - lo) / (hi - lo)) * (bottom - top); };
+        const ImU32 colours[3] = {components == 1 ? IM_COL32(240, 190, 60, 255) : IM_COL32(230, 80, 80, 255),
+                                  IM_COL32(90, 200, 90, 255), IM_COL32(90, 140, 240, 255)};
+        for (int c = 0; c < components; ++c)
+            for (int s = 0; s < kSamples; ++s)
+                dl->AddLine(ImVec2(xOf(24.0 * s / kSamples), yOf(values[s][c])),
+                            ImVec2(xOf(24.0 * (s + 1) / kSamples), yOf(values[s + 1][c])), colours[c], 1.5f);
+        if (track)
+            for (std::size_t i = 0; i < track->keys.size(); ++i)
+                for (int c = 0; c < components; ++c)
+                    dl->AddCircleFilled(ImVec2(xOf(track->keys[i].timeHours), yOf(track->keys[i].value[c])),
+                                        int(i) == selectedKey_ ? 4.5f : 3.0f, colours[c]);
+        char range[64];
+        std::snprintf(range, sizeof range, "%.4g", hi);
+        dl->AddText(ImVec2(canvasPos.x + 4.0f, top - 4.0f), IM_COL32(150, 150, 150, 255), range);
+        std::snprintf(range, sizeof range, "%.4g", lo);
+        dl->AddText(ImVec2(canvasPos.x + 4.0f, bottom - 12.0f), IM_COL32(150, 150, 150, 255), range);
+        if (!ref.desc->unit.empty()) {
+            std::string unit = "[";
+            unit += ref.desc->unit;
+            unit += ']';
+            dl->AddText(ImVec2(canvasPos.x + 4.0f, (top + bottom) * 0.5f - 6.0f),
+                        IM_COL32(150, 150, 150, 255), unit.c_str());
+        }
+    }
+    // Scrub on the curve area too.
+    if (yEnd - yCurve > 4.0f) {
+        ImGui::SetCursorScreenPos(ImVec2(x0, yCurve));
+        ImGui::InvisibleButton("##curve", ImVec2(x1 - x0, yEnd - yCurve));
+        if (ImGui::IsItemActive()) {
+            timeHours_ = tOf(ImGui::GetIO().MousePos.x);
+            playing_ = false;
+        }
+        if (ImGui::IsItemHovered() && selectedParam_) {
+            double v[4];
+            const double t = tOf(mouseX);
+            readValueAt(doc_.preset(), *selectedParam_, t, v);
+            if (selectedParam_->desc->type == ParamType::Scalar)
+                ImGui::SetTooltip("%s  %.6g", clock(t).c_str(), v[0]);
+            else
+                ImGui::SetTooltip("%s  (%.4g, %.4g, %.4g)", clock(t).c_str(), v[0], v[1], v[2]);
+        }
+    }
+    // Playhead.
+    const float xt = xOf(timeHours_);
+    dl->AddLine(ImVec2(xt, yRuler), ImVec2(xt, yEnd), IM_COL32(255, 90, 70, 255), 2.0f);
+    dl->AddTriangleFilled(ImVec2(xt - 5.0f, yRuler), ImVec2(xt + 5.0f, yRuler), ImVec2(xt, yRuler + 7.0f),
+                          IM_COL32(255, 90, 70, 255));
+}
+
+}  // namespace aerial::editor

@@ -1,0 +1,408 @@
+// editor/preset_edit.cpp — see preset_edit.hpp.
+#include "preset_edit.hpp"
+
+#include "document.hpp"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+namespace aerial::editor {
+namespace {
+
+int trackComponents(const ParamDesc& desc) { return desc.type == ParamType::Scalar ? 1 : 3; }
+
+/// Concatenation by appends (GCC 12 warns falsely on `"x" + std::string`).
+template <class... Parts>
+std::string cat(const Parts&... parts) {
+    std::string out;
+    (out.append(std::string_view(parts)), ...);
+    return out;
+}
+
+bool parseIndex(std::string_view text, int& out) {
+    if (text.empty() || text.size() > 9) return false;
+    int v = 0;
+    for (char c : text) {
+        if (c < '0' || c > '9') return false;
+        v = v * 10 + (c - '0');
+    }
+    out = v;
+    return true;
+}
+
+const std::string* objectId(const Preset& preset, const ParamRef& ref) {
+    if (ref.scope() == ParamScope::Volume && ref.object >= 0 && ref.object < int(preset.volumes.size()))
+        return &preset.volumes[std::size_t(ref.object)].id;
+    if (ref.scope() == ParamScope::Emitter && ref.object >= 0 && ref.object < int(preset.emitters.size()))
+        return &preset.emitters[std::size_t(ref.object)].id;
+    return nullptr;
+}
+
+}  // namespace
+
+std::optional<ParamRef> parseParamAddress(const Preset& preset, std::string_view address,
+                                          std::string* error) {
+    auto fail = [&](std::string why) -> std::optional<ParamRef> {
+        if (error) *error = std::move(why);
+        return std::nullopt;
+    };
+    ParamScope scope = ParamScope::Global;
+    std::string_view key = address;
+    int index = -1;
+    for (ParamScope s : {ParamScope::Volume, ParamScope::Emitter}) {
+        const std::string_view prefix = s == ParamScope::Volume ? "volume[" : "emitter[";
+        if (address.substr(0, prefix.size()) != prefix) continue;
+        const std::size_t close = address.find("].", prefix.size());
+        if (close == std::string_view::npos ||
+            !parseIndex(address.substr(prefix.size(), close - prefix.size()), index))
+            return fail(cat("\"", address, "\": expected ", prefix, "N].KEY"));
+        const std::size_t count = s == ParamScope::Volume ? preset.volumes.size() : preset.emitters.size();
+        if (std::size_t(index) >= count)
+            return fail(cat("\"", address, "\": there are ", std::to_string(count), " ", scopeName(s), "s"));
+        scope = s;
+        key = address.substr(close + 2);
+    }
+    const ParamDesc* desc = findParam(scope, key);
+    if (!desc)
+        return fail(cat("\"", address, "\": no ", scopeName(scope), " parameter \"", key,
+                        "\" in the parameter table"));
+    return ParamRef{desc, index};
+}
+
+std::string paramAddress(const ParamRef& ref) {
+    if (!ref.desc) return {};
+    std::string out;
+    if (ref.scope() != ParamScope::Global) {
+        out = ref.scope() == ParamScope::Volume ? "volume[" : "emitter[";
+        out += std::to_string(ref.object);
+        out += "].";
+    }
+    out += ref.desc->path;
+    return out;
+}
+
+void* paramObjectOf(Preset& preset, const ParamRef& ref) {
+    switch (ref.scope()) {
+        case ParamScope::Global:
+            return &preset.environment;
+        case ParamScope::Volume:
+            return ref.object >= 0 && ref.object < int(preset.volumes.size())
+                       ? &preset.volumes[std::size_t(ref.object)]
+                       : nullptr;
+        case ParamScope::Emitter:
+            return ref.object >= 0 && ref.object < int(preset.emitters.size())
+                       ? &preset.emitters[std::size_t(ref.object)]
+                       : nullptr;
+    }
+    return nullptr;
+}
+
+const void* paramObjectOf(const Preset& preset, const ParamRef& ref) {
+    return paramObjectOf(const_cast<Preset&>(preset), ref);
+}
+
+TrackTarget trackTargetOf(const Preset& preset, const ParamRef& ref) {
+    TrackTarget target;
+    target.scope = ref.scope();
+    target.param = ref.desc ? std::string(ref.desc->path) : std::string();
+    if (const std::string* id = objectId(preset, ref)) target.objectId = *id;
+    return target;
+}
+
+const Track* trackOf(const Preset& preset, const ParamRef& ref) {
+    if (!ref.desc || !ref.desc->animatable) return nullptr;
+    return findTrack(preset, trackTargetOf(preset, ref));
+}
+
+Track* trackOf(Preset& preset, const ParamRef& ref) {
+    if (!ref.desc || !ref.desc->animatable) return nullptr;
+    return findTrack(preset, trackTargetOf(preset, ref));
+}
+
+void readBaseValue(const Preset& preset, const ParamRef& ref, double out[4]) {
+    out[0] = out[1] = out[2] = out[3] = 0.0;
+    void* object = const_cast<void*>(paramObjectOf(preset, ref));
+    if (!object || !ref.desc) return;
+    const ParamDesc& p = *ref.desc;
+    switch (p.type) {
+        case ParamType::Scalar:
+            out[0] = *p.scalar(object);
+            break;
+        case ParamType::Colour:
+        case ParamType::Vec3: {
+            const glm::dvec3& v = *p.vec3(object);
+            out[0] = v.x, out[1] = v.y, out[2] = v.z;
+            break;
+        }
+        case ParamType::Quaternion: {
+            const glm::dquat& q = *p.quat(object);
+            out[0] = q.x, out[1] = q.y, out[2] = q.z, out[3] = q.w;
+            break;
+        }
+        case ParamType::Enum:
+        case ParamType::Int:
+            out[0] = double(p.getInt(object));
+            break;
+        case ParamType::String:
+            break;
+    }
+}
+
+void readValueAt(const Preset& preset, const ParamRef& ref, double timeHours, double out[4]) {
+    readBaseValue(preset, ref, out);
+    if (const Track* track = trackOf(preset, ref); track && !track->keys.empty()) {
+        const glm::dvec3 v = evaluateTrack(*track, timeHours, trackComponents(*ref.desc));
+        out[0] = v.x;
+        if (ref.desc->type != ParamType::Scalar) out[1] = v.y, out[2] = v.z;
+    }
+}
+
+void setValueAt(Preset& preset, const ParamRef& ref, const double value[4], double timeHours) {
+    void* object = paramObjectOf(preset, ref);
+    if (!object || !ref.desc) return;
+    const ParamDesc& p = *ref.desc;
+    auto clampValue = [&](double v) {
+        if (!std::isfinite(v)) v = 0.0;
+        return std::clamp(v, p.minValue, p.maxValue);
+    };
+    switch (p.type) {
+        case ParamType::Scalar: {
+            const double v = clampValue(value[0]);
+            if (Track* track = trackOf(preset, ref))
+                setKey(*track, timeHours, glm::dvec3(v, 0.0, 0.0));
+            else
+                *p.scalar(object) = v;
+            break;
+        }
+        case ParamType::Colour:
+        case ParamType::Vec3: {
+            glm::dvec3 v(clampValue(value[0]), clampValue(value[1]), clampValue(value[2]));
+            if (p.unitLength) {
+                const double length = glm::length(v);
+                if (!(length > 1e-9)) return;
+                v /= length;
+            }
+            if (Track* track = trackOf(preset, ref))
+                setKey(*track, timeHours, v);
+            else
+                *p.vec3(object) = v;
+            break;
+        }
+        case ParamType::Quaternion: {
+            glm::dquat q(value[3], value[0], value[1], value[2]);
+            const double length = glm::length(q);
+            if (!(length > 1e-9) || !std::isfinite(length)) return;
+            *p.quat(object) = q / length;
+            break;
+        }
+        case ParamType::Enum:
+        case ParamType::Int: {
+            double v = std::round(value[0]);
+            if (p.type == ParamType::Enum)
+                v = std::clamp(v, 0.0, double(std::max<std::size_t>(p.enumNames.size(), 1) - 1));
+            else
+                v = clampValue(v);
+            p.setInt(object, std::int64_t(v));
+            break;
+        }
+        case ParamType::String:
+            break;
+    }
+}
+
+int keyIndexAt(const Track& track, double timeHours) {
+    const double t = wrapHours(timeHours);
+    for (std::size_t i = 0; i < track.keys.size(); ++i) {
+        double d = std::abs(track.keys[i].timeHours - t);
+        d = std::min(d, 24.0 - d);
+        if (d <= kKeyTimeTolerance) return int(i);
+    }
+    return -1;
+}
+
+bool keyParam(Preset& preset, const ParamRef& ref, double timeHours) {
+    if (!ref.desc || !ref.desc->animatable || !paramObjectOf(preset, ref)) return false;
+    double value[4];
+    readValueAt(preset, ref, timeHours, value);
+    Track* track = trackOf(preset, ref);
+    if (!track) {
+        Track fresh;
+        fresh.target = trackTargetOf(preset, ref);
+        fresh.interpolation = Interpolation::Smooth;
+        preset.tracks.push_back(std::move(fresh));
+        track = &preset.tracks.back();
+    }
+    const int existing = keyIndexAt(*track, timeHours);
+    const double t = existing >= 0 ? track->keys[std::size_t(existing)].timeHours : wrapHours(timeHours);
+    setKey(*track, t,
+           glm::dvec3(value[0], ref.desc->type == ParamType::Scalar ? 0.0 : value[1],
+                      ref.desc->type == ParamType::Scalar ? 0.0 : value[2]));
+    return true;
+}
+
+bool removeKey(Preset& preset, const TrackTarget& target, int index) {
+    for (auto it = preset.tracks.begin(); it != preset.tracks.end(); ++it) {
+        if (!(it->target == target)) continue;
+        if (index < 0 || index >= int(it->keys.size())) return false;
+        it->keys.erase(it->keys.begin() + index);
+        if (it->keys.empty()) preset.tracks.erase(it);
+        return true;
+    }
+    return false;
+}
+
+double moveKey(Track& track, int index, double timeHours) {
+    if (index < 0 || index >= int(track.keys.size())) return 0.0;
+    const std::size_t i = std::size_t(index);
+    double lo = 0.0, hi = 24.0 - kMinKeyGap;
+    if (i > 0) lo = track.keys[i - 1].timeHours + kMinKeyGap;
+    if (i + 1 < track.keys.size()) hi = track.keys[i + 1].timeHours - kMinKeyGap;
+    double t = std::isfinite(timeHours) ? timeHours : track.keys[i].timeHours;
+    if (lo <= hi)
+        t = std::clamp(t, lo, hi);
+    else
+        t = track.keys[i].timeHours;
+    track.keys[i].timeHours = t;
+    return t;
+}
+
+int keyAllChanged(Preset& preset, const Preset& baseline, double timeHours) {
+    int count = 0;
+    auto keyIfChanged = [&](const ParamRef& ref, const ParamRef& baseRef) {
+        if (!ref.desc->animatable) return;
+        double now[4], before[4];
+        readValueAt(preset, ref, timeHours, now);
+        readValueAt(baseline, baseRef, timeHours, before);
+        bool same = true;
+        for (int c = 0; c < 3; ++c) same = same && now[c] == before[c];
+        if (same) return;
+        if (const Track* track = trackOf(preset, ref); track && keyIndexAt(*track, timeHours) >= 0) {
+            // Already keyed here with this value: nothing to add.
+            double keyed[4];
+            readValueAt(preset, ref, track->keys[std::size_t(keyIndexAt(*track, timeHours))].timeHours,
+                        keyed);
+            if (keyed[0] == now[0] && keyed[1] == now[1] && keyed[2] == now[2]) return;
+        }
+        if (keyParam(preset, ref, timeHours)) ++count;
+    };
+    for (const ParamDesc& p : paramTable(ParamScope::Global)) keyIfChanged({&p, -1}, {&p, -1});
+    for (std::size_t i = 0; i < preset.volumes.size(); ++i)
+        for (std::size_t b = 0; b < baseline.volumes.size(); ++b)
+            if (baseline.volumes[b].id == preset.volumes[i].id)
+                for (const ParamDesc& p : paramTable(ParamScope::Volume))
+                    keyIfChanged({&p, int(i)}, {&p, int(b)});
+    for (std::size_t i = 0; i < preset.emitters.size(); ++i)
+        for (std::size_t b = 0; b < baseline.emitters.size(); ++b)
+            if (baseline.emitters[b].id == preset.emitters[i].id)
+                for (const ParamDesc& p : paramTable(ParamScope::Emitter))
+                    keyIfChanged({&p, int(i)}, {&p, int(b)});
+    return count;
+}
+
+bool pasteKey(Preset& preset, const ParamRef& ref, const KeyClipboard& clip, double timeHours) {
+    if (!clip.valid || !ref.desc || !ref.desc->animatable || !paramObjectOf(preset, ref)) return false;
+    const bool scalarClip = clip.type == ParamType::Scalar, scalarParam = ref.desc->type == ParamType::Scalar;
+    if (scalarClip != scalarParam) return false;
+    if (!keyParam(preset, ref, timeHours)) return false;
+    const double value[4] = {clip.value.x, clip.value.y, clip.value.z, 0.0};
+    setValueAt(preset, ref, value, timeHours);  // the track exists now: sets the key
+    return true;
+}
+
+int addVolume(Preset& preset, FogVolumeShape shape, const glm::dvec3& position) {
+    FogVolume v;
+    const bool box = shape == FogVolumeShape::Box;
+    v.id = uniqueObjectId(preset, true, box ? "box_volume" : "ellipsoid_volume");
+    v.name = box ? "Box volume" : "Ellipsoid volume";
+    if (v.id != (box ? "box_volume" : "ellipsoid_volume")) {
+        v.name += ' ';
+        v.name += v.id.substr(v.id.rfind('_') + 1);
+    }
+    v.shape = shape;
+    v.position = position;
+    preset.volumes.push_back(v);
+    return int(preset.volumes.size()) - 1;
+}
+
+int addEmitter(Preset& preset, EmitterKind kind, const glm::dvec3& position) {
+    Emitter e;
+    const bool lightning = kind == EmitterKind::Lightning;
+    e.id = uniqueObjectId(preset, false, lightning ? "lightning" : "emitter");
+    e.name = lightning ? "Lightning" : "Emitter";
+    if (e.id != (lightning ? "lightning" : "emitter")) {
+        e.name += ' ';
+        e.name += e.id.substr(e.id.rfind('_') + 1);
+    }
+    e.kind = kind;
+    e.position = position;
+    e.intensity = kNewEmitterIntensityPerM;
+    e.attenuation = kNewEmitterAttenuationPerM2;
+    if (lightning) {
+        e.colour = {0.8, 0.85, 1.0};
+        e.intensity = 4.0 * kNewEmitterIntensityPerM;
+        e.attenuation = 1e-4;  // lightning lights a cloud hundreds of metres across
+    } else {
+        e.colour = {1.0, 0.72, 0.4};  // a warm lamp
+    }
+    preset.emitters.push_back(e);
+    return int(preset.emitters.size()) - 1;
+}
+
+int duplicateObject(Preset& preset, ParamScope scope, int index, const glm::dvec3& offset) {
+    std::string oldId, newId;
+    if (scope == ParamScope::Volume) {
+        if (index < 0 || index >= int(preset.volumes.size())) return -1;
+        FogVolume copy = preset.volumes[std::size_t(index)];
+        oldId = copy.id;
+        copy.id = newId = uniqueObjectId(preset, true, oldId);
+        copy.name += " copy";
+        copy.position += offset;
+        preset.volumes.push_back(copy);
+    } else if (scope == ParamScope::Emitter) {
+        if (index < 0 || index >= int(preset.emitters.size())) return -1;
+        Emitter copy = preset.emitters[std::size_t(index)];
+        oldId = copy.id;
+        copy.id = newId = uniqueObjectId(preset, false, oldId);
+        copy.name += " copy";
+        copy.position += offset;
+        preset.emitters.push_back(copy);
+    } else {
+        return -1;
+    }
+    const std::size_t trackCount = preset.tracks.size();
+    for (std::size_t i = 0; i < trackCount; ++i) {
+        if (preset.tracks[i].target.scope != scope || preset.tracks[i].target.objectId != oldId) continue;
+        Track copy = preset.tracks[i];
+        copy.target.objectId = newId;
+        if (copy.target.param == "position_m")  // keep the offset on keyed positions too
+            for (TrackKey& k : copy.keys) k.value += offset;
+        preset.tracks.push_back(std::move(copy));
+    }
+    return scope == ParamScope::Volume ? int(preset.volumes.size()) - 1 : int(preset.emitters.size()) - 1;
+}
+
+bool deleteObject(Preset& preset, ParamScope scope, int index) {
+    // Copy the id: removeObject erases the object that holds it.
+    if (scope == ParamScope::Volume && index >= 0 && index < int(preset.volumes.size()))
+        return removeObject(preset, scope, std::string(preset.volumes[std::size_t(index)].id));
+    if (scope == ParamScope::Emitter && index >= 0 && index < int(preset.emitters.size()))
+        return removeObject(preset, scope, std::string(preset.emitters[std::size_t(index)].id));
+    return false;
+}
+
+bool renameObject(Preset& preset, ParamScope scope, int index, const std::string& name) {
+    if (scope == ParamScope::Volume && index >= 0 && index < int(preset.volumes.size())) {
+        preset.volumes[std::size_t(index)].name = name;
+        return true;
+    }
+    if (scope == ParamScope::Emitter && index >= 0 && index < int(preset.emitters.size())) {
+        preset.emitters[std::size_t(index)].name = name;
+        return true;
+    }
+    return false;
+}
+
+}  // namespace aerial::editor

@@ -1,0 +1,120 @@
+// editor/preset_edit.hpp — the edits the editor makes to a Preset, as plain
+// functions (no GUI, unit-tested): addressing a parameter of the parameter
+// table ("fog.density_per_m", "volume[0].density_per_m"), reading the value
+// shown at a time of day, setting it (auto-key: a parameter that has a track
+// gets a key at the current time, one without changes its constant value),
+// keys (add, remove, move in time, interpolation, copy/paste, "key all
+// changed") and objects (add, duplicate, delete, rename).
+#pragma once
+
+#include <aerial/param_table.hpp>
+#include <aerial/preset.hpp>
+
+#include <glm/vec3.hpp>
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace aerial::editor {
+
+/// One parameter of one object of a preset.
+struct ParamRef {
+    const ParamDesc* desc = nullptr;
+    /// Index into preset.volumes / preset.emitters; -1 for globals.
+    int object = -1;
+
+    ParamScope scope() const { return desc ? desc->scope : ParamScope::Global; }
+    bool operator==(const ParamRef&) const = default;
+};
+
+/// "fog.density_per_m" (global), "volume[2].density_per_m",
+/// "emitter[0].intensity_per_m". nullopt with `error` set when the address
+/// or the object index is unknown.
+std::optional<ParamRef> parseParamAddress(const Preset& preset, std::string_view address, std::string* error);
+/// The inverse of parseParamAddress.
+std::string paramAddress(const ParamRef& ref);
+
+/// The object a parameter lives in (Environment, FogVolume or Emitter);
+/// null when the index is out of range.
+void* paramObjectOf(Preset& preset, const ParamRef& ref);
+const void* paramObjectOf(const Preset& preset, const ParamRef& ref);
+
+/// The track target of an animatable parameter (uses the object's id).
+TrackTarget trackTargetOf(const Preset& preset, const ParamRef& ref);
+/// Its track, or null.
+const Track* trackOf(const Preset& preset, const ParamRef& ref);
+Track* trackOf(Preset& preset, const ParamRef& ref);
+
+/// The stored (constant) value as up to four doubles (readParam's layout).
+void readBaseValue(const Preset& preset, const ParamRef& ref, double out[4]);
+/// The value at `timeHours`: the track's when there is one, else the base
+/// value. Components as readParam.
+void readValueAt(const Preset& preset, const ParamRef& ref, double timeHours, double out[4]);
+
+/// Sets the parameter as the inspector does: values are clamped into the
+/// table's valid range; an animatable parameter with a track gets a key at
+/// `timeHours` (replacing one there), any other one its constant value.
+/// Enum and Int values are rounded. Strings are not handled here.
+void setValueAt(Preset& preset, const ParamRef& ref, const double value[4], double timeHours);
+
+/// Tolerance for "a key at this time" [h]: half a minute.
+inline constexpr double kKeyTimeTolerance = 0.5 / 60.0;
+/// Smallest gap between two keys [h] when dragging: one minute.
+inline constexpr double kMinKeyGap = 1.0 / 60.0;
+
+/// Index of the key within kKeyTimeTolerance of `timeHours` (wrapping), or -1.
+int keyIndexAt(const Track& track, double timeHours);
+
+/// Keys an animatable parameter at `timeHours` with its value shown there;
+/// creates the track (Smooth) when it has none. False for parameters that
+/// are not animatable.
+bool keyParam(Preset& preset, const ParamRef& ref, double timeHours);
+
+/// Removes key `index` of the track for `target`; the track goes when its
+/// last key does. False when there is no such key.
+bool removeKey(Preset& preset, const TrackTarget& target, int index);
+
+/// Moves key `index` to `timeHours`, clamped between its neighbours (at least
+/// kMinKeyGap away) and into [0, 24 - kMinKeyGap]. Returns the key's time.
+double moveKey(Track& track, int index, double timeHours);
+
+/// Every animatable parameter (globals, volumes, emitters) whose value
+/// shown at `timeHours` differs from `baseline`'s (matched by object id) gets
+/// a key there. Returns how many keys were set.
+int keyAllChanged(Preset& preset, const Preset& baseline, double timeHours);
+
+/// A copied key: its value and the kind of parameter it came from.
+struct KeyClipboard {
+    bool valid = false;
+    ParamType type = ParamType::Scalar;
+    glm::dvec3 value{0.0};
+};
+
+/// Pastes `clip` as a key at `timeHours` on the parameter (creating its
+/// track); false when the parameter is not animatable or of another type.
+bool pasteKey(Preset& preset, const ParamRef& ref, const KeyClipboard& clip, double timeHours);
+
+// ---------------------------------------------------------------------------
+// Objects
+
+/// Artist-sane values for a new emitter next to a sky whose radiance is ~1
+/// in daylight: core's struct defaults (intensity 1 /m, attenuation
+/// 0.01 /m^2) would glow thousands of times brighter than the sky; these
+/// match the shipped presets (e.g. stormy_night.json's lamp scale).
+inline constexpr double kNewEmitterIntensityPerM = 1.0e-3;
+inline constexpr double kNewEmitterAttenuationPerM2 = 0.05;
+
+/// Adds a volume (shape, centre) with a fresh id and name; returns its index.
+int addVolume(Preset& preset, FogVolumeShape shape, const glm::dvec3& position);
+/// Adds an emitter (point or lightning) with artist-sane values; returns its index.
+int addEmitter(Preset& preset, EmitterKind kind, const glm::dvec3& position);
+/// Duplicates a volume or emitter (new id, " copy" name, tracks copied,
+/// offset by `offset`); returns the new index or -1.
+int duplicateObject(Preset& preset, ParamScope scope, int index, const glm::dvec3& offset);
+/// Removes a volume or emitter and its tracks.
+bool deleteObject(Preset& preset, ParamScope scope, int index);
+/// Renames (the shown name, not the id).
+bool renameObject(Preset& preset, ParamScope scope, int index, const std::string& name);
+
+}  // namespace aerial::editor

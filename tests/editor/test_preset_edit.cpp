@@ -1,0 +1,187 @@
+// Preset edits the editor makes: parameter addresses, values shown at a time
+// (tracks), auto-key, key editing (add, remove, move, paste, key all
+// changed) and objects (add, duplicate, delete, rename).
+#include "preset_edit.hpp"
+
+#include <gtest/gtest.h>
+
+namespace aerial::editor {
+namespace {
+
+ParamRef ref(const Preset& p, const char* address) {
+    std::string error;
+    std::optional<ParamRef> r = parseParamAddress(p, address, &error);
+    EXPECT_TRUE(r.has_value()) << error;
+    return r.value_or(ParamRef{});
+}
+
+TEST(PresetEdit, Addresses) {
+    const Preset p = defaultPreset();
+    std::string error;
+    const auto g = parseParamAddress(p, "fog.density_per_m", &error);
+    ASSERT_TRUE(g);
+    EXPECT_EQ(g->scope(), ParamScope::Global);
+    EXPECT_EQ(paramAddress(*g), "fog.density_per_m");
+    const auto v = parseParamAddress(p, "volume[0].density_per_m", &error);
+    ASSERT_TRUE(v);
+    EXPECT_EQ(v->object, 0);
+    EXPECT_EQ(paramAddress(*v), "volume[0].density_per_m");
+    EXPECT_TRUE(parseParamAddress(p, "emitter[0].intensity_per_m", &error));
+    EXPECT_FALSE(parseParamAddress(p, "volume[5].density_per_m", &error));
+    EXPECT_NE(error.find("there are 1 volumes"), std::string::npos) << error;
+    EXPECT_FALSE(parseParamAddress(p, "fog.nope", &error));
+    EXPECT_FALSE(parseParamAddress(p, "volume[x].density_per_m", &error));
+    EXPECT_FALSE(parseParamAddress(p, "volume[0]density_per_m", &error));
+}
+
+TEST(PresetEdit, ValueAtTimeFollowsTheTrack) {
+    const Preset p = defaultPreset();
+    double v[4];
+    readValueAt(p, ref(p, "fog.density_per_m"), 6.0, v);
+    EXPECT_DOUBLE_EQ(v[0], 0.0012);  // a key of the default preset
+    readBaseValue(p, ref(p, "fog.density_per_m"), v);
+    EXPECT_DOUBLE_EQ(v[0], 0.0004);
+    readValueAt(p, ref(p, "fog.falloff_per_m"), 6.0, v);  // no track: constant
+    EXPECT_DOUBLE_EQ(v[0], 0.02);
+}
+
+TEST(PresetEdit, SetValueAutoKeysAnimatedParameters) {
+    Preset p = defaultPreset();
+    const double value[4] = {0.005, 0, 0, 0};
+    setValueAt(p, ref(p, "fog.density_per_m"), value, 9.0);  // animated: key at 09:00
+    const Track* track = findTrack(p, TrackTarget::global("fog.density_per_m"));
+    ASSERT_TRUE(track);
+    EXPECT_EQ(track->keys.size(), 5u);
+    EXPECT_GE(keyIndexAt(*track, 9.0), 0);
+    EXPECT_DOUBLE_EQ(p.environment.fog.density, 0.0004) << "the constant stays";
+    setValueAt(p, ref(p, "fog.falloff_per_m"), value, 9.0);  // constant
+    EXPECT_DOUBLE_EQ(p.environment.fog.falloff, 0.005);
+    EXPECT_FALSE(findTrack(p, TrackTarget::global("fog.falloff_per_m")));
+}
+
+TEST(PresetEdit, SetValueClampsAndNormalises) {
+    Preset p = defaultPreset();
+    const double huge[4] = {1e9, 0, 0, 0};
+    setValueAt(p, ref(p, "fog.falloff_per_m"), huge, 0.0);
+    EXPECT_DOUBLE_EQ(p.environment.fog.falloff, 10.0);
+    const double dir[4] = {0, 2, 0, 0};
+    setValueAt(p, ref(p, "volume[0].gradient_direction"), dir, 0.0);
+    EXPECT_DOUBLE_EQ(p.volumes[0].gradientDirection.y, 1.0);
+    const double zero[4] = {0, 0, 0, 0};
+    setValueAt(p, ref(p, "volume[0].gradient_direction"), zero, 0.0);  // ignored
+    EXPECT_DOUBLE_EQ(p.volumes[0].gradientDirection.y, 1.0);
+    const double shape[4] = {1, 0, 0, 0};
+    setValueAt(p, ref(p, "volume[0].shape"), shape, 0.0);
+    EXPECT_EQ(p.volumes[0].shape, FogVolumeShape::Ellipsoid);
+    EXPECT_TRUE(validatePreset(p).empty());
+}
+
+TEST(PresetEdit, KeyCreatesTrackWithTheShownValue) {
+    Preset p = defaultPreset();
+    ASSERT_TRUE(keyParam(p, ref(p, "fog.falloff_per_m"), 6.0));
+    const Track* t = findTrack(p, TrackTarget::global("fog.falloff_per_m"));
+    ASSERT_TRUE(t);
+    ASSERT_EQ(t->keys.size(), 1u);
+    EXPECT_DOUBLE_EQ(t->keys[0].timeHours, 6.0);
+    EXPECT_DOUBLE_EQ(t->keys[0].value.x, 0.02);
+    const double v[4] = {0.1, 0, 0, 0};
+    setValueAt(p, ref(p, "fog.falloff_per_m"), v, 12.0);
+    ASSERT_EQ(t->keys.size(), 2u);
+    double shown[4];
+    readValueAt(p, ref(p, "fog.falloff_per_m"), 6.0, shown);
+    EXPECT_DOUBLE_EQ(shown[0], 0.02);
+    readValueAt(p, ref(p, "fog.falloff_per_m"), 12.0, shown);
+    EXPECT_DOUBLE_EQ(shown[0], 0.1);
+    EXPECT_FALSE(keyParam(p, ref(p, "location.latitude_deg"), 6.0)) << "not animatable";
+    EXPECT_TRUE(validatePreset(p).empty());
+}
+
+TEST(PresetEdit, KeyingTwiceAtTheSameTimeReplaces) {
+    Preset p = defaultPreset();
+    keyParam(p, ref(p, "fog.falloff_per_m"), 6.0);
+    keyParam(p, ref(p, "fog.falloff_per_m"), 6.0 + 0.2 / 60.0);  // within half a minute
+    EXPECT_EQ(findTrack(p, TrackTarget::global("fog.falloff_per_m"))->keys.size(), 1u);
+}
+
+TEST(PresetEdit, RemoveKeyRemovesEmptyTracks) {
+    Preset p = defaultPreset();
+    keyParam(p, ref(p, "fog.falloff_per_m"), 6.0);
+    const TrackTarget target = TrackTarget::global("fog.falloff_per_m");
+    EXPECT_FALSE(removeKey(p, target, 3));
+    EXPECT_TRUE(removeKey(p, target, 0));
+    EXPECT_FALSE(findTrack(p, target));
+}
+
+TEST(PresetEdit, MoveKeyStaysBetweenNeighbours) {
+    Preset p = defaultPreset();
+    Track& t = *findTrack(p, TrackTarget::global("fog.density_per_m"));  // keys 0, 6, 14, 20
+    EXPECT_DOUBLE_EQ(moveKey(t, 1, 8.0), 8.0);
+    EXPECT_NEAR(moveKey(t, 1, 30.0), 14.0 - kMinKeyGap, 1e-12);
+    EXPECT_NEAR(moveKey(t, 1, -5.0), 0.0 + kMinKeyGap, 1e-12);
+    EXPECT_NEAR(moveKey(t, 3, 25.0), 24.0 - kMinKeyGap, 1e-12);
+    EXPECT_DOUBLE_EQ(moveKey(t, 0, -1.0), 0.0);
+    EXPECT_TRUE(validatePreset(p).empty());
+}
+
+TEST(PresetEdit, KeyAllChanged) {
+    const Preset baseline = defaultPreset();
+    Preset p = baseline;
+    EXPECT_EQ(keyAllChanged(p, baseline, 10.0), 0);
+    p.environment.fog.falloff = 0.05;         // constant changed
+    p.volumes[0].position.x = 12.0;           // volume param changed
+    p.emitters[0].colour = {1, 0, 0};         // emitter param changed
+    p.environment.location.latitudeDeg = 10;  // not animatable: ignored
+    EXPECT_EQ(keyAllChanged(p, baseline, 10.0), 3);
+    EXPECT_TRUE(findTrack(p, TrackTarget::global("fog.falloff_per_m")));
+    EXPECT_TRUE(findTrack(p, TrackTarget::volume("ground_fog", "position_m")));
+    EXPECT_TRUE(findTrack(p, TrackTarget::emitter("lamp", "colour_rgb")));
+    EXPECT_EQ(keyAllChanged(p, baseline, 10.0), 0) << "already keyed with these values";
+    EXPECT_TRUE(validatePreset(p).empty());
+}
+
+TEST(PresetEdit, CopyPasteKeys) {
+    Preset p = defaultPreset();
+    KeyClipboard clip{true, ParamType::Scalar, glm::dvec3(0.003, 0, 0)};
+    EXPECT_TRUE(pasteKey(p, ref(p, "fog.falloff_per_m"), clip, 15.0));
+    double v[4];
+    readValueAt(p, ref(p, "fog.falloff_per_m"), 15.0, v);
+    EXPECT_DOUBLE_EQ(v[0], 0.003);
+    EXPECT_FALSE(pasteKey(p, ref(p, "fog.colour_rgb"), clip, 15.0)) << "scalar onto a colour";
+    KeyClipboard colour{true, ParamType::Colour, glm::dvec3(0.1, 0.2, 0.3)};
+    EXPECT_TRUE(pasteKey(p, ref(p, "fog.colour_rgb"), colour, 3.0));
+    EXPECT_TRUE(validatePreset(p).empty());
+}
+
+TEST(PresetEdit, Objects) {
+    Preset p = defaultPreset();
+    const int v = addVolume(p, FogVolumeShape::Ellipsoid, {1, 2, 3});
+    EXPECT_EQ(v, 1);
+    EXPECT_EQ(p.volumes[1].id, "ellipsoid_volume");
+    EXPECT_EQ(p.volumes[1].position, glm::dvec3(1, 2, 3));
+    EXPECT_EQ(addVolume(p, FogVolumeShape::Ellipsoid, {}), 2);
+    EXPECT_EQ(p.volumes[2].id, "ellipsoid_volume_2");
+    EXPECT_EQ(p.volumes[2].name, "Ellipsoid volume 2");
+    const int e = addEmitter(p, EmitterKind::Point, {0, 3, 0});
+    EXPECT_DOUBLE_EQ(p.emitters[std::size_t(e)].intensity, kNewEmitterIntensityPerM);
+    EXPECT_DOUBLE_EQ(p.emitters[std::size_t(e)].attenuation, kNewEmitterAttenuationPerM2);
+    EXPECT_LT(p.emitters[std::size_t(e)].intensity, 0.01) << "artist-sane next to a sky of radiance ~1";
+
+    // Duplicate copies the tracks under the new id.
+    const int d = duplicateObject(p, ParamScope::Volume, 0, {5, 0, 0});
+    ASSERT_GE(d, 0);
+    EXPECT_EQ(p.volumes[std::size_t(d)].id, "ground_fog_2");
+    EXPECT_EQ(p.volumes[std::size_t(d)].name, "Ground fog copy");
+    EXPECT_TRUE(findTrack(p, TrackTarget::volume("ground_fog_2", "density_per_m")));
+    EXPECT_TRUE(renameObject(p, ParamScope::Volume, d, "Mist"));
+    EXPECT_EQ(p.volumes[std::size_t(d)].name, "Mist");
+    EXPECT_TRUE(validatePreset(p).empty());
+
+    EXPECT_TRUE(deleteObject(p, ParamScope::Volume, 0));
+    EXPECT_FALSE(findTrack(p, TrackTarget::volume("ground_fog", "density_per_m")));
+    EXPECT_TRUE(findTrack(p, TrackTarget::volume("ground_fog_2", "density_per_m")));
+    EXPECT_FALSE(deleteObject(p, ParamScope::Volume, 99));
+    EXPECT_TRUE(validatePreset(p).empty());
+}
+
+}  // namespace
+}  // namespace aerial::editor
