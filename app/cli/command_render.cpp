@@ -47,6 +47,7 @@
 //    "render_ms" (render and read-back), "write_ms"}
 #include "cli_common.hpp"
 
+#include <aerial/limits.hpp>
 #include <aerial/renderer/camera.hpp>
 #include <aerial/renderer/display.hpp>
 #include <aerial/renderer/egl_context.hpp>
@@ -72,7 +73,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr int kMaxImageSide = 8192;
+constexpr int kMaxImageSide = limits::kMaxImageSide;
 constexpr double kMaxExposureEv = 30.0;
 
 struct RenderOptions {
@@ -354,7 +355,7 @@ Command addRenderCommand(CLI::App& parent) {
         ->type_name("DEG")
         ->check(finiteNumber())
         ->capture_default_str();
-    app->add_option("--size", options->size, "Image size in pixels, each side 1..8192")
+    app->add_option("--size", options->size, "Image size in pixels, each side 1..8192 (limits.hpp)")
         ->type_name("WxH")
         ->capture_default_str();
     app->add_option("--exposure", options->exposure,

@@ -324,7 +324,7 @@ const std::vector<ParamDesc>& emitterTable() {
                          glm::dvec3(0.0), false, true, [](void* o) { return &emi(o).position; },
                          "Position [m], world space. Default 0."),
                      scalar(
-                         E, "intensity_per_m", "Intensity", "1/m", {0, 1e5, 1e-3, 100}, 1.0, true, true,
+                         E, "intensity_per_m", "Intensity", "1/m", {0, 1e5, 1e-5, 10}, 1.0, true, true,
                          [](void* o) { return &emi(o).intensity; },
                          "In-scattered radiance per metre next to the emitter, i [1/m] (times the "
                          "colour), 0..1e5. Default 1."),
