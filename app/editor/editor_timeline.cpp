@@ -190,7 +190,7 @@ void Editor::drawTimeline() {
                     IM_COL32(150, 150, 150, 255));
         dl->AddLine(ImVec2(x, ySummary), ImVec2(x, yEnd), IM_COL32(255, 255, 255, major ? 22 : 10));
         if (major && h < 24 && x1 - x0 > 200.0f) {
-            char label[8];
+            char label[16];
             std::snprintf(label, sizeof label, "%02d:00", h);
             dl->AddText(ImVec2(x + 3.0f, yRuler), IM_COL32(190, 190, 190, 255), label);
         }
