@@ -25,25 +25,18 @@
 #include "common/volume.glsl"
 
 #ifdef AERIAL_VERTEX_SHADER
-layout(location = 0) in vec3 aPosition;  // unit cube corner, object space
-
-void main() { gl_Position = frame.clipFromWorld * (volume.worldFromObject * vec4(aPosition, 1.0)); }
+void main() { transformHullVertex(); }
 #else
 #include "common/atmosphere.glsl"
 
-layout(binding = 4) uniform sampler2D uLinearDepth;
 layout(location = 0) out vec4 outColour;
 
 void main() {
-    float depth01 = texelFetch(uLinearDepth, ivec2(gl_FragCoord.xy), 0).r;
-    vec3 farRay = farRayAtFragment(gl_FragCoord.xy);
-    vec3 eye = frame.eyeFar.xyz;
-    vec3 centre = volume.positionOffset.xyz;
-    vec2 hit = intersectUnitShape(toObject(eye - centre), toObject(farRay));
-    float tIn = max(hit.x, 0.0);
-    float tOut = min(hit.y, depth01);
-    if (!(tIn < tOut)) discard;
+    vec3 eye, farRay;
+    float tIn, tOut;
+    if (!clipFragmentRay(eye, farRay, tIn, tOut)) discard;
 
+    vec3 centre = volume.positionOffset.xyz;
     vec3 g = volume.gradientMode.xyz;
     float span = tOut - tIn;
     float rate = dot(farRay, g);  // height change per unit t

@@ -28,38 +28,20 @@
 #include "common/object.glsl"
 
 #ifdef AERIAL_VERTEX_SHADER
-layout(location = 0) in vec3 aPosition;
-layout(location = 1) in vec3 aNormal;
-layout(location = 2) in vec2 aTexcoord;
-out vec3 vWorld;
-out vec3 vNormal;
-out vec2 vTexcoord;
-
-void main() {
-    vec4 world = object.worldFromObject * vec4(aPosition, 1.0);
-    vWorld = world.xyz;
-    vNormal = mat3(object.normalFromObject) * aNormal;
-    vTexcoord = aTexcoord;
-    gl_Position = frame.clipFromWorld * world;
-}
+void main() { transformObjectVertex(); }
 #else
 #include "common/atmosphere.glsl"
 #include "common/sky_table.glsl"
 #include "common/shading.glsl"
 
-in vec3 vWorld;
-in vec3 vNormal;
-in vec2 vTexcoord;
 layout(location = 0) out vec4 outColour;
 layout(location = 1) out float outDepth01;
 
 void main() {
     Surface s = surfaceAt(vTexcoord);
     if (object.material.w > 0.5 && object.material.w < 1.5 && s.alpha < object.material.z) discard;
-    vec3 v = normalize(frame.eyeFar.xyz - vWorld);
-    vec3 n = shadingNormal(vNormal, gl_FrontFacing, v);
     vec3 diffuse, specular;
-    shadeSurface(s, vWorld, n, v, diffuse, specular);
+    shadeFragment(s, vWorld, vNormal, diffuse, specular);
     outColour = vec4(min(object.emission.rgb + diffuse + specular, vec3(frame.fogColour.w)), 1.0);
     outDepth01 = dot(vWorld - frame.eyeFar.xyz, frame.forwardNear.xyz) / frame.eyeFar.w;
 }

@@ -31,33 +31,20 @@
 #include "common/atmosphere.glsl"
 
 #ifdef AERIAL_VERTEX_SHADER
-layout(location = 0) in vec3 aPosition;
-layout(location = 1) in vec3 aNormal;
-layout(location = 2) in vec2 aTexcoord;
-out vec3 vWorld;
-out vec3 vNormal;
-out vec2 vTexcoord;
 out float vGlobalTau;  // optical depth of the global fog, eye -> vertex
 
 void main() {
-    vec4 world = object.worldFromObject * vec4(aPosition, 1.0);
-    vWorld = world.xyz;
-    vNormal = mat3(object.normalFromObject) * aNormal;
-    vTexcoord = aTexcoord;
+    vec4 world = transformObjectVertex();
     vec3 d = world.xyz - frame.eyeFar.xyz;  // eye -> vertex [m]
     float len = length(d);
     float tau = exponentialOpticalDepth(frame.fogParams.x, frame.fogParams.y,
                                         frame.eyeFar.y - frame.fogParams.z, d.y, len);
     vGlobalTau = tau;
-    gl_Position = frame.clipFromWorld * world;
 }
 #else
 #include "common/sky_table.glsl"
 #include "common/shading.glsl"
 
-in vec3 vWorld;
-in vec3 vNormal;
-in vec2 vTexcoord;
 in float vGlobalTau;
 layout(location = 0) out vec4 outColour;
 
@@ -76,10 +63,8 @@ vec4 cornerFogAt(vec3 p) {
 
 void main() {
     Surface s = surfaceAt(vTexcoord);
-    vec3 v = normalize(frame.eyeFar.xyz - vWorld);
-    vec3 n = shadingNormal(vNormal, gl_FrontFacing, v);
     vec3 diffuse, specular;
-    shadeSurface(s, vWorld, n, v, diffuse, specular);
+    shadeFragment(s, vWorld, vNormal, diffuse, specular);
     float alpha = s.alpha;
     vec3 surface = alpha * (object.emission.rgb + diffuse) + specular;
     // Global fog: the optical depth interpolated from the vertices, the

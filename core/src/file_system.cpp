@@ -209,12 +209,33 @@ int FaultyFileSystem::rename(const std::string& from, const std::string& to) {
 // ---------------------------------------------------------------------------
 // The writer.
 
-std::string writeFileAtomically(const std::string& path, std::string_view bytes) {
+namespace {
+
+// Makes the temporary beside `path`, lets `fill` write it (returning why it
+// could not, or ""), and commits it over `path`; the temporary is abandoned
+// on any failure, exceptions included.
+template <class Fill>
+std::string writeThroughTemporary(const std::string& path, const Fill& fill) {
     Temporary temp;
     try {
         fs::path dir;
         std::string why = createTemporary(path, temp, dir);
+        if (why.empty()) why = fill(temp);
+        if (why.empty()) why = commit(temp, path, dir);
+        if (!why.empty()) abandon(temp);
+        return why;
+    } catch (const std::exception& e) {
+        abandon(temp);
+        return std::string("cannot write ") + path + ": " + e.what();
+    }
+}
+
+}  // namespace
+
+std::string writeFileAtomically(const std::string& path, std::string_view bytes) {
+    return writeThroughTemporary(path, [&](const Temporary& temp) {
         FileSystem& fsys = fileSystem();
+        std::string why;
         std::size_t written = 0;
         while (why.empty() && written < bytes.size()) {
             const long n = fsys.write(temp.fd, bytes.data() + written, bytes.size() - written);
@@ -228,33 +249,18 @@ std::string writeFileAtomically(const std::string& path, std::string_view bytes)
                 written += std::size_t(n);
             }
         }
-        if (why.empty()) why = commit(temp, path, dir);
-        if (!why.empty()) abandon(temp);
         return why;
-    } catch (const std::exception& e) {
-        abandon(temp);
-        return std::string("cannot write ") + path + ": " + e.what();
-    }
+    });
 }
 
 std::string writeFileAtomicallyWith(
     const std::string& path, const std::function<std::string(const std::string& temporaryPath)>& write) {
-    Temporary temp;
-    try {
-        fs::path dir;
-        std::string why = createTemporary(path, temp, dir);
-        if (why.empty()) {
-            // The writer opens the file by name; keep our descriptor for fsync.
-            why = write(temp.path);
-            if (!why.empty()) why = "cannot write " + temp.path + ": " + why;
-        }
-        if (why.empty()) why = commit(temp, path, dir);
-        if (!why.empty()) abandon(temp);
+    return writeThroughTemporary(path, [&](const Temporary& temp) {
+        // The writer opens the file by name; keep our descriptor for fsync.
+        std::string why = write(temp.path);
+        if (!why.empty()) why = "cannot write " + temp.path + ": " + why;
         return why;
-    } catch (const std::exception& e) {
-        abandon(temp);
-        return std::string("cannot write ") + path + ": " + e.what();
-    }
+    });
 }
 
 }  // namespace aerial::detail

@@ -356,16 +356,7 @@ public:
             if (colon != std::string::npos) what.erase(0, colon + 2);
         }
         error.message = printable(what);
-        // Where in the document: the open container and the member being read.
-        if (!stack_.empty()) {
-            const std::int32_t top = stack_.back();
-            const JNode& n = nodes_[std::size_t(top)];
-            error.pointer = pointerOfNode(nodes_, top);
-            if (n.kind == JNode::Object && !pendingKey_.empty())
-                error.pointer = pointerJoin(error.pointer, pendingKey_);
-            else if (n.kind == JNode::Array)
-                error.pointer = pointerJoin(error.pointer, std::size_t(n.childCount));
-        }
+        pointAtOpenContainer();
         failed = true;
         return false;
     }
@@ -390,19 +381,24 @@ private:
         return false;
     }
 
+    // Where in the document: the open container and the member being read
+    // (error.pointer; left alone at the top level).
+    void pointAtOpenContainer() {
+        if (stack_.empty()) return;
+        const std::int32_t top = stack_.back();
+        const JNode& n = nodes_[std::size_t(top)];
+        error.pointer = pointerOfNode(nodes_, top);
+        if (n.kind == JNode::Object && !pendingKey_.empty())
+            error.pointer = pointerJoin(error.pointer, pendingKey_);
+        else if (n.kind == JNode::Array)
+            error.pointer = pointerJoin(error.pointer, std::size_t(n.childCount));
+    }
+
     void refuse(std::string why) {
         std::size_t i = cursor_;
         while (i < text_.size() && (isSpace(text_[i]) || text_[i] == ',' || text_[i] == ':')) ++i;
         error.offset = i;
-        if (!stack_.empty()) {
-            const std::int32_t top = stack_.back();
-            const JNode& n = nodes_[std::size_t(top)];
-            error.pointer = pointerOfNode(nodes_, top);
-            if (n.kind == JNode::Object && !pendingKey_.empty())
-                error.pointer = pointerJoin(error.pointer, pendingKey_);
-            else if (n.kind == JNode::Array)
-                error.pointer = pointerJoin(error.pointer, std::size_t(n.childCount));
-        }
+        pointAtOpenContainer();
         error.message = std::move(why);
         failed = true;
     }

@@ -1,6 +1,7 @@
 // common/object.glsl — the per-mesh uniform block of the scene and
 // transparent passes (ObjectBlock in renderer/src/gpu_types.hpp, std140,
-// binding 3), and the vertex attributes of a scene mesh.
+// binding 3), and the vertex attributes of a scene mesh. Requires
+// common/frame.glsl.
 //
 //   worldFromObject     object -> world [m]
 //   normalFromObject    columns xyz: inverse transpose of the 3x3 part
@@ -30,5 +31,31 @@ layout(std140, binding = 3) uniform ObjectBlock {
     vec4 boundsMax;
     vec4 cornerFog[8];
 } object;
+
+// The vertex attributes of a scene mesh (position [m] and normal in object
+// space, TEXCOORD_0) and what the vertex stage passes on (world space).
+#ifdef AERIAL_VERTEX_SHADER
+layout(location = 0) in vec3 aPosition;
+layout(location = 1) in vec3 aNormal;
+layout(location = 2) in vec2 aTexcoord;
+out vec3 vWorld;
+out vec3 vNormal;
+out vec2 vTexcoord;
+
+/// Writes vWorld, vNormal, vTexcoord and gl_Position of this vertex;
+/// returns its world position.
+vec4 transformObjectVertex() {
+    vec4 world = object.worldFromObject * vec4(aPosition, 1.0);
+    vWorld = world.xyz;
+    vNormal = mat3(object.normalFromObject) * aNormal;
+    vTexcoord = aTexcoord;
+    gl_Position = frame.clipFromWorld * world;
+    return world;
+}
+#else
+in vec3 vWorld;
+in vec3 vNormal;
+in vec2 vTexcoord;
+#endif
 
 #endif

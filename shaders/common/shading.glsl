@@ -128,4 +128,12 @@ void shadeSurface(Surface s, vec3 p, vec3 n, vec3 v, out vec3 diffuse, out vec3 
     }
 }
 
+/// shadeSurface for this fragment at world point p, seen from the eye, with
+/// the interpolated vertex normal (shadingNormal).
+void shadeFragment(Surface s, vec3 p, vec3 interpolatedNormal, out vec3 diffuse, out vec3 specular) {
+    vec3 v = normalize(frame.eyeFar.xyz - p);
+    vec3 n = shadingNormal(interpolatedNormal, gl_FrontFacing, v);
+    shadeSurface(s, p, n, v, diffuse, specular);
+}
+
 #endif

@@ -1,6 +1,7 @@
 // common/volume.glsl — one fog volume's uniform block (VolumeBlock in
-// renderer/src/gpu_types.hpp, std140, binding 1) and the ray / unit-shape
-// intersection in object space, shared by fog_volume.glsl (analytic) and
+// renderer/src/gpu_types.hpp, std140, binding 1), its hull's vertex, the
+// scene depth (uLinearDepth, unit 4) and the ray / unit-shape intersection
+// in object space, shared by fog_volume.glsl (analytic) and
 // fog_volume_marched.glsl (the ray-marched reference of the benchmark).
 // Requires common/frame.glsl.
 #ifndef AERIAL_VOLUME_GLSL
@@ -16,7 +17,16 @@ layout(std140, binding = 1) uniform VolumeBlock {
     vec4 colour;
 } volume;
 
-#ifndef AERIAL_VERTEX_SHADER
+#ifdef AERIAL_VERTEX_SHADER
+layout(location = 0) in vec3 aPosition;  // unit cube corner, object space
+
+/// Writes gl_Position of this corner of the hull.
+void transformHullVertex() {
+    gl_Position = frame.clipFromWorld * (volume.worldFromObject * vec4(aPosition, 1.0));
+}
+#else
+layout(binding = 4) uniform sampler2D uLinearDepth;  // normalised linear eye depth z/far
+
 vec3 toObject(vec3 w) {
     return vec3(dot(volume.objectFromWorld0.xyz, w), dot(volume.objectFromWorld1.xyz, w),
                 dot(volume.objectFromWorld2.xyz, w));
@@ -50,6 +60,20 @@ vec2 intersectUnitShape(vec3 o, vec3 d) {
     if (!(h > 0.0)) return vec2(1.0, 0.0);
     float halfChord = sqrt(h / a);
     return vec2(tMid - halfChord, tMid + halfChord);
+}
+
+/// The fragment's ray eye + t farRay (t in [0, 1] to the far plane) clipped
+/// to the hull and to the scene point at t = depth01 (uLinearDepth; the
+/// viewer may stand inside, geometry inside the volume ends it): the segment
+/// [tIn, tOut]; false when it is empty.
+bool clipFragmentRay(out vec3 eye, out vec3 farRay, out float tIn, out float tOut) {
+    float depth01 = texelFetch(uLinearDepth, ivec2(gl_FragCoord.xy), 0).r;
+    farRay = farRayAtFragment(gl_FragCoord.xy);
+    eye = frame.eyeFar.xyz;
+    vec2 hit = intersectUnitShape(toObject(eye - volume.positionOffset.xyz), toObject(farRay));
+    tIn = max(hit.x, 0.0);
+    tOut = min(hit.y, depth01);
+    return tIn < tOut;
 }
 #endif
 

@@ -1,6 +1,7 @@
 // Autosave and crash recovery: the timer, the files, recovery of a crashed
 // session (a marker whose process is gone), a clean exit.
 #include "autosave.hpp"
+#include "editor_test_support.hpp"
 #include "script.hpp"
 #include "settings.hpp"
 
@@ -17,22 +18,7 @@ namespace aerial::editor {
 namespace {
 
 namespace fs = std::filesystem;
-
-/// Concatenation by appends (GCC 12 warns falsely on `"x" + std::to_string(n)`).
-template <class... Parts>
-std::string join(const Parts&... parts) {
-    std::string out;
-    (out.append(parts), ...);
-    return out;
-}
-
-fs::path tempDir(const std::string& name) {
-    fs::path dir =
-        fs::temp_directory_path() / join("aerial_autosave_test_", name, "_", std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
+using test::join;
 
 /// A pid that certainly belongs to no process: a child that has exited and been reaped.
 int deadPid() {
@@ -55,7 +41,7 @@ TEST(Autosave, StateDirectoryFromEnvironment) {
 }
 
 TEST(Autosave, WritesAfterTheIntervalOfUnsavedWork) {
-    const fs::path dir = tempDir("timer");
+    const fs::path dir = test::tempDir("autosave", "timer");
     Autosave a(dir.string(), 30.0);
     ASSERT_TRUE(a.start(""));
     EXPECT_TRUE(fs::exists(a.markerFile()));
@@ -80,7 +66,7 @@ TEST(Autosave, WritesAfterTheIntervalOfUnsavedWork) {
 }
 
 TEST(Autosave, CleanExitLeavesNothingToRecover) {
-    const fs::path dir = tempDir("clean");
+    const fs::path dir = test::tempDir("autosave", "clean");
     {
         Autosave a(dir.string(), 1.0);
         ASSERT_TRUE(a.start("/some/file.json"));
@@ -96,7 +82,7 @@ TEST(Autosave, CleanExitLeavesNothingToRecover) {
 }
 
 TEST(Autosave, RecoversACrashedSession) {
-    const fs::path dir = tempDir("crash");
+    const fs::path dir = test::tempDir("autosave", "crash");
     const int pid = deadPid();
     Preset work = defaultPreset();
     work.environment.fog.density = 0.0321;
@@ -122,7 +108,7 @@ TEST(Autosave, RecoversACrashedSession) {
 }
 
 TEST(Autosave, CrashWithoutUnsavedWorkIsCleanedUp) {
-    const fs::path dir = tempDir("nowork");
+    const fs::path dir = test::tempDir("autosave", "nowork");
     const int pid = deadPid();
     {
         std::ofstream marker(dir / join("session-", std::to_string(pid), ".json"));
@@ -139,7 +125,7 @@ TEST(Autosave, CrashWithoutUnsavedWorkIsCleanedUp) {
 }
 
 TEST(Autosave, UnreadableRecoveryIsNotOffered) {
-    const fs::path dir = tempDir("broken");
+    const fs::path dir = test::tempDir("autosave", "broken");
     const int pid = deadPid();
     { std::ofstream(dir / join("recovery-", std::to_string(pid), ".json")) << "{ broken"; }
     { std::ofstream(dir / join("session-", std::to_string(pid), ".json")) << "{}"; }
@@ -149,7 +135,7 @@ TEST(Autosave, UnreadableRecoveryIsNotOffered) {
 }
 
 TEST(Settings, RecentFiles) {
-    const fs::path dir = tempDir("recent");
+    const fs::path dir = test::tempDir("autosave", "recent");
     RecentFiles r((dir / "recent.json").string());
     r.load();
     EXPECT_TRUE(r.files().empty());
@@ -164,7 +150,7 @@ TEST(Settings, RecentFiles) {
 }
 
 TEST(Settings, SessionRoundTrip) {
-    const fs::path dir = tempDir("session");
+    const fs::path dir = test::tempDir("autosave", "session");
     Session s;
     s.cameraJson = "{\"distance_m\":42}";
     s.view = "ACES 1.0 - SDR Video";

@@ -2,11 +2,10 @@
 // every kind of edit (parameters, keys, add/delete/rename/duplicate) round
 // tripping through undo and redo.
 #include "document.hpp"
+#include "editor_test_support.hpp"
 #include "preset_edit.hpp"
 
 #include <gtest/gtest.h>
-
-#include <unistd.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -17,22 +16,6 @@ namespace aerial::editor {
 namespace {
 
 namespace fs = std::filesystem;
-
-/// Concatenation by appends (GCC 12 warns falsely on `"x" + std::to_string(n)`).
-template <class... Parts>
-std::string join(const Parts&... parts) {
-    std::string out;
-    (out.append(parts), ...);
-    return out;
-}
-
-fs::path tempDir(const std::string& name) {
-    fs::path dir =
-        fs::temp_directory_path() / join("aerial_editor_test_", name, "_", std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
 
 void setFog(Document& doc, double density, const std::string& merge = "") {
     doc.apply("Fog density", merge, [&](Preset& p) { p.environment.fog.density = density; });
@@ -111,7 +94,7 @@ TEST(Document, HistoryIsCapped) {
 }
 
 TEST(Document, SaveOpenAndDirtyFlag) {
-    const fs::path dir = tempDir("save");
+    const fs::path dir = test::tempDir("editor", "save");
     const std::string file = (dir / "mine.json").string();
     Document doc;
     setFog(doc, 0.004);
@@ -133,7 +116,7 @@ TEST(Document, SaveOpenAndDirtyFlag) {
 }
 
 TEST(Document, FailedOpenChangesNothing) {
-    const fs::path dir = tempDir("badopen");
+    const fs::path dir = test::tempDir("editor", "badopen");
     const std::string bad = (dir / "bad.json").string();
     {
         std::FILE* f = std::fopen(bad.c_str(), "w");

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <vector>
 
 // Leaks inside Mesa's drivers (llvmpipe's JIT, the DRI loader) are not ours;
 // LeakSanitizer reads these suppressions in an ASan build and ignores them
@@ -15,6 +16,26 @@ extern "C" __attribute__((used)) const char* __lsan_default_suppressions() {
 }
 
 namespace aerial::test {
+
+renderer::Camera makeCamera(const glm::dvec3& eye, const glm::dvec3& target, double farDistance,
+                            double verticalFov) {
+    renderer::Camera c;
+    c.eye = eye;
+    c.target = target;
+    c.verticalFov = verticalFov;
+    c.nearDistance = 0.1;
+    c.farDistance = farDistance;
+    c.aspect = double(kWidth) / kHeight;
+    return c;
+}
+
+renderer::FrameDesc floatFrame() {
+    renderer::FrameDesc f;
+    f.width = kWidth;
+    f.height = kHeight;
+    f.precision = renderer::ColourPrecision::Float;
+    return f;
+}
 
 renderer::HeadlessContext* glContext(std::string& error) {
     // Never destroyed: tearing the context down at exit unloads Mesa's
@@ -76,6 +97,28 @@ SkyPair solveSky(const AtmosphereParams& air, const glm::dvec3& sunDirection, co
     solver.solve(air, moonDirection);
     pair.moon = solver.table();
     return pair;
+}
+
+void SkyRendererTest::SetUp() {
+    GlTest::SetUp();
+    if (HasFatalFailure()) return;
+    struct Solved {
+        glm::dvec3 sun, moon;
+        SkyPair sky;
+    };
+    static std::vector<std::unique_ptr<Solved>> solved;
+    sky_ = nullptr;
+    for (const auto& s : solved) {
+        if (s->sun == sunDirection_ && s->moon == moonDirection_) sky_ = &s->sky;
+    }
+    if (!sky_) {
+        solved.push_back(std::make_unique<Solved>(Solved{
+            sunDirection_, moonDirection_, solveSky(AtmosphereParams{}, sunDirection_, moonDirection_)}));
+        sky_ = &solved.back()->sky;
+    }
+    renderer_ = std::make_unique<renderer::Renderer>(rendererDesc());
+    ASSERT_TRUE(renderer_->valid()) << renderer_->error();
+    renderer_->setSky(sky_->sun, sky_->moon);
 }
 
 FogComparison compareWithCpu(const renderer::Image& fogged, const renderer::Image& unfogged,

@@ -11,10 +11,23 @@
 
 #include <gtest/gtest.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace aerial::test {
+
+/// The size of the test frames [px].
+constexpr int kWidth = 160;
+constexpr int kHeight = 90;
+
+/// A camera from `eye` towards `target` for a kWidth x kHeight frame, near
+/// plane 0.1 m.
+renderer::Camera makeCamera(const glm::dvec3& eye, const glm::dvec3& target, double farDistance,
+                            double verticalFov = 1.0);
+
+/// A kWidth x kHeight frame in float precision, every pass on.
+renderer::FrameDesc floatFrame();
 
 /// The process-wide headless context, created on first use and made
 /// current; null (with `error` set) when EGL cannot give one.
@@ -47,6 +60,23 @@ struct SkyPair {
 };
 SkyPair solveSky(const AtmosphereParams& air, const glm::dvec3& sunDirection, const glm::dvec3& moonDirection,
                  int columns = 64, int rows = 32);
+
+/// Test fixture with a renderer that has the sky of the given light
+/// directions (solveSky, default size, solved once per process and pair of
+/// directions).
+class SkyRendererTest : public GlTest {
+protected:
+    SkyRendererTest(const glm::dvec3& sunDirection, const glm::dvec3& moonDirection)
+        : sunDirection_(sunDirection), moonDirection_(moonDirection) {}
+    void SetUp() override;
+
+    const SkyPair* sky_ = nullptr;
+    std::unique_ptr<renderer::Renderer> renderer_;
+
+private:
+    glm::dvec3 sunDirection_;
+    glm::dvec3 moonDirection_;
+};
 
 /// Largest per-pixel error of a fogged GPU frame against the CPU query on
 /// the same inputs: for every pixel, the scene point is reconstructed from

@@ -23,27 +23,7 @@ using renderer::Camera;
 using renderer::FrameDesc;
 using renderer::Renderer;
 
-constexpr int kWidth = 160;
-constexpr int kHeight = 90;
-
-Camera testCamera() {
-    Camera c;
-    c.eye = {0.0, 20.0, 0.0};
-    c.target = {0.0, 12.0, -100.0};
-    c.verticalFov = 1.0;
-    c.nearDistance = 0.1;
-    c.farDistance = 2000.0;
-    c.aspect = double(kWidth) / kHeight;
-    return c;
-}
-
-FrameDesc floatFrame() {
-    FrameDesc f;
-    f.width = kWidth;
-    f.height = kHeight;
-    f.precision = renderer::ColourPrecision::Float;
-    return f;
-}
+Camera testCamera() { return makeCamera({0.0, 20.0, 0.0}, {0.0, 12.0, -100.0}, 2000.0); }
 
 /// A quad perpendicular to the view at eye depth `depth`, covering the view.
 renderer::SceneMesh facingPlane(const Camera& camera, double depth, const glm::dvec3& emission) {

@@ -24,21 +24,11 @@ namespace {
 
 using renderer::Camera;
 using renderer::FrameDesc;
-using renderer::Renderer;
 
-constexpr int kWidth = 160;
-constexpr int kHeight = 90;
 constexpr double kTolerance = 1e-3;
 
-Camera makeCamera(const glm::dvec3& eye, const glm::dvec3& target) {
-    Camera c;
-    c.eye = eye;
-    c.target = target;
-    c.verticalFov = 1.1;
-    c.nearDistance = 0.1;
-    c.farDistance = 1500.0;
-    c.aspect = double(kWidth) / kHeight;
-    return c;
+Camera fogCamera(const glm::dvec3& eye, const glm::dvec3& target) {
+    return makeCamera(eye, target, 1500.0, 1.1);
 }
 
 /// Test geometry with known radiance (emission only): a wall perpendicular
@@ -64,18 +54,9 @@ renderer::SceneDesc testScene(const Camera& camera, double wallDepth) {
     return scene;
 }
 
-class FogVsCpu : public GlTest {
+class FogVsCpu : public SkyRendererTest {
 protected:
-    void SetUp() override {
-        GlTest::SetUp();
-        if (HasFatalFailure()) return;
-        static const SkyPair sky = solveSky(AtmosphereParams{}, sunDirection(), moonDirection());
-        sky_ = &sky;
-        renderer_ = std::make_unique<Renderer>(rendererDesc());
-        ASSERT_TRUE(renderer_->valid()) << renderer_->error();
-        renderer_->setSky(sky_->sun, sky_->moon);
-    }
-
+    FogVsCpu() : SkyRendererTest(sunDirection(), moonDirection()) {}
     static glm::dvec3 sunDirection() { return glm::normalize(glm::dvec3(0.5, 0.35, -0.8)); }
     static glm::dvec3 moonDirection() { return glm::normalize(glm::dvec3(-0.6, 0.2, 0.5)); }
 
@@ -91,10 +72,7 @@ protected:
     FogComparison run(const char* name, const Camera& camera, const renderer::AtmosphereFrame& air,
                       double wallDepth = 400.0) {
         renderer_->setScene(testScene(camera, wallDepth));
-        FrameDesc frame;
-        frame.width = kWidth;
-        frame.height = kHeight;
-        frame.precision = renderer::ColourPrecision::Float;
+        FrameDesc frame = floatFrame();
         frame.passes.sky = false;
         frame.passes.globalFog = frame.passes.volumes = frame.passes.emitters = false;
         renderer_->render(camera, air, frame);
@@ -112,15 +90,12 @@ protected:
         EXPECT_TRUE(log.errors.empty()) << log.errors.front();
         return c;
     }
-
-    const SkyPair* sky_ = nullptr;
-    std::unique_ptr<Renderer> renderer_;
 };
 
 TEST_F(FogVsCpu, GlobalHeightFog) {
     renderer::AtmosphereFrame air = baseFrame();
     air.fog = {0.004, 0.02, 3.0};
-    const FogComparison c = run("global fog", makeCamera({0, 25, 0}, {0, 18, -100}), air);
+    const FogComparison c = run("global fog", fogCamera({0, 25, 0}, {0, 18, -100}), air);
     EXPECT_LT(c.maxError, kTolerance);
     EXPECT_LT(c.meanTransmittance, 0.9);  // the fog is not trivial
 }
@@ -129,13 +104,13 @@ TEST_F(FogVsCpu, GlobalFogHorizontalRaysAndUniformFog) {
     // A level camera: the centre rows have d.y -> 0 (c d.y -> 0 must not jump).
     renderer::AtmosphereFrame air = baseFrame();
     air.fog = {0.003, 0.05, 0.0};
-    FogComparison c = run("global fog, level camera", makeCamera({0, 10, 0}, {0, 10, -100}), air);
+    FogComparison c = run("global fog, level camera", fogCamera({0, 10, 0}, {0, 10, -100}), air);
     EXPECT_LT(c.maxError, kTolerance);
     air.fog = {0.002, 0.0, 0.0};  // c = 0: uniform
-    c = run("global fog, c = 0", makeCamera({0, 10, 0}, {0, 10, -100}), air);
+    c = run("global fog, c = 0", fogCamera({0, 10, 0}, {0, 10, -100}), air);
     EXPECT_LT(c.maxError, kTolerance);
     air.fog = {0.01, 0.2, -40.0};  // thin air far above the base: large c y
-    c = run("global fog, far above the base", makeCamera({0, 30, 0}, {0, 5, -100}), air);
+    c = run("global fog, far above the base", fogCamera({0, 30, 0}, {0, 5, -100}), air);
     EXPECT_LT(c.maxError, kTolerance);
 }
 
@@ -156,7 +131,7 @@ TEST_F(FogVsCpu, BoxVolumeCameraOutside) {
     renderer::AtmosphereFrame air = baseFrame();
     air.fog = {0.001, 0.02, 0.0};
     air.volumes.push_back(testVolume(FogVolumeShape::Box));
-    const FogComparison c = run("box, outside", makeCamera({0, 15, 10}, {0, 8, -60}), air);
+    const FogComparison c = run("box, outside", fogCamera({0, 15, 10}, {0, 8, -60}), air);
     EXPECT_LT(c.maxError, kTolerance);
     EXPECT_EQ(renderer_->stats().volumesDrawn, 1);
     EXPECT_EQ(renderer_->stats().volumesDrawnInside, 0);
@@ -165,7 +140,7 @@ TEST_F(FogVsCpu, BoxVolumeCameraOutside) {
 TEST_F(FogVsCpu, EllipsoidVolumeCameraOutside) {
     renderer::AtmosphereFrame air = baseFrame();
     air.volumes.push_back(testVolume(FogVolumeShape::Ellipsoid));
-    const FogComparison c = run("ellipsoid, outside", makeCamera({0, 15, 10}, {0, 8, -60}), air);
+    const FogComparison c = run("ellipsoid, outside", fogCamera({0, 15, 10}, {0, 8, -60}), air);
     EXPECT_LT(c.maxError, kTolerance);
     EXPECT_EQ(renderer_->stats().volumesDrawnInside, 0);
 }
@@ -177,7 +152,7 @@ TEST_F(FogVsCpu, VolumesCameraInside) {
         air.volumes.push_back(v);
         // Eye at the centre, looking out through the side, the box in view.
         const FogComparison c = run(shape == FogVolumeShape::Box ? "box, inside" : "ellipsoid, inside",
-                                    makeCamera(v.position, v.position + glm::dvec3(30.0, -4.0, -40.0)), air);
+                                    fogCamera(v.position, v.position + glm::dvec3(30.0, -4.0, -40.0)), air);
         EXPECT_LT(c.maxError, kTolerance);
         EXPECT_EQ(renderer_->stats().volumesDrawnInside, 1);
     }
@@ -199,7 +174,7 @@ TEST_F(FogVsCpu, VolumesStraddlingTheNearPlane) {
         const glm::dvec3 eye(0.0, 10.0, -10.0 + 0.05);
         const FogComparison c = run(
             shape == FogVolumeShape::Box ? "box, straddling near plane" : "ellipsoid, straddling near plane",
-            makeCamera(eye, eye + glm::dvec3(-0.3, -0.2, -1.0)), air);
+            fogCamera(eye, eye + glm::dvec3(-0.3, -0.2, -1.0)), air);
         EXPECT_LT(c.maxError, kTolerance);
         EXPECT_EQ(renderer_->stats().volumesDrawnInside, 1);
     }
@@ -217,7 +192,7 @@ TEST_F(FogVsCpu, VolumeColourModesAndTwoDisjointVolumes) {
     b.colour = {0.2, 0.5, 1.5};
     b.density = 0.02;
     air.volumes = {b, a};  // the far one first in the list, the near one in front
-    const FogComparison c = run("tinted box + custom ellipsoid", makeCamera({0, 15, 10}, {10, 8, -100}), air);
+    const FogComparison c = run("tinted box + custom ellipsoid", fogCamera({0, 15, 10}, {10, 8, -100}), air);
     EXPECT_LT(c.maxError, kTolerance);
     EXPECT_EQ(renderer_->stats().volumesDrawn, 2);
 }
@@ -240,7 +215,7 @@ TEST_F(FogVsCpu, Emitters) {
     hidden.intensity = 2.0;
     hidden.attenuation = 0.01;
     air.emitters = {lamp, far, hidden};
-    const FogComparison c = run("emitters + global fog", makeCamera({0, 12, 0}, {0, 8, -100}), air);
+    const FogComparison c = run("emitters + global fog", fogCamera({0, 12, 0}, {0, 8, -100}), air);
     EXPECT_LT(c.maxError, kTolerance);
     EXPECT_GT(c.meanInScatter, 0.0);
     EXPECT_EQ(renderer_->stats().emitters, 3);
@@ -254,7 +229,7 @@ TEST_F(FogVsCpu, GlobalFogTintedAndCustomColour) {
         air.fogColour = {0.9, 0.5, 0.25};
         const FogComparison c =
             run(mode == FogColourMode::Custom ? "global fog, custom colour" : "global fog, tinted colour",
-                makeCamera({0, 25, 0}, {0, 18, -100}), air);
+                fogCamera({0, 25, 0}, {0, 18, -100}), air);
         EXPECT_LT(c.maxError, kTolerance);
     }
 }
@@ -263,12 +238,9 @@ TEST_F(FogVsCpu, TheComparisonSeesAMissingPass) {
     // Negative control: the same frame without the volume pass is far off.
     renderer::AtmosphereFrame air = baseFrame();
     air.volumes.push_back(testVolume(FogVolumeShape::Box));
-    const Camera camera = makeCamera({0, 15, 10}, {0, 8, -60});
+    const Camera camera = fogCamera({0, 15, 10}, {0, 8, -60});
     renderer_->setScene(testScene(camera, 400.0));
-    FrameDesc frame;
-    frame.width = kWidth;
-    frame.height = kHeight;
-    frame.precision = renderer::ColourPrecision::Float;
+    FrameDesc frame = floatFrame();
     frame.passes.sky = frame.passes.globalFog = frame.passes.volumes = frame.passes.emitters = false;
     renderer_->render(camera, air, frame);
     const renderer::Image unfogged = renderer_->readColour();
@@ -294,7 +266,7 @@ TEST_F(FogVsCpu, EverythingTogether) {
     lamp.intensity = 0.4;
     lamp.attenuation = 0.05;
     air.emitters.push_back(lamp);
-    const FogComparison c = run("global + 2 volumes + emitter", makeCamera({0, 15, 10}, {10, 8, -100}), air);
+    const FogComparison c = run("global + 2 volumes + emitter", fogCamera({0, 15, 10}, {10, 8, -100}), air);
     EXPECT_LT(c.maxError, kTolerance);
 }
 

@@ -32,26 +32,12 @@ using renderer::Camera;
 using renderer::FrameDesc;
 using renderer::Renderer;
 
-constexpr int kWidth = 160;
-constexpr int kHeight = 90;
 constexpr double kPiD = 3.14159265358979323846;
 
-Camera groundCamera() {
-    Camera c;
-    c.eye = {0.0, 6.0, 12.0};
-    c.target = {0.0, 0.0, -10.0};
-    c.verticalFov = 1.0;
-    c.nearDistance = 0.1;
-    c.farDistance = 500.0;
-    c.aspect = double(kWidth) / kHeight;
-    return c;
-}
+Camera groundCamera() { return makeCamera({0.0, 6.0, 12.0}, {0.0, 0.0, -10.0}, 500.0); }
 
 FrameDesc sceneOnly() {
-    FrameDesc f;
-    f.width = kWidth;
-    f.height = kHeight;
-    f.precision = renderer::ColourPrecision::Float;
+    FrameDesc f = floatFrame();
     f.passes.sky = false;
     f.passes.globalFog = false;
     f.passes.volumes = false;
@@ -257,15 +243,7 @@ bool quadTexcoord(const renderer::CameraFrame& f, double depth, double half, int
     return u >= 0.0 && u <= 1.0 && v >= 0.0 && v <= 1.0;
 }
 
-Camera frontCamera() {
-    Camera c;
-    c.eye = {0.0, 0.0, 0.0};
-    c.target = {0.0, 0.0, -1.0};
-    c.verticalFov = 0.8;
-    c.farDistance = 1000.0;
-    c.aspect = double(kWidth) / kHeight;
-    return c;
-}
+Camera frontCamera() { return makeCamera({0.0, 0.0, 0.0}, {0.0, 0.0, -1.0}, 1000.0, 0.8); }
 
 TEST_F(Shading, BaseColourTextureIsSrgbDecodedOrientedAndMipmapped) {
     // 4 x 4 texels in 2 x 2 blocks: top-left red 255, top-right green 128,

@@ -29,21 +29,8 @@ namespace {
 
 using renderer::Camera;
 using renderer::FrameDesc;
-using renderer::Renderer;
 
-constexpr int kWidth = 160;
-constexpr int kHeight = 90;
-
-Camera paneCamera() {
-    Camera c;
-    c.eye = {0.0, 3.0, 10.0};
-    c.target = {0.0, 4.0, -30.0};
-    c.verticalFov = 0.9;
-    c.nearDistance = 0.1;
-    c.farDistance = 2000.0;
-    c.aspect = double(kWidth) / kHeight;
-    return c;
-}
+Camera paneCamera() { return makeCamera({0.0, 3.0, 10.0}, {0.0, 4.0, -30.0}, 2000.0, 0.9); }
 
 /// An axis-aligned pane in the plane z = zPane: x in [x0, x1], y in [y0, y1].
 struct Pane {
@@ -72,17 +59,9 @@ renderer::SceneMesh paneMesh(const Pane& pane, int cells) {
     return m;
 }
 
-class Transparent : public GlTest {
+class Transparent : public SkyRendererTest {
 protected:
-    void SetUp() override {
-        GlTest::SetUp();
-        if (HasFatalFailure()) return;
-        static const SkyPair sky = solveSky(AtmosphereParams{}, sunDirection(), moonDirection());
-        sky_ = &sky;
-        renderer_ = std::make_unique<Renderer>(rendererDesc());
-        ASSERT_TRUE(renderer_->valid()) << renderer_->error();
-        renderer_->setSky(sky_->sun, sky_->moon);
-    }
+    Transparent() : SkyRendererTest(sunDirection(), moonDirection()) {}
     static glm::dvec3 sunDirection() { return glm::normalize(glm::dvec3(0.4, 0.3, -0.85)); }
     static glm::dvec3 moonDirection() { return glm::normalize(glm::dvec3(-0.6, 0.2, 0.5)); }
 
@@ -112,12 +91,8 @@ protected:
         renderer::SceneDesc scene;
         scene.meshes.push_back(mesh);
         renderer_->setScene(scene);
-        FrameDesc frame;
-        frame.width = kWidth;
-        frame.height = kHeight;
-        frame.precision = renderer::ColourPrecision::Float;
         const Camera camera = paneCamera();
-        renderer_->render(camera, air, frame);
+        renderer_->render(camera, air, floatFrame());
         EXPECT_EQ(renderer_->stats().transparentDrawn, 1);
         const renderer::Image image = renderer_->readColour();
         const FogScene fog(renderer::fogSceneDesc(air, sky_->sun, sky_->moon));
@@ -157,9 +132,6 @@ protected:
         EXPECT_TRUE(log.errors.empty()) << log.errors.front();
         return r;
     }
-
-    const SkyPair* sky_ = nullptr;
-    std::unique_ptr<Renderer> renderer_;
 };
 
 TEST_F(Transparent, GlobalFogPerVertexMatchesTheCpuQuery) {
@@ -229,11 +201,7 @@ TEST_F(Transparent, HalfOpaquePaneBlendsOverTheFoggedScene) {
     renderer::SceneDesc scene;
     scene.meshes = {wall, pane};
     renderer_->setScene(scene);
-    FrameDesc frame;
-    frame.width = kWidth;
-    frame.height = kHeight;
-    frame.precision = renderer::ColourPrecision::Float;
-    renderer_->render(camera, air, frame);
+    renderer_->render(camera, air, floatFrame());
     const renderer::Image image = renderer_->readColour();
     double worst = 0.0;
     int n = 0;
@@ -257,13 +225,7 @@ TEST_F(Transparent, HalfOpaquePaneBlendsOverTheFoggedScene) {
 TEST_F(GlTest, SoftParticleFadesByTheSceneDepthAsTheClosedForm) {
     renderer::Renderer r(rendererDesc());
     ASSERT_TRUE(r.valid()) << r.error();
-    Camera camera;
-    camera.eye = {0.0, 0.0, 0.0};
-    camera.target = {0.0, 0.0, -1.0};
-    camera.verticalFov = 0.6;
-    camera.nearDistance = 0.1;
-    camera.farDistance = 200.0;
-    camera.aspect = double(kWidth) / kHeight;
+    const Camera camera = makeCamera({0.0, 0.0, 0.0}, {0.0, 0.0, -1.0}, 200.0, 0.6);
     const renderer::CameraFrame f = renderer::cameraFrame(camera);
     // A black plane through (0, 0, -20) tilted about x: its depth along the
     // view grows with height on screen, so it cuts the sprite along a line.
@@ -286,10 +248,7 @@ TEST_F(GlTest, SoftParticleFadesByTheSceneDepthAsTheClosedForm) {
     scene.meshes.push_back(plane);
     scene.sprites.push_back(sprite);
     r.setScene(scene);
-    FrameDesc frame;
-    frame.width = kWidth;
-    frame.height = kHeight;
-    frame.precision = renderer::ColourPrecision::Float;
+    FrameDesc frame = floatFrame();
     frame.passes.sky = false;
     // Without fog, then behind a box volume (custom colour) that covers the
     // sprite: the sprite's colour becomes C T' + S' with T', S' the CPU query

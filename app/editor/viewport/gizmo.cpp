@@ -108,6 +108,15 @@ std::optional<glm::dvec3> rayPlane(const Ray& ray, const glm::dvec3& p0, const g
     return ray.origin + t * ray.direction;
 }
 
+// The offset from the ring's centre c to where the ray meets the ring's
+// plane (normal n); for an edge-on ring (no hit), to the ray's closest point
+// to the centre, flattened onto the plane.
+glm::dvec3 ringVector(const Ray& ray, const glm::dvec3& c, const glm::dvec3& n) {
+    if (const auto hit = rayPlane(ray, c, n)) return *hit - c;
+    const glm::dvec3 p = ray.origin + glm::dot(c - ray.origin, ray.direction) * ray.direction;
+    return (p - c) - n * glm::dot(p - c, n);
+}
+
 double snapTo(double value, double step) { return std::round(value / step) * step; }
 
 bool validStep(double step) { return std::isfinite(step) && step > 0.0; }
@@ -339,15 +348,7 @@ GizmoResult Gizmo::update(const renderer::CameraFrame& frame, glm::dvec2 viewpor
             if (mode == GizmoMode::Rotate) {
                 planeNormal_ = activeHandle_ == GizmoHandle::View ? glm::normalize(frame.eye - c) : axes_[k];
                 ok = finite(planeNormal_);
-                const auto hit = rayPlane(ray, c, planeNormal_);
-                glm::dvec3 v(0.0);
-                if (hit) {
-                    v = *hit - c;
-                } else {
-                    // Edge-on ring: the ray's closest point to the centre, flattened onto the plane.
-                    const glm::dvec3 p = ray.origin + glm::dot(c - ray.origin, ray.direction) * ray.direction;
-                    v = (p - c) - planeNormal_ * glm::dot(p - c, planeNormal_);
-                }
+                const glm::dvec3 v = ringVector(ray, c, planeNormal_);
                 ok = ok && glm::length(v) > 1e-12 * std::max(worldSize_, 1e-300);
                 prevRotateVector_ = ok ? glm::normalize(v) : glm::dvec3(0.0);
                 pressPoint_ = c + prevRotateVector_;  // unit offset: the press direction
@@ -433,14 +434,7 @@ GizmoResult Gizmo::update(const renderer::CameraFrame& frame, glm::dvec2 viewpor
                     prevRotateVector_ = glm::angleAxis(angle, planeNormal_) * (pressPoint_ - c);
                 }
             } else if (activeMode_ == GizmoMode::Rotate) {
-                const auto hit = rayPlane(ray, c, planeNormal_);
-                glm::dvec3 v(0.0);
-                if (hit) {
-                    v = *hit - c;
-                } else {
-                    const glm::dvec3 p = ray.origin + glm::dot(c - ray.origin, ray.direction) * ray.direction;
-                    v = (p - c) - planeNormal_ * glm::dot(p - c, planeNormal_);
-                }
+                glm::dvec3 v = ringVector(ray, c, planeNormal_);
                 const double len = glm::length(v);
                 if (len > 1e-12 * std::max(worldSize_, 1e-300) && std::isfinite(len)) {
                     v /= len;

@@ -76,14 +76,11 @@ double angularRadiusOfPixels(const renderer::CameraFrame& frame, double viewport
     return std::atan(pixels * 2.0 * tanHalf / h);
 }
 
-RayInterval intersectOrientedBox(const Ray& ray, const glm::dvec3& centre, const glm::dquat& rotation,
-                                 const glm::dvec3& halfExtents) {
+namespace {
+
+// The object-space ray o + t d against the unit cube.
+RayInterval intersectUnitCube(const glm::dvec3& o, const glm::dvec3& d) {
     RayInterval r;
-    glm::dvec3 o;
-    glm::dvec3 d;
-    if (!toObjectSpace(ray, centre, rotation, halfExtents, o, d)) {
-        return r;
-    }
     // Slabs -1 <= o_i + t d_i <= 1.
     double tNear = -std::numeric_limits<double>::infinity();
     double tFar = std::numeric_limits<double>::infinity();
@@ -111,14 +108,9 @@ RayInterval intersectOrientedBox(const Ray& ray, const glm::dvec3& centre, const
     return r;
 }
 
-RayInterval intersectOrientedEllipsoid(const Ray& ray, const glm::dvec3& centre, const glm::dquat& rotation,
-                                       const glm::dvec3& halfExtents) {
+// The object-space ray o + t d against the unit sphere.
+RayInterval intersectUnitSphere(const glm::dvec3& o, const glm::dvec3& d) {
     RayInterval r;
-    glm::dvec3 o;
-    glm::dvec3 d;
-    if (!toObjectSpace(ray, centre, rotation, halfExtents, o, d)) {
-        return r;
-    }
     // |o + t d|^2 = 1  <=>  a t^2 + 2 b t + c = 0, a = d.d, b = o.d, c = o.o - 1.
     // Discriminant b^2 - a c = a (1 - |o_perp|^2), o_perp = o - (b / a) d the
     // closest approach (no cancellation for far rays); roots by the stable
@@ -150,6 +142,23 @@ RayInterval intersectOrientedEllipsoid(const Ray& ray, const glm::dvec3& centre,
         r.tOut = t1;
     }
     return r;
+}
+
+}  // namespace
+
+RayInterval intersectOrientedBox(const Ray& ray, const glm::dvec3& centre, const glm::dquat& rotation,
+                                 const glm::dvec3& halfExtents) {
+    glm::dvec3 o;
+    glm::dvec3 d;
+    return toObjectSpace(ray, centre, rotation, halfExtents, o, d) ? intersectUnitCube(o, d) : RayInterval{};
+}
+
+RayInterval intersectOrientedEllipsoid(const Ray& ray, const glm::dvec3& centre, const glm::dquat& rotation,
+                                       const glm::dvec3& halfExtents) {
+    glm::dvec3 o;
+    glm::dvec3 d;
+    return toObjectSpace(ray, centre, rotation, halfExtents, o, d) ? intersectUnitSphere(o, d)
+                                                                   : RayInterval{};
 }
 
 RayInterval intersectVolumeShape(const Ray& ray, const FogVolume& volume) {
