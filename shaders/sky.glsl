@@ -18,6 +18,21 @@
 //   whose float filtering weights are exact (GPUs quantise them to ~8 bits:
 //   invisible, but expect ~1e-3 there).
 //
+// Stars: a procedural field fixed to the celestial sphere (frame.starAxisX,
+//   starAxisY, starPole from core's celestialFrame), so it turns about the
+//   pole with sidereal time. The sphere is cut into kStarColumns x kStarRows
+//   equal-area cells in (right ascension, sin declination); a cell holds a
+//   star with probability kStarProbability, at a hashed place in the middle
+//   70 % of the cell (~8400 stars, half above the horizon), with relative flux u^kStarFluxExponent (u uniform: many
+//   faint, few bright) and a hashed tint. Each star is a Gaussian of radius
+//   sigma (0.6 pixel, at most 0.0015 rad: renderer.cpp) normalised to its flux, E_star / (2 pi sigma^2)
+//   at the centre, summed over the pixel's cell and its 8 neighbours
+//   (stars within a few cells of the pole, where cells are narrow, can be cut off), and dimmed by
+//   T_zenith^X(z) with the Kasten-Young air mass X (within 2 % of the exact
+//   slant transmittance above 10 deg elevation); none below the horizon.
+//   tests/renderer/test_renderer_stars.cpp holds a CPU copy of this
+//   function and compares every pixel.
+//
 // Table mapping and lookup: common/sky_table.glsl.
 #include "common/frame.glsl"
 
@@ -40,9 +55,67 @@ vec3 lightDisc(vec3 v, vec4 direction, vec4 illuminanceGround) {
     return illuminanceGround.rgb * illuminanceGround.w;
 }
 
+const uint kStarColumns = 1024u;
+const uint kStarRows = 512u;
+const float kStarProbability = 0.016;
+const float kStarFluxExponent = 6.0;
+const float kTwoPi = 6.28318530718;
+
+uint starHash(uint x) {
+    x ^= x >> 16;
+    x *= 0x7feb352du;
+    x ^= x >> 15;
+    x *= 0x846ca68bu;
+    x ^= x >> 16;
+    return x;
+}
+float starUnit(uint h) { return float(h >> 8) * (1.0 / 16777216.0); }
+
+/// Kasten & Young (1989) relative air mass for a zenith cosine mu > 0.
+float airMass(float mu) {
+    float zenithDeg = degrees(acos(clamp(mu, 0.0, 1.0)));
+    return 1.0 / (mu + 0.50572 * pow(96.07995 - zenithDeg, -1.6364));
+}
+
+vec3 starRadiance(vec3 v) {
+    float illuminance = frame.starAxisX.w;
+    if (!(illuminance > 0.0) || v.y <= 0.0) return vec3(0.0);
+    float sigma = frame.starAxisY.w;
+    vec3 c = vec3(dot(v, frame.starAxisX.xyz), dot(v, frame.starAxisY.xyz), dot(v, frame.starPole.xyz));
+    float u = fract(atan(c.y, c.x) / kTwoPi + 1.0);
+    float z = clamp(c.z, -1.0, 1.0);
+    int column = int(min(u * float(kStarColumns), float(kStarColumns - 1u)));
+    int row = int(min((z * 0.5 + 0.5) * float(kStarRows), float(kStarRows - 1u)));
+    vec3 sum = vec3(0.0);
+    for (int dj = -1; dj <= 1; ++dj) {
+        int j = row + dj;
+        if (j < 0 || j >= int(kStarRows)) continue;
+        for (int di = -1; di <= 1; ++di) {
+            uint i = uint(column + di + int(kStarColumns)) % kStarColumns;
+            uint h = starHash(uint(j) * kStarColumns + i + 0x5bd1e995u);
+            if (starUnit(h) >= kStarProbability) continue;
+            uint h1 = starHash(h);
+            uint h2 = starHash(h1);
+            uint h3 = starHash(h2);
+            uint h4 = starHash(h3);
+            float ra = kTwoPi * (float(i) + 0.15 + 0.7 * starUnit(h1)) / float(kStarColumns);
+            float sinDec = (float(j) + 0.15 + 0.7 * starUnit(h2)) / float(kStarRows) * 2.0 - 1.0;
+            float cosDec = sqrt(max(1.0 - sinDec * sinDec, 0.0));
+            vec3 s = vec3(cosDec * cos(ra), cosDec * sin(ra), sinDec);
+            vec3 d = c - s;
+            float weight = pow(starUnit(h3), kStarFluxExponent) * exp(-dot(d, d) / (2.0 * sigma * sigma));
+            vec3 tint = mix(vec3(1.0, 0.82, 0.64), vec3(0.72, 0.84, 1.0), starUnit(h4));
+            sum += weight * tint;
+        }
+    }
+    vec3 transmittance = pow(frame.starTransmittance.rgb, vec3(airMass(v.y)));
+    return sum * (illuminance / (kTwoPi * sigma * sigma)) * transmittance;
+}
+
 void main() {
     vec3 v = normalize(vFarRay);
     vec3 radiance = skyRadiance(v, true);
+    radiance += starRadiance(v);
     radiance += lightDisc(v, frame.sunDirection, frame.sunIlluminance);
     radiance += lightDisc(v, frame.moonDirection, frame.moonIlluminance);
     outColour = vec4(min(radiance, vec3(frame.fogColour.w)), 1.0);

@@ -556,6 +556,7 @@ void Editor::drawMenuBar() {
         ImGui::MenuItem("Ground grid", nullptr, &showGrid_);
         ImGui::Separator();
         ImGui::MenuItem("Sky", nullptr, &passes_.sky);
+        ImGui::MenuItem("Stars", nullptr, &showStars_);
         ImGui::MenuItem("Scene geometry", nullptr, &passes_.scene);
         ImGui::MenuItem("Global fog", nullptr, &passes_.globalFog);
         ImGui::MenuItem("Fog volumes", nullptr, &passes_.volumes);

@@ -113,6 +113,8 @@ private:
     // --- editor_viewport.cpp -------------------------------------------------
     void drawViewport();
     void renderViewport();
+    /// The frame of the current state, with the View menu's stars switch applied.
+    renderer::AtmosphereFrame viewportAtmosphere() const;
     void ensureDisplayTexture(int width, int height);
     void viewportInteraction(bool hovered, glm::dvec2 mouse, glm::dvec2 origin);
     bool gizmoTransformOfSelection(GizmoTransform& out) const;
@@ -217,6 +219,7 @@ private:
     bool showHelpers_ = true;
     bool showGrid_ = false;
     renderer::RenderPasses passes_;
+    bool showStars_ = true;  ///< View > Stars (the sky pass's stars at night)
     unsigned displayTexture_ = 0;
     int displayWidth_ = 0, displayHeight_ = 0;
     mutable int renderWidth_ = 0, renderHeight_ = 0;

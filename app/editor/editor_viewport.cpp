@@ -29,6 +29,12 @@ renderer::CameraFrame Editor::viewportCameraFrame() const {
     return camera_.cameraFrame(aspect);
 }
 
+renderer::AtmosphereFrame Editor::viewportAtmosphere() const {
+    renderer::AtmosphereFrame air = renderer::atmosphereFrameFromState(state_);
+    if (!showStars_) air.starIlluminance = 0.0;
+    return air;
+}
+
 void Editor::rebuildDisplay() {
     renderer::DisplayDesc desc;
     desc.display = displayName_;
@@ -74,12 +80,12 @@ void Editor::renderViewport() {
     char signature[512];
     const CameraState& c = camera_.state();
     std::snprintf(signature, sizeof signature,
-                  "%d %d %.17g %llu %llu %.17g %.17g %.17g %.17g %.17g %.17g %d%d%d%d%d%d%d %s %s %.17g %p",
+                  "%d %d %.17g %llu %llu %.17g %.17g %.17g %.17g %.17g %.17g %d%d%d%d%d%d%d%d %s %s %.17g %p",
                   width, height, timeHours_, static_cast<unsigned long long>(doc_.revision()),
                   static_cast<unsigned long long>(skyGeneration_), c.target.x, c.target.y, c.target.z,
                   c.distance, c.yaw, c.pitch + 1000.0 * c.verticalFovDeg, passes_.sky, passes_.scene,
                   passes_.globalFog, passes_.volumes, passes_.emitters, passes_.transparent,
-                  passes_.particles, displayName_.c_str(), viewName_.c_str(), exposureEv_,
+                  passes_.particles, showStars_, displayName_.c_str(), viewName_.c_str(), exposureEv_,
                   static_cast<const void*>(display_.get()));
     if (displayTexture_ && renderWidth_ == width && renderHeight_ == height &&
         lastRenderSignature_ == signature && options_.benchFrames == 0)
@@ -93,7 +99,7 @@ void Editor::renderViewport() {
     const bool timed = options_.benchFrames > 0 && frameIndex_ >= 3 && frameIndex_ % 10 == 0;
     frame.gpuTimers = timed;
     renderer_->render(camera_.camera(viewportSize_.x / viewportSize_.y),
-                      renderer::atmosphereFrameFromState(state_), frame);
+                      viewportAtmosphere(), frame);
     if (timed && renderer_->stats().timed) benchPasses_.push_back(renderer_->stats().wallMilliseconds);
     ensureDisplayTexture(width, height);
     display_->applyGpu(renderer_->colourTexture(), displayTexture_, width, height);
@@ -334,7 +340,7 @@ bool Editor::screenshot(const std::string& path, std::string& error) {
     frame.height = height;
     frame.passes = passes_;
     renderer_->render(camera_.camera(double(width) / double(height)),
-                      renderer::atmosphereFrameFromState(state_), frame);
+                      viewportAtmosphere(), frame);
     const renderer::Image image = renderer_->readColour();
     renderWidth_ = 0;  // the next frame renders the scaled view again
     const bool ok = extension == ".exr" ? renderer::writeExr(image, path, error)

@@ -73,6 +73,24 @@ CelestialBody moonPosition(const Location& where, double timeHours) {
     return moon;
 }
 
+CelestialFrame celestialFrame(const Location& where, double timeHours) {
+    // The meridian's equator point (hour angle 0), the west point (hour angle
+    // +90 deg) and the pole, from the same spherical astronomy as the sun.
+    const glm::dvec3 meridian = place(where, 0.0, 0.0).direction;
+    const glm::dvec3 west = place(where, 0.0, 0.5 * kPiD).direction;
+    const glm::dvec3 pole = place(where, 0.5 * kPiD, 0.0).direction;
+    // Hour angle of right ascension ra: H = theta - ra, so
+    // direction = cos(dec) (cos(H) meridian + sin(H) west) + sin(dec) pole
+    //           = cos(dec) (cos(ra) X + sin(ra) Y) + sin(dec) pole with
+    // X = cos(theta) meridian + sin(theta) west, Y = sin(theta) meridian - cos(theta) west.
+    const double day = std::clamp(finiteOr(where.dayOfYear, 172.0), 1.0, 366.0);
+    const double hours = (day - 1.0) * 24.0 + wrap(finiteOr(timeHours, 12.0), 24.0);
+    const double theta = 2.0 * kPiD * wrap(hours, kSiderealDayHours) / kSiderealDayHours;
+    const double c = std::cos(theta);
+    const double s = std::sin(theta);
+    return {c * meridian + s * west, s * meridian - c * west, pole};
+}
+
 double sunriseHours(const Location& where) {
     const double lat = std::clamp(finiteOr(where.latitudeDeg, 0.0), -90.0, 90.0) * kDegToRad;
     const double dec = solarDeclination(where.dayOfYear);

@@ -39,6 +39,10 @@ struct FrameBlock {
     Vec4 fogColour;
     Vec4 skyTableMapping;
     IVec4 counts;
+    Vec4 starAxisX;          ///< w: brightest star's illuminance (0: no stars)
+    Vec4 starAxisY;          ///< w: Gaussian radius of a star [rad]
+    Vec4 starPole;
+    Vec4 starTransmittance;  ///< rgb: zenith transmittance
 };
 static_assert(offsetof(FrameBlock, clipFromWorld) == 0);
 static_assert(offsetof(FrameBlock, eyeFar) == 64);
@@ -60,7 +64,9 @@ static_assert(offsetof(FrameBlock, fogParams) == 352);
 static_assert(offsetof(FrameBlock, fogColour) == 368);
 static_assert(offsetof(FrameBlock, skyTableMapping) == 384);
 static_assert(offsetof(FrameBlock, counts) == 400);
-static_assert(sizeof(FrameBlock) == 416);
+static_assert(offsetof(FrameBlock, starAxisX) == 416);
+static_assert(offsetof(FrameBlock, starTransmittance) == 464);
+static_assert(sizeof(FrameBlock) == 480);
 
 /// shaders/fog_volume.glsl, VolumeBlock (binding 1).
 struct VolumeBlock {

@@ -264,7 +264,25 @@ AtmosphereFrame atmosphereFrameFromState(const PresetState& state) {
     f.fogColour = state.environment.fogColour;
     f.volumes = state.volumes;
     f.emitters = state.emitters;
+    f.starIlluminance = kStarIlluminance * starVisibility(state.sunLight.body.elevation);
+    if (f.starIlluminance > 0.0) {
+        const AtmosphereParams& air = state.environment.atmosphere;
+        f.celestial = celestialFrame(state.environment.location, state.timeHours);
+        f.zenithTransmittance = transmittanceToSpace(air, air.viewerHeight, 1.0);
+    }
     return f;
+}
+
+/// sky.glsl's stars: the Gaussian radius never exceeds 0.4 of a cell's
+/// height (2 / 512 in sin declination, ~0.0039 rad at the equator), so the
+/// 3 x 3 cells summed hold the whole star; below ~250 rows a star is thus
+/// narrower than a pixel.
+constexpr double kStarMaxSigma = 0.0015;
+
+double starVisibility(double sunElevation) {
+    if (!std::isfinite(sunElevation)) return 0.0;
+    const double x = std::clamp((2.0 - sunElevation * (180.0 / kPi)) / 12.0, 0.0, 1.0);
+    return x * x * (3.0 - 2.0 * x);
 }
 
 FogSceneDesc fogSceneDesc(const AtmosphereFrame& frame, const SkyTable& sunTable, const SkyTable& moonTable) {
@@ -606,6 +624,15 @@ void Renderer::Impl::render(const Camera& camera, const AtmosphereFrame& air, co
     uploadEmitters(frameDesc.passes.emitters ? air.emitters : std::vector<Emitter>{}, emitterCount);
     stats.emitters = emitterCount;
     fb.counts = {emitterCount, moonSky.columns, moonSky.rows, 0};
+    // Stars: the celestial frame, the brightest star's illuminance and the
+    // Gaussian radius of a star, sigma = 0.6 pixel (vertical angle / rows).
+    const double starE = nonNegative(air.starIlluminance, 1e30);
+    const double fov = std::isfinite(camera.verticalFov) ? std::clamp(camera.verticalFov, 1e-4, kPi - 1e-4) : 1.0;
+    const double starSigma = std::min(0.6 * fov / double(h), kStarMaxSigma);
+    fb.starAxisX = vec4(unitOr(air.celestial.equatorX, {1.0, 0.0, 0.0}), starE);
+    fb.starAxisY = vec4(unitOr(air.celestial.equatorY, {0.0, 0.0, 1.0}), starSigma);
+    fb.starPole = vec4(unitOr(air.celestial.pole, {0.0, 1.0, 0.0}));
+    fb.starTransmittance = vec4(glm::clamp(colourOf(air.zenithTransmittance), 0.0, 1.0));
     glNamedBufferSubData(frameBuffer, 0, sizeof fb, &fb);
 
     glBindBufferBase(GL_UNIFORM_BUFFER, detail::kFrameBinding, frameBuffer);

@@ -31,6 +31,10 @@
 //   skyTableMapping     x, y: the sun's / moon's table light azimuth [rad];
 //                       z, w: the sun table's columns and rows
 //   counts              x: emitter count; y, z: the moon table's columns, rows
+//   starAxisX, starAxisY, starPole   the celestial frame (world, unit);
+//                       starAxisX.w: the brightest star's illuminance (0 = no
+//                       stars), starAxisY.w: a star's Gaussian radius [rad]
+//   starTransmittance   rgb: transmittance viewer -> space at the zenith
 //
 // Linear depth (the frame's R32F texture): normalised linear eye depth,
 // z_view / far, 0 at the camera and 1 at the far plane (sky pixels hold 1),
@@ -61,6 +65,10 @@ layout(std140, binding = 0) uniform FrameBlock {
     vec4 fogColour;
     vec4 skyTableMapping;  // x, y: sun / moon light azimuth [rad]; z, w: sun table columns, rows
     ivec4 counts;          // x: emitters; y, z: moon table columns, rows
+    vec4 starAxisX;
+    vec4 starAxisY;
+    vec4 starPole;
+    vec4 starTransmittance;
 } frame;
 
 // Ray from the eye to the far plane at normalised device coordinates ndc

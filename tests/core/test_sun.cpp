@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace {
@@ -177,6 +178,57 @@ TEST(Moon, TransitIsAboutFiftyMinutesLaterEachDay) {
     double delay = transit(51.0) - transit(50.0);
     if (delay < 0) delay += 24.0;
     EXPECT_NEAR(delay * 60.0, 24.0 * 60.0 / 29.530589, 1.5);  // minutes, scan step 0.6 min
+}
+
+// The celestial frame: orthonormal, pole at elevation = latitude due north
+// (north offset included), the sun's angle to the pole fixed by its
+// declination all day, one turn per sidereal day, westwards.
+TEST(CelestialFrame, PoleAndSunFollowSphericalAstronomy) {
+    for (double lat : {-60.0, -10.0, 0.0, 37.0, 89.0}) {
+        for (double offset : {0.0, 25.0}) {
+            aerial::Location where = at(lat, 100.0);
+            where.northOffsetDeg = offset;
+            const aerial::CelestialFrame f = aerial::celestialFrame(where, 3.7);
+            EXPECT_NEAR(glm::dot(f.equatorX, f.equatorY), 0.0, 1e-12);
+            EXPECT_NEAR(glm::dot(f.equatorX, f.pole), 0.0, 1e-12);
+            EXPECT_NEAR(glm::dot(f.equatorY, f.pole), 0.0, 1e-12);
+            EXPECT_NEAR(glm::length(f.equatorX), 1.0, 1e-12);
+            EXPECT_NEAR(glm::length(f.pole), 1.0, 1e-12);
+            EXPECT_NEAR(f.pole.y, std::sin(lat * kDeg), 1e-12);
+            if (lat < 89.0) {  // azimuth of the pole: north (-Z) turned by the offset towards +X
+                EXPECT_NEAR(std::atan2(f.pole.x, -f.pole.z), offset * kDeg, 1e-9);
+            }
+            const double sinDec = std::sin(aerial::solarDeclination(where.dayOfYear));
+            for (double t = 0.0; t < 24.0; t += 1.3) {
+                EXPECT_NEAR(glm::dot(aerial::celestialFrame(where, t).pole,
+                                     aerial::sunPosition(where, t).direction),
+                            sinDec, 1e-12);
+            }
+        }
+    }
+}
+
+TEST(CelestialFrame, TurnsOncePerSiderealDayWestwards) {
+    const aerial::Location day1 = at(45.0, 200.0);
+    aerial::Location day2 = day1;
+    day2.dayOfYear += 1.0;
+    const double ra = 1.1, dec = 0.3;
+    auto star = [&](const aerial::Location& where, double t) {
+        const aerial::CelestialFrame f = aerial::celestialFrame(where, t);
+        return std::cos(dec) * (std::cos(ra) * f.equatorX + std::sin(ra) * f.equatorY) + std::sin(dec) * f.pole;
+    };
+    // One sidereal day later (the next calendar day, 3 min 56 s earlier).
+    const glm::dvec3 a = star(day1, 5.0);
+    const glm::dvec3 b = star(day2, 5.0 - (24.0 - aerial::kSiderealDayHours));
+    EXPECT_NEAR(glm::length(a - b), 0.0, 1e-9);
+    // The sky turns about the pole by 2 pi / sidereal day per hour, in the
+    // sense -pole x star (the earth turns eastwards): westwards.
+    const aerial::CelestialFrame now = aerial::celestialFrame(day1, 5.0);
+    const aerial::CelestialFrame later = aerial::celestialFrame(day1, 6.0);
+    const double turned = std::acos(std::clamp(glm::dot(now.equatorX, later.equatorX), -1.0, 1.0));
+    EXPECT_NEAR(turned, 2.0 * kPi / aerial::kSiderealDayHours, 1e-9);
+    EXPECT_GT(glm::dot(later.equatorX - now.equatorX, -glm::cross(now.pole, now.equatorX)), 0.0);
+    EXPECT_NEAR(glm::length(later.pole - now.pole), 0.0, 1e-12);
 }
 
 }  // namespace

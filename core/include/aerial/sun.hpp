@@ -69,6 +69,28 @@ CelestialBody sunPosition(const Location& where, double timeHours);
 /// The moon at local solar time `timeHours`, from the model above.
 CelestialBody moonPosition(const Location& where, double timeHours);
 
+/// Length of a sidereal day [h]: the stars turn once about the celestial
+/// pole in this time.
+constexpr double kSiderealDayHours = 23.9344696;
+
+/// The celestial sphere as seen from `where` at local solar time
+/// `timeHours` of its day of the year: three orthonormal world directions.
+/// `pole` is the north celestial pole (elevation = latitude, azimuth north);
+/// `equatorX` and `equatorY` span the celestial equator at right ascension 0
+/// and 6 h. A star at right ascension ra and declination dec [rad] lies along
+///   cos(dec) (cos(ra) equatorX + sin(ra) equatorY) + sin(dec) pole.
+/// The frame turns westwards about the pole once per kSiderealDayHours of
+/// (dayOfYear - 1) * 24 + timeHours (right ascension 0 is on the meridian at
+/// hour 0 of day 1: an arbitrary epoch, as the renderer's stars are
+/// procedural). A body of fixed declination keeps its angle to the pole, so
+/// the sun of sunPosition stays at dot(pole, direction) = sin(declination).
+struct CelestialFrame {
+    glm::dvec3 equatorX{1.0, 0.0, 0.0};
+    glm::dvec3 equatorY{0.0, 0.0, 1.0};
+    glm::dvec3 pole{0.0, 1.0, 0.0};
+};
+CelestialFrame celestialFrame(const Location& where, double timeHours);
+
 /// Hours of daylight (sun centre above the geometric horizon), 0..24.
 double dayLengthHours(const Location& where);
 

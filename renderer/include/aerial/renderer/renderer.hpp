@@ -46,6 +46,7 @@
 #pragma once
 
 #include <aerial/fog_query.hpp>
+#include <aerial/sun.hpp>
 #include <aerial/renderer/camera.hpp>
 #include <aerial/renderer/image.hpp>
 #include <aerial/renderer/log.hpp>
@@ -108,7 +109,27 @@ struct AtmosphereFrame {
     double sunDiscRadius = 0.004653;
     /// Angular radius of the moon disc [rad]; 0 hides it. Default 0.2588 deg.
     double moonDiscRadius = 0.004517;
+    /// Stars (sky pass): illuminance of the brightest star above the
+    /// atmosphere, in the unit of E; 0 (the default here) hides them.
+    /// atmosphereFrameFromState sets kStarIlluminance times a night fade.
+    double starIlluminance = 0.0;
+    /// The celestial sphere the stars are fixed to (core's celestialFrame).
+    CelestialFrame celestial;
+    /// Transmittance from the viewer to space at the zenith, RGB: a star at
+    /// zenith angle z is dimmed by zenithTransmittance^X(z), X the
+    /// Kasten-Young (1989) air mass.
+    glm::dvec3 zenithTransmittance{1.0};
 };
+
+/// Illuminance of the brightest procedural star for the default sun (20):
+/// about 1000x the physical ratio of Sirius to the sun (~1e-10), the same
+/// artistic factor as the default moon (preset.hpp), so the stars read next
+/// to a moonlit sky.
+constexpr double kStarIlluminance = 2e-6;
+
+/// Night fade of the stars: 0 with the sun above +2 deg, 1 below -10 deg
+/// (nautical twilight), smoothstep between.
+double starVisibility(double sunElevation);
 
 /// The frame for a preset state (sun and moon from sunLight / moonLight).
 AtmosphereFrame atmosphereFrameFromState(const PresetState& state);
