@@ -312,15 +312,23 @@ bool pasteKey(Preset& preset, const ParamRef& ref, const KeyClipboard& clip, dou
     return true;
 }
 
+/// A unique id from `base` (uniqueObjectId) and the name shown for it:
+/// `label`, followed by the id's number when `base` itself was taken.
+static void nameNewObject(const Preset& preset, bool volume, const std::string& base, const char* label,
+                          std::string& id, std::string& name) {
+    id = uniqueObjectId(preset, volume, base);
+    name = label;
+    if (id != base) {
+        name += ' ';
+        name += id.substr(id.rfind('_') + 1);
+    }
+}
+
 int addVolume(Preset& preset, FogVolumeShape shape, const glm::dvec3& position) {
     FogVolume v;
     const bool box = shape == FogVolumeShape::Box;
-    v.id = uniqueObjectId(preset, true, box ? "box_volume" : "ellipsoid_volume");
-    v.name = box ? "Box volume" : "Ellipsoid volume";
-    if (v.id != (box ? "box_volume" : "ellipsoid_volume")) {
-        v.name += ' ';
-        v.name += v.id.substr(v.id.rfind('_') + 1);
-    }
+    nameNewObject(preset, true, box ? "box_volume" : "ellipsoid_volume",
+                  box ? "Box volume" : "Ellipsoid volume", v.id, v.name);
     v.shape = shape;
     v.position = position;
     preset.volumes.push_back(v);
@@ -330,12 +338,8 @@ int addVolume(Preset& preset, FogVolumeShape shape, const glm::dvec3& position) 
 int addEmitter(Preset& preset, EmitterKind kind, const glm::dvec3& position) {
     Emitter e;
     const bool lightning = kind == EmitterKind::Lightning;
-    e.id = uniqueObjectId(preset, false, lightning ? "lightning" : "emitter");
-    e.name = lightning ? "Lightning" : "Emitter";
-    if (e.id != (lightning ? "lightning" : "emitter")) {
-        e.name += ' ';
-        e.name += e.id.substr(e.id.rfind('_') + 1);
-    }
+    nameNewObject(preset, false, lightning ? "lightning" : "emitter", lightning ? "Lightning" : "Emitter",
+                  e.id, e.name);
     e.kind = kind;
     e.position = position;
     e.intensity = kNewEmitterIntensityPerM;
