@@ -512,10 +512,10 @@ void Editor::drawMenuBar() {
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Create")) {
-        if (ImGui::MenuItem("Box volume")) addVolumeInFront(FogVolumeShape::Box);
-        if (ImGui::MenuItem("Ellipsoid volume")) addVolumeInFront(FogVolumeShape::Ellipsoid);
-        if (ImGui::MenuItem("Emitter")) addEmitterInFront(EmitterKind::Point);
-        if (ImGui::MenuItem("Lightning")) addEmitterInFront(EmitterKind::Lightning);
+        if (ImGui::MenuItem("Box volume", "Shift+B")) addVolumeInFront(FogVolumeShape::Box);
+        if (ImGui::MenuItem("Ellipsoid volume", "Shift+E")) addVolumeInFront(FogVolumeShape::Ellipsoid);
+        if (ImGui::MenuItem("Emitter", "Shift+P")) addEmitterInFront(EmitterKind::Point);
+        if (ImGui::MenuItem("Lightning", "Shift+T")) addEmitterInFront(EmitterKind::Lightning);
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("View")) {
@@ -626,6 +626,13 @@ void Editor::handleShortcuts() {
         return;
     }
     if (camera_.flying()) return;  // W A S D Q E fly
+    if (shift) {  // Create: in front of the camera
+        if (pressed(GLFW_KEY_B)) addVolumeInFront(FogVolumeShape::Box);
+        if (pressed(GLFW_KEY_E)) addVolumeInFront(FogVolumeShape::Ellipsoid);
+        if (pressed(GLFW_KEY_P)) addEmitterInFront(EmitterKind::Point);
+        if (pressed(GLFW_KEY_T)) addEmitterInFront(EmitterKind::Lightning);
+        return;
+    }
     if (pressed(GLFW_KEY_W)) gizmoMode_ = GizmoMode::Translate;
     if (pressed(GLFW_KEY_E)) gizmoMode_ = GizmoMode::Rotate;
     if (pressed(GLFW_KEY_R)) gizmoMode_ = GizmoMode::Scale;
