@@ -355,27 +355,30 @@ int addEmitter(Preset& preset, EmitterKind kind, const glm::dvec3& position) {
     return int(preset.emitters.size()) - 1;
 }
 
+/// Appends a copy of (preset.*objects)[index] with a new unique id, " copy"
+/// after its name and moved by `offset`; false for a bad index.
+template <class Object>
+static bool appendCopy(Preset& preset, std::vector<Object> Preset::*objects, bool volume, int index,
+                       const glm::dvec3& offset, std::string& oldId, std::string& newId) {
+    std::vector<Object>& list = preset.*objects;
+    if (index < 0 || index >= int(list.size())) return false;
+    Object copy = list[std::size_t(index)];
+    oldId = copy.id;
+    copy.id = newId = uniqueObjectId(preset, volume, oldId);
+    copy.name += " copy";
+    copy.position += offset;
+    list.push_back(std::move(copy));
+    return true;
+}
+
 int duplicateObject(Preset& preset, ParamScope scope, int index, const glm::dvec3& offset) {
     std::string oldId, newId;
-    if (scope == ParamScope::Volume) {
-        if (index < 0 || index >= int(preset.volumes.size())) return -1;
-        FogVolume copy = preset.volumes[std::size_t(index)];
-        oldId = copy.id;
-        copy.id = newId = uniqueObjectId(preset, true, oldId);
-        copy.name += " copy";
-        copy.position += offset;
-        preset.volumes.push_back(copy);
-    } else if (scope == ParamScope::Emitter) {
-        if (index < 0 || index >= int(preset.emitters.size())) return -1;
-        Emitter copy = preset.emitters[std::size_t(index)];
-        oldId = copy.id;
-        copy.id = newId = uniqueObjectId(preset, false, oldId);
-        copy.name += " copy";
-        copy.position += offset;
-        preset.emitters.push_back(copy);
-    } else {
-        return -1;
-    }
+    const bool copied = scope == ParamScope::Volume
+                            ? appendCopy(preset, &Preset::volumes, true, index, offset, oldId, newId)
+                        : scope == ParamScope::Emitter
+                            ? appendCopy(preset, &Preset::emitters, false, index, offset, oldId, newId)
+                            : false;
+    if (!copied) return -1;
     const std::size_t trackCount = preset.tracks.size();
     for (std::size_t i = 0; i < trackCount; ++i) {
         if (preset.tracks[i].target.scope != scope || preset.tracks[i].target.objectId != oldId) continue;
