@@ -184,6 +184,7 @@ void CompiledPreset::evaluate(double timeHours, PresetState& state) const {
     moon.illuminanceSpace = env.moon.illuminance() * moon.body.phaseIrradiance;
     moon.transmittance = impl.transmittance(air, moon.body.direction);
     moon.illuminance = moon.illuminanceSpace * moon.transmittance;
+    state.zenithTransmittance = impl.transmittance(air, glm::dvec3(0.0, 1.0, 0.0));
 
     // 4. Lightning.
     for (std::size_t i = 0; i < state.emitters.size(); ++i) {

@@ -266,9 +266,8 @@ AtmosphereFrame atmosphereFrameFromState(const PresetState& state) {
     f.emitters = state.emitters;
     f.starIlluminance = kStarIlluminance * starVisibility(state.sunLight.body.elevation);
     if (f.starIlluminance > 0.0) {
-        const AtmosphereParams& air = state.environment.atmosphere;
         f.celestial = celestialFrame(state.environment.location, state.timeHours);
-        f.zenithTransmittance = transmittanceToSpace(air, air.viewerHeight, 1.0);
+        f.zenithTransmittance = state.zenithTransmittance;
     }
     return f;
 }

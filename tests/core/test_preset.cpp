@@ -579,10 +579,12 @@ TEST(Evaluate, SunMoonAndTransmittanceFollowTheModels) {
         const aerial::AtmosphereParams& air = s.environment.atmosphere;
         const glm::dvec3 tSun = aerial::transmittanceToSpace(air, air.viewerHeight, sun.direction.y);
         const glm::dvec3 tMoon = aerial::transmittanceToSpace(air, air.viewerHeight, moon.direction.y);
+        const glm::dvec3 tZenith = aerial::transmittanceToSpace(air, air.viewerHeight, 1.0);
         for (int c = 0; c < 3; ++c) {
             // Tabulated optical depths: within 5e-4 of the direct quadrature.
             EXPECT_NEAR(s.sunLight.transmittance[c], tSun[c], 5e-4) << "t " << t;
             EXPECT_NEAR(s.moonLight.transmittance[c], tMoon[c], 5e-4) << "t " << t;
+            EXPECT_NEAR(s.zenithTransmittance[c], tZenith[c], 5e-4) << "t " << t;
         }
         const glm::dvec3 eSun = p.environment.sun.colour * p.environment.sun.intensity;
         EXPECT_EQ(s.sunLight.illuminanceSpace, eSun);

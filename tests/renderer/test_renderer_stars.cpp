@@ -190,6 +190,9 @@ TEST_F(Stars, FadeWithTheSunAndHideBehindTheScene) {
     ASSERT_LT(midnight.sunLight.body.elevation, -12.0 * kTwoPi / 360.0);
     const renderer::AtmosphereFrame air = renderer::atmosphereFrameFromState(midnight);
     EXPECT_EQ(air.starIlluminance, renderer::kStarIlluminance);
+    const AtmosphereParams& atmosphere = midnight.environment.atmosphere;
+    const glm::dvec3 zenith = transmittanceToSpace(atmosphere, atmosphere.viewerHeight, 1.0);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(air.zenithTransmittance[c], zenith[c], 5e-4);  // tabulated in evaluate
     EXPECT_NEAR(glm::dot(air.celestial.pole, midnight.sunLight.body.direction),
                 std::sin(solarDeclination(midnight.environment.location.dayOfYear)), 1e-12);
 

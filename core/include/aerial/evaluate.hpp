@@ -70,6 +70,9 @@ struct PresetState {
     std::vector<double> emitterFlash;
     LightState sunLight;
     LightState moonLight;
+    /// T(viewer -> space) straight up, RGB, 0..1 (what dims the stars;
+    /// from the same transmittance table as the lights).
+    glm::dvec3 zenithTransmittance{1.0};
 };
 
 /// A preset with its tracks bound to the fields they animate.
