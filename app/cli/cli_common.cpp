@@ -1,6 +1,7 @@
 // cli_common.cpp — see cli_common.hpp.
 #include "cli_common.hpp"
 
+#include <aerial/clock.hpp>
 #include <aerial/detail/file_system.hpp>
 #include <aerial/limits.hpp>
 
@@ -108,24 +109,10 @@ bool parseNumber(const std::string& text, double& out) {
 }
 
 double parseTimeOfDay(const std::string& text, const std::string& option) {
-    const std::string t = trim(text);
-    const std::string why = option + ": " + quoted(text) +
-                            " is not a time of day (HH:MM with HH 00..23 and MM 00..59, or hours in [0, 24))";
-    if (t.find(':') != std::string::npos) {
-        const std::vector<std::string> parts = split(t, ':');
-        if (parts.size() != 2 && parts.size() != 3) usageError(why);
-        int hours = 0, minutes = 0, seconds = 0;
-        if (!parseDigits(parts[0], 2, hours) || !parseDigits(parts[1], 2, minutes) || parts[1].size() != 2)
-            usageError(why);
-        if (parts.size() == 3 && (!parseDigits(parts[2], 2, seconds) || parts[2].size() != 2))
-            usageError(why);
-        if (hours > 23 || minutes > 59 || seconds > 59) usageError(why);
-        return hours + minutes / 60.0 + seconds / 3600.0;
-    }
-    std::string number = t;
-    stripSuffix(number, "h");
     double hours = 0.0;
-    if (!parseNumber(number, hours) || hours < 0.0 || hours >= 24.0) usageError(why);
+    if (!parseClock(text, hours))
+        usageError(option + ": " + quoted(text) +
+                   " is not a time of day (HH:MM with HH 00..23 and MM 00..59, or hours in [0, 24))");
     return hours;
 }
 
@@ -268,16 +255,7 @@ Preset loadPresetOrFail(const std::string& path, const std::string& command) {
 // ---------------------------------------------------------------------------
 // Text and JSON
 
-std::string formatTime(double hours) {
-    const long long seconds = std::llround(wrapHours(hours) * 3600.0) % 86400;
-    char text[16];
-    if (seconds % 60 == 0)
-        std::snprintf(text, sizeof text, "%02lld:%02lld", seconds / 3600, seconds / 60 % 60);
-    else
-        std::snprintf(text, sizeof text, "%02lld:%02lld:%02lld", seconds / 3600, seconds / 60 % 60,
-                      seconds % 60);
-    return text;
-}
+std::string formatTime(double hours) { return formatClock(hours); }
 
 Json toJson(const glm::dvec3& v) { return Json::array({v.x, v.y, v.z}); }
 

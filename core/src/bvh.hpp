@@ -1,23 +1,19 @@
-// bvh.hpp — private: the fog-volume acceleration structure shared by
-// fog_volume.cpp (single-volume API) and fog_query.cpp (FogScene).
+// bvh.hpp — private: the fog-volume acceleration structure of FogScene
+// (fog_query.cpp).
 //
-// PreparedVolume is a FogVolume reduced to what a ray needs: the sanitised
-// object-from-world transform (3x3 + translation), the normalised gradient,
-// the world bounds. intersectFogVolume() and FogScene use the very same
-// prepare + intersect code, so a BVH query and a brute-force loop over the
-// public functions give bit-identical per-volume answers.
-//
-// VolumeBvh is a flat binary BVH over the world AABBs of the valid volumes,
-// built once with a binned surface-area heuristic; traversal is conservative
-// (bounds are padded, zero direction components handled without NaN), so it
-// only ever prunes volumes the exact object-space test would also miss.
+// VolumeBvh is a flat binary BVH over the world AABBs of the valid prepared
+// volumes (aerial/fog_volume.hpp, prepareFogVolume), built once with a binned
+// surface-area heuristic; traversal is conservative (bounds are padded, zero
+// direction components handled without NaN), so it only ever prunes volumes
+// the exact object-space test would also miss. FogScene and the public
+// single-volume functions share the one geometry of fog_volume.hpp, so a BVH
+// query and a brute-force loop over the public functions give bit-identical
+// per-volume answers.
 #pragma once
 
 #include <aerial/fog_volume.hpp>
-#include <aerial/height_fog.hpp>
 
 #include <glm/geometric.hpp>
-#include <glm/gtc/quaternion.hpp>
 #include <glm/vec3.hpp>
 
 #include <algorithm>
@@ -29,192 +25,6 @@
 #include <vector>
 
 namespace aerial::detail {
-
-/// World coordinates, ray directions and half extents beyond this magnitude
-/// [m] are not meaningful; a volume or ray that uses them is never hit. Keeps
-/// every object-space product finite.
-constexpr double kMaxCoordinate = 1.0e30;
-/// Half extents below this [m] (1 um) make a volume degenerate.
-constexpr double kMinHalfExtent = 1.0e-6;
-/// Density, falloff and offset magnitudes are clamped to this.
-constexpr double kMaxParameter = 1.0e150;
-
-inline bool isFinite(const glm::dvec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
-inline bool withinCoordinateRange(const glm::dvec3& v) {
-    // NaN fails every comparison, so it is out of range too.
-    return std::fabs(v.x) <= kMaxCoordinate && std::fabs(v.y) <= kMaxCoordinate &&
-           std::fabs(v.z) <= kMaxCoordinate;
-}
-
-/// Not finite or negative -> 0, else clamped to [0, kMaxParameter].
-inline double sanitiseNonNegative(double x) {
-    return (std::isfinite(x) && x > 0.0) ? std::min(x, kMaxParameter) : 0.0;
-}
-
-/// Not finite -> 0, else clamped to [-kMaxParameter, kMaxParameter].
-inline double sanitiseSigned(double x) {
-    return std::isfinite(x) ? std::clamp(x, -kMaxParameter, kMaxParameter) : 0.0;
-}
-
-/// Radiance and colour components: not finite or negative -> 0, at most 1e30.
-inline glm::dvec3 sanitiseColour(const glm::dvec3& c) {
-    auto one = [](double x) { return (std::isfinite(x) && x > 0.0) ? std::min(x, 1.0e30) : 0.0; };
-    return {one(c.x), one(c.y), one(c.z)};
-}
-
-/// Normalised direction; +Y when zero or not finite.
-inline glm::dvec3 safeDirection(const glm::dvec3& v) {
-    if (!isFinite(v)) {
-        return {0.0, 1.0, 0.0};
-    }
-    // Rescale first so that tiny or huge vectors normalise without
-    // underflow or overflow.
-    const double m = std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
-    if (!(m > 0.0)) {
-        return {0.0, 1.0, 0.0};
-    }
-    const glm::dvec3 s = v / m;
-    return s / std::sqrt(glm::dot(s, s));
-}
-
-struct PreparedVolume {
-    bool valid = false;  ///< false: degenerate, never hit
-    FogVolumeShape shape = FogVolumeShape::Box;
-    glm::dvec3 position{0.0};
-    /// Rows of objectFromWorld (3x3): object = M (world - position).
-    glm::dvec3 row0{1.0, 0.0, 0.0};
-    glm::dvec3 row1{0.0, 1.0, 0.0};
-    glm::dvec3 row2{0.0, 0.0, 1.0};
-    glm::dvec3 gradient{0.0, 1.0, 0.0};  ///< unit, world
-    double gradientOffset = 0.0;         ///< [m]
-    double density = 0.0;                ///< [1/m], sanitised
-    double falloff = 0.0;                ///< [1/m], sanitised
-    glm::dvec3 boundsMin{0.0};           ///< world AABB (exact, unpadded)
-    glm::dvec3 boundsMax{0.0};
-    FogColourMode colourMode = FogColourMode::Sky;
-    glm::dvec3 colour{1.0};  ///< sanitised
-
-    glm::dvec3 toObject(const glm::dvec3& worldVector) const {
-        return {glm::dot(row0, worldVector), glm::dot(row1, worldVector), glm::dot(row2, worldVector)};
-    }
-};
-
-inline PreparedVolume prepareVolume(const FogVolume& v) {
-    PreparedVolume p;
-    p.shape = v.shape;
-    p.colourMode = v.colourMode;
-    p.colour = sanitiseColour(v.colour);
-    p.density = sanitiseNonNegative(v.density);
-    p.falloff = sanitiseNonNegative(v.falloff);
-    p.gradient = safeDirection(v.gradientDirection);
-    p.gradientOffset = sanitiseSigned(v.gradientOffset);
-
-    const glm::dvec3 s = v.halfExtents;
-    const bool extentsOk = s.x >= kMinHalfExtent && s.y >= kMinHalfExtent && s.z >= kMinHalfExtent &&
-                           s.x <= kMaxCoordinate && s.y <= kMaxCoordinate && s.z <= kMaxCoordinate;
-    const glm::dquat q = v.rotation;
-    const double qNorm2 = q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z;
-    const bool rotationOk = std::isfinite(qNorm2) && qNorm2 > 1.0e-200;
-    const bool positionOk = withinCoordinateRange(v.position);
-    p.position = positionOk ? v.position : glm::dvec3(0.0);
-    p.boundsMin = p.position;
-    p.boundsMax = p.position;
-    if (!(extentsOk && rotationOk && positionOk)) {
-        return p;  // degenerate: never hit, density 0 everywhere
-    }
-    p.valid = true;
-
-    // World from object rotation R (columns = object axes in world space).
-    const glm::dmat3 r = glm::mat3_cast(q / std::sqrt(qNorm2));
-    // objectFromWorld = S^-1 R^T: its rows are R's columns over the extents.
-    p.row0 = r[0] / s.x;
-    p.row1 = r[1] / s.y;
-    p.row2 = r[2] / s.z;
-
-    // World AABB: half width along world axis i of the image of the unit
-    // cube is sum_j |R_ij| s_j; of the unit sphere sqrt(sum_j (R_ij s_j)^2).
-    glm::dvec3 half;
-    for (int i = 0; i < 3; ++i) {
-        const double a = r[0][i] * s.x;
-        const double b = r[1][i] * s.y;
-        const double c = r[2][i] * s.z;
-        half[i] = (v.shape == FogVolumeShape::Box) ? std::fabs(a) + std::fabs(b) + std::fabs(c)
-                                                   : std::sqrt(a * a + b * b + c * c);
-    }
-    p.boundsMin = p.position - half;
-    p.boundsMax = p.position + half;
-    return p;
-}
-
-/// Ray origin + t direction, t in [0, tMax], against a prepared volume in
-/// object space. Inputs must already be finite and within kMaxCoordinate
-/// (tMax finite, >= 0). Returns the clipped segment.
-inline VolumeSegment intersectPrepared(const PreparedVolume& p, const glm::dvec3& origin,
-                                       const glm::dvec3& direction, double tMax) {
-    VolumeSegment seg;
-    if (!p.valid) {
-        return seg;
-    }
-    const glm::dvec3 o = p.toObject(origin - p.position);
-    const glm::dvec3 d = p.toObject(direction);
-    double tNear = -std::numeric_limits<double>::infinity();
-    double tFar = std::numeric_limits<double>::infinity();
-    if (p.shape == FogVolumeShape::Box) {
-        // Slabs |o_i + t d_i| <= 1. Divisions (not reciprocals) so that a
-        // tiny d_i gives +-Inf, never NaN: (+-1 - o_i) is finite and d_i != 0.
-        for (int i = 0; i < 3; ++i) {
-            if (d[i] != 0.0) {
-                const double t1 = (-1.0 - o[i]) / d[i];
-                const double t2 = (1.0 - o[i]) / d[i];
-                tNear = std::max(tNear, std::min(t1, t2));
-                tFar = std::min(tFar, std::max(t1, t2));
-            } else if (!(std::fabs(o[i]) <= 1.0)) {
-                return seg;  // parallel to and outside this slab
-            }
-        }
-    } else {
-        // Unit sphere. With the closest approach p_perp = o + t* d,
-        // t* = -(o.d)/(d.d), the roots are t* -+ sqrt((1 - |p_perp|^2) / d.d):
-        // no B^2 - AC cancellation for far or grazing rays.
-        const double a = glm::dot(d, d);
-        if (!(a > 0.0)) {
-            return seg;
-        }
-        const double tMid = -glm::dot(o, d) / a;
-        const glm::dvec3 perp = o + tMid * d;
-        const double h = 1.0 - glm::dot(perp, perp);
-        if (!(h > 0.0)) {
-            return seg;
-        }
-        const double halfChord = std::sqrt(h / a);
-        tNear = tMid - halfChord;
-        tFar = tMid + halfChord;
-    }
-    const double tIn = std::max(tNear, 0.0);
-    const double tOut = std::min(tFar, tMax);
-    if (tIn < tOut) {  // false for NaN as well
-        seg.hit = true;
-        seg.tIn = tIn;
-        seg.tOut = tOut;
-    }
-    return seg;
-}
-
-/// Optical depth of a prepared volume over a clipped segment (world
-/// distances: the parameter t is in units of |direction|).
-inline double opticalDepthPrepared(const PreparedVolume& p, const glm::dvec3& origin,
-                                   const glm::dvec3& direction, const VolumeSegment& seg) {
-    if (!p.valid || !seg.hit) {
-        return 0.0;
-    }
-    const double span = seg.tOut - seg.tIn;
-    const double rate = glm::dot(direction, p.gradient);  // height change per unit t
-    const double height = glm::dot(origin - p.position, p.gradient) + seg.tIn * rate - p.gradientOffset;
-    return exponentialOpticalDepth(p.density, p.falloff, height, span * rate, span * glm::length(direction));
-}
 
 /// Flat binary BVH over world AABBs, built top-down with a binned SAH as a
 /// tree of Nodes (node i's children are leftOrFirst and leftOrFirst + 1, or
@@ -233,7 +43,7 @@ public:
     VolumeBvh() = default;
 
     /// Builds over the valid entries of `volumes`.
-    explicit VolumeBvh(const std::vector<PreparedVolume>& volumes) {
+    explicit VolumeBvh(const std::vector<PreparedFogVolume>& volumes) {
         for (std::size_t i = 0; i < volumes.size(); ++i) {
             if (volumes[i].valid) {
                 Prim prim;

@@ -18,9 +18,10 @@
 // emitters. For L K < X it is evaluated as i L atanc(L K / X) / X with
 // atanc(z) = atan(z)/z, which is exact at a = 0 (K = 0): i L; otherwise as
 // (i / K) (pi/2 - atan(X / (L K))).
-#include "bvh.hpp"
+#include "sanitise.hpp"
 
 #include <aerial/emitter.hpp>
+#include <aerial/finite.hpp>
 
 #include <glm/geometric.hpp>
 
@@ -47,7 +48,7 @@ double clampedNonNegative(double x, double bound) {
 }  // namespace
 
 double emitterFieldAt(const Emitter& emitter, const glm::dvec3& point) {
-    if (!detail::withinCoordinateRange(point) || !detail::withinCoordinateRange(emitter.position)) {
+    if (!withinCoordinateRange(point) || !withinCoordinateRange(emitter.position)) {
         return 0.0;
     }
     const double i = clampedNonNegative(emitter.intensity, kMaxEmitterParameter);
@@ -57,8 +58,8 @@ double emitterFieldAt(const Emitter& emitter, const glm::dvec3& point) {
 }
 
 double emitterIntegral(const Emitter& emitter, const glm::dvec3& origin, const glm::dvec3& delta) {
-    if (!detail::withinCoordinateRange(origin) || !detail::withinCoordinateRange(delta) ||
-        !detail::withinCoordinateRange(emitter.position)) {
+    if (!withinCoordinateRange(origin) || !withinCoordinateRange(delta) ||
+        !withinCoordinateRange(emitter.position)) {
         return 0.0;
     }
     const double i = clampedNonNegative(emitter.intensity, kMaxEmitterParameter);

@@ -8,8 +8,11 @@
 // then the emitters. No heap allocation unless a segment crosses more than
 // kInlineHits volumes.
 #include "bvh.hpp"
+#include "sanitise.hpp"
+#include "volume_geometry.hpp"
 
 #include <aerial/atmosphere.hpp>
+#include <aerial/finite.hpp>
 #include <aerial/fog_query.hpp>
 
 #include <glm/geometric.hpp>
@@ -76,7 +79,7 @@ struct PreparedLight {
 
 struct FogScene::Impl {
     FogSceneDesc desc;
-    std::vector<detail::PreparedVolume> volumes;
+    std::vector<PreparedFogVolume> volumes;
     detail::VolumeBvh bvh;
     std::array<PreparedLight, 2> lights;
     std::size_t lightCount = 0;
@@ -87,7 +90,7 @@ struct FogScene::Impl {
     explicit Impl(const FogSceneDesc& d) : desc(d) {
         volumes.reserve(desc.volumes.size());
         for (const FogVolume& v : desc.volumes) {
-            volumes.push_back(detail::prepareVolume(v));
+            volumes.push_back(prepareFogVolume(v));
         }
         bvh = detail::VolumeBvh(volumes);
         for (const FogLight& light : desc.lights) {
@@ -137,10 +140,10 @@ struct FogScene::Impl {
     /// Collects the crossed volumes of from + t delta, t in [0, 1].
     void collect(const glm::dvec3& from, const glm::dvec3& delta, HitBuffer& hits) const {
         bvh.traverse(from, delta, 1.0, [&](std::uint32_t index) {
-            const detail::PreparedVolume& v = volumes[index];
-            const VolumeSegment seg = detail::intersectPrepared(v, from, delta, 1.0);
+            const PreparedFogVolume& v = volumes[index];
+            const VolumeSegment seg = detail::clippedSegment(v, from, delta, 1.0);
             if (seg.hit) {
-                hits.push({index, seg.tIn, seg.tOut, detail::opticalDepthPrepared(v, from, delta, seg)});
+                hits.push({index, seg.tIn, seg.tOut, detail::segmentOpticalDepth(v, from, delta, seg)});
             }
         });
         std::sort(hits.begin(), hits.end(), backToFront);
@@ -149,11 +152,11 @@ struct FogScene::Impl {
     FogQueryResult run(const glm::dvec3& from, const glm::dvec3& to,
                        std::vector<VolumeContribution>* contributions) const {
         FogQueryResult result;
-        if (!detail::withinCoordinateRange(from) || !detail::withinCoordinateRange(to)) {
+        if (!withinCoordinateRange(from) || !withinCoordinateRange(to)) {
             return result;  // non-finite or absurd input: no fog
         }
         const glm::dvec3 delta = to - from;
-        if (!detail::withinCoordinateRange(delta)) {
+        if (!withinCoordinateRange(delta)) {
             return result;
         }
         const double length = glm::length(delta);
@@ -183,7 +186,7 @@ struct FogScene::Impl {
 
         // 2. Volumes, back to front: L <- L T_v + C_v (1 - T_v).
         for (const Hit& h : hits) {
-            const detail::PreparedVolume& v = volumes[h.index];
+            const PreparedFogVolume& v = volumes[h.index];
             const glm::dvec3 colour = fogColourFor(v.colourMode, v.colour, fogColour);
             const double tv = std::exp(-h.opticalDepth);
             inScatter = inScatter * tv + colour * -std::expm1(-h.opticalDepth);

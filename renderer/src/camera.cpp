@@ -2,6 +2,7 @@
 // section 6.3: the rays from the eye to the far plane's corners,
 // interpolated across the screen, turn linear depth into world positions
 // with one multiply-add).
+#include <aerial/finite.hpp>
 #include <aerial/renderer/camera.hpp>
 
 #include <glm/geometric.hpp>
@@ -12,8 +13,6 @@
 namespace aerial::renderer {
 namespace {
 
-bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-
 glm::dvec3 normalisedOr(const glm::dvec3& v, const glm::dvec3& fallback) {
     const double len = glm::length(v);
     return (len > 1e-300 && std::isfinite(len)) ? v / len : fallback;
@@ -23,10 +22,10 @@ glm::dvec3 normalisedOr(const glm::dvec3& v, const glm::dvec3& fallback) {
 
 CameraFrame cameraFrame(const Camera& camera) {
     CameraFrame f;
-    f.eye = finite(camera.eye) ? camera.eye : glm::dvec3(0.0);
-    const glm::dvec3 target = finite(camera.target) ? camera.target : f.eye + glm::dvec3(0.0, 0.0, -1.0);
+    f.eye = isFinite(camera.eye) ? camera.eye : glm::dvec3(0.0);
+    const glm::dvec3 target = isFinite(camera.target) ? camera.target : f.eye + glm::dvec3(0.0, 0.0, -1.0);
     f.forward = normalisedOr(target - f.eye, glm::dvec3(0.0, 0.0, -1.0));
-    glm::dvec3 up = finite(camera.up) ? camera.up : glm::dvec3(0.0, 1.0, 0.0);
+    glm::dvec3 up = isFinite(camera.up) ? camera.up : glm::dvec3(0.0, 1.0, 0.0);
     glm::dvec3 right = glm::cross(f.forward, up);
     if (glm::length(right) < 1e-9 * std::max(glm::length(up), 1e-300)) {
         // Up parallel to the view: any perpendicular will do.

@@ -17,6 +17,7 @@
 // build with replay_main.cpp, which runs the seed corpus through it as a
 // CTest test.
 #include <aerial/evaluate.hpp>
+#include <aerial/finite.hpp>
 #include <aerial/preset.hpp>
 
 #include <cmath>
@@ -34,24 +35,24 @@ void check(bool ok, const char* what) {
     }
 }
 
-bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+using aerial::isFinite;
 
 void checkState(const aerial::PresetState& s) {
-    check(finite(s.sunLight.body.direction) && finite(s.sunLight.illuminance), "finite sun");
-    check(finite(s.moonLight.body.direction) && finite(s.moonLight.illuminance), "finite moon");
+    check(isFinite(s.sunLight.body.direction) && isFinite(s.sunLight.illuminance), "finite sun");
+    check(isFinite(s.moonLight.body.direction) && isFinite(s.moonLight.illuminance), "finite moon");
     const aerial::Environment& e = s.environment;
     check(std::isfinite(e.fog.density) && std::isfinite(e.fog.falloff) && std::isfinite(e.fog.baseHeight),
           "finite fog");
-    check(finite(e.atmosphere.rayleighScattering) && finite(e.atmosphere.mieScattering) &&
-              finite(e.atmosphere.mieExtinction),
+    check(isFinite(e.atmosphere.rayleighScattering) && isFinite(e.atmosphere.mieScattering) &&
+              isFinite(e.atmosphere.mieExtinction),
           "finite atmosphere");
     for (const aerial::FogVolume& v : s.volumes)
-        check(finite(v.position) && finite(v.halfExtents) && std::isfinite(v.density) && finite(v.colour) &&
-                  finite(v.gradientDirection) && v.density >= 0.0 && v.halfExtents.x > 0.0 &&
-                  v.halfExtents.y > 0.0 && v.halfExtents.z > 0.0,
+        check(isFinite(v.position) && isFinite(v.halfExtents) && std::isfinite(v.density) &&
+                  isFinite(v.colour) && isFinite(v.gradientDirection) && v.density >= 0.0 &&
+                  v.halfExtents.x > 0.0 && v.halfExtents.y > 0.0 && v.halfExtents.z > 0.0,
               "finite, positive volume");
     for (const aerial::Emitter& m : s.emitters)
-        check(finite(m.position) && std::isfinite(m.intensity) && finite(m.colour) && m.intensity >= 0.0,
+        check(isFinite(m.position) && std::isfinite(m.intensity) && isFinite(m.colour) && m.intensity >= 0.0,
               "finite emitter");
 }
 

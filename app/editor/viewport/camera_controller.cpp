@@ -2,6 +2,8 @@
 // viewport (see camera_controller.hpp for the controls and conventions).
 #include "viewport/camera_controller.hpp"
 
+#include <aerial/finite.hpp>
+
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
@@ -16,8 +18,6 @@ constexpr double kMaxCoordinate = 1.0e7;  // [m] the pivot stays within this box
 constexpr double kMaxDt = 0.25;           // [s] a stalled frame does not teleport the fly camera
 constexpr double kMaxWheel = 100.0;       // notches per frame
 constexpr double kMaxMouseDelta = 1.0e5;  // [px] per frame
-
-bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 double finiteOr(double v, double fallback) { return std::isfinite(v) ? v : fallback; }
 
@@ -40,7 +40,7 @@ glm::dvec3 viewDirection(double yaw, double pitch) {
 CameraState sanitisedCameraState(const CameraState& state) {
     const CameraState d{};
     CameraState s;
-    s.target = finite(state.target)
+    s.target = isFinite(state.target)
                    ? glm::clamp(state.target, glm::dvec3(-kMaxCoordinate), glm::dvec3(kMaxCoordinate))
                    : d.target;
     s.distance = std::clamp(finiteOr(state.distance, d.distance), kMinDistance, kMaxDistance);
@@ -250,7 +250,7 @@ ViewUpdate CameraController::update(const ViewInput& input) {
 }
 
 void CameraController::frame(const glm::dvec3& centre, double radius, double aspect, double margin) {
-    if (!finite(centre) || !std::isfinite(radius)) {
+    if (!isFinite(centre) || !std::isfinite(radius)) {
         return;
     }
     const double a = (std::isfinite(aspect) && aspect > 0.0) ? std::clamp(aspect, 1e-3, 1e3) : 1.0;

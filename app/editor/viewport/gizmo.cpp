@@ -6,6 +6,8 @@
 #include "viewport/overlay.hpp"
 #include "viewport/picking.hpp"
 
+#include <aerial/finite.hpp>
+
 #include <imgui.h>
 
 #include <glm/geometric.hpp>
@@ -28,15 +30,9 @@ constexpr double kPlaneHi = 0.45;
 constexpr double kCentreFraction = 0.08;  // centre handle radius, fraction of sizePx
 constexpr double kViewRing = 1.2;         // view-ring radius, in L
 
-bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-bool finite(const glm::dvec2& v) { return std::isfinite(v.x) && std::isfinite(v.y); }
-bool finite(const glm::dquat& q) {
-    return std::isfinite(q.w) && std::isfinite(q.x) && std::isfinite(q.y) && std::isfinite(q.z);
-}
-
 glm::dquat unitOrIdentity(const glm::dquat& q) {
     const double n2 = q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z;
-    if (!finite(q) || !(n2 > 1e-200) || !std::isfinite(n2)) {
+    if (!isFinite(q) || !(n2 > 1e-200) || !std::isfinite(n2)) {
         return glm::dquat(1.0, 0.0, 0.0, 0.0);
     }
     return q / std::sqrt(n2);
@@ -146,7 +142,7 @@ struct Layout {
 Layout computeLayout(const Gizmo& gizmo, const renderer::CameraFrame& frame, glm::dvec2 size, GizmoMode mode,
                      GizmoSpace space, const GizmoTransform& t) {
     Layout l;
-    if (!finite(t.position) || !finite(frame.eye)) {
+    if (!isFinite(t.position) || !isFinite(frame.eye)) {
         return l;
     }
     const auto c = projectToViewport(frame, size, t.position);
@@ -246,7 +242,7 @@ double Gizmo::worldSizeAt(const renderer::CameraFrame& frame, double viewportHei
 
 GizmoHandle Gizmo::hitTest(const renderer::CameraFrame& frame, glm::dvec2 viewportSize, glm::dvec2 mouse,
                            GizmoMode mode, GizmoSpace space, const GizmoTransform& transform) const {
-    if (!finite(mouse)) {
+    if (!isFinite(mouse)) {
         return GizmoHandle::None;
     }
     const Layout l = computeLayout(*this, frame, viewportSize, mode, space, transform);
@@ -324,14 +320,14 @@ GizmoResult Gizmo::update(const renderer::CameraFrame& frame, glm::dvec2 viewpor
                           const GizmoInput& input, GizmoMode mode, GizmoSpace space, const GizmoSnap& snap,
                           GizmoTransform& inout) {
     GizmoResult result;
-    const bool mouseOk = finite(input.mouse);
+    const bool mouseOk = isFinite(input.mouse);
     const Ray ray = rayThroughPixel(frame, input.mouse, viewportSize);
 
     if (!active_) {
         hovered_ =
             mouseOk ? hitTest(frame, viewportSize, input.mouse, mode, space, inout) : GizmoHandle::None;
-        if (input.pressed && hovered_ != GizmoHandle::None && finite(inout.position) && finite(inout.scale) &&
-            finite(inout.rotation)) {
+        if (input.pressed && hovered_ != GizmoHandle::None && isFinite(inout.position) &&
+            isFinite(inout.scale) && isFinite(inout.rotation)) {
             // Start a drag: latch everything the drag is relative to.
             start_ = inout;
             start_.rotation = unitOrIdentity(inout.rotation);
@@ -347,7 +343,7 @@ GizmoResult Gizmo::update(const renderer::CameraFrame& frame, glm::dvec2 viewpor
             bool ok = true;
             if (mode == GizmoMode::Rotate) {
                 planeNormal_ = activeHandle_ == GizmoHandle::View ? glm::normalize(frame.eye - c) : axes_[k];
-                ok = finite(planeNormal_);
+                ok = isFinite(planeNormal_);
                 const glm::dvec3 v = ringVector(ray, c, planeNormal_);
                 ok = ok && glm::length(v) > 1e-12 * std::max(worldSize_, 1e-300);
                 prevRotateVector_ = ok ? glm::normalize(v) : glm::dvec3(0.0);
@@ -474,7 +470,7 @@ GizmoResult Gizmo::update(const renderer::CameraFrame& frame, glm::dvec2 viewpor
                 }
             }
         }
-        if (withinGizmoRange(t.position) && finite(t.rotation) && finite(t.scale)) {
+        if (withinGizmoRange(t.position) && isFinite(t.rotation) && isFinite(t.scale)) {
             result.changed = !sameTransform(t, inout);
             inout = t;
             last_ = t;

@@ -3,6 +3,8 @@
 // (see overlay.hpp).
 #include "viewport/overlay.hpp"
 
+#include <aerial/finite.hpp>
+
 #include <imgui.h>
 
 #include <glm/geometric.hpp>
@@ -15,8 +17,6 @@
 
 namespace aerial::editor {
 namespace {
-
-bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 glm::dvec2 sanitisedSize(glm::dvec2 size) {
     return {(std::isfinite(size.x) && size.x >= 1.0) ? size.x : 1.0,
@@ -49,7 +49,7 @@ double srgbEncode(double c) {
 
 std::optional<glm::dvec2> projectToViewport(const renderer::CameraFrame& frame, glm::dvec2 viewportSize,
                                             glm::dvec3 world) {
-    if (!finite(world) || !finite(frame.eye)) {
+    if (!isFinite(world) || !isFinite(frame.eye)) {
         return std::nullopt;
     }
     const glm::dvec3 v = world - frame.eye;
@@ -103,7 +103,7 @@ std::optional<ScreenSegment> clipSegmentToRect(const ScreenSegment& segment, glm
 
 std::optional<ScreenSegment> projectSegment(const renderer::CameraFrame& frame, glm::dvec2 viewportSize,
                                             const glm::dvec3& a, const glm::dvec3& b, double guardBandPx) {
-    if (!finite(a) || !finite(b) || !finite(frame.eye)) {
+    if (!isFinite(a) || !isFinite(b) || !isFinite(frame.eye)) {
         return std::nullopt;
     }
     const glm::dvec2 size = sanitisedSize(viewportSize);
@@ -113,7 +113,7 @@ std::optional<ScreenSegment> projectSegment(const renderer::CameraFrame& frame, 
     // View-space coordinates (right, up, depth).
     glm::dvec3 pa{glm::dot(va, frame.right), glm::dot(va, frame.up), glm::dot(va, frame.forward)};
     glm::dvec3 pb{glm::dot(vb, frame.right), glm::dot(vb, frame.up), glm::dot(vb, frame.forward)};
-    if (!finite(pa) || !finite(pb)) {
+    if (!isFinite(pa) || !isFinite(pb)) {
         return std::nullopt;
     }
     const bool aIn = pa.z >= n;
@@ -138,15 +138,15 @@ std::optional<ScreenSegment> projectSegment(const renderer::CameraFrame& frame, 
 
 std::vector<WorldSegment> volumeOutlineSegments(const FogVolume& volume, int ellipseSegments) {
     std::vector<WorldSegment> out;
-    const glm::dvec3& s = volume.halfExtents;
-    const glm::dquat& q = volume.rotation;
-    const double qNorm2 = q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z;
-    if (!(s.x > 0.0 && s.y > 0.0 && s.z > 0.0) || !finite(s) || !finite(volume.position) ||
-        !(std::isfinite(qNorm2) && qNorm2 > 1e-200)) {
+    // Core's geometry (fog_volume.hpp): the same validity rules and the same
+    // world-from-object map as the renderer and the picking.
+    const PreparedFogVolume prepared = prepareFogVolume(volume);
+    if (!prepared.valid) {
         return out;
     }
-    const glm::dquat r = q / std::sqrt(qNorm2);
-    const auto world = [&](const glm::dvec3& object) { return volume.position + r * (s * object); };
+    const auto world = [&](const glm::dvec3& object) {
+        return prepared.position + prepared.worldFromObject * object;
+    };
     if (volume.shape == FogVolumeShape::Box) {
         out.reserve(12);
         for (int corner = 0; corner < 8; ++corner) {

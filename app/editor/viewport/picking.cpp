@@ -1,7 +1,11 @@
-// picking.cpp — rays through viewport pixels; closed-form ray intersections
-// with oriented boxes and ellipsoids, screen-constant emitter icons; click
+// picking.cpp — rays through viewport pixels; ray intersections with
+// oriented boxes and ellipsoids (core's fog_volume.hpp geometry, the one the
+// BVH and the renderer use), screen-constant emitter icons; click
 // selection and placement of new objects (see picking.hpp).
 #include "viewport/picking.hpp"
+
+#include <aerial/finite.hpp>
+#include <aerial/fog_volume.hpp>
 
 #include <glm/geometric.hpp>
 
@@ -10,41 +14,6 @@
 #include <limits>
 
 namespace aerial::editor {
-namespace {
-
-constexpr double kMaxCoordinate = 1.0e30;  // core's limit (fog_volume.hpp, "Sanitising")
-constexpr double kMinHalfExtent = 1.0e-6;  // [m], core's limit
-
-bool withinRange(const glm::dvec3& v) {
-    return std::fabs(v.x) <= kMaxCoordinate && std::fabs(v.y) <= kMaxCoordinate &&
-           std::fabs(v.z) <= kMaxCoordinate;  // false for NaN
-}
-
-bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-
-// Takes the ray into the object space of an oriented unit shape:
-// object = (conj(q) (world - centre)) / halfExtents. False when the shape is
-// degenerate by core's rules or the ray is not usable.
-bool toObjectSpace(const Ray& ray, const glm::dvec3& centre, const glm::dquat& rotation,
-                   const glm::dvec3& halfExtents, glm::dvec3& o, glm::dvec3& d) {
-    const glm::dvec3& s = halfExtents;
-    if (!(s.x >= kMinHalfExtent && s.y >= kMinHalfExtent && s.z >= kMinHalfExtent && s.x <= kMaxCoordinate &&
-          s.y <= kMaxCoordinate && s.z <= kMaxCoordinate)) {
-        return false;
-    }
-    const double qNorm2 =
-        rotation.w * rotation.w + rotation.x * rotation.x + rotation.y * rotation.y + rotation.z * rotation.z;
-    if (!(std::isfinite(qNorm2) && qNorm2 > 1.0e-200) || !withinRange(centre) || !withinRange(ray.origin) ||
-        !withinRange(ray.direction)) {
-        return false;
-    }
-    const glm::dquat inverse = glm::conjugate(rotation / std::sqrt(qNorm2));
-    o = (inverse * (ray.origin - centre)) / s;
-    d = (inverse * ray.direction) / s;
-    return glm::dot(d, d) > 0.0;
-}
-
-}  // namespace
 
 Ray rayThroughPixel(const renderer::CameraFrame& frame, glm::dvec2 pixelFromTopLeft,
                     glm::dvec2 viewportSize) {
@@ -78,68 +47,23 @@ double angularRadiusOfPixels(const renderer::CameraFrame& frame, double viewport
 
 namespace {
 
-// The object-space ray o + t d against the unit cube.
-RayInterval intersectUnitCube(const glm::dvec3& o, const glm::dvec3& d) {
+// The line against a shape through core's one geometry (fog_volume.hpp):
+// the same validity rules, the same object-space intersection. Picking
+// needs the whole line (an eye inside a volume picks it at its exit), so
+// the interval is unclipped; infinite ends (a zero direction) are no hit.
+RayInterval intersectShape(const Ray& ray, FogVolumeShape shape, const glm::dvec3& centre,
+                           const glm::dquat& rotation, const glm::dvec3& halfExtents) {
+    FogVolume volume;
+    volume.shape = shape;
+    volume.position = centre;
+    volume.rotation = rotation;
+    volume.halfExtents = halfExtents;
+    const VolumeInterval line = intersectFogVolumeLine(prepareFogVolume(volume), ray.origin, ray.direction);
     RayInterval r;
-    // Slabs -1 <= o_i + t d_i <= 1.
-    double tNear = -std::numeric_limits<double>::infinity();
-    double tFar = std::numeric_limits<double>::infinity();
-    for (int i = 0; i < 3; ++i) {
-        if (d[i] == 0.0) {
-            if (!(std::fabs(o[i]) <= 1.0)) {
-                return r;
-            }
-            continue;
-        }
-        // Divisions (not a reciprocal) so a tiny d_i gives +-Inf, never NaN.
-        double t0 = (-1.0 - o[i]) / d[i];
-        double t1 = (1.0 - o[i]) / d[i];
-        if (t0 > t1) {
-            std::swap(t0, t1);
-        }
-        tNear = std::max(tNear, t0);
-        tFar = std::min(tFar, t1);
-    }
-    if (tNear <= tFar && std::isfinite(tNear) && std::isfinite(tFar)) {
+    if (line.hit && std::isfinite(line.tNear) && std::isfinite(line.tFar)) {
         r.hit = true;
-        r.tIn = tNear;
-        r.tOut = tFar;
-    }
-    return r;
-}
-
-// The object-space ray o + t d against the unit sphere.
-RayInterval intersectUnitSphere(const glm::dvec3& o, const glm::dvec3& d) {
-    RayInterval r;
-    // |o + t d|^2 = 1  <=>  a t^2 + 2 b t + c = 0, a = d.d, b = o.d, c = o.o - 1.
-    // Discriminant b^2 - a c = a (1 - |o_perp|^2), o_perp = o - (b / a) d the
-    // closest approach (no cancellation for far rays); roots by the stable
-    // pair q = -(b + sign(b) sqrt(disc)), t = q / a and t = c / q.
-    const double a = glm::dot(d, d);
-    const double b = glm::dot(o, d);
-    const double c = glm::dot(o, o) - 1.0;
-    const glm::dvec3 perp = o - (b / a) * d;
-    const double disc = a * (1.0 - glm::dot(perp, perp));
-    if (!(disc >= 0.0) || !std::isfinite(disc)) {
-        return r;
-    }
-    const double q = -(b + std::copysign(std::sqrt(disc), b));
-    double t0;
-    double t1;
-    if (q == 0.0) {
-        t0 = 0.0;  // b = 0 and disc = 0: tangent at the origin
-        t1 = 0.0;
-    } else {
-        t0 = q / a;
-        t1 = c / q;
-    }
-    if (t0 > t1) {
-        std::swap(t0, t1);
-    }
-    if (std::isfinite(t0) && std::isfinite(t1)) {
-        r.hit = true;
-        r.tIn = t0;
-        r.tOut = t1;
+        r.tIn = line.tNear;
+        r.tOut = line.tFar;
     }
     return r;
 }
@@ -148,28 +72,21 @@ RayInterval intersectUnitSphere(const glm::dvec3& o, const glm::dvec3& d) {
 
 RayInterval intersectOrientedBox(const Ray& ray, const glm::dvec3& centre, const glm::dquat& rotation,
                                  const glm::dvec3& halfExtents) {
-    glm::dvec3 o;
-    glm::dvec3 d;
-    return toObjectSpace(ray, centre, rotation, halfExtents, o, d) ? intersectUnitCube(o, d) : RayInterval{};
+    return intersectShape(ray, FogVolumeShape::Box, centre, rotation, halfExtents);
 }
 
 RayInterval intersectOrientedEllipsoid(const Ray& ray, const glm::dvec3& centre, const glm::dquat& rotation,
                                        const glm::dvec3& halfExtents) {
-    glm::dvec3 o;
-    glm::dvec3 d;
-    return toObjectSpace(ray, centre, rotation, halfExtents, o, d) ? intersectUnitSphere(o, d)
-                                                                   : RayInterval{};
+    return intersectShape(ray, FogVolumeShape::Ellipsoid, centre, rotation, halfExtents);
 }
 
 RayInterval intersectVolumeShape(const Ray& ray, const FogVolume& volume) {
-    return volume.shape == FogVolumeShape::Box
-               ? intersectOrientedBox(ray, volume.position, volume.rotation, volume.halfExtents)
-               : intersectOrientedEllipsoid(ray, volume.position, volume.rotation, volume.halfExtents);
+    return intersectShape(ray, volume.shape, volume.position, volume.rotation, volume.halfExtents);
 }
 
 std::optional<double> intersectIcon(const Ray& ray, const glm::dvec3& position, double angularRadius) {
-    if (!finite(ray.origin) || !finite(ray.direction) || !finite(position) || !std::isfinite(angularRadius) ||
-        !(angularRadius > 0.0)) {
+    if (!isFinite(ray.origin) || !isFinite(ray.direction) || !isFinite(position) ||
+        !std::isfinite(angularRadius) || !(angularRadius > 0.0)) {
         return std::nullopt;
     }
     const double alpha = std::min(angularRadius, 1.5);  // below a right angle
@@ -201,7 +118,7 @@ PickHit pick(const Ray& ray, const std::vector<FogVolume>& volumes, const std::v
     PickHit best;
     Ray r = ray;
     const double len = glm::length(r.direction);
-    if (!finite(r.origin) || !std::isfinite(len) || !(len > 0.0)) {
+    if (!isFinite(r.origin) || !std::isfinite(len) || !(len > 0.0)) {
         return best;
     }
     r.direction /= len;
@@ -236,14 +153,9 @@ PickHit pick(const Ray& ray, const std::vector<FogVolume>& volumes, const std::v
 
 BoundingSphere boundingSphereOf(const FogVolume& volume) {
     BoundingSphere b;
-    b.centre = finite(volume.position) ? volume.position : glm::dvec3(0.0);
-    const glm::dvec3& s = volume.halfExtents;
-    const double qNorm2 = volume.rotation.w * volume.rotation.w + volume.rotation.x * volume.rotation.x +
-                          volume.rotation.y * volume.rotation.y + volume.rotation.z * volume.rotation.z;
-    const bool valid = s.x >= kMinHalfExtent && s.y >= kMinHalfExtent && s.z >= kMinHalfExtent &&
-                       s.x <= kMaxCoordinate && s.y <= kMaxCoordinate && s.z <= kMaxCoordinate &&
-                       std::isfinite(qNorm2) && qNorm2 > 1.0e-200 && withinRange(volume.position);
-    if (valid) {
+    b.centre = isFinite(volume.position) ? volume.position : glm::dvec3(0.0);
+    if (prepareFogVolume(volume).valid) {
+        const glm::dvec3& s = volume.halfExtents;
         b.radius = volume.shape == FogVolumeShape::Box ? glm::length(s) : std::max({s.x, s.y, s.z});
     }
     return b;
@@ -251,7 +163,7 @@ BoundingSphere boundingSphereOf(const FogVolume& volume) {
 
 BoundingSphere boundingSphereOf(const Emitter& emitter) {
     BoundingSphere b;
-    b.centre = finite(emitter.position) ? emitter.position : glm::dvec3(0.0);
+    b.centre = isFinite(emitter.position) ? emitter.position : glm::dvec3(0.0);
     const double a = emitter.attenuation;
     b.radius = (std::isfinite(a) && a > 0.0) ? std::clamp(1.0 / std::sqrt(a), 1.0, 50.0) : 10.0;
     return b;
@@ -259,7 +171,7 @@ BoundingSphere boundingSphereOf(const Emitter& emitter) {
 
 std::optional<glm::dvec3> placeInFront(const renderer::CameraFrame& frame, double distance,
                                        double maxGroundDistance, const GroundHeightFunction& groundHeight) {
-    if (!finite(frame.eye) || !finite(frame.forward) || !std::isfinite(distance) || !(distance > 0.0)) {
+    if (!isFinite(frame.eye) || !isFinite(frame.forward) || !std::isfinite(distance) || !(distance > 0.0)) {
         return std::nullopt;
     }
     const double fLen = glm::length(frame.forward);

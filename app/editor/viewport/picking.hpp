@@ -13,8 +13,9 @@
 // Geometry (DESIGN.md "Fog volumes", core/include/aerial/fog_volume.hpp): a
 // box is the unit cube [-1,1]^3, an ellipsoid the unit sphere, world =
 // position + rotation * (halfExtents * object). The ray is taken into object
-// space and intersected there in closed form (slabs; the quadratic of the
-// unit sphere solved without cancellation); since the map is affine the ray
+// space and intersected there by core's intersectFogVolumeLine (slabs; the
+// unit sphere's roots around the closest approach, free of cancellation) —
+// the geometry the BVH and the renderer use; since the map is affine the ray
 // parameter t is the same in both spaces, and with a unit world direction t
 // is the world distance [m]. Degenerate volumes follow core's rules
 // (fog_volume.hpp, "Sanitising") and are never hit.

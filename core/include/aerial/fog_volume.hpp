@@ -8,6 +8,11 @@
 //   aerial::VolumeSegment s = aerial::intersectFogVolume(v, camera, dir, sceneDistance);
 //   double tau = s.hit ? aerial::fogVolumeOpticalDepth(v, camera, dir, s) : 0.0;
 //
+//   // Many rays against one volume (a renderer packing it, an editor
+//   // picking it): prepare once, intersect often.
+//   aerial::PreparedFogVolume p = aerial::prepareFogVolume(v);
+//   aerial::VolumeInterval line = aerial::intersectFogVolumeLine(p, eye, dir);  // unclipped
+//
 // Geometry (../shared/DESIGN.md, "Fog volumes"): a box is the unit cube
 // [-1,1]^3 in object space, an ellipsoid the unit sphere; world = position +
 // rotation * (halfExtents * object). Rays are intersected in object space and
@@ -20,19 +25,29 @@
 // the global-fog formula with o.y - h0 -> dot(o - position, g) - offset and
 // d.y -> dot(d, g) (see height_fog.hpp).
 //
-// Sanitising (no function here returns NaN or Inf):
+// This header is the one place that says what a volume's shape is: core's
+// BVH (FogScene), the renderer's packing of volumes for the GPU and the
+// editor's picking all go through prepareFogVolume and the intersections
+// below, so a new shape is added here once.
+//
+// Sanitising (no function here returns NaN or Inf; the numbers are in
+// limits.hpp, "Geometry"):
 //   - a volume is degenerate, never hit and of density 0 everywhere, when a
-//     half extent is not in [1e-6, 1e30] m (zero, negative, NaN, Inf), its
-//     rotation is zero or not finite, or its position is beyond 1e30 m;
+//     half extent is not in [kMinHalfExtent, kMaxCoordinate] = [1e-6, 1e30] m
+//     (zero, negative, NaN, Inf), its rotation is zero or not finite, or its
+//     position is beyond kMaxCoordinate;
 //   - the rotation need not be unit (it is normalised); the gradient need not
 //     be unit either, and a zero or non-finite gradient means +Y;
 //   - a negative or non-finite density or falloff counts as 0, a non-finite
-//     offset as 0;
+//     offset as 0, and all three are clamped to kMaxFogParameter (1e150);
+//   - a colour component that is negative or not finite counts as 0;
 //   - a ray whose origin or direction is not finite (or beyond 1e30 m), or
 //     whose tMax is NaN or <= 0, hits nothing.
 #pragma once
 
+#include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
+#include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
 
 #include <string>
@@ -97,6 +112,68 @@ double fogVolumeOpticalDepth(const FogVolume& volume, const glm::dvec3& origin, 
 /// Density [1/m] at a world point (0 outside the shape): the reference for
 /// numeric quadrature.
 double fogVolumeDensityAt(const FogVolume& volume, const glm::dvec3& point);
+
+/// A fog volume reduced to what a ray needs, with every number sanitised
+/// (see "Sanitising" above): the object-from-world transform, the unit
+/// gradient, the world bounds. Built by prepareFogVolume.
+struct PreparedFogVolume {
+    bool valid = false;  ///< false: degenerate, never hit, density 0 everywhere
+    FogVolumeShape shape = FogVolumeShape::Box;
+    glm::dvec3 position{0.0};  ///< centre [m], world (the origin when invalid)
+    /// Rows of objectFromWorld (3x3): object = M (world - position), with
+    /// M = S^-1 R^T (S the half extents, R the unit rotation).
+    glm::dvec3 row0{1.0, 0.0, 0.0};
+    glm::dvec3 row1{0.0, 1.0, 0.0};
+    glm::dvec3 row2{0.0, 0.0, 1.0};
+    /// worldFromObject (3x3) = R S: its columns are the object axes in world
+    /// space scaled by the half extents (identity when invalid).
+    glm::dmat3 worldFromObject{1.0};
+    glm::dvec3 gradient{0.0, 1.0, 0.0};  ///< unit, world
+    double gradientOffset = 0.0;         ///< [m]
+    double density = 0.0;                ///< [1/m]
+    double falloff = 0.0;                ///< [1/m]
+    glm::dvec3 boundsMin{0.0};           ///< world AABB (exact, unpadded)
+    glm::dvec3 boundsMax{0.0};
+    FogColourMode colourMode = FogColourMode::Sky;
+    glm::dvec3 colour{1.0};
+
+    /// A world vector (a difference of points, a direction) in object space.
+    glm::dvec3 toObject(const glm::dvec3& worldVector) const {
+        return {glm::dot(row0, worldVector), glm::dot(row1, worldVector), glm::dot(row2, worldVector)};
+    }
+};
+
+PreparedFogVolume prepareFogVolume(const FogVolume& volume);
+
+/// The unclipped interval of the line origin + t * direction inside a shape;
+/// t (in units of |direction|) may be negative (behind the origin) or, for a
+/// direction of zero length inside the shape, infinite.
+struct VolumeInterval {
+    bool hit = false;
+    double tNear = 0.0;
+    double tFar = 0.0;
+};
+
+/// The line against the prepared volume's shape in object space (slabs for
+/// the box; for the ellipsoid the roots around the closest approach, free of
+/// cancellation for far or grazing rays). No hit for an invalid volume or an
+/// origin or direction that is not finite or beyond kMaxCoordinate.
+VolumeInterval intersectFogVolumeLine(const PreparedFogVolume& volume, const glm::dvec3& origin,
+                                      const glm::dvec3& direction);
+
+/// intersectFogVolume for a prepared volume: the line clipped to
+/// [max(tNear, 0), min(tFar, tMax)]; tMax must be >= 0 and may be +Inf.
+VolumeSegment intersectFogVolume(const PreparedFogVolume& volume, const glm::dvec3& origin,
+                                 const glm::dvec3& direction, double tMax);
+
+/// fogVolumeOpticalDepth for a prepared volume (origin and direction within
+/// kMaxCoordinate, the segment from intersectFogVolume).
+double fogVolumeOpticalDepth(const PreparedFogVolume& volume, const glm::dvec3& origin,
+                             const glm::dvec3& direction, const VolumeSegment& segment);
+
+/// Whether a world point lies inside the prepared volume's shape (its
+/// boundary included); false for an invalid volume.
+bool fogVolumeContains(const PreparedFogVolume& volume, const glm::dvec3& point);
 
 /// World-space axis-aligned bounds of the volume (tight: the rotated box's
 /// corners, the rotated ellipsoid's extremes). A degenerate volume gives

@@ -27,7 +27,10 @@
 //     also bound every accessor's count), kMaxGltfNodeDepth, and textures
 //     of at most kMaxTextureSide per side and kMaxTexturePixels pixels
 //     (kMaxTexturePixelsTotal over all images), refused before they are
-//     decoded.
+//     decoded;
+//   * geometry (fog volumes, emitters, fog queries, the editor's picking):
+//     kMaxCoordinate, kMinHalfExtent, kMaxFogParameter — a shape or ray
+//     beyond them is never hit (aerial/fog_volume.hpp, "Sanitising").
 #pragma once
 
 #include <cstddef>
@@ -99,5 +102,16 @@ inline constexpr std::uint64_t kMaxTexturePixels = std::uint64_t(64) << 20;
 /// so that many small files that each claim a large image cannot add up to
 /// gigabytes.
 inline constexpr std::uint64_t kMaxTexturePixelsTotal = std::uint64_t(64) << 20;
+
+// ---- Geometry --------------------------------------------------------------
+
+/// World coordinates, ray directions and half extents beyond this magnitude
+/// [m] are not meaningful; a volume or ray that uses them is never hit. Keeps
+/// every object-space product finite.
+inline constexpr double kMaxCoordinate = 1.0e30;
+/// Half extents below this [m] (1 um) make a fog volume degenerate.
+inline constexpr double kMinHalfExtent = 1.0e-6;
+/// Density, falloff and gradient-offset magnitudes are clamped to this.
+inline constexpr double kMaxFogParameter = 1.0e150;
 
 }  // namespace aerial::limits
