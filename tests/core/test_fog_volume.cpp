@@ -6,6 +6,7 @@
 #include <aerial/atmosphere.hpp>
 #include <aerial/fog_volume.hpp>
 #include <aerial/height_fog.hpp>
+#include <aerial/limits.hpp>
 
 #include <gtest/gtest.h>
 
@@ -427,6 +428,59 @@ TEST(FogVolume, BoundsContainTheShapeAndAreTight) {
             EXPECT_NEAR(hi[a], seenHi[a], tight) << "volume " << i;
         }
     }
+}
+
+TEST(FogVolume, PreparedVolumeIsTheReferenceGeometry) {
+    // prepareFogVolume is the one geometry the BVH, the renderer's packing
+    // and the editor's picking share: its transforms against an independent
+    // glm::translate * mat4_cast * scale (1e-12 of the size), its ray tests
+    // against the single-volume API (bit for bit: the same code) and against
+    // the reference inside measure at the hit points (1e-9).
+    VolumeCases r(1234);
+    for (int i = 0; i < 200; ++i) {
+        FogVolume v = r.volume(i);
+        const Segment seg = makeSegment(r, v, ReferenceGeometry(v), i);
+        const ReferenceGeometry geo(v);
+        const aerial::PreparedFogVolume p = aerial::prepareFogVolume(v);
+        ASSERT_TRUE(p.valid) << "volume " << i;
+        const double size = glm::length(v.halfExtents) + glm::length(v.position);
+        for (int k = 0; k < 8; ++k) {
+            const glm::dvec3 q = r.objectPointInside(v.shape, 1.5);
+            const glm::dvec3 world = p.position + p.worldFromObject * q;
+            EXPECT_LE(glm::length(world - geo.toWorld(q)), 1e-12 * size) << "volume " << i;
+            EXPECT_LE(glm::length(p.toObject(world - p.position) - q), 1e-9) << "volume " << i;
+            EXPECT_EQ(aerial::fogVolumeContains(p, world), geo.insideMeasure(world) <= 1.0)
+                << "volume " << i << " point measure " << geo.insideMeasure(world);
+        }
+        const aerial::VolumeSegment a = aerial::intersectFogVolume(v, seg.origin, seg.direction, 1.0);
+        const aerial::VolumeSegment b = aerial::intersectFogVolume(p, seg.origin, seg.direction, 1.0);
+        EXPECT_EQ(a.hit, b.hit) << seg.kind << " volume " << i;
+        EXPECT_EQ(a.tIn, b.tIn) << seg.kind << " volume " << i;
+        EXPECT_EQ(a.tOut, b.tOut) << seg.kind << " volume " << i;
+        EXPECT_EQ(aerial::fogVolumeOpticalDepth(v, seg.origin, seg.direction, a),
+                  aerial::fogVolumeOpticalDepth(p, seg.origin, seg.direction, b))
+            << seg.kind << " volume " << i;
+        const aerial::VolumeInterval line = aerial::intersectFogVolumeLine(p, seg.origin, seg.direction);
+        if (line.hit) {
+            EXPECT_NEAR(geo.insideMeasure(seg.origin + line.tNear * seg.direction), 1.0, 1e-9)
+                << seg.kind << " volume " << i;
+            EXPECT_NEAR(geo.insideMeasure(seg.origin + line.tFar * seg.direction), 1.0, 1e-9)
+                << seg.kind << " volume " << i;
+            EXPECT_EQ(b.hit, std::max(line.tNear, 0.0) < std::min(line.tFar, 1.0))
+                << seg.kind << " volume " << i;
+        } else {
+            EXPECT_FALSE(b.hit) << seg.kind << " volume " << i;
+        }
+    }
+    // Degenerate by limits.hpp's numbers: just under the smallest half extent.
+    FogVolume thin;
+    thin.halfExtents = {1.0, 0.5 * aerial::limits::kMinHalfExtent, 1.0};
+    EXPECT_FALSE(aerial::prepareFogVolume(thin).valid);
+    thin.halfExtents.y = aerial::limits::kMinHalfExtent;
+    EXPECT_TRUE(aerial::prepareFogVolume(thin).valid);
+    thin.position.x = 2.0 * aerial::limits::kMaxCoordinate;
+    EXPECT_FALSE(aerial::prepareFogVolume(thin).valid);
+    EXPECT_FALSE(aerial::fogVolumeContains(aerial::prepareFogVolume(thin), thin.position));
 }
 
 TEST(FogVolume, DegenerateVolumesAreNeverHit) {
