@@ -1,0 +1,97 @@
+// exposure.cpp — physical-camera exposure (aerial/exposure.hpp).
+#include <aerial/exposure.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace aerial {
+namespace {
+
+constexpr double kMeterCalibration = 12.5;  // K, reflected-light meter
+constexpr double kIsoSpeed = 100.0;         // S, EV100
+constexpr double kSaturationFactor = 1.2;   // 78 / (q S) * S / 100 with q = 0.65
+
+double positiveOrZero(double x) { return (std::isfinite(x) && x > 0.0) ? x : 0.0; }
+
+}  // namespace
+
+double luminance(const glm::dvec3& c) {
+    if (std::isnan(c.x) || std::isnan(c.y) || std::isnan(c.z)) return 0.0;
+    const auto channel = [](double x) { return x > 0.0 ? std::min(x, 1.0e30) : 0.0; };
+    return 0.2126 * channel(c.x) + 0.7152 * channel(c.y) + 0.0722 * channel(c.z);
+}
+
+double ev100FromAverageLuminance(double averageLuminance) {
+    const double l = std::isnan(averageLuminance) ? 0.0 : averageLuminance;
+    const double clamped = std::clamp(l, std::ldexp(1.0, -40), std::ldexp(1.0, 40));
+    return std::log2(clamped * kIsoSpeed / kMeterCalibration);
+}
+
+double exposureScale(double ev100) {
+    const double ev = std::isnan(ev100) ? 0.0 : std::clamp(ev100, -60.0, 60.0);
+    return 1.0 / (kSaturationFactor * std::exp2(ev));
+}
+
+double adaptEv100(double currentEv100, double targetEv100, double dt, double speedUp, double speedDown) {
+    if (!std::isfinite(targetEv100)) return std::isfinite(currentEv100) ? currentEv100 : 0.0;
+    if (!std::isfinite(currentEv100)) return targetEv100;
+    if (!(dt > 0.0)) return currentEv100;
+    const double speed = targetEv100 > currentEv100 ? speedUp : speedDown;
+    if (!(std::isfinite(speed) && speed > 0.0) || !std::isfinite(dt)) return targetEv100;
+    // Closed form of d(ev)/dt = speed (target - ev): exact for any dt.
+    return targetEv100 + (currentEv100 - targetEv100) * std::exp(-dt * speed);
+}
+
+LuminanceHistogram::LuminanceHistogram(double minLog2, double maxLog2) {
+    const bool ok = std::isfinite(minLog2) && std::isfinite(maxLog2) && maxLog2 > minLog2;
+    minLog2_ = ok ? minLog2 : -16.0;
+    maxLog2_ = ok ? maxLog2 : 16.0;
+}
+
+void LuminanceHistogram::add(double luminance, double weight) {
+    const double w = positiveOrZero(weight);
+    if (w == 0.0) return;
+    const double l = positiveOrZero(luminance);
+    double bin = 0.0;
+    if (l > 0.0) {
+        const double x = (std::log2(l) - minLog2_) / (maxLog2_ - minLog2_) * double(kBins);
+        bin = std::clamp(std::floor(x), 0.0, double(kBins - 1));
+    }
+    bins_[std::size_t(bin)] += w;
+    total_ += w;
+}
+
+void LuminanceHistogram::clear() {
+    bins_.fill(0.0);
+    total_ = 0.0;
+}
+
+double LuminanceHistogram::averageLuminance(double lowFraction, double highFraction) const {
+    const double width = (maxLog2_ - minLog2_) / double(kBins);
+    if (!(total_ > 0.0)) return std::exp2(minLog2_);
+    double low = std::isfinite(lowFraction) ? std::clamp(lowFraction, 0.0, 1.0) : 0.0;
+    double high = std::isfinite(highFraction) ? std::clamp(highFraction, 0.0, 1.0) : 1.0;
+    if (!(high > low)) {
+        // An empty band: the quantile at its position.
+        high = std::min(low + 1e-9, 1.0);
+        low = high - 1e-9;
+    }
+    const double from = low * total_;
+    const double to = high * total_;
+    double before = 0.0;  // weight in the bins below this one
+    double sumLog = 0.0;
+    double sumWeight = 0.0;
+    for (std::size_t i = 0; i < kBins; ++i) {
+        const double b = bins_[i];
+        // The part of this bin's weight inside [from, to].
+        const double inside = std::max(0.0, std::min(before + b, to) - std::max(before, from));
+        if (inside > 0.0) {
+            sumLog += inside * (minLog2_ + (double(i) + 0.5) * width);
+            sumWeight += inside;
+        }
+        before += b;
+    }
+    return sumWeight > 0.0 ? std::exp2(sumLog / sumWeight) : std::exp2(minLog2_);
+}
+
+}  // namespace aerial
