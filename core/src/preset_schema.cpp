@@ -1,7 +1,9 @@
 // preset_schema.cpp — presetJsonSchema: the JSON Schema (draft 2020-12) of
-// the preset format, generated from the parameter table.
-// presets/aerial-preset.schema.json is its output (test_preset checks that
-// they agree).
+// the preset format, generated from the parameter table, with the caps of
+// aerial/limits.hpp as maxItems (volumes, emitters, tracks, keys per track)
+// and maxLength (ids, names, descriptions). presets/aerial-preset.schema.json
+// is its output: scripts/update_schema.sh rewrites it, test_preset checks
+// that they agree.
 #include <aerial/limits.hpp>
 #include <aerial/param_table.hpp>
 #include <aerial/preset.hpp>
@@ -19,6 +21,22 @@ using sv = std::string_view;
 namespace {
 
 using ojson = nlohmann::ordered_json;
+
+// The caps of aerial/limits.hpp a schema can state. JSON Schema counts a
+// string's length in characters, the loader in bytes of UTF-8: maxLength is
+// the same number, so it is a necessary condition, not a sufficient one.
+
+std::string idPattern() { return "^[A-Za-z0-9_.-]{1," + std::to_string(limits::kMaxIdBytes) + "}$"; }
+
+ojson idSchema() {
+    return {{"type", "string"}, {"pattern", idPattern()}, {"maxLength", limits::kMaxIdBytes}};
+}
+
+ojson textSchema() { return {{"type", "string"}, {"maxLength", limits::kMaxStringBytes}}; }
+
+ojson arraySchema(const char* itemRef, std::size_t maxItems) {
+    return {{"type", "array"}, {"items", {{"$ref", itemRef}}}, {"maxItems", maxItems}};
+}
 
 ojson schemaFor(const ParamDesc& p) {
     ojson s;
@@ -65,8 +83,10 @@ ojson schemaFor(const ParamDesc& p) {
         case ParamType::String:
             s["type"] = "string";
             if (p.path == "id") {
-                s["pattern"] = "^[A-Za-z0-9_.-]{1,64}$";
+                s["pattern"] = idPattern();
+                s["maxLength"] = limits::kMaxIdBytes;
             } else {
+                s["maxLength"] = limits::kMaxStringBytes;
                 s["default"] = std::string(p.defaultText);
             }
             break;
@@ -109,8 +129,8 @@ std::string presetJsonSchema() {
     root["type"] = "object";
     ojson props = ojson::object();
     props["version"] = {{"description", "File format version."}, {"const", kPresetVersion}};
-    props["name"] = {{"type", "string"}};
-    props["description"] = {{"type", "string"}};
+    props["name"] = textSchema();
+    props["description"] = textSchema();
     // Global groups, nested as in the file.
     for (const ParamDesc& p : paramTable(ParamScope::Global)) {
         ojson* node = &props;
@@ -132,9 +152,9 @@ std::string presetJsonSchema() {
             start = dot + 1;
         }
     }
-    props["volumes"] = {{"type", "array"}, {"items", {{"$ref", "#/$defs/volume"}}}};
-    props["emitters"] = {{"type", "array"}, {"items", {{"$ref", "#/$defs/emitter"}}}};
-    props["tracks"] = {{"type", "array"}, {"items", {{"$ref", "#/$defs/track"}}}};
+    props["volumes"] = arraySchema("#/$defs/volume", limits::kMaxVolumes);
+    props["emitters"] = arraySchema("#/$defs/emitter", limits::kMaxEmitters);
+    props["tracks"] = arraySchema("#/$defs/track", limits::kMaxTracks);
     root["properties"] = props;
     root["required"] = {"version"};
     root["additionalProperties"] = false;
@@ -157,10 +177,13 @@ std::string presetJsonSchema() {
         ojson t;
         t["type"] = "object";
         ojson tp = ojson::object();
-        if (objectKey) tp[objectKey] = {{"type", "string"}, {"pattern", "^[A-Za-z0-9_.-]{1,64}$"}};
+        if (objectKey) tp[objectKey] = idSchema();
         tp["param"] = {{"enum", animatableNames(scope)}};
         tp["interpolation"] = {{"enum", {"step", "linear", "smooth"}}, {"default", "smooth"}};
-        tp["keys"] = {{"type", "array"}, {"minItems", 1}, {"items", {{"$ref", "#/$defs/key"}}}};
+        tp["keys"] = {{"type", "array"},
+                      {"minItems", 1},
+                      {"maxItems", limits::kMaxKeysPerTrack},
+                      {"items", {{"$ref", "#/$defs/key"}}}};
         t["properties"] = tp;
         ojson req = ojson::array();
         if (objectKey) req.push_back(objectKey);
