@@ -1,7 +1,6 @@
-// sky_layers.cpp — the layer geometry of the sky solver (sky_layers.hpp):
+// sky_layers.cpp — where the sky solver's layers lie (sky_layers.hpp):
 // shells of equal mixed mass between the viewer and the top of the
-// atmosphere, and the cubic stencil that corrects each layer for the
-// curvature of the optical depth to the light along it.
+// atmosphere, solved once per change of the atmosphere.
 #include "sky_layers.hpp"
 
 #include <algorithm>
@@ -73,45 +72,6 @@ void equalMassShells(const AtmosphereParams& air, double h0, double top, int lay
         }
     }
     shellHeight[0] = h0;
-}
-
-/// The curvature stencil of layer l (LayerConstants::stencil): the cubic
-/// through tau at the four shells nearest the layer (l-1 .. l+2, shifted to
-/// stay within 0 .. layers; a parabola through three where there are only
-/// three) taken at the layer's middle, minus the chord, times -2/3, as
-/// weights of tau at the layer's shells a = l and b = l + 1 and at the other
-/// two, C and D. Shells at the same distance (a viewer at the top) give no
-/// correction.
-void layerStencil(const double* crossing, int layers, int l, LayerConstants& lc) {
-    const int n = std::min(4, layers + 1);
-    const int first = std::clamp(l - 1, 0, layers + 1 - n);
-    const double mid = 0.5 * (crossing[l] + crossing[l + 1]);
-    double weight[4] = {0.0, 0.0, 0.0, 0.0};  // a, b, C, D
-    int other[2] = {l, l};                    // C and D (unused: a, weight 0)
-    int others = 0;
-    bool distinct = true;
-    for (int j = 0; j < n; ++j) {
-        const int shellIndex = first + j;
-        double lagrange = 1.0;
-        for (int m = 0; m < n; ++m) {
-            if (m == j) continue;
-            const double gap = crossing[shellIndex] - crossing[first + m];
-            if (!(std::abs(gap) > 0.0)) distinct = false;
-            lagrange *= (mid - crossing[first + m]) / gap;
-        }
-        if (shellIndex == l) {
-            weight[0] = lagrange - 0.5;
-        } else if (shellIndex == l + 1) {
-            weight[1] = lagrange - 0.5;
-        } else {
-            other[others] = shellIndex;
-            weight[2 + others] = lagrange;
-            ++others;
-        }
-    }
-    lc.stencilC = other[0];
-    lc.stencilD = other[1];
-    for (int j = 0; j < 4; ++j) lc.stencil[j] = distinct ? float(-2.0 / 3.0 * weight[j]) : 0.0f;
 }
 
 }  // namespace aerial::detail

@@ -1,9 +1,6 @@
-// sky_layers.hpp — private: where the sky solver's layers lie along the
-// view rays (sky_layers.cpp): the shell heights of equal mixed mass, and
-// the curvature stencil of one layer of a row.
+// sky_layers.hpp — private: where the sky solver's layers lie
+// (sky_layers.cpp): the heights of the shells of equal mixed mass.
 #pragma once
-
-#include "sky_kernels.hpp"
 
 #include <aerial/atmosphere.hpp>
 
@@ -16,10 +13,5 @@ namespace aerial::detail {
 /// Newton's method. shellHeight[0] = h0, shellHeight[layers] = top (all h0
 /// when top <= h0).
 void equalMassShells(const AtmosphereParams& air, double h0, double top, int layers, double* shellHeight);
-
-/// The curvature stencil of layer l of a row whose view ray crosses the
-/// shells at distances crossing[0..layers] (LayerConstants::stencil,
-/// stencilC, stencilD).
-void layerStencil(const double* crossing, int layers, int l, LayerConstants& lc);
 
 }  // namespace aerial::detail

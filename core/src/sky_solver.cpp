@@ -102,6 +102,46 @@ DensityConstants densityConstants(const AtmosphereParams& air) {
     return k;
 }
 
+/// The curvature stencil of layer l (LayerConstants::stencil): the cubic
+/// through tau at the four shells nearest the layer (l-1 .. l+2, shifted to
+/// stay within 0 .. layers; a parabola through three where there are only
+/// three) taken at the layer's middle, minus the chord, times -2/3, as
+/// weights of tau at the layer's shells a = l and b = l + 1 and at the other
+/// two, C and D. Shells at the same distance (a viewer at the top) give no
+/// correction. Called for every layer of every row: it stays in this file,
+/// where GCC inlines it into solveRow (in its own file it costs 0.5%).
+void layerStencil(const double* crossing, int layers, int l, LayerConstants& lc) {
+    const int n = std::min(4, layers + 1);
+    const int first = std::clamp(l - 1, 0, layers + 1 - n);
+    const double mid = 0.5 * (crossing[l] + crossing[l + 1]);
+    double weight[4] = {0.0, 0.0, 0.0, 0.0};  // a, b, C, D
+    int other[2] = {l, l};                    // C and D (unused: a, weight 0)
+    int others = 0;
+    bool distinct = true;
+    for (int j = 0; j < n; ++j) {
+        const int shellIndex = first + j;
+        double lagrange = 1.0;
+        for (int m = 0; m < n; ++m) {
+            if (m == j) continue;
+            const double gap = crossing[shellIndex] - crossing[first + m];
+            if (!(std::abs(gap) > 0.0)) distinct = false;
+            lagrange *= (mid - crossing[first + m]) / gap;
+        }
+        if (shellIndex == l) {
+            weight[0] = lagrange - 0.5;
+        } else if (shellIndex == l + 1) {
+            weight[1] = lagrange - 0.5;
+        } else {
+            other[others] = shellIndex;
+            weight[2 + others] = lagrange;
+            ++others;
+        }
+    }
+    lc.stencilC = other[0];
+    lc.stencilD = other[1];
+    for (int j = 0; j < 4; ++j) lc.stencil[j] = distinct ? float(-2.0 / 3.0 * weight[j]) : 0.0f;
+}
+
 }  // namespace
 
 // ---------------------------------------------------------------------------
