@@ -56,7 +56,9 @@ std::string oneLine(std::string text) {
 
 int main(int argc, char** argv) {
     using namespace aerial::cli;
-    // Test hook (tests/cli/cli_test.py): AERIAL_TEST_FILE_FAULT=missing-directory |
+#ifdef AERIAL_TEST_HOOKS
+    // Test hook (tests/cli/cli_test.py), compiled in only with the CMake
+    // option AERIAL_TEST_HOOKS: AERIAL_TEST_FILE_FAULT=missing-directory |
     // not-writable | disk-full | sync | rename | crash makes every file this
     // run writes fail at that step (aerial/detail/file_system.hpp).
     static std::optional<aerial::detail::FaultyFileSystem> faulty;
@@ -70,6 +72,7 @@ int main(int argc, char** argv) {
         faulty.emplace(f);
         useFaulty.emplace(*faulty);
     }
+#endif
     CLI::App app{
         "aerial — the Aerial sky and fog runtime from the shell: validate and evaluate presets, "
         "sample the sky, query fog, bake sky tables for games"

@@ -27,6 +27,7 @@ import zlib
 AERIAL = ""
 ROOT = ""
 WORK = ""
+TEST_HOOKS = True  # aerial built with AERIAL_TEST_HOOKS (it honours AERIAL_TEST_FILE_FAULT)
 
 SHIPPED = ["clear_summer_day", "desert_dusk", "foggy_valley_morning", "hazy_sunset", "stormy_night"]
 
@@ -713,6 +714,10 @@ class WriteFaults(unittest.TestCase):
     OLD = b"old bake, must survive"
     FIRST = "sky_000_0000_sun.exr"
 
+    def requireHooks(self):
+        if not TEST_HOOKS:
+            self.skipTest("aerial was built without AERIAL_TEST_HOOKS (no AERIAL_TEST_FILE_FAULT)")
+
     def run_with(self, args, fault=None, preexec_fn=None):
         env = dict(os.environ)
         env.pop("AERIAL_TEST_FILE_FAULT", None)
@@ -739,6 +744,7 @@ class WriteFaults(unittest.TestCase):
                               "--quiet"], fault, preexec_fn)
 
     def test_bake_faults(self):
+        self.requireHooks()
         cases = [
             ("missing-directory", "cannot create a temporary file in {d}: No such file or directory"),
             ("not-writable", "cannot create a temporary file in {d}: Permission denied"),
@@ -778,6 +784,7 @@ class WriteFaults(unittest.TestCase):
         self.assertEqual(sorted(os.listdir(d)), [self.FIRST])
 
     def test_bake_killed_mid_write(self):
+        self.requireHooks()
         d = self.fresh_dir("crash")
         code, out, err = self.bake(d, "crash")
         self.assertEqual(code, -9, err)  # SIGKILL
@@ -792,6 +799,7 @@ class WriteFaults(unittest.TestCase):
         self.assertIn("manifest.json", os.listdir(d))
 
     def test_render_faults(self):
+        self.requireHooks()
         if not has_render_command():
             self.skipTest("aerial was built without the renderer")
         d = os.path.join(WORK, "faults", "render")
@@ -827,9 +835,21 @@ class WriteFaults(unittest.TestCase):
             self.assertEqual(f.read(8), b"\x89PNG\r\n\x1a\n")
 
     def test_unknown_fault_is_a_usage_error(self):
+        self.requireHooks()
         code, out, err = self.run_with(["day"], "meteor")
         self.assertEqual(code, 2)
         self.assertEqual(err, "aerial: AERIAL_TEST_FILE_FAULT=meteor is not a known fault\n")
+
+    def test_fault_variable_ignored_without_test_hooks(self):
+        if TEST_HOOKS:
+            self.skipTest("aerial was built with AERIAL_TEST_HOOKS")
+        code, out, err = self.run_with(["day"], "meteor")
+        self.assertEqual(code, 0, err)
+        self.assertEqual(err, "")
+        d = self.fresh_dir("no_hooks")
+        code, out, err = self.bake(d, "disk-full")
+        self.assertEqual(code, 0, err)
+        self.assertIn("manifest.json", os.listdir(d))
 
 
 class Limits(unittest.TestCase):
@@ -875,14 +895,17 @@ class Day(unittest.TestCase):
 
 
 def main():
-    global AERIAL, ROOT, WORK
+    global AERIAL, ROOT, WORK, TEST_HOOKS
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--aerial", required=True, help="the aerial binary")
     parser.add_argument("--source-dir", required=True, help="the repository root")
     parser.add_argument("--work-dir", required=True, help="a scratch directory (emptied first)")
+    parser.add_argument("--test-hooks", choices=["on", "off"], default="on",
+                        help="whether aerial was built with AERIAL_TEST_HOOKS (default on)")
     args, rest = parser.parse_known_args()
     AERIAL, ROOT, WORK = os.path.abspath(args.aerial), os.path.abspath(args.source_dir), os.path.abspath(
         args.work_dir)
+    TEST_HOOKS = args.test_hooks == "on"
     shutil.rmtree(WORK, ignore_errors=True)
     os.makedirs(WORK)
     unittest.main(argv=[sys.argv[0], *rest], verbosity=2)

@@ -1,0 +1,61 @@
+// preset_compare.cpp — presetsIdentical: two presets compared value by
+// value through the parameter table (bit for bit on every number), plus
+// their tracks.
+#include <aerial/param_table.hpp>
+#include <aerial/preset.hpp>
+
+#include <cstring>
+
+namespace aerial {
+
+bool presetsIdentical(const Preset& constA, const Preset& constB) {
+    Preset& a = const_cast<Preset&>(constA);
+    Preset& b = const_cast<Preset&>(constB);
+    auto same = [](const ParamDesc& p, void* x, void* y) {
+        if (p.type == ParamType::String) return *p.string(x) == *p.string(y);
+        double u[4], v[4];
+        switch (p.scope) {
+            case ParamScope::Global:
+                readParam(p, *static_cast<Environment*>(x), u);
+                readParam(p, *static_cast<Environment*>(y), v);
+                break;
+            case ParamScope::Volume:
+                readParam(p, *static_cast<FogVolume*>(x), u);
+                readParam(p, *static_cast<FogVolume*>(y), v);
+                break;
+            case ParamScope::Emitter:
+                readParam(p, *static_cast<Emitter*>(x), u);
+                readParam(p, *static_cast<Emitter*>(y), v);
+                break;
+        }
+        return std::memcmp(u, v, sizeof u) == 0;
+    };
+    if (a.name != b.name || a.description != b.description) return false;
+    for (const ParamDesc& p : paramTable(ParamScope::Global))
+        if (!same(p, &a.environment, &b.environment)) return false;
+    if (a.volumes.size() != b.volumes.size() || a.emitters.size() != b.emitters.size() ||
+        a.tracks.size() != b.tracks.size())
+        return false;
+    for (std::size_t i = 0; i < a.volumes.size(); ++i)
+        for (const ParamDesc& p : paramTable(ParamScope::Volume))
+            if (!same(p, &a.volumes[i], &b.volumes[i])) return false;
+    for (std::size_t i = 0; i < a.emitters.size(); ++i)
+        for (const ParamDesc& p : paramTable(ParamScope::Emitter))
+            if (!same(p, &a.emitters[i], &b.emitters[i])) return false;
+    for (std::size_t i = 0; i < a.tracks.size(); ++i) {
+        const Track& s = a.tracks[i];
+        const Track& t = b.tracks[i];
+        if (!(s.target == t.target) || s.interpolation != t.interpolation || s.keys.size() != t.keys.size())
+            return false;
+        for (std::size_t k = 0; k < s.keys.size(); ++k) {
+            const double u[4] = {s.keys[k].timeHours, s.keys[k].value.x, s.keys[k].value.y,
+                                 s.keys[k].value.z};
+            const double v[4] = {t.keys[k].timeHours, t.keys[k].value.x, t.keys[k].value.y,
+                                 t.keys[k].value.z};
+            if (std::memcmp(u, v, sizeof u) != 0) return false;
+        }
+    }
+    return true;
+}
+
+}  // namespace aerial

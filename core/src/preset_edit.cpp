@@ -1,0 +1,77 @@
+// preset_edit.cpp — editing helpers on a Preset (aerial/preset.hpp):
+// finding a track, renaming and removing volumes and emitters together with
+// the tracks that target them.
+#include "preset_validate.hpp"
+
+#include <aerial/preset.hpp>
+
+#include <algorithm>
+#include <vector>
+
+namespace aerial {
+
+Track* findTrack(Preset& preset, const TrackTarget& target) {
+    for (Track& t : preset.tracks)
+        if (t.target == target) return &t;
+    return nullptr;
+}
+
+const Track* findTrack(const Preset& preset, const TrackTarget& target) {
+    return findTrack(const_cast<Preset&>(preset), target);
+}
+
+namespace {
+
+template <class Object>
+bool changeId(std::vector<Object>& objects, std::vector<Track>& tracks, ParamScope scope,
+              const std::string& oldId, const std::string& newId) {
+    if (!detail::validId(newId)) return false;
+    Object* found = nullptr;
+    for (Object& o : objects) {
+        if (o.id == newId && newId != oldId) return false;
+        if (o.id == oldId && !found) found = &o;
+    }
+    if (!found) return false;
+    found->id = newId;
+    for (Track& t : tracks)
+        if (t.target.scope == scope && t.target.objectId == oldId) t.target.objectId = newId;
+    return true;
+}
+
+template <class Object>
+bool removeById(std::vector<Object>& objects, std::vector<Track>& tracks, ParamScope scope,
+                const std::string& id) {
+    const auto it = std::find_if(objects.begin(), objects.end(), [&](const Object& o) { return o.id == id; });
+    if (it == objects.end()) return false;
+    objects.erase(it);
+    std::erase_if(tracks, [&](const Track& t) { return t.target.scope == scope && t.target.objectId == id; });
+    return true;
+}
+
+}  // namespace
+
+bool changeObjectId(Preset& preset, ParamScope scope, const std::string& oldId, const std::string& newId) {
+    switch (scope) {
+        case ParamScope::Volume:
+            return changeId(preset.volumes, preset.tracks, scope, oldId, newId);
+        case ParamScope::Emitter:
+            return changeId(preset.emitters, preset.tracks, scope, oldId, newId);
+        case ParamScope::Global:
+            return false;
+    }
+    return false;
+}
+
+bool removeObject(Preset& preset, ParamScope scope, const std::string& id) {
+    switch (scope) {
+        case ParamScope::Volume:
+            return removeById(preset.volumes, preset.tracks, scope, id);
+        case ParamScope::Emitter:
+            return removeById(preset.emitters, preset.tracks, scope, id);
+        case ParamScope::Global:
+            return false;
+    }
+    return false;
+}
+
+}  // namespace aerial

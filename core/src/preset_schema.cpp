@@ -1,0 +1,203 @@
+// preset_schema.cpp — presetJsonSchema: the JSON Schema (draft 2020-12) of
+// the preset format, generated from the parameter table, with the caps of
+// aerial/limits.hpp as maxItems (volumes, emitters, tracks, keys per track)
+// and maxLength (ids, names, descriptions). presets/aerial-preset.schema.json
+// is its output: scripts/update_schema.sh rewrites it, test_preset checks
+// that they agree.
+#include <aerial/limits.hpp>
+#include <aerial/param_table.hpp>
+#include <aerial/preset.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+namespace aerial {
+
+using sv = std::string_view;
+
+namespace {
+
+using ojson = nlohmann::ordered_json;
+
+// The caps of aerial/limits.hpp a schema can state. JSON Schema counts a
+// string's length in characters, the loader in bytes of UTF-8: maxLength is
+// the same number, so it is a necessary condition, not a sufficient one.
+
+std::string idPattern() { return "^[A-Za-z0-9_.-]{1," + std::to_string(limits::kMaxIdBytes) + "}$"; }
+
+ojson idSchema() {
+    return {{"type", "string"}, {"pattern", idPattern()}, {"maxLength", limits::kMaxIdBytes}};
+}
+
+ojson textSchema() { return {{"type", "string"}, {"maxLength", limits::kMaxStringBytes}}; }
+
+ojson arraySchema(const char* itemRef, std::size_t maxItems) {
+    return {{"type", "array"}, {"items", {{"$ref", itemRef}}}, {"maxItems", maxItems}};
+}
+
+ojson schemaFor(const ParamDesc& p) {
+    ojson s;
+    std::string description(p.label);
+    if (!p.unit.empty()) description += " [" + std::string(p.unit) + "]";
+    description += ". " + std::string(p.doc);
+    s["description"] = description;
+    switch (p.type) {
+        case ParamType::Scalar:
+            s["type"] = "number";
+            s["minimum"] = p.minValue;
+            s["maximum"] = p.maxValue;
+            s["default"] = p.defaultValue[0];
+            break;
+        case ParamType::Colour:
+        case ParamType::Vec3:
+            s["type"] = "array";
+            s["items"] = {{"type", "number"}, {"minimum", p.minValue}, {"maximum", p.maxValue}};
+            s["minItems"] = 3;
+            s["maxItems"] = 3;
+            s["default"] = {p.defaultValue[0], p.defaultValue[1], p.defaultValue[2]};
+            break;
+        case ParamType::Quaternion:
+            s["type"] = "array";
+            s["items"] = {{"type", "number"}, {"minimum", -1.000001}, {"maximum", 1.000001}};
+            s["minItems"] = 4;
+            s["maxItems"] = 4;
+            s["default"] = {p.defaultValue[0], p.defaultValue[1], p.defaultValue[2], p.defaultValue[3]};
+            break;
+        case ParamType::Enum: {
+            ojson names = ojson::array();
+            for (sv n : p.enumNames) names.push_back(std::string(n));
+            s["type"] = "string";
+            s["enum"] = names;
+            s["default"] = std::string(p.enumNames[std::size_t(p.defaultValue[0])]);
+            break;
+        }
+        case ParamType::Int:
+            s["type"] = "integer";
+            s["minimum"] = std::int64_t(p.minValue);
+            s["maximum"] = std::int64_t(p.maxValue);
+            s["default"] = std::int64_t(p.defaultValue[0]);
+            break;
+        case ParamType::String:
+            s["type"] = "string";
+            if (p.path == "id") {
+                s["pattern"] = idPattern();
+                s["maxLength"] = limits::kMaxIdBytes;
+            } else {
+                s["maxLength"] = limits::kMaxStringBytes;
+                s["default"] = std::string(p.defaultText);
+            }
+            break;
+    }
+    return s;
+}
+
+ojson objectSchema(ParamScope scope) {
+    ojson s;
+    s["type"] = "object";
+    ojson props = ojson::object();
+    ojson required = ojson::array();
+    for (const ParamDesc& p : paramTable(scope)) {
+        props[std::string(p.path)] = schemaFor(p);
+        if (p.required) required.push_back(std::string(p.path));
+    }
+    s["properties"] = props;
+    if (!required.empty()) s["required"] = required;
+    s["additionalProperties"] = false;
+    return s;
+}
+
+ojson animatableNames(ParamScope scope) {
+    ojson names = ojson::array();
+    for (const ParamDesc& p : paramTable(scope))
+        if (p.animatable) names.push_back(std::string(p.path));
+    return names;
+}
+
+}  // namespace
+
+std::string presetJsonSchema() {
+    ojson root;
+    root["$schema"] = "https://json-schema.org/draft/2020-12/schema";
+    root["$id"] = "https://aerial.example/aerial-preset.schema.json";
+    root["title"] = "Aerial time-of-day preset";
+    root["description"] =
+        "Generated from the parameter table (aerial::presetJsonSchema(); core/src/param_table.cpp). "
+        "Do not edit by hand.";
+    root["type"] = "object";
+    ojson props = ojson::object();
+    props["version"] = {{"description", "File format version."}, {"const", kPresetVersion}};
+    props["name"] = textSchema();
+    props["description"] = textSchema();
+    // Global groups, nested as in the file.
+    for (const ParamDesc& p : paramTable(ParamScope::Global)) {
+        ojson* node = &props;
+        std::size_t start = 0;
+        while (true) {
+            const std::size_t dot = p.path.find('.', start);
+            const std::string part(p.path.substr(start, dot == sv::npos ? sv::npos : dot - start));
+            if (dot == sv::npos) {
+                (*node)[part] = schemaFor(p);
+                break;
+            }
+            ojson& group = (*node)[part];
+            if (group.is_null()) {
+                group["type"] = "object";
+                group["properties"] = ojson::object();
+                group["additionalProperties"] = false;
+            }
+            node = &group["properties"];
+            start = dot + 1;
+        }
+    }
+    props["volumes"] = arraySchema("#/$defs/volume", limits::kMaxVolumes);
+    props["emitters"] = arraySchema("#/$defs/emitter", limits::kMaxEmitters);
+    props["tracks"] = arraySchema("#/$defs/track", limits::kMaxTracks);
+    root["properties"] = props;
+    root["required"] = {"version"};
+    root["additionalProperties"] = false;
+
+    ojson defs = ojson::object();
+    defs["volume"] = objectSchema(ParamScope::Volume);
+    defs["emitter"] = objectSchema(ParamScope::Emitter);
+    ojson key;
+    key["type"] = "object";
+    key["properties"] = {
+        {"time_h", {{"type", "number"}, {"minimum", 0}, {"exclusiveMaximum", 24}}},
+        {"value",
+         {{"oneOf",
+           {{{"type", "number"}},
+            {{"type", "array"}, {"items", {{"type", "number"}}}, {"minItems", 3}, {"maxItems", 3}}}}}}};
+    key["required"] = {"time_h", "value"};
+    key["additionalProperties"] = false;
+    defs["key"] = key;
+    auto trackVariant = [&](const char* objectKey, ParamScope scope) {
+        ojson t;
+        t["type"] = "object";
+        ojson tp = ojson::object();
+        if (objectKey) tp[objectKey] = idSchema();
+        tp["param"] = {{"enum", animatableNames(scope)}};
+        tp["interpolation"] = {{"enum", {"step", "linear", "smooth"}}, {"default", "smooth"}};
+        tp["keys"] = {{"type", "array"},
+                      {"minItems", 1},
+                      {"maxItems", limits::kMaxKeysPerTrack},
+                      {"items", {{"$ref", "#/$defs/key"}}}};
+        t["properties"] = tp;
+        ojson req = ojson::array();
+        if (objectKey) req.push_back(objectKey);
+        req.push_back("param");
+        req.push_back("keys");
+        t["required"] = req;
+        t["additionalProperties"] = false;
+        return t;
+    };
+    defs["track"] = {{"oneOf",
+                      {trackVariant(nullptr, ParamScope::Global), trackVariant("volume", ParamScope::Volume),
+                       trackVariant("emitter", ParamScope::Emitter)}}};
+    root["$defs"] = defs;
+    return root.dump(2) + "\n";
+}
+
+}  // namespace aerial

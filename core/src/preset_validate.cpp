@@ -1,0 +1,271 @@
+// preset_validate.cpp — validatePreset: checks a Preset against the
+// parameter table and the caps of aerial/limits.hpp (ranges, finite numbers,
+// unit vectors and quaternions, ids, counts, string lengths, tracks). The
+// loader runs exactly these checks on what it read; savePreset runs them
+// before writing.
+#include "preset_validate.hpp"
+
+#include "json_text.hpp"
+
+#include <aerial/limits.hpp>
+#include <aerial/preset.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <exception>
+#include <string>
+#include <vector>
+
+namespace aerial {
+
+using namespace detail;
+using sv = std::string_view;
+
+bool detail::validId(sv id) {
+    if (id.empty() || id.size() > 64) return false;
+    for (char c : id) {
+        const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                        c == '_' || c == '-' || c == '.';
+        if (!ok) return false;
+    }
+    return true;
+}
+
+std::string detail::rangeText(const ParamDesc& p) {
+    return formatDouble(p.minValue) + ".." + formatDouble(p.maxValue);
+}
+
+namespace {
+
+struct Issues {
+    std::vector<PresetIssue> list;
+    void error(std::string pointer, std::string message) {
+        PresetIssue i;
+        i.severity = PresetIssue::Severity::Error;
+        i.pointer = std::move(pointer);
+        i.message = std::move(message);
+        list.push_back(std::move(i));
+    }
+};
+
+void checkNumber(const ParamDesc& p, double v, const std::string& pointer, Issues& issues) {
+    if (!std::isfinite(v)) {
+        issues.error(pointer, "must be a finite number (got " + formatDouble(v) + ")");
+    } else if (v < p.minValue || v > p.maxValue) {
+        // Appended piece by piece: GCC 12 warns (-Wrestrict) on " " + unit.
+        std::string m = "out of range: ";
+        m += formatDouble(v);
+        m += " is not in ";
+        m += rangeText(p);
+        if (!p.unit.empty()) {
+            m += ' ';
+            m += p.unit;
+        }
+        issues.error(pointer, std::move(m));
+    }
+}
+
+void checkText(const std::string& s, const std::string& pointer, Issues& issues) {
+    if (s.size() > limits::kMaxStringBytes) {
+        std::string m = "is ";
+        m += std::to_string(s.size());
+        m += " bytes long, over the limit of ";
+        m += std::to_string(limits::kMaxStringBytes);
+        issues.error(pointer, std::move(m));
+    } else if (!validUtf8(s)) {
+        issues.error(pointer, "must be valid UTF-8");
+    }
+}
+
+void checkCount(std::size_t count, std::size_t limit, const char* pointer, const char* what, Issues& issues) {
+    if (count <= limit) return;
+    std::string m = std::to_string(count);
+    m += " ";
+    m += what;
+    m += ", over the limit of ";
+    m += std::to_string(limit);
+    issues.error(pointer, std::move(m));
+}
+
+void checkParam(const ParamDesc& p, void* object, const std::string& pointer, Issues& issues) {
+    switch (p.type) {
+        case ParamType::Scalar:
+            checkNumber(p, *p.scalar(object), pointer, issues);
+            break;
+        case ParamType::Colour:
+        case ParamType::Vec3: {
+            const glm::dvec3 v = *p.vec3(object);
+            for (int c = 0; c < 3; ++c) checkNumber(p, v[c], pointerJoin(pointer, std::size_t(c)), issues);
+            if (p.unitLength && std::isfinite(v.x + v.y + v.z)) {
+                const double len = std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
+                if (!(std::abs(len - 1.0) <= 1e-6))
+                    issues.error(pointer, "must be a unit vector (length " + formatDouble(len) + ")");
+            }
+            break;
+        }
+        case ParamType::Quaternion: {
+            const glm::dquat q = *p.quat(object);
+            const double c[4] = {q.x, q.y, q.z, q.w};
+            bool finite = true;
+            for (int i = 0; i < 4; ++i) {
+                if (!std::isfinite(c[i])) {
+                    issues.error(pointerJoin(pointer, std::size_t(i)),
+                                 "must be a finite number (got " + formatDouble(c[i]) + ")");
+                    finite = false;
+                }
+            }
+            if (finite) {
+                const double len = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2] + c[3] * c[3]);
+                if (!(std::abs(len - 1.0) <= 1e-6))
+                    issues.error(pointer, "must be a unit quaternion (length " + formatDouble(len) + ")");
+            }
+            break;
+        }
+        case ParamType::Enum:
+        case ParamType::Int: {
+            const std::int64_t v = p.getInt(object);
+            if (double(v) < p.minValue || double(v) > p.maxValue)
+                issues.error(pointer, "out of range: " + std::to_string(v) + " is not in " + rangeText(p));
+            break;
+        }
+        case ParamType::String: {
+            const std::string& s = *p.string(object);
+            if (p.path == "id") {
+                if (!validId(s))
+                    issues.error(pointer, "an id must be 1..64 characters of A-Z a-z 0-9 _ - . (got " +
+                                              quoteString(validUtf8(s) ? s : std::string("?")) + ")");
+            } else {
+                checkText(s, pointer, issues);
+            }
+            break;
+        }
+    }
+}
+
+template <class Object>
+void checkObjects(std::vector<Object>& objects, ParamScope scope, const char* arrayKey, Issues& issues) {
+    const std::string base = std::string("/") + arrayKey;
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+        const std::string at = pointerJoin(base, i);
+        for (const ParamDesc& p : paramTable(scope))
+            checkParam(p, &objects[i], pointerJoin(at, p.path), issues);
+        for (std::size_t j = 0; j < i; ++j) {
+            if (objects[j].id == objects[i].id && !objects[i].id.empty()) {
+                issues.error(pointerJoin(at, "id"), "duplicate id " + quoteString(objects[i].id) + " (also " +
+                                                        pointerJoin(base, j) + ")");
+                break;
+            }
+        }
+    }
+}
+
+std::string globalPointer(sv path) {
+    std::string out;
+    std::size_t start = 0;
+    while (true) {
+        const std::size_t dot = path.find('.', start);
+        out += "/";
+        out += path.substr(start, dot == sv::npos ? sv::npos : dot - start);
+        if (dot == sv::npos) break;
+        start = dot + 1;
+    }
+    return out;
+}
+
+void validateInto(const Preset& constPreset, Issues& issues) {
+    // The accessors take non-const objects; validation only reads.
+    Preset& preset = const_cast<Preset&>(constPreset);
+    checkText(preset.name, "/name", issues);
+    checkText(preset.description, "/description", issues);
+    checkCount(preset.volumes.size(), limits::kMaxVolumes, "/volumes", "volumes", issues);
+    checkCount(preset.emitters.size(), limits::kMaxEmitters, "/emitters", "emitters", issues);
+    checkCount(preset.tracks.size(), limits::kMaxTracks, "/tracks", "tracks", issues);
+    for (const ParamDesc& p : paramTable(ParamScope::Global))
+        checkParam(p, &preset.environment, globalPointer(p.path), issues);
+    const AtmosphereParams& air = preset.environment.atmosphere;
+    for (int c = 0; c < 3; ++c) {
+        if (air.mieExtinction[c] < air.mieScattering[c])
+            issues.error("/atmosphere/mie/extinction_per_m/" + std::to_string(c),
+                         "Mie extinction " + formatDouble(air.mieExtinction[c]) +
+                             " must be >= Mie scattering " + formatDouble(air.mieScattering[c]));
+    }
+    checkObjects(preset.volumes, ParamScope::Volume, "volumes", issues);
+    checkObjects(preset.emitters, ParamScope::Emitter, "emitters", issues);
+
+    for (std::size_t i = 0; i < preset.tracks.size(); ++i) {
+        const Track& track = preset.tracks[i];
+        const std::string at = pointerJoin("/tracks", i);
+        const TrackTarget& target = track.target;
+        const ParamDesc* p = findParam(target.scope, target.param);
+        const char* objectKey = target.scope == ParamScope::Volume ? "volume" : "emitter";
+        if (!p) {
+            issues.error(pointerJoin(at, "param"), "unknown " + std::string(scopeName(target.scope)) +
+                                                       " parameter " + quoteString(target.param));
+        } else if (!p->animatable) {
+            issues.error(pointerJoin(at, "param"),
+                         "parameter " + quoteString(target.param) + " cannot be animated");
+        }
+        if (target.scope == ParamScope::Volume) {
+            const bool found = std::any_of(preset.volumes.begin(), preset.volumes.end(),
+                                           [&](const FogVolume& v) { return v.id == target.objectId; });
+            if (!found)
+                issues.error(pointerJoin(at, objectKey), "no volume with id " + quoteString(target.objectId));
+        } else if (target.scope == ParamScope::Emitter) {
+            const bool found = std::any_of(preset.emitters.begin(), preset.emitters.end(),
+                                           [&](const Emitter& e) { return e.id == target.objectId; });
+            if (!found)
+                issues.error(pointerJoin(at, objectKey),
+                             "no emitter with id " + quoteString(target.objectId));
+        } else if (!target.objectId.empty()) {
+            issues.error(at, "a global parameter's track has no object id");
+        }
+        for (std::size_t j = 0; j < i; ++j) {
+            if (preset.tracks[j].target == target) {
+                issues.error(pointerJoin(at, "param"),
+                             "a second track for the same target (also " + pointerJoin("/tracks", j) + ")");
+                break;
+            }
+        }
+        if (int(track.interpolation) < 0 || int(track.interpolation) > 2)
+            issues.error(pointerJoin(at, "interpolation"), "unknown interpolation");
+        const std::string keysAt = pointerJoin(at, "keys");
+        if (track.keys.empty()) issues.error(keysAt, "a track needs at least one key");
+        checkCount(track.keys.size(), limits::kMaxKeysPerTrack, keysAt.c_str(), "keys", issues);
+        for (std::size_t k = 0; k < track.keys.size(); ++k) {
+            const TrackKey& key = track.keys[k];
+            const std::string keyAt = pointerJoin(keysAt, k);
+            const double t = key.timeHours;
+            if (!std::isfinite(t) || t < 0.0 || t >= 24.0) {
+                issues.error(pointerJoin(keyAt, "time_h"),
+                             "a key's time must be in [0, 24) h (got " + formatDouble(t) + ")");
+            } else if (k > 0 && !(t > track.keys[k - 1].timeHours)) {
+                issues.error(pointerJoin(keyAt, "time_h"),
+                             "key times must increase strictly (" + formatDouble(t) + " after " +
+                                 formatDouble(track.keys[k - 1].timeHours) + ")");
+            }
+            if (!p || !p->animatable) continue;
+            const std::string valueAt = pointerJoin(keyAt, "value");
+            if (p->type == ParamType::Scalar) {
+                checkNumber(*p, key.value.x, valueAt, issues);
+            } else {
+                for (int c = 0; c < 3; ++c)
+                    checkNumber(*p, key.value[c], pointerJoin(valueAt, std::size_t(c)), issues);
+            }
+        }
+    }
+}
+
+}  // namespace
+
+std::vector<PresetIssue> validatePreset(const Preset& preset) {
+    Issues issues;
+    try {
+        validateInto(preset, issues);
+    } catch (const std::exception& e) {
+        issues.error("", std::string("validation failed: ") + e.what());
+    }
+    return std::move(issues.list);
+}
+
+}  // namespace aerial

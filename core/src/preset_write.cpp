@@ -1,0 +1,262 @@
+// preset_write.cpp — writing: presetToJson, the canonical JSON text of a
+// Preset (the parameter table's key order, two-space indent, every
+// parameter written, numbers in the shortest form that reads back
+// bit-exact), and savePreset, which validates first and then writes through
+// the atomic writer (aerial/detail/file_system.hpp).
+#include "json_text.hpp"
+#include "preset_issues.hpp"
+
+#include <aerial/detail/file_system.hpp>
+#include <aerial/param_table.hpp>
+#include <aerial/preset.hpp>
+
+#include <cstdint>
+#include <exception>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace aerial {
+
+using namespace detail;
+using sv = std::string_view;
+
+namespace {
+
+class Writer {
+public:
+    std::string out;
+
+    void newline(int depth) {
+        out += '\n';
+        out.append(std::size_t(depth) * 2, ' ');
+    }
+    void key(sv k) {
+        out += quoteString(k);
+        out += ": ";
+    }
+    void numbers(const double* v, int count) {
+        out += '[';
+        for (int i = 0; i < count; ++i) {
+            if (i) out += ", ";
+            out += formatDouble(v[i]);
+        }
+        out += ']';
+    }
+    void value(const ParamDesc& p, void* object) {
+        switch (p.type) {
+            case ParamType::Scalar:
+                out += formatDouble(*p.scalar(object));
+                break;
+            case ParamType::Colour:
+            case ParamType::Vec3: {
+                const glm::dvec3 v = *p.vec3(object);
+                const double c[3] = {v.x, v.y, v.z};
+                numbers(c, 3);
+                break;
+            }
+            case ParamType::Quaternion: {
+                const glm::dquat q = *p.quat(object);
+                const double c[4] = {q.x, q.y, q.z, q.w};
+                numbers(c, 4);
+                break;
+            }
+            case ParamType::Enum: {
+                const std::int64_t v = p.getInt(object);
+                out += v >= 0 && std::size_t(v) < p.enumNames.size()
+                           ? quoteString(p.enumNames[std::size_t(v)])
+                           : std::string("null");
+                break;
+            }
+            case ParamType::Int:
+                out += std::to_string(p.getInt(object));
+                break;
+            case ParamType::String:
+                out += quoteString(*p.string(object));
+                break;
+        }
+    }
+
+    // Members of a scope's object, one per line, at `depth`.
+    void objectMembers(ParamScope scope, void* object, int depth) {
+        bool first = true;
+        for (const ParamDesc& p : paramTable(scope)) {
+            if (!first) out += ',';
+            first = false;
+            newline(depth);
+            key(p.path);
+            value(p, object);
+        }
+    }
+
+    // The global table as nested groups, in table order.
+    void globals(Environment& env) {
+        std::vector<sv> open;  // currently open group names
+        bool firstAtLevel = false;
+        for (const ParamDesc& p : paramTable(ParamScope::Global)) {
+            std::vector<sv> parts;
+            std::size_t start = 0;
+            while (true) {
+                const std::size_t dot = p.path.find('.', start);
+                parts.push_back(p.path.substr(start, dot == sv::npos ? sv::npos : dot - start));
+                if (dot == sv::npos) break;
+                start = dot + 1;
+            }
+            const std::size_t groups = parts.size() - 1;
+            std::size_t common = 0;
+            while (common < open.size() && common < groups && open[common] == parts[common]) ++common;
+            while (open.size() > common) {
+                open.pop_back();
+                newline(int(open.size()) + 1);
+                out += '}';
+                firstAtLevel = false;
+            }
+            while (open.size() < groups) {
+                if (!firstAtLevel) out += ',';
+                newline(int(open.size()) + 1);
+                key(parts[open.size()]);
+                out += '{';
+                open.push_back(parts[open.size()]);
+                firstAtLevel = true;
+            }
+            if (!firstAtLevel) out += ',';
+            firstAtLevel = false;
+            newline(int(open.size()) + 1);
+            key(parts.back());
+            value(p, &env);
+        }
+        while (!open.empty()) {
+            open.pop_back();
+            newline(int(open.size()) + 1);
+            out += '}';
+        }
+    }
+
+    template <class Object>
+    void objectArray(sv name, std::vector<Object>& objects, ParamScope scope) {
+        out += ',';
+        newline(1);
+        key(name);
+        if (objects.empty()) {
+            out += "[]";
+            return;
+        }
+        out += '[';
+        for (std::size_t i = 0; i < objects.size(); ++i) {
+            if (i) out += ',';
+            newline(2);
+            out += '{';
+            objectMembers(scope, &objects[i], 3);
+            newline(2);
+            out += '}';
+        }
+        newline(1);
+        out += ']';
+    }
+
+    void tracks(const std::vector<Track>& list) {
+        out += ',';
+        newline(1);
+        key("tracks");
+        if (list.empty()) {
+            out += "[]";
+            return;
+        }
+        out += '[';
+        for (std::size_t i = 0; i < list.size(); ++i) {
+            const Track& t = list[i];
+            const ParamDesc* p = findParam(t.target.scope, t.target.param);
+            const bool scalarValues = !p || p->type == ParamType::Scalar;
+            if (i) out += ',';
+            newline(2);
+            out += '{';
+            if (t.target.scope != ParamScope::Global) {
+                newline(3);
+                key(t.target.scope == ParamScope::Volume ? "volume" : "emitter");
+                out += quoteString(t.target.objectId);
+                out += ',';
+            }
+            newline(3);
+            key("param");
+            out += quoteString(t.target.param);
+            out += ',';
+            newline(3);
+            key("interpolation");
+            out += quoteString(int(t.interpolation) >= 0 && int(t.interpolation) <= 2
+                                   ? interpolationName(t.interpolation)
+                                   : sv("smooth"));
+            out += ',';
+            newline(3);
+            key("keys");
+            out += '[';
+            for (std::size_t k = 0; k < t.keys.size(); ++k) {
+                if (k) out += ',';
+                newline(4);
+                out += "{\"time_h\": " + formatDouble(t.keys[k].timeHours) + ", \"value\": ";
+                if (scalarValues) {
+                    out += formatDouble(t.keys[k].value.x);
+                } else {
+                    const double c[3] = {t.keys[k].value.x, t.keys[k].value.y, t.keys[k].value.z};
+                    numbers(c, 3);
+                }
+                out += '}';
+            }
+            if (!t.keys.empty()) newline(3);
+            out += ']';
+            newline(2);
+            out += '}';
+        }
+        newline(1);
+        out += ']';
+    }
+};
+
+}  // namespace
+
+std::string presetToJson(const Preset& constPreset) {
+    Preset& preset = const_cast<Preset&>(constPreset);  // accessors are non-const; we only read
+    Writer w;
+    w.out.reserve(4096 + preset.volumes.size() * 600 + preset.tracks.size() * 400);
+    w.out += '{';
+    w.newline(1);
+    w.key("version");
+    w.out += std::to_string(kPresetVersion) + ",";
+    w.newline(1);
+    w.key("name");
+    w.out += quoteString(preset.name) + ",";
+    w.newline(1);
+    w.key("description");
+    w.out += quoteString(preset.description);  // globals() writes the separator
+    w.globals(preset.environment);
+    w.objectArray("volumes", preset.volumes, ParamScope::Volume);
+    w.objectArray("emitters", preset.emitters, ParamScope::Emitter);
+    w.tracks(preset.tracks);
+    w.out += "\n}\n";
+    return std::move(w.out);
+}
+
+SaveResult savePreset(const Preset& preset, const std::string& path) {
+    SaveResult result;
+    auto fail = [&](std::string message) {
+        result.errors.push_back(makeIssue(path, std::move(message)));
+        return result;
+    };
+    try {
+        result.errors = validatePreset(preset);
+        if (!result.errors.empty()) {
+            for (PresetIssue& i : result.errors) {
+                i.file = path;
+                i.message = "not saved: " + i.message;
+            }
+            return result;
+        }
+        const std::string text = presetToJson(preset);
+        const std::string why = detail::writeFileAtomically(path, text);
+        if (!why.empty()) return fail("not saved: " + why);
+    } catch (const std::exception& e) {
+        return fail(std::string("not saved: ") + e.what());
+    }
+    return result;
+}
+
+}  // namespace aerial

@@ -1,0 +1,363 @@
+// sky_kernels.cpp — the sky solver's hot loops (sky_kernels.hpp): optical
+// depths to the light for a row of the optical-depth table, densities at
+// the view-ray nodes, layer transmittances, and the per-texel integral of a
+// sky row (the light at each shell, then each layer in closed form).
+//
+// Everything here is plain arithmetic over contiguous float arrays, written
+// so that GCC vectorises it: no calls (helpers are forced inline, so they
+// are compiled for the calling kernel's target clone), no float compares in
+// loop bodies (clamps on the bit patterns), no std::sqrt or std::exp (their
+// errno paths block the vectoriser). The four kernels are compiled for
+// AVX-512, AVX2 and the baseline (target_clones, chosen at load time).
+#include "sky_kernels.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__) && \
+    !defined(__SANITIZE_THREAD__)  // sanitizers and ifunc resolvers do not mix
+#define AERIAL_HOT_KERNEL __attribute__((target_clones("avx512f", "avx2", "default")))
+#else
+#define AERIAL_HOT_KERNEL
+#endif
+// Helpers of the hot kernels are forced inline so that they are compiled
+// for the kernel's target clone (a call would run the baseline code).
+#if defined(__GNUC__)
+#define AERIAL_INLINE inline __attribute__((always_inline))
+#else
+#define AERIAL_INLINE inline
+#endif
+
+namespace aerial::detail {
+namespace {
+
+/// Gauss-Legendre panels per monotonic piece of a ray to the light.
+constexpr int kDepthPanels = 4;
+
+// Branch-free float helpers. With GCC's default -ftrapping-math a float
+// compare inside a loop body blocks if-conversion and thus vectorisation, so
+// the clamps are done on the bit patterns (as integers, which order like the
+// floats for non-negative values).
+
+/// max(x, 0).
+AERIAL_INLINE float maxZero(float x) {
+    const int b = std::bit_cast<int>(x);
+    return std::bit_cast<float>(b & ~(b >> 31));
+}
+
+/// min(a, b) for b >= 0 (a of any sign).
+AERIAL_INLINE float minNonNegative(float a, float b) {
+    const int ia = std::bit_cast<int>(a), ib = std::bit_cast<int>(b);
+    return std::bit_cast<float>(ia < ib ? ia : ib);
+}
+
+/// max(a, b) for b >= 0 (a of any sign).
+AERIAL_INLINE float maxNonNegative(float a, float b) {
+    const int ia = std::bit_cast<int>(a), ib = std::bit_cast<int>(b);
+    return std::bit_cast<float>(ia > ib ? ia : ib);
+}
+
+/// exp(-x) for x >= 0 (clamped to 87), relative error < 3e-7: Cody-Waite
+/// reduction and a degree-6 polynomial, plain arithmetic that vectorises.
+AERIAL_INLINE float expNeg(float x) {
+    x = minNonNegative(x, 87.0f);          // also maps negative rounding noise through
+    constexpr float kShift = 12582912.0f;  // 1.5 * 2^23: adding it rounds to an integer
+    float k = -x * 1.44269504f + kShift;
+    k -= kShift;
+    float r = -x - k * 0.693359375f;  // ln 2 = 0.693359375 - 2.12194440e-4
+    r += k * 2.12194440e-4f;
+    const float p =
+        1.0f + r * (1.0f + r * (0.5f + r * (0.166666672f + r * (0.0416666679f +
+                                                                r * (0.00833333377f + r * 0.00138888892f)))));
+    const int bits = (static_cast<int>(k) + 127) << 23;
+    return p * std::bit_cast<float>(bits);
+}
+
+/// sqrt(x) for x > 0 (relative error < 1e-5) by Newton steps on the
+/// reciprocal root: plain arithmetic, so that loops over it vectorise
+/// (std::sqrt keeps an errno branch that blocks GCC's vectoriser).
+AERIAL_INLINE float fastSqrt(float x) {
+    float y = std::bit_cast<float>(0x5f375a86 - (std::bit_cast<int>(x) >> 1));
+    const float half = 0.5f * x;
+    y = y * (1.5f - half * y * y);
+    y = y * (1.5f - half * y * y);
+    y = y * (1.5f - half * y * y);
+    return x * y;
+}
+
+/// One quadrature node of depthKernel for every ray: the falling piece
+/// (d = len1 t^2 from the perigee) and the rising piece (d = start2 + len2 t^2).
+AERIAL_INLINE void depthNode(int n, float t2, float w, float rg, float rg2, const DensityConstants& k,
+                             const float* __restrict q, const float* __restrict len1,
+                             const float* __restrict start2, const float* __restrict len2,
+                             float* __restrict outR, float* __restrict outM, float* __restrict outO) {
+    const float invR = k.invRayleighH, onR = k.rayleighOn, invM = k.invMieH, onM = k.mieOn;
+    const float oc = k.ozoneCenter, oi = k.ozoneInvHalfWidth, onO = k.ozoneOn;
+    for (int m = 0; m < n; ++m) {
+        const float d1 = len1[m] * t2;
+        const float d2 = start2[m] + len2[m] * t2;
+        const float num1 = q[m] + d1 * d1;  // r^2 - Rg^2
+        const float num2 = q[m] + d2 * d2;
+        const float h1 = maxZero(num1 / (fastSqrt(rg2 + num1) + rg));
+        const float h2 = maxZero(num2 / (fastSqrt(rg2 + num2) + rg));
+        const float ds1 = len1[m] * w, ds2 = len2[m] * w;
+        outR[m] += onR * (ds1 * expNeg(h1 * invR) + ds2 * expNeg(h2 * invR));
+        outM[m] += onM * (ds1 * expNeg(h1 * invM) + ds2 * expNeg(h2 * invM));
+        const float tent1 = maxZero(1.0f - std::abs(h1 - oc) * oi);
+        const float tent2 = maxZero(1.0f - std::abs(h2 - oc) * oi);
+        outO[m] += onO * (ds1 * tent1 + ds2 * tent2);
+    }
+}
+
+/// The light at one shell for every column: its zenith cosine
+/// alpha + beta cos(phi) -> mapped column of that table row -> the record
+/// tau rgb, T = e^-tau rgb, sqrt(tau) rgb and the margin above the shell's
+/// horizon cosine (negative: the light is below it, the lookup clamped).
+AERIAL_INLINE void skyShell(int nc, float alpha, float beta, float ch, float scale, float knee, float maxU,
+                            const float* __restrict t0, const float* __restrict t1,
+                            const float* __restrict t2, const float* __restrict cosPhi,
+                            float* __restrict tau0, float* __restrict tau1, float* __restrict tau2,
+                            float* __restrict tr0, float* __restrict tr1, float* __restrict tr2,
+                            float* __restrict root0, float* __restrict root1, float* __restrict root2,
+                            float* __restrict margins) {
+    for (int i = 0; i < nc; ++i) {
+        const float margin = alpha + beta * cosPhi[i] - ch;
+        const float x = maxZero(margin);
+        const float u = minNonNegative(x / (x + knee) * scale, maxU);
+        const int iu = static_cast<int>(u);
+        const float f = u - float(iu);
+        const float d0 = t0[iu] + f * (t0[iu + 1] - t0[iu]);
+        const float d1 = t1[iu] + f * (t1[iu + 1] - t1[iu]);
+        const float d2 = t2[iu] + f * (t2[iu + 1] - t2[iu]);
+        tau0[i] = d0;
+        tau1[i] = d1;
+        tau2[i] = d2;
+        tr0[i] = expNeg(d0);
+        tr1[i] = expNeg(d1);
+        tr2[i] = expNeg(d2);
+        root0[i] = fastSqrt(d0);
+        root1[i] = fastSqrt(d1);
+        root2[i] = fastSqrt(d2);
+        margins[i] = margin;
+    }
+}
+
+/// F1 = T_a E1(d) and F2 = T_a E2(d), E1 = int_0^1 e^(-d t) dt and
+/// E2 = int_0^1 t e^(-d t) dt, given T_a and T_b = T_a e^-d: the closed forms
+/// (T_a - T_b) / d and (T_a - (1 + d) T_b) / d^2, or their Taylor series
+/// where those cancel (|d| < 0.05, truncation < 6e-8). Branch-free: an
+/// integer mask blends the two (the division is kept finite in between).
+AERIAL_INLINE void exponentialMoments(float ta, float tb, float d, float& f1, float& f2) {
+    const float s1 = ta * (1.0f + d * (-0.5f + d * (1.0f / 6.0f - d * (1.0f / 24.0f))));
+    const float s2 = ta * (0.5f + d * (-1.0f / 3.0f + d * (0.125f - d * (1.0f / 30.0f))));
+    const int small = (std::bit_cast<int>(d) & 0x7fffffff) < 0x3d4ccccd ? -1 : 0;  // |d| < 0.05f
+    const float safeD = std::bit_cast<float>((std::bit_cast<int>(d) & ~small) | (0x3f800000 & small));
+    const float inv = 1.0f / safeD;
+    const float c1 = (ta - tb) * inv;
+    const float c2 = (ta - (1.0f + d) * tb) * inv * inv;
+    f1 = std::bit_cast<float>((std::bit_cast<int>(s1) & small) | (std::bit_cast<int>(c1) & ~small));
+    f2 = std::bit_cast<float>((std::bit_cast<int>(s2) & small) | (std::bit_cast<int>(c2) & ~small));
+}
+
+/// e^x, x the correction of the layer's mean transmittance to the light for
+/// the curvature of tau along the layer: 2/3 of the gap at mid-layer between
+/// the straight line from tau_a to tau_b and tau itself (2/3: the mean of a
+/// parabolic gap), positive where tau sags below the line (convex), negative
+/// where it bulges above it (concave).
+///  * Where the light is above the geometric horizon at every shell of the
+///    layer's stencil, tau is smooth and the gap is `cubic`: the cubic through
+///    tau at four shells around the layer at its middle, minus the chord,
+///    times -2/3 (LayerConstants::stencil).
+///  * Otherwise (a shell in the earth shadow, where the table lookup clamps to
+///    the grazing ray) tau falling along the layer is taken to fall like the
+///    density, tau_b + (tau_a - tau_b) (e^(-lambda t) - e^-lambda) / (1 - e^-lambda)
+///    with lambda = (h_b - h_a) / H_R, which lies below the straight line by
+///    curv (tau_a - tau_b), curv = tanh(lambda / 4) / 3 with the 2/3, capped by
+///    the exponential through both ends, (sqrt tau_a - sqrt tau_b)^2 / 3;
+///    0 where tau rises.
+/// `shadowed` is negative (sign bit set) where the second case applies.
+/// x is clamped to [-1/2, 1]: a quartic, error < 0.4% at 1 and < 0.05% at -1/2.
+AERIAL_INLINE float curvatureFactor(float cubic, int shadowed, float tauA, float tauB, float rootA,
+                                    float rootB, float curv) {
+    const float rootGap = rootA - rootB;
+    const float bump =
+        minNonNegative(curv * maxZero(tauA - tauB), maxZero(rootGap) * rootGap * (1.0f / 3.0f));
+    const int mask = shadowed >> 31;  // all ones where shadowed
+    float x = std::bit_cast<float>((std::bit_cast<int>(bump) & mask) | (std::bit_cast<int>(cubic) & ~mask));
+    x = minNonNegative(x, 1.0f);
+    x = x + maxZero(-0.5f - x);  // max(x, -1/2)
+    return 1.0f + x * (1.0f + x * (0.5f + x * (1.0f / 6.0f + x * (1.0f / 24.0f))));
+}
+
+/// One layer for every column. Along the layer (t = 0..1) the optical depth
+/// to the light is linear between the two shells, so the transmittance is
+/// T_a e^(-d t) (exact where it changes by orders of magnitude, as near the
+/// earth shadow), and the weight beta_X T(viewer -> s) is p + q t. The layer
+/// adds lit * e^x * (p F1 + q F2), e^x the correction for the curvature of
+/// tau along the layer (curvatureFactor): a second-order term that removes
+/// most of the bias of the straight line, which matters where a thick layer
+/// is seen at a grazing angle. For a low sun near the horizon tau first rises
+/// along the view ray (the light crosses the dense air below the point) and
+/// bulges above the line: without the term the first layer of a horizon row
+/// is 3% too bright in blue there, and the texel 2%.
+AERIAL_INLINE void skyLayer(
+    int nc, const LayerConstants& k, const float* __restrict sIn, const float* __restrict sOut,
+    const float* __restrict tauA0, const float* __restrict tauA1, const float* __restrict tauA2,
+    const float* __restrict tA0, const float* __restrict tA1, const float* __restrict tA2,
+    const float* __restrict rA0, const float* __restrict rA1, const float* __restrict rA2,
+    const float* __restrict tauB0, const float* __restrict tauB1, const float* __restrict tauB2,
+    const float* __restrict tB0, const float* __restrict tB1, const float* __restrict tB2,
+    const float* __restrict rB0, const float* __restrict rB1, const float* __restrict rB2,
+    const float* __restrict tauC0, const float* __restrict tauC1, const float* __restrict tauC2,
+    const float* __restrict tauD0, const float* __restrict tauD1, const float* __restrict tauD2,
+    const float* __restrict mA, const float* __restrict mB, const float* __restrict mC,
+    const float* __restrict mD, float* __restrict acc0, float* __restrict acc1, float* __restrict acc2,
+    float* __restrict acc3, float* __restrict acc4, float* __restrict acc5) {
+    const float s0 = k.start, s1 = k.end, invLen = k.invLength;
+    const float p0 = k.p[0], p1 = k.p[1], p2 = k.p[2], p3 = k.p[3], p4 = k.p[4], p5 = k.p[5];
+    const float q0 = k.q[0], q1 = k.q[1], q2 = k.q[2], q3 = k.q[3], q4 = k.q[4], q5 = k.q[5];
+    const float curv = k.curvature;
+    const float wA = k.stencil[0], wB = k.stencil[1], wC = k.stencil[2], wD = k.stencil[3];
+    for (int i = 0; i < nc; ++i) {
+        // Lit fraction: the layer [s0, s1] minus the shadow [sIn, sOut].
+        const float lo = maxNonNegative(sIn[i], s0);
+        const float hi = minNonNegative(sOut[i], s1);
+        const float lit = maxZero(1.0f - maxZero((hi - lo) * invLen));
+        // Sign bit set where a stencil shell has the light below its horizon.
+        // (Loaded into locals first: a bit_cast of the array element itself
+        // makes GCC lose the restrict information and the loop stays scalar.)
+        const float marginA = mA[i], marginB = mB[i], marginC = mC[i], marginD = mD[i];
+        const int shadowed = std::bit_cast<int>(marginA) | std::bit_cast<int>(marginB) |
+                             std::bit_cast<int>(marginC) | std::bit_cast<int>(marginD);
+        const float x0 = wA * tauA0[i] + wB * tauB0[i] + wC * tauC0[i] + wD * tauD0[i];
+        const float x1 = wA * tauA1[i] + wB * tauB1[i] + wC * tauC1[i] + wD * tauD1[i];
+        const float x2 = wA * tauA2[i] + wB * tauB2[i] + wC * tauC2[i] + wD * tauD2[i];
+        float a1, a2, b1, b2, c1, c2;
+        exponentialMoments(tA0[i], tB0[i], tauB0[i] - tauA0[i], a1, a2);
+        exponentialMoments(tA1[i], tB1[i], tauB1[i] - tauA1[i], b1, b2);
+        exponentialMoments(tA2[i], tB2[i], tauB2[i] - tauA2[i], c1, c2);
+        const float g0 = lit * curvatureFactor(x0, shadowed, tauA0[i], tauB0[i], rA0[i], rB0[i], curv);
+        const float g1 = lit * curvatureFactor(x1, shadowed, tauA1[i], tauB1[i], rA1[i], rB1[i], curv);
+        const float g2 = lit * curvatureFactor(x2, shadowed, tauA2[i], tauB2[i], rA2[i], rB2[i], curv);
+        a1 *= g0;
+        a2 *= g0;
+        b1 *= g1;
+        b2 *= g1;
+        c1 *= g2;
+        c2 *= g2;
+        acc0[i] += p0 * a1 + q0 * a2;
+        acc1[i] += p1 * b1 + q1 * b2;
+        acc2[i] += p2 * c1 + q2 * c2;
+        acc3[i] += p3 * a1 + q3 * a2;
+        acc4[i] += p4 * b1 + q4 * b2;
+        acc5[i] += p5 * c1 + q5 * c2;
+    }
+}
+
+/// The light at shell j (0: the viewer's, j > 0: the upper shell of layer
+/// j - 1) into its record slot.
+AERIAL_INLINE void lightAtShell(const SkyKernelArgs& a, int j, float maxU) {
+    const int nc = a.columns;
+    const int na = a.angles;
+    const std::size_t rows = std::size_t(a.layers) + 1;
+    const float alpha = j == 0 ? a.alpha0 : a.layer[j - 1].alpha;
+    const float beta = j == 0 ? a.beta0 : a.layer[j - 1].beta;
+    const float ch = j == 0 ? a.horizonCos0 : a.layer[j - 1].horizonCos;
+    const float scale = j == 0 ? a.angleScale0 : a.layer[j - 1].angleScale;
+    const float* t0 = a.depth + std::size_t(j) * na;
+    const float* t1 = a.depth + (rows + std::size_t(j)) * na;
+    const float* t2 = a.depth + (2 * rows + std::size_t(j)) * na;
+    float* r = a.shells + std::size_t(j % kShellSlots) * kShellRecord * nc;
+    skyShell(nc, alpha, beta, ch, scale, a.knee, maxU, t0, t1, t2, a.cosPhi, r, r + nc, r + 2 * nc,
+             r + 3 * nc, r + 4 * nc, r + 5 * nc, r + 6 * nc, r + 7 * nc, r + 8 * nc, r + 9 * nc);
+}
+
+}  // namespace
+
+/// Optical depths (column masses) of Rayleigh, Mie and ozone density along
+/// `count` rays from one table row: each piece is mapped d = dense + len t^2
+/// (dense end: the perigee or the start) and integrated with kDepthPanels
+/// 4-point Gauss-Legendre panels in t.
+AERIAL_HOT_KERNEL void depthKernel(const DepthKernelArgs& a) {
+    const int n = a.count;
+    const DensityConstants k = a.density;
+    const float* __restrict q = a.q;
+    const float* __restrict len1 = a.len1;
+    const float* __restrict start2 = a.start2;
+    const float* __restrict len2 = a.len2;
+    float* __restrict outR = a.depthR;
+    float* __restrict outM = a.depthM;
+    float* __restrict outO = a.depthO;
+    for (int m = 0; m < n; ++m) {
+        outR[m] = 0.0f;
+        outM[m] = 0.0f;
+        outO[m] = 0.0f;
+    }
+    for (int panel = 0; panel < kDepthPanels; ++panel) {
+        for (int g = 0; g < 4; ++g) {
+            const float t = float((panel + kGaussT[g]) / kDepthPanels);
+            const float w = float(kGaussW[g] / kDepthPanels) * 2.0f * t;
+            depthNode(n, t * t, w, a.planetRadius, a.planetRadius2, k, q, len1, start2, len2, outR, outM,
+                      outO);
+        }
+    }
+}
+
+/// Densities at the view-ray quadrature nodes of one row.
+AERIAL_HOT_KERNEL void nodeKernel(const NodeKernelArgs& a) {
+    const DensityConstants k = a.density;
+    const float* __restrict s = a.s;
+    float* __restrict outR = a.rayleigh;
+    float* __restrict outM = a.mie;
+    float* __restrict outO = a.ozone;
+    for (int n = 0; n < a.count; ++n) {
+        const float dr2 = s[n] * (a.twoR0Mu + s[n]);  // r^2 - r0^2
+        const float h = maxZero(a.viewerHeight + dr2 / (fastSqrt(a.r0 * a.r0 + dr2) + a.r0));
+        outR[n] = k.rayleighOn * expNeg(h * k.invRayleighH);
+        outM[n] = k.mieOn * expNeg(h * k.invMieH);
+        outO[n] = k.ozoneOn * maxZero(1.0f - std::abs(h - k.ozoneCenter) * k.ozoneInvHalfWidth);
+    }
+}
+
+/// Per-row transmittances of the layers: e^-tau, e^(-tau t_0), e^(-tau t_1).
+AERIAL_HOT_KERNEL void layerExpKernel(int n, const float* __restrict tau, float* __restrict layerT,
+                                      float* __restrict nodeT0, float* __restrict nodeT1) {
+    const float t0 = float(kGaussT[0]), t1 = float(kGaussT[1]);
+    for (int i = 0; i < n; ++i) {
+        layerT[i] = expNeg(tau[i]);
+        nodeT0[i] = expNeg(tau[i] * t0);
+        nodeT1[i] = expNeg(tau[i] * t1);
+    }
+}
+
+/// The inner loop of a sky row over contiguous float arrays, no branch.
+/// Shell records are made just ahead of the layers that use them, into
+/// kShellSlots slots (shell j in slot j % kShellSlots): layer l's stencil
+/// spans shells l-1 .. l+2 (0 .. 3 for the first layer, see layerStencil),
+/// so shell l + 2 replaces shell l - 2 before layer l >= 2.
+AERIAL_HOT_KERNEL void skyKernel(const SkyKernelArgs& a) {
+    const int nc = a.columns;
+    const int nl = a.layers;
+    const float maxU = float(a.angles - 1) - 1e-3f;
+    float* acc = a.acc;
+    auto shell = [&](int j) { return a.shells + std::size_t(j % kShellSlots) * kShellRecord * nc; };
+    for (int j = 0; j <= std::min(nl, kShellSlots - 1); ++j) lightAtShell(a, j, maxU);
+    for (int i = 0; i < 6 * nc; ++i) acc[i] = 0.0f;
+    for (int l = 0; l < nl; ++l) {
+        if (l >= 2 && l + 2 <= nl) lightAtShell(a, l + 2, maxU);
+        const LayerConstants& k = a.layer[l];
+        const float* lo = shell(l);
+        const float* up = shell(l + 1);
+        const float* c = shell(k.stencilC);
+        const float* d = shell(k.stencilD);
+        skyLayer(nc, k, a.shadowIn, a.shadowOut, lo, lo + nc, lo + 2 * nc, lo + 3 * nc, lo + 4 * nc,
+                 lo + 5 * nc, lo + 6 * nc, lo + 7 * nc, lo + 8 * nc, up, up + nc, up + 2 * nc, up + 3 * nc,
+                 up + 4 * nc, up + 5 * nc, up + 6 * nc, up + 7 * nc, up + 8 * nc, c, c + nc, c + 2 * nc, d,
+                 d + nc, d + 2 * nc, lo + 9 * nc, up + 9 * nc, c + 9 * nc, d + 9 * nc, acc, acc + nc,
+                 acc + 2 * nc, acc + 3 * nc, acc + 4 * nc, acc + 5 * nc);
+    }
+}
+
+}  // namespace aerial::detail

@@ -1,0 +1,104 @@
+// sky_kernels.hpp — private: the hot loops of the sky solver
+// (sky_kernels.cpp), each over contiguous float arrays of one row, and the
+// plain structs that carry their inputs. sky_solver.cpp prepares those
+// inputs per row in double precision and calls these once per row.
+//
+// The kernels are compiled for AVX-512, AVX2 and the baseline
+// (target_clones, chosen at load time; no global -march needed). Their
+// helpers live in sky_kernels.cpp, forced inline, so that each clone runs
+// vector code throughout. A call costs one indirect jump per row.
+#pragma once
+
+#include <cstddef>
+
+namespace aerial::detail {
+
+// 4-point Gauss-Legendre on [0, 1].
+inline constexpr double kGaussT[4] = {0.0694318442029737, 0.3300094782075719, 0.6699905217924281,
+                                      0.9305681557970263};
+inline constexpr double kGaussW[4] = {0.1739274225687269, 0.3260725774312731, 0.3260725774312731,
+                                      0.1739274225687269};
+
+/// Density constants in the form the kernels use (float, 1/H or 0).
+struct DensityConstants {
+    float invRayleighH = 0.0f, rayleighOn = 0.0f;
+    float invMieH = 0.0f, mieOn = 0.0f;
+    float ozoneCenter = 0.0f, ozoneInvHalfWidth = 0.0f, ozoneOn = 0.0f;
+};
+
+struct DepthKernelArgs {
+    int count;
+    float planetRadius2;
+    float planetRadius;
+    DensityConstants density;
+    const float* q;       // p^2 - Rg^2 per column (p: impact parameter)
+    const float* len1;    // length of the descending piece (0 for rising rays)
+    const float* start2;  // distance from the perigee where the rising piece starts
+    const float* len2;    // length of the rising piece
+    float* depthR;
+    float* depthM;
+    float* depthO;
+};
+
+/// Optical depths (column masses) of Rayleigh, Mie and ozone density along
+/// `count` rays from one row of the optical-depth table: each piece is
+/// mapped d = dense + len t^2 (dense end: the perigee or the start) and
+/// integrated with 4-point Gauss-Legendre panels in t.
+void depthKernel(const DepthKernelArgs& a);
+
+struct NodeKernelArgs {
+    int count;
+    float viewerHeight;
+    float r0;
+    float twoR0Mu;  // 2 r0 mu_view
+    DensityConstants density;
+    const float* s;  // node distances from the viewer
+    float* rayleigh;
+    float* mie;
+    float* ozone;
+};
+
+/// Densities at the view-ray quadrature nodes of one row.
+void nodeKernel(const NodeKernelArgs& a);
+
+/// Per-row transmittances of the layers: e^-tau, e^(-tau t_0), e^(-tau t_1).
+void layerExpKernel(int n, const float* __restrict tau, float* __restrict layerT, float* __restrict nodeT0,
+                    float* __restrict nodeT1);
+
+/// Per-layer constants of a sky row.
+struct LayerConstants {
+    float alpha, beta, horizonCos, angleScale;  // upper shell: light cosine alpha + beta cos(phi), table row
+    float start, end, invLength;                // layer extent along the view ray
+    float p[6], q[6];                           // weight p + q t: R rgb, M rgb
+    float curvature;                            // tanh(lambda / 4) / 3, see curvatureFactor
+    int stencilC, stencilD;  // the stencil's two shells besides the layer's own (curvatureFactor)
+    float stencil[4];        // -2/3 (cubic at mid-layer - chord): weights of tau at shells a, b, C, D
+};
+
+/// Floats per column of a shell record (skyShell).
+constexpr int kShellRecord = 10;
+/// Shell records kept at a time: a layer's stencil spans four shells.
+constexpr int kShellSlots = 4;
+
+struct SkyKernelArgs {
+    int columns;
+    int layers;
+    int angles;
+    float knee;
+    float alpha0, beta0, horizonCos0, angleScale0;  // the viewer's shell
+    const float* cosPhi;                            // [columns]
+    const float* shadowIn;                          // [columns]
+    const float* shadowOut;                         // [columns]
+    const LayerConstants* layer;                    // [layers]
+    const float* depth;                             // [3][layers + 1][angles] optical depth to the light
+    float* shells;  // [kShellSlots][kShellRecord][columns] scratch: the light at the shells in use
+    float* acc;     // [6][columns]
+};
+
+/// The inner loop of a sky row over contiguous float arrays, no branch: the
+/// light at every shell (table lookup), then each layer's closed-form
+/// integral times its curvature factor and lit fraction, summed into acc
+/// (Rayleigh rgb, Mie rgb). `columns` is a multiple of 16 (no scalar tail).
+void skyKernel(const SkyKernelArgs& a);
+
+}  // namespace aerial::detail
