@@ -22,7 +22,6 @@
 #include <fstream>
 #include <limits>
 #include <map>
-#include <regex>
 #include <sstream>
 #include <string>
 
@@ -234,19 +233,28 @@ std::vector<Std140Member> std140Layout(const std::string& file, const std::strin
     };
     std::vector<Std140Member> members;
     std::size_t offset = 0;
-    const std::regex member(R"((\w+)\s+(\w+)(\[(\d+)\])?\s*;)");
-    for (auto it = std::sregex_iterator(body.begin(), body.end(), member); it != std::sregex_iterator();
-         ++it) {
-        const auto type = kTypes.find((*it)[1]);
-        EXPECT_NE(type, kTypes.end()) << (*it)[1];
-        if (type == kTypes.end()) continue;
-        std::size_t alignment = type->second.first, size = type->second.second;
-        if ((*it)[4].matched) {  // arrays: elements rounded up to vec4
+    // Statements "type name;" or "type name[N];" (comments stripped), after
+    // the block's opening brace.
+    std::istringstream lines(body.substr(body.find('{') + 1));
+    std::string line;
+    while (std::getline(lines, line)) {
+        line = line.substr(0, line.find("//"));
+        std::istringstream words(line);
+        std::string type, name;
+        if (!(words >> type >> name) || name.empty() || name.back() != ';') continue;
+        name.pop_back();
+        const auto found = kTypes.find(type);
+        EXPECT_NE(found, kTypes.end()) << type;
+        if (found == kTypes.end()) continue;
+        std::size_t alignment = found->second.first, size = found->second.second;
+        const std::size_t bracket = name.find('[');
+        if (bracket != std::string::npos) {  // arrays: elements rounded up to vec4
             alignment = 16;
-            size = 16 * std::stoul((*it)[4]);
+            size = 16 * std::stoul(name.substr(bracket + 1));
+            name = name.substr(0, bracket);
         }
         offset = (offset + alignment - 1) / alignment * alignment;
-        members.push_back({(*it)[2], offset});
+        members.push_back({name, offset});
         offset += size;
     }
     return members;
