@@ -54,7 +54,7 @@ constexpr int kHeight = 720;
 struct Setup {
     aerial::renderer::HeadlessContext context;
     std::unique_ptr<aerial::renderer::Renderer> renderer;
-    aerial::renderer::AtmosphereFrame air;
+    aerial::PresetState state;
     aerial::renderer::Camera camera;
     std::string error;
 };
@@ -73,14 +73,13 @@ Setup* setup() {
         }
         created->renderer->setScene(aerial::renderer::makeBuiltinScene());
         const aerial::CompiledPreset preset;
-        aerial::PresetState state;
+        aerial::PresetState& state = created->state;
         preset.evaluate(12.0, state);
         aerial::SkySolver solver;
         solver.solve(state.environment.atmosphere, state.sunLight.body.direction);
         const aerial::SkyTable sun = solver.table();
         solver.solve(state.environment.atmosphere, state.moonLight.body.direction);
         created->renderer->setSky(sun, solver.table());
-        created->air = aerial::renderer::atmosphereFrameFromState(state);
         // The default camera of `aerial render`.
         created->camera.eye = {0.0, aerial::renderer::builtinTerrainHeight(0.0, 120.0) + 30.0, 120.0};
         created->camera.target = {0.0, aerial::renderer::builtinTerrainHeight(0.0, -200.0) + 10.0, -200.0};
@@ -96,10 +95,10 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
 }
 
 /// Renders and reads the colour back (the read-back waits for the GPU).
-double timedFrame(Setup& s, const aerial::renderer::AtmosphereFrame& air, const FrameDesc& frame,
+double timedFrame(Setup& s, const aerial::PresetState& state, const FrameDesc& frame,
                   aerial::renderer::Image* out = nullptr) {
     const auto start = std::chrono::steady_clock::now();
-    s.renderer->render(s.camera, air, frame);
+    s.renderer->render(s.camera, state, frame);
     aerial::renderer::Image image = s.renderer->readColour();
     const double ms = millisecondsSince(start);
     if (out) *out = std::move(image);
@@ -128,7 +127,7 @@ void DefaultScene720p(benchmark::State& state) {
     };
     double wall = 0.0;
     for (auto _ : state) {
-        wall += timedFrame(s, s.air, frame);
+        wall += timedFrame(s, s.state, frame);
         add(gpu, s.renderer->stats().gpuMilliseconds);
         add(cpu, s.renderer->stats().wallMilliseconds);
     }
@@ -180,8 +179,8 @@ void FogVolumesAnalyticVsMarched(benchmark::State& state) {
         state.SkipWithError(s.error.c_str());
         return;
     }
-    aerial::renderer::AtmosphereFrame air = s.air;
-    air.volumes = benchVolumes();
+    aerial::PresetState foggy = s.state;
+    foggy.volumes = benchVolumes();
     FrameDesc frame;
     frame.width = kWidth;
     frame.height = kHeight;
@@ -193,10 +192,10 @@ void FogVolumesAnalyticVsMarched(benchmark::State& state) {
     double maxError = 0.0;
     aerial::renderer::Image a, m;
     for (auto _ : state) {
-        timedFrame(s, air, frame, &a);
+        timedFrame(s, foggy, frame, &a);
         analyticGpu += s.renderer->stats().gpuMilliseconds.volumes;
         analyticWall += s.renderer->stats().wallMilliseconds.volumes;
-        timedFrame(s, air, marched, &m);
+        timedFrame(s, foggy, marched, &m);
         marchedGpu += s.renderer->stats().gpuMilliseconds.volumes;
         marchedWall += s.renderer->stats().wallMilliseconds.volumes;
     }

@@ -4,8 +4,9 @@
 //
 // Inputs:
 //   frame (common/frame.glsl): eye, far-plane corner rays, emitter count
-//   Emitters (std430 SSBO, binding 2): per emitter position [m] and
-//     intensity i [1/m] (flash applied), colour (rgb) and attenuation a [1/m^2]
+//   Emitters (common/emitters.glsl; std430 SSBO, binding 2): per emitter
+//     position [m], intensity i [1/m] (flash applied), colour (rgb) and
+//     attenuation a [1/m^2]
 //   uLinearDepth (unit 4): normalised linear eye depth
 // Output (location 0), blended with glBlendFunc(GL_ONE, GL_ONE):
 //   rgb = sum colour * integral f, f(p) = i / (1 + a |l - p|^2), in the
@@ -19,11 +20,7 @@
 #else
 #include "common/atmosphere.glsl"
 
-struct EmitterGpu {
-    vec4 positionIntensity;   // xyz [m], w: i [1/m]
-    vec4 colourAttenuation;   // rgb, w: a [1/m^2]
-};
-layout(std430, binding = 2) readonly buffer EmitterBlock { EmitterGpu emitters[]; };
+#include "common/emitters.glsl"
 layout(binding = 4) uniform sampler2D uLinearDepth;
 
 in vec3 vFarRay;
@@ -50,14 +47,14 @@ float emitterIntegral(vec3 l, float i, float a, vec3 o, vec3 d) {
 
 void main() {
     float depth01 = texelFetch(uLinearDepth, ivec2(gl_FragCoord.xy), 0).r;
-    vec3 o = frame.eyeFar.xyz;
+    vec3 o = frame.eye;
     vec3 d = depth01 * vFarRay;
     vec3 sum = vec3(0.0);
-    for (int k = 0; k < frame.counts.x; ++k) {
+    for (int k = 0; k < frame.emitterCount; ++k) {
         EmitterGpu em = emitters[k];
-        sum += em.colourAttenuation.rgb *
-               emitterIntegral(em.positionIntensity.xyz, em.positionIntensity.w, em.colourAttenuation.w, o, d);
+        sum += em.colour *
+               emitterIntegral(em.position, em.intensity, em.attenuation, o, d);
     }
-    outColour = vec4(min(sum, vec3(frame.fogColour.w)), 1.0);
+    outColour = vec4(min(sum, vec3(frame.radianceCap)), 1.0);
 }
 #endif

@@ -6,15 +6,16 @@
 //
 // Inputs:
 //   frame (common/frame.glsl): eye [m], far-plane corner rays, lights
-//   VolumeBlock (std140, binding 1; VolumeBlock in renderer/src/gpu_types.hpp):
-//     worldFromObject (hull transform: position + rotation * halfExtents),
-//     the rows of objectFromWorld (S^-1 R^T; w of row0: shape, 0 box,
-//     1 ellipsoid; w of row1: density b_v [1/m]; w of row2: falloff c_v [1/m]),
-//     position [m] (w: gradient offset [m]), unit gradient g (w: colour mode
-//     0 sky, 1 tinted, 2 custom), colour (rgb)
+//   VolumeBlock (common/volume.glsl; std140, binding 1; VolumeBlock in
+//     renderer/src/gpu_types.hpp): worldFromObject (hull transform:
+//     position + rotation * halfExtents), objectFromWorldRow0..2 (the rows of
+//     S^-1 R^T), shape (0 box, 1 ellipsoid), density b_v [1/m], falloff c_v
+//     [1/m], position [m], gradientOffset [m], gradientDirection g (unit),
+//     colourMode (0 sky, 1 tinted, 2 custom), colour (rgb)
 //   uLinearDepth (unit 4): normalised linear eye depth z/far
 // Output (location 0), blended with glBlendFunc(GL_ONE, GL_SRC_ALPHA):
-//   rgb = C_v (1 - T_v), a = T_v: L <- L T_v + C_v (1 - T_v).
+//   rgb = C_v (1 - T_v), a = T_v: L <- L T_v + C_v (1 - T_v)
+//   (fogInScatterTransmittance, common/atmosphere.glsl).
 //
 // The ray is eye + t farRay, t in [0, 1] to the far plane; the scene point is
 // at t = depth01. The segment is [max(t_in, 0), min(t_out, depth01)] (the
@@ -36,14 +37,13 @@ void main() {
     float tIn, tOut;
     if (!clipFragmentRay(eye, farRay, tIn, tOut)) discard;
 
-    vec3 centre = volume.positionOffset.xyz;
-    vec3 g = volume.gradientMode.xyz;
+    vec3 centre = volume.position;
+    vec3 g = volume.gradientDirection;
     float span = tOut - tIn;
     float rate = dot(farRay, g);  // height change per unit t
-    float height = dot(eye - centre, g) + tIn * rate - volume.positionOffset.w;
-    float tau = exponentialOpticalDepth(volume.objectFromWorld1.w, volume.objectFromWorld2.w, height,
+    float height = dot(eye - centre, g) + tIn * rate - volume.gradientOffset;
+    float tau = exponentialOpticalDepth(volume.density, volume.falloff, height,
                                         span * rate, span * length(farRay));
-    vec3 colour = min(fogColourFor(volume.gradientMode.w, volume.colour.rgb, normalize(farRay)), vec3(frame.fogColour.w));
-    outColour = vec4(colour * oneMinusExp(tau), exp(-tau));
+    outColour = fogInScatterTransmittance(volume.colourMode, volume.colour, normalize(farRay), tau);
 }
 #endif

@@ -23,19 +23,18 @@ void main() {
     float tIn, tOut;
     if (!clipFragmentRay(eye, farRay, tIn, tOut)) discard;
 
-    vec3 centre = volume.positionOffset.xyz;
-    vec3 g = volume.gradientMode.xyz;
-    float b = volume.objectFromWorld1.w;
-    float c = volume.objectFromWorld2.w;
+    vec3 centre = volume.position;
+    vec3 g = volume.gradientDirection;
+    float b = volume.density;
+    float c = volume.falloff;
     float dt = (tOut - tIn) / float(kSteps);
     float sum = 0.0;
     for (int i = 0; i < kSteps; ++i) {
         vec3 p = eye + (tIn + (float(i) + 0.5) * dt) * farRay;
-        float height = dot(p - centre, g) - volume.positionOffset.w;
+        float height = dot(p - centre, g) - volume.gradientOffset;
         sum += b * exp(min(-c * height, 80.0));
     }
     float tau = min(sum * dt * length(farRay), kMaxOpticalDepth);
-    vec3 colour = min(fogColourFor(volume.gradientMode.w, volume.colour.rgb, normalize(farRay)), vec3(frame.fogColour.w));
-    outColour = vec4(colour * oneMinusExp(tau), exp(-tau));
+    outColour = fogInScatterTransmittance(volume.colourMode, volume.colour, normalize(farRay), tau);
 }
 #endif

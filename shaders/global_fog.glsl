@@ -26,9 +26,7 @@ layout(location = 0) out vec4 outColour;
 void main() {
     float depth01 = texelFetch(uLinearDepth, ivec2(gl_FragCoord.xy), 0).r;
     vec3 d = depth01 * vFarRay;  // eye -> scene point [m]
-    float tau = exponentialOpticalDepth(frame.fogParams.x, frame.fogParams.y,
-                                        frame.eyeFar.y - frame.fogParams.z, d.y, length(d));
-    vec3 colour = min(fogColourFor(frame.fogParams.w, frame.fogColour.rgb, normalize(vFarRay)), vec3(frame.fogColour.w));
-    outColour = vec4(colour * oneMinusExp(tau), exp(-tau));
+    float tau = globalFogOpticalDepth(d);
+    outColour = fogInScatterTransmittance(frame.fogColourMode, frame.fogColour, normalize(vFarRay), tau);
 }
 #endif

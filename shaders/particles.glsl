@@ -52,23 +52,15 @@ void main() {
     vec3 world = aCentreRadius.xyz + aCentreRadius.w * (corner.x * right + corner.y * up);
     vCorner = corner;
     vWorld = world;
-    vSpriteDepth = dot(aCentreRadius.xyz - frame.eyeFar.xyz, frame.forwardNear.xyz);
+    vSpriteDepth = dot(aCentreRadius.xyz - frame.eye, frame.forward);
     vAlbedoOpacity = aAlbedoOpacity;
     vEmissionFade = aEmissionFade;
     vLocalFog = aLocalFog;
-    vec3 d = world - frame.eyeFar.xyz;
-    float len = length(d);
-    float tau = exponentialOpticalDepth(frame.fogParams.x, frame.fogParams.y,
-                                        frame.eyeFar.y - frame.fogParams.z, d.y, len);
-    vGlobalTau = tau;
+    vGlobalTau = globalFogOpticalDepth(world - frame.eye);
     gl_Position = frame.clipFromWorld * vec4(world, 1.0);
 }
 #else
-struct EmitterGpu {
-    vec4 positionIntensity;
-    vec4 colourAttenuation;
-};
-layout(std430, binding = 2) readonly buffer EmitterBlock { EmitterGpu emitters[]; };
+#include "common/emitters.glsl"
 layout(binding = 4) uniform sampler2D uLinearDepth;
 
 in vec2 vCorner;
@@ -84,27 +76,24 @@ void main() {
     float r2 = dot(vCorner, vCorner);
     if (!(r2 < 1.0)) discard;
     float profile = (1.0 - r2) * (1.0 - r2);
-    float sceneDepth = texelFetch(uLinearDepth, ivec2(gl_FragCoord.xy), 0).r * frame.eyeFar.w;
+    float sceneDepth = texelFetch(uLinearDepth, ivec2(gl_FragCoord.xy), 0).r * frame.farDistance;
     float fadeDistance = max(vEmissionFade.w, 1e-4);
     float fade = clamp((sceneDepth - vSpriteDepth) / fadeDistance, 0.0, 1.0) *
-                 clamp((vSpriteDepth - frame.forwardNear.w) / fadeDistance, 0.0, 1.0);
+                 clamp((vSpriteDepth - frame.nearDistance) / fadeDistance, 0.0, 1.0);
     float alpha = clamp(vAlbedoOpacity.w, 0.0, 1.0) * profile * fade;
     if (!(alpha > 0.0)) discard;
-    vec3 irradiance = frame.sunIlluminance.rgb + frame.moonIlluminance.rgb;
-    for (int k = 0; k < frame.counts.x; ++k) {
-        vec3 toLight = emitters[k].positionIntensity.xyz - vWorld;
-        irradiance += emitters[k].colourAttenuation.rgb * emitters[k].positionIntensity.w /
-                      (1.0 + max(emitters[k].colourAttenuation.w, 0.0) * dot(toLight, toLight));
+    vec3 irradiance = frame.sunIlluminance + frame.moonIlluminance;
+    for (int k = 0; k < frame.emitterCount; ++k) {
+        vec3 toLight = emitters[k].position - vWorld;
+        irradiance += emitters[k].colour * emitters[k].intensity /
+                      (1.0 + max(emitters[k].attenuation, 0.0) * dot(toLight, toLight));
     }
     vec3 albedo = clamp(vAlbedoOpacity.rgb, 0.0, 1.0);
-    vec3 radiance = albedo * irradiance / (4.0 * kPi) + albedo * frame.skyAmbient.rgb / (2.0 * kPi) +
+    vec3 radiance = albedo * irradiance / (4.0 * kPi) + albedo * frame.skyAmbient / (2.0 * kPi) +
                     max(vEmissionFade.rgb, vec3(0.0));
-    vec3 view = vWorld - frame.eyeFar.xyz;
-    vec3 fogColour = min(fogColourFor(frame.fogParams.w, frame.fogColour.rgb,
-                                      length(view) > 0.0 ? normalize(view) : frame.forwardNear.xyz),
-                         vec3(frame.fogColour.w));
-    vec3 fogged = radiance * exp(-vGlobalTau) + fogColour * oneMinusExp(vGlobalTau);
+    vec4 globalFog = globalFogTowards(vWorld - frame.eye, vGlobalTau);
+    vec3 fogged = radiance * globalFog.a + globalFog.rgb;
     fogged = fogged * vLocalFog.a + vLocalFog.rgb;
-    outColour = vec4(min(alpha * fogged, vec3(frame.fogColour.w)), alpha);
+    outColour = vec4(min(alpha * fogged, vec3(frame.radianceCap)), alpha);
 }
 #endif

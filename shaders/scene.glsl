@@ -39,10 +39,10 @@ layout(location = 1) out float outDepth01;
 
 void main() {
     Surface s = surfaceAt(vTexcoord);
-    if (object.material.w > 0.5 && object.material.w < 1.5 && s.alpha < object.material.z) discard;
+    if (object.alphaMode > 0.5 && object.alphaMode < 1.5 && s.alpha < object.alphaCutoff) discard;
     vec3 diffuse, specular;
     shadeFragment(s, vWorld, vNormal, diffuse, specular);
-    outColour = vec4(min(object.emission.rgb + diffuse + specular, vec3(frame.fogColour.w)), 1.0);
-    outDepth01 = dot(vWorld - frame.eyeFar.xyz, frame.forwardNear.xyz) / frame.eyeFar.w;
+    outColour = vec4(min(object.emission + diffuse + specular, vec3(frame.radianceCap)), 1.0);
+    outDepth01 = dot(vWorld - frame.eye, frame.forward) / frame.farDistance;
 }
 #endif

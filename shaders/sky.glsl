@@ -25,7 +25,7 @@
 //   star with probability kStarProbability, at a hashed place in the middle
 //   70 % of the cell (~8400 stars, half above the horizon), with relative flux u^kStarFluxExponent (u uniform: many
 //   faint, few bright) and a hashed tint. Each star is a Gaussian of radius
-//   sigma (0.6 pixel, at most 0.0015 rad: renderer.cpp) normalised to its flux, E_star / (2 pi sigma^2)
+//   sigma (0.6 pixel, at most 0.0015 rad: frame_block.hpp) normalised to its flux, E_star / (2 pi sigma^2)
 //   at the centre, summed over the pixel's cell and its 8 neighbours
 //   (stars within a few cells of the pole, where cells are narrow, can be cut off), and dimmed by
 //   T_zenith^X(z) with the Kasten-Young air mass X (within 2 % of the exact
@@ -48,11 +48,12 @@ layout(location = 0) out vec4 outColour;
 /// Radiance of a light's disc: the illuminance that reaches the viewer spread
 /// over the disc's solid angle 2 pi (1 - cos r) = 4 pi sin^2(r / 2). In the
 /// disc when |v - l| <= 2 sin(r / 2) (the chord: no float cancellation, unlike
-/// comparing cosines near 1); direction.w holds the chord, illuminance.w the
-/// reciprocal solid angle (both from double precision, 0 = no disc).
-vec3 lightDisc(vec3 v, vec4 direction, vec4 illuminanceGround) {
-    if (!(direction.w > 0.0) || length(v - direction.xyz) > direction.w) return vec3(0.0);
-    return illuminanceGround.rgb * illuminanceGround.w;
+/// comparing cosines near 1); the chord and the reciprocal solid angle come
+/// from double precision (frame.<light>DiscChord, <light>DiscInverseSolidAngle;
+/// 0 = no disc).
+vec3 lightDisc(vec3 v, vec3 direction, float chord, vec3 illuminanceGround, float inverseSolidAngle) {
+    if (!(chord > 0.0) || length(v - direction) > chord) return vec3(0.0);
+    return illuminanceGround * inverseSolidAngle;
 }
 
 const uint kStarColumns = 1024u;
@@ -78,10 +79,10 @@ float airMass(float mu) {
 }
 
 vec3 starRadiance(vec3 v) {
-    float illuminance = frame.starAxisX.w;
+    float illuminance = frame.starIlluminance;
     if (!(illuminance > 0.0) || v.y <= 0.0) return vec3(0.0);
-    float sigma = frame.starAxisY.w;
-    vec3 c = vec3(dot(v, frame.starAxisX.xyz), dot(v, frame.starAxisY.xyz), dot(v, frame.starPole.xyz));
+    float sigma = frame.starSigma;
+    vec3 c = vec3(dot(v, frame.starAxisX), dot(v, frame.starAxisY), dot(v, frame.starPole));
     float u = fract(atan(c.y, c.x) / kTwoPi + 1.0);
     float z = clamp(c.z, -1.0, 1.0);
     int column = int(min(u * float(kStarColumns), float(kStarColumns - 1u)));
@@ -108,7 +109,7 @@ vec3 starRadiance(vec3 v) {
             sum += weight * tint;
         }
     }
-    vec3 transmittance = pow(frame.starTransmittance.rgb, vec3(airMass(v.y)));
+    vec3 transmittance = pow(frame.starTransmittance, vec3(airMass(v.y)));
     return sum * (illuminance / (kTwoPi * sigma * sigma)) * transmittance;
 }
 
@@ -116,8 +117,10 @@ void main() {
     vec3 v = normalize(vFarRay);
     vec3 radiance = skyRadiance(v, true);
     radiance += starRadiance(v);
-    radiance += lightDisc(v, frame.sunDirection, frame.sunIlluminance);
-    radiance += lightDisc(v, frame.moonDirection, frame.moonIlluminance);
-    outColour = vec4(min(radiance, vec3(frame.fogColour.w)), 1.0);
+    radiance += lightDisc(v, frame.sunDirection, frame.sunDiscChord, frame.sunIlluminance,
+                          frame.sunDiscInverseSolidAngle);
+    radiance += lightDisc(v, frame.moonDirection, frame.moonDiscChord, frame.moonIlluminance,
+                          frame.moonDiscInverseSolidAngle);
+    outColour = vec4(min(radiance, vec3(frame.radianceCap)), 1.0);
 }
 #endif

@@ -35,11 +35,7 @@ out float vGlobalTau;  // optical depth of the global fog, eye -> vertex
 
 void main() {
     vec4 world = transformObjectVertex();
-    vec3 d = world.xyz - frame.eyeFar.xyz;  // eye -> vertex [m]
-    float len = length(d);
-    float tau = exponentialOpticalDepth(frame.fogParams.x, frame.fogParams.y,
-                                        frame.eyeFar.y - frame.fogParams.z, d.y, len);
-    vGlobalTau = tau;
+    vGlobalTau = globalFogOpticalDepth(world.xyz - frame.eye);  // eye -> vertex [m]
 }
 #else
 #include "common/sky_table.glsl"
@@ -50,8 +46,8 @@ layout(location = 0) out vec4 outColour;
 
 /// Trilinear interpolation of the corner fog at world point p.
 vec4 cornerFogAt(vec3 p) {
-    vec3 lo = object.boundsMin.xyz;
-    vec3 extent = object.boundsMax.xyz - lo;
+    vec3 lo = object.boundsMin;
+    vec3 extent = object.boundsMax - lo;
     vec3 f = vec3(0.0);
     for (int i = 0; i < 3; ++i) f[i] = extent[i] > 1e-6 ? clamp((p[i] - lo[i]) / extent[i], 0.0, 1.0) : 0.0;
     vec4 x00 = mix(object.cornerFog[0], object.cornerFog[1], f.x);
@@ -66,17 +62,13 @@ void main() {
     vec3 diffuse, specular;
     shadeFragment(s, vWorld, vNormal, diffuse, specular);
     float alpha = s.alpha;
-    vec3 surface = alpha * (object.emission.rgb + diffuse) + specular;
+    vec3 surface = alpha * (object.emission + diffuse) + specular;
     // Global fog: the optical depth interpolated from the vertices, the
     // colour with the per-pixel phase functions (as global_fog.glsl).
-    vec3 view = vWorld - frame.eyeFar.xyz;
-    vec3 fogColour = min(fogColourFor(frame.fogParams.w, frame.fogColour.rgb,
-                                      length(view) > 0.0 ? normalize(view) : frame.forwardNear.xyz),
-                         vec3(frame.fogColour.w));
-    float globalT = exp(-vGlobalTau);
-    vec3 fogged = surface * globalT + alpha * fogColour * oneMinusExp(vGlobalTau);
+    vec4 globalFog = globalFogTowards(vWorld - frame.eye, vGlobalTau);
+    vec3 fogged = surface * globalFog.a + alpha * globalFog.rgb;
     vec4 local = cornerFogAt(vWorld);
     fogged = fogged * local.a + alpha * local.rgb;
-    outColour = vec4(min(fogged, vec3(frame.fogColour.w)), alpha);
+    outColour = vec4(min(fogged, vec3(frame.radianceCap)), alpha);
 }
 #endif

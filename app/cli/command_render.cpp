@@ -279,7 +279,7 @@ int runRender(const RenderOptions& options) {
     frame.height = height;
     frame.precision =
         options.floatTarget ? renderer::ColourPrecision::Float : renderer::ColourPrecision::Half;
-    renderer.render(camera, renderer::atmosphereFrameFromState(state), frame);
+    renderer.render(camera, state, frame);
     const renderer::Image image = renderer.readColour();
     const double renderMs = millisecondsSince(renderStart);
 

@@ -113,8 +113,6 @@ private:
     // --- editor_viewport.cpp -------------------------------------------------
     void drawViewport();
     void renderViewport();
-    /// The frame of the current state, with the View menu's stars switch applied.
-    renderer::AtmosphereFrame viewportAtmosphere() const;
     void ensureDisplayTexture(int width, int height);
     void viewportInteraction(bool hovered, glm::dvec2 mouse, glm::dvec2 origin);
     bool gizmoTransformOfSelection(GizmoTransform& out) const;

@@ -29,12 +29,6 @@ renderer::CameraFrame Editor::viewportCameraFrame() const {
     return camera_.cameraFrame(aspect);
 }
 
-renderer::AtmosphereFrame Editor::viewportAtmosphere() const {
-    renderer::AtmosphereFrame air = renderer::atmosphereFrameFromState(state_);
-    if (!showStars_) air.starIlluminance = 0.0;
-    return air;
-}
-
 void Editor::rebuildDisplay() {
     renderer::DisplayDesc desc;
     desc.display = displayName_;
@@ -98,8 +92,8 @@ void Editor::renderViewport() {
     // --bench: every 10th frame also measures the passes (glFinish around each).
     const bool timed = options_.benchFrames > 0 && frameIndex_ >= 3 && frameIndex_ % 10 == 0;
     frame.gpuTimers = timed;
-    renderer_->render(camera_.camera(viewportSize_.x / viewportSize_.y),
-                      viewportAtmosphere(), frame);
+    frame.stars = showStars_;  // View > Stars
+    renderer_->render(camera_.camera(viewportSize_.x / viewportSize_.y), state_, frame);
     if (timed && renderer_->stats().timed) benchPasses_.push_back(renderer_->stats().wallMilliseconds);
     ensureDisplayTexture(width, height);
     display_->applyGpu(renderer_->colourTexture(), displayTexture_, width, height);
@@ -339,8 +333,8 @@ bool Editor::screenshot(const std::string& path, std::string& error) {
     frame.width = width;
     frame.height = height;
     frame.passes = passes_;
-    renderer_->render(camera_.camera(double(width) / double(height)),
-                      viewportAtmosphere(), frame);
+    frame.stars = showStars_;  // View > Stars
+    renderer_->render(camera_.camera(double(width) / double(height)), state_, frame);
     const renderer::Image image = renderer_->readColour();
     renderWidth_ = 0;  // the next frame renders the scaled view again
     const bool ok = extension == ".exr" ? renderer::writeExr(image, path, error)

@@ -13,76 +13,140 @@ struct alignas(16) Vec4 {
 struct alignas(16) Mat4 {
     float m[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};  ///< column-major
 };
-struct alignas(16) IVec4 {
-    std::int32_t x = 0, y = 0, z = 0, w = 0;
-};
 
-/// shaders/common/frame.glsl, FrameBlock (binding 0).
+/// Three floats, for a std140 / std430 vec3 that a scalar completes to 16
+/// bytes (the member before it keeps it on a 16-byte boundary).
+struct Vec3 {
+    float x = 0.0f, y = 0.0f, z = 0.0f;
+};
+static_assert(sizeof(Vec3) == 12);
+
+/// shaders/common/frame.glsl, FrameBlock (binding 0): the per-frame
+/// uniforms of every pass (units and meanings there); built by
+/// makeFrameBlock (frame_block.hpp).
 struct FrameBlock {
     Mat4 clipFromWorld;
-    Vec4 eyeFar;
-    Vec4 forwardNear;
+    Vec3 eye;  ///< [m]
+    float farDistance = 0.0f;
+    Vec3 forward;
+    float nearDistance = 0.0f;
     Vec4 farCornerRays[4];
-    Vec4 viewport;
-    Vec4 sunDirection;
-    Vec4 sunIlluminanceSpace;
-    Vec4 sunIlluminance;
-    Vec4 moonDirection;
-    Vec4 moonIlluminanceSpace;
-    Vec4 moonIlluminance;
-    Vec4 sunHorizonRayleigh;
-    Vec4 sunHorizonMie;
-    Vec4 moonHorizonRayleigh;
-    Vec4 moonHorizonMie;
-    Vec4 skyAmbient;
-    Vec4 fogParams;
-    Vec4 fogColour;
-    Vec4 skyTableMapping;
-    IVec4 counts;
-    Vec4 starAxisX;          ///< w: brightest star's illuminance (0: no stars)
-    Vec4 starAxisY;          ///< w: Gaussian radius of a star [rad]
-    Vec4 starPole;
-    Vec4 starTransmittance;  ///< rgb: zenith transmittance
+    float viewportSize[2] = {};   ///< [px]
+    float viewportTexel[2] = {};  ///< 1 / viewportSize
+    Vec3 sunDirection;
+    float sunDiscChord = 0.0f;  ///< 2 sin(r/2), 0 = no disc
+    Vec3 sunIlluminanceSpace;
+    float padSun = 0.0f;
+    Vec3 sunIlluminance;
+    float sunDiscInverseSolidAngle = 0.0f;  ///< [1/sr]
+    Vec3 moonDirection;
+    float moonDiscChord = 0.0f;
+    Vec3 moonIlluminanceSpace;
+    float padMoon = 0.0f;
+    Vec3 moonIlluminance;
+    float moonDiscInverseSolidAngle = 0.0f;
+    Vec3 sunHorizonRayleigh;
+    float mieAnisotropy = 0.0f;
+    Vec3 sunHorizonMie;
+    float padSunMie = 0.0f;
+    Vec3 moonHorizonRayleigh;
+    float padMoonRayleigh = 0.0f;
+    Vec3 moonHorizonMie;
+    float padMoonMie = 0.0f;
+    Vec3 skyAmbient;
+    float padAmbient = 0.0f;
+    float fogDensity = 0.0f;     ///< [1/m]
+    float fogFalloff = 0.0f;     ///< [1/m]
+    float fogBaseHeight = 0.0f;  ///< [m]
+    float fogColourMode = 0.0f;  ///< 0 sky, 1 tinted, 2 custom
+    Vec3 fogColour;
+    float radianceCap = 0.0f;
+    float sunTableAzimuth = 0.0f;   ///< [rad]
+    float moonTableAzimuth = 0.0f;  ///< [rad]
+    float sunTableColumns = 0.0f;
+    float sunTableRows = 0.0f;
+    std::int32_t emitterCount = 0;
+    std::int32_t moonTableColumns = 0;
+    std::int32_t moonTableRows = 0;
+    std::int32_t padCounts = 0;
+    Vec3 starAxisX;
+    float starIlluminance = 0.0f;  ///< 0: no stars
+    Vec3 starAxisY;
+    float starSigma = 0.0f;  ///< Gaussian radius of a star [rad]
+    Vec3 starPole;
+    float padPole = 0.0f;
+    Vec3 starTransmittance;
+    float padStarTransmittance = 0.0f;
 };
 static_assert(offsetof(FrameBlock, clipFromWorld) == 0);
-static_assert(offsetof(FrameBlock, eyeFar) == 64);
-static_assert(offsetof(FrameBlock, forwardNear) == 80);
+static_assert(offsetof(FrameBlock, eye) == 64);
+static_assert(offsetof(FrameBlock, farDistance) == 76);
+static_assert(offsetof(FrameBlock, forward) == 80);
+static_assert(offsetof(FrameBlock, nearDistance) == 92);
 static_assert(offsetof(FrameBlock, farCornerRays) == 96);
-static_assert(offsetof(FrameBlock, viewport) == 160);
+static_assert(offsetof(FrameBlock, viewportSize) == 160);
+static_assert(offsetof(FrameBlock, viewportTexel) == 168);
 static_assert(offsetof(FrameBlock, sunDirection) == 176);
+static_assert(offsetof(FrameBlock, sunDiscChord) == 188);
 static_assert(offsetof(FrameBlock, sunIlluminanceSpace) == 192);
 static_assert(offsetof(FrameBlock, sunIlluminance) == 208);
+static_assert(offsetof(FrameBlock, sunDiscInverseSolidAngle) == 220);
 static_assert(offsetof(FrameBlock, moonDirection) == 224);
+static_assert(offsetof(FrameBlock, moonDiscChord) == 236);
 static_assert(offsetof(FrameBlock, moonIlluminanceSpace) == 240);
 static_assert(offsetof(FrameBlock, moonIlluminance) == 256);
+static_assert(offsetof(FrameBlock, moonDiscInverseSolidAngle) == 268);
 static_assert(offsetof(FrameBlock, sunHorizonRayleigh) == 272);
+static_assert(offsetof(FrameBlock, mieAnisotropy) == 284);
 static_assert(offsetof(FrameBlock, sunHorizonMie) == 288);
 static_assert(offsetof(FrameBlock, moonHorizonRayleigh) == 304);
 static_assert(offsetof(FrameBlock, moonHorizonMie) == 320);
 static_assert(offsetof(FrameBlock, skyAmbient) == 336);
-static_assert(offsetof(FrameBlock, fogParams) == 352);
+static_assert(offsetof(FrameBlock, fogDensity) == 352);
+static_assert(offsetof(FrameBlock, fogFalloff) == 356);
+static_assert(offsetof(FrameBlock, fogBaseHeight) == 360);
+static_assert(offsetof(FrameBlock, fogColourMode) == 364);
 static_assert(offsetof(FrameBlock, fogColour) == 368);
-static_assert(offsetof(FrameBlock, skyTableMapping) == 384);
-static_assert(offsetof(FrameBlock, counts) == 400);
+static_assert(offsetof(FrameBlock, radianceCap) == 380);
+static_assert(offsetof(FrameBlock, sunTableAzimuth) == 384);
+static_assert(offsetof(FrameBlock, sunTableRows) == 396);
+static_assert(offsetof(FrameBlock, emitterCount) == 400);
+static_assert(offsetof(FrameBlock, moonTableColumns) == 404);
+static_assert(offsetof(FrameBlock, moonTableRows) == 408);
 static_assert(offsetof(FrameBlock, starAxisX) == 416);
+static_assert(offsetof(FrameBlock, starIlluminance) == 428);
+static_assert(offsetof(FrameBlock, starAxisY) == 432);
+static_assert(offsetof(FrameBlock, starSigma) == 444);
+static_assert(offsetof(FrameBlock, starPole) == 448);
 static_assert(offsetof(FrameBlock, starTransmittance) == 464);
 static_assert(sizeof(FrameBlock) == 480);
 
-/// shaders/fog_volume.glsl, VolumeBlock (binding 1).
+/// shaders/common/volume.glsl, VolumeBlock (binding 1): one fog volume.
 struct VolumeBlock {
-    Mat4 worldFromObject;
-    Vec4 objectFromWorld0;  ///< w: shape (0 box, 1 ellipsoid)
-    Vec4 objectFromWorld1;  ///< w: density [1/m]
-    Vec4 objectFromWorld2;  ///< w: falloff [1/m]
-    Vec4 positionOffset;    ///< w: gradient offset [m]
-    Vec4 gradientMode;      ///< w: colour mode
-    Vec4 colour;
+    Mat4 worldFromObject;      ///< the hull: position + rotation * halfExtents
+    Vec3 objectFromWorldRow0;  ///< rows of S^-1 R^T
+    float shape = 0.0f;        ///< 0 box, 1 ellipsoid
+    Vec3 objectFromWorldRow1;
+    float density = 0.0f;  ///< b_v [1/m]
+    Vec3 objectFromWorldRow2;
+    float falloff = 0.0f;         ///< c_v [1/m]
+    Vec3 position;                ///< centre [m]
+    float gradientOffset = 0.0f;  ///< [m]
+    Vec3 gradientDirection;       ///< unit
+    float colourMode = 0.0f;      ///< 0 sky, 1 tinted, 2 custom
+    Vec3 colour;
+    float padColour = 0.0f;
 };
-static_assert(offsetof(VolumeBlock, objectFromWorld0) == 64);
-static_assert(offsetof(VolumeBlock, objectFromWorld1) == 80);
-static_assert(offsetof(VolumeBlock, objectFromWorld2) == 96);
-static_assert(offsetof(VolumeBlock, positionOffset) == 112);
-static_assert(offsetof(VolumeBlock, gradientMode) == 128);
+static_assert(offsetof(VolumeBlock, objectFromWorldRow0) == 64);
+static_assert(offsetof(VolumeBlock, shape) == 76);
+static_assert(offsetof(VolumeBlock, objectFromWorldRow1) == 80);
+static_assert(offsetof(VolumeBlock, density) == 92);
+static_assert(offsetof(VolumeBlock, objectFromWorldRow2) == 96);
+static_assert(offsetof(VolumeBlock, falloff) == 108);
+static_assert(offsetof(VolumeBlock, position) == 112);
+static_assert(offsetof(VolumeBlock, gradientOffset) == 124);
+static_assert(offsetof(VolumeBlock, gradientDirection) == 128);
+static_assert(offsetof(VolumeBlock, colourMode) == 140);
 static_assert(offsetof(VolumeBlock, colour) == 144);
 static_assert(sizeof(VolumeBlock) == 160);
 
@@ -91,19 +155,32 @@ static_assert(sizeof(VolumeBlock) == 160);
 struct ObjectBlock {
     Mat4 worldFromObject;
     Mat4 normalFromObject;
-    Vec4 albedo;     ///< w: opacity
-    Vec4 emission;   ///< w: specular factor
-    Vec4 material;   ///< metallic, roughness, alpha cutoff, alpha mode (0, 1, 2)
-    Vec4 flags;      ///< x: base-colour texture used
-    Vec4 boundsMin;  ///< world bounds [m]
-    Vec4 boundsMax;
+    Vec3 albedo;
+    float opacity = 1.0f;
+    Vec3 emission;
+    float specularFactor = 1.0f;
+    float metallic = 0.0f;
+    float roughness = 1.0f;
+    float alphaCutoff = 0.5f;
+    float alphaMode = 0.0f;           ///< 0 opaque, 1 mask, 2 blend
+    float baseColourTextured = 0.0f;  ///< 1 when the base-colour texture (unit 5) is used
+    float padFlags[3] = {};
+    Vec3 boundsMin;  ///< world bounds [m]
+    float padBoundsMin = 0.0f;
+    Vec3 boundsMax;
+    float padBoundsMax = 0.0f;
     Vec4 cornerFog[8];  ///< rgb: in-scatter S', a: transmittance T'
 };
 static_assert(offsetof(ObjectBlock, normalFromObject) == 64);
 static_assert(offsetof(ObjectBlock, albedo) == 128);
+static_assert(offsetof(ObjectBlock, opacity) == 140);
 static_assert(offsetof(ObjectBlock, emission) == 144);
-static_assert(offsetof(ObjectBlock, material) == 160);
-static_assert(offsetof(ObjectBlock, flags) == 176);
+static_assert(offsetof(ObjectBlock, specularFactor) == 156);
+static_assert(offsetof(ObjectBlock, metallic) == 160);
+static_assert(offsetof(ObjectBlock, roughness) == 164);
+static_assert(offsetof(ObjectBlock, alphaCutoff) == 168);
+static_assert(offsetof(ObjectBlock, alphaMode) == 172);
+static_assert(offsetof(ObjectBlock, baseColourTextured) == 176);
 static_assert(offsetof(ObjectBlock, boundsMin) == 192);
 static_assert(offsetof(ObjectBlock, boundsMax) == 208);
 static_assert(offsetof(ObjectBlock, cornerFog) == 224);
@@ -120,10 +197,14 @@ static_assert(sizeof(SpriteInstance) == 64);
 
 /// shaders/emitters.glsl and scene.glsl, EmitterGpu (std430, binding 2).
 struct EmitterGpu {
-    Vec4 positionIntensity;
-    Vec4 colourAttenuation;
+    Vec3 position;           ///< [m]
+    float intensity = 0.0f;  ///< i [1/m], flash applied
+    Vec3 colour;
+    float attenuation = 0.0f;  ///< a [1/m^2]
 };
-static_assert(offsetof(EmitterGpu, colourAttenuation) == 16);
+static_assert(offsetof(EmitterGpu, intensity) == 12);
+static_assert(offsetof(EmitterGpu, colour) == 16);
+static_assert(offsetof(EmitterGpu, attenuation) == 28);
 static_assert(sizeof(EmitterGpu) == 32);
 
 /// Binding points and texture units shared with the shaders.

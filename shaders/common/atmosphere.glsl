@@ -78,13 +78,13 @@ float exponentialOpticalDepth(float b, float c, float height, float rise, float 
 /// The sky's fog colour in direction v (unit): sum over sun and moon of
 /// E (P_R(mu) I_R,horizon + P_M(mu, g) I_M,horizon) (FogScene::fogColour).
 vec3 skyFogColour(vec3 v) {
-    float g = frame.sunHorizonRayleigh.w;
-    float muSun = dot(v, frame.sunDirection.xyz);
-    float muMoon = dot(v, frame.moonDirection.xyz);
-    return frame.sunIlluminanceSpace.rgb * (rayleighPhase(muSun) * frame.sunHorizonRayleigh.rgb +
-                                            miePhase(muSun, g) * frame.sunHorizonMie.rgb) +
-           frame.moonIlluminanceSpace.rgb * (rayleighPhase(muMoon) * frame.moonHorizonRayleigh.rgb +
-                                             miePhase(muMoon, g) * frame.moonHorizonMie.rgb);
+    float g = frame.mieAnisotropy;
+    float muSun = dot(v, frame.sunDirection);
+    float muMoon = dot(v, frame.moonDirection);
+    return frame.sunIlluminanceSpace * (rayleighPhase(muSun) * frame.sunHorizonRayleigh +
+                                            miePhase(muSun, g) * frame.sunHorizonMie) +
+           frame.moonIlluminanceSpace * (rayleighPhase(muMoon) * frame.moonHorizonRayleigh +
+                                             miePhase(muMoon, g) * frame.moonHorizonMie);
 }
 
 /// Colour of fog in a colour mode (0 sky, 1 tinted, 2 custom; FogColourMode).
@@ -92,6 +92,31 @@ vec3 fogColourFor(float mode, vec3 colour, vec3 v) {
     if (mode > 1.5) return colour;
     vec3 sky = skyFogColour(v);
     return mode > 0.5 ? colour * sky : sky;
+}
+
+/// The fog between the eye and a point, ready to composite (the contract of
+/// fog_query.hpp): rgb = S = L_fog(v) (1 - T), with the fog colour of
+/// `colourMode` (fogColourFor) capped at frame.radianceCap, a = T = exp(-tau).
+/// Radiance L behind the fog becomes L T + S; a fog pass outputs it as is,
+/// blended with glBlendFunc(GL_ONE, GL_SRC_ALPHA).
+vec4 fogInScatterTransmittance(float colourMode, vec3 colour, vec3 v, float tau) {
+    vec3 fogColour = min(fogColourFor(colourMode, colour, v), vec3(frame.radianceCap));
+    return vec4(fogColour * oneMinusExp(tau), exp(-tau));
+}
+
+/// Optical depth of the global height fog from the eye along d (eye ->
+/// point [m]).
+float globalFogOpticalDepth(vec3 d) {
+    return exponentialOpticalDepth(frame.fogDensity, frame.fogFalloff, frame.eye.y - frame.fogBaseHeight, d.y,
+                                   length(d));
+}
+
+/// The global fog (fogInScatterTransmittance) from the eye to a point,
+/// `view` = point - eye, optical depth tau; at the eye itself the colour is
+/// taken along the view direction.
+vec4 globalFogTowards(vec3 view, float tau) {
+    return fogInScatterTransmittance(frame.fogColourMode, frame.fogColour,
+                                     length(view) > 0.0 ? normalize(view) : frame.forward, tau);
 }
 
 #endif

@@ -3,38 +3,39 @@
 // Atmospheric Effects in Games", section 6.3: one multiply-add per pixel).
 //
 // Inputs (std140, binding 0; mirrored by FrameBlock in
-// renderer/src/gpu_types.hpp with static_asserted offsets):
+// renderer/src/gpu_types.hpp with static_asserted offsets, filled by
+// makeFrameBlock in renderer/src/frame_block.cpp):
 //   clipFromWorld       world [m] -> clip space
-//   eyeFar              xyz: camera position [m], w: far distance [m]
-//   forwardNear         xyz: unit view direction, w: near distance [m]
-//   farCornerRays[4]    eye -> far-plane corner [m], world space:
+//   eye, farDistance    camera position [m], far distance [m]
+//   forward, nearDistance  unit view direction, near distance [m]
+//   farCornerRays[4]    xyz: eye -> far-plane corner [m], world space:
 //                       bottom-left, bottom-right, top-left, top-right
-//   viewport            width, height [px], 1/width, 1/height
-//   lights              sun / moon: direction (unit, towards the light; w:
-//                       the disc's chord 2 sin(r/2), 0 = no disc),
-//                       illuminance above the atmosphere E (rgb),
-//                       illuminance reaching the ground (rgb; w: 1 / the
-//                       disc's solid angle [1/sr]), phase-less
-//                       horizon averages I_R, I_M (w of sunHorizonRayleigh:
-//                       Mie anisotropy g), table mapping (light azimuth [rad]
-//                       and table size)
-//   skyAmbient          rgb: cosine-weighted sky irradiance on an upward
-//                       surface (E_sky, same unit as E)
-//   fogParams           x: density b [1/m], y: falloff c [1/m], z: base
-//                       height h0 [m], w: colour mode (0 sky, 1 tinted, 2 custom)
-//   fogColour           rgb: tint or radiance of the global fog; w: the
-//                       radiance cap of every pass output (3e4 for an RGBA16F
+//   viewportSize        width, height [px]; viewportTexel: 1 / viewportSize
+//   sun / moon          <light>Direction (unit, towards the light),
+//                       <light>DiscChord (the disc's chord 2 sin(r/2), 0 = no
+//                       disc), <light>IlluminanceSpace (illuminance above the
+//                       atmosphere E, rgb), <light>Illuminance (reaching the
+//                       ground, rgb), <light>DiscInverseSolidAngle (1 / the
+//                       disc's solid angle [1/sr]), <light>HorizonRayleigh /
+//                       Mie (phase-less horizon averages I_R, I_M),
+//                       <light>TableAzimuth (the table's light azimuth [rad])
+//   mieAnisotropy       Cornette-Shanks g of the sky and fog colour
+//   skyAmbient          cosine-weighted sky irradiance on an upward surface
+//                       (E_sky, same unit as E)
+//   fogDensity          global fog b [1/m]; fogFalloff c [1/m];
+//   fogBaseHeight       h0 [m]; fogColourMode 0 sky, 1 tinted, 2 custom
+//   fogColour           tint or radiance of the global fog
+//   radianceCap         the cap of every pass output (3e4 for an RGBA16F
 //                       target, so sky/scene plus emitters stay below the half
 //                       maximum 65504 and no pixel becomes Inf; 1e30 for RGBA32F).
 //                       The fog passes only interpolate between the target and
 //                       capped colours, so they stay below the cap too.
-//   skyTableMapping     x, y: the sun's / moon's table light azimuth [rad];
-//                       z, w: the sun table's columns and rows
-//   counts              x: emitter count; y, z: the moon table's columns, rows
-//   starAxisX, starAxisY, starPole   the celestial frame (world, unit);
-//                       starAxisX.w: the brightest star's illuminance (0 = no
-//                       stars), starAxisY.w: a star's Gaussian radius [rad]
-//   starTransmittance   rgb: transmittance viewer -> space at the zenith
+//   sunTableColumns, sunTableRows, moonTableColumns, moonTableRows  table sizes
+//   emitterCount        emitters in the EmitterBlock (common/emitters.glsl)
+//   starAxisX, starAxisY, starPole   the celestial frame (world, unit)
+//   starIlluminance     the brightest star's illuminance (0 = no stars)
+//   starSigma           a star's Gaussian radius [rad]
+//   starTransmittance   transmittance viewer -> space at the zenith (rgb)
 //
 // Linear depth (the frame's R32F texture): normalised linear eye depth,
 // z_view / far, 0 at the camera and 1 at the far plane (sky pixels hold 1),
@@ -46,29 +47,57 @@
 
 layout(std140, binding = 0) uniform FrameBlock {
     mat4 clipFromWorld;
-    vec4 eyeFar;
-    vec4 forwardNear;
+    vec3 eye;
+    float farDistance;
+    vec3 forward;
+    float nearDistance;
     vec4 farCornerRays[4];
-    vec4 viewport;
-    vec4 sunDirection;
-    vec4 sunIlluminanceSpace;
-    vec4 sunIlluminance;
-    vec4 moonDirection;
-    vec4 moonIlluminanceSpace;
-    vec4 moonIlluminance;
-    vec4 sunHorizonRayleigh;
-    vec4 sunHorizonMie;
-    vec4 moonHorizonRayleigh;
-    vec4 moonHorizonMie;
-    vec4 skyAmbient;
-    vec4 fogParams;
-    vec4 fogColour;
-    vec4 skyTableMapping;  // x, y: sun / moon light azimuth [rad]; z, w: sun table columns, rows
-    ivec4 counts;          // x: emitters; y, z: moon table columns, rows
-    vec4 starAxisX;
-    vec4 starAxisY;
-    vec4 starPole;
-    vec4 starTransmittance;
+    vec2 viewportSize;
+    vec2 viewportTexel;
+    vec3 sunDirection;
+    float sunDiscChord;
+    vec3 sunIlluminanceSpace;
+    float padSun;
+    vec3 sunIlluminance;
+    float sunDiscInverseSolidAngle;
+    vec3 moonDirection;
+    float moonDiscChord;
+    vec3 moonIlluminanceSpace;
+    float padMoon;
+    vec3 moonIlluminance;
+    float moonDiscInverseSolidAngle;
+    vec3 sunHorizonRayleigh;
+    float mieAnisotropy;
+    vec3 sunHorizonMie;
+    float padSunMie;
+    vec3 moonHorizonRayleigh;
+    float padMoonRayleigh;
+    vec3 moonHorizonMie;
+    float padMoonMie;
+    vec3 skyAmbient;
+    float padAmbient;
+    float fogDensity;
+    float fogFalloff;
+    float fogBaseHeight;
+    float fogColourMode;
+    vec3 fogColour;
+    float radianceCap;
+    float sunTableAzimuth;
+    float moonTableAzimuth;
+    float sunTableColumns;
+    float sunTableRows;
+    int emitterCount;
+    int moonTableColumns;
+    int moonTableRows;
+    int padCounts;
+    vec3 starAxisX;
+    float starIlluminance;
+    vec3 starAxisY;
+    float starSigma;
+    vec3 starPole;
+    float padPole;
+    vec3 starTransmittance;
+    float padStarTransmittance;
 } frame;
 
 // Ray from the eye to the far plane at normalised device coordinates ndc
@@ -81,9 +110,9 @@ vec3 farRayAtNdc(vec2 ndc) {
 }
 
 // The same ray for a fragment (pixel centre) of the frame.
-vec3 farRayAtFragment(vec2 fragCoord) { return farRayAtNdc(fragCoord * frame.viewport.zw * 2.0 - 1.0); }
+vec3 farRayAtFragment(vec2 fragCoord) { return farRayAtNdc(fragCoord * frame.viewportTexel * 2.0 - 1.0); }
 
 // World position [m] of a pixel from its normalised linear depth.
-vec3 worldFromDepth(float depth01, vec3 farRay) { return frame.eyeFar.xyz + depth01 * farRay; }
+vec3 worldFromDepth(float depth01, vec3 farRay) { return frame.eye + depth01 * farRay; }
 
 #endif

@@ -5,14 +5,14 @@
 //
 //   worldFromObject     object -> world [m]
 //   normalFromObject    columns xyz: inverse transpose of the 3x3 part
-//   albedo              rgb: base-colour factor (linear, 0..1; glTF
-//                       baseColorFactor), a: opacity (baseColorFactor[3])
-//   emission            rgb: emitted radiance; w: specular factor s (0..1,
+//   albedo              base-colour factor (linear, 0..1; glTF
+//                       baseColorFactor); opacity: baseColorFactor[3]
+//   emission            emitted radiance; specularFactor: s (0..1,
 //                       KHR_materials_specular: F0 = 0.04 s for non-metals)
-//   material            x: metallic, y: perceptual roughness (0..1), z: alpha
-//                       cutoff, w: alpha mode (0 opaque, 1 mask, 2 blend)
-//   flags               x: 1 when the base-colour texture (unit 5) is used
-//   boundsMin/Max       xyz: the mesh's world bounds [m] (transparent pass)
+//   metallic, roughness (perceptual), 0..1; alphaCutoff; alphaMode (0
+//                       opaque, 1 mask, 2 blend)
+//   baseColourTextured  1 when the base-colour texture (unit 5) is used
+//   boundsMin/Max       the mesh's world bounds [m] (transparent pass)
 //   cornerFog[8]        transparent pass: fog of the volumes and emitters
 //                       from the eye to each corner of the world bounds
 //                       (rgb: in-scatter S, a: transmittance T; corner k at
@@ -23,12 +23,22 @@
 layout(std140, binding = 3) uniform ObjectBlock {
     mat4 worldFromObject;
     mat4 normalFromObject;
-    vec4 albedo;
-    vec4 emission;
-    vec4 material;
-    vec4 flags;
-    vec4 boundsMin;
-    vec4 boundsMax;
+    vec3 albedo;
+    float opacity;
+    vec3 emission;
+    float specularFactor;
+    float metallic;
+    float roughness;
+    float alphaCutoff;
+    float alphaMode;
+    float baseColourTextured;
+    float padFlags0;
+    float padFlags1;
+    float padFlags2;
+    vec3 boundsMin;
+    float padBoundsMin;
+    vec3 boundsMax;
+    float padBoundsMax;
     vec4 cornerFog[8];
 } object;
 

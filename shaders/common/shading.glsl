@@ -27,11 +27,7 @@
 #ifndef AERIAL_SHADING_GLSL
 #define AERIAL_SHADING_GLSL
 
-struct EmitterGpu {
-    vec4 positionIntensity;  // xyz [m], w: i
-    vec4 colourAttenuation;  // rgb, w: a [1/m^2]
-};
-layout(std430, binding = 2) readonly buffer EmitterBlock { EmitterGpu emitters[]; };
+#include "common/emitters.glsl"
 layout(binding = 5) uniform sampler2D uBaseColour;  // sRGB8_A8: decoded to linear by the sampler
 
 struct Surface {
@@ -44,14 +40,14 @@ struct Surface {
 
 /// The material at texture coordinate uv (glTF TEXCOORD_0).
 Surface surfaceAt(vec2 uv) {
-    vec4 base = object.albedo;
-    if (object.flags.x > 0.5) base *= texture(uBaseColour, uv);
+    vec4 base = vec4(object.albedo, object.opacity);
+    if (object.baseColourTextured > 0.5) base *= texture(uBaseColour, uv);
     Surface s;
     s.base = clamp(base.rgb, 0.0, 1.0);
     s.alpha = clamp(base.a, 0.0, 1.0);
-    s.metallic = clamp(object.material.x, 0.0, 1.0);
-    s.roughness = clamp(object.material.y, 0.045, 1.0);
-    s.specular = clamp(object.emission.w, 0.0, 1.0);
+    s.metallic = clamp(object.metallic, 0.0, 1.0);
+    s.roughness = clamp(object.roughness, 0.045, 1.0);
+    s.specular = clamp(object.specularFactor, 0.0, 1.0);
     return s;
 }
 
@@ -102,24 +98,24 @@ vec2 environmentBrdf(float roughness, float nv) {
 void shadeSurface(Surface s, vec3 p, vec3 n, vec3 v, out vec3 diffuse, out vec3 specular) {
     diffuse = vec3(0.0);
     specular = vec3(0.0);
-    addLight(s, n, v, frame.sunDirection.xyz, frame.sunIlluminance.rgb, diffuse, specular);
-    addLight(s, n, v, frame.moonDirection.xyz, frame.moonIlluminance.rgb, diffuse, specular);
-    for (int k = 0; k < frame.counts.x; ++k) {
-        vec3 toLight = emitters[k].positionIntensity.xyz - p;
+    addLight(s, n, v, frame.sunDirection, frame.sunIlluminance, diffuse, specular);
+    addLight(s, n, v, frame.moonDirection, frame.moonIlluminance, diffuse, specular);
+    for (int k = 0; k < frame.emitterCount; ++k) {
+        vec3 toLight = emitters[k].position - p;
         float r2 = dot(toLight, toLight);
         if (!(r2 > 1e-12)) continue;
-        float falloff = emitters[k].positionIntensity.w / (1.0 + max(emitters[k].colourAttenuation.w, 0.0) * r2);
-        addLight(s, n, v, toLight * inversesqrt(r2), emitters[k].colourAttenuation.rgb * falloff, diffuse,
+        float falloff = emitters[k].intensity / (1.0 + max(emitters[k].attenuation, 0.0) * r2);
+        addLight(s, n, v, toLight * inversesqrt(r2), emitters[k].colour * falloff, diffuse,
                  specular);
     }
     vec3 cdiff = s.base * (1.0 - s.metallic);
-    diffuse += cdiff / kPi * frame.skyAmbient.rgb * (0.5 + 0.5 * n.y);
+    diffuse += cdiff / kPi * frame.skyAmbient * (0.5 + 0.5 * n.y);
     float nv = clamp(dot(n, v), 1e-4, 1.0);
     vec3 f0 = mix(vec3(0.04 * s.specular), s.base, s.metallic);
     float f90 = mix(s.specular, 1.0, s.metallic);
     if (any(greaterThan(f0, vec3(0.0))) || f90 > 0.0) {
         vec3 r = reflect(-v, n);
-        vec3 diffuseSky = frame.skyAmbient.rgb * (0.5 + 0.5 * r.y) / kPi;
+        vec3 diffuseSky = frame.skyAmbient * (0.5 + 0.5 * r.y) / kPi;
         // Roughness is uniform per draw, so this branch is too (the table
         // lookups need no derivatives anyway).
         vec3 sky = s.roughness < 1.0 ? mix(skyRadiance(r, false), diffuseSky, s.roughness) : diffuseSky;
@@ -131,7 +127,7 @@ void shadeSurface(Surface s, vec3 p, vec3 n, vec3 v, out vec3 diffuse, out vec3 
 /// shadeSurface for this fragment at world point p, seen from the eye, with
 /// the interpolated vertex normal (shadingNormal).
 void shadeFragment(Surface s, vec3 p, vec3 interpolatedNormal, out vec3 diffuse, out vec3 specular) {
-    vec3 v = normalize(frame.eyeFar.xyz - p);
+    vec3 v = normalize(frame.eye - p);
     vec3 n = shadingNormal(interpolatedNormal, gl_FrontFacing, v);
     shadeSurface(s, p, n, v, diffuse, specular);
 }

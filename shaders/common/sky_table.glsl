@@ -59,17 +59,17 @@ vec3 lightSky(sampler2D rayleigh, sampler2D mie, vec3 v, vec2 angles, vec3 light
     vec2 texel = skyTableTexelAt(angles, lightAzimuth, size);
     float mu = dot(v, lightDirection);
     return illuminance * (rayleighPhase(mu) * sampleTable(rayleigh, texel, size) +
-                          miePhase(mu, frame.sunHorizonRayleigh.w) * sampleTable(mie, texel, size));
+                          miePhase(mu, frame.mieAnisotropy) * sampleTable(mie, texel, size));
 }
 
 /// Sky radiance in direction v (unit) from both tables, without the discs;
 /// `accurate` as in skyAngles.
 vec3 skyRadiance(vec3 v, bool accurate) {
     vec2 angles = skyAngles(v, accurate);
-    return lightSky(uSunRayleigh, uSunMie, v, angles, frame.sunDirection.xyz, frame.skyTableMapping.x,
-                    frame.skyTableMapping.zw, frame.sunIlluminanceSpace.rgb) +
-           lightSky(uMoonRayleigh, uMoonMie, v, angles, frame.moonDirection.xyz, frame.skyTableMapping.y,
-                    vec2(frame.counts.yz), frame.moonIlluminanceSpace.rgb);
+    return lightSky(uSunRayleigh, uSunMie, v, angles, frame.sunDirection, frame.sunTableAzimuth,
+                    vec2(frame.sunTableColumns, frame.sunTableRows), frame.sunIlluminanceSpace) +
+           lightSky(uMoonRayleigh, uMoonMie, v, angles, frame.moonDirection, frame.moonTableAzimuth,
+                    vec2(frame.moonTableColumns, frame.moonTableRows), frame.moonIlluminanceSpace);
 }
 
 #endif

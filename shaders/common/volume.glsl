@@ -8,13 +8,19 @@
 #define AERIAL_VOLUME_GLSL
 
 layout(std140, binding = 1) uniform VolumeBlock {
-    mat4 worldFromObject;
-    vec4 objectFromWorld0;
-    vec4 objectFromWorld1;
-    vec4 objectFromWorld2;
-    vec4 positionOffset;
-    vec4 gradientMode;
-    vec4 colour;
+    mat4 worldFromObject;      // the hull: position + rotation * halfExtents
+    vec3 objectFromWorldRow0;  // rows of objectFromWorld = S^-1 R^T
+    float shape;               // 0 box, 1 ellipsoid
+    vec3 objectFromWorldRow1;
+    float density;             // b_v [1/m]
+    vec3 objectFromWorldRow2;
+    float falloff;             // c_v [1/m]
+    vec3 position;             // centre [m]
+    float gradientOffset;      // [m]
+    vec3 gradientDirection;    // unit g
+    float colourMode;          // 0 sky, 1 tinted, 2 custom
+    vec3 colour;
+    float padColour;
 } volume;
 
 #ifdef AERIAL_VERTEX_SHADER
@@ -28,14 +34,14 @@ void transformHullVertex() {
 layout(binding = 4) uniform sampler2D uLinearDepth;  // normalised linear eye depth z/far
 
 vec3 toObject(vec3 w) {
-    return vec3(dot(volume.objectFromWorld0.xyz, w), dot(volume.objectFromWorld1.xyz, w),
-                dot(volume.objectFromWorld2.xyz, w));
+    return vec3(dot(volume.objectFromWorldRow0, w), dot(volume.objectFromWorldRow1, w),
+                dot(volume.objectFromWorldRow2, w));
 }
 
 /// Entry and exit parameters of o + t d against the unit cube or unit
 /// sphere (object space); tNear > tFar when missed.
 vec2 intersectUnitShape(vec3 o, vec3 d) {
-    if (volume.objectFromWorld0.w < 0.5) {
+    if (volume.shape < 0.5) {
         // Slabs |o_i + t d_i| <= 1.
         float tNear = -3.0e38;
         float tFar = 3.0e38;
@@ -69,8 +75,8 @@ vec2 intersectUnitShape(vec3 o, vec3 d) {
 bool clipFragmentRay(out vec3 eye, out vec3 farRay, out float tIn, out float tOut) {
     float depth01 = texelFetch(uLinearDepth, ivec2(gl_FragCoord.xy), 0).r;
     farRay = farRayAtFragment(gl_FragCoord.xy);
-    eye = frame.eyeFar.xyz;
-    vec2 hit = intersectUnitShape(toObject(eye - volume.positionOffset.xyz), toObject(farRay));
+    eye = frame.eye;
+    vec2 hit = intersectUnitShape(toObject(eye - volume.position), toObject(farRay));
     tIn = max(hit.x, 0.0);
     tOut = min(hit.y, depth01);
     return tIn < tOut;

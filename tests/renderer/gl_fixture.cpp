@@ -34,7 +34,18 @@ renderer::FrameDesc floatFrame() {
     f.width = kWidth;
     f.height = kHeight;
     f.precision = renderer::ColourPrecision::Float;
+    f.stars = false;
     return f;
+}
+
+LightState light(const glm::dvec3& direction, const glm::dvec3& illuminanceSpace,
+                 const glm::dvec3& illuminance) {
+    LightState l;
+    l.body.direction = direction;
+    l.body.elevation = std::asin(std::clamp(direction.y / glm::length(direction), -1.0, 1.0));
+    l.illuminanceSpace = illuminanceSpace;
+    l.illuminance = illuminance;
+    return l;
 }
 
 renderer::HeadlessContext* glContext(std::string& error) {

@@ -4,6 +4,7 @@
 // and the per-pixel comparison against the CPU fog queries.
 #pragma once
 
+#include <aerial/evaluate.hpp>
 #include <aerial/fog_query.hpp>
 #include <aerial/renderer/egl_context.hpp>
 #include <aerial/renderer/renderer.hpp>
@@ -26,8 +27,16 @@ constexpr int kHeight = 90;
 renderer::Camera makeCamera(const glm::dvec3& eye, const glm::dvec3& target, double farDistance,
                             double verticalFov = 1.0);
 
-/// A kWidth x kHeight frame in float precision, every pass on.
+/// A kWidth x kHeight frame in float precision, every pass on, no stars
+/// (the tests' states are built by hand: their sun's elevation would not
+/// match its direction).
 renderer::FrameDesc floatFrame();
+
+/// The sun or moon of a state built by hand: what the renderer reads
+/// (direction, illuminance above the atmosphere and reaching the ground),
+/// the elevation from the direction.
+LightState light(const glm::dvec3& direction, const glm::dvec3& illuminanceSpace,
+                 const glm::dvec3& illuminance);
 
 /// The process-wide headless context, created on first use and made
 /// current; null (with `error` set) when EGL cannot give one.

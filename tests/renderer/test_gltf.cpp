@@ -553,11 +553,12 @@ TEST_F(GlTest, GltfCubeLinearDepthAtCentre) {
     constexpr int kW = 64, kH = 48;
     camera.aspect = double(kW) / kH;
     renderer::FrameDesc frame;
+    frame.stars = false;  // a state built by hand
     frame.width = kW;
     frame.height = kH;
     frame.precision = renderer::ColourPrecision::Float;
     frame.passes.sky = false;
-    r.render(camera, {}, frame);
+    r.render(camera, PresetState{}, frame);
     const renderer::Image depth = r.readLinearDepth();
     ASSERT_EQ(depth.width, kW);
     const renderer::CameraFrame f = renderer::cameraFrame(camera);
@@ -600,10 +601,11 @@ TEST_F(GlTest, GltfTexturedQuadRendersItsTexelsBlended) {
     camera.farDistance = 100.0;
     constexpr int kW = 64, kH = 64;
     camera.aspect = 1.0;
-    renderer::AtmosphereFrame air;
-    air.sun = {{0.0, 0.0, 1.0}, glm::dvec3(0.0), glm::dvec3(3.14159265358979323846)};
-    air.moon.illuminance = glm::dvec3(0.0);
+    PresetState air;
+    air.sunLight = light({0.0, 0.0, 1.0}, glm::dvec3(0.0), glm::dvec3(3.14159265358979323846));
+    air.moonLight.illuminance = glm::dvec3(0.0);
     renderer::FrameDesc frame;
+    frame.stars = false;  // a state built by hand
     frame.width = kW;
     frame.height = kH;
     frame.precision = renderer::ColourPrecision::Float;

@@ -66,7 +66,7 @@ TEST_F(GlTest, LinearDepthAndWorldPositionsOfKnownPlanes) {
     r.setScene(scene);
     FrameDesc frame = floatFrame();
     frame.passes.sky = false;
-    r.render(camera, {}, frame);
+    r.render(camera, PresetState{}, frame);
     const renderer::Image depth = r.readLinearDepth();
     ASSERT_EQ(depth.width, kWidth);
     const renderer::CameraFrame f = renderer::cameraFrame(camera);
@@ -116,7 +116,7 @@ TEST_F(GlTest, RestoresTheGlStateItTouches) {
     int callerTag = 7;
     glDebugMessageCallback(callerCallback, &callerTag);
 
-    r.render(testCamera(), {}, floatFrame());
+    r.render(testCamera(), PresetState{}, floatFrame());
 
     void* callback = nullptr;
     void* userParam = nullptr;
@@ -172,10 +172,10 @@ TEST_F(GlTest, DegenerateInputsGiveFinitePixelsAndNoGlErrors) {
     camera.target = camera.eye;  // looks along -Z
     camera.verticalFov = 0.0;    // clamped
     camera.up = {0.0, 0.0, 0.0};
-    renderer::AtmosphereFrame air;
-    air.sun = {{nan, 1.0, 0.0}, {inf, 1.0, 1.0}, {1.0, nan, 1.0}};
-    air.fog = {inf, nan, 1e300};
-    air.mieAnisotropy = nan;
+    PresetState air;
+    air.sunLight = light({nan, 1.0, 0.0}, {inf, 1.0, 1.0}, {1.0, nan, 1.0});
+    air.environment.fog = {inf, nan, 1e300};
+    air.environment.atmosphere.mieAnisotropy = nan;
     FogVolume v;
     v.halfExtents = {0.0, 1.0, 1.0};  // degenerate: skipped
     air.volumes.push_back(v);
@@ -222,10 +222,10 @@ TEST_F(GlTest, HotReloadKeepsTheLastGoodProgramAndReturnsTheLog) {
     renderer::SceneDesc scene;
     scene.meshes.push_back(facingPlane(camera, 200.0, glm::dvec3(0.5, 0.25, 0.125)));
     r.setScene(scene);
-    renderer::AtmosphereFrame air;
-    air.fog.density = 0.005;
-    air.fogColourMode = FogColourMode::Custom;
-    air.fogColour = {1.0, 1.0, 1.0};
+    PresetState air;
+    air.environment.fog.density = 0.005;
+    air.environment.fogColourMode = FogColourMode::Custom;
+    air.environment.fogColour = {1.0, 1.0, 1.0};
     r.render(camera, air, floatFrame());
     const renderer::Image before = r.readColour();
 
@@ -269,7 +269,7 @@ TEST_F(GlTest, CapturesExrAndPng) {
     r.setScene(renderer::makeBuiltinScene());
     FrameDesc frame = floatFrame();
     frame.precision = renderer::ColourPrecision::Half;
-    r.render(testCamera(), {}, frame);
+    r.render(testCamera(), PresetState{}, frame);
     const renderer::Image image = r.readColour();
     const fs::path dir = fs::temp_directory_path();
     const fs::path exr = dir / ("aerial_capture_" + std::to_string(::getpid()) + ".exr");

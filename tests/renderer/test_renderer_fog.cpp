@@ -60,16 +60,16 @@ protected:
     static glm::dvec3 sunDirection() { return glm::normalize(glm::dvec3(0.5, 0.35, -0.8)); }
     static glm::dvec3 moonDirection() { return glm::normalize(glm::dvec3(-0.6, 0.2, 0.5)); }
 
-    renderer::AtmosphereFrame baseFrame() const {
-        renderer::AtmosphereFrame air;
-        air.sun = {sunDirection(), glm::dvec3(20.0), glm::dvec3(12.0, 10.0, 8.0)};
-        air.moon = {moonDirection(), glm::dvec3(0.05, 0.055, 0.06), glm::dvec3(0.03)};
-        air.mieAnisotropy = 0.8;
+    PresetState baseFrame() const {
+        PresetState air;
+        air.sunLight = light(sunDirection(), glm::dvec3(20.0), glm::dvec3(12.0, 10.0, 8.0));
+        air.moonLight = light(moonDirection(), glm::dvec3(0.05, 0.055, 0.06), glm::dvec3(0.03));
+        air.environment.atmosphere.mieAnisotropy = 0.8;
         return air;
     }
 
     /// Renders with and without fog and compares every pixel with the CPU.
-    FogComparison run(const char* name, const Camera& camera, const renderer::AtmosphereFrame& air,
+    FogComparison run(const char* name, const Camera& camera, const PresetState& air,
                       double wallDepth = 400.0) {
         renderer_->setScene(testScene(camera, wallDepth));
         FrameDesc frame = floatFrame();
@@ -81,7 +81,7 @@ protected:
         renderer_->render(camera, air, frame);
         const renderer::Image fogged = renderer_->readColour();
         const renderer::Image depth = renderer_->readLinearDepth();
-        const FogScene scene(renderer::fogSceneDesc(air, sky_->sun, sky_->moon));
+        const FogScene scene(aerial::fogSceneDesc(air, sky_->sun, sky_->moon));
         const FogComparison c = compareWithCpu(fogged, unfogged, depth, camera, scene);
         std::printf(
             "[ measured ] %-34s max error %.3g (pixel %d,%d), mean T %.3f, mean S %.3g, inside hulls %d\n",
@@ -93,8 +93,8 @@ protected:
 };
 
 TEST_F(FogVsCpu, GlobalHeightFog) {
-    renderer::AtmosphereFrame air = baseFrame();
-    air.fog = {0.004, 0.02, 3.0};
+    PresetState air = baseFrame();
+    air.environment.fog = {0.004, 0.02, 3.0};
     const FogComparison c = run("global fog", fogCamera({0, 25, 0}, {0, 18, -100}), air);
     EXPECT_LT(c.maxError, kTolerance);
     EXPECT_LT(c.meanTransmittance, 0.9);  // the fog is not trivial
@@ -102,14 +102,14 @@ TEST_F(FogVsCpu, GlobalHeightFog) {
 
 TEST_F(FogVsCpu, GlobalFogHorizontalRaysAndUniformFog) {
     // A level camera: the centre rows have d.y -> 0 (c d.y -> 0 must not jump).
-    renderer::AtmosphereFrame air = baseFrame();
-    air.fog = {0.003, 0.05, 0.0};
+    PresetState air = baseFrame();
+    air.environment.fog = {0.003, 0.05, 0.0};
     FogComparison c = run("global fog, level camera", fogCamera({0, 10, 0}, {0, 10, -100}), air);
     EXPECT_LT(c.maxError, kTolerance);
-    air.fog = {0.002, 0.0, 0.0};  // c = 0: uniform
+    air.environment.fog = {0.002, 0.0, 0.0};  // c = 0: uniform
     c = run("global fog, c = 0", fogCamera({0, 10, 0}, {0, 10, -100}), air);
     EXPECT_LT(c.maxError, kTolerance);
-    air.fog = {0.01, 0.2, -40.0};  // thin air far above the base: large c y
+    air.environment.fog = {0.01, 0.2, -40.0};  // thin air far above the base: large c y
     c = run("global fog, far above the base", fogCamera({0, 30, 0}, {0, 5, -100}), air);
     EXPECT_LT(c.maxError, kTolerance);
 }
@@ -128,8 +128,8 @@ FogVolume testVolume(FogVolumeShape shape) {
 }
 
 TEST_F(FogVsCpu, BoxVolumeCameraOutside) {
-    renderer::AtmosphereFrame air = baseFrame();
-    air.fog = {0.001, 0.02, 0.0};
+    PresetState air = baseFrame();
+    air.environment.fog = {0.001, 0.02, 0.0};
     air.volumes.push_back(testVolume(FogVolumeShape::Box));
     const FogComparison c = run("box, outside", fogCamera({0, 15, 10}, {0, 8, -60}), air);
     EXPECT_LT(c.maxError, kTolerance);
@@ -138,7 +138,7 @@ TEST_F(FogVsCpu, BoxVolumeCameraOutside) {
 }
 
 TEST_F(FogVsCpu, EllipsoidVolumeCameraOutside) {
-    renderer::AtmosphereFrame air = baseFrame();
+    PresetState air = baseFrame();
     air.volumes.push_back(testVolume(FogVolumeShape::Ellipsoid));
     const FogComparison c = run("ellipsoid, outside", fogCamera({0, 15, 10}, {0, 8, -60}), air);
     EXPECT_LT(c.maxError, kTolerance);
@@ -147,7 +147,7 @@ TEST_F(FogVsCpu, EllipsoidVolumeCameraOutside) {
 
 TEST_F(FogVsCpu, VolumesCameraInside) {
     for (FogVolumeShape shape : {FogVolumeShape::Box, FogVolumeShape::Ellipsoid}) {
-        renderer::AtmosphereFrame air = baseFrame();
+        PresetState air = baseFrame();
         FogVolume v = testVolume(shape);
         air.volumes.push_back(v);
         // Eye at the centre, looking out through the side, the box in view.
@@ -160,7 +160,7 @@ TEST_F(FogVsCpu, VolumesCameraInside) {
 
 TEST_F(FogVsCpu, VolumesStraddlingTheNearPlane) {
     for (FogVolumeShape shape : {FogVolumeShape::Box, FogVolumeShape::Ellipsoid}) {
-        renderer::AtmosphereFrame air = baseFrame();
+        PresetState air = baseFrame();
         FogVolume v;
         v.shape = shape;
         v.position = {0.0, 10.0, -30.0};
@@ -181,8 +181,8 @@ TEST_F(FogVsCpu, VolumesStraddlingTheNearPlane) {
 }
 
 TEST_F(FogVsCpu, VolumeColourModesAndTwoDisjointVolumes) {
-    renderer::AtmosphereFrame air = baseFrame();
-    air.fog = {0.002, 0.03, 0.0};
+    PresetState air = baseFrame();
+    air.environment.fog = {0.002, 0.03, 0.0};
     FogVolume a = testVolume(FogVolumeShape::Box);
     a.colourMode = FogColourMode::Tinted;
     a.colour = {1.0, 0.6, 0.3};
@@ -198,8 +198,8 @@ TEST_F(FogVsCpu, VolumeColourModesAndTwoDisjointVolumes) {
 }
 
 TEST_F(FogVsCpu, Emitters) {
-    renderer::AtmosphereFrame air = baseFrame();
-    air.fog = {0.002, 0.03, 0.0};
+    PresetState air = baseFrame();
+    air.environment.fog = {0.002, 0.03, 0.0};
     Emitter lamp;
     lamp.position = {-6.0, 4.0, -40.0};
     lamp.intensity = 0.4;
@@ -223,10 +223,10 @@ TEST_F(FogVsCpu, Emitters) {
 
 TEST_F(FogVsCpu, GlobalFogTintedAndCustomColour) {
     for (FogColourMode mode : {FogColourMode::Tinted, FogColourMode::Custom}) {
-        renderer::AtmosphereFrame air = baseFrame();
-        air.fog = {0.004, 0.02, 3.0};
-        air.fogColourMode = mode;
-        air.fogColour = {0.9, 0.5, 0.25};
+        PresetState air = baseFrame();
+        air.environment.fog = {0.004, 0.02, 3.0};
+        air.environment.fogColourMode = mode;
+        air.environment.fogColour = {0.9, 0.5, 0.25};
         const FogComparison c =
             run(mode == FogColourMode::Custom ? "global fog, custom colour" : "global fog, tinted colour",
                 fogCamera({0, 25, 0}, {0, 18, -100}), air);
@@ -236,7 +236,7 @@ TEST_F(FogVsCpu, GlobalFogTintedAndCustomColour) {
 
 TEST_F(FogVsCpu, TheComparisonSeesAMissingPass) {
     // Negative control: the same frame without the volume pass is far off.
-    renderer::AtmosphereFrame air = baseFrame();
+    PresetState air = baseFrame();
     air.volumes.push_back(testVolume(FogVolumeShape::Box));
     const Camera camera = fogCamera({0, 15, 10}, {0, 8, -60});
     renderer_->setScene(testScene(camera, 400.0));
@@ -246,15 +246,15 @@ TEST_F(FogVsCpu, TheComparisonSeesAMissingPass) {
     const renderer::Image unfogged = renderer_->readColour();
     frame.passes.globalFog = frame.passes.emitters = true;
     renderer_->render(camera, air, frame);
-    const FogScene scene(renderer::fogSceneDesc(air, sky_->sun, sky_->moon));
+    const FogScene scene(aerial::fogSceneDesc(air, sky_->sun, sky_->moon));
     const FogComparison c =
         compareWithCpu(renderer_->readColour(), unfogged, renderer_->readLinearDepth(), camera, scene);
     EXPECT_GT(c.maxError, 0.05);
 }
 
 TEST_F(FogVsCpu, EverythingTogether) {
-    renderer::AtmosphereFrame air = baseFrame();
-    air.fog = {0.003, 0.04, 2.0};
+    PresetState air = baseFrame();
+    air.environment.fog = {0.003, 0.04, 2.0};
     air.volumes.push_back(testVolume(FogVolumeShape::Box));
     FogVolume e = testVolume(FogVolumeShape::Ellipsoid);
     e.position = {40.0, 5.0, -200.0};

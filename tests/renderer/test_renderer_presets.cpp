@@ -58,8 +58,7 @@ TEST_F(GlTest, ShippedPresetsOverTheDayGiveFinitePixels) {
             const SkyPair sky = solveSky(state.environment.atmosphere, state.sunLight.body.direction,
                                          state.moonLight.body.direction, 32, 16);
             r.setSky(sky.sun, sky.moon);
-            const renderer::AtmosphereFrame air = renderer::atmosphereFrameFromState(state);
-            r.render(camera, air, frame);
+            r.render(camera, state, frame);
             const renderer::Image image = r.readColour();
             int bad = 0;
             double brightest = 0.0;

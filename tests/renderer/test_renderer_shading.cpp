@@ -116,8 +116,8 @@ TEST_F(Shading, EmittersLightALambertPlaneAsTheClosedForm) {
     renderer::SceneDesc scene;
     scene.meshes.push_back(ground);
     renderer_->setScene(scene);
-    renderer::AtmosphereFrame air;  // no sun, no moon
-    air.sun.illuminance = air.moon.illuminance = glm::dvec3(0.0);
+    PresetState air;  // no sun, no moon
+    air.sunLight.illuminance = air.moonLight.illuminance = glm::dvec3(0.0);
     Emitter a;
     a.position = {2.0, 3.0, -8.0};
     a.intensity = 40.0;
@@ -192,9 +192,9 @@ TEST_F(Shading, SunOnMetalAndDielectricMatchesTheGltfBrdf) {
         renderer::SceneDesc scene;
         scene.meshes.push_back(ground);
         renderer_->setScene(scene);
-        renderer::AtmosphereFrame air;
-        air.sun = {sun, glm::dvec3(0.0), sunIlluminance};
-        air.moon.illuminance = glm::dvec3(0.0);
+        PresetState air;
+        air.sunLight = light(sun, glm::dvec3(0.0), sunIlluminance);
+        air.moonLight.illuminance = glm::dvec3(0.0);
         renderer_->render(camera, air, sceneOnly());
         const renderer::Image image = renderer_->readColour();
         Worst worst;
@@ -285,10 +285,10 @@ TEST_F(Shading, BaseColourTextureIsSrgbDecodedOrientedAndMipmapped) {
     scene.meshes = {quad, far};
     renderer_->setScene(scene);
     // The sun straight along the view, so n.l = 1 on both quads.
-    renderer::AtmosphereFrame air;
+    PresetState air;
     const double e = 2.0;
-    air.sun = {-f.forward, glm::dvec3(0.0), glm::dvec3(e)};
-    air.moon.illuminance = glm::dvec3(0.0);
+    air.sunLight = light(-f.forward, glm::dvec3(0.0), glm::dvec3(e));
+    air.moonLight.illuminance = glm::dvec3(0.0);
     renderer_->render(camera, air, sceneOnly());
     const renderer::Image image = renderer_->readColour();
 
@@ -375,8 +375,8 @@ TEST_F(Shading, AlphaMaskDiscardsColourAndDepthBelowTheCutoff) {
         renderer::SceneDesc scene;
         scene.meshes = {masked, wall};
         renderer_->setScene(scene);
-        renderer::AtmosphereFrame air;
-        air.sun.illuminance = air.moon.illuminance = glm::dvec3(0.0);
+        PresetState air;
+        air.sunLight.illuminance = air.moonLight.illuminance = glm::dvec3(0.0);
         renderer_->render(camera, air, sceneOnly());
         const renderer::Image image = renderer_->readColour();
         const renderer::Image depth = renderer_->readLinearDepth();

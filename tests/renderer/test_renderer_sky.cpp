@@ -32,18 +32,20 @@ protected:
     static glm::dvec3 sunDirection() { return glm::normalize(glm::dvec3(0.3, 0.12, -0.9)); }
     static glm::dvec3 moonDirection() { return glm::normalize(glm::dvec3(-0.7, 0.4, 0.3)); }
 
-    renderer::AtmosphereFrame frame() const {
-        renderer::AtmosphereFrame air;
-        air.sun = {sunDirection(), glm::dvec3(20.0, 19.0, 18.0), glm::dvec3(10.0, 8.0, 6.0)};
-        air.moon = {moonDirection(), glm::dvec3(0.5, 0.55, 0.6), glm::dvec3(0.3)};
-        air.mieAnisotropy = 0.76;
-        air.sunDiscRadius = 0.0;
-        air.moonDiscRadius = 0.0;
+    PresetState frame() const {
+        PresetState air;
+        air.sunLight = light(sunDirection(), glm::dvec3(20.0, 19.0, 18.0), glm::dvec3(10.0, 8.0, 6.0));
+        air.moonLight = light(moonDirection(), glm::dvec3(0.5, 0.55, 0.6), glm::dvec3(0.3));
+        air.environment.atmosphere.mieAnisotropy = 0.76;
         return air;
     }
 
-    Image renderSky(Renderer& r, const Camera& camera, const renderer::AtmosphereFrame& air) {
+    /// No stars, no moon disc, the sun disc of the given radius [rad].
+    Image renderSky(Renderer& r, const Camera& camera, const PresetState& air, double sunDiscRadius = 0.0) {
         FrameDesc f;
+        f.stars = false;
+        f.sunDiscRadius = sunDiscRadius;
+        f.moonDiscRadius = 0.0;
         f.width = kWidth;
         f.height = kHeight;
         f.precision = renderer::ColourPrecision::Float;
@@ -68,7 +70,7 @@ TEST_F(SkyVsCpu, EveryPixelMatchesSkyRadiance) {
     Renderer r(rendererDesc());
     ASSERT_TRUE(r.valid()) << r.error();
     r.setSky(sky.sun, sky.moon);
-    const renderer::AtmosphereFrame air = frame();
+    const PresetState air = frame();
     const SkyCase cases[] = {
         {"towards the sun (halo)", {0, 2, 0}, {0, 2, 0}, 1.2},
         {"away from the sun", {0, 2, 0}, {0, 2, 0}, 1.2},
@@ -90,8 +92,10 @@ TEST_F(SkyVsCpu, EveryPixelMatchesSkyRadiance) {
         for (int y = 0; y < kHeight; ++y) {
             for (int x = 0; x < kWidth; ++x) {
                 const glm::dvec3 v = glm::normalize(renderer::farRayAtPixel(f, x, y, kWidth, kHeight));
-                const glm::dvec3 cpu = skyRadiance(sky.sun, air.mieAnisotropy, v, air.sun.illuminanceSpace) +
-                                       skyRadiance(sky.moon, air.mieAnisotropy, v, air.moon.illuminanceSpace);
+                const glm::dvec3 cpu = skyRadiance(sky.sun, air.environment.atmosphere.mieAnisotropy, v,
+                                                   air.sunLight.illuminanceSpace) +
+                                       skyRadiance(sky.moon, air.environment.atmosphere.mieAnisotropy, v,
+                                                   air.moonLight.illuminanceSpace);
                 for (int c = 0; c < 3; ++c) {
                     const double gpu = image.at(x, y, c);
                     const double error = std::fabs(gpu - cpu[c]) / std::max(std::fabs(cpu[c]), 1e-6);
@@ -116,14 +120,12 @@ TEST_F(SkyVsCpu, SunDiscHasTheTransmittedIlluminanceOverItsSolidAngle) {
     Renderer r(rendererDesc());
     ASSERT_TRUE(r.valid());
     r.setSky(sky.sun, sky.moon);
-    renderer::AtmosphereFrame air = frame();
-    air.sunDiscRadius = 0.004653;
+    const PresetState air = frame();
     const double fov = 0.05;  // ~5.6e-4 rad per pixel: the disc is ~17 px across
     const Camera camera = skyCamera({0, 2, 0}, glm::dvec3(0, 2, 0) + sunDirection(), fov);
-    const Image withDisc = renderSky(r, camera, air);
-    air.sunDiscRadius = 0.0;
+    const Image withDisc = renderSky(r, camera, air, 0.004653);
     const Image without = renderSky(r, camera, air);
-    const double discRadiance = air.sun.illuminance.x / (2.0 * kPi * (1.0 - std::cos(0.004653)));
+    const double discRadiance = air.sunLight.illuminance.x / (2.0 * kPi * (1.0 - std::cos(0.004653)));
     int discPixels = 0;
     double worst = 0.0;
     for (int y = 0; y < kHeight; ++y) {

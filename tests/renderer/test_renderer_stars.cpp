@@ -43,8 +43,22 @@ double airMass(double mu) {
     return 1.0 / (mu + 0.50572 * std::pow(96.07995 - zenithDeg, -1.6364));
 }
 
+/// What the sky pass's stars read from a state: the brightest star's
+/// illuminance (kStarIlluminance times the night fade), the celestial frame
+/// and the zenith transmittance.
+struct StarSky {
+    double starIlluminance = 0.0;
+    CelestialFrame celestial;
+    glm::dvec3 zenithTransmittance{1.0};
+};
+
+StarSky starSky(const PresetState& state) {
+    return {renderer::kStarIlluminance * renderer::starVisibility(state.sunLight.body.elevation),
+            celestialFrame(state.environment.location, state.timeHours), state.zenithTransmittance};
+}
+
 /// The CPU copy of sky.glsl's starRadiance.
-glm::dvec3 starRadiance(const glm::dvec3& v, const renderer::AtmosphereFrame& air, double sigma) {
+glm::dvec3 starRadiance(const glm::dvec3& v, const StarSky& air, double sigma) {
     if (!(air.starIlluminance > 0.0) || v.y <= 0.0) return glm::dvec3(0.0);
     const glm::dvec3 c(glm::dot(v, air.celestial.equatorX), glm::dot(v, air.celestial.equatorY),
                        glm::dot(v, air.celestial.pole));
@@ -67,8 +81,10 @@ glm::dvec3 starRadiance(const glm::dvec3& v, const renderer::AtmosphereFrame& ai
             const double cosDec = std::sqrt(std::max(1.0 - sinDec * sinDec, 0.0));
             const glm::dvec3 s(cosDec * std::cos(ra), cosDec * std::sin(ra), sinDec);
             const glm::dvec3 d = c - s;
-            const double weight = std::pow(starUnit(h3), 6.0) * std::exp(-glm::dot(d, d) / (2.0 * sigma * sigma));
-            const glm::dvec3 tint = glm::mix(glm::dvec3(1.0, 0.82, 0.64), glm::dvec3(0.72, 0.84, 1.0), starUnit(h4));
+            const double weight =
+                std::pow(starUnit(h3), 6.0) * std::exp(-glm::dot(d, d) / (2.0 * sigma * sigma));
+            const glm::dvec3 tint =
+                glm::mix(glm::dvec3(1.0, 0.82, 0.64), glm::dvec3(0.72, 0.84, 1.0), starUnit(h4));
             sum += weight * tint;
         }
     }
@@ -81,16 +97,16 @@ glm::dvec3 starRadiance(const glm::dvec3& v, const renderer::AtmosphereFrame& ai
 class Stars : public GlTest {
 protected:
     /// A moonless night: no sun or moon light, only stars.
-    static renderer::AtmosphereFrame night(double timeHours) {
-        renderer::AtmosphereFrame air;
-        air.sun.illuminance = air.sun.illuminanceSpace = glm::dvec3(0.0);
-        air.moon.illuminance = air.moon.illuminanceSpace = glm::dvec3(0.0);
-        air.sunDiscRadius = air.moonDiscRadius = 0.0;
-        air.fog.density = 0.0;
-        Location where;
-        air.celestial = celestialFrame(where, timeHours);
-        air.zenithTransmittance = transmittanceToSpace(AtmosphereParams{}, AtmosphereParams{}.viewerHeight, 1.0);
-        air.starIlluminance = renderer::kStarIlluminance;
+    static PresetState night(double timeHours) {
+        PresetState air;
+        air.sunLight.illuminance = air.sunLight.illuminanceSpace = glm::dvec3(0.0);
+        air.moonLight.illuminance = air.moonLight.illuminanceSpace = glm::dvec3(0.0);
+        air.sunLight.body.elevation = -0.5;  // below -10 deg: every star (kStarIlluminance)
+        air.environment.fog.density = 0.0;
+        air.environment.location = Location{};
+        air.timeHours = timeHours;  // the celestial frame: celestialFrame(Location{}, timeHours)
+        air.zenithTransmittance =
+            transmittanceToSpace(AtmosphereParams{}, AtmosphereParams{}.viewerHeight, 1.0);
         return air;
     }
     static renderer::Camera camera(const glm::dvec3& target, double fov) {
@@ -101,9 +117,11 @@ protected:
         c.aspect = double(kStarsWidth) / kStarsHeight;
         return c;
     }
-    static renderer::Image render(renderer::Renderer& r, const renderer::Camera& c,
-                                  const renderer::AtmosphereFrame& air, bool scene = false) {
+    static renderer::Image render(renderer::Renderer& r, const renderer::Camera& c, const PresetState& air,
+                                  bool scene = false, bool stars = true) {
         renderer::FrameDesc f;
+        f.stars = stars;
+        f.sunDiscRadius = f.moonDiscRadius = 0.0;
         f.width = kStarsWidth;
         f.height = kStarsHeight;
         f.precision = renderer::ColourPrecision::Float;
@@ -127,17 +145,20 @@ TEST_F(Stars, EveryPixelMatchesTheCpuCopy) {
     int starPixels = 0;
     double worst = 0.0;
     for (double t : {1.0, 4.5}) {
-        const renderer::AtmosphereFrame air = night(t);
-        const double peak = air.starIlluminance / (kTwoPi * sigma * sigma);
-        for (const glm::dvec3& look : {glm::dvec3(0.01, 1.0, 0.0), glm::dvec3(0.3, 0.5, -1.0),
-                                       glm::dvec3(-1.0, 0.12, 0.2)}) {
+        const PresetState air = night(t);
+        const StarSky stars = starSky(air);
+        ASSERT_EQ(stars.starIlluminance, renderer::kStarIlluminance);
+        const double peak = stars.starIlluminance / (kTwoPi * sigma * sigma);
+        for (const glm::dvec3& look :
+             {glm::dvec3(0.01, 1.0, 0.0), glm::dvec3(0.3, 0.5, -1.0), glm::dvec3(-1.0, 0.12, 0.2)}) {
             const renderer::Camera cam = camera(glm::normalize(look), fov);
             const renderer::Image img = render(r, cam, air);
             const renderer::CameraFrame cf = renderer::cameraFrame(cam);
             for (int y = 0; y < kStarsHeight; ++y) {
                 for (int x = 0; x < kStarsWidth; ++x) {
-                    const glm::dvec3 v = glm::normalize(renderer::farRayAtPixel(cf, x, y, kStarsWidth, kStarsHeight));
-                    const glm::dvec3 cpu = starRadiance(v, air, sigma);
+                    const glm::dvec3 v =
+                        glm::normalize(renderer::farRayAtPixel(cf, x, y, kStarsWidth, kStarsHeight));
+                    const glm::dvec3 cpu = starRadiance(v, stars, sigma);
                     for (int ch = 0; ch < 3; ++ch) {
                         const double gpu = img.at(x, y, ch);
                         ASSERT_TRUE(std::isfinite(gpu));
@@ -170,8 +191,8 @@ TEST(StarsAirMass, FollowsTheExactSlantTransmittance) {
         for (int ch = 0; ch < 3; ++ch) {
             const double approx = std::pow(zenith[ch], m);
             const double tolerance = elevationDeg >= 10.0 ? 0.02 : 0.20;
-            std::printf("elevation %4.0f deg channel %d: T exact %.4f, T_zenith^X %.4f (%+.2f %%)\n", elevationDeg,
-                        ch, exact[ch], approx, 100.0 * (approx / exact[ch] - 1.0));
+            std::printf("elevation %4.0f deg channel %d: T exact %.4f, T_zenith^X %.4f (%+.2f %%)\n",
+                        elevationDeg, ch, exact[ch], approx, 100.0 * (approx / exact[ch] - 1.0));
             EXPECT_NEAR(approx / exact[ch], 1.0, tolerance) << elevationDeg << " deg, channel " << ch;
         }
     }
@@ -185,23 +206,22 @@ TEST_F(Stars, FadeWithTheSunAndHideBehindTheScene) {
     EXPECT_EQ(renderer::starVisibility(-12.0 * kTwoPi / 360.0), 1.0);
     EXPECT_NEAR(renderer::starVisibility(-4.0 * kTwoPi / 360.0), 0.5, 1e-12);
     const CompiledPreset preset;  // the default preset
-    EXPECT_EQ(renderer::atmosphereFrameFromState(preset.evaluate(12.0)).starIlluminance, 0.0);
+    EXPECT_EQ(starSky(preset.evaluate(12.0)).starIlluminance, 0.0);
     const PresetState midnight = preset.evaluate(0.0);
     ASSERT_LT(midnight.sunLight.body.elevation, -12.0 * kTwoPi / 360.0);
-    const renderer::AtmosphereFrame air = renderer::atmosphereFrameFromState(midnight);
+    const StarSky air = starSky(midnight);
     EXPECT_EQ(air.starIlluminance, renderer::kStarIlluminance);
     const AtmosphereParams& atmosphere = midnight.environment.atmosphere;
     const glm::dvec3 zenith = transmittanceToSpace(atmosphere, atmosphere.viewerHeight, 1.0);
-    for (int c = 0; c < 3; ++c) EXPECT_NEAR(air.zenithTransmittance[c], zenith[c], 5e-4);  // tabulated in evaluate
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(air.zenithTransmittance[c], zenith[c], 5e-4);  // tabulated in evaluate
     EXPECT_NEAR(glm::dot(air.celestial.pole, midnight.sunLight.body.direction),
                 std::sin(solarDeclination(midnight.environment.location.dayOfYear)), 1e-12);
 
     renderer::Renderer r(rendererDesc());
     ASSERT_TRUE(r.valid()) << r.error();
-    renderer::AtmosphereFrame dark = night(1.0);
-    dark.starIlluminance = 0.0;
     const renderer::Camera up = camera({0.01, 1.0, 0.0}, 0.2);
-    const renderer::Image none = render(r, up, dark);
+    const renderer::Image none = render(r, up, night(1.0), false, false);  // FrameDesc::stars off
     double maxValue = 0.0;
     for (int y = 0; y < kStarsHeight; ++y)
         for (int x = 0; x < kStarsWidth; ++x) maxValue = std::max(maxValue, double(none.at(x, y, 1)));
@@ -209,8 +229,8 @@ TEST_F(Stars, FadeWithTheSunAndHideBehindTheScene) {
 
     // A wall in front of the camera covers every star.
     renderer::SceneDesc wall;
-    wall.meshes.push_back(renderer::makeBoxMesh({0.0, 2.0, -5.0}, {50.0, 50.0, 0.5}, glm::dquat(1, 0, 0, 0),
-                                                glm::dvec3(0.0)));
+    wall.meshes.push_back(
+        renderer::makeBoxMesh({0.0, 2.0, -5.0}, {50.0, 50.0, 0.5}, glm::dquat(1, 0, 0, 0), glm::dvec3(0.0)));
     r.setScene(wall);
     const renderer::Image covered = render(r, camera({0.0, 0.0, -1.0}, 0.2), night(1.0), true);
     maxValue = 0.0;

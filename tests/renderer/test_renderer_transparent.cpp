@@ -67,10 +67,10 @@ protected:
 
     /// Lights colour the fog (illuminance above the atmosphere) but do not
     /// light surfaces (zero at the ground), so the pane's radiance is known.
-    renderer::AtmosphereFrame baseFrame() const {
-        renderer::AtmosphereFrame air;
-        air.sun = {sunDirection(), glm::dvec3(20.0), glm::dvec3(0.0)};
-        air.moon = {moonDirection(), glm::dvec3(0.05), glm::dvec3(0.0)};
+    PresetState baseFrame() const {
+        PresetState air;
+        air.sunLight = light(sunDirection(), glm::dvec3(20.0), glm::dvec3(0.0));
+        air.moonLight = light(moonDirection(), glm::dvec3(0.05), glm::dvec3(0.0));
         return air;
     }
 
@@ -81,7 +81,7 @@ protected:
         int pixels = 0;
     };
 
-    Result run(const char* name, const renderer::AtmosphereFrame& air, const Pane& pane, int cells,
+    Result run(const char* name, const PresetState& air, const Pane& pane, int cells,
                const glm::dvec3& emission) {
         renderer::SceneMesh mesh = paneMesh(pane, cells);
         mesh.emission = emission;
@@ -95,7 +95,7 @@ protected:
         renderer_->render(camera, air, floatFrame());
         EXPECT_EQ(renderer_->stats().transparentDrawn, 1);
         const renderer::Image image = renderer_->readColour();
-        const FogScene fog(renderer::fogSceneDesc(air, sky_->sun, sky_->moon));
+        const FogScene fog(aerial::fogSceneDesc(air, sky_->sun, sky_->moon));
         const renderer::CameraFrame f = renderer::cameraFrame(camera);
         // Pixel footprint at the pane [m], to stay 1 px inside its edges.
         const double pixel = 2.0 * std::tan(0.5 * camera.verticalFov) * (f.eye.z - pane.zPane) / kHeight;
@@ -135,10 +135,10 @@ protected:
 };
 
 TEST_F(Transparent, GlobalFogPerVertexMatchesTheCpuQuery) {
-    renderer::AtmosphereFrame air = baseFrame();
-    air.fog.density = 0.02;
-    air.fog.falloff = 0.08;
-    air.fog.baseHeight = 0.0;
+    PresetState air = baseFrame();
+    air.environment.fog.density = 0.02;
+    air.environment.fog.falloff = 0.08;
+    air.environment.fog.baseHeight = 0.0;
     // A 10 m x 8 m pane 30 m away: the optical depth varies across it with
     // height (exp(-c y), c = 0.08/m). Per-vertex evaluation interpolates it
     // linearly between vertices: the error is that of the interpolation,
@@ -152,7 +152,7 @@ TEST_F(Transparent, GlobalFogPerVertexMatchesTheCpuQuery) {
 }
 
 TEST_F(Transparent, VolumeAndEmitterFogFromTheBoundsCornersMatchesTheCpuQuery) {
-    renderer::AtmosphereFrame air = baseFrame();
+    PresetState air = baseFrame();
     // A rotated box volume with a tilted gradient between the camera and the
     // pane (the pane wholly behind it), and an emitter beside the pane.
     FogVolume v;
@@ -185,7 +185,7 @@ TEST_F(Transparent, VolumeAndEmitterFogFromTheBoundsCornersMatchesTheCpuQuery) {
 TEST_F(Transparent, HalfOpaquePaneBlendsOverTheFoggedScene) {
     // Premultiplied "over": result = alpha (L T + S) + (1 - alpha) dst, with
     // dst the fogged background; alpha = 0.4, no fog: exactly the mix.
-    renderer::AtmosphereFrame air = baseFrame();
+    PresetState air = baseFrame();
     const Camera camera = paneCamera();
     const renderer::CameraFrame f = renderer::cameraFrame(camera);
     renderer::SceneMesh wall = renderer::makeQuadMesh({-500.0, -200.0, -200.0}, {1000.0, 0.0, 0.0},
@@ -253,9 +253,9 @@ TEST_F(GlTest, SoftParticleFadesByTheSceneDepthAsTheClosedForm) {
     // Without fog, then behind a box volume (custom colour) that covers the
     // sprite: the sprite's colour becomes C T' + S' with T', S' the CPU query
     // from the eye to its centre.
-    renderer::AtmosphereFrame clear;
-    clear.sun.illuminance = clear.moon.illuminance = glm::dvec3(0.0);
-    renderer::AtmosphereFrame foggy = clear;
+    PresetState clear;
+    clear.sunLight.illuminance = clear.moonLight.illuminance = glm::dvec3(0.0);
+    PresetState foggy = clear;
     FogVolume v;
     v.position = {0.0, 0.0, -10.0};
     v.halfExtents = {20.0, 20.0, 4.0};
@@ -263,7 +263,7 @@ TEST_F(GlTest, SoftParticleFadesByTheSceneDepthAsTheClosedForm) {
     v.colourMode = FogColourMode::Custom;
     v.colour = {0.2, 0.3, 0.5};
     foggy.volumes.push_back(v);
-    for (const renderer::AtmosphereFrame* air : {&clear, &foggy}) {
+    for (const PresetState* air : {&clear, &foggy}) {
         const bool fogged = !air->volumes.empty();
         r.render(camera, *air, frame);
         EXPECT_EQ(r.stats().spritesDrawn, 1);
@@ -373,10 +373,11 @@ TEST_F(GlTest, BuiltinSceneShowsEveryKindOfObjectWithFinitePixels) {
     const SkyPair sky = solveSky(AtmosphereParams{}, glm::normalize(glm::dvec3(0.2, 0.9, 0.4)),
                                  glm::normalize(glm::dvec3(-0.5, -0.3, 0.2)), 32, 16);
     r.setSky(sky.sun, sky.moon);
-    renderer::AtmosphereFrame air;
-    air.sun = {glm::normalize(glm::dvec3(0.2, 0.9, 0.4)), glm::dvec3(20.0), glm::dvec3(18.0, 17.0, 15.0)};
-    air.fog.density = 0.004;
-    air.fog.falloff = 0.05;
+    PresetState air;
+    air.sunLight =
+        light(glm::normalize(glm::dvec3(0.2, 0.9, 0.4)), glm::dvec3(20.0), glm::dvec3(18.0, 17.0, 15.0));
+    air.environment.fog.density = 0.004;
+    air.environment.fog.falloff = 0.05;
     FogVolume v;
     v.position = {0.0, 2.0, 0.0};
     v.halfExtents = {30.0, 4.0, 40.0};
@@ -391,6 +392,7 @@ TEST_F(GlTest, BuiltinSceneShowsEveryKindOfObjectWithFinitePixels) {
     camera.target = {0.0, 10.0, -200.0};
     camera.aspect = double(kWidth) / kHeight;
     renderer::FrameDesc frame;
+    frame.stars = false;  // a state built by hand
     frame.width = kWidth;
     frame.height = kHeight;
     frame.gpuTimers = true;

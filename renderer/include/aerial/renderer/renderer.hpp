@@ -11,8 +11,7 @@
 //   if (!renderer.valid()) fail(renderer.error());
 //   renderer.setScene(aerial::renderer::makeBuiltinScene());
 //   renderer.setSky(sunSolver.table(), moonSolver.table());    // when re-solved
-//   aerial::renderer::AtmosphereFrame air = aerial::renderer::atmosphereFrameFromState(state);
-//   renderer.render(camera, air, {320, 180});
+//   renderer.render(camera, state, {320, 180});   // state: core's PresetState
 //   aerial::renderer::Image hdr = renderer.readColour();
 //
 // Passes, in order, into one HDR colour target (DESIGN.md "Global height fog"
@@ -46,11 +45,11 @@
 #pragma once
 
 #include <aerial/fog_query.hpp>
-#include <aerial/sun.hpp>
 #include <aerial/renderer/camera.hpp>
 #include <aerial/renderer/image.hpp>
 #include <aerial/renderer/log.hpp>
 #include <aerial/renderer/scene.hpp>
+#include <aerial/sun.hpp>
 
 #include <glm/vec3.hpp>
 
@@ -81,46 +80,6 @@ struct RendererDesc {
 /// development build).
 std::string defaultShaderDirectory();
 
-/// A sun or moon as the passes see it.
-struct RenderLight {
-    glm::dvec3 direction{0.0, 1.0, 0.0};  ///< unit, from the scene to the light
-    /// Illuminance above the atmosphere E, RGB: multiplies the sky tables
-    /// and the horizon averages (sky and fog colour).
-    glm::dvec3 illuminanceSpace{0.0};
-    /// Illuminance reaching the ground (E T(viewer -> light)), RGB: lights
-    /// the scene and the disc.
-    glm::dvec3 illuminance{0.0};
-};
-
-/// The atmosphere of one frame: what the passes need from a PresetState.
-struct AtmosphereFrame {
-    RenderLight sun;
-    RenderLight moon;
-    /// Cornette-Shanks anisotropy g of the sky and fog colour, -0.999..0.999.
-    double mieAnisotropy = 0.8;
-    HeightFogParams fog;
-    /// Global fog colour: the sky's (FogScene's), tinted, or custom radiance.
-    FogColourMode fogColourMode = FogColourMode::Sky;
-    glm::dvec3 fogColour{1.0};
-    std::vector<FogVolume> volumes;
-    /// Intensities as they are this frame (keys and lightning flashes applied).
-    std::vector<Emitter> emitters;
-    /// Angular radius of the sun disc [rad]; 0 hides it. Default 0.2666 deg.
-    double sunDiscRadius = 0.004653;
-    /// Angular radius of the moon disc [rad]; 0 hides it. Default 0.2588 deg.
-    double moonDiscRadius = 0.004517;
-    /// Stars (sky pass): illuminance of the brightest star above the
-    /// atmosphere, in the unit of E; 0 (the default here) hides them.
-    /// atmosphereFrameFromState sets kStarIlluminance times a night fade.
-    double starIlluminance = 0.0;
-    /// The celestial sphere the stars are fixed to (core's celestialFrame).
-    CelestialFrame celestial;
-    /// Transmittance from the viewer to space at the zenith, RGB: a star at
-    /// zenith angle z is dimmed by zenithTransmittance^X(z), X the
-    /// Kasten-Young (1989) air mass.
-    glm::dvec3 zenithTransmittance{1.0};
-};
-
 /// Illuminance of the brightest procedural star for the default sun (20):
 /// about 1000x the physical ratio of Sirius to the sun (~1e-10), the same
 /// artistic factor as the default moon (preset.hpp), so the stars read next
@@ -130,16 +89,6 @@ constexpr double kStarIlluminance = 2e-6;
 /// Night fade of the stars: 0 with the sun above +2 deg, 1 below -10 deg
 /// (nautical twilight), smoothstep between.
 double starVisibility(double sunElevation);
-
-/// The frame for a preset state (sun and moon from sunLight / moonLight).
-AtmosphereFrame atmosphereFrameFromState(const PresetState& state);
-
-/// The CPU counterpart of a frame's fog (the contract in fog_query.hpp):
-/// global fog with its colour mode, volumes, emitters and both lights with
-/// the tables' horizon averages. A transparent object shaded with
-/// FogScene(fogSceneDesc(...)).query(eye, object) gets the fog the passes
-/// put on an opaque pixel at the same place.
-FogSceneDesc fogSceneDesc(const AtmosphereFrame& frame, const SkyTable& sunTable, const SkyTable& moonTable);
 
 enum class ColourPrecision {
     /// RGBA16F (default): the editor and captures. Every pass output is
@@ -181,6 +130,14 @@ struct FrameDesc {
     /// the GPU after every pass (for benchmarks, not for an interactive
     /// frame).
     bool gpuTimers = false;
+    /// Stars in the sky pass: the brightest star's illuminance is
+    /// kStarIlluminance * starVisibility(sun elevation) of the state; false
+    /// hides them (the editor's View > Stars).
+    bool stars = true;
+    /// Angular radius of the sun disc [rad]; 0 hides it. Default 0.2666 deg.
+    double sunDiscRadius = 0.004653;
+    /// Angular radius of the moon disc [rad]; 0 hides it. Default 0.2588 deg.
+    double moonDiscRadius = 0.004517;
 };
 
 struct ShaderReloadResult {
@@ -242,8 +199,11 @@ public:
     /// table of the wrong size (or empty) counts as black.
     void setSky(const SkyTable& sunTable, const SkyTable& moonTable);
 
-    /// Renders one frame into the renderer's HDR target (resized as needed).
-    void render(const Camera& camera, const AtmosphereFrame& atmosphere, const FrameDesc& frame);
+    /// Renders one frame of core's evaluated state (CompiledPreset::evaluate)
+    /// into the renderer's HDR target (resized as needed). The fog the
+    /// passes draw is core's fogSceneDesc(state, sunTable, moonTable) with
+    /// the tables of the last setSky.
+    void render(const Camera& camera, const PresetState& state, const FrameDesc& frame);
 
     /// Recompiles every program from RendererDesc::shaderDirectory. A
     /// program that fails keeps its last good version; the log says why.

@@ -1,0 +1,158 @@
+// frame_block.cpp — makeFrameBlock: the per-frame uniforms from the camera,
+// core's evaluated PresetState and the frame settings (no GL).
+#include "frame_block.hpp"
+
+#include "sky_textures.hpp"
+
+#include <aerial/evaluate.hpp>
+#include <aerial/sky.hpp>
+#include <aerial/sun.hpp>
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace aerial::renderer {
+
+double starVisibility(double sunElevation) {
+    if (!std::isfinite(sunElevation)) return 0.0;
+    const double x = std::clamp((2.0 - sunElevation * (180.0 / kPi)) / 12.0, 0.0, 1.0);
+    return x * x * (3.0 - 2.0 * x);
+}
+
+namespace detail {
+
+Vec4 toVec4(const glm::dvec3& v, double w) {
+    return {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z), static_cast<float>(w)};
+}
+
+Vec3 toVec3(const glm::dvec3& v) {
+    return {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z)};
+}
+
+Mat4 toMat4(const glm::dmat4& m) {
+    Mat4 out;
+    for (int c = 0; c < 4; ++c) {
+        for (int r = 0; r < 4; ++r) out.m[c * 4 + r] = static_cast<float>(m[c][r]);
+    }
+    return out;
+}
+
+bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+double nonNegative(double x, double bound) {
+    return (std::isfinite(x) && x > 0.0) ? std::min(x, bound) : 0.0;
+}
+
+glm::dvec3 colourOf(const glm::dvec3& c) {
+    return {nonNegative(c.x, 1e30), nonNegative(c.y, 1e30), nonNegative(c.z, 1e30)};
+}
+
+glm::dvec3 unitOr(const glm::dvec3& v, const glm::dvec3& fallback) {
+    if (!finite(v)) return fallback;
+    const double m = std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
+    if (!(m > 0.0)) return fallback;
+    return glm::normalize(v / m);
+}
+
+double frameStarIlluminance(const PresetState& state, const FrameDesc& frame) {
+    return frame.stars ? kStarIlluminance * starVisibility(state.sunLight.body.elevation) : 0.0;
+}
+
+FrameBlock makeFrameBlock(const Camera& camera, const CameraFrame& view, const PresetState& state,
+                          const FrameDesc& frame, const FrameBlockInputs& in) {
+    const int w = in.width, h = in.height;
+    const LightState& sun = state.sunLight;
+    const LightState& moon = state.moonLight;
+    const Environment& env = state.environment;
+    FrameBlock fb;
+    fb.clipFromWorld = toMat4(view.clipFromWorld);
+    fb.eye = toVec3(view.eye);
+    fb.farDistance = static_cast<float>(view.farDistance);
+    fb.forward = toVec3(view.forward);
+    fb.nearDistance = static_cast<float>(view.nearDistance);
+    for (int k = 0; k < 4; ++k) fb.farCornerRays[k] = toVec4(view.farCornerRays[k]);
+    fb.viewportSize[0] = float(w);
+    fb.viewportSize[1] = float(h);
+    fb.viewportTexel[0] = 1.0f / float(w);
+    fb.viewportTexel[1] = 1.0f / float(h);
+
+    // Discs: chord 2 sin(r/2) and 1 / solid angle = 1 / (4 pi sin^2(r/2)),
+    // in double (1 - cos r in float loses 3 digits at the sun's 0.27 deg).
+    const double sunDisc = nonNegative(frame.sunDiscRadius, 0.5);
+    const double moonDisc = nonNegative(frame.moonDiscRadius, 0.5);
+    auto chord = [](double r) { return 2.0 * std::sin(0.5 * r); };
+    auto perSolidAngle = [](double r) {
+        const double s = std::sin(0.5 * r);
+        return r > 0.0 ? 1.0 / (4.0 * kPi * s * s) : 0.0;
+    };
+    fb.sunDirection = toVec3(unitOr(sun.body.direction, {0.0, 1.0, 0.0}));
+    fb.sunDiscChord = static_cast<float>(chord(sunDisc));
+    fb.sunIlluminanceSpace = toVec3(colourOf(sun.illuminanceSpace));
+    fb.sunIlluminance = toVec3(colourOf(sun.illuminance));
+    fb.sunDiscInverseSolidAngle = static_cast<float>(perSolidAngle(sunDisc));
+    fb.moonDirection = toVec3(unitOr(moon.body.direction, {0.0, 1.0, 0.0}));
+    fb.moonDiscChord = static_cast<float>(chord(moonDisc));
+    fb.moonIlluminanceSpace = toVec3(colourOf(moon.illuminanceSpace));
+    fb.moonIlluminance = toVec3(colourOf(moon.illuminance));
+    fb.moonDiscInverseSolidAngle = static_cast<float>(perSolidAngle(moonDisc));
+
+    const double mie = env.atmosphere.mieAnisotropy;
+    const double g = std::isfinite(mie) ? std::clamp(mie, -0.999, 0.999) : 0.0;
+    fb.sunHorizonRayleigh = toVec3(colourOf(in.sun.horizonRayleigh));
+    fb.mieAnisotropy = static_cast<float>(g);
+    fb.sunHorizonMie = toVec3(colourOf(in.sun.horizonMie));
+    fb.moonHorizonRayleigh = toVec3(colourOf(in.moon.horizonRayleigh));
+    fb.moonHorizonMie = toVec3(colourOf(in.moon.horizonMie));
+    const glm::dvec3 ambient =
+        (in.sun.valid && in.sun.table ? skyIrradiance(*in.sun.table, g, colourOf(sun.illuminanceSpace))
+                                      : glm::dvec3(0.0)) +
+        (in.moon.valid && in.moon.table ? skyIrradiance(*in.moon.table, g, colourOf(moon.illuminanceSpace))
+                                        : glm::dvec3(0.0));
+    fb.skyAmbient = toVec3(colourOf(ambient));
+
+    // Without the global fog pass, the transparent meshes and particles get
+    // no global fog either (they read the same density).
+    const HeightFogParams& fog = env.fog;
+    fb.fogDensity = static_cast<float>(frame.passes.globalFog ? nonNegative(fog.density, 1e30) : 0.0);
+    fb.fogFalloff = static_cast<float>(nonNegative(fog.falloff, 1e30));
+    fb.fogBaseHeight =
+        static_cast<float>(std::isfinite(fog.baseHeight) ? std::clamp(fog.baseHeight, -1e30, 1e30) : 0.0);
+    fb.fogColourMode = static_cast<float>(static_cast<int>(env.fogColourMode));
+    fb.fogColour = toVec3(colourOf(env.fogColour));
+    // Radiance cap per pass output: an RGBA16F target must never reach Inf
+    // (the sun disc alone is ~3e5 for the default sun); see frame.glsl.
+    fb.radianceCap = static_cast<float>(frame.precision == ColourPrecision::Float ? 1e30 : 3.0e4);
+
+    fb.sunTableAzimuth = static_cast<float>(in.sun.lightAzimuth);
+    fb.moonTableAzimuth = static_cast<float>(in.moon.lightAzimuth);
+    fb.sunTableColumns = float(in.sun.columns);
+    fb.sunTableRows = float(in.sun.rows);
+    fb.emitterCount = in.emitterCount;
+    fb.moonTableColumns = in.moon.columns;
+    fb.moonTableRows = in.moon.rows;
+
+    // Stars: the celestial frame, the brightest star's illuminance and the
+    // Gaussian radius of a star, sigma = 0.6 pixel (vertical angle / rows).
+    const double starE = nonNegative(frameStarIlluminance(state, frame), 1e30);
+    CelestialFrame celestial;
+    glm::dvec3 zenithTransmittance(1.0);
+    if (starE > 0.0) {
+        celestial = celestialFrame(env.location, state.timeHours);
+        zenithTransmittance = state.zenithTransmittance;
+    }
+    const double fov =
+        std::isfinite(camera.verticalFov) ? std::clamp(camera.verticalFov, 1e-4, kPi - 1e-4) : 1.0;
+    const double starSigma = std::min(0.6 * fov / double(h), kStarMaxSigma);
+    fb.starAxisX = toVec3(unitOr(celestial.equatorX, {1.0, 0.0, 0.0}));
+    fb.starIlluminance = static_cast<float>(starE);
+    fb.starAxisY = toVec3(unitOr(celestial.equatorY, {0.0, 0.0, 1.0}));
+    fb.starSigma = static_cast<float>(starSigma);
+    fb.starPole = toVec3(unitOr(celestial.pole, {0.0, 1.0, 0.0}));
+    fb.starTransmittance = toVec3(glm::clamp(colourOf(zenithTransmittance), 0.0, 1.0));
+    return fb;
+}
+
+}  // namespace detail
+}  // namespace aerial::renderer

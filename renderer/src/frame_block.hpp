@@ -1,0 +1,75 @@
+// frame_block.hpp — private: the per-frame uniform block (FrameBlock,
+// shaders/common/frame.glsl) from the camera, core's evaluated state and the
+// frame settings. Pure: no GL, so a test checks it without a context.
+#pragma once
+
+#include "gpu_types.hpp"
+
+#include <aerial/renderer/camera.hpp>
+#include <aerial/renderer/renderer.hpp>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+namespace aerial {
+struct PresetState;
+struct SkyTable;
+}  // namespace aerial
+
+namespace aerial::renderer::detail {
+
+/// What the frame block needs from one light's sky tables (SkyTextures
+/// after an upload, or the table itself).
+struct FrameSkyInput {
+    const SkyTable* table = nullptr;  ///< for the ambient irradiance; null = black
+    bool valid = false;               ///< false: the table was empty or malformed
+    double lightAzimuth = 0.0;        ///< [rad]
+    int columns = 1;
+    int rows = 1;
+    glm::dvec3 horizonRayleigh{0.0};
+    glm::dvec3 horizonMie{0.0};
+};
+
+/// Everything makeFrameBlock reads besides the camera and the state.
+struct FrameBlockInputs {
+    int width = 1;         ///< [px], after FrameDesc's defaults and clamps
+    int height = 1;        ///< [px]
+    int emitterCount = 0;  ///< emitters uploaded this frame (after validation)
+    FrameSkyInput sun;
+    FrameSkyInput moon;
+};
+
+/// sky.glsl's stars: the Gaussian radius never exceeds 0.4 of a cell's
+/// height (2 / 512 in sin declination, ~0.0039 rad at the equator), so the
+/// 3 x 3 cells summed hold the whole star; below ~250 rows a star is thus
+/// narrower than a pixel.
+constexpr double kStarMaxSigma = 0.0015;
+
+/// Brightest star's illuminance this frame: kStarIlluminance times the night
+/// fade of the state's sun, 0 with FrameDesc::stars off.
+double frameStarIlluminance(const PresetState& state, const FrameDesc& frame);
+
+/// The std140 block of one frame: camera matrices and rays, lights (sanitised:
+/// unit directions, non-negative finite colours), disc chords and inverse
+/// solid angles, the Mie anisotropy (clamped to +-0.999), sky ambient, global
+/// fog (density 0 when FrameDesc::passes.globalFog is off), radiance cap
+/// (3e4 for ColourPrecision::Half, 1e30 for Float), table mapping, emitter
+/// count and the star frame.
+FrameBlock makeFrameBlock(const Camera& camera, const CameraFrame& view, const PresetState& state,
+                          const FrameDesc& frame, const FrameBlockInputs& inputs);
+
+/// Conversions of the blocks' fields from double precision.
+Vec4 toVec4(const glm::dvec3& v, double w = 0.0);
+Vec3 toVec3(const glm::dvec3& v);
+Mat4 toMat4(const glm::dmat4& m);
+
+/// All three components finite.
+bool finite(const glm::dvec3& v);
+/// Finite, non-negative, at most `bound`; 0 otherwise.
+double nonNegative(double x, double bound);
+/// Each channel through nonNegative(c, 1e30).
+glm::dvec3 colourOf(const glm::dvec3& c);
+/// v normalised, or `fallback` when v is zero or not finite.
+glm::dvec3 unitOr(const glm::dvec3& v, const glm::dvec3& fallback);
+
+}  // namespace aerial::renderer::detail

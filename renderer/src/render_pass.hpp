@@ -1,0 +1,144 @@
+// render_pass.hpp — private: the frame as a list of passes (Filament's and
+// Unreal's render passes). A pass is a pair of functions: whether it runs
+// this frame, and its draws. Each lives in a file of its own
+// (sky_pass.cpp, scene_pass.cpp, ...) whose opening comment names what it
+// reads, what it writes and the GL state it owns.
+//
+// GL state contract. Renderer::Impl::render binds the frame's uniform and
+// storage buffers and textures (gpu_types.hpp's bindings and units), sets
+// the viewport, clears the targets and leaves the frame's baseline:
+//   draw framebuffer = sceneTarget with both colour attachments drawn,
+//   depth test, blending, face culling, depth clamp, scissor and stencil
+//   off, depth writes and all colour channels on.
+// A pass sets what it needs on entry and returns to the baseline on exit;
+// program, vertex array and texture unit 5 (base colour) are free for every
+// pass to change. Renderer::render's GlStateGuard restores the caller's state
+// after the frame.
+#pragma once
+
+#include "gpu_mesh.hpp"
+#include "gpu_types.hpp"
+#include "shader_library.hpp"
+#include "sky_textures.hpp"
+
+#include <aerial/fog_query.hpp>
+#include <aerial/renderer/camera.hpp>
+#include <aerial/renderer/renderer.hpp>
+#include <aerial/renderer/scene.hpp>
+#include <aerial/sky.hpp>
+
+#include <epoxy/gl.h>
+
+#include <memory>
+#include <vector>
+
+namespace aerial {
+struct PresetState;
+}
+
+namespace aerial::renderer::detail {
+
+/// The GL objects the renderer owns and its passes draw with (created and
+/// destroyed by Renderer::Impl, which holds one).
+struct RendererResources {
+    ShaderLibrary shaders;
+    GLuint emptyVertexArray = 0;     ///< full-screen triangles (fullscreen.glsl)
+    GpuMesh hull;                    ///< unit cube: the fog volumes' hull
+    std::vector<GpuMesh> meshes;     ///< the scene
+    GLuint whiteTexture = 0;         ///< bound to the base-colour unit when a mesh has none
+    std::vector<FogSprite> sprites;  ///< sanitised at setScene
+    GLuint spriteArray = 0, spriteBuffer = 0;
+    GLuint frameBuffer = 0, volumeBuffer = 0, objectBuffer = 0, emitterBuffer = 0;
+    GLsizeiptr emitterCapacity = 0;  ///< [bytes]
+    GLuint colour = 0, linearDepth = 0, depth = 0;
+    /// sceneTarget: colour + linear depth + depth; compositeTarget: colour +
+    /// depth (the passes that blend into the colour and read linear depth).
+    GLuint sceneTarget = 0, compositeTarget = 0;
+    SkyTextures sunSky, moonSky;
+    SkyTable sunTable, moonTable;
+};
+
+/// One frame as the passes see it.
+class FrameContext {
+public:
+    FrameContext(const Camera& c, const CameraFrame& v, const PresetState& s, const FrameDesc& d,
+                 const FrameBlock& b, RendererResources& g, RenderStats& st)
+        : camera(c), view(v), state(s), desc(d), block(b), gpu(g), stats(st) {}
+
+    const Camera& camera;
+    const CameraFrame& view;
+    const PresetState& state;
+    const FrameDesc& desc;
+    const FrameBlock& block;  ///< already uploaded to gpu.frameBuffer
+    RendererResources& gpu;
+    RenderStats& stats;
+
+    /// The CPU fog of the volumes and emitters for the transparent meshes
+    /// and the particles (core's fogSceneDesc without the global fog, which
+    /// is theirs on the GPU; volumes and emitters only when their passes
+    /// are on). Built on first use, shared by the passes of the frame.
+    const FogScene& localFog();
+
+private:
+    std::unique_ptr<FogScene> localFog_;
+};
+
+/// One pass of the frame.
+struct RenderPass {
+    double PassTimes::*time;  ///< its slot in RenderStats' timings
+    bool (*runs)(const FrameContext& frame);
+    void (*draw)(FrameContext& frame);
+};
+
+// The passes, in the order of renderer.hpp (each in its own file).
+extern const RenderPass kScenePass;        // scene_pass.cpp
+extern const RenderPass kSkyPass;          // sky_pass.cpp
+extern const RenderPass kGlobalFogPass;    // global_fog_pass.cpp
+extern const RenderPass kVolumePass;       // volume_pass.cpp
+extern const RenderPass kEmitterPass;      // emitter_pass.cpp
+extern const RenderPass kTransparentPass;  // transparent_pass.cpp
+extern const RenderPass kParticlePass;     // particle_pass.cpp
+
+/// Runs passes, measuring each when FrameDesc::gpuTimers: a GL_TIME_ELAPSED
+/// query around its draws and the wall time between glFinish calls before
+/// and after (pass_timer.cpp). The one place passes are timed.
+class PassTimer {
+public:
+    static constexpr int kMaxPasses = 16;
+    /// Creates the queries (a GL context is current).
+    void create();
+    void destroy();
+    /// Starts a frame: nothing measured yet.
+    void beginFrame(bool enabled);
+    /// Runs the pass when it runs this frame, timed when enabled.
+    void run(const RenderPass& pass, FrameContext& frame);
+    /// Writes the frame's timings into stats (gpuMilliseconds,
+    /// wallMilliseconds, timed) when enabled; waits for the queries.
+    void endFrame(RenderStats& stats);
+
+private:
+    GLuint queries_[kMaxPasses] = {};
+    double PassTimes::*slots_[kMaxPasses] = {};
+    double wallMs_[kMaxPasses] = {};
+    int used_ = 0;
+    bool enabled_ = false;
+};
+
+// Helpers the passes share.
+
+/// Draws one full-screen triangle with the program of `program`.
+void drawFullscreen(const RendererResources& gpu, Pass program);
+
+/// Composite state of the fog passes: compositeTarget (colour and depth, no
+/// linear depth: the passes read it), no depth writes, blending with
+/// GL_FUNC_ADD and (srcRgb, dstRgb) for colour, (GL_ZERO, GL_ONE) for alpha
+/// (alpha stays). endComposite returns to the baseline.
+void beginComposite(const RendererResources& gpu, GLenum srcRgb, GLenum dstRgb);
+void endComposite(const RendererResources& gpu);
+
+/// Uploads the valid emitters (finite position, positive intensity; colours
+/// and attenuations sanitised) to gpu.emitterBuffer, growing it as needed;
+/// returns how many (emitter_pass.cpp).
+int uploadEmitters(RendererResources& gpu, const std::vector<Emitter>& emitters);
+
+}  // namespace aerial::renderer::detail

@@ -1,0 +1,153 @@
+// volume_pass.cpp — pass 4: the fog volumes, back to front, each a hull
+// (the unit cube in object space) whose fragments integrate the volume's
+// density along the pixel's clipped ray (shaders/fog_volume.glsl, or
+// fog_volume_marched.glsl for VolumeMethod::RayMarched64):
+// L <- L T_v + C_v (1 - T_v).
+//
+// Reads:  the state's volumes (packed by prepareVolume: core's validity rules
+//         and sanitising), FrameBlock, linear depth (unit 4), the depth
+//         buffer (hulls seen from outside are depth-tested against it).
+// Writes: the colour, through compositeTarget (no depth writes); the
+//         VolumeBlock per volume; RenderStats::volumesDrawn, volumesDrawnInside.
+// GL state: beginComposite with glBlendFunc(GL_ONE, GL_SRC_ALPHA) for
+//         colour (alpha kept); depth clamp and face culling on; per volume
+//         either back faces without depth test (the eye may be inside) or
+//         front faces depth-tested with GL_LEQUAL; all three off again and
+//         endComposite on exit.
+//
+// Order: sorted by the distance from the eye to each volume's world bounds
+// (0 when inside), farthest first, ties by ascending index (renderer.hpp).
+#include "frame_block.hpp"
+#include "render_pass.hpp"
+
+#include <aerial/evaluate.hpp>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace aerial::renderer::detail {
+namespace {
+
+/// Distance [m] from a point to an axis-aligned box (0 inside).
+double distanceToBox(const glm::dvec3& p, const glm::dvec3& lo, const glm::dvec3& hi) {
+    return glm::length(glm::max(glm::max(lo - p, p - hi), glm::dvec3(0.0)));
+}
+
+/// A fog volume reduced to what its pass needs (mirrors core's
+/// prepareVolume: the same validity rules and sanitising).
+struct PreparedVolume {
+    VolumeBlock block;
+    double sortDistance = 0.0;
+    std::size_t index = 0;
+    bool inside = false;
+};
+
+bool prepareVolume(const FogVolume& v, std::size_t index, const CameraFrame& camera,
+                   double nearCornerDistance, PreparedVolume& out) {
+    constexpr double kMaxCoordinate = 1.0e30;
+    const glm::dvec3 s = v.halfExtents;
+    const bool extentsOk = s.x >= 1e-6 && s.y >= 1e-6 && s.z >= 1e-6 && s.x <= kMaxCoordinate &&
+                           s.y <= kMaxCoordinate && s.z <= kMaxCoordinate;
+    const glm::dquat q = v.rotation;
+    const double qNorm2 = q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z;
+    const bool positionOk = finite(v.position) && std::fabs(v.position.x) <= kMaxCoordinate &&
+                            std::fabs(v.position.y) <= kMaxCoordinate &&
+                            std::fabs(v.position.z) <= kMaxCoordinate;
+    const double density = nonNegative(v.density, 1e150);
+    if (!extentsOk || !(std::isfinite(qNorm2) && qNorm2 > 1e-200) || !positionOk || !(density > 0.0)) {
+        return false;
+    }
+    const glm::dmat3 r = glm::mat3_cast(q / std::sqrt(qNorm2));
+    const glm::dvec3 rows[3] = {r[0] / s.x, r[1] / s.y, r[2] / s.z};  // objectFromWorld = S^-1 R^T
+
+    glm::dmat4 worldFromObject(1.0);
+    for (int c = 0; c < 3; ++c) worldFromObject[c] = glm::dvec4(r[c] * s[c], 0.0);
+    worldFromObject[3] = glm::dvec4(v.position, 1.0);
+
+    out.block.worldFromObject = toMat4(worldFromObject);
+    out.block.objectFromWorldRow0 = toVec3(rows[0]);
+    out.block.shape = v.shape == FogVolumeShape::Ellipsoid ? 1.0f : 0.0f;
+    out.block.objectFromWorldRow1 = toVec3(rows[1]);
+    out.block.density = static_cast<float>(density);
+    out.block.objectFromWorldRow2 = toVec3(rows[2]);
+    out.block.falloff = static_cast<float>(nonNegative(v.falloff, 1e150));
+    const double offset = std::isfinite(v.gradientOffset) ? std::clamp(v.gradientOffset, -1e150, 1e150) : 0.0;
+    out.block.position = toVec3(v.position);
+    out.block.gradientOffset = static_cast<float>(offset);
+    out.block.gradientDirection = toVec3(unitOr(v.gradientDirection, {0.0, 1.0, 0.0}));
+    out.block.colourMode = static_cast<float>(static_cast<int>(v.colourMode));
+    out.block.colour = toVec3(colourOf(v.colour));
+
+    glm::dvec3 lo, hi;
+    fogVolumeBounds(v, lo, hi);
+    out.sortDistance = distanceToBox(camera.eye, lo, hi);
+    out.index = index;
+    // Inside mode when the hull may reach the eye's near-plane sphere: the
+    // world distance to the hull is at least min(s) times the object-space
+    // distance (conservative; inside mode is always correct, only slower).
+    const glm::dvec3 o =
+        glm::dvec3(glm::dot(rows[0], camera.eye - v.position), glm::dot(rows[1], camera.eye - v.position),
+                   glm::dot(rows[2], camera.eye - v.position));
+    const double objectDistance = glm::length(o - glm::clamp(o, glm::dvec3(-1.0), glm::dvec3(1.0)));
+    out.inside = std::min({s.x, s.y, s.z}) * objectDistance <= 1.01 * nearCornerDistance;
+    return true;
+}
+
+bool runs(const FrameContext& f) { return f.desc.passes.volumes && !f.state.volumes.empty(); }
+
+void draw(FrameContext& f) {
+    RendererResources& gpu = f.gpu;
+    const Camera& camera = f.camera;
+    const CameraFrame& cam = f.view;
+    const std::vector<FogVolume>& all = f.state.volumes;
+    const double tanHalf = std::tan(0.5 * std::clamp(camera.verticalFov, 1e-4, 3.14149));
+    const double aspect = camera.aspect > 0.0 && std::isfinite(camera.aspect) ? camera.aspect : 1.0;
+    const double nearCorner = cam.nearDistance * std::sqrt(1.0 + tanHalf * tanHalf * (1.0 + aspect * aspect));
+    std::vector<PreparedVolume> volumes;
+    volumes.reserve(all.size());
+    for (std::size_t i = 0; i < all.size(); ++i) {
+        PreparedVolume p;
+        if (prepareVolume(all[i], i, cam, nearCorner, p)) volumes.push_back(p);
+    }
+    // Back to front: farthest first, ties by ascending index (the lower
+    // index composited first), as fog_query.hpp.
+    std::stable_sort(volumes.begin(), volumes.end(), [](const PreparedVolume& a, const PreparedVolume& b) {
+        return a.sortDistance > b.sortDistance;
+    });
+    beginComposite(gpu, GL_ONE, GL_SRC_ALPHA);
+    glUseProgram(gpu.shaders.program(
+        f.desc.volumeMethod == VolumeMethod::RayMarched64 ? Pass::FogVolumeMarched : Pass::FogVolume));
+    glBindVertexArray(gpu.hull.vertexArray);
+    glEnable(GL_DEPTH_CLAMP);  // hull parts beyond the far plane still rasterise (at depth 1)
+    glEnable(GL_CULL_FACE);
+    for (const PreparedVolume& v : volumes) {
+        if (v.inside) {
+            // Back faces, no depth test: every ray that meets the hull
+            // leaves it through exactly one back face.
+            glCullFace(GL_FRONT);
+            glDisable(GL_DEPTH_TEST);
+            ++f.stats.volumesDrawnInside;
+        } else {
+            // Front faces behind the scene cannot contribute.
+            glCullFace(GL_BACK);
+            glEnable(GL_DEPTH_TEST);
+            glDepthFunc(GL_LEQUAL);
+        }
+        glNamedBufferSubData(gpu.volumeBuffer, 0, sizeof v.block, &v.block);
+        glDrawElements(GL_TRIANGLES, gpu.hull.indexCount, GL_UNSIGNED_INT, nullptr);
+        ++f.stats.volumesDrawn;
+    }
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_DEPTH_CLAMP);
+    glDisable(GL_DEPTH_TEST);
+    endComposite(gpu);
+}
+
+}  // namespace
+
+const RenderPass kVolumePass{&PassTimes::volumes, runs, draw};
+
+}  // namespace aerial::renderer::detail

@@ -1,0 +1,348 @@
+// test_frame_block.cpp — makeFrameBlock (renderer/src/frame_block.hpp)
+// without a GL context: the per-frame std140 block's fields against
+// independent computations (camera corners projected back to the NDC
+// corners, normalised light directions, disc chords and solid angles, the
+// fog and star fields from the state), and the std140 offsets of the C++
+// mirrors against the GLSL blocks, laid out here by the std140 rules from
+// the shader sources themselves.
+#include "frame_block.hpp"
+#include "gpu_types.hpp"
+
+#include <aerial/evaluate.hpp>
+#include <aerial/renderer/renderer.hpp>
+#include <aerial/sun.hpp>
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/vec4.hpp>
+
+#include <cmath>
+#include <cstddef>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <string>
+
+namespace aerial::test {
+namespace {
+
+using renderer::detail::FrameBlock;
+using renderer::detail::FrameBlockInputs;
+using renderer::detail::makeFrameBlock;
+using renderer::detail::ObjectBlock;
+using renderer::detail::Vec3;
+using renderer::detail::VolumeBlock;
+
+constexpr double kPiD = 3.14159265358979323846;
+
+glm::dvec3 d3(const Vec3& v) { return {v.x, v.y, v.z}; }
+
+void expectNear3(const Vec3& got, const glm::dvec3& want, double tolerance, const char* what) {
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(d3(got)[c], want[c], tolerance) << what << " channel " << c;
+}
+
+renderer::Camera testCamera() {
+    renderer::Camera c;
+    c.eye = {3.0, 12.0, 40.0};
+    c.target = {-5.0, 8.0, -60.0};
+    c.verticalFov = 0.9;
+    c.nearDistance = 0.25;
+    c.farDistance = 2000.0;
+    c.aspect = 2.0;
+    return c;
+}
+
+/// A state with every field makeFrameBlock reads set by hand.
+PresetState testState() {
+    PresetState s;
+    s.sunLight.body.direction = {0.0, 2.0, -2.0};  // not unit on purpose
+    s.sunLight.body.elevation = kPiD / 4.0;
+    s.sunLight.illuminanceSpace = {20.0, 19.0, 18.0};
+    s.sunLight.illuminance = {10.0, -1.0, std::numeric_limits<double>::quiet_NaN()};  // sanitised to 0
+    s.moonLight.body.direction = {-0.6, 0.2, 0.5};
+    s.moonLight.illuminanceSpace = {0.05, 0.055, 0.06};
+    s.moonLight.illuminance = {0.03, 0.03, 0.03};
+    s.environment.atmosphere.mieAnisotropy = 0.9995;  // clamped to 0.999
+    s.environment.fog = {0.004, 0.02, 3.0};
+    s.environment.fogColourMode = FogColourMode::Custom;
+    s.environment.fogColour = {0.5, 0.6, 0.7};
+    return s;
+}
+
+FrameBlockInputs testInputs() {
+    FrameBlockInputs in;
+    in.width = 320;
+    in.height = 160;
+    in.emitterCount = 3;
+    in.sun.lightAzimuth = 1.25;
+    in.sun.columns = 64;
+    in.sun.rows = 32;
+    in.sun.horizonRayleigh = {0.1, 0.2, 0.3};
+    in.sun.horizonMie = {0.01, 0.02, 0.03};
+    in.moon.lightAzimuth = 2.5;
+    in.moon.columns = 16;
+    in.moon.rows = 8;
+    in.moon.horizonRayleigh = {0.4, 0.5, 0.6};
+    in.moon.horizonMie = {0.04, 0.05, 0.06};
+    return in;  // no tables: no sky ambient
+}
+
+TEST(FrameBlock, CameraFieldsReproduceTheFrustum) {
+    const renderer::Camera camera = testCamera();
+    const renderer::CameraFrame view = renderer::cameraFrame(camera);
+    const FrameBlock fb = makeFrameBlock(camera, view, testState(), {}, testInputs());
+    const glm::dvec3 forward = glm::normalize(camera.target - camera.eye);
+    expectNear3(fb.eye, camera.eye, 1e-5, "eye");
+    expectNear3(fb.forward, forward, 1e-6, "forward");
+    EXPECT_FLOAT_EQ(fb.nearDistance, 0.25f);
+    EXPECT_FLOAT_EQ(fb.farDistance, 2000.0f);
+    glm::dmat4 clipFromWorld;
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) clipFromWorld[c][r] = fb.clipFromWorld.m[c * 4 + r];
+    // Corner rays: bottom-left, bottom-right, top-left, top-right, to the far
+    // plane: each lands at its NDC corner at depth 1, at the far distance
+    // along the view.
+    const glm::dvec2 ndc[4] = {{-1, -1}, {1, -1}, {-1, 1}, {1, 1}};
+    for (int k = 0; k < 4; ++k) {
+        const glm::dvec3 ray(fb.farCornerRays[k].x, fb.farCornerRays[k].y, fb.farCornerRays[k].z);
+        EXPECT_NEAR(glm::dot(ray, forward), camera.farDistance, 1e-3 * camera.farDistance) << "corner " << k;
+        const glm::dvec4 clip = clipFromWorld * glm::dvec4(camera.eye + ray, 1.0);
+        EXPECT_NEAR(clip.x / clip.w, ndc[k].x, 1e-4) << "corner " << k;
+        EXPECT_NEAR(clip.y / clip.w, ndc[k].y, 1e-4) << "corner " << k;
+        EXPECT_NEAR(clip.z / clip.w, 1.0, 1e-3) << "corner " << k;
+    }
+    // The vertical field of view and the aspect from the corners.
+    const glm::dvec3 bl(fb.farCornerRays[0].x, fb.farCornerRays[0].y, fb.farCornerRays[0].z);
+    const glm::dvec3 tl(fb.farCornerRays[2].x, fb.farCornerRays[2].y, fb.farCornerRays[2].z);
+    const glm::dvec3 br(fb.farCornerRays[1].x, fb.farCornerRays[1].y, fb.farCornerRays[1].z);
+    const double halfHeight = camera.farDistance * std::tan(0.5 * camera.verticalFov);
+    EXPECT_NEAR(glm::length(tl - bl), 2.0 * halfHeight, 1e-3 * halfHeight);
+    EXPECT_NEAR(glm::length(br - bl), 2.0 * halfHeight * camera.aspect, 1e-3 * halfHeight);
+    EXPECT_FLOAT_EQ(fb.viewportSize[0], 320.0f);
+    EXPECT_FLOAT_EQ(fb.viewportSize[1], 160.0f);
+    EXPECT_FLOAT_EQ(fb.viewportTexel[0], 1.0f / 320.0f);
+    EXPECT_FLOAT_EQ(fb.viewportTexel[1], 1.0f / 160.0f);
+}
+
+TEST(FrameBlock, LightsDiscsAndSkyMapping) {
+    const renderer::Camera camera = testCamera();
+    renderer::FrameDesc frame;
+    frame.sunDiscRadius = 0.01;
+    frame.moonDiscRadius = 0.0;  // hidden
+    const PresetState state = testState();
+    const FrameBlock fb = makeFrameBlock(camera, renderer::cameraFrame(camera), state, frame, testInputs());
+    expectNear3(fb.sunDirection, glm::dvec3(0.0, 1.0, -1.0) / std::sqrt(2.0), 1e-7, "sun direction");
+    expectNear3(fb.moonDirection, glm::normalize(state.moonLight.body.direction), 1e-7, "moon direction");
+    expectNear3(fb.sunIlluminanceSpace, {20.0, 19.0, 18.0}, 1e-5, "sun E space");
+    expectNear3(fb.sunIlluminance, {10.0, 0.0, 0.0}, 1e-6, "sun E ground (negative and NaN -> 0)");
+    expectNear3(fb.moonIlluminanceSpace, {0.05, 0.055, 0.06}, 1e-7, "moon E space");
+    expectNear3(fb.moonIlluminance, {0.03, 0.03, 0.03}, 1e-7, "moon E ground");
+    // Disc: chord |v - l| of the angular radius, and 1 / (2 pi (1 - cos r)).
+    const double r = 0.01;
+    const glm::dvec3 l(0.0, 1.0, 0.0), edge(std::sin(r), std::cos(r), 0.0);
+    EXPECT_NEAR(fb.sunDiscChord, glm::length(edge - l), 1e-9);
+    EXPECT_NEAR(fb.sunDiscInverseSolidAngle, 1.0 / (2.0 * kPiD * (1.0 - std::cos(r))),
+                1e-6 * fb.sunDiscInverseSolidAngle);
+    EXPECT_EQ(fb.moonDiscChord, 0.0f);
+    EXPECT_EQ(fb.moonDiscInverseSolidAngle, 0.0f);
+    EXPECT_FLOAT_EQ(fb.mieAnisotropy, 0.999f);
+    expectNear3(fb.sunHorizonRayleigh, {0.1, 0.2, 0.3}, 1e-7, "sun I_R");
+    expectNear3(fb.moonHorizonMie, {0.04, 0.05, 0.06}, 1e-7, "moon I_M");
+    expectNear3(fb.skyAmbient, {0.0, 0.0, 0.0}, 0.0, "no tables: no ambient");
+    EXPECT_FLOAT_EQ(fb.sunTableAzimuth, 1.25f);
+    EXPECT_FLOAT_EQ(fb.moonTableAzimuth, 2.5f);
+    EXPECT_EQ(fb.sunTableColumns, 64.0f);
+    EXPECT_EQ(fb.sunTableRows, 32.0f);
+    EXPECT_EQ(fb.moonTableColumns, 16);
+    EXPECT_EQ(fb.moonTableRows, 8);
+    EXPECT_EQ(fb.emitterCount, 3);
+}
+
+TEST(FrameBlock, FogFieldsAndRadianceCap) {
+    const renderer::Camera camera = testCamera();
+    const renderer::CameraFrame view = renderer::cameraFrame(camera);
+    renderer::FrameDesc frame;
+    const FrameBlock half = makeFrameBlock(camera, view, testState(), frame, testInputs());
+    EXPECT_FLOAT_EQ(half.fogDensity, 0.004f);
+    EXPECT_FLOAT_EQ(half.fogFalloff, 0.02f);
+    EXPECT_FLOAT_EQ(half.fogBaseHeight, 3.0f);
+    EXPECT_EQ(half.fogColourMode, 2.0f);  // FogColourMode::Custom
+    expectNear3(half.fogColour, {0.5, 0.6, 0.7}, 1e-7, "fog colour");
+    EXPECT_EQ(half.radianceCap, 3.0e4f);
+    frame.precision = renderer::ColourPrecision::Float;
+    frame.passes.globalFog = false;  // no global fog anywhere, the transparent passes included
+    const FrameBlock full = makeFrameBlock(camera, view, testState(), frame, testInputs());
+    EXPECT_EQ(full.radianceCap, 1.0e30f);
+    EXPECT_EQ(full.fogDensity, 0.0f);
+    EXPECT_FLOAT_EQ(full.fogFalloff, 0.02f);
+}
+
+TEST(FrameBlock, StarsFollowTheSunAndTheSwitch) {
+    const renderer::Camera camera = testCamera();
+    const renderer::CameraFrame view = renderer::cameraFrame(camera);
+    PresetState night = testState();
+    night.sunLight.body.elevation = -0.5;  // below -10 deg
+    night.timeHours = 1.5;
+    night.environment.location.latitudeDeg = 30.0;
+    night.zenithTransmittance = {0.8, 0.85, 0.9};
+    const FrameBlockInputs inputs = testInputs();
+    const FrameBlock fb = makeFrameBlock(camera, view, night, {}, inputs);
+    EXPECT_FLOAT_EQ(fb.starIlluminance, float(renderer::kStarIlluminance));
+    const CelestialFrame sky = celestialFrame(night.environment.location, night.timeHours);
+    expectNear3(fb.starAxisX, sky.equatorX, 1e-6, "equator x");
+    expectNear3(fb.starAxisY, sky.equatorY, 1e-6, "equator y");
+    expectNear3(fb.starPole, sky.pole, 1e-6, "pole");
+    expectNear3(fb.starTransmittance, night.zenithTransmittance, 1e-7, "zenith transmittance");
+    EXPECT_FLOAT_EQ(fb.starSigma, float(std::min(0.6 * camera.verticalFov / inputs.height, 0.0015)));
+
+    renderer::FrameDesc off;
+    off.stars = false;
+    EXPECT_EQ(makeFrameBlock(camera, view, night, off, inputs).starIlluminance, 0.0f);
+    EXPECT_EQ(makeFrameBlock(camera, view, testState(), {}, inputs).starIlluminance, 0.0f);  // day
+    PresetState dusk = night;
+    dusk.sunLight.body.elevation = -4.0 * kPiD / 180.0;  // half way through the fade
+    EXPECT_NEAR(makeFrameBlock(camera, view, dusk, {}, inputs).starIlluminance,
+                0.5 * renderer::kStarIlluminance, 1e-6 * renderer::kStarIlluminance);
+}
+
+// --- std140 offsets: the GLSL blocks laid out by the rules, against offsetof.
+
+struct Std140Member {
+    std::string name;
+    std::size_t offset = 0;
+};
+
+/// The members of `uniform <block> { ... }` in a shader source, with their
+/// std140 offsets (scalars, vec2..4, ivec4, mat4 and arrays of vec4).
+std::vector<Std140Member> std140Layout(const std::string& file, const std::string& block) {
+    std::ifstream in(std::string(AERIAL_SOURCE_DIR) + "/shaders/" + file);
+    std::stringstream text;
+    text << in.rdbuf();
+    const std::string s = text.str();
+    const std::size_t begin = s.find("uniform " + block + " {");
+    const std::size_t end = s.find('}', begin);
+    EXPECT_NE(begin, std::string::npos) << file << " " << block;
+    if (begin == std::string::npos || end == std::string::npos) return {};
+    const std::string body = s.substr(begin, end - begin);
+    static const std::map<std::string, std::pair<std::size_t, std::size_t>> kTypes = {
+        // type: (base alignment, size) [bytes]
+        {"float", {4, 4}},  {"int", {4, 4}},     {"vec2", {8, 8}},   {"vec3", {16, 12}},
+        {"vec4", {16, 16}}, {"ivec4", {16, 16}}, {"mat4", {16, 64}},
+    };
+    std::vector<Std140Member> members;
+    std::size_t offset = 0;
+    // Statements "type name;" or "type name[N];" (comments stripped), after
+    // the block's opening brace.
+    std::istringstream lines(body.substr(body.find('{') + 1));
+    std::string line;
+    while (std::getline(lines, line)) {
+        line = line.substr(0, line.find("//"));
+        std::istringstream words(line);
+        std::string type, name;
+        if (!(words >> type >> name) || name.empty() || name.back() != ';') continue;
+        name.pop_back();
+        const auto found = kTypes.find(type);
+        EXPECT_NE(found, kTypes.end()) << type;
+        if (found == kTypes.end()) continue;
+        std::size_t alignment = found->second.first, size = found->second.second;
+        const std::size_t bracket = name.find('[');
+        if (bracket != std::string::npos) {  // arrays: elements rounded up to vec4
+            alignment = 16;
+            size = 16 * std::stoul(name.substr(bracket + 1));
+            name = name.substr(0, bracket);
+        }
+        offset = (offset + alignment - 1) / alignment * alignment;
+        members.push_back({name, offset});
+        offset += size;
+    }
+    return members;
+}
+
+void expectLayout(const std::string& file, const std::string& block,
+                  const std::map<std::string, std::size_t>& cpp, std::size_t cppSize) {
+    const std::vector<Std140Member> glsl = std140Layout(file, block);
+    ASSERT_FALSE(glsl.empty());
+    std::size_t checked = 0;
+    for (const Std140Member& m : glsl) {
+        const auto found = cpp.find(m.name);
+        if (found == cpp.end()) continue;  // padding members need not be named alike
+        EXPECT_EQ(found->second, m.offset) << block << "." << m.name;
+        ++checked;
+    }
+    EXPECT_EQ(checked, cpp.size()) << block << ": a C++ member has no GLSL counterpart";
+    EXPECT_EQ(cppSize % 16, 0u);
+}
+
+#define AERIAL_OFFSET(type, name) \
+    { #name, offsetof(type, name) }
+
+TEST(FrameBlock, Std140OffsetsMatchTheGlslBlocks) {
+    expectLayout("common/frame.glsl", "FrameBlock",
+                 {AERIAL_OFFSET(FrameBlock, clipFromWorld),
+                  AERIAL_OFFSET(FrameBlock, eye),
+                  AERIAL_OFFSET(FrameBlock, farDistance),
+                  AERIAL_OFFSET(FrameBlock, forward),
+                  AERIAL_OFFSET(FrameBlock, nearDistance),
+                  AERIAL_OFFSET(FrameBlock, farCornerRays),
+                  AERIAL_OFFSET(FrameBlock, viewportSize),
+                  AERIAL_OFFSET(FrameBlock, viewportTexel),
+                  AERIAL_OFFSET(FrameBlock, sunDirection),
+                  AERIAL_OFFSET(FrameBlock, sunDiscChord),
+                  AERIAL_OFFSET(FrameBlock, sunIlluminanceSpace),
+                  AERIAL_OFFSET(FrameBlock, sunIlluminance),
+                  AERIAL_OFFSET(FrameBlock, sunDiscInverseSolidAngle),
+                  AERIAL_OFFSET(FrameBlock, moonDirection),
+                  AERIAL_OFFSET(FrameBlock, moonDiscChord),
+                  AERIAL_OFFSET(FrameBlock, moonIlluminanceSpace),
+                  AERIAL_OFFSET(FrameBlock, moonIlluminance),
+                  AERIAL_OFFSET(FrameBlock, moonDiscInverseSolidAngle),
+                  AERIAL_OFFSET(FrameBlock, sunHorizonRayleigh),
+                  AERIAL_OFFSET(FrameBlock, mieAnisotropy),
+                  AERIAL_OFFSET(FrameBlock, sunHorizonMie),
+                  AERIAL_OFFSET(FrameBlock, moonHorizonRayleigh),
+                  AERIAL_OFFSET(FrameBlock, moonHorizonMie),
+                  AERIAL_OFFSET(FrameBlock, skyAmbient),
+                  AERIAL_OFFSET(FrameBlock, fogDensity),
+                  AERIAL_OFFSET(FrameBlock, fogFalloff),
+                  AERIAL_OFFSET(FrameBlock, fogBaseHeight),
+                  AERIAL_OFFSET(FrameBlock, fogColourMode),
+                  AERIAL_OFFSET(FrameBlock, fogColour),
+                  AERIAL_OFFSET(FrameBlock, radianceCap),
+                  AERIAL_OFFSET(FrameBlock, sunTableAzimuth),
+                  AERIAL_OFFSET(FrameBlock, moonTableAzimuth),
+                  AERIAL_OFFSET(FrameBlock, sunTableColumns),
+                  AERIAL_OFFSET(FrameBlock, sunTableRows),
+                  AERIAL_OFFSET(FrameBlock, emitterCount),
+                  AERIAL_OFFSET(FrameBlock, moonTableColumns),
+                  AERIAL_OFFSET(FrameBlock, moonTableRows),
+                  AERIAL_OFFSET(FrameBlock, starAxisX),
+                  AERIAL_OFFSET(FrameBlock, starIlluminance),
+                  AERIAL_OFFSET(FrameBlock, starAxisY),
+                  AERIAL_OFFSET(FrameBlock, starSigma),
+                  AERIAL_OFFSET(FrameBlock, starPole),
+                  AERIAL_OFFSET(FrameBlock, starTransmittance)},
+                 sizeof(FrameBlock));
+    expectLayout(
+        "common/volume.glsl", "VolumeBlock",
+        {AERIAL_OFFSET(VolumeBlock, worldFromObject), AERIAL_OFFSET(VolumeBlock, objectFromWorldRow0),
+         AERIAL_OFFSET(VolumeBlock, shape), AERIAL_OFFSET(VolumeBlock, objectFromWorldRow1),
+         AERIAL_OFFSET(VolumeBlock, density), AERIAL_OFFSET(VolumeBlock, objectFromWorldRow2),
+         AERIAL_OFFSET(VolumeBlock, falloff), AERIAL_OFFSET(VolumeBlock, position),
+         AERIAL_OFFSET(VolumeBlock, gradientOffset), AERIAL_OFFSET(VolumeBlock, gradientDirection),
+         AERIAL_OFFSET(VolumeBlock, colourMode), AERIAL_OFFSET(VolumeBlock, colour)},
+        sizeof(VolumeBlock));
+    expectLayout("common/object.glsl", "ObjectBlock",
+                 {AERIAL_OFFSET(ObjectBlock, worldFromObject), AERIAL_OFFSET(ObjectBlock, normalFromObject),
+                  AERIAL_OFFSET(ObjectBlock, albedo), AERIAL_OFFSET(ObjectBlock, opacity),
+                  AERIAL_OFFSET(ObjectBlock, emission), AERIAL_OFFSET(ObjectBlock, specularFactor),
+                  AERIAL_OFFSET(ObjectBlock, metallic), AERIAL_OFFSET(ObjectBlock, roughness),
+                  AERIAL_OFFSET(ObjectBlock, alphaCutoff), AERIAL_OFFSET(ObjectBlock, alphaMode),
+                  AERIAL_OFFSET(ObjectBlock, baseColourTextured), AERIAL_OFFSET(ObjectBlock, boundsMin),
+                  AERIAL_OFFSET(ObjectBlock, boundsMax), AERIAL_OFFSET(ObjectBlock, cornerFog)},
+                 sizeof(ObjectBlock));
+}
+
+}  // namespace
+}  // namespace aerial::test
