@@ -51,10 +51,10 @@ std::string lowerExtension(const std::string& path) {
 }  // namespace
 
 void Editor::askUnsaved(Pending action, std::string path) {
-    pending_ = action;
-    pendingPath_ = std::move(path);
+    dialogs_.pending = action;
+    dialogs_.pendingPath = std::move(path);
     if (doc_.dirty())
-        openUnsavedModal_ = true;
+        dialogs_.openUnsavedModal = true;
     else
         runPending();
 }
@@ -63,9 +63,10 @@ void Editor::requestNew() { askUnsaved(Pending::New, {}); }
 
 void Editor::requestOpen(const std::string& path) {
     if (path.empty()) {
-        dialogPurpose_ = DialogPurpose::Open;
-        fileDialog_.open("Open preset", FileDialog::Mode::Open, {".json"},
-                         doc_.path().empty() ? std::string() : fs::path(doc_.path()).parent_path().string());
+        dialogs_.purpose = DialogPurpose::Open;
+        dialogs_.fileDialog.open(
+            "Open preset", FileDialog::Mode::Open, {".json"},
+            doc_.path().empty() ? std::string() : fs::path(doc_.path()).parent_path().string());
         return;
     }
     askUnsaved(Pending::Open, path);
@@ -74,9 +75,9 @@ void Editor::requestOpen(const std::string& path) {
 void Editor::requestQuit() { askUnsaved(Pending::Quit, {}); }
 
 void Editor::runPending() {
-    const Pending action = pending_;
-    pending_ = Pending::None;
-    continueAfterSave_ = false;
+    const Pending action = dialogs_.pending;
+    dialogs_.pending = Pending::None;
+    dialogs_.continueAfterSave = false;
     switch (action) {
         case Pending::None:
         case Pending::OpenRecovery:
@@ -84,12 +85,12 @@ void Editor::runPending() {
         case Pending::New:
             doc_.reset(defaultPreset());
             select({Selection::Kind::Fog, -1});
-            selectedParam_.reset();
-            selectedKey_ = -1;
+            edit_.selectedParam.reset();
+            edit_.selectedKey = -1;
             setStatus("New preset (the built-in default)");
             break;
         case Pending::Open:
-            openPreset(pendingPath_);
+            openPreset(dialogs_.pendingPath);
             break;
         case Pending::Quit:
             quit_ = true;
@@ -110,8 +111,8 @@ bool Editor::openPreset(const std::string& path) {
     }
     recent_.add(path);
     select({Selection::Kind::Fog, -1});
-    selectedParam_.reset();
-    selectedKey_ = -1;
+    edit_.selectedParam.reset();
+    edit_.selectedKey = -1;
     std::string status = "Opened " + path;
     if (!result.warnings.empty()) {
         status += " (";
@@ -142,10 +143,10 @@ void Editor::saveOrSaveAs(bool forceDialog) {
         savePresetTo(doc_.path());
         return;
     }
-    dialogPurpose_ = DialogPurpose::SaveAs;
+    dialogs_.purpose = DialogPurpose::SaveAs;
     std::string start = doc_.path();
     if (start.empty()) start = (fs::current_path() / "untitled.json").string();
-    fileDialog_.open("Save preset as", FileDialog::Mode::Save, {".json"}, start);
+    dialogs_.fileDialog.open("Save preset as", FileDialog::Mode::Save, {".json"}, start);
 }
 
 bool Editor::loadScene(const std::string& path) {
@@ -154,9 +155,9 @@ bool Editor::loadScene(const std::string& path) {
         showError("Cannot load the scene " + path + ":", loaded.error);
         return false;
     }
-    renderer_->setScene(loaded.scene);
-    lastRenderSignature_.clear();
-    scenePath_ = path;
+    view_.renderer->setScene(loaded.scene);
+    view_.lastRenderSignature.clear();
+    view_.scenePath = path;
     // Frame the scene: the bounds of every vertex in world space.
     glm::dvec3 lo(1e300), hi(-1e300);
     for (const renderer::SceneMesh& mesh : loaded.scene.meshes)
@@ -165,9 +166,9 @@ bool Editor::loadScene(const std::string& path) {
             lo = glm::min(lo, w);
             hi = glm::max(hi, w);
         }
-    if (hi.x >= lo.x && viewportSize_.y > 0.0)
-        camera_.frame((lo + hi) * 0.5, std::max(0.5 * glm::length(hi - lo), 0.5),
-                      viewportSize_.x / viewportSize_.y);
+    if (hi.x >= lo.x && view_.size.y > 0.0)
+        view_.camera.frame((lo + hi) * 0.5, std::max(0.5 * glm::length(hi - lo), 0.5),
+                           view_.size.x / view_.size.y);
     std::string status = "Loaded scene " + path;
     if (!loaded.warnings.empty()) {
         status += " (";
@@ -180,7 +181,7 @@ bool Editor::loadScene(const std::string& path) {
 
 void Editor::handleDrops() {
     std::vector<std::string> drops;
-    drops.swap(drops_);
+    drops.swap(dialogs_.drops);
     for (const std::string& path : drops) {
         const std::string ext = lowerExtension(path);
         if (ext == ".json")
@@ -193,15 +194,15 @@ void Editor::handleDrops() {
 }
 
 void Editor::drawFileDialogs() {
-    const bool wasOpen = fileDialog_.isOpen();
-    if (fileDialog_.draw()) {
-        const std::string path = fileDialog_.result();
-        switch (dialogPurpose_) {
+    const bool wasOpen = dialogs_.fileDialog.isOpen();
+    if (dialogs_.fileDialog.draw()) {
+        const std::string path = dialogs_.fileDialog.result();
+        switch (dialogs_.purpose) {
             case DialogPurpose::Open:
                 askUnsaved(Pending::Open, path);
                 break;
             case DialogPurpose::SaveAs:
-                if (savePresetTo(path) && continueAfterSave_) runPending();
+                if (savePresetTo(path) && dialogs_.continueAfterSave) runPending();
                 break;
             case DialogPurpose::Scene:
                 loadScene(path);
@@ -220,14 +221,14 @@ void Editor::drawFileDialogs() {
             case DialogPurpose::None:
                 break;
         }
-        dialogPurpose_ = DialogPurpose::None;
-    } else if (wasOpen && !fileDialog_.isOpen()) {
+        dialogs_.purpose = DialogPurpose::None;
+    } else if (wasOpen && !dialogs_.fileDialog.isOpen()) {
         // Cancelled: a Save As from the unsaved-changes prompt cancels what it guarded.
-        if (continueAfterSave_) {
-            continueAfterSave_ = false;
-            pending_ = Pending::None;
+        if (dialogs_.continueAfterSave) {
+            dialogs_.continueAfterSave = false;
+            dialogs_.pending = Pending::None;
         }
-        dialogPurpose_ = DialogPurpose::None;
+        dialogs_.purpose = DialogPurpose::None;
     }
     if (export_.done()) {
         if (export_.succeeded())
@@ -239,20 +240,20 @@ void Editor::drawFileDialogs() {
 }
 
 void Editor::recover(bool accept) {
-    if (!recovery_) return;
+    if (!dialogs_.recovery) return;
     if (accept) {
-        doc_.reset(recovery_->preset, recovery_->documentPath);
+        doc_.reset(dialogs_.recovery->preset, dialogs_.recovery->documentPath);
         doc_.markDirty();
         select({Selection::Kind::Fog, -1});
-        selectedParam_.reset();
-        setStatus("Recovered unsaved work from " + recovery_->recoveryFile);
+        edit_.selectedParam.reset();
+        setStatus("Recovered unsaved work from " + dialogs_.recovery->recoveryFile);
         std::fprintf(stderr, "aerial-editor: recovered unsaved work from %s\n",
-                     recovery_->recoveryFile.c_str());
+                     dialogs_.recovery->recoveryFile.c_str());
     } else {
         setStatus("Discarded the unsaved work of the crashed session");
     }
-    Autosave::discard(*recovery_);
-    recovery_.reset();
+    Autosave::discard(*dialogs_.recovery);
+    dialogs_.recovery.reset();
 }
 
 void Editor::startExport(const std::string& directory) {

@@ -67,7 +67,7 @@ bool lightningOnly(std::string_view key) {
 
 void Editor::editParam(const ParamRef& ref, const double value[4], bool continuous) {
     const std::string address = paramAddress(ref);
-    const double time = timeHours_;
+    const double time = playback_.timeHours;
     const bool animated = trackOf(doc_.preset(), ref) != nullptr;
     std::string label(ref.desc->label);
     if (animated) label += " (key)";
@@ -78,7 +78,7 @@ void Editor::editParam(const ParamRef& ref, const double value[4], bool continuo
 bool Editor::keyButton(const ParamRef& ref) {
     const float size = ImGui::GetFrameHeight();
     const Track* track = trackOf(doc_.preset(), ref);
-    const int keyHere = track ? keyIndexAt(*track, timeHours_) : -1;
+    const int keyHere = track ? keyIndexAt(*track, playback_.timeHours) : -1;
     const bool clicked = ImGui::InvisibleButton("##key", ImVec2(size * 0.8f, size));
     const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
     const ImVec2 c((lo.x + hi.x) * 0.5f, (lo.y + hi.y) * 0.5f);
@@ -99,16 +99,16 @@ bool Editor::keyButton(const ParamRef& ref) {
                                 : track      ? "Add a key at this time (the parameter is animated)"
                                              : "Animate: add a key at this time");
     if (clicked) {
-        const double time = timeHours_;
+        const double time = playback_.timeHours;
         if (keyHere >= 0) {
             const TrackTarget target = trackTargetOf(doc_.preset(), ref);
             doc_.apply("Remove key", "", [&](Preset& p) { removeKey(p, target, keyHere); });
         } else {
             doc_.apply("Add key", "", [&](Preset& p) { keyParam(p, ref, time); });
         }
-        selectedParam_ = ref;
+        edit_.selectedParam = ref;
         const Track* after = trackOf(doc_.preset(), ref);
-        selectedKey_ = after ? keyIndexAt(*after, time) : -1;
+        edit_.selectedKey = after ? keyIndexAt(*after, time) : -1;
     }
     return clicked;
 }
@@ -123,9 +123,9 @@ void Editor::drawParam(const ParamRef& ref) {
     ImGui::SameLine(0.0f, 4.0f);
     const std::string label = labelOf(p);
     double v[4];
-    readValueAt(doc_.preset(), ref, timeHours_, v);
+    readValueAt(doc_.preset(), ref, playback_.timeHours, v);
     const bool animated = trackOf(doc_.preset(), ref) != nullptr;
-    const bool selected = selectedParam_ && *selectedParam_ == ref;
+    const bool selected = edit_.selectedParam && *edit_.selectedParam == ref;
     if (animated) ImGui::PushStyleColor(ImGuiCol_FrameBg, ImVec4(0.35f, 0.27f, 0.10f, 0.8f));
     if (selected) ImGui::PushStyleColor(ImGuiCol_Border, ImVec4(0.95f, 0.75f, 0.25f, 1.0f));
     if (selected) ImGui::PushStyleVar(ImGuiStyleVar_FrameBorderSize, 1.0f);
@@ -200,8 +200,8 @@ void Editor::drawParam(const ParamRef& ref) {
     if (selected) ImGui::PopStyleColor();
     if (animated) ImGui::PopStyleColor();
     if (p.animatable && (ImGui::IsItemActivated() || ImGui::IsItemClicked())) {
-        if (!(selectedParam_ && *selectedParam_ == ref)) selectedKey_ = -1;
-        selectedParam_ = ref;
+        if (!(edit_.selectedParam && *edit_.selectedParam == ref)) edit_.selectedKey = -1;
+        edit_.selectedParam = ref;
     }
     if (changed) editParam(ref, v, continuous);
     if (ImGui::IsItemDeactivated()) doc_.closeMerge();
@@ -228,14 +228,15 @@ void Editor::drawInspector() {
     if (ImGui::Button("Key all changed")) {
         int count = 0;
         const Preset baseline = doc_.baseline();
-        doc_.apply("Key all changed", "", [&](Preset& p) { count = keyAllChanged(p, baseline, timeHours_); });
+        doc_.apply("Key all changed", "",
+                   [&](Preset& p) { count = keyAllChanged(p, baseline, playback_.timeHours); });
         setStatus(std::to_string(count) + " keys set");
     }
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Key every animatable parameter whose value here differs from the saved preset");
     ImGui::Separator();
 
-    switch (selection_.kind) {
+    switch (edit_.selection.kind) {
         case Selection::Kind::None:
             ImGui::TextDisabled("Nothing selected.");
             ImGui::TextWrapped(
@@ -244,7 +245,7 @@ void Editor::drawInspector() {
         case Selection::Kind::Atmosphere:
         case Selection::Kind::Lights:
         case Selection::Kind::Fog: {
-            if (selection_.kind == Selection::Kind::Atmosphere) {
+            if (edit_.selection.kind == Selection::Kind::Atmosphere) {
                 std::string name = preset.name, description = preset.description;
                 if (ImGui::InputText("Preset name", &name))
                     doc_.apply("Rename preset", "preset-name", [&](Preset& p) { p.name = name; });
@@ -257,7 +258,7 @@ void Editor::drawInspector() {
             }
             std::string section;
             for (const ParamDesc& p : paramTable(ParamScope::Global)) {
-                if (globalGroup(p) != selection_.kind) continue;
+                if (globalGroup(p) != edit_.selection.kind) continue;
                 const std::string s = sectionOf(p);
                 if (s != section) {
                     section = s;
@@ -267,15 +268,16 @@ void Editor::drawInspector() {
                 }
                 drawParam({&p, -1});
             }
-            if (selection_.kind == Selection::Kind::Lights) {
+            if (edit_.selection.kind == Selection::Kind::Lights) {
                 ImGui::Spacing();
                 ImGui::TextDisabled("Now");
                 ImGui::Separator();
                 ImGui::Text("Sun elevation %.2f deg, azimuth %.1f deg",
-                            state_.sunLight.body.elevation * kDegrees,
-                            state_.sunLight.body.azimuth * kDegrees);
-                ImGui::Text("Moon elevation %.2f deg, lit %.0f%%", state_.moonLight.body.elevation * kDegrees,
-                            state_.moonLight.body.illuminatedFraction * 100.0);
+                            sky_.state.sunLight.body.elevation * kDegrees,
+                            sky_.state.sunLight.body.azimuth * kDegrees);
+                ImGui::Text("Moon elevation %.2f deg, lit %.0f%%",
+                            sky_.state.moonLight.body.elevation * kDegrees,
+                            sky_.state.moonLight.body.illuminatedFraction * 100.0);
                 const Location& where = preset.environment.location;
                 const double rise = sunriseHours(where), set = 24.0 - rise;
                 ImGui::Text("Sunrise %02d:%02d, sunset %02d:%02d, day %.1f h", int(rise),
@@ -286,9 +288,9 @@ void Editor::drawInspector() {
         }
         case Selection::Kind::Volume:
         case Selection::Kind::Emitter: {
-            const bool volume = selection_.kind == Selection::Kind::Volume;
+            const bool volume = edit_.selection.kind == Selection::Kind::Volume;
             const ParamScope scope = volume ? ParamScope::Volume : ParamScope::Emitter;
-            const int index = selection_.index;
+            const int index = edit_.selection.index;
             if (index < 0 || index >= int(volume ? preset.volumes.size() : preset.emitters.size())) break;
             std::string name =
                 volume ? preset.volumes[std::size_t(index)].name : preset.emitters[std::size_t(index)].name;
@@ -311,7 +313,7 @@ void Editor::drawInspector() {
             if (lightning) {
                 ImGui::Spacing();
                 ImGui::Text("Flash now: %.2f",
-                            lightningFlash(preset.emitters[std::size_t(index)], timeHours_));
+                            lightningFlash(preset.emitters[std::size_t(index)], playback_.timeHours));
             }
             ImGui::Spacing();
             if (ImGui::Button("Duplicate")) duplicateSelection();

@@ -38,7 +38,7 @@ void Editor::drawOutliner() {
         std::min(ImGui::GetContentRegionAvail().x, 150.0f) + ImGui::GetTextLineHeightWithSpacing();
     ImGui::BeginChild("##outliner", ImVec2(0, -previewHeight), false);
     auto item = [&](const char* label, Selection s) {
-        if (ImGui::Selectable(label, selection_ == s)) select(s);
+        if (ImGui::Selectable(label, edit_.selection == s)) select(s);
     };
     item("Atmosphere", {Selection::Kind::Atmosphere, -1});
     item("Sun & moon", {Selection::Kind::Lights, -1});
@@ -68,28 +68,28 @@ void Editor::drawOutliner() {
             const std::string& name = volume ? preset.volumes[i].name : preset.emitters[i].name;
             const Selection s{kind, int(i)};
             ImGui::PushID(id.c_str());
-            if (renaming_ && selection_ == s) {
+            if (edit_.renaming && edit_.selection == s) {
                 ImGui::SetNextItemWidth(-1.0f);
                 if (ImGui::IsWindowAppearing() || !ImGui::IsAnyItemActive()) ImGui::SetKeyboardFocusHere();
                 if (ImGui::InputText(
-                        "##rename", &renameBuffer_,
+                        "##rename", &edit_.renameBuffer,
                         ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll)) {
-                    const std::string newName = renameBuffer_;
+                    const std::string newName = edit_.renameBuffer;
                     const int index = int(i);
                     doc_.apply("Rename", "", [&](Preset& p) { renameObject(p, scope, index, newName); });
-                    renaming_ = false;
+                    edit_.renaming = false;
                 } else if (ImGui::IsItemDeactivated() || ImGui::IsKeyPressed(GLFW_KEY_ESCAPE)) {
-                    renaming_ = false;
+                    edit_.renaming = false;
                 }
             } else {
                 std::string label = name.empty() ? id : name;
                 if (hasTracks(preset, scope, id)) label += "  ~";
-                if (ImGui::Selectable(label.c_str(), selection_ == s,
+                if (ImGui::Selectable(label.c_str(), edit_.selection == s,
                                       ImGuiSelectableFlags_AllowDoubleClick)) {
                     select(s);
                     if (ImGui::IsMouseDoubleClicked(0)) {
-                        renaming_ = true;
-                        renameBuffer_ = name;
+                        edit_.renaming = true;
+                        edit_.renameBuffer = name;
                     }
                 }
                 if (ImGui::IsItemHovered())
@@ -99,8 +99,8 @@ void Editor::drawOutliner() {
                 if (ImGui::BeginPopupContextItem()) {
                     select(s);
                     if (ImGui::MenuItem("Rename")) {
-                        renaming_ = true;
-                        renameBuffer_ = name;
+                        edit_.renaming = true;
+                        edit_.renameBuffer = name;
                     }
                     if (ImGui::MenuItem("Duplicate", "Ctrl+D")) duplicateSelection();
                     if (ImGui::MenuItem("Delete", "Del")) deleteSelection();
@@ -127,20 +127,20 @@ void Editor::drawOutliner() {
 
 void Editor::updateSkyPreview() {
     char settings[160];
-    std::snprintf(settings, sizeof settings, "%s|%s|%.6f", displayName_.c_str(), viewName_.c_str(),
-                  exposureEv_);
-    if (skyPreviewTexture_ && skyPreviewGeneration_ == skyGeneration_ && skyPreviewSettings_ == settings)
+    std::snprintf(settings, sizeof settings, "%s|%s|%.6f", view_.displayName.c_str(), view_.viewName.c_str(),
+                  view_.exposureEv);
+    if (skyPreview_.texture && skyPreview_.generation == sky_.generation && skyPreview_.settings == settings)
         return;
     // While scrubbing, refresh every 4th frame: the preview is small and the viewport matters more.
-    if (skyPreviewTexture_ && skyPreviewSettings_ == settings && (frameIndex_ % 4) != 0) return;
+    if (skyPreview_.texture && skyPreview_.settings == settings && (frames_.frameIndex % 4) != 0) return;
     const int n = kSkyPreviewSize;
     renderer::Image image;
     image.width = image.height = n;
     image.channels = 4;
     image.pixels.assign(std::size_t(n) * std::size_t(n) * 4, 0.0f);
-    const double g = state_.environment.atmosphere.mieAnisotropy;
-    const SkyTable& sun = sunSolver_->table();
-    const SkyTable& moon = moonSolver_->table();
+    const double g = sky_.state.environment.atmosphere.mieAnisotropy;
+    const SkyTable& sun = sky_.sunSolver->table();
+    const SkyTable& moon = sky_.moonSolver->table();
     for (int y = 0; y < n; ++y)
         for (int x = 0; x < n; ++x) {
             const double u = (x + 0.5) / n * 2.0 - 1.0, v = (y + 0.5) / n * 2.0 - 1.0;
@@ -156,45 +156,45 @@ void Editor::updateSkyPreview() {
             const glm::dvec3 dir(std::cos(elevation) * std::sin(azimuth), std::sin(elevation),
                                  -std::cos(elevation) * std::cos(azimuth));
             glm::dvec3 L(0.0);
-            if (sun.generation > 0) L += skyRadiance(sun, g, dir, state_.sunLight.illuminanceSpace);
-            if (moon.generation > 0) L += skyRadiance(moon, g, dir, state_.moonLight.illuminanceSpace);
+            if (sun.generation > 0) L += skyRadiance(sun, g, dir, sky_.state.sunLight.illuminanceSpace);
+            if (moon.generation > 0) L += skyRadiance(moon, g, dir, sky_.state.moonLight.illuminanceSpace);
             px[0] = float(L.x), px[1] = float(L.y), px[2] = float(L.z), px[3] = 1.0f;
         }
-    const renderer::Image shown = display_->applyCpu(image);
+    const renderer::Image shown = view_.display->applyCpu(image);
     std::vector<std::uint8_t> bytes(std::size_t(n) * std::size_t(n) * 4);
     for (std::size_t i = 0; i < bytes.size(); ++i) {
         const float c =
             i % 4 == 3 ? image.pixels[i] : (shown.pixels.size() == bytes.size() ? shown.pixels[i] : 0.0f);
         bytes[i] = std::uint8_t(std::lround(std::clamp(c, 0.0f, 1.0f) * 255.0f));
     }
-    if (!skyPreviewTexture_) {
-        glCreateTextures(GL_TEXTURE_2D, 1, &skyPreviewTexture_);
-        glTextureStorage2D(skyPreviewTexture_, 1, GL_RGBA8, n, n);
-        glTextureParameteri(skyPreviewTexture_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-        glTextureParameteri(skyPreviewTexture_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    if (!skyPreview_.texture) {
+        glCreateTextures(GL_TEXTURE_2D, 1, &skyPreview_.texture);
+        glTextureStorage2D(skyPreview_.texture, 1, GL_RGBA8, n, n);
+        glTextureParameteri(skyPreview_.texture, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTextureParameteri(skyPreview_.texture, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     }
     GLint alignment = 4;
     glGetIntegerv(GL_UNPACK_ALIGNMENT, &alignment);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTextureSubImage2D(skyPreviewTexture_, 0, 0, 0, n, n, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
+    glTextureSubImage2D(skyPreview_.texture, 0, 0, 0, n, n, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
     glPixelStorei(GL_UNPACK_ALIGNMENT, alignment);
-    skyPreviewGeneration_ = skyGeneration_;
-    skyPreviewSettings_ = settings;
+    skyPreview_.generation = sky_.generation;
+    skyPreview_.settings = settings;
 }
 
 void Editor::drawSkyPreview() {
     updateSkyPreview();
     ImGui::TextDisabled("Sky preview");
     const float size = std::min(ImGui::GetContentRegionAvail().x, 150.0f);
-    if (size < 8.0f || !skyPreviewTexture_) return;
+    if (size < 8.0f || !skyPreview_.texture) return;
     ImGui::SetCursorPosX(ImGui::GetCursorPosX() + (ImGui::GetContentRegionAvail().x - size) * 0.5f);
-    ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(skyPreviewTexture_)),
+    ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(skyPreview_.texture)),
                  ImVec2(size, size));
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip(
             "The sun's and the moon's sky tables with the per-pixel phase functions\n"
             "(zenith in the centre, horizon on the rim). Sky solve %.2f ms.",
-            skySolveMs_);
+            sky_.solveMs);
 }
 
 }  // namespace aerial::editor

@@ -87,34 +87,34 @@ int valueCount(const ParamDesc& p) {
 }  // namespace
 
 void Editor::stepScript() {
-    if (frameIndex_ < 2) return;  // the first frames lay out the window and render once
-    if (scriptWait_ > 0) {
-        --scriptWait_;
+    if (frames_.frameIndex < 2) return;  // the first frames lay out the window and render once
+    if (runner_.waitFrames > 0) {
+        --runner_.waitFrames;
         return;
     }
-    if (scriptWaitsForMouse_) {
-        if (!scriptedMouse_.empty() || scriptedMouseActive_) return;
-        scriptWaitsForMouse_ = false;
+    if (runner_.waitsForMouse) {
+        if (!view_.scriptedMouse.empty() || view_.scriptedMouseActive) return;
+        runner_.waitsForMouse = false;
     }
-    if (!scriptTimes_.empty()) {
-        timeHours_ = scriptTimes_.front();
-        scriptTimes_.pop_front();
+    if (!runner_.times.empty()) {
+        playback_.timeHours = runner_.times.front();
+        runner_.times.pop_front();
         return;
     }
-    if (scriptWaitsForAutosave_) {
-        if (autosave_ && autosave_->writes() > scriptAutosaveWrites_) {
-            scriptWaitsForAutosave_ = false;
+    if (runner_.waitsForAutosave) {
+        if (autosave_ && autosave_->writes() > runner_.autosaveWrites) {
+            runner_.waitsForAutosave = false;
             std::printf("autosaved %s\n", autosave_->recoveryFile().c_str());
             std::fflush(stdout);
         }
         return;
     }
     if (export_.running()) return;
-    if (scriptIndex_ >= script_.size()) {
+    if (runner_.next >= runner_.commands.size()) {
         quit_ = true;
         return;
     }
-    const ScriptCommand& command = script_[scriptIndex_++];
+    const ScriptCommand& command = runner_.commands[runner_.next++];
     std::string error;
     if (!runScriptCommand(command, error)) {
         std::fprintf(stderr, "aerial-editor: %s:%d: %s\n", options_.script.c_str(), command.line,
@@ -132,9 +132,9 @@ void Editor::queueGizmoDrag(GizmoMode mode, int axis, glm::dvec2 deltaPx, int st
         error = "gizmo_drag: select a volume or an emitter first";
         return;
     }
-    gizmoMode_ = mode;
+    view_.gizmoMode = mode;
     const renderer::CameraFrame frame = viewportCameraFrame();
-    const std::optional<glm::dvec2> centre = projectToViewport(frame, viewportSize_, transform.position);
+    const std::optional<glm::dvec2> centre = projectToViewport(frame, view_.size, transform.position);
     if (!centre) {
         error = "gizmo_drag: the selection is behind the camera";
         return;
@@ -142,14 +142,14 @@ void Editor::queueGizmoDrag(GizmoMode mode, int axis, glm::dvec2 deltaPx, int st
     // Find a pixel on the wanted handle: search outwards from the centre.
     const GizmoHandle wanted = GizmoHandle(axis);
     std::optional<glm::dvec2> press;
-    const double reach = gizmo_.sizePx * 1.6;
+    const double reach = view_.gizmo.sizePx * 1.6;
     for (double r = 0.0; r <= reach && !press; r += 2.0) {
         const int samples = std::max(1, int(r * 0.8));
         for (int i = 0; i < samples && !press; ++i) {
             const double a = 2.0 * kPi * i / samples;
             const glm::dvec2 p = *centre + r * glm::dvec2(std::cos(a), std::sin(a));
-            if (p.x < 1 || p.y < 1 || p.x > viewportSize_.x - 1 || p.y > viewportSize_.y - 1) continue;
-            if (gizmo_.hitTest(frame, viewportSize_, p, mode, gizmoSpace_, transform) == wanted &&
+            if (p.x < 1 || p.y < 1 || p.x > view_.size.x - 1 || p.y > view_.size.y - 1) continue;
+            if (view_.gizmo.hitTest(frame, view_.size, p, mode, view_.gizmoSpace, transform) == wanted &&
                 (r > 6.0 || wanted == GizmoHandle::Centre))
                 press = p;
         }
@@ -159,12 +159,12 @@ void Editor::queueGizmoDrag(GizmoMode mode, int axis, glm::dvec2 deltaPx, int st
         return;
     }
     steps = std::max(1, steps);
-    scriptedMouse_.push_back({*press, true, true, false});
+    view_.scriptedMouse.push_back({*press, true, true, false});
     for (int k = 1; k <= steps; ++k)
-        scriptedMouse_.push_back({*press + deltaPx * (double(k) / steps), true, false, false});
-    scriptedMouse_.push_back({*press + deltaPx, false, false, true});
-    scriptedMouseActive_ = true;
-    scriptWaitsForMouse_ = true;
+        view_.scriptedMouse.push_back({*press + deltaPx * (double(k) / steps), true, false, false});
+    view_.scriptedMouse.push_back({*press + deltaPx, false, false, true});
+    view_.scriptedMouseActive = true;
+    runner_.waitsForMouse = true;
     std::printf("gizmo_drag: press at %.1f %.1f, %d moves\n", press->x, press->y, steps);
     ok = true;
 }
@@ -188,14 +188,14 @@ bool Editor::runScriptCommand(const ScriptCommand& command, std::string& error) 
 
     if (name == "new") {
         if (!need(0, 0, "new")) return false;
-        pending_ = Pending::New;
+        dialogs_.pending = Pending::New;
         runPending();
         return true;
     }
     if (name == "open") {
         if (!need(1, 1, "open PATH")) return false;
         if (!openPreset(w[1])) {
-            error = "open " + w[1] + " failed:\n" + errorText_;
+            error = "open " + w[1] + " failed:\n" + dialogs_.errorText;
             return false;
         }
         return true;
@@ -212,7 +212,7 @@ bool Editor::runScriptCommand(const ScriptCommand& command, std::string& error) 
             error = "open_expect_error: the document changed";
             return false;
         }
-        std::printf("load error shown:\n%s", errorText_.c_str());
+        std::printf("load error shown:\n%s", dialogs_.errorText.c_str());
         return true;
     }
     if (name == "save") {
@@ -223,20 +223,20 @@ bool Editor::runScriptCommand(const ScriptCommand& command, std::string& error) 
             return false;
         }
         if (!savePresetTo(path)) {
-            error = "save failed: " + errorText_;
+            error = "save failed: " + dialogs_.errorText;
             return false;
         }
         return true;
     }
     if (name == "drop") {
         if (!need(1, 1, "drop PATH")) return false;
-        drops_.push_back(w[1]);
+        dialogs_.drops.push_back(w[1]);
         return true;
     }
     if (name == "load_scene") {
         if (!need(1, 1, "load_scene PATH")) return false;
         if (!loadScene(w[1])) {
-            error = errorText_;
+            error = dialogs_.errorText;
             return false;
         }
         return true;
@@ -244,15 +244,17 @@ bool Editor::runScriptCommand(const ScriptCommand& command, std::string& error) 
     if (name == "screenshot") {
         if (!need(1, 1, "screenshot PATH.png|PATH.exr")) return false;
         if (!screenshot(w[1], error)) return false;
-        std::printf("screenshot %s %dx%d\n", w[1].c_str(), int(std::lround(viewportSize_.x)),
-                    int(std::lround(viewportSize_.y)));
-        if (selection_.kind == Selection::Kind::Volume && selection_.index < int(state_.volumes.size())) {
+        std::printf("screenshot %s %dx%d\n", w[1].c_str(), int(std::lround(view_.size.x)),
+                    int(std::lround(view_.size.y)));
+        if (edit_.selection.kind == Selection::Kind::Volume &&
+            edit_.selection.index < int(sky_.state.volumes.size())) {
             // The selected volume's projected bounds in the screenshot's pixels.
             const renderer::CameraFrame frame = viewportCameraFrame();
             glm::dvec2 lo(1e30), hi(-1e30);
-            for (const WorldSegment& s : volumeOutlineSegments(state_.volumes[std::size_t(selection_.index)]))
+            for (const WorldSegment& s :
+                 volumeOutlineSegments(sky_.state.volumes[std::size_t(edit_.selection.index)]))
                 for (const glm::dvec3& p : {s.first, s.second})
-                    if (std::optional<glm::dvec2> q = projectToViewport(frame, viewportSize_, p)) {
+                    if (std::optional<glm::dvec2> q = projectToViewport(frame, view_.size, p)) {
                         lo = glm::min(lo, *q);
                         hi = glm::max(hi, *q);
                     }
@@ -263,11 +265,11 @@ bool Editor::runScriptCommand(const ScriptCommand& command, std::string& error) 
     }
     if (name == "answer") {
         if (!need(1, 1, "answer save|discard|cancel")) return false;
-        if (!unsavedPromptOpen_ && !openUnsavedModal_) {
+        if (!dialogs_.unsavedPromptOpen && !dialogs_.openUnsavedModal) {
             error = "answer: no unsaved-changes prompt is open";
             return false;
         }
-        openUnsavedModal_ = false;
+        dialogs_.openUnsavedModal = false;
         if (w[1] == "save")
             resolveUnsaved(UnsavedChoice::Save);
         else if (w[1] == "discard")
@@ -292,12 +294,12 @@ bool Editor::runScriptCommand(const ScriptCommand& command, std::string& error) 
     if (name == "dialog_submit") {
         // The open file dialog (Open, Save As, ...) confirmed with PATH.
         if (!need(1, 1, "dialog_submit PATH")) return false;
-        if (!fileDialog_.isOpen()) {
+        if (!dialogs_.fileDialog.isOpen()) {
             error = "dialog_submit: no file dialog is open";
             return false;
         }
-        if (!fileDialog_.submit(w[1])) {
-            error = "dialog_submit: " + fileDialog_.error();
+        if (!dialogs_.fileDialog.submit(w[1])) {
+            error = "dialog_submit: " + dialogs_.fileDialog.error();
             return false;
         }
         return true;
@@ -308,7 +310,7 @@ bool Editor::runScriptCommand(const ScriptCommand& command, std::string& error) 
         return true;
     }
     if (name == "expect_prompt" || name == "expect_no_prompt") {
-        const bool open = unsavedPromptOpen_ || openUnsavedModal_;
+        const bool open = dialogs_.unsavedPromptOpen || dialogs_.openUnsavedModal;
         if (open != (name == "expect_prompt")) {
             error = std::string("the unsaved-changes prompt is ") + (open ? "open" : "not open");
             return false;
@@ -325,7 +327,7 @@ bool Editor::runScriptCommand(const ScriptCommand& command, std::string& error) 
     }
     if (name == "window_screenshot") {
         if (!need(1, 1, "window_screenshot PATH.png")) return false;
-        windowShotPath_ = w[1];
+        runner_.windowShotPath = w[1];
         return true;
     }
     if (name == "export") {
@@ -391,7 +393,7 @@ bool Editor::runScriptCommand(const ScriptCommand& command, std::string& error) 
     }
     if (name == "delete" || name == "duplicate" || name == "frame") {
         if (!need(0, 0, "delete|duplicate|frame")) return false;
-        if (!objectSelected()) {
+        if (!edit_.objectSelected()) {
             error = name + ": select a volume or an emitter first";
             return false;
         }
@@ -402,13 +404,13 @@ bool Editor::runScriptCommand(const ScriptCommand& command, std::string& error) 
     }
     if (name == "rename") {
         if (!need(1, 1, "rename NAME")) return false;
-        if (!objectSelected()) {
+        if (!edit_.objectSelected()) {
             error = "rename: select a volume or an emitter first";
             return false;
         }
         const ParamScope scope =
-            selection_.kind == Selection::Kind::Volume ? ParamScope::Volume : ParamScope::Emitter;
-        const int index = selection_.index;
+            edit_.selection.kind == Selection::Kind::Volume ? ParamScope::Volume : ParamScope::Emitter;
+        const int index = edit_.selection.index;
         doc_.apply("Rename", "", [&](Preset& p) { renameObject(p, scope, index, w[1]); });
         return true;
     }
@@ -441,7 +443,7 @@ bool Editor::runScriptCommand(const ScriptCommand& command, std::string& error) 
                 }
         }
         editParam(*ref, v, false);
-        selectedParam_ = ref;
+        edit_.selectedParam = ref;
         return true;
     }
     if (name == "key" || name == "unkey") {
@@ -452,7 +454,7 @@ bool Editor::runScriptCommand(const ScriptCommand& command, std::string& error) 
             error = w[1] + " is not animatable";
             return false;
         }
-        const double t = timeHours_;
+        const double t = playback_.timeHours;
         if (name == "key") {
             doc_.apply("Add key", "", [&](Preset& p) { keyParam(p, *ref, t); });
         } else {
@@ -465,7 +467,7 @@ bool Editor::runScriptCommand(const ScriptCommand& command, std::string& error) 
             const TrackTarget target = trackTargetOf(doc_.preset(), *ref);
             doc_.apply("Remove key", "", [&](Preset& p) { removeKey(p, target, index); });
         }
-        selectedParam_ = ref;
+        edit_.selectedParam = ref;
         return true;
     }
     if (name == "copy_key" || name == "paste_key") {
@@ -473,7 +475,7 @@ bool Editor::runScriptCommand(const ScriptCommand& command, std::string& error) 
         if (!need(1, 1, "copy_key|paste_key KEY")) return false;
         const std::optional<ParamRef> ref = param(w[1]);
         if (!ref) return false;
-        const double t = timeHours_;
+        const double t = playback_.timeHours;
         if (name == "copy_key") {
             const Track* track = trackOf(doc_.preset(), *ref);
             const int index = track ? keyIndexAt(*track, t) : -1;
@@ -481,11 +483,11 @@ bool Editor::runScriptCommand(const ScriptCommand& command, std::string& error) 
                 error = "copy_key: no key of " + w[1] + " at this time";
                 return false;
             }
-            keyClipboard_ = {true, ref->desc->type, track->keys[std::size_t(index)].value};
+            edit_.keyClipboard = {true, ref->desc->type, track->keys[std::size_t(index)].value};
             return true;
         }
         bool ok = false;
-        const KeyClipboard clip = keyClipboard_;
+        const KeyClipboard clip = edit_.keyClipboard;
         doc_.apply("Paste key", "", [&](Preset& p) { ok = pasteKey(p, *ref, clip, t); });
         if (!ok) error = "paste_key: nothing copied, or a key of another kind";
         return ok;
@@ -537,7 +539,8 @@ bool Editor::runScriptCommand(const ScriptCommand& command, std::string& error) 
     if (name == "key_all_changed") {
         int count = 0;
         const Preset baseline = doc_.baseline();
-        doc_.apply("Key all changed", "", [&](Preset& p) { count = keyAllChanged(p, baseline, timeHours_); });
+        doc_.apply("Key all changed", "",
+                   [&](Preset& p) { count = keyAllChanged(p, baseline, playback_.timeHours); });
         std::printf("keyed %d parameters\n", count);
         return true;
     }
@@ -548,7 +551,7 @@ bool Editor::runScriptCommand(const ScriptCommand& command, std::string& error) 
             error = "time: \"" + w[1] + "\" is not HH:MM or hours in [0, 24]";
             return false;
         }
-        jumpTo(t);
+        playback_.jumpTo(t);
         return true;
     }
     if (name == "scrub") {
@@ -559,7 +562,7 @@ bool Editor::runScriptCommand(const ScriptCommand& command, std::string& error) 
             return false;
         }
         for (int k = 0; k <= int(frames); ++k)
-            scriptTimes_.push_back(std::min(from + (to - from) * k / frames, 24.0 - 1e-6));
+            runner_.times.push_back(std::min(from + (to - from) * k / frames, 24.0 - 1e-6));
         return true;
     }
     if (name == "play") {
@@ -569,13 +572,13 @@ bool Editor::runScriptCommand(const ScriptCommand& command, std::string& error) 
             error = "play: bad arguments";
             return false;
         }
-        playSpeed_ = speed;
-        playing_ = true;
-        scriptWait_ = int(frames);
+        playback_.speed = speed;
+        playback_.playing = true;
+        runner_.waitFrames = int(frames);
         return true;
     }
     if (name == "pause") {
-        playing_ = false;
+        playback_.playing = false;
         return true;
     }
     if (name == "gizmo_drag") {
@@ -619,10 +622,10 @@ bool Editor::runScriptCommand(const ScriptCommand& command, std::string& error) 
             error = "click: bad position";
             return false;
         }
-        scriptedMouse_.push_back({{x, y}, true, true, false});
-        scriptedMouse_.push_back({{x, y}, false, false, true});
-        scriptedMouseActive_ = true;
-        scriptWaitsForMouse_ = true;
+        view_.scriptedMouse.push_back({{x, y}, true, true, false});
+        view_.scriptedMouse.push_back({{x, y}, false, false, true});
+        view_.scriptedMouseActive = true;
+        runner_.waitsForMouse = true;
         return true;
     }
     if (name == "orbit") {
@@ -633,31 +636,31 @@ bool Editor::runScriptCommand(const ScriptCommand& command, std::string& error) 
             if (error.empty()) error = "orbit: bad arguments";
             return false;
         }
-        const glm::dvec2 start = viewportSize_ * 0.5;
+        const glm::dvec2 start = view_.size * 0.5;
         ScriptedMouse press{start, true, true, false, true};
-        scriptedMouse_.push_back(press);
+        view_.scriptedMouse.push_back(press);
         for (int k = 1; k <= int(frames); ++k)
-            scriptedMouse_.push_back(
+            view_.scriptedMouse.push_back(
                 {start + glm::dvec2(dx, dy) * (double(k) / frames), true, false, false, true});
-        scriptedMouse_.push_back({start + glm::dvec2(dx, dy), false, false, true, true});
-        scriptedMouseActive_ = true;
-        scriptWaitsForMouse_ = true;
+        view_.scriptedMouse.push_back({start + glm::dvec2(dx, dy), false, false, true, true});
+        view_.scriptedMouseActive = true;
+        runner_.waitsForMouse = true;
         return true;
     }
     if (name == "print_camera") {
-        std::printf("camera %s\n", cameraStateToJson(camera_.state()).c_str());
+        std::printf("camera %s\n", cameraStateToJson(view_.camera.state()).c_str());
         return true;
     }
     if (name == "gizmo_space") {
         if (!need(1, 1, "gizmo_space world|local")) return false;
-        gizmoSpace_ = w[1] == "local" ? GizmoSpace::Local : GizmoSpace::World;
+        view_.gizmoSpace = w[1] == "local" ? GizmoSpace::Local : GizmoSpace::World;
         return true;
     }
     if (name == "view") {
         if (!need(1, 1, "view NAME")) return false;
-        viewName_ = w[1];
+        view_.viewName = w[1];
         rebuildDisplay();
-        if (viewName_ != w[1]) {
+        if (view_.viewName != w[1]) {
             error = "view: no OCIO view \"" + w[1] + "\"";
             return false;
         }
@@ -666,8 +669,8 @@ bool Editor::runScriptCommand(const ScriptCommand& command, std::string& error) 
     if (name == "exposure") {
         double ev;
         if (!need(1, 1, "exposure EV") || !toNumber(w[1], ev)) return false;
-        exposureEv_ = ev;
-        display_->setExposureEv(ev);
+        view_.exposureEv = ev;
+        view_.display->setExposureEv(ev);
         return true;
     }
     if (name == "resolution_scale") {
@@ -676,7 +679,7 @@ bool Editor::runScriptCommand(const ScriptCommand& command, std::string& error) 
             error = "resolution_scale: 0.1 .. 1";
             return false;
         }
-        resolutionScale_ = s;
+        view_.resolutionScale = s;
         return true;
     }
     if (name == "undo" || name == "redo") {
@@ -685,13 +688,13 @@ bool Editor::runScriptCommand(const ScriptCommand& command, std::string& error) 
             error = "nothing to " + name;
             return false;
         }
-        validateSelection();
+        edit_.validate(doc_.preset());
         return true;
     }
     if (name == "wait_frames") {
         double n;
         if (!need(1, 1, "wait_frames N") || !toNumber(w[1], n) || n < 0) return false;
-        scriptWait_ = int(n);
+        runner_.waitFrames = int(n);
         return true;
     }
     if (name == "wait_autosave") {
@@ -699,8 +702,8 @@ bool Editor::runScriptCommand(const ScriptCommand& command, std::string& error) 
             error = "wait_autosave: autosave is off";
             return false;
         }
-        scriptWaitsForAutosave_ = true;
-        scriptAutosaveWrites_ = autosave_->writes();
+        runner_.waitsForAutosave = true;
+        runner_.autosaveWrites = autosave_->writes();
         if (!doc_.dirty()) {
             error = "wait_autosave: the document has no unsaved work";
             return false;
@@ -712,7 +715,7 @@ bool Editor::runScriptCommand(const ScriptCommand& command, std::string& error) 
         const std::optional<ParamRef> ref = param(w[1]);
         if (!ref) return false;
         double v[4];
-        readValueAt(doc_.preset(), *ref, timeHours_, v);
+        readValueAt(doc_.preset(), *ref, playback_.timeHours, v);
         std::printf("%s = %s\n", w[1].c_str(), formatValues(v, valueCount(*ref->desc)).c_str());
         return true;
     }
@@ -744,7 +747,7 @@ bool Editor::runScriptCommand(const ScriptCommand& command, std::string& error) 
         for (int i = 0; i < n; ++i)
             if (!toNumber(w[std::size_t(2 + i)], want[i])) return false;
         if (!toNumber(w.back(), tol)) return false;
-        readValueAt(doc_.preset(), *ref, timeHours_, have);
+        readValueAt(doc_.preset(), *ref, playback_.timeHours, have);
         for (int i = 0; i < n; ++i)
             if (!(std::abs(have[i] - want[i]) <= tol)) {
                 error = "expect_param " + w[1] + ": have " + formatValues(have, n) + ", want " +
@@ -781,11 +784,11 @@ bool Editor::runScriptCommand(const ScriptCommand& command, std::string& error) 
     if (name == "expect_selected") {
         if (!need(1, 2, "expect_selected volume|emitter|none|fog|atmosphere|lights [N]")) return false;
         static const char* kinds[] = {"none", "atmosphere", "lights", "fog", "volume", "emitter"};
-        const std::string have = kinds[int(selection_.kind)];
+        const std::string have = kinds[int(edit_.selection.kind)];
         double n = -1;
         if (argc == 2 && !toNumber(w[2], n)) return false;
-        if (have != w[1] || (argc == 2 && selection_.index != int(n))) {
-            error = "expect_selected: have " + have + " " + std::to_string(selection_.index);
+        if (have != w[1] || (argc == 2 && edit_.selection.index != int(n))) {
+            error = "expect_selected: have " + have + " " + std::to_string(edit_.selection.index);
             return false;
         }
         return true;

@@ -54,91 +54,79 @@ void diamond(ImDrawList* dl, ImVec2 c, float r, ImU32 colour, bool filled) {
 
 }  // namespace
 
-void Editor::advancePlayback(double dt) {
-    if (!playing_ || !(dt > 0.0)) return;
-    double t = timeHours_ + playSpeed_ * std::min(dt, 0.25);
-    if (t >= 24.0) {
-        if (loop_) {
-            t = std::fmod(t, 24.0);
-        } else {
-            t = 24.0 - 1.0 / 3600.0;
-            playing_ = false;
-        }
-    }
-    timeHours_ = t;
-}
-
-void Editor::jumpTo(double hours) { timeHours_ = wrapHours(hours); }
-
 void Editor::drawTimeline() {
     const Preset& preset = doc_.preset();
     const Location& where = preset.environment.location;
 
     // --- controls ----------------------------------------------------------
-    if (ImGui::Button(playing_ ? "Pause" : "Play", ImVec2(54, 0))) playing_ = !playing_;
+    if (ImGui::Button(playback_.playing ? "Pause" : "Play", ImVec2(54, 0)))
+        playback_.playing = !playback_.playing;
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Play / pause (Space)");
     ImGui::SameLine();
-    float speed = float(playSpeed_);
+    float speed = float(playback_.speed);
     ImGui::SetNextItemWidth(90.0f);
     if (ImGui::DragFloat("##speed", &speed, 0.02f, 0.01f, 24.0f, "%.2f h/s", ImGuiSliderFlags_Logarithmic))
-        playSpeed_ = std::clamp(double(speed), 0.01, 24.0);
+        playback_.speed = std::clamp(double(speed), 0.01, 24.0);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Playback speed [game hours per real second]");
     ImGui::SameLine();
-    ImGui::Checkbox("Loop", &loop_);
+    ImGui::Checkbox("Loop", &playback_.loop);
     ImGui::SameLine();
-    if (ImGui::Button("Sunrise")) jumpTo(sunriseHours(where));
+    if (ImGui::Button("Sunrise")) playback_.jumpTo(sunriseHours(where));
     ImGui::SameLine();
-    if (ImGui::Button("Noon")) jumpTo(12.0);
+    if (ImGui::Button("Noon")) playback_.jumpTo(12.0);
     ImGui::SameLine();
-    if (ImGui::Button("Sunset")) jumpTo(24.0 - sunriseHours(where));
+    if (ImGui::Button("Sunset")) playback_.jumpTo(24.0 - sunriseHours(where));
     ImGui::SameLine();
-    std::string timeText = clock(timeHours_);
+    std::string timeText = clock(playback_.timeHours);
     ImGui::SetNextItemWidth(60.0f);
     if (ImGui::InputText("##time", &timeText, ImGuiInputTextFlags_EnterReturnsTrue)) {
         double t;
-        if (parseClock(timeText, t)) jumpTo(t);
+        if (parseClock(timeText, t)) playback_.jumpTo(t);
     }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Time of day (HH:MM or hours), local solar time");
 
-    const Track* track = selectedParam_ ? trackOf(preset, *selectedParam_) : nullptr;
-    const TrackTarget target = selectedParam_ ? trackTargetOf(preset, *selectedParam_) : TrackTarget{};
+    const Track* track = edit_.selectedParam ? trackOf(preset, *edit_.selectedParam) : nullptr;
+    const TrackTarget target =
+        edit_.selectedParam ? trackTargetOf(preset, *edit_.selectedParam) : TrackTarget{};
     ImGui::SameLine();
     ImGui::TextDisabled("|");
     ImGui::SameLine();
-    if (!selectedParam_) {
+    if (!edit_.selectedParam) {
         ImGui::TextDisabled("Select a parameter in the inspector to edit its keys");
     } else {
-        const std::string address = paramAddress(*selectedParam_);
+        const std::string address = paramAddress(*edit_.selectedParam);
         ImGui::Text("%s", address.c_str());
         ImGui::SameLine();
         if (ImGui::Button("Key")) {
-            const ParamRef ref = *selectedParam_;
-            const double t = timeHours_;
+            const ParamRef ref = *edit_.selectedParam;
+            const double t = playback_.timeHours;
             doc_.apply("Add key", "", [&](Preset& p) { keyParam(p, ref, t); });
-            if (const Track* after = trackOf(doc_.preset(), ref)) selectedKey_ = keyIndexAt(*after, t);
+            if (const Track* after = trackOf(doc_.preset(), ref)) edit_.selectedKey = keyIndexAt(*after, t);
             track = trackOf(doc_.preset(), ref);
         }
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("Key the parameter at the current time");
         ImGui::SameLine();
-        ImGui::BeginDisabled(!(track && selectedKey_ >= 0));
+        ImGui::BeginDisabled(!(track && edit_.selectedKey >= 0));
         if (ImGui::Button("Delete key")) {
-            const int key = selectedKey_;
+            const int key = edit_.selectedKey;
             doc_.apply("Delete key", "", [&](Preset& p) { removeKey(p, target, key); });
-            selectedKey_ = -1;
-            track = trackOf(doc_.preset(), *selectedParam_);
+            edit_.selectedKey = -1;
+            track = trackOf(doc_.preset(), *edit_.selectedParam);
         }
         ImGui::SameLine();
-        if (ImGui::Button("Copy") && track && selectedKey_ >= 0 && selectedKey_ < int(track->keys.size())) {
-            keyClipboard_ = {true, selectedParam_->desc->type, track->keys[std::size_t(selectedKey_)].value};
+        if (ImGui::Button("Copy") && track && edit_.selectedKey >= 0 &&
+            edit_.selectedKey < int(track->keys.size())) {
+            edit_.keyClipboard = {true, edit_.selectedParam->desc->type,
+                                  track->keys[std::size_t(edit_.selectedKey)].value};
             setStatus("Copied key");
         }
         ImGui::EndDisabled();
         ImGui::SameLine();
-        ImGui::BeginDisabled(!keyClipboard_.valid);
+        ImGui::BeginDisabled(!edit_.keyClipboard.valid);
         if (ImGui::Button("Paste")) {
-            const ParamRef ref = *selectedParam_;
-            const double t = timeHours_;
-            const KeyClipboard clip = keyClipboard_;
+            const ParamRef ref = *edit_.selectedParam;
+            const double t = playback_.timeHours;
+            const KeyClipboard clip = edit_.keyClipboard;
             bool ok = false;
             doc_.apply("Paste key", "", [&](Preset& p) { ok = pasteKey(p, ref, clip, t); });
             setStatus(ok ? "Pasted key at " + clock(t)
@@ -155,7 +143,7 @@ void Editor::drawTimeline() {
                 doc_.apply("Interpolation", "", [&](Preset& p) {
                     if (Track* t = findTrack(p, target)) t->interpolation = Interpolation(interp);
                 });
-                track = trackOf(doc_.preset(), *selectedParam_);
+                track = trackOf(doc_.preset(), *edit_.selectedParam);
             }
             if (ImGui::IsItemHovered())
                 ImGui::SetTooltip("Interpolation of the track (smooth never overshoots)");
@@ -197,7 +185,7 @@ void Editor::drawTimeline() {
     }
     dl->AddText(ImVec2(canvasPos.x + 4.0f, ySummary + 2.0f), IM_COL32(170, 170, 170, 255), "All keys");
     std::string rowLabel =
-        selectedParam_ ? std::string(selectedParam_->desc->label) : std::string("(no parameter)");
+        edit_.selectedParam ? std::string(edit_.selectedParam->desc->label) : std::string("(no parameter)");
     if (rowLabel.size() > 16) {
         rowLabel.resize(15);
         rowLabel += '~';
@@ -208,8 +196,8 @@ void Editor::drawTimeline() {
     ImGui::SetCursorScreenPos(ImVec2(x0, yRuler));
     ImGui::InvisibleButton("##ruler", ImVec2(x1 - x0, rulerH));
     if (ImGui::IsItemActive()) {
-        timeHours_ = tOf(ImGui::GetIO().MousePos.x);
-        playing_ = false;
+        playback_.timeHours = tOf(ImGui::GetIO().MousePos.x);
+        playback_.playing = false;
     }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Drag to scrub the time of day");
 
@@ -226,7 +214,7 @@ void Editor::drawTimeline() {
         diamond(dl, ImVec2(xOf(t), ySummary + rowH * 0.5f), 4.0f, IM_COL32(170, 170, 170, 255), true);
         if (std::abs(xOf(t) - mouseX) < 6.0f) nearest = t;
     }
-    if (summaryClicked && nearest >= 0.0) jumpTo(nearest);
+    if (summaryClicked && nearest >= 0.0) playback_.jumpTo(nearest);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("%zu key times in %zu tracks; click a key to jump to it", times.size(),
                           preset.tracks.size());
@@ -235,46 +223,47 @@ void Editor::drawTimeline() {
     ImGui::SetCursorScreenPos(ImVec2(x0, yTrack));
     ImGui::InvisibleButton("##track", ImVec2(x1 - x0, rowH));
     const bool trackHovered = ImGui::IsItemHovered(), trackActive = ImGui::IsItemActive();
-    if (track && selectedParam_) {
+    if (track && edit_.selectedParam) {
         int hoveredKey = -1;
         for (std::size_t i = 0; i < track->keys.size(); ++i) {
             const float x = xOf(track->keys[i].timeHours);
-            const bool selected = int(i) == selectedKey_;
+            const bool selected = int(i) == edit_.selectedKey;
             diamond(dl, ImVec2(x, yTrack + rowH * 0.5f), selected ? 6.0f : 5.0f,
                     selected ? IM_COL32(255, 230, 120, 255) : IM_COL32(240, 190, 60, 255), true);
             if (std::abs(x - mouseX) < 6.0f) hoveredKey = int(i);
         }
         if (ImGui::IsItemClicked(0)) {
-            selectedKey_ = hoveredKey;
-            draggingKey_ = hoveredKey >= 0;
+            edit_.selectedKey = hoveredKey;
+            edit_.draggingKey = hoveredKey >= 0;
         }
         if (ImGui::IsItemClicked(1) && hoveredKey >= 0) {
-            selectedKey_ = hoveredKey;
+            edit_.selectedKey = hoveredKey;
             ImGui::OpenPopup("##keymenu");
         }
         if (trackHovered && ImGui::IsMouseDoubleClicked(0) && hoveredKey < 0) {
-            const ParamRef ref = *selectedParam_;
+            const ParamRef ref = *edit_.selectedParam;
             const double t = tOf(mouseX);
             doc_.apply("Add key", "", [&](Preset& p) { keyParam(p, ref, t); });
-            if (const Track* after = trackOf(doc_.preset(), ref)) selectedKey_ = keyIndexAt(*after, t);
+            if (const Track* after = trackOf(doc_.preset(), ref)) edit_.selectedKey = keyIndexAt(*after, t);
             hoveredKey = -1;
         }
-        if (draggingKey_ && trackActive && selectedKey_ >= 0 && ImGui::GetIO().MouseDelta.x != 0.0f) {
-            const int key = selectedKey_;
+        if (edit_.draggingKey && trackActive && edit_.selectedKey >= 0 &&
+            ImGui::GetIO().MouseDelta.x != 0.0f) {
+            const int key = edit_.selectedKey;
             const double t = tOf(mouseX);
-            doc_.apply("Move key", "move-key:" + paramAddress(*selectedParam_), [&](Preset& p) {
+            doc_.apply("Move key", "move-key:" + paramAddress(*edit_.selectedParam), [&](Preset& p) {
                 if (Track* tr = findTrack(p, target)) moveKey(*tr, key, t);
             });
         }
-        if (draggingKey_ && !trackActive) {
-            draggingKey_ = false;
+        if (edit_.draggingKey && !trackActive) {
+            edit_.draggingKey = false;
             doc_.closeMerge();
         }
-        track = trackOf(doc_.preset(), *selectedParam_);  // the edits above may have moved it
+        track = trackOf(doc_.preset(), *edit_.selectedParam);  // the edits above may have moved it
         if (track && trackHovered && hoveredKey >= 0 && hoveredKey < int(track->keys.size()) &&
             !ImGui::IsPopupOpen("##keymenu")) {
             const TrackKey& k = track->keys[std::size_t(hoveredKey)];
-            if (selectedParam_->desc->type == ParamType::Scalar)
+            if (edit_.selectedParam->desc->type == ParamType::Scalar)
                 ImGui::SetTooltip("%s  %.6g", clock(k.timeHours).c_str(), k.value.x);
             else
                 ImGui::SetTooltip("%s  (%.4g, %.4g, %.4g)", clock(k.timeHours).c_str(), k.value.x, k.value.y,
@@ -282,20 +271,21 @@ void Editor::drawTimeline() {
         }
     }
     if (ImGui::BeginPopup("##keymenu")) {
-        if (ImGui::MenuItem("Delete key", "Del") && selectedKey_ >= 0) {
-            const int key = selectedKey_;
+        if (ImGui::MenuItem("Delete key", "Del") && edit_.selectedKey >= 0) {
+            const int key = edit_.selectedKey;
             doc_.apply("Delete key", "", [&](Preset& p) { removeKey(p, target, key); });
-            selectedKey_ = -1;
+            edit_.selectedKey = -1;
         }
         if (ImGui::MenuItem("Copy", "Ctrl+C")) {
-            if (const Track* t = selectedParam_ ? trackOf(doc_.preset(), *selectedParam_) : nullptr;
-                t && selectedKey_ >= 0 && selectedKey_ < int(t->keys.size()))
-                keyClipboard_ = {true, selectedParam_->desc->type, t->keys[std::size_t(selectedKey_)].value};
+            if (const Track* t = edit_.selectedParam ? trackOf(doc_.preset(), *edit_.selectedParam) : nullptr;
+                t && edit_.selectedKey >= 0 && edit_.selectedKey < int(t->keys.size()))
+                edit_.keyClipboard = {true, edit_.selectedParam->desc->type,
+                                      t->keys[std::size_t(edit_.selectedKey)].value};
         }
-        if (ImGui::MenuItem("Jump to key") && selectedParam_) {
-            if (const Track* t = trackOf(doc_.preset(), *selectedParam_);
-                t && selectedKey_ >= 0 && selectedKey_ < int(t->keys.size()))
-                jumpTo(t->keys[std::size_t(selectedKey_)].timeHours);
+        if (ImGui::MenuItem("Jump to key") && edit_.selectedParam) {
+            if (const Track* t = trackOf(doc_.preset(), *edit_.selectedParam);
+                t && edit_.selectedKey >= 0 && edit_.selectedKey < int(t->keys.size()))
+                playback_.jumpTo(t->keys[std::size_t(edit_.selectedKey)].timeHours);
         }
         const char* names[] = {"Step", "Linear", "Smooth"};
         for (int i = 0; i < 3; ++i)
@@ -309,29 +299,30 @@ void Editor::drawTimeline() {
 
     // Keyboard on the timeline: Delete, Ctrl+C, Ctrl+V.
     if (ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows) && !ImGui::GetIO().WantTextInput &&
-        selectedParam_) {
-        const Track* t = trackOf(doc_.preset(), *selectedParam_);
-        if (ImGui::IsKeyPressed(GLFW_KEY_DELETE, false) && t && selectedKey_ >= 0) {
-            const int key = selectedKey_;
+        edit_.selectedParam) {
+        const Track* t = trackOf(doc_.preset(), *edit_.selectedParam);
+        if (ImGui::IsKeyPressed(GLFW_KEY_DELETE, false) && t && edit_.selectedKey >= 0) {
+            const int key = edit_.selectedKey;
             doc_.apply("Delete key", "", [&](Preset& p) { removeKey(p, target, key); });
-            selectedKey_ = -1;
+            edit_.selectedKey = -1;
         }
-        if (ImGui::GetIO().KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_C, false) && t && selectedKey_ >= 0 &&
-            selectedKey_ < int(t->keys.size()))
-            keyClipboard_ = {true, selectedParam_->desc->type, t->keys[std::size_t(selectedKey_)].value};
-        if (ImGui::GetIO().KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_V, false) && keyClipboard_.valid) {
-            const ParamRef ref = *selectedParam_;
-            const double now = timeHours_;
-            const KeyClipboard clip = keyClipboard_;
+        if (ImGui::GetIO().KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_C, false) && t && edit_.selectedKey >= 0 &&
+            edit_.selectedKey < int(t->keys.size()))
+            edit_.keyClipboard = {true, edit_.selectedParam->desc->type,
+                                  t->keys[std::size_t(edit_.selectedKey)].value};
+        if (ImGui::GetIO().KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_V, false) && edit_.keyClipboard.valid) {
+            const ParamRef ref = *edit_.selectedParam;
+            const double now = playback_.timeHours;
+            const KeyClipboard clip = edit_.keyClipboard;
             doc_.apply("Paste key", "", [&](Preset& p) { pasteKey(p, ref, clip, now); });
         }
     }
-    timelineHovered_ = ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows);
+    edit_.timelineHovered = ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows);
 
     // Curve view: the selected parameter's value over the day.
-    track = selectedParam_ ? trackOf(doc_.preset(), *selectedParam_) : nullptr;
-    if (yEnd - yCurve > 24.0f && selectedParam_) {
-        const ParamRef ref = *selectedParam_;
+    track = edit_.selectedParam ? trackOf(doc_.preset(), *edit_.selectedParam) : nullptr;
+    if (yEnd - yCurve > 24.0f && edit_.selectedParam) {
+        const ParamRef ref = *edit_.selectedParam;
         const int components = ref.desc->type == ParamType::Scalar ? 1 : 3;
         constexpr int kSamples = 192;
         double values[kSamples + 1][3];
@@ -362,7 +353,7 @@ void Editor::drawTimeline() {
             for (std::size_t i = 0; i < track->keys.size(); ++i)
                 for (int c = 0; c < components; ++c)
                     dl->AddCircleFilled(ImVec2(xOf(track->keys[i].timeHours), yOf(track->keys[i].value[c])),
-                                        int(i) == selectedKey_ ? 4.5f : 3.0f, colours[c]);
+                                        int(i) == edit_.selectedKey ? 4.5f : 3.0f, colours[c]);
         char range[64];
         std::snprintf(range, sizeof range, "%.4g", hi);
         dl->AddText(ImVec2(canvasPos.x + 4.0f, top - 4.0f), IM_COL32(150, 150, 150, 255), range);
@@ -381,21 +372,21 @@ void Editor::drawTimeline() {
         ImGui::SetCursorScreenPos(ImVec2(x0, yCurve));
         ImGui::InvisibleButton("##curve", ImVec2(x1 - x0, yEnd - yCurve));
         if (ImGui::IsItemActive()) {
-            timeHours_ = tOf(ImGui::GetIO().MousePos.x);
-            playing_ = false;
+            playback_.timeHours = tOf(ImGui::GetIO().MousePos.x);
+            playback_.playing = false;
         }
-        if (ImGui::IsItemHovered() && selectedParam_) {
+        if (ImGui::IsItemHovered() && edit_.selectedParam) {
             double v[4];
             const double t = tOf(mouseX);
-            readValueAt(doc_.preset(), *selectedParam_, t, v);
-            if (selectedParam_->desc->type == ParamType::Scalar)
+            readValueAt(doc_.preset(), *edit_.selectedParam, t, v);
+            if (edit_.selectedParam->desc->type == ParamType::Scalar)
                 ImGui::SetTooltip("%s  %.6g", clock(t).c_str(), v[0]);
             else
                 ImGui::SetTooltip("%s  (%.4g, %.4g, %.4g)", clock(t).c_str(), v[0], v[1], v[2]);
         }
     }
     // Playhead.
-    const float xt = xOf(timeHours_);
+    const float xt = xOf(playback_.timeHours);
     dl->AddLine(ImVec2(xt, yRuler), ImVec2(xt, yEnd), IM_COL32(255, 90, 70, 255), 2.0f);
     dl->AddTriangleFilled(ImVec2(xt - 5.0f, yRuler), ImVec2(xt + 5.0f, yRuler), ImVec2(xt, yRuler + 7.0f),
                           IM_COL32(255, 90, 70, 255));
