@@ -1,5 +1,5 @@
-// editor/editor.cpp — window, frame loop, fixed layout, menus, shortcuts,
-// status bar, sky solves, --bench, modals. See editor.hpp for the map.
+// editor/editor.cpp — window, frame loop, fixed layout, status bar, sky
+// solves, --bench, selection and objects. See editor.hpp for the map.
 #include "editor.hpp"
 
 #include <epoxy/gl.h>  // epoxy before any other GL header
@@ -90,6 +90,7 @@ int runEditor(const EditorOptions& options) {
 Editor::Editor(const EditorOptions& options)
     : options_(options), recent_((fs::path(configDirectory()) / "recent.json").string()) {
     sessionFile_ = (fs::path(configDirectory()) / "session.json").string();
+    declareActions();
 }
 
 Editor::~Editor() {
@@ -432,140 +433,6 @@ void Editor::layout() {
     ImGui::PopStyleVar();
 }
 
-void Editor::drawMenuBar() {
-    if (!ImGui::BeginMainMenuBar()) return;
-    if (ImGui::BeginMenu("File")) {
-        if (ImGui::MenuItem("New", "Ctrl+N")) requestNew();
-        if (ImGui::MenuItem("Open...", "Ctrl+O")) requestOpen("");
-        if (ImGui::BeginMenu("Open Recent", !recent_.files().empty())) {
-            std::string chosen;
-            for (const std::string& file : recent_.files())
-                if (ImGui::MenuItem(file.c_str())) chosen = file;
-            ImGui::Separator();
-            if (ImGui::MenuItem("Clear recent files")) recent_.clear();
-            ImGui::EndMenu();
-            if (!chosen.empty()) requestOpen(chosen);
-        }
-        if (ImGui::MenuItem("Save", "Ctrl+S")) saveOrSaveAs(false);
-        if (ImGui::MenuItem("Save As...", "Ctrl+Shift+S")) saveOrSaveAs(true);
-        ImGui::Separator();
-        if (ImGui::MenuItem("Load scene (glTF)...")) {
-            dialogs_.purpose = DialogPurpose::Scene;
-            dialogs_.fileDialog.open("Load scene (glTF)", FileDialog::Mode::Open, {".gltf", ".glb"},
-                                     view_.scenePath);
-        }
-        if (ImGui::MenuItem("Built-in scene", nullptr, false, !view_.scenePath.empty())) {
-            view_.renderer->setScene(renderer::makeBuiltinScene());
-            view_.lastRenderSignature.clear();
-            view_.scenePath.clear();
-            setStatus("Built-in scene");
-        }
-        ImGui::Separator();
-        if (ImGui::MenuItem("Screenshot...")) {
-            dialogs_.purpose = DialogPurpose::Screenshot;
-            dialogs_.fileDialog.open("Screenshot (.png display-referred, .exr scene-linear)",
-                                     FileDialog::Mode::Save, {".png", ".exr"}, "");
-        }
-        if (ImGui::MenuItem("Export for game...", nullptr, false, !export_.running())) {
-            dialogs_.purpose = DialogPurpose::Export;
-            dialogs_.fileDialog.open("Export for game (aerial bake) into folder", FileDialog::Mode::Directory,
-                                     {}, "");
-        }
-        ImGui::Separator();
-        if (ImGui::MenuItem("Quit", "Ctrl+Q")) requestQuit();
-        ImGui::EndMenu();
-    }
-    if (ImGui::BeginMenu("Edit")) {
-        const std::string undo = "Undo " + doc_.undoLabel(), redo = "Redo " + doc_.redoLabel();
-        if (ImGui::MenuItem(undo.c_str(), "Ctrl+Z", false, doc_.canUndo())) {
-            doc_.undo();
-            edit_.validate(doc_.preset());
-        }
-        if (ImGui::MenuItem(redo.c_str(), "Ctrl+Shift+Z", false, doc_.canRedo())) {
-            doc_.redo();
-            edit_.validate(doc_.preset());
-        }
-        ImGui::Separator();
-        if (ImGui::MenuItem("Delete", "Del", false, edit_.objectSelected())) deleteSelection();
-        if (ImGui::MenuItem("Duplicate", "Ctrl+D", false, edit_.objectSelected())) duplicateSelection();
-        ImGui::Separator();
-        if (ImGui::MenuItem("Key all changed parameters")) {
-            int count = 0;
-            const Preset baseline = doc_.baseline();
-            doc_.apply("Key all changed", "",
-                       [&](Preset& p) { count = keyAllChanged(p, baseline, playback_.timeHours); });
-            setStatus(std::to_string(count) + " keys set at " + formatClock(playback_.timeHours));
-        }
-        ImGui::EndMenu();
-    }
-    if (ImGui::BeginMenu("Create")) {
-        if (ImGui::MenuItem("Box volume", "Shift+B")) addVolumeInFront(FogVolumeShape::Box);
-        if (ImGui::MenuItem("Ellipsoid volume", "Shift+E")) addVolumeInFront(FogVolumeShape::Ellipsoid);
-        if (ImGui::MenuItem("Emitter", "Shift+P")) addEmitterInFront(EmitterKind::Point);
-        if (ImGui::MenuItem("Lightning", "Shift+T")) addEmitterInFront(EmitterKind::Lightning);
-        ImGui::EndMenu();
-    }
-    if (ImGui::BeginMenu("View")) {
-        if (view_.display && ImGui::BeginMenu("OCIO display")) {
-            for (const std::string& d : view_.display->displays())
-                if (ImGui::MenuItem(d.c_str(), nullptr, d == view_.display->display())) {
-                    view_.displayName = d;
-                    view_.viewName.clear();
-                    rebuildDisplay();
-                }
-            ImGui::EndMenu();
-        }
-        if (view_.display && ImGui::BeginMenu("OCIO view")) {
-            for (const std::string& v : view_.display->views())
-                if (ImGui::MenuItem(v.c_str(), nullptr, v == view_.display->view())) {
-                    view_.viewName = v;
-                    rebuildDisplay();
-                }
-            ImGui::EndMenu();
-        }
-        float ev = float(view_.exposureEv);
-        ImGui::SetNextItemWidth(140.0f);
-        if (ImGui::SliderFloat("Exposure [EV]", &ev, -10.0f, 10.0f, "%.2f")) {
-            view_.exposureEv = ev;
-            if (view_.display) view_.display->setExposureEv(ev);
-        }
-        if (ImGui::BeginMenu("Resolution scale")) {
-            for (double s : {0.25, 0.5, 0.75, 1.0}) {
-                char label[32];
-                std::snprintf(label, sizeof label, "%d%%", int(s * 100.0 + 0.5));
-                if (ImGui::MenuItem(label, nullptr, std::abs(view_.resolutionScale - s) < 1e-9))
-                    view_.resolutionScale = s;
-            }
-            ImGui::EndMenu();
-        }
-        ImGui::Separator();
-        ImGui::MenuItem("Helpers (outlines, icons, gizmo)", nullptr, &view_.showHelpers);
-        ImGui::MenuItem("Ground grid", nullptr, &view_.showGrid);
-        ImGui::Separator();
-        ImGui::MenuItem("Sky", nullptr, &view_.passes.sky);
-        ImGui::MenuItem("Stars", nullptr, &view_.showStars);
-        ImGui::MenuItem("Scene geometry", nullptr, &view_.passes.scene);
-        ImGui::MenuItem("Global fog", nullptr, &view_.passes.globalFog);
-        ImGui::MenuItem("Fog volumes", nullptr, &view_.passes.volumes);
-        ImGui::MenuItem("Emitters", nullptr, &view_.passes.emitters);
-        ImGui::MenuItem("Transparent objects", nullptr, &view_.passes.transparent);
-        ImGui::MenuItem("Fog particles", nullptr, &view_.passes.particles);
-        ImGui::Separator();
-        if (ImGui::MenuItem("Move", "W", view_.gizmoMode == GizmoMode::Translate))
-            view_.gizmoMode = GizmoMode::Translate;
-        if (ImGui::MenuItem("Rotate", "E", view_.gizmoMode == GizmoMode::Rotate))
-            view_.gizmoMode = GizmoMode::Rotate;
-        if (ImGui::MenuItem("Scale", "R", view_.gizmoMode == GizmoMode::Scale))
-            view_.gizmoMode = GizmoMode::Scale;
-        bool local = view_.gizmoSpace == GizmoSpace::Local;
-        if (ImGui::MenuItem("Local axes", "L", &local))
-            view_.gizmoSpace = local ? GizmoSpace::Local : GizmoSpace::World;
-        if (ImGui::MenuItem("Frame selection", "F", false, edit_.objectSelected())) frameSelection();
-        ImGui::EndMenu();
-    }
-    ImGui::EndMainMenuBar();
-}
-
 void Editor::drawStatusBar() {
     const double elevationDeg = sky_.state.sunLight.body.elevation * 180.0 / kPi;
     ImGui::Text("%s   sun %+.1f deg   frame %.1f ms   render %dx%d   sky solve %.2f ms",
@@ -589,6 +456,8 @@ void Editor::drawStatusBar() {
 
 void Editor::setStatus(std::string text) { status_ = std::move(text); }
 
+std::string Editor::clockText() const { return formatClock(playback_.timeHours); }
+
 void Editor::showError(std::string title, std::string text) {
     dialogs_.errorTitle = std::move(title);
     dialogs_.errorText = std::move(text);
@@ -596,134 +465,6 @@ void Editor::showError(std::string title, std::string text) {
     if (!options_.script.empty())
         std::fprintf(stderr, "aerial-editor: %s:\n%s\n", dialogs_.errorTitle.c_str(),
                      dialogs_.errorText.c_str());
-}
-
-void Editor::handleShortcuts() {
-    const ImGuiIO& io = ImGui::GetIO();
-    if (io.WantTextInput || ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)) return;
-    const bool ctrl = io.KeyCtrl, shift = io.KeyShift;
-    auto pressed = [](int key) { return ImGui::IsKeyPressed(key, false); };
-    if (ctrl) {
-        if (pressed(GLFW_KEY_N)) requestNew();
-        if (pressed(GLFW_KEY_O)) requestOpen("");
-        if (pressed(GLFW_KEY_S)) saveOrSaveAs(shift);
-        if (pressed(GLFW_KEY_Q)) requestQuit();
-        if (pressed(GLFW_KEY_D)) duplicateSelection();
-        if (ImGui::IsKeyPressed(GLFW_KEY_Z, true)) {
-            if (shift ? doc_.redo() : doc_.undo()) edit_.validate(doc_.preset());
-        }
-        if (ImGui::IsKeyPressed(GLFW_KEY_Y, true) && doc_.redo()) edit_.validate(doc_.preset());
-        return;
-    }
-    if (view_.camera.flying()) return;  // W A S D Q E fly
-    if (shift) {                        // Create: in front of the camera
-        if (pressed(GLFW_KEY_B)) addVolumeInFront(FogVolumeShape::Box);
-        if (pressed(GLFW_KEY_E)) addVolumeInFront(FogVolumeShape::Ellipsoid);
-        if (pressed(GLFW_KEY_P)) addEmitterInFront(EmitterKind::Point);
-        if (pressed(GLFW_KEY_T)) addEmitterInFront(EmitterKind::Lightning);
-        return;
-    }
-    if (pressed(GLFW_KEY_W)) view_.gizmoMode = GizmoMode::Translate;
-    if (pressed(GLFW_KEY_E)) view_.gizmoMode = GizmoMode::Rotate;
-    if (pressed(GLFW_KEY_R)) view_.gizmoMode = GizmoMode::Scale;
-    if (pressed(GLFW_KEY_L))
-        view_.gizmoSpace = view_.gizmoSpace == GizmoSpace::World ? GizmoSpace::Local : GizmoSpace::World;
-    if (pressed(GLFW_KEY_F)) frameSelection();
-    if (pressed(GLFW_KEY_SPACE)) playback_.playing = !playback_.playing;
-    if (pressed(GLFW_KEY_DELETE) && !edit_.timelineHovered) deleteSelection();  // the timeline deletes keys
-    if (pressed(GLFW_KEY_ESCAPE) && view_.gizmo.active()) {
-        GizmoTransform t;
-        if (gizmoTransformOfSelection(t) && view_.gizmo.cancel(t)) {
-            applyGizmoTransform(t);
-            doc_.closeMerge();
-        }
-    }
-}
-
-void Editor::drawModals() {
-    if (dialogs_.openErrorModal) {
-        ImGui::OpenPopup("Error##modal");
-        dialogs_.openErrorModal = false;
-    }
-    ImGui::SetNextWindowSize(ImVec2(std::min(720.0f, ImGui::GetIO().DisplaySize.x - 40.0f), 0.0f),
-                             ImGuiCond_Appearing);
-    if (ImGui::BeginPopupModal("Error##modal", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-        ImGui::TextUnformatted(dialogs_.errorTitle.c_str());
-        ImGui::Separator();
-        ImGui::PushTextWrapPos(ImGui::GetIO().DisplaySize.x - 80.0f);
-        ImGui::TextUnformatted(dialogs_.errorText.c_str());
-        ImGui::PopTextWrapPos();
-        if (ImGui::Button("Copy")) ImGui::SetClipboardText(dialogs_.errorText.c_str());
-        ImGui::SameLine();
-        if (ImGui::Button("OK", ImVec2(100, 0)) || ImGui::IsKeyPressed(GLFW_KEY_ENTER))
-            ImGui::CloseCurrentPopup();
-        ImGui::EndPopup();
-    }
-
-    if (dialogs_.openUnsavedModal) {
-        ImGui::OpenPopup("Unsaved changes");
-        dialogs_.openUnsavedModal = false;
-        dialogs_.unsavedPromptOpen = true;
-    }
-    if (ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-        const std::string name =
-            doc_.path().empty() ? std::string("Untitled") : fs::path(doc_.path()).filename().string();
-        ImGui::Text("Save the changes to %s first?", name.c_str());
-        ImGui::TextDisabled("Discarded changes cannot be undone.");
-        if (ImGui::Button("Save", ImVec2(100, 0))) resolveUnsaved(UnsavedChoice::Save);
-        ImGui::SameLine();
-        if (ImGui::Button("Discard", ImVec2(100, 0))) resolveUnsaved(UnsavedChoice::Discard);
-        ImGui::SameLine();
-        if (ImGui::Button("Cancel", ImVec2(100, 0)) || ImGui::IsKeyPressed(GLFW_KEY_ESCAPE))
-            resolveUnsaved(UnsavedChoice::Cancel);
-        if (!dialogs_.unsavedPromptOpen) ImGui::CloseCurrentPopup();
-        ImGui::EndPopup();
-    }
-
-    if (dialogs_.openRecoveryModal) {
-        ImGui::OpenPopup("Recover unsaved work?");
-        dialogs_.openRecoveryModal = false;
-    }
-    if (ImGui::BeginPopupModal("Recover unsaved work?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-        if (dialogs_.recovery) {
-            ImGui::Text("Aerial did not exit cleanly last time (process %d).", dialogs_.recovery->pid);
-            ImGui::Text("Unsaved work on %s was autosaved.", dialogs_.recovery->documentPath.empty()
-                                                                 ? "an untitled preset"
-                                                                 : dialogs_.recovery->documentPath.c_str());
-        }
-        if (ImGui::Button("Recover", ImVec2(110, 0))) {
-            ImGui::CloseCurrentPopup();
-            recover(true);
-        }
-        ImGui::SameLine();
-        if (ImGui::Button("Discard", ImVec2(110, 0))) {
-            ImGui::CloseCurrentPopup();
-            recover(false);
-        }
-        ImGui::EndPopup();
-    }
-}
-
-void Editor::resolveUnsaved(UnsavedChoice choice) {
-    dialogs_.unsavedPromptOpen = false;
-    switch (choice) {
-        case UnsavedChoice::Save:
-            if (doc_.path().empty()) {
-                dialogs_.continueAfterSave = true;  // the pending action runs once Save As succeeds
-                saveOrSaveAs(true);
-            } else if (savePresetTo(doc_.path())) {
-                runPending();
-            } else {
-                dialogs_.pending = Pending::None;
-            }
-            break;
-        case UnsavedChoice::Discard:
-            runPending();
-            break;
-        case UnsavedChoice::Cancel:
-            dialogs_.pending = Pending::None;
-            break;
-    }
 }
 
 void Editor::printBench() const {
@@ -805,6 +546,14 @@ void Editor::deleteSelection() {
     doc_.apply("Delete", "", [&](Preset& p) { deleteObject(p, scope, index); });
     edit_.selectedParam.reset();
     edit_.validate(doc_.preset());
+}
+
+int Editor::keyAllChangedNow() {
+    int count = 0;
+    const Preset baseline = doc_.baseline();
+    const double t = playback_.timeHours;
+    doc_.apply("Key all changed", "", [&](Preset& p) { count = keyAllChanged(p, baseline, t); });
+    return count;
 }
 
 void Editor::duplicateSelection() {

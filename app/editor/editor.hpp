@@ -2,23 +2,27 @@
 // 4.5 core context, Dear ImGui (fixed layout, no docking) and the renderer.
 // Private to aerial-editor. Editor composes the parts of editor_parts.hpp
 // (document, edit state, playback, sky service, viewport, dialogs, script
-// runner, frame stats); the implementation is split by panel:
+// runner, frame stats); every user action is declared once in its action
+// table (actions.hpp). The implementation is split by panel:
 //
-//   editor.cpp            window, frame loop, layout, menus, shortcuts,
-//                         status bar, sky solves, bench, modals
+//   editor.cpp            window, frame loop, layout, status bar, sky
+//                         solves, bench, selection
+//   editor_actions.cpp    the action table, the menu bar drawn from it and
+//                         the keyboard shortcuts
 //   editor_viewport.cpp   viewport render + OCIO display, camera, picking,
 //                         gizmo, overlays, screenshots
 //   editor_inspector.cpp  the inspector, generated from the parameter table
 //   editor_outliner.cpp   the outliner and the sky preview
 //   editor_timeline.cpp   ruler, scrubbing, play, keys, curve view
 //   editor_files.cpp      new/open/save/recent/drop/scene, unsaved-changes
-//                         prompts, load-error modal, recovery
+//                         prompt, load-error modal, recovery
 //   editor_script.cpp     the automation commands (--script)
 //
 // Every change to the preset goes through Document::apply (document.hpp),
 // so it is undoable and marks the document dirty.
 #pragma once
 
+#include "actions.hpp"
 #include "editor_parts.hpp"
 #include "game_export.hpp"
 #include "settings.hpp"
@@ -69,17 +73,29 @@ private:
     // --- editor.cpp --------------------------------------------------------
     void frame();
     void layout();
-    void drawMenuBar();
     void drawStatusBar();
-    void handleShortcuts();
     void updateEvaluation();
     void updateSky();
-    void drawModals();
     void setStatus(std::string text);
+    /// The current time as HH:MM.
+    std::string clockText() const;
     void showError(std::string title, std::string text);
     void printBench() const;
     void captureWindow(int width, int height);
     double nowSeconds() const;
+    // Selection and objects.
+    void select(Selection s);
+    void addVolumeInFront(FogVolumeShape shape);
+    void addEmitterInFront(EmitterKind kind);
+    void deleteSelection();
+    void duplicateSelection();
+    /// Keys every parameter that differs from the saved preset; the count.
+    int keyAllChangedNow();
+
+    // --- editor_actions.cpp --------------------------------------------------
+    void declareActions();
+    void drawMenuBar();
+    void handleShortcuts();
 
     // --- editor_viewport.cpp -------------------------------------------------
     void drawViewport();
@@ -116,7 +132,6 @@ private:
     void requestQuit();
     void runPending();
     void askUnsaved(Pending action, std::string path);
-    /// The unsaved-changes prompt's buttons (and the script's `answer`).
     void resolveUnsaved(UnsavedChoice choice);
     bool openPreset(const std::string& path);    ///< error modal on failure
     bool savePresetTo(const std::string& path);  ///< error modal on failure
@@ -124,7 +139,7 @@ private:
     bool loadScene(const std::string& path);
     void handleDrops();
     void drawFileDialogs();
-    void offerRecovery();
+    void drawModals();
     void recover(bool accept);
     void startExport(const std::string& directory);
 
@@ -135,13 +150,6 @@ private:
     bool runScriptCommand(const ScriptCommand& command, std::string& error);
     void queueGizmoDrag(GizmoMode mode, int axis, glm::dvec2 deltaPx, int steps, bool& ok,
                         std::string& error);
-
-    // --- selection helpers ---------------------------------------------------
-    void select(Selection s);
-    void addVolumeInFront(FogVolumeShape shape);
-    void addEmitterInFront(EmitterKind kind);
-    void deleteSelection();
-    void duplicateSelection();
 
     EditorOptions options_;
     GLFWwindow* window_ = nullptr;
@@ -168,6 +176,9 @@ private:
     std::string sessionFile_;
     GameExport export_;
     std::string status_;
+
+    // Every user action.
+    ActionTable actions_;
 
     friend void dropCallback(GLFWwindow*, int, const char**);
 };

@@ -2,9 +2,12 @@
 // drag and drop), Save / Save As, Load scene (glTF), the unsaved-changes
 // prompt (Save / Discard / Cancel) before anything that would lose work, the
 // load-error modal (the loader's errors, file:line:col: /pointer: reason; the
-// document is left as it was), crash recovery and Export for game.
+// document is left as it was), crash recovery and Export for game. Uses the
+// Document, the Dialogs part and the EditState (a new document selects the
+// global fog).
 #include "editor.hpp"
 
+#include <GLFW/glfw3.h>
 #include <imgui.h>
 
 #include <aerial/renderer/gltf.hpp>
@@ -236,6 +239,92 @@ void Editor::drawFileDialogs() {
         else
             showError("Export for game failed:", export_.summary());
         export_.acknowledge();
+    }
+}
+
+void Editor::drawModals() {
+    if (dialogs_.openErrorModal) {
+        ImGui::OpenPopup("Error##modal");
+        dialogs_.openErrorModal = false;
+    }
+    ImGui::SetNextWindowSize(ImVec2(std::min(720.0f, ImGui::GetIO().DisplaySize.x - 40.0f), 0.0f),
+                             ImGuiCond_Appearing);
+    if (ImGui::BeginPopupModal("Error##modal", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        ImGui::TextUnformatted(dialogs_.errorTitle.c_str());
+        ImGui::Separator();
+        ImGui::PushTextWrapPos(ImGui::GetIO().DisplaySize.x - 80.0f);
+        ImGui::TextUnformatted(dialogs_.errorText.c_str());
+        ImGui::PopTextWrapPos();
+        if (ImGui::Button("Copy")) ImGui::SetClipboardText(dialogs_.errorText.c_str());
+        ImGui::SameLine();
+        if (ImGui::Button("OK", ImVec2(100, 0)) || ImGui::IsKeyPressed(GLFW_KEY_ENTER))
+            ImGui::CloseCurrentPopup();
+        ImGui::EndPopup();
+    }
+
+    if (dialogs_.openUnsavedModal) {
+        ImGui::OpenPopup("Unsaved changes");
+        dialogs_.openUnsavedModal = false;
+        dialogs_.unsavedPromptOpen = true;
+    }
+    if (ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        const std::string name =
+            doc_.path().empty() ? std::string("Untitled") : fs::path(doc_.path()).filename().string();
+        ImGui::Text("Save the changes to %s first?", name.c_str());
+        ImGui::TextDisabled("Discarded changes cannot be undone.");
+        if (ImGui::Button("Save", ImVec2(100, 0))) resolveUnsaved(UnsavedChoice::Save);
+        ImGui::SameLine();
+        if (ImGui::Button("Discard", ImVec2(100, 0))) resolveUnsaved(UnsavedChoice::Discard);
+        ImGui::SameLine();
+        if (ImGui::Button("Cancel", ImVec2(100, 0)) || ImGui::IsKeyPressed(GLFW_KEY_ESCAPE))
+            resolveUnsaved(UnsavedChoice::Cancel);
+        if (!dialogs_.unsavedPromptOpen) ImGui::CloseCurrentPopup();
+        ImGui::EndPopup();
+    }
+
+    if (dialogs_.openRecoveryModal) {
+        ImGui::OpenPopup("Recover unsaved work?");
+        dialogs_.openRecoveryModal = false;
+    }
+    if (ImGui::BeginPopupModal("Recover unsaved work?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        if (dialogs_.recovery) {
+            ImGui::Text("Aerial did not exit cleanly last time (process %d).", dialogs_.recovery->pid);
+            ImGui::Text("Unsaved work on %s was autosaved.", dialogs_.recovery->documentPath.empty()
+                                                                 ? "an untitled preset"
+                                                                 : dialogs_.recovery->documentPath.c_str());
+        }
+        if (ImGui::Button("Recover", ImVec2(110, 0))) {
+            ImGui::CloseCurrentPopup();
+            recover(true);
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Discard", ImVec2(110, 0))) {
+            ImGui::CloseCurrentPopup();
+            recover(false);
+        }
+        ImGui::EndPopup();
+    }
+}
+
+void Editor::resolveUnsaved(UnsavedChoice choice) {
+    dialogs_.unsavedPromptOpen = false;
+    switch (choice) {
+        case UnsavedChoice::Save:
+            if (doc_.path().empty()) {
+                dialogs_.continueAfterSave = true;  // the pending action runs once Save As succeeds
+                saveOrSaveAs(true);
+            } else if (savePresetTo(doc_.path())) {
+                runPending();
+            } else {
+                dialogs_.pending = Pending::None;
+            }
+            break;
+        case UnsavedChoice::Discard:
+            runPending();
+            break;
+        case UnsavedChoice::Cancel:
+            dialogs_.pending = Pending::None;
+            break;
     }
 }
 

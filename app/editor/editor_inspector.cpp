@@ -225,13 +225,7 @@ void Editor::drawParam(const ParamRef& ref) {
 void Editor::drawInspector() {
     const Preset& preset = doc_.preset();
     ImGui::PushItemWidth(-std::min(190.0f, ImGui::GetWindowWidth() * 0.48f));
-    if (ImGui::Button("Key all changed")) {
-        int count = 0;
-        const Preset baseline = doc_.baseline();
-        doc_.apply("Key all changed", "",
-                   [&](Preset& p) { count = keyAllChanged(p, baseline, playback_.timeHours); });
-        setStatus(std::to_string(count) + " keys set");
-    }
+    if (ImGui::Button("Key all changed")) setStatus(std::to_string(keyAllChangedNow()) + " keys set");
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Key every animatable parameter whose value here differs from the saved preset");
     ImGui::Separator();
@@ -316,11 +310,11 @@ void Editor::drawInspector() {
                             lightningFlash(preset.emitters[std::size_t(index)], playback_.timeHours));
             }
             ImGui::Spacing();
-            if (ImGui::Button("Duplicate")) duplicateSelection();
+            if (ImGui::Button("Duplicate")) actions_.run("duplicate");
             ImGui::SameLine();
-            if (ImGui::Button("Delete")) deleteSelection();
+            if (ImGui::Button("Delete")) actions_.run("delete");
             ImGui::SameLine();
-            if (ImGui::Button("Frame (F)")) frameSelection();
+            if (ImGui::Button("Frame (F)")) actions_.run("frame");
             break;
         }
     }

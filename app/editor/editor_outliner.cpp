@@ -37,6 +37,11 @@ void Editor::drawOutliner() {
     const float previewHeight =
         std::min(ImGui::GetContentRegionAvail().x, 150.0f) + ImGui::GetTextLineHeightWithSpacing();
     ImGui::BeginChild("##outliner", ImVec2(0, -previewHeight), false);
+    // A context-menu item for an action, with the action's shortcut.
+    auto menuItem = [&](const char* label, const char* action) {
+        const std::string keys = actions_.shortcutOf(action);
+        return ImGui::MenuItem(label, keys.empty() ? nullptr : keys.c_str());
+    };
     auto item = [&](const char* label, Selection s) {
         if (ImGui::Selectable(label, edit_.selection == s)) select(s);
     };
@@ -55,11 +60,11 @@ void Editor::drawOutliner() {
             return;
         if (ImGui::BeginPopupContextItem()) {
             if (volume) {
-                if (ImGui::MenuItem("Add box volume")) addVolumeInFront(FogVolumeShape::Box);
-                if (ImGui::MenuItem("Add ellipsoid volume")) addVolumeInFront(FogVolumeShape::Ellipsoid);
+                if (ImGui::MenuItem("Add box volume")) actions_.run("add_box_volume");
+                if (ImGui::MenuItem("Add ellipsoid volume")) actions_.run("add_ellipsoid_volume");
             } else {
-                if (ImGui::MenuItem("Add emitter")) addEmitterInFront(EmitterKind::Point);
-                if (ImGui::MenuItem("Add lightning")) addEmitterInFront(EmitterKind::Lightning);
+                if (ImGui::MenuItem("Add emitter")) actions_.run("add_point_emitter");
+                if (ImGui::MenuItem("Add lightning")) actions_.run("add_lightning");
             }
             ImGui::EndPopup();
         }
@@ -102,9 +107,9 @@ void Editor::drawOutliner() {
                         edit_.renaming = true;
                         edit_.renameBuffer = name;
                     }
-                    if (ImGui::MenuItem("Duplicate", "Ctrl+D")) duplicateSelection();
-                    if (ImGui::MenuItem("Delete", "Del")) deleteSelection();
-                    if (ImGui::MenuItem("Frame", "F")) frameSelection();
+                    if (menuItem("Duplicate", "duplicate")) actions_.run("duplicate");
+                    if (menuItem("Delete", "delete")) actions_.run("delete");
+                    if (menuItem("Frame", "frame")) actions_.run("frame");
                     ImGui::EndPopup();
                 }
             }
@@ -116,11 +121,11 @@ void Editor::drawOutliner() {
     objects(true);
     objects(false);
     ImGui::Spacing();
-    if (ImGui::SmallButton("+ Box")) addVolumeInFront(FogVolumeShape::Box);
+    if (ImGui::SmallButton("+ Box")) actions_.run("add_box_volume");
     ImGui::SameLine();
-    if (ImGui::SmallButton("+ Ellipsoid")) addVolumeInFront(FogVolumeShape::Ellipsoid);
+    if (ImGui::SmallButton("+ Ellipsoid")) actions_.run("add_ellipsoid_volume");
     ImGui::SameLine();
-    if (ImGui::SmallButton("+ Emitter")) addEmitterInFront(EmitterKind::Point);
+    if (ImGui::SmallButton("+ Emitter")) actions_.run("add_point_emitter");
     ImGui::EndChild();
     drawSkyPreview();
 }

@@ -59,8 +59,7 @@ void Editor::drawTimeline() {
     const Location& where = preset.environment.location;
 
     // --- controls ----------------------------------------------------------
-    if (ImGui::Button(playback_.playing ? "Pause" : "Play", ImVec2(54, 0)))
-        playback_.playing = !playback_.playing;
+    if (ImGui::Button(playback_.playing ? "Pause" : "Play", ImVec2(54, 0))) actions_.run("play_pause");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Play / pause (Space)");
     ImGui::SameLine();
     float speed = float(playback_.speed);
