@@ -91,6 +91,7 @@ Editor::Editor(const EditorOptions& options)
     : options_(options), recent_((fs::path(configDirectory()) / "recent.json").string()) {
     sessionFile_ = (fs::path(configDirectory()) / "session.json").string();
     declareActions();
+    declareScriptCommands();
 }
 
 Editor::~Editor() {

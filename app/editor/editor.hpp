@@ -3,7 +3,8 @@
 // Private to aerial-editor. Editor composes the parts of editor_parts.hpp
 // (document, edit state, playback, sky service, viewport, dialogs, script
 // runner, frame stats); every user action is declared once in its action
-// table (actions.hpp). The implementation is split by panel:
+// table (actions.hpp), and the script's commands with arguments in its
+// script command table (script.hpp). The implementation is split by panel:
 //
 //   editor.cpp            window, frame loop, layout, status bar, sky
 //                         solves, bench, selection
@@ -16,7 +17,10 @@
 //   editor_timeline.cpp   ruler, scrubbing, play, keys, curve view
 //   editor_files.cpp      new/open/save/recent/drop/scene, unsaved-changes
 //                         prompt, load-error modal, recovery
-//   editor_script.cpp     the automation commands (--script)
+//   editor_script.cpp     the automation (--script): runner, commands for
+//                         files, prompts and checks
+//   editor_script_edit.cpp  script commands that edit objects, parameters,
+//                         keys, the time and the view
 //
 // Every change to the preset goes through Document::apply (document.hpp),
 // so it is undoable and marks the document dirty.
@@ -143,13 +147,15 @@ private:
     void recover(bool accept);
     void startExport(const std::string& directory);
 
-    // --- editor_script.cpp -------------------------------------------------
+    // --- editor_script.cpp, editor_script_edit.cpp -------------------------
+    void declareScriptCommands();
+    void declareEditScriptCommands();
     void stepScript();
     /// Runs one command; returns false with `error` set on failure. May ask
-    /// to wait: scriptWait_ frames, or until the synthetic mouse queue is empty.
+    /// to wait: ScriptRunner::waitFrames frames, or until the synthetic
+    /// mouse queue is empty.
     bool runScriptCommand(const ScriptCommand& command, std::string& error);
-    void queueGizmoDrag(GizmoMode mode, int axis, glm::dvec2 deltaPx, int steps, bool& ok,
-                        std::string& error);
+    bool queueGizmoDrag(GizmoMode mode, int axis, glm::dvec2 deltaPx, int steps, std::string& error);
 
     EditorOptions options_;
     GLFWwindow* window_ = nullptr;
@@ -177,8 +183,9 @@ private:
     GameExport export_;
     std::string status_;
 
-    // Every user action.
+    // Every user action, and the script language.
     ActionTable actions_;
+    ScriptCommandTable scriptCommands_;
 
     friend void dropCallback(GLFWwindow*, int, const char**);
 };
