@@ -401,12 +401,16 @@ void Editor::layout() {
 
     ImGui::SetNextWindowPos(ImVec2(0, menuH));
     ImGui::SetNextWindowSize(ImVec2(leftW, middleH));
-    if (ImGui::Begin("Outliner", nullptr, fixed)) drawOutliner();
+    if (ImGui::Begin("Outliner", nullptr, fixed)) {
+        drawOutliner(doc_, edit_, actions_, [this](Selection s) { select(s); });
+        drawSkyPreview(skyPreview_, sky_, view_, frames_.frameIndex);
+    }
     ImGui::End();
 
     ImGui::SetNextWindowPos(ImVec2(w - rightW, menuH));
     ImGui::SetNextWindowSize(ImVec2(rightW, middleH));
-    if (ImGui::Begin("Inspector", nullptr, fixed)) drawInspector();
+    if (ImGui::Begin("Inspector", nullptr, fixed))
+        drawInspector(doc_, edit_, playback_.timeHours, sky_.state, actions_, status_);
     ImGui::End();
 
     ImGui::SetNextWindowPos(ImVec2(leftW, menuH));
@@ -422,7 +426,8 @@ void Editor::layout() {
 
     ImGui::SetNextWindowPos(ImVec2(0, menuH + middleH));
     ImGui::SetNextWindowSize(ImVec2(w, timelineH));
-    if (ImGui::Begin("Timeline", nullptr, fixed | ImGuiWindowFlags_NoScrollbar)) drawTimeline();
+    if (ImGui::Begin("Timeline", nullptr, fixed | ImGuiWindowFlags_NoScrollbar))
+        drawTimeline(doc_, edit_, playback_, actions_, status_);
     ImGui::End();
 
     ImGui::SetNextWindowPos(ImVec2(0, h - statusH));
@@ -547,14 +552,6 @@ void Editor::deleteSelection() {
     doc_.apply("Delete", "", [&](Preset& p) { deleteObject(p, scope, index); });
     edit_.selectedParam.reset();
     edit_.validate(doc_.preset());
-}
-
-int Editor::keyAllChangedNow() {
-    int count = 0;
-    const Preset baseline = doc_.baseline();
-    const double t = playback_.timeHours;
-    doc_.apply("Key all changed", "", [&](Preset& p) { count = keyAllChanged(p, baseline, t); });
-    return count;
 }
 
 void Editor::duplicateSelection() {

@@ -15,6 +15,8 @@
 //   editor_inspector.cpp  the inspector, generated from the parameter table
 //   editor_outliner.cpp   the outliner and the sky preview
 //   editor_timeline.cpp   ruler, scrubbing, play, keys, curve view
+//                         (these three are free functions, panels.hpp, that
+//                         take the parts they edit)
 //   editor_files.cpp      new/open/save/recent/drop/scene, unsaved-changes
 //                         prompt, load-error modal, recovery
 //   editor_script.cpp     the automation (--script): runner, commands for
@@ -29,6 +31,7 @@
 #include "actions.hpp"
 #include "editor_parts.hpp"
 #include "game_export.hpp"
+#include "panels.hpp"
 #include "settings.hpp"
 
 #include <chrono>
@@ -93,8 +96,6 @@ private:
     void addEmitterInFront(EmitterKind kind);
     void deleteSelection();
     void duplicateSelection();
-    /// Keys every parameter that differs from the saved preset; the count.
-    int keyAllChangedNow();
 
     // --- editor_actions.cpp --------------------------------------------------
     void declareActions();
@@ -115,20 +116,6 @@ private:
     bool screenshot(const std::string& path, std::string& error);
     renderer::CameraFrame viewportCameraFrame() const;
     void rebuildDisplay();
-
-    // --- editor_inspector.cpp ----------------------------------------------
-    void drawInspector();
-    void drawParam(const ParamRef& ref);
-    bool keyButton(const ParamRef& ref);
-    void editParam(const ParamRef& ref, const double value[4], bool continuous);
-
-    // --- editor_outliner.cpp -----------------------------------------------
-    void drawOutliner();
-    void drawSkyPreview();
-    void updateSkyPreview();
-
-    // --- editor_timeline.cpp -----------------------------------------------
-    void drawTimeline();
 
     // --- editor_files.cpp --------------------------------------------------
     void requestNew();

@@ -105,7 +105,7 @@ void Editor::declareActions() {
         .separated()
         .oneUndoStep()
         .does([this] {
-            const int count = keyAllChangedNow();
+            const int count = keyAllChangedAt(doc_, playback_.timeHours);
             setStatus(std::to_string(count) + " keys set at " + clockText());
         });
 

@@ -152,7 +152,7 @@ void Editor::declareEditScriptCommands() {
                                return false;
                            }
                    }
-                   editParam(*ref, v, false);
+                   editParam(doc_, *ref, v, false, playback_.timeHours);
                    edit_.selectedParam = ref;
                    return true;
                }});
@@ -253,7 +253,7 @@ void Editor::declareEditScriptCommands() {
                }});
     table.add({"key_all_changed", 0, kAnyArgs, "key_all_changed",
                "key every parameter that differs from the saved preset", [this](W, E) {
-                   std::printf("keyed %d parameters\n", keyAllChangedNow());
+                   std::printf("keyed %d parameters\n", keyAllChangedAt(doc_, playback_.timeHours));
                    return true;
                }});
 
