@@ -1,6 +1,9 @@
 // editor/actions.cpp — see actions.hpp.
 #include "actions.hpp"
 
+#ifndef GLFW_INCLUDE_NONE
+#define GLFW_INCLUDE_NONE  // the key codes only, no GL header
+#endif
 #include <GLFW/glfw3.h>
 
 #include <cassert>
@@ -58,6 +61,12 @@ bool ActionTable::hasShortcut(int key, int modifiers) const {
         for (const Shortcut& s : a.keys)
             if (s.key == key && s.modifiers == modifiers) return true;
     return false;
+}
+
+bool ActionTable::answers(const Shortcut& shortcut, int held) const {
+    if (shortcut.modifiers == held) return true;
+    return held == (Shortcut::kCtrl | Shortcut::kShift) && shortcut.modifiers == Shortcut::kCtrl &&
+           !hasShortcut(shortcut.key, held);
 }
 
 }  // namespace aerial::editor

@@ -3,7 +3,8 @@
 // enabled, what it does, whether it is one undo step and whether scripts can
 // call it. The menu bar, the keyboard shortcuts and the script's commands
 // without arguments are all driven by the one ActionTable
-// (editor_actions.cpp builds it); panels run an action by name.
+// (editor_actions.cpp declares the editor's); panels run an action by name.
+// No ImGui here: keys are GLFW key codes.
 //
 // Usage:
 //   table.add("duplicate", "Duplicate", "Edit")
@@ -92,6 +93,11 @@ public:
     std::string shortcutOf(std::string_view name) const;
     /// Whether some action has exactly this key and these modifiers.
     bool hasShortcut(int key, int modifiers) const;
+    /// Whether `shortcut` answers its key while the modifiers `held`
+    /// (Shortcut::Modifiers) are down: they are its own, or Ctrl+Shift is
+    /// held for a Ctrl+KEY shortcut and no action has Ctrl+Shift+KEY (so
+    /// Ctrl+Shift+N is New, but Ctrl+Shift+Z is Redo, not Undo).
+    bool answers(const Shortcut& shortcut, int held) const;
     const std::vector<Action>& all() const { return actions_; }
 
 private:

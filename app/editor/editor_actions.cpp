@@ -248,11 +248,8 @@ void Editor::handleShortcuts() {
     const int held = (ctrl ? Shortcut::kCtrl : 0) | (shift ? Shortcut::kShift : 0);
     for (const Action& a : actions_.all()) {
         for (const Shortcut& s : a.keys) {
-            if (s.ctrl() != ctrl || !ImGui::IsKeyPressed(s.key, s.repeat)) continue;
-            // Ctrl+Shift+KEY does what Ctrl+KEY does unless it has an action of its own.
-            const bool match =
-                s.modifiers == held || (ctrl && shift && !s.shift() && !actions_.hasShortcut(s.key, held));
-            if (!match || (a.keyAllowed && !a.keyAllowed())) continue;
+            if (!actions_.answers(s, held) || !ImGui::IsKeyPressed(s.key, s.repeat)) continue;
+            if (a.keyAllowed && !a.keyAllowed()) continue;
             if (a.isEnabled()) a.run();
             break;
         }
