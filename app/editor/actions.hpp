@@ -54,8 +54,9 @@ struct Action {
     std::function<bool()> keyAllowed;   ///< an extra condition for the shortcut only; null = none
     std::function<void()> run;
     /// A menu entry that is more than an item (a list of files, a slider):
-    /// drawn by this instead of an item; such an entry has no `run`.
-    std::function<void()> drawMenu;
+    /// drawn by this, given the label, instead of an item; such an entry
+    /// has no `run`.
+    std::function<void(const char* label)> drawMenu;
 
     bool isEnabled() const { return !enabled || enabled(); }
 
@@ -76,7 +77,9 @@ struct Action {
     Action& labelledBy(std::function<std::string()> make) { return text = std::move(make), *this; }
     Action& keyOnlyWhen(std::function<bool()> predicate) { return keyAllowed = std::move(predicate), *this; }
     Action& does(std::function<void()> handler) { return run = std::move(handler), *this; }
-    Action& drawsMenu(std::function<void()> draw) { return drawMenu = std::move(draw), *this; }
+    Action& drawsMenu(std::function<void(const char* label)> draw) {
+        return drawMenu = std::move(draw), *this;
+    }
 };
 
 /// The actions in menu order.

@@ -26,8 +26,8 @@ void Editor::declareActions() {
     // --- File ------------------------------------------------------------------
     t.add("request_new", "New", "File").key(GLFW_KEY_N, S::kCtrl).scriptable().does([this] { requestNew(); });
     t.add("open_dialog", "Open...", "File").key(GLFW_KEY_O, S::kCtrl).does([this] { requestOpen(""); });
-    t.add("open_recent", "Open Recent", "File").drawsMenu([this] {
-        if (!ImGui::BeginMenu("Open Recent", !recent_.files().empty())) return;
+    t.add("open_recent", "Open Recent", "File").drawsMenu([this](const char* label) {
+        if (!ImGui::BeginMenu(label, !recent_.files().empty())) return;
         std::string chosen;
         for (const std::string& file : recent_.files())
             if (ImGui::MenuItem(file.c_str())) chosen = file;
@@ -125,8 +125,8 @@ void Editor::declareActions() {
     });
 
     // --- View --------------------------------------------------------------------
-    t.add("ocio_display", "OCIO display", "View").drawsMenu([this] {
-        if (!view_.display || !ImGui::BeginMenu("OCIO display")) return;
+    t.add("ocio_display", "OCIO display", "View").drawsMenu([this](const char* label) {
+        if (!view_.display || !ImGui::BeginMenu(label)) return;
         for (const std::string& d : view_.display->displays())
             if (ImGui::MenuItem(d.c_str(), nullptr, d == view_.display->display())) {
                 view_.displayName = d;
@@ -135,8 +135,8 @@ void Editor::declareActions() {
             }
         ImGui::EndMenu();
     });
-    t.add("ocio_view", "OCIO view", "View").drawsMenu([this] {
-        if (!view_.display || !ImGui::BeginMenu("OCIO view")) return;
+    t.add("ocio_view", "OCIO view", "View").drawsMenu([this](const char* label) {
+        if (!view_.display || !ImGui::BeginMenu(label)) return;
         for (const std::string& v : view_.display->views())
             if (ImGui::MenuItem(v.c_str(), nullptr, v == view_.display->view())) {
                 view_.viewName = v;
@@ -144,20 +144,20 @@ void Editor::declareActions() {
             }
         ImGui::EndMenu();
     });
-    t.add("exposure", "Exposure [EV]", "View").drawsMenu([this] {
+    t.add("exposure", "Exposure [EV]", "View").drawsMenu([this](const char* label) {
         float ev = float(view_.exposureEv);
         ImGui::SetNextItemWidth(140.0f);
-        if (ImGui::SliderFloat("Exposure [EV]", &ev, -10.0f, 10.0f, "%.2f")) {
+        if (ImGui::SliderFloat(label, &ev, -10.0f, 10.0f, "%.2f")) {
             view_.exposureEv = ev;
             if (view_.display) view_.display->setExposureEv(ev);
         }
     });
-    t.add("resolution_scale_menu", "Resolution scale", "View").drawsMenu([this] {
-        if (!ImGui::BeginMenu("Resolution scale")) return;
+    t.add("resolution_scale_menu", "Resolution scale", "View").drawsMenu([this](const char* label) {
+        if (!ImGui::BeginMenu(label)) return;
         for (double s : {0.25, 0.5, 0.75, 1.0}) {
-            char label[32];
-            std::snprintf(label, sizeof label, "%d%%", int(s * 100.0 + 0.5));
-            if (ImGui::MenuItem(label, nullptr, std::abs(view_.resolutionScale - s) < 1e-9))
+            char percent[32];
+            std::snprintf(percent, sizeof percent, "%d%%", int(s * 100.0 + 0.5));
+            if (ImGui::MenuItem(percent, nullptr, std::abs(view_.resolutionScale - s) < 1e-9))
                 view_.resolutionScale = s;
         }
         ImGui::EndMenu();
@@ -226,7 +226,7 @@ void Editor::drawMenuBar() {
             if (a.menu != menu) continue;
             if (a.separatorBefore) ImGui::Separator();
             if (a.drawMenu) {
-                a.drawMenu();
+                a.drawMenu(a.label.c_str());
                 continue;
             }
             const std::string label = a.text ? a.text() : a.label;

@@ -113,20 +113,21 @@ void Editor::renderViewport() {
 void Editor::drawViewport() {
     // Toolbar: gizmo mode and space, resolution.
     ImGui::SetCursorPos(ImVec2(6.0f, ImGui::GetCursorPosY() + 2.0f));
-    auto modeButton = [&](const char* label, GizmoMode mode, const char* tip) {
+    auto modeButton = [&](const char* label, GizmoMode mode, const char* action, const char* tip) {
         const bool on = view_.gizmoMode == mode;
         if (on) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
-        if (ImGui::SmallButton(label)) view_.gizmoMode = mode;
+        if (ImGui::SmallButton(label)) actions_.run(action);
         if (on) ImGui::PopStyleColor();
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tip);
         ImGui::SameLine();
     };
-    modeButton("Move", GizmoMode::Translate,
+    modeButton("Move", GizmoMode::Translate, "gizmo_move",
                "Move (W): drag an arrow, a plane square or the centre; Ctrl snaps to 1 m");
-    modeButton("Rotate", GizmoMode::Rotate, "Rotate (E): drag a ring; Ctrl snaps to 15 deg");
-    modeButton("Scale", GizmoMode::Scale, "Scale (R): drag an axis cube or the centre; Ctrl snaps to 0.1");
+    modeButton("Rotate", GizmoMode::Rotate, "gizmo_rotate", "Rotate (E): drag a ring; Ctrl snaps to 15 deg");
+    modeButton("Scale", GizmoMode::Scale, "gizmo_scale",
+               "Scale (R): drag an axis cube or the centre; Ctrl snaps to 0.1");
     if (ImGui::SmallButton(view_.gizmoSpace == GizmoSpace::World ? "World" : "Local"))
-        view_.gizmoSpace = view_.gizmoSpace == GizmoSpace::World ? GizmoSpace::Local : GizmoSpace::World;
+        actions_.run("gizmo_local_axes");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Gizmo axes: world or the object's own (L)");
     ImGui::SameLine();
     ImGui::TextDisabled("%dx%d (%d%%)  RMB orbit/fly (WASDQE), MMB pan, wheel zoom, F frame",
