@@ -88,6 +88,27 @@ void drawTimeline(Document& doc, EditState& edit, Playback& playback, const Acti
     const Track* track = edit.selectedParam ? trackOf(preset, *edit.selectedParam) : nullptr;
     const TrackTarget target =
         edit.selectedParam ? trackTargetOf(preset, *edit.selectedParam) : TrackTarget{};
+    // The selected key's operations: the buttons, the key menu and the keyboard share them.
+    auto deleteSelectedKey = [&] {
+        const int key = edit.selectedKey;
+        doc.apply("Delete key", "", [&](Preset& p) { removeKey(p, target, key); });
+        edit.selectedKey = -1;
+    };
+    auto copySelectedKey = [&] {
+        const Track* t = edit.selectedParam ? trackOf(doc.preset(), *edit.selectedParam) : nullptr;
+        if (!t || edit.selectedKey < 0 || edit.selectedKey >= int(t->keys.size())) return false;
+        edit.keyClipboard = {true, edit.selectedParam->desc->type,
+                             t->keys[std::size_t(edit.selectedKey)].value};
+        return true;
+    };
+    auto pasteKeyNow = [&] {  // false when the copied key does not fit the parameter
+        const ParamRef ref = *edit.selectedParam;
+        const double now = playback.timeHours;
+        const KeyClipboard clip = edit.keyClipboard;
+        bool ok = false;
+        doc.apply("Paste key", "", [&](Preset& p) { ok = pasteKey(p, ref, clip, now); });
+        return ok;
+    };
     ImGui::SameLine();
     ImGui::TextDisabled("|");
     ImGui::SameLine();
@@ -108,30 +129,19 @@ void drawTimeline(Document& doc, EditState& edit, Playback& playback, const Acti
         ImGui::SameLine();
         ImGui::BeginDisabled(!(track && edit.selectedKey >= 0));
         if (ImGui::Button("Delete key")) {
-            const int key = edit.selectedKey;
-            doc.apply("Delete key", "", [&](Preset& p) { removeKey(p, target, key); });
-            edit.selectedKey = -1;
+            deleteSelectedKey();
             track = trackOf(doc.preset(), *edit.selectedParam);
         }
         ImGui::SameLine();
-        if (ImGui::Button("Copy") && track && edit.selectedKey >= 0 &&
-            edit.selectedKey < int(track->keys.size())) {
-            edit.keyClipboard = {true, edit.selectedParam->desc->type,
-                                 track->keys[std::size_t(edit.selectedKey)].value};
-            status = "Copied key";
-        }
+        if (ImGui::Button("Copy") && copySelectedKey()) status = "Copied key";
         ImGui::EndDisabled();
         ImGui::SameLine();
         ImGui::BeginDisabled(!edit.keyClipboard.valid);
         if (ImGui::Button("Paste")) {
-            const ParamRef ref = *edit.selectedParam;
             const double t = playback.timeHours;
-            const KeyClipboard clip = edit.keyClipboard;
-            bool ok = false;
-            doc.apply("Paste key", "", [&](Preset& p) { ok = pasteKey(p, ref, clip, t); });
-            status =
-                ok ? "Pasted key at " + clock(t) : std::string("The copied key does not fit this parameter");
-            track = trackOf(doc.preset(), ref);
+            status = pasteKeyNow() ? "Pasted key at " + clock(t)
+                                   : std::string("The copied key does not fit this parameter");
+            track = trackOf(doc.preset(), *edit.selectedParam);
         }
         ImGui::EndDisabled();
         if (track) {
@@ -270,17 +280,8 @@ void drawTimeline(Document& doc, EditState& edit, Playback& playback, const Acti
         }
     }
     if (ImGui::BeginPopup("##keymenu")) {
-        if (ImGui::MenuItem("Delete key", "Del") && edit.selectedKey >= 0) {
-            const int key = edit.selectedKey;
-            doc.apply("Delete key", "", [&](Preset& p) { removeKey(p, target, key); });
-            edit.selectedKey = -1;
-        }
-        if (ImGui::MenuItem("Copy", "Ctrl+C")) {
-            if (const Track* t = edit.selectedParam ? trackOf(doc.preset(), *edit.selectedParam) : nullptr;
-                t && edit.selectedKey >= 0 && edit.selectedKey < int(t->keys.size()))
-                edit.keyClipboard = {true, edit.selectedParam->desc->type,
-                                     t->keys[std::size_t(edit.selectedKey)].value};
-        }
+        if (ImGui::MenuItem("Delete key", "Del") && edit.selectedKey >= 0) deleteSelectedKey();
+        if (ImGui::MenuItem("Copy", "Ctrl+C")) copySelectedKey();
         if (ImGui::MenuItem("Jump to key") && edit.selectedParam) {
             if (const Track* t = trackOf(doc.preset(), *edit.selectedParam);
                 t && edit.selectedKey >= 0 && edit.selectedKey < int(t->keys.size()))
@@ -300,21 +301,10 @@ void drawTimeline(Document& doc, EditState& edit, Playback& playback, const Acti
     if (ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows) && !ImGui::GetIO().WantTextInput &&
         edit.selectedParam) {
         const Track* t = trackOf(doc.preset(), *edit.selectedParam);
-        if (ImGui::IsKeyPressed(GLFW_KEY_DELETE, false) && t && edit.selectedKey >= 0) {
-            const int key = edit.selectedKey;
-            doc.apply("Delete key", "", [&](Preset& p) { removeKey(p, target, key); });
-            edit.selectedKey = -1;
-        }
-        if (ImGui::GetIO().KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_C, false) && t && edit.selectedKey >= 0 &&
-            edit.selectedKey < int(t->keys.size()))
-            edit.keyClipboard = {true, edit.selectedParam->desc->type,
-                                 t->keys[std::size_t(edit.selectedKey)].value};
-        if (ImGui::GetIO().KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_V, false) && edit.keyClipboard.valid) {
-            const ParamRef ref = *edit.selectedParam;
-            const double now = playback.timeHours;
-            const KeyClipboard clip = edit.keyClipboard;
-            doc.apply("Paste key", "", [&](Preset& p) { pasteKey(p, ref, clip, now); });
-        }
+        if (ImGui::IsKeyPressed(GLFW_KEY_DELETE, false) && t && edit.selectedKey >= 0) deleteSelectedKey();
+        if (ImGui::GetIO().KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_C, false)) copySelectedKey();
+        if (ImGui::GetIO().KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_V, false) && edit.keyClipboard.valid)
+            pasteKeyNow();
     }
     edit.timelineHovered = ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows);
 
