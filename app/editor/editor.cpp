@@ -1,5 +1,5 @@
-// editor/editor.cpp — window, frame loop, fixed layout, menus, shortcuts,
-// status bar, sky solves, --bench, modals. See editor.hpp for the map.
+// editor/editor.cpp — window, frame loop, fixed layout, status bar, sky
+// solves, --bench, selection and objects. See editor.hpp for the map.
 #include "editor.hpp"
 
 #include <epoxy/gl.h>  // epoxy before any other GL header
@@ -78,7 +78,7 @@ void dropCallback(GLFWwindow* window, int count, const char** paths) {
     auto* editor = static_cast<Editor*>(glfwGetWindowUserPointer(window));
     if (!editor) return;
     for (int i = 0; i < count; ++i)
-        if (paths[i]) editor->drops_.emplace_back(paths[i]);
+        if (paths[i]) editor->dialogs_.drops.emplace_back(paths[i]);
 }
 
 int runEditor(const EditorOptions& options) {
@@ -90,16 +90,18 @@ int runEditor(const EditorOptions& options) {
 Editor::Editor(const EditorOptions& options)
     : options_(options), recent_((fs::path(configDirectory()) / "recent.json").string()) {
     sessionFile_ = (fs::path(configDirectory()) / "session.json").string();
+    declareActions();
+    declareScriptCommands();
 }
 
 Editor::~Editor() {
     export_.cancel();
     if (window_) {
         glfwMakeContextCurrent(window_);
-        if (displayTexture_) glDeleteTextures(1, &displayTexture_);
-        if (skyPreviewTexture_) glDeleteTextures(1, &skyPreviewTexture_);
-        display_.reset();
-        renderer_.reset();
+        if (view_.displayTexture) glDeleteTextures(1, &view_.displayTexture);
+        if (skyPreview_.texture) glDeleteTextures(1, &skyPreview_.texture);
+        view_.display.reset();
+        view_.renderer.reset();
         if (imguiReady_) {
             ImGui_ImplOpenGL3_Shutdown();
             ImGui_ImplGlfw_Shutdown();
@@ -168,21 +170,22 @@ std::optional<int> Editor::initialise() {
     imguiReady_ = true;
 
     renderer::RendererDesc desc;
-    desc.logger = {rendererLog, &renderLogError_};
+    desc.logger = {rendererLog, &view_.renderLogError};
     desc.debugOutput = false;
-    renderer_ = std::make_unique<renderer::Renderer>(desc);
-    if (!renderer_->valid()) {
-        std::fprintf(stderr, "aerial-editor: cannot create the renderer: %s\n", renderer_->error().c_str());
+    view_.renderer = std::make_unique<renderer::Renderer>(desc);
+    if (!view_.renderer->valid()) {
+        std::fprintf(stderr, "aerial-editor: cannot create the renderer: %s\n",
+                     view_.renderer->error().c_str());
         return kExitFailure;
     }
-    sunSolver_ = std::make_unique<SkySolver>();
-    moonSolver_ = std::make_unique<SkySolver>();
+    sky_.sunSolver = std::make_unique<SkySolver>();
+    sky_.moonSolver = std::make_unique<SkySolver>();
 
     if (options_.benchFrames == 0) session_.load(sessionFile_);  // --bench starts from the defaults
     recent_.load();
     if (!session_.cameraJson.empty()) {
-        CameraState cameraState = camera_.state();
-        if (cameraStateFromJson(session_.cameraJson, cameraState)) camera_.setState(cameraState);
+        CameraState cameraState = view_.camera.state();
+        if (cameraStateFromJson(session_.cameraJson, cameraState)) view_.camera.setState(cameraState);
     } else {
         // Above the valley floor looking north up the valley (as `aerial render`).
         CameraState s;
@@ -190,41 +193,41 @@ std::optional<int> Editor::initialise() {
         s.distance = 70.0;
         s.yaw = 0.0;
         s.pitch = -0.18;
-        camera_.setState(s);
+        view_.camera.setState(s);
     }
-    displayName_ = session_.display;
-    viewName_ = session_.view;
-    exposureEv_ = session_.exposureEv;
-    resolutionScale_ = session_.resolutionScale;
-    timeHours_ = options_.script.empty() ? session_.timeHours : 9.0;  // scripts start at 09:00
+    view_.displayName = session_.display;
+    view_.viewName = session_.view;
+    view_.exposureEv = session_.exposureEv;
+    view_.resolutionScale = session_.resolutionScale;
+    playback_.timeHours = options_.script.empty() ? session_.timeHours : 9.0;  // scripts start at 09:00
     rebuildDisplay();
 
     if (!options_.scene.empty()) {
         if (!loadScene(options_.scene)) {
-            std::fprintf(stderr, "aerial-editor: %s\n", errorText_.c_str());
+            std::fprintf(stderr, "aerial-editor: %s\n", dialogs_.errorText.c_str());
             if (automated) return kExitFailure;
         }
     } else {
-        renderer_->setScene(renderer::makeBuiltinScene());
-        lastRenderSignature_.clear();
+        view_.renderer->setScene(renderer::makeBuiltinScene());
+        view_.lastRenderSignature.clear();
     }
     if (!options_.preset.empty()) {
         if (!openPreset(options_.preset)) {
             std::fprintf(stderr, "aerial-editor: cannot open %s:\n%s\n", options_.preset.c_str(),
-                         errorText_.c_str());
+                         dialogs_.errorText.c_str());
             if (automated) return kExitFailure;
         }
     }
 
     autosave_ = std::make_unique<Autosave>(stateDirectory(), options_.autosaveSeconds);
-    recovery_ = autosave_->findRecovery();
-    if (recovery_) {
+    dialogs_.recovery = autosave_->findRecovery();
+    if (dialogs_.recovery) {
         if (options_.recover == "yes")
             recover(true);
         else if (options_.recover == "no")
             recover(false);
         else
-            openRecoveryModal_ = true;
+            dialogs_.openRecoveryModal = true;
     }
     std::string error;
     if (!autosave_->start(doc_.path(), &error))
@@ -236,13 +239,13 @@ std::optional<int> Editor::initialise() {
             std::fprintf(stderr, "aerial-editor: %s\n", parsed.error.c_str());
             return kExitFailure;
         }
-        script_ = std::move(parsed.commands);
+        runner_.commands = std::move(parsed.commands);
         std::printf("aerial-editor pid %d\n", int(::getpid()));  // for tests that kill -9 it
         std::fflush(stdout);
-        if (script_.empty()) script_.push_back({0, {"quit"}});
+        if (runner_.commands.empty()) runner_.commands.push_back({0, {"quit"}});
     }
     glfwSetWindowTitle(window_, doc_.title().c_str());
-    lastFrame_ = std::chrono::steady_clock::now();
+    frames_.lastFrame = std::chrono::steady_clock::now();
     return std::nullopt;
 }
 
@@ -254,17 +257,17 @@ int Editor::run() {
             title = doc_.title();
             glfwSetWindowTitle(window_, title.c_str());
         }
-        if (options_.benchFrames > 0 && frameIndex_ >= options_.benchFrames + 3) quit_ = true;
+        if (options_.benchFrames > 0 && frames_.frameIndex >= options_.benchFrames + 3) quit_ = true;
     }
     export_.wait();
     if (options_.benchFrames > 0) printBench();
     if (options_.benchFrames == 0) {
-        session_.cameraJson = cameraStateToJson(camera_.state());
-        session_.display = displayName_;
-        session_.view = viewName_;
-        session_.exposureEv = exposureEv_;
-        session_.resolutionScale = resolutionScale_;
-        session_.timeHours = timeHours_;
+        session_.cameraJson = cameraStateToJson(view_.camera.state());
+        session_.display = view_.displayName;
+        session_.view = view_.viewName;
+        session_.exposureEv = view_.exposureEv;
+        session_.resolutionScale = view_.resolutionScale;
+        session_.timeHours = playback_.timeHours;
         session_.save(sessionFile_);
     }
     if (autosave_) autosave_->finish();
@@ -273,16 +276,18 @@ int Editor::run() {
 
 void Editor::frame() {
     const auto now = std::chrono::steady_clock::now();
-    const double dt = std::chrono::duration<double>(now - lastFrame_).count();
-    lastFrame_ = now;
-    frameMs_ = dt * 1000.0;
-    if (options_.benchFrames > 0 && frameIndex_ >= 3 && int(benchFrameMs_.size()) < options_.benchFrames)
-        benchFrameMs_.push_back(frameMs_);  // the first frames compile shaders and fill caches
+    const double dt = std::chrono::duration<double>(now - frames_.lastFrame).count();
+    frames_.lastFrame = now;
+    frames_.frameMs = dt * 1000.0;
+    if (options_.benchFrames > 0 && frames_.frameIndex >= 3 &&
+        int(frames_.benchFrameMs.size()) < options_.benchFrames)
+        frames_.benchFrameMs.push_back(frames_.frameMs);  // the first frames compile shaders and fill caches
 
     // An idle editor sleeps until the next event (or 0.25 s) instead of
     // redrawing: on a software rasteriser every frame costs a core.
     const bool automated = !options_.script.empty() || options_.benchFrames > 0;
-    if (!automated && idleFrames_ > 3 && !playing_ && !export_.running() && !gizmo_.active())
+    if (!automated && frames_.idleFrames > 3 && !playback_.playing && !export_.running() &&
+        !view_.gizmo.active())
         glfwWaitEventsTimeout(0.25);
     else
         glfwPollEvents();
@@ -301,15 +306,15 @@ void Editor::frame() {
     {
         const ImGuiIO& io = ImGui::GetIO();
         bool active = io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f || io.MouseWheel != 0.0f ||
-                      io.WantTextInput || !drops_.empty() || ImGui::IsAnyItemActive();
+                      io.WantTextInput || !dialogs_.drops.empty() || ImGui::IsAnyItemActive();
         for (bool down : io.MouseDown) active = active || down;
         for (bool down : io.KeysDown) active = active || down;
-        idleFrames_ = active ? 0 : idleFrames_ + 1;
+        frames_.idleFrames = active ? 0 : frames_.idleFrames + 1;
     }
-    if (!script_.empty()) stepScript();
-    if (options_.benchFrames > 0 && frameIndex_ >= 3)
-        timeHours_ = wrapHours(timeHours_ + 24.0 / 240.0);  // scrub
-    advancePlayback(dt);
+    if (!runner_.commands.empty()) stepScript();
+    if (options_.benchFrames > 0 && frames_.frameIndex >= 3)
+        playback_.timeHours = wrapHours(playback_.timeHours + 24.0 / 240.0);  // scrub
+    playback_.advance(dt);
     updateEvaluation();
     updateSky();
 
@@ -329,14 +334,15 @@ void Editor::frame() {
     glClearColor(0.1f, 0.1f, 0.11f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-    if (!windowShotPath_.empty()) captureWindow(width, height);
+    if (!runner_.windowShotPath.empty()) captureWindow(width, height);
     glfwSwapBuffers(window_);
-    workMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - workStart).count();
+    frames_.workMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - workStart).count();
 
     if (autosave_ &&
         autosave_->update(nowSeconds(), doc_.dirty(), doc_.revision(), doc_.preset(), doc_.path()))
         setStatus("Autosaved unsaved work to " + autosave_->recoveryFile());
-    ++frameIndex_;
+    ++frames_.frameIndex;
 }
 
 void Editor::captureWindow(int width, int height) {
@@ -361,40 +367,22 @@ void Editor::captureWindow(int width, int height) {
                     float(v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4));
             }
     std::string error;
-    if (renderer::writePng(image, windowShotPath_, 1.0, error))
-        std::printf("window_screenshot %s %dx%d\n", windowShotPath_.c_str(), width, height);
+    if (renderer::writePng(image, runner_.windowShotPath, 1.0, error))
+        std::printf("window_screenshot %s %dx%d\n", runner_.windowShotPath.c_str(), width, height);
     else
         std::fprintf(stderr, "aerial-editor: %s\n", error.c_str());
     std::fflush(stdout);
-    windowShotPath_.clear();
+    runner_.windowShotPath.clear();
 }
 
 void Editor::updateEvaluation() {
-    if (!compiled_ || compiledRevision_ != doc_.revision()) {
-        compiled_ = std::make_unique<CompiledPreset>(doc_.preset());
-        compiledRevision_ = doc_.revision();
-        validateSelection();
-    }
-    compiled_->evaluate(timeHours_, state_);
+    if (sky_.evaluate(doc_, playback_.timeHours)) edit_.validate(doc_.preset());
 }
 
 void Editor::updateSky() {
-    const AtmosphereParams& air = state_.environment.atmosphere;
-    const glm::dvec3 sun = state_.sunLight.body.direction, moon = state_.moonLight.body.direction;
-    if (skyValid_ && std::memcmp(&air, &solvedAir_, sizeof air) == 0 && sun == solvedSun_ &&
-        moon == solvedMoon_)
-        return;
-    const auto start = std::chrono::steady_clock::now();
-    sunSolver_->solve(air, sun);
-    moonSolver_->solve(air, moon);
-    skySolveMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    if (options_.benchFrames > 0 && frameIndex_ >= 3) benchSolveMs_.push_back(skySolveMs_);
-    renderer_->setSky(sunSolver_->table(), moonSolver_->table());
-    solvedAir_ = air;
-    solvedSun_ = sun;
-    solvedMoon_ = moon;
-    skyValid_ = true;
-    ++skyGeneration_;
+    if (!sky_.solve()) return;
+    if (options_.benchFrames > 0 && frames_.frameIndex >= 3) frames_.benchSolveMs.push_back(sky_.solveMs);
+    view_.renderer->setSky(sky_.sunSolver->table(), sky_.moonSolver->table());
 }
 
 void Editor::layout() {
@@ -413,12 +401,16 @@ void Editor::layout() {
 
     ImGui::SetNextWindowPos(ImVec2(0, menuH));
     ImGui::SetNextWindowSize(ImVec2(leftW, middleH));
-    if (ImGui::Begin("Outliner", nullptr, fixed)) drawOutliner();
+    if (ImGui::Begin("Outliner", nullptr, fixed)) {
+        drawOutliner(doc_, edit_, actions_, [this](Selection s) { select(s); });
+        drawSkyPreview(skyPreview_, sky_, view_, frames_.frameIndex);
+    }
     ImGui::End();
 
     ImGui::SetNextWindowPos(ImVec2(w - rightW, menuH));
     ImGui::SetNextWindowSize(ImVec2(rightW, middleH));
-    if (ImGui::Begin("Inspector", nullptr, fixed)) drawInspector();
+    if (ImGui::Begin("Inspector", nullptr, fixed))
+        drawInspector(doc_, edit_, playback_.timeHours, sky_.state, actions_, status_);
     ImGui::End();
 
     ImGui::SetNextWindowPos(ImVec2(leftW, menuH));
@@ -428,13 +420,14 @@ void Editor::layout() {
                      fixed | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse))
         drawViewport();
     else
-        viewportVisible_ = false;
+        view_.visible = false;
     ImGui::End();
     ImGui::PopStyleVar();
 
     ImGui::SetNextWindowPos(ImVec2(0, menuH + middleH));
     ImGui::SetNextWindowSize(ImVec2(w, timelineH));
-    if (ImGui::Begin("Timeline", nullptr, fixed | ImGuiWindowFlags_NoScrollbar)) drawTimeline();
+    if (ImGui::Begin("Timeline", nullptr, fixed | ImGuiWindowFlags_NoScrollbar))
+        drawTimeline(doc_, edit_, playback_, actions_, status_);
     ImGui::End();
 
     ImGui::SetNextWindowPos(ImVec2(0, h - statusH));
@@ -446,142 +439,11 @@ void Editor::layout() {
     ImGui::PopStyleVar();
 }
 
-void Editor::drawMenuBar() {
-    if (!ImGui::BeginMainMenuBar()) return;
-    if (ImGui::BeginMenu("File")) {
-        if (ImGui::MenuItem("New", "Ctrl+N")) requestNew();
-        if (ImGui::MenuItem("Open...", "Ctrl+O")) requestOpen("");
-        if (ImGui::BeginMenu("Open Recent", !recent_.files().empty())) {
-            std::string chosen;
-            for (const std::string& file : recent_.files())
-                if (ImGui::MenuItem(file.c_str())) chosen = file;
-            ImGui::Separator();
-            if (ImGui::MenuItem("Clear recent files")) recent_.clear();
-            ImGui::EndMenu();
-            if (!chosen.empty()) requestOpen(chosen);
-        }
-        if (ImGui::MenuItem("Save", "Ctrl+S")) saveOrSaveAs(false);
-        if (ImGui::MenuItem("Save As...", "Ctrl+Shift+S")) saveOrSaveAs(true);
-        ImGui::Separator();
-        if (ImGui::MenuItem("Load scene (glTF)...")) {
-            dialogPurpose_ = DialogPurpose::Scene;
-            fileDialog_.open("Load scene (glTF)", FileDialog::Mode::Open, {".gltf", ".glb"}, scenePath_);
-        }
-        if (ImGui::MenuItem("Built-in scene", nullptr, false, !scenePath_.empty())) {
-            renderer_->setScene(renderer::makeBuiltinScene());
-            lastRenderSignature_.clear();
-            scenePath_.clear();
-            setStatus("Built-in scene");
-        }
-        ImGui::Separator();
-        if (ImGui::MenuItem("Screenshot...")) {
-            dialogPurpose_ = DialogPurpose::Screenshot;
-            fileDialog_.open("Screenshot (.png display-referred, .exr scene-linear)", FileDialog::Mode::Save,
-                             {".png", ".exr"}, "");
-        }
-        if (ImGui::MenuItem("Export for game...", nullptr, false, !export_.running())) {
-            dialogPurpose_ = DialogPurpose::Export;
-            fileDialog_.open("Export for game (aerial bake) into folder", FileDialog::Mode::Directory, {},
-                             "");
-        }
-        ImGui::Separator();
-        if (ImGui::MenuItem("Quit", "Ctrl+Q")) requestQuit();
-        ImGui::EndMenu();
-    }
-    if (ImGui::BeginMenu("Edit")) {
-        const std::string undo = "Undo " + doc_.undoLabel(), redo = "Redo " + doc_.redoLabel();
-        if (ImGui::MenuItem(undo.c_str(), "Ctrl+Z", false, doc_.canUndo())) {
-            doc_.undo();
-            validateSelection();
-        }
-        if (ImGui::MenuItem(redo.c_str(), "Ctrl+Shift+Z", false, doc_.canRedo())) {
-            doc_.redo();
-            validateSelection();
-        }
-        ImGui::Separator();
-        if (ImGui::MenuItem("Delete", "Del", false, objectSelected())) deleteSelection();
-        if (ImGui::MenuItem("Duplicate", "Ctrl+D", false, objectSelected())) duplicateSelection();
-        ImGui::Separator();
-        if (ImGui::MenuItem("Key all changed parameters")) {
-            int count = 0;
-            const Preset baseline = doc_.baseline();
-            doc_.apply("Key all changed", "",
-                       [&](Preset& p) { count = keyAllChanged(p, baseline, timeHours_); });
-            setStatus(std::to_string(count) + " keys set at " + formatClock(timeHours_));
-        }
-        ImGui::EndMenu();
-    }
-    if (ImGui::BeginMenu("Create")) {
-        if (ImGui::MenuItem("Box volume", "Shift+B")) addVolumeInFront(FogVolumeShape::Box);
-        if (ImGui::MenuItem("Ellipsoid volume", "Shift+E")) addVolumeInFront(FogVolumeShape::Ellipsoid);
-        if (ImGui::MenuItem("Emitter", "Shift+P")) addEmitterInFront(EmitterKind::Point);
-        if (ImGui::MenuItem("Lightning", "Shift+T")) addEmitterInFront(EmitterKind::Lightning);
-        ImGui::EndMenu();
-    }
-    if (ImGui::BeginMenu("View")) {
-        if (display_ && ImGui::BeginMenu("OCIO display")) {
-            for (const std::string& d : display_->displays())
-                if (ImGui::MenuItem(d.c_str(), nullptr, d == display_->display())) {
-                    displayName_ = d;
-                    viewName_.clear();
-                    rebuildDisplay();
-                }
-            ImGui::EndMenu();
-        }
-        if (display_ && ImGui::BeginMenu("OCIO view")) {
-            for (const std::string& v : display_->views())
-                if (ImGui::MenuItem(v.c_str(), nullptr, v == display_->view())) {
-                    viewName_ = v;
-                    rebuildDisplay();
-                }
-            ImGui::EndMenu();
-        }
-        float ev = float(exposureEv_);
-        ImGui::SetNextItemWidth(140.0f);
-        if (ImGui::SliderFloat("Exposure [EV]", &ev, -10.0f, 10.0f, "%.2f")) {
-            exposureEv_ = ev;
-            if (display_) display_->setExposureEv(ev);
-        }
-        if (ImGui::BeginMenu("Resolution scale")) {
-            for (double s : {0.25, 0.5, 0.75, 1.0}) {
-                char label[32];
-                std::snprintf(label, sizeof label, "%d%%", int(s * 100.0 + 0.5));
-                if (ImGui::MenuItem(label, nullptr, std::abs(resolutionScale_ - s) < 1e-9))
-                    resolutionScale_ = s;
-            }
-            ImGui::EndMenu();
-        }
-        ImGui::Separator();
-        ImGui::MenuItem("Helpers (outlines, icons, gizmo)", nullptr, &showHelpers_);
-        ImGui::MenuItem("Ground grid", nullptr, &showGrid_);
-        ImGui::Separator();
-        ImGui::MenuItem("Sky", nullptr, &passes_.sky);
-        ImGui::MenuItem("Stars", nullptr, &showStars_);
-        ImGui::MenuItem("Scene geometry", nullptr, &passes_.scene);
-        ImGui::MenuItem("Global fog", nullptr, &passes_.globalFog);
-        ImGui::MenuItem("Fog volumes", nullptr, &passes_.volumes);
-        ImGui::MenuItem("Emitters", nullptr, &passes_.emitters);
-        ImGui::MenuItem("Transparent objects", nullptr, &passes_.transparent);
-        ImGui::MenuItem("Fog particles", nullptr, &passes_.particles);
-        ImGui::Separator();
-        if (ImGui::MenuItem("Move", "W", gizmoMode_ == GizmoMode::Translate))
-            gizmoMode_ = GizmoMode::Translate;
-        if (ImGui::MenuItem("Rotate", "E", gizmoMode_ == GizmoMode::Rotate)) gizmoMode_ = GizmoMode::Rotate;
-        if (ImGui::MenuItem("Scale", "R", gizmoMode_ == GizmoMode::Scale)) gizmoMode_ = GizmoMode::Scale;
-        bool local = gizmoSpace_ == GizmoSpace::Local;
-        if (ImGui::MenuItem("Local axes", "L", &local))
-            gizmoSpace_ = local ? GizmoSpace::Local : GizmoSpace::World;
-        if (ImGui::MenuItem("Frame selection", "F", false, objectSelected())) frameSelection();
-        ImGui::EndMenu();
-    }
-    ImGui::EndMainMenuBar();
-}
-
 void Editor::drawStatusBar() {
-    const double elevationDeg = state_.sunLight.body.elevation * 180.0 / kPi;
+    const double elevationDeg = sky_.state.sunLight.body.elevation * 180.0 / kPi;
     ImGui::Text("%s   sun %+.1f deg   frame %.1f ms   render %dx%d   sky solve %.2f ms",
-                formatClock(timeHours_).c_str(), elevationDeg, workMs_, renderWidth_, renderHeight_,
-                skySolveMs_);
+                formatClock(playback_.timeHours).c_str(), elevationDeg, frames_.workMs, view_.renderWidth,
+                view_.renderHeight, sky_.solveMs);
     if (export_.running()) {
         ImGui::SameLine();
         ImGui::SetNextItemWidth(160.0f);
@@ -600,154 +462,29 @@ void Editor::drawStatusBar() {
 
 void Editor::setStatus(std::string text) { status_ = std::move(text); }
 
+std::string Editor::clockText() const { return formatClock(playback_.timeHours); }
+
 void Editor::showError(std::string title, std::string text) {
-    errorTitle_ = std::move(title);
-    errorText_ = std::move(text);
-    openErrorModal_ = true;
+    dialogs_.errorTitle = std::move(title);
+    dialogs_.errorText = std::move(text);
+    dialogs_.openErrorModal = true;
     if (!options_.script.empty())
-        std::fprintf(stderr, "aerial-editor: %s:\n%s\n", errorTitle_.c_str(), errorText_.c_str());
-}
-
-void Editor::handleShortcuts() {
-    const ImGuiIO& io = ImGui::GetIO();
-    if (io.WantTextInput || ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)) return;
-    const bool ctrl = io.KeyCtrl, shift = io.KeyShift;
-    auto pressed = [](int key) { return ImGui::IsKeyPressed(key, false); };
-    if (ctrl) {
-        if (pressed(GLFW_KEY_N)) requestNew();
-        if (pressed(GLFW_KEY_O)) requestOpen("");
-        if (pressed(GLFW_KEY_S)) saveOrSaveAs(shift);
-        if (pressed(GLFW_KEY_Q)) requestQuit();
-        if (pressed(GLFW_KEY_D)) duplicateSelection();
-        if (ImGui::IsKeyPressed(GLFW_KEY_Z, true)) {
-            if (shift ? doc_.redo() : doc_.undo()) validateSelection();
-        }
-        if (ImGui::IsKeyPressed(GLFW_KEY_Y, true) && doc_.redo()) validateSelection();
-        return;
-    }
-    if (camera_.flying()) return;  // W A S D Q E fly
-    if (shift) {  // Create: in front of the camera
-        if (pressed(GLFW_KEY_B)) addVolumeInFront(FogVolumeShape::Box);
-        if (pressed(GLFW_KEY_E)) addVolumeInFront(FogVolumeShape::Ellipsoid);
-        if (pressed(GLFW_KEY_P)) addEmitterInFront(EmitterKind::Point);
-        if (pressed(GLFW_KEY_T)) addEmitterInFront(EmitterKind::Lightning);
-        return;
-    }
-    if (pressed(GLFW_KEY_W)) gizmoMode_ = GizmoMode::Translate;
-    if (pressed(GLFW_KEY_E)) gizmoMode_ = GizmoMode::Rotate;
-    if (pressed(GLFW_KEY_R)) gizmoMode_ = GizmoMode::Scale;
-    if (pressed(GLFW_KEY_L))
-        gizmoSpace_ = gizmoSpace_ == GizmoSpace::World ? GizmoSpace::Local : GizmoSpace::World;
-    if (pressed(GLFW_KEY_F)) frameSelection();
-    if (pressed(GLFW_KEY_SPACE)) playing_ = !playing_;
-    if (pressed(GLFW_KEY_DELETE) && !timelineHovered_) deleteSelection();  // the timeline deletes keys
-    if (pressed(GLFW_KEY_ESCAPE) && gizmo_.active()) {
-        GizmoTransform t;
-        if (gizmoTransformOfSelection(t) && gizmo_.cancel(t)) {
-            applyGizmoTransform(t);
-            doc_.closeMerge();
-        }
-    }
-}
-
-void Editor::drawModals() {
-    if (openErrorModal_) {
-        ImGui::OpenPopup("Error##modal");
-        openErrorModal_ = false;
-    }
-    ImGui::SetNextWindowSize(ImVec2(std::min(720.0f, ImGui::GetIO().DisplaySize.x - 40.0f), 0.0f),
-                             ImGuiCond_Appearing);
-    if (ImGui::BeginPopupModal("Error##modal", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-        ImGui::TextUnformatted(errorTitle_.c_str());
-        ImGui::Separator();
-        ImGui::PushTextWrapPos(ImGui::GetIO().DisplaySize.x - 80.0f);
-        ImGui::TextUnformatted(errorText_.c_str());
-        ImGui::PopTextWrapPos();
-        if (ImGui::Button("Copy")) ImGui::SetClipboardText(errorText_.c_str());
-        ImGui::SameLine();
-        if (ImGui::Button("OK", ImVec2(100, 0)) || ImGui::IsKeyPressed(GLFW_KEY_ENTER))
-            ImGui::CloseCurrentPopup();
-        ImGui::EndPopup();
-    }
-
-    if (openUnsavedModal_) {
-        ImGui::OpenPopup("Unsaved changes");
-        openUnsavedModal_ = false;
-        unsavedPromptOpen_ = true;
-    }
-    if (ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-        const std::string name =
-            doc_.path().empty() ? std::string("Untitled") : fs::path(doc_.path()).filename().string();
-        ImGui::Text("Save the changes to %s first?", name.c_str());
-        ImGui::TextDisabled("Discarded changes cannot be undone.");
-        if (ImGui::Button("Save", ImVec2(100, 0))) resolveUnsaved(UnsavedChoice::Save);
-        ImGui::SameLine();
-        if (ImGui::Button("Discard", ImVec2(100, 0))) resolveUnsaved(UnsavedChoice::Discard);
-        ImGui::SameLine();
-        if (ImGui::Button("Cancel", ImVec2(100, 0)) || ImGui::IsKeyPressed(GLFW_KEY_ESCAPE))
-            resolveUnsaved(UnsavedChoice::Cancel);
-        if (!unsavedPromptOpen_) ImGui::CloseCurrentPopup();
-        ImGui::EndPopup();
-    }
-
-    if (openRecoveryModal_) {
-        ImGui::OpenPopup("Recover unsaved work?");
-        openRecoveryModal_ = false;
-    }
-    if (ImGui::BeginPopupModal("Recover unsaved work?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-        if (recovery_) {
-            ImGui::Text("Aerial did not exit cleanly last time (process %d).", recovery_->pid);
-            ImGui::Text("Unsaved work on %s was autosaved.", recovery_->documentPath.empty()
-                                                                 ? "an untitled preset"
-                                                                 : recovery_->documentPath.c_str());
-        }
-        if (ImGui::Button("Recover", ImVec2(110, 0))) {
-            ImGui::CloseCurrentPopup();
-            recover(true);
-        }
-        ImGui::SameLine();
-        if (ImGui::Button("Discard", ImVec2(110, 0))) {
-            ImGui::CloseCurrentPopup();
-            recover(false);
-        }
-        ImGui::EndPopup();
-    }
-}
-
-void Editor::resolveUnsaved(UnsavedChoice choice) {
-    unsavedPromptOpen_ = false;
-    switch (choice) {
-        case UnsavedChoice::Save:
-            if (doc_.path().empty()) {
-                continueAfterSave_ = true;  // the pending action runs once Save As succeeds
-                saveOrSaveAs(true);
-            } else if (savePresetTo(doc_.path())) {
-                runPending();
-            } else {
-                pending_ = Pending::None;
-            }
-            break;
-        case UnsavedChoice::Discard:
-            runPending();
-            break;
-        case UnsavedChoice::Cancel:
-            pending_ = Pending::None;
-            break;
-    }
+        std::fprintf(stderr, "aerial-editor: %s:\n%s\n", dialogs_.errorTitle.c_str(),
+                     dialogs_.errorText.c_str());
 }
 
 void Editor::printBench() const {
     auto passMedian = [&](double (*of)(const renderer::PassTimes&)) {
         std::vector<double> v;
-        for (const renderer::PassTimes& t : benchPasses_) v.push_back(of(t));
+        for (const renderer::PassTimes& t : frames_.benchPasses) v.push_back(of(t));
         return percentile(v, 0.5);
     };
-    const std::vector<double>& f = benchFrameMs_;
+    const std::vector<double>& f = frames_.benchFrameMs;
     const double mean = f.empty() ? 0.0 : std::accumulate(f.begin(), f.end(), 0.0) / double(f.size());
-    const double solveMean =
-        benchSolveMs_.empty()
-            ? 0.0
-            : std::accumulate(benchSolveMs_.begin(), benchSolveMs_.end(), 0.0) / double(benchSolveMs_.size());
+    const double solveMean = frames_.benchSolveMs.empty() ? 0.0
+                                                          : std::accumulate(frames_.benchSolveMs.begin(),
+                                                                            frames_.benchSolveMs.end(), 0.0) /
+                                                                double(frames_.benchSolveMs.size());
     int winW = 0, winH = 0;
     glfwGetFramebufferSize(window_, &winW, &winH);
     std::printf(
@@ -756,12 +493,14 @@ void Editor::printBench() const {
         "  frame time [ms]: mean %.2f  median %.2f  p95 %.2f  max %.2f  (%.1f fps)\n"
         "  sky solve [ms]: mean %.2f  median %.2f  max %.2f (sun + moon tables, %zu solves)\n"
         "  viewport passes [ms]: median %.2f (wall time between glFinish calls, %zu frames sampled)\n",
-        f.size(), winW, winH, renderWidth_, renderHeight_, resolutionScale_, mean, percentile(f, 0.5),
-        percentile(f, 0.95), f.empty() ? 0.0 : *std::max_element(f.begin(), f.end()),
-        mean > 0 ? 1000.0 / mean : 0.0, solveMean, percentile(benchSolveMs_, 0.5),
-        benchSolveMs_.empty() ? 0.0 : *std::max_element(benchSolveMs_.begin(), benchSolveMs_.end()),
-        benchSolveMs_.size(), passMedian([](const renderer::PassTimes& t) { return t.total(); }),
-        benchPasses_.size());
+        f.size(), winW, winH, view_.renderWidth, view_.renderHeight, view_.resolutionScale, mean,
+        percentile(f, 0.5), percentile(f, 0.95), f.empty() ? 0.0 : *std::max_element(f.begin(), f.end()),
+        mean > 0 ? 1000.0 / mean : 0.0, solveMean, percentile(frames_.benchSolveMs, 0.5),
+        frames_.benchSolveMs.empty()
+            ? 0.0
+            : *std::max_element(frames_.benchSolveMs.begin(), frames_.benchSolveMs.end()),
+        frames_.benchSolveMs.size(), passMedian([](const renderer::PassTimes& t) { return t.total(); }),
+        frames_.benchPasses.size());
     std::printf(
         "    scene %.2f  sky %.2f  global fog %.2f  volumes %.2f  emitters %.2f  transparent %.2f  "
         "particles %.2f\n",
@@ -778,32 +517,11 @@ void Editor::printBench() const {
 // --- selection ---------------------------------------------------------------
 
 void Editor::select(Selection s) {
-    if (!(s == selection_)) {
-        renaming_ = false;
-        if (gizmo_.active()) doc_.closeMerge();
+    if (!(s == edit_.selection)) {
+        edit_.renaming = false;
+        if (view_.gizmo.active()) doc_.closeMerge();
     }
-    selection_ = s;
-}
-
-void Editor::validateSelection() {
-    const Preset& p = doc_.preset();
-    if (selection_.kind == Selection::Kind::Volume && selection_.index >= int(p.volumes.size()))
-        selection_ = p.volumes.empty() ? Selection{Selection::Kind::Fog, -1}
-                                       : Selection{Selection::Kind::Volume, int(p.volumes.size()) - 1};
-    if (selection_.kind == Selection::Kind::Emitter && selection_.index >= int(p.emitters.size()))
-        selection_ = p.emitters.empty() ? Selection{Selection::Kind::Fog, -1}
-                                        : Selection{Selection::Kind::Emitter, int(p.emitters.size()) - 1};
-    if (selectedParam_ && selectedParam_->object >= 0) {
-        const std::size_t count =
-            selectedParam_->scope() == ParamScope::Volume ? p.volumes.size() : p.emitters.size();
-        if (std::size_t(selectedParam_->object) >= count) selectedParam_.reset();
-    }
-    if (selectedParam_) {
-        const Track* track = trackOf(p, *selectedParam_);
-        if (!track || selectedKey_ >= int(track->keys.size())) selectedKey_ = -1;
-    } else {
-        selectedKey_ = -1;
-    }
+    edit_.selection = s;
 }
 
 void Editor::addVolumeInFront(FogVolumeShape shape) {
@@ -827,24 +545,24 @@ void Editor::addEmitterInFront(EmitterKind kind) {
 }
 
 void Editor::deleteSelection() {
-    if (!objectSelected()) return;
+    if (!edit_.objectSelected()) return;
     const ParamScope scope =
-        selection_.kind == Selection::Kind::Volume ? ParamScope::Volume : ParamScope::Emitter;
-    const int index = selection_.index;
+        edit_.selection.kind == Selection::Kind::Volume ? ParamScope::Volume : ParamScope::Emitter;
+    const int index = edit_.selection.index;
     doc_.apply("Delete", "", [&](Preset& p) { deleteObject(p, scope, index); });
-    selectedParam_.reset();
-    validateSelection();
+    edit_.selectedParam.reset();
+    edit_.validate(doc_.preset());
 }
 
 void Editor::duplicateSelection() {
-    if (!objectSelected()) return;
+    if (!edit_.objectSelected()) return;
     const ParamScope scope =
-        selection_.kind == Selection::Kind::Volume ? ParamScope::Volume : ParamScope::Emitter;
+        edit_.selection.kind == Selection::Kind::Volume ? ParamScope::Volume : ParamScope::Emitter;
     int index = -1;
-    const int from = selection_.index;
+    const int from = edit_.selection.index;
     doc_.apply("Duplicate", "",
                [&](Preset& p) { index = duplicateObject(p, scope, from, glm::dvec3(5.0, 0.0, 0.0)); });
-    if (index >= 0) select({selection_.kind, index});
+    if (index >= 0) select({edit_.selection.kind, index});
 }
 
 }  // namespace aerial::editor

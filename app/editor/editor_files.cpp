@@ -2,9 +2,12 @@
 // drag and drop), Save / Save As, Load scene (glTF), the unsaved-changes
 // prompt (Save / Discard / Cancel) before anything that would lose work, the
 // load-error modal (the loader's errors, file:line:col: /pointer: reason; the
-// document is left as it was), crash recovery and Export for game.
+// document is left as it was), crash recovery and Export for game. Uses the
+// Document, the Dialogs part and the EditState (a new document selects the
+// global fog).
 #include "editor.hpp"
 
+#include <GLFW/glfw3.h>
 #include <imgui.h>
 
 #include <aerial/renderer/gltf.hpp>
@@ -51,10 +54,10 @@ std::string lowerExtension(const std::string& path) {
 }  // namespace
 
 void Editor::askUnsaved(Pending action, std::string path) {
-    pending_ = action;
-    pendingPath_ = std::move(path);
+    dialogs_.pending = action;
+    dialogs_.pendingPath = std::move(path);
     if (doc_.dirty())
-        openUnsavedModal_ = true;
+        dialogs_.openUnsavedModal = true;
     else
         runPending();
 }
@@ -63,9 +66,10 @@ void Editor::requestNew() { askUnsaved(Pending::New, {}); }
 
 void Editor::requestOpen(const std::string& path) {
     if (path.empty()) {
-        dialogPurpose_ = DialogPurpose::Open;
-        fileDialog_.open("Open preset", FileDialog::Mode::Open, {".json"},
-                         doc_.path().empty() ? std::string() : fs::path(doc_.path()).parent_path().string());
+        dialogs_.purpose = DialogPurpose::Open;
+        dialogs_.fileDialog.open(
+            "Open preset", FileDialog::Mode::Open, {".json"},
+            doc_.path().empty() ? std::string() : fs::path(doc_.path()).parent_path().string());
         return;
     }
     askUnsaved(Pending::Open, path);
@@ -74,9 +78,9 @@ void Editor::requestOpen(const std::string& path) {
 void Editor::requestQuit() { askUnsaved(Pending::Quit, {}); }
 
 void Editor::runPending() {
-    const Pending action = pending_;
-    pending_ = Pending::None;
-    continueAfterSave_ = false;
+    const Pending action = dialogs_.pending;
+    dialogs_.pending = Pending::None;
+    dialogs_.continueAfterSave = false;
     switch (action) {
         case Pending::None:
         case Pending::OpenRecovery:
@@ -84,12 +88,12 @@ void Editor::runPending() {
         case Pending::New:
             doc_.reset(defaultPreset());
             select({Selection::Kind::Fog, -1});
-            selectedParam_.reset();
-            selectedKey_ = -1;
+            edit_.selectedParam.reset();
+            edit_.selectedKey = -1;
             setStatus("New preset (the built-in default)");
             break;
         case Pending::Open:
-            openPreset(pendingPath_);
+            openPreset(dialogs_.pendingPath);
             break;
         case Pending::Quit:
             quit_ = true;
@@ -110,8 +114,8 @@ bool Editor::openPreset(const std::string& path) {
     }
     recent_.add(path);
     select({Selection::Kind::Fog, -1});
-    selectedParam_.reset();
-    selectedKey_ = -1;
+    edit_.selectedParam.reset();
+    edit_.selectedKey = -1;
     std::string status = "Opened " + path;
     if (!result.warnings.empty()) {
         status += " (";
@@ -142,10 +146,10 @@ void Editor::saveOrSaveAs(bool forceDialog) {
         savePresetTo(doc_.path());
         return;
     }
-    dialogPurpose_ = DialogPurpose::SaveAs;
+    dialogs_.purpose = DialogPurpose::SaveAs;
     std::string start = doc_.path();
     if (start.empty()) start = (fs::current_path() / "untitled.json").string();
-    fileDialog_.open("Save preset as", FileDialog::Mode::Save, {".json"}, start);
+    dialogs_.fileDialog.open("Save preset as", FileDialog::Mode::Save, {".json"}, start);
 }
 
 bool Editor::loadScene(const std::string& path) {
@@ -154,9 +158,9 @@ bool Editor::loadScene(const std::string& path) {
         showError("Cannot load the scene " + path + ":", loaded.error);
         return false;
     }
-    renderer_->setScene(loaded.scene);
-    lastRenderSignature_.clear();
-    scenePath_ = path;
+    view_.renderer->setScene(loaded.scene);
+    view_.lastRenderSignature.clear();
+    view_.scenePath = path;
     // Frame the scene: the bounds of every vertex in world space.
     glm::dvec3 lo(1e300), hi(-1e300);
     for (const renderer::SceneMesh& mesh : loaded.scene.meshes)
@@ -165,9 +169,9 @@ bool Editor::loadScene(const std::string& path) {
             lo = glm::min(lo, w);
             hi = glm::max(hi, w);
         }
-    if (hi.x >= lo.x && viewportSize_.y > 0.0)
-        camera_.frame((lo + hi) * 0.5, std::max(0.5 * glm::length(hi - lo), 0.5),
-                      viewportSize_.x / viewportSize_.y);
+    if (hi.x >= lo.x && view_.size.y > 0.0)
+        view_.camera.frame((lo + hi) * 0.5, std::max(0.5 * glm::length(hi - lo), 0.5),
+                           view_.size.x / view_.size.y);
     std::string status = "Loaded scene " + path;
     if (!loaded.warnings.empty()) {
         status += " (";
@@ -180,7 +184,7 @@ bool Editor::loadScene(const std::string& path) {
 
 void Editor::handleDrops() {
     std::vector<std::string> drops;
-    drops.swap(drops_);
+    drops.swap(dialogs_.drops);
     for (const std::string& path : drops) {
         const std::string ext = lowerExtension(path);
         if (ext == ".json")
@@ -193,15 +197,15 @@ void Editor::handleDrops() {
 }
 
 void Editor::drawFileDialogs() {
-    const bool wasOpen = fileDialog_.isOpen();
-    if (fileDialog_.draw()) {
-        const std::string path = fileDialog_.result();
-        switch (dialogPurpose_) {
+    const bool wasOpen = dialogs_.fileDialog.isOpen();
+    if (dialogs_.fileDialog.draw()) {
+        const std::string path = dialogs_.fileDialog.result();
+        switch (dialogs_.purpose) {
             case DialogPurpose::Open:
                 askUnsaved(Pending::Open, path);
                 break;
             case DialogPurpose::SaveAs:
-                if (savePresetTo(path) && continueAfterSave_) runPending();
+                if (savePresetTo(path) && dialogs_.continueAfterSave) runPending();
                 break;
             case DialogPurpose::Scene:
                 loadScene(path);
@@ -220,14 +224,14 @@ void Editor::drawFileDialogs() {
             case DialogPurpose::None:
                 break;
         }
-        dialogPurpose_ = DialogPurpose::None;
-    } else if (wasOpen && !fileDialog_.isOpen()) {
+        dialogs_.purpose = DialogPurpose::None;
+    } else if (wasOpen && !dialogs_.fileDialog.isOpen()) {
         // Cancelled: a Save As from the unsaved-changes prompt cancels what it guarded.
-        if (continueAfterSave_) {
-            continueAfterSave_ = false;
-            pending_ = Pending::None;
+        if (dialogs_.continueAfterSave) {
+            dialogs_.continueAfterSave = false;
+            dialogs_.pending = Pending::None;
         }
-        dialogPurpose_ = DialogPurpose::None;
+        dialogs_.purpose = DialogPurpose::None;
     }
     if (export_.done()) {
         if (export_.succeeded())
@@ -238,21 +242,107 @@ void Editor::drawFileDialogs() {
     }
 }
 
+void Editor::drawModals() {
+    if (dialogs_.openErrorModal) {
+        ImGui::OpenPopup("Error##modal");
+        dialogs_.openErrorModal = false;
+    }
+    ImGui::SetNextWindowSize(ImVec2(std::min(720.0f, ImGui::GetIO().DisplaySize.x - 40.0f), 0.0f),
+                             ImGuiCond_Appearing);
+    if (ImGui::BeginPopupModal("Error##modal", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        ImGui::TextUnformatted(dialogs_.errorTitle.c_str());
+        ImGui::Separator();
+        ImGui::PushTextWrapPos(ImGui::GetIO().DisplaySize.x - 80.0f);
+        ImGui::TextUnformatted(dialogs_.errorText.c_str());
+        ImGui::PopTextWrapPos();
+        if (ImGui::Button("Copy")) ImGui::SetClipboardText(dialogs_.errorText.c_str());
+        ImGui::SameLine();
+        if (ImGui::Button("OK", ImVec2(100, 0)) || ImGui::IsKeyPressed(GLFW_KEY_ENTER))
+            ImGui::CloseCurrentPopup();
+        ImGui::EndPopup();
+    }
+
+    if (dialogs_.openUnsavedModal) {
+        ImGui::OpenPopup("Unsaved changes");
+        dialogs_.openUnsavedModal = false;
+        dialogs_.unsavedPromptOpen = true;
+    }
+    if (ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        const std::string name =
+            doc_.path().empty() ? std::string("Untitled") : fs::path(doc_.path()).filename().string();
+        ImGui::Text("Save the changes to %s first?", name.c_str());
+        ImGui::TextDisabled("Discarded changes cannot be undone.");
+        if (ImGui::Button("Save", ImVec2(100, 0))) resolveUnsaved(UnsavedChoice::Save);
+        ImGui::SameLine();
+        if (ImGui::Button("Discard", ImVec2(100, 0))) resolveUnsaved(UnsavedChoice::Discard);
+        ImGui::SameLine();
+        if (ImGui::Button("Cancel", ImVec2(100, 0)) || ImGui::IsKeyPressed(GLFW_KEY_ESCAPE))
+            resolveUnsaved(UnsavedChoice::Cancel);
+        if (!dialogs_.unsavedPromptOpen) ImGui::CloseCurrentPopup();
+        ImGui::EndPopup();
+    }
+
+    if (dialogs_.openRecoveryModal) {
+        ImGui::OpenPopup("Recover unsaved work?");
+        dialogs_.openRecoveryModal = false;
+    }
+    if (ImGui::BeginPopupModal("Recover unsaved work?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        if (dialogs_.recovery) {
+            ImGui::Text("Aerial did not exit cleanly last time (process %d).", dialogs_.recovery->pid);
+            ImGui::Text("Unsaved work on %s was autosaved.", dialogs_.recovery->documentPath.empty()
+                                                                 ? "an untitled preset"
+                                                                 : dialogs_.recovery->documentPath.c_str());
+        }
+        if (ImGui::Button("Recover", ImVec2(110, 0))) {
+            ImGui::CloseCurrentPopup();
+            recover(true);
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Discard", ImVec2(110, 0))) {
+            ImGui::CloseCurrentPopup();
+            recover(false);
+        }
+        ImGui::EndPopup();
+    }
+}
+
+void Editor::resolveUnsaved(UnsavedChoice choice) {
+    dialogs_.unsavedPromptOpen = false;
+    switch (choice) {
+        case UnsavedChoice::Save:
+            if (doc_.path().empty()) {
+                dialogs_.continueAfterSave = true;  // the pending action runs once Save As succeeds
+                saveOrSaveAs(true);
+            } else if (savePresetTo(doc_.path())) {
+                runPending();
+            } else {
+                dialogs_.pending = Pending::None;
+            }
+            break;
+        case UnsavedChoice::Discard:
+            runPending();
+            break;
+        case UnsavedChoice::Cancel:
+            dialogs_.pending = Pending::None;
+            break;
+    }
+}
+
 void Editor::recover(bool accept) {
-    if (!recovery_) return;
+    if (!dialogs_.recovery) return;
     if (accept) {
-        doc_.reset(recovery_->preset, recovery_->documentPath);
+        doc_.reset(dialogs_.recovery->preset, dialogs_.recovery->documentPath);
         doc_.markDirty();
         select({Selection::Kind::Fog, -1});
-        selectedParam_.reset();
-        setStatus("Recovered unsaved work from " + recovery_->recoveryFile);
+        edit_.selectedParam.reset();
+        setStatus("Recovered unsaved work from " + dialogs_.recovery->recoveryFile);
         std::fprintf(stderr, "aerial-editor: recovered unsaved work from %s\n",
-                     recovery_->recoveryFile.c_str());
+                     dialogs_.recovery->recoveryFile.c_str());
     } else {
         setStatus("Discarded the unsaved work of the crashed session");
     }
-    Autosave::discard(*recovery_);
-    recovery_.reset();
+    Autosave::discard(*dialogs_.recovery);
+    dialogs_.recovery.reset();
 }
 
 void Editor::startExport(const std::string& directory) {

@@ -7,7 +7,7 @@
 // parameter has a track, grey = constant). Editing a parameter that has a
 // track sets a key at the current time (auto-key); editing one without a
 // track changes its constant value. A slider drag is one undo step.
-#include "editor.hpp"
+#include "panels.hpp"
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -65,20 +65,22 @@ bool lightningOnly(std::string_view key) {
 
 }  // namespace
 
-void Editor::editParam(const ParamRef& ref, const double value[4], bool continuous) {
+void editParam(Document& doc, const ParamRef& ref, const double value[4], bool continuous, double timeHours) {
     const std::string address = paramAddress(ref);
-    const double time = timeHours_;
-    const bool animated = trackOf(doc_.preset(), ref) != nullptr;
+    const double time = timeHours;
+    const bool animated = trackOf(doc.preset(), ref) != nullptr;
     std::string label(ref.desc->label);
     if (animated) label += " (key)";
-    doc_.apply(label, continuous ? "param:" + address : std::string(),
-               [&](Preset& p) { setValueAt(p, ref, value, time); });
+    doc.apply(label, continuous ? "param:" + address : std::string(),
+              [&](Preset& p) { setValueAt(p, ref, value, time); });
 }
 
-bool Editor::keyButton(const ParamRef& ref) {
+namespace {
+
+bool keyButton(Document& doc, EditState& edit, const ParamRef& ref, double timeHours) {
     const float size = ImGui::GetFrameHeight();
-    const Track* track = trackOf(doc_.preset(), ref);
-    const int keyHere = track ? keyIndexAt(*track, timeHours_) : -1;
+    const Track* track = trackOf(doc.preset(), ref);
+    const int keyHere = track ? keyIndexAt(*track, timeHours) : -1;
     const bool clicked = ImGui::InvisibleButton("##key", ImVec2(size * 0.8f, size));
     const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
     const ImVec2 c((lo.x + hi.x) * 0.5f, (lo.y + hi.y) * 0.5f);
@@ -99,33 +101,33 @@ bool Editor::keyButton(const ParamRef& ref) {
                                 : track      ? "Add a key at this time (the parameter is animated)"
                                              : "Animate: add a key at this time");
     if (clicked) {
-        const double time = timeHours_;
+        const double time = timeHours;
         if (keyHere >= 0) {
-            const TrackTarget target = trackTargetOf(doc_.preset(), ref);
-            doc_.apply("Remove key", "", [&](Preset& p) { removeKey(p, target, keyHere); });
+            const TrackTarget target = trackTargetOf(doc.preset(), ref);
+            doc.apply("Remove key", "", [&](Preset& p) { removeKey(p, target, keyHere); });
         } else {
-            doc_.apply("Add key", "", [&](Preset& p) { keyParam(p, ref, time); });
+            doc.apply("Add key", "", [&](Preset& p) { keyParam(p, ref, time); });
         }
-        selectedParam_ = ref;
-        const Track* after = trackOf(doc_.preset(), ref);
-        selectedKey_ = after ? keyIndexAt(*after, time) : -1;
+        edit.selectedParam = ref;
+        const Track* after = trackOf(doc.preset(), ref);
+        edit.selectedKey = after ? keyIndexAt(*after, time) : -1;
     }
     return clicked;
 }
 
-void Editor::drawParam(const ParamRef& ref) {
+void drawParam(Document& doc, EditState& edit, const ParamRef& ref, double timeHours) {
     const ParamDesc& p = *ref.desc;
     ImGui::PushID(paramAddress(ref).c_str());
     if (p.animatable)
-        keyButton(ref);
+        keyButton(doc, edit, ref, timeHours);
     else
         ImGui::Dummy(ImVec2(ImGui::GetFrameHeight() * 0.8f, ImGui::GetFrameHeight()));
     ImGui::SameLine(0.0f, 4.0f);
     const std::string label = labelOf(p);
     double v[4];
-    readValueAt(doc_.preset(), ref, timeHours_, v);
-    const bool animated = trackOf(doc_.preset(), ref) != nullptr;
-    const bool selected = selectedParam_ && *selectedParam_ == ref;
+    readValueAt(doc.preset(), ref, timeHours, v);
+    const bool animated = trackOf(doc.preset(), ref) != nullptr;
+    const bool selected = edit.selectedParam && *edit.selectedParam == ref;
     if (animated) ImGui::PushStyleColor(ImGuiCol_FrameBg, ImVec4(0.35f, 0.27f, 0.10f, 0.8f));
     if (selected) ImGui::PushStyleColor(ImGuiCol_Border, ImVec4(0.95f, 0.75f, 0.25f, 1.0f));
     if (selected) ImGui::PushStyleVar(ImGuiStyleVar_FrameBorderSize, 1.0f);
@@ -200,11 +202,11 @@ void Editor::drawParam(const ParamRef& ref) {
     if (selected) ImGui::PopStyleColor();
     if (animated) ImGui::PopStyleColor();
     if (p.animatable && (ImGui::IsItemActivated() || ImGui::IsItemClicked())) {
-        if (!(selectedParam_ && *selectedParam_ == ref)) selectedKey_ = -1;
-        selectedParam_ = ref;
+        if (!(edit.selectedParam && *edit.selectedParam == ref)) edit.selectedKey = -1;
+        edit.selectedParam = ref;
     }
-    if (changed) editParam(ref, v, continuous);
-    if (ImGui::IsItemDeactivated()) doc_.closeMerge();
+    if (changed) editParam(doc, ref, v, continuous, timeHours);
+    if (ImGui::IsItemDeactivated()) doc.closeMerge();
     if (ImGui::IsItemHovered()) {
         ImGui::BeginTooltip();
         ImGui::PushTextWrapPos(360.0f);
@@ -214,7 +216,7 @@ void Editor::drawParam(const ParamRef& ref) {
             ImGui::TextDisabled("valid %g .. %g %s%s", p.minValue, p.maxValue, std::string(p.unit).c_str(),
                                 p.logScale ? "  (log slider)" : "");
         ImGui::TextDisabled("%s", paramAddress(ref).c_str());
-        if (const Track* track = trackOf(doc_.preset(), ref))
+        if (const Track* track = trackOf(doc.preset(), ref))
             ImGui::TextDisabled("animated: %zu keys (%s)", track->keys.size(),
                                 std::string(interpolationName(track->interpolation)).c_str());
         ImGui::EndTooltip();
@@ -222,20 +224,26 @@ void Editor::drawParam(const ParamRef& ref) {
     ImGui::PopID();
 }
 
-void Editor::drawInspector() {
-    const Preset& preset = doc_.preset();
+}  // namespace
+
+int keyAllChangedAt(Document& doc, double timeHours) {
+    int count = 0;
+    const Preset baseline = doc.baseline();
+    doc.apply("Key all changed", "", [&](Preset& p) { count = keyAllChanged(p, baseline, timeHours); });
+    return count;
+}
+
+void drawInspector(Document& doc, EditState& edit, double timeHours, const PresetState& state,
+                   const ActionTable& actions, std::string& status) {
+    const Preset& preset = doc.preset();
     ImGui::PushItemWidth(-std::min(190.0f, ImGui::GetWindowWidth() * 0.48f));
-    if (ImGui::Button("Key all changed")) {
-        int count = 0;
-        const Preset baseline = doc_.baseline();
-        doc_.apply("Key all changed", "", [&](Preset& p) { count = keyAllChanged(p, baseline, timeHours_); });
-        setStatus(std::to_string(count) + " keys set");
-    }
+    if (ImGui::Button("Key all changed"))
+        status = std::to_string(keyAllChangedAt(doc, timeHours)) + " keys set";
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Key every animatable parameter whose value here differs from the saved preset");
     ImGui::Separator();
 
-    switch (selection_.kind) {
+    switch (edit.selection.kind) {
         case Selection::Kind::None:
             ImGui::TextDisabled("Nothing selected.");
             ImGui::TextWrapped(
@@ -244,20 +252,20 @@ void Editor::drawInspector() {
         case Selection::Kind::Atmosphere:
         case Selection::Kind::Lights:
         case Selection::Kind::Fog: {
-            if (selection_.kind == Selection::Kind::Atmosphere) {
+            if (edit.selection.kind == Selection::Kind::Atmosphere) {
                 std::string name = preset.name, description = preset.description;
                 if (ImGui::InputText("Preset name", &name))
-                    doc_.apply("Rename preset", "preset-name", [&](Preset& p) { p.name = name; });
-                if (ImGui::IsItemDeactivated()) doc_.closeMerge();
+                    doc.apply("Rename preset", "preset-name", [&](Preset& p) { p.name = name; });
+                if (ImGui::IsItemDeactivated()) doc.closeMerge();
                 if (ImGui::InputTextMultiline("Description", &description,
                                               ImVec2(0, ImGui::GetTextLineHeight() * 3)))
-                    doc_.apply("Edit description", "preset-description",
-                               [&](Preset& p) { p.description = description; });
-                if (ImGui::IsItemDeactivated()) doc_.closeMerge();
+                    doc.apply("Edit description", "preset-description",
+                              [&](Preset& p) { p.description = description; });
+                if (ImGui::IsItemDeactivated()) doc.closeMerge();
             }
             std::string section;
             for (const ParamDesc& p : paramTable(ParamScope::Global)) {
-                if (globalGroup(p) != selection_.kind) continue;
+                if (globalGroup(p) != edit.selection.kind) continue;
                 const std::string s = sectionOf(p);
                 if (s != section) {
                     section = s;
@@ -265,17 +273,16 @@ void Editor::drawInspector() {
                     ImGui::TextDisabled("%s", section.c_str());
                     ImGui::Separator();
                 }
-                drawParam({&p, -1});
+                drawParam(doc, edit, {&p, -1}, timeHours);
             }
-            if (selection_.kind == Selection::Kind::Lights) {
+            if (edit.selection.kind == Selection::Kind::Lights) {
                 ImGui::Spacing();
                 ImGui::TextDisabled("Now");
                 ImGui::Separator();
                 ImGui::Text("Sun elevation %.2f deg, azimuth %.1f deg",
-                            state_.sunLight.body.elevation * kDegrees,
-                            state_.sunLight.body.azimuth * kDegrees);
-                ImGui::Text("Moon elevation %.2f deg, lit %.0f%%", state_.moonLight.body.elevation * kDegrees,
-                            state_.moonLight.body.illuminatedFraction * 100.0);
+                            state.sunLight.body.elevation * kDegrees, state.sunLight.body.azimuth * kDegrees);
+                ImGui::Text("Moon elevation %.2f deg, lit %.0f%%", state.moonLight.body.elevation * kDegrees,
+                            state.moonLight.body.illuminatedFraction * 100.0);
                 const Location& where = preset.environment.location;
                 const double rise = sunriseHours(where), set = 24.0 - rise;
                 ImGui::Text("Sunrise %02d:%02d, sunset %02d:%02d, day %.1f h", int(rise),
@@ -286,9 +293,9 @@ void Editor::drawInspector() {
         }
         case Selection::Kind::Volume:
         case Selection::Kind::Emitter: {
-            const bool volume = selection_.kind == Selection::Kind::Volume;
+            const bool volume = edit.selection.kind == Selection::Kind::Volume;
             const ParamScope scope = volume ? ParamScope::Volume : ParamScope::Emitter;
-            const int index = selection_.index;
+            const int index = edit.selection.index;
             if (index < 0 || index >= int(volume ? preset.volumes.size() : preset.emitters.size())) break;
             std::string name =
                 volume ? preset.volumes[std::size_t(index)].name : preset.emitters[std::size_t(index)].name;
@@ -297,8 +304,8 @@ void Editor::drawInspector() {
             ImGui::Dummy(ImVec2(ImGui::GetFrameHeight() * 0.8f, 1.0f));
             ImGui::SameLine(0.0f, 4.0f);
             if (ImGui::InputText("Name", &name))
-                doc_.apply("Rename", "rename:" + id, [&](Preset& p) { renameObject(p, scope, index, name); });
-            if (ImGui::IsItemDeactivated()) doc_.closeMerge();
+                doc.apply("Rename", "rename:" + id, [&](Preset& p) { renameObject(p, scope, index, name); });
+            if (ImGui::IsItemDeactivated()) doc.closeMerge();
             if (ImGui::IsItemHovered())
                 ImGui::SetTooltip("id \"%s\" (what tracks refer to; never changes)", id.c_str());
             const bool lightning =
@@ -306,19 +313,19 @@ void Editor::drawInspector() {
             for (const ParamDesc& p : paramTable(scope)) {
                 if (p.type == ParamType::String) continue;  // id and name above
                 if (!volume && !lightning && lightningOnly(p.path)) continue;
-                drawParam({&p, index});
+                drawParam(doc, edit, {&p, index}, timeHours);
             }
             if (lightning) {
                 ImGui::Spacing();
                 ImGui::Text("Flash now: %.2f",
-                            lightningFlash(preset.emitters[std::size_t(index)], timeHours_));
+                            lightningFlash(preset.emitters[std::size_t(index)], timeHours));
             }
             ImGui::Spacing();
-            if (ImGui::Button("Duplicate")) duplicateSelection();
+            if (ImGui::Button("Duplicate")) actions.run("duplicate");
             ImGui::SameLine();
-            if (ImGui::Button("Delete")) deleteSelection();
+            if (ImGui::Button("Delete")) actions.run("delete");
             ImGui::SameLine();
-            if (ImGui::Button("Frame (F)")) frameSelection();
+            if (ImGui::Button("Frame (F)")) actions.run("frame");
             break;
         }
     }

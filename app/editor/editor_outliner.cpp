@@ -3,7 +3,7 @@
 // delete) and, below it, the sky preview: the solved sky seen from below as a
 // fisheye (zenith in the centre, the horizon on the rim, north up, east
 // right), through the same OCIO display transform as the viewport.
-#include "editor.hpp"
+#include "panels.hpp"
 
 #include <epoxy/gl.h>  // epoxy before any other GL header
 
@@ -32,13 +32,19 @@ bool hasTracks(const Preset& preset, ParamScope scope, const std::string& id) {
 
 }  // namespace
 
-void Editor::drawOutliner() {
-    const Preset& preset = doc_.preset();
+void drawOutliner(Document& doc, EditState& edit, const ActionTable& actions,
+                  const std::function<void(Selection)>& select) {
+    const Preset& preset = doc.preset();
     const float previewHeight =
         std::min(ImGui::GetContentRegionAvail().x, 150.0f) + ImGui::GetTextLineHeightWithSpacing();
     ImGui::BeginChild("##outliner", ImVec2(0, -previewHeight), false);
+    // A context-menu item for an action, with the action's shortcut.
+    auto menuItem = [&](const char* label, const char* action) {
+        const std::string keys = actions.shortcutOf(action);
+        return ImGui::MenuItem(label, keys.empty() ? nullptr : keys.c_str());
+    };
     auto item = [&](const char* label, Selection s) {
-        if (ImGui::Selectable(label, selection_ == s)) select(s);
+        if (ImGui::Selectable(label, edit.selection == s)) select(s);
     };
     item("Atmosphere", {Selection::Kind::Atmosphere, -1});
     item("Sun & moon", {Selection::Kind::Lights, -1});
@@ -55,11 +61,11 @@ void Editor::drawOutliner() {
             return;
         if (ImGui::BeginPopupContextItem()) {
             if (volume) {
-                if (ImGui::MenuItem("Add box volume")) addVolumeInFront(FogVolumeShape::Box);
-                if (ImGui::MenuItem("Add ellipsoid volume")) addVolumeInFront(FogVolumeShape::Ellipsoid);
+                if (ImGui::MenuItem("Add box volume")) actions.run("add_box_volume");
+                if (ImGui::MenuItem("Add ellipsoid volume")) actions.run("add_ellipsoid_volume");
             } else {
-                if (ImGui::MenuItem("Add emitter")) addEmitterInFront(EmitterKind::Point);
-                if (ImGui::MenuItem("Add lightning")) addEmitterInFront(EmitterKind::Lightning);
+                if (ImGui::MenuItem("Add emitter")) actions.run("add_point_emitter");
+                if (ImGui::MenuItem("Add lightning")) actions.run("add_lightning");
             }
             ImGui::EndPopup();
         }
@@ -68,28 +74,28 @@ void Editor::drawOutliner() {
             const std::string& name = volume ? preset.volumes[i].name : preset.emitters[i].name;
             const Selection s{kind, int(i)};
             ImGui::PushID(id.c_str());
-            if (renaming_ && selection_ == s) {
+            if (edit.renaming && edit.selection == s) {
                 ImGui::SetNextItemWidth(-1.0f);
                 if (ImGui::IsWindowAppearing() || !ImGui::IsAnyItemActive()) ImGui::SetKeyboardFocusHere();
                 if (ImGui::InputText(
-                        "##rename", &renameBuffer_,
+                        "##rename", &edit.renameBuffer,
                         ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll)) {
-                    const std::string newName = renameBuffer_;
+                    const std::string newName = edit.renameBuffer;
                     const int index = int(i);
-                    doc_.apply("Rename", "", [&](Preset& p) { renameObject(p, scope, index, newName); });
-                    renaming_ = false;
+                    doc.apply("Rename", "", [&](Preset& p) { renameObject(p, scope, index, newName); });
+                    edit.renaming = false;
                 } else if (ImGui::IsItemDeactivated() || ImGui::IsKeyPressed(GLFW_KEY_ESCAPE)) {
-                    renaming_ = false;
+                    edit.renaming = false;
                 }
             } else {
                 std::string label = name.empty() ? id : name;
                 if (hasTracks(preset, scope, id)) label += "  ~";
-                if (ImGui::Selectable(label.c_str(), selection_ == s,
+                if (ImGui::Selectable(label.c_str(), edit.selection == s,
                                       ImGuiSelectableFlags_AllowDoubleClick)) {
                     select(s);
                     if (ImGui::IsMouseDoubleClicked(0)) {
-                        renaming_ = true;
-                        renameBuffer_ = name;
+                        edit.renaming = true;
+                        edit.renameBuffer = name;
                     }
                 }
                 if (ImGui::IsItemHovered())
@@ -99,48 +105,48 @@ void Editor::drawOutliner() {
                 if (ImGui::BeginPopupContextItem()) {
                     select(s);
                     if (ImGui::MenuItem("Rename")) {
-                        renaming_ = true;
-                        renameBuffer_ = name;
+                        edit.renaming = true;
+                        edit.renameBuffer = name;
                     }
-                    if (ImGui::MenuItem("Duplicate", "Ctrl+D")) duplicateSelection();
-                    if (ImGui::MenuItem("Delete", "Del")) deleteSelection();
-                    if (ImGui::MenuItem("Frame", "F")) frameSelection();
+                    if (menuItem("Duplicate", "duplicate")) actions.run("duplicate");
+                    if (menuItem("Delete", "delete")) actions.run("delete");
+                    if (menuItem("Frame", "frame")) actions.run("frame");
                     ImGui::EndPopup();
                 }
             }
             ImGui::PopID();
-            if (volume ? i >= doc_.preset().volumes.size() : i >= doc_.preset().emitters.size()) break;
+            if (volume ? i >= doc.preset().volumes.size() : i >= doc.preset().emitters.size()) break;
         }
         ImGui::TreePop();
     };
     objects(true);
     objects(false);
     ImGui::Spacing();
-    if (ImGui::SmallButton("+ Box")) addVolumeInFront(FogVolumeShape::Box);
+    if (ImGui::SmallButton("+ Box")) actions.run("add_box_volume");
     ImGui::SameLine();
-    if (ImGui::SmallButton("+ Ellipsoid")) addVolumeInFront(FogVolumeShape::Ellipsoid);
+    if (ImGui::SmallButton("+ Ellipsoid")) actions.run("add_ellipsoid_volume");
     ImGui::SameLine();
-    if (ImGui::SmallButton("+ Emitter")) addEmitterInFront(EmitterKind::Point);
+    if (ImGui::SmallButton("+ Emitter")) actions.run("add_point_emitter");
     ImGui::EndChild();
-    drawSkyPreview();
 }
 
-void Editor::updateSkyPreview() {
+namespace {
+
+void updateSkyPreview(SkyPreview& preview, const SkyService& sky, const ViewportState& view, int frameIndex) {
     char settings[160];
-    std::snprintf(settings, sizeof settings, "%s|%s|%.6f", displayName_.c_str(), viewName_.c_str(),
-                  exposureEv_);
-    if (skyPreviewTexture_ && skyPreviewGeneration_ == skyGeneration_ && skyPreviewSettings_ == settings)
-        return;
+    std::snprintf(settings, sizeof settings, "%s|%s|%.6f", view.displayName.c_str(), view.viewName.c_str(),
+                  view.exposureEv);
+    if (preview.texture && preview.generation == sky.generation && preview.settings == settings) return;
     // While scrubbing, refresh every 4th frame: the preview is small and the viewport matters more.
-    if (skyPreviewTexture_ && skyPreviewSettings_ == settings && (frameIndex_ % 4) != 0) return;
+    if (preview.texture && preview.settings == settings && (frameIndex % 4) != 0) return;
     const int n = kSkyPreviewSize;
     renderer::Image image;
     image.width = image.height = n;
     image.channels = 4;
     image.pixels.assign(std::size_t(n) * std::size_t(n) * 4, 0.0f);
-    const double g = state_.environment.atmosphere.mieAnisotropy;
-    const SkyTable& sun = sunSolver_->table();
-    const SkyTable& moon = moonSolver_->table();
+    const double g = sky.state.environment.atmosphere.mieAnisotropy;
+    const SkyTable& sun = sky.sunSolver->table();
+    const SkyTable& moon = sky.moonSolver->table();
     for (int y = 0; y < n; ++y)
         for (int x = 0; x < n; ++x) {
             const double u = (x + 0.5) / n * 2.0 - 1.0, v = (y + 0.5) / n * 2.0 - 1.0;
@@ -156,45 +162,47 @@ void Editor::updateSkyPreview() {
             const glm::dvec3 dir(std::cos(elevation) * std::sin(azimuth), std::sin(elevation),
                                  -std::cos(elevation) * std::cos(azimuth));
             glm::dvec3 L(0.0);
-            if (sun.generation > 0) L += skyRadiance(sun, g, dir, state_.sunLight.illuminanceSpace);
-            if (moon.generation > 0) L += skyRadiance(moon, g, dir, state_.moonLight.illuminanceSpace);
+            if (sun.generation > 0) L += skyRadiance(sun, g, dir, sky.state.sunLight.illuminanceSpace);
+            if (moon.generation > 0) L += skyRadiance(moon, g, dir, sky.state.moonLight.illuminanceSpace);
             px[0] = float(L.x), px[1] = float(L.y), px[2] = float(L.z), px[3] = 1.0f;
         }
-    const renderer::Image shown = display_->applyCpu(image);
+    const renderer::Image shown = view.display->applyCpu(image);
     std::vector<std::uint8_t> bytes(std::size_t(n) * std::size_t(n) * 4);
     for (std::size_t i = 0; i < bytes.size(); ++i) {
         const float c =
             i % 4 == 3 ? image.pixels[i] : (shown.pixels.size() == bytes.size() ? shown.pixels[i] : 0.0f);
         bytes[i] = std::uint8_t(std::lround(std::clamp(c, 0.0f, 1.0f) * 255.0f));
     }
-    if (!skyPreviewTexture_) {
-        glCreateTextures(GL_TEXTURE_2D, 1, &skyPreviewTexture_);
-        glTextureStorage2D(skyPreviewTexture_, 1, GL_RGBA8, n, n);
-        glTextureParameteri(skyPreviewTexture_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-        glTextureParameteri(skyPreviewTexture_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    if (!preview.texture) {
+        glCreateTextures(GL_TEXTURE_2D, 1, &preview.texture);
+        glTextureStorage2D(preview.texture, 1, GL_RGBA8, n, n);
+        glTextureParameteri(preview.texture, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTextureParameteri(preview.texture, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     }
     GLint alignment = 4;
     glGetIntegerv(GL_UNPACK_ALIGNMENT, &alignment);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTextureSubImage2D(skyPreviewTexture_, 0, 0, 0, n, n, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
+    glTextureSubImage2D(preview.texture, 0, 0, 0, n, n, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
     glPixelStorei(GL_UNPACK_ALIGNMENT, alignment);
-    skyPreviewGeneration_ = skyGeneration_;
-    skyPreviewSettings_ = settings;
+    preview.generation = sky.generation;
+    preview.settings = settings;
 }
 
-void Editor::drawSkyPreview() {
-    updateSkyPreview();
+}  // namespace
+
+void drawSkyPreview(SkyPreview& preview, const SkyService& sky, const ViewportState& view, int frameIndex) {
+    updateSkyPreview(preview, sky, view, frameIndex);
     ImGui::TextDisabled("Sky preview");
     const float size = std::min(ImGui::GetContentRegionAvail().x, 150.0f);
-    if (size < 8.0f || !skyPreviewTexture_) return;
+    if (size < 8.0f || !preview.texture) return;
     ImGui::SetCursorPosX(ImGui::GetCursorPosX() + (ImGui::GetContentRegionAvail().x - size) * 0.5f);
-    ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(skyPreviewTexture_)),
+    ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(preview.texture)),
                  ImVec2(size, size));
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip(
             "The sun's and the moon's sky tables with the per-pixel phase functions\n"
             "(zenith in the centre, horizon on the rim). Sky solve %.2f ms.",
-            skySolveMs_);
+            sky.solveMs);
 }
 
 }  // namespace aerial::editor

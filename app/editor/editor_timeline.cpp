@@ -5,7 +5,7 @@
 // (select, drag in time, double-click to add, right-click to delete or set
 // the interpolation; Delete, Ctrl+C / Ctrl+V while the mouse is over the
 // timeline) and the curve of its values over the day.
-#include "editor.hpp"
+#include "panels.hpp"
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -54,96 +54,94 @@ void diamond(ImDrawList* dl, ImVec2 c, float r, ImU32 colour, bool filled) {
 
 }  // namespace
 
-void Editor::advancePlayback(double dt) {
-    if (!playing_ || !(dt > 0.0)) return;
-    double t = timeHours_ + playSpeed_ * std::min(dt, 0.25);
-    if (t >= 24.0) {
-        if (loop_) {
-            t = std::fmod(t, 24.0);
-        } else {
-            t = 24.0 - 1.0 / 3600.0;
-            playing_ = false;
-        }
-    }
-    timeHours_ = t;
-}
-
-void Editor::jumpTo(double hours) { timeHours_ = wrapHours(hours); }
-
-void Editor::drawTimeline() {
-    const Preset& preset = doc_.preset();
+void drawTimeline(Document& doc, EditState& edit, Playback& playback, const ActionTable& actions,
+                  std::string& status) {
+    const Preset& preset = doc.preset();
     const Location& where = preset.environment.location;
 
     // --- controls ----------------------------------------------------------
-    if (ImGui::Button(playing_ ? "Pause" : "Play", ImVec2(54, 0))) playing_ = !playing_;
+    if (ImGui::Button(playback.playing ? "Pause" : "Play", ImVec2(54, 0))) actions.run("play_pause");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Play / pause (Space)");
     ImGui::SameLine();
-    float speed = float(playSpeed_);
+    float speed = float(playback.speed);
     ImGui::SetNextItemWidth(90.0f);
     if (ImGui::DragFloat("##speed", &speed, 0.02f, 0.01f, 24.0f, "%.2f h/s", ImGuiSliderFlags_Logarithmic))
-        playSpeed_ = std::clamp(double(speed), 0.01, 24.0);
+        playback.speed = std::clamp(double(speed), 0.01, 24.0);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Playback speed [game hours per real second]");
     ImGui::SameLine();
-    ImGui::Checkbox("Loop", &loop_);
+    ImGui::Checkbox("Loop", &playback.loop);
     ImGui::SameLine();
-    if (ImGui::Button("Sunrise")) jumpTo(sunriseHours(where));
+    if (ImGui::Button("Sunrise")) playback.jumpTo(sunriseHours(where));
     ImGui::SameLine();
-    if (ImGui::Button("Noon")) jumpTo(12.0);
+    if (ImGui::Button("Noon")) playback.jumpTo(12.0);
     ImGui::SameLine();
-    if (ImGui::Button("Sunset")) jumpTo(24.0 - sunriseHours(where));
+    if (ImGui::Button("Sunset")) playback.jumpTo(24.0 - sunriseHours(where));
     ImGui::SameLine();
-    std::string timeText = clock(timeHours_);
+    std::string timeText = clock(playback.timeHours);
     ImGui::SetNextItemWidth(60.0f);
     if (ImGui::InputText("##time", &timeText, ImGuiInputTextFlags_EnterReturnsTrue)) {
         double t;
-        if (parseClock(timeText, t)) jumpTo(t);
+        if (parseClock(timeText, t)) playback.jumpTo(t);
     }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Time of day (HH:MM or hours), local solar time");
 
-    const Track* track = selectedParam_ ? trackOf(preset, *selectedParam_) : nullptr;
-    const TrackTarget target = selectedParam_ ? trackTargetOf(preset, *selectedParam_) : TrackTarget{};
+    const Track* track = edit.selectedParam ? trackOf(preset, *edit.selectedParam) : nullptr;
+    const TrackTarget target =
+        edit.selectedParam ? trackTargetOf(preset, *edit.selectedParam) : TrackTarget{};
+    // The selected key's operations: the buttons, the key menu and the keyboard share them.
+    auto deleteSelectedKey = [&] {
+        const int key = edit.selectedKey;
+        doc.apply("Delete key", "", [&](Preset& p) { removeKey(p, target, key); });
+        edit.selectedKey = -1;
+    };
+    auto copySelectedKey = [&] {
+        const Track* t = edit.selectedParam ? trackOf(doc.preset(), *edit.selectedParam) : nullptr;
+        if (!t || edit.selectedKey < 0 || edit.selectedKey >= int(t->keys.size())) return false;
+        edit.keyClipboard = {true, edit.selectedParam->desc->type,
+                             t->keys[std::size_t(edit.selectedKey)].value};
+        return true;
+    };
+    auto pasteKeyNow = [&] {  // false when the copied key does not fit the parameter
+        const ParamRef ref = *edit.selectedParam;
+        const double now = playback.timeHours;
+        const KeyClipboard clip = edit.keyClipboard;
+        bool ok = false;
+        doc.apply("Paste key", "", [&](Preset& p) { ok = pasteKey(p, ref, clip, now); });
+        return ok;
+    };
     ImGui::SameLine();
     ImGui::TextDisabled("|");
     ImGui::SameLine();
-    if (!selectedParam_) {
+    if (!edit.selectedParam) {
         ImGui::TextDisabled("Select a parameter in the inspector to edit its keys");
     } else {
-        const std::string address = paramAddress(*selectedParam_);
+        const std::string address = paramAddress(*edit.selectedParam);
         ImGui::Text("%s", address.c_str());
         ImGui::SameLine();
         if (ImGui::Button("Key")) {
-            const ParamRef ref = *selectedParam_;
-            const double t = timeHours_;
-            doc_.apply("Add key", "", [&](Preset& p) { keyParam(p, ref, t); });
-            if (const Track* after = trackOf(doc_.preset(), ref)) selectedKey_ = keyIndexAt(*after, t);
-            track = trackOf(doc_.preset(), ref);
+            const ParamRef ref = *edit.selectedParam;
+            const double t = playback.timeHours;
+            doc.apply("Add key", "", [&](Preset& p) { keyParam(p, ref, t); });
+            if (const Track* after = trackOf(doc.preset(), ref)) edit.selectedKey = keyIndexAt(*after, t);
+            track = trackOf(doc.preset(), ref);
         }
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("Key the parameter at the current time");
         ImGui::SameLine();
-        ImGui::BeginDisabled(!(track && selectedKey_ >= 0));
+        ImGui::BeginDisabled(!(track && edit.selectedKey >= 0));
         if (ImGui::Button("Delete key")) {
-            const int key = selectedKey_;
-            doc_.apply("Delete key", "", [&](Preset& p) { removeKey(p, target, key); });
-            selectedKey_ = -1;
-            track = trackOf(doc_.preset(), *selectedParam_);
+            deleteSelectedKey();
+            track = trackOf(doc.preset(), *edit.selectedParam);
         }
         ImGui::SameLine();
-        if (ImGui::Button("Copy") && track && selectedKey_ >= 0 && selectedKey_ < int(track->keys.size())) {
-            keyClipboard_ = {true, selectedParam_->desc->type, track->keys[std::size_t(selectedKey_)].value};
-            setStatus("Copied key");
-        }
+        if (ImGui::Button("Copy") && copySelectedKey()) status = "Copied key";
         ImGui::EndDisabled();
         ImGui::SameLine();
-        ImGui::BeginDisabled(!keyClipboard_.valid);
+        ImGui::BeginDisabled(!edit.keyClipboard.valid);
         if (ImGui::Button("Paste")) {
-            const ParamRef ref = *selectedParam_;
-            const double t = timeHours_;
-            const KeyClipboard clip = keyClipboard_;
-            bool ok = false;
-            doc_.apply("Paste key", "", [&](Preset& p) { ok = pasteKey(p, ref, clip, t); });
-            setStatus(ok ? "Pasted key at " + clock(t)
-                         : std::string("The copied key does not fit this parameter"));
-            track = trackOf(doc_.preset(), ref);
+            const double t = playback.timeHours;
+            status = pasteKeyNow() ? "Pasted key at " + clock(t)
+                                   : std::string("The copied key does not fit this parameter");
+            track = trackOf(doc.preset(), *edit.selectedParam);
         }
         ImGui::EndDisabled();
         if (track) {
@@ -152,10 +150,10 @@ void Editor::drawTimeline() {
             const char* names[] = {"step", "linear", "smooth"};
             ImGui::SetNextItemWidth(80.0f);
             if (ImGui::Combo("##interp", &interp, names, 3)) {
-                doc_.apply("Interpolation", "", [&](Preset& p) {
+                doc.apply("Interpolation", "", [&](Preset& p) {
                     if (Track* t = findTrack(p, target)) t->interpolation = Interpolation(interp);
                 });
-                track = trackOf(doc_.preset(), *selectedParam_);
+                track = trackOf(doc.preset(), *edit.selectedParam);
             }
             if (ImGui::IsItemHovered())
                 ImGui::SetTooltip("Interpolation of the track (smooth never overshoots)");
@@ -197,7 +195,7 @@ void Editor::drawTimeline() {
     }
     dl->AddText(ImVec2(canvasPos.x + 4.0f, ySummary + 2.0f), IM_COL32(170, 170, 170, 255), "All keys");
     std::string rowLabel =
-        selectedParam_ ? std::string(selectedParam_->desc->label) : std::string("(no parameter)");
+        edit.selectedParam ? std::string(edit.selectedParam->desc->label) : std::string("(no parameter)");
     if (rowLabel.size() > 16) {
         rowLabel.resize(15);
         rowLabel += '~';
@@ -208,8 +206,8 @@ void Editor::drawTimeline() {
     ImGui::SetCursorScreenPos(ImVec2(x0, yRuler));
     ImGui::InvisibleButton("##ruler", ImVec2(x1 - x0, rulerH));
     if (ImGui::IsItemActive()) {
-        timeHours_ = tOf(ImGui::GetIO().MousePos.x);
-        playing_ = false;
+        playback.timeHours = tOf(ImGui::GetIO().MousePos.x);
+        playback.playing = false;
     }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Drag to scrub the time of day");
 
@@ -226,7 +224,7 @@ void Editor::drawTimeline() {
         diamond(dl, ImVec2(xOf(t), ySummary + rowH * 0.5f), 4.0f, IM_COL32(170, 170, 170, 255), true);
         if (std::abs(xOf(t) - mouseX) < 6.0f) nearest = t;
     }
-    if (summaryClicked && nearest >= 0.0) jumpTo(nearest);
+    if (summaryClicked && nearest >= 0.0) playback.jumpTo(nearest);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("%zu key times in %zu tracks; click a key to jump to it", times.size(),
                           preset.tracks.size());
@@ -235,46 +233,46 @@ void Editor::drawTimeline() {
     ImGui::SetCursorScreenPos(ImVec2(x0, yTrack));
     ImGui::InvisibleButton("##track", ImVec2(x1 - x0, rowH));
     const bool trackHovered = ImGui::IsItemHovered(), trackActive = ImGui::IsItemActive();
-    if (track && selectedParam_) {
+    if (track && edit.selectedParam) {
         int hoveredKey = -1;
         for (std::size_t i = 0; i < track->keys.size(); ++i) {
             const float x = xOf(track->keys[i].timeHours);
-            const bool selected = int(i) == selectedKey_;
+            const bool selected = int(i) == edit.selectedKey;
             diamond(dl, ImVec2(x, yTrack + rowH * 0.5f), selected ? 6.0f : 5.0f,
                     selected ? IM_COL32(255, 230, 120, 255) : IM_COL32(240, 190, 60, 255), true);
             if (std::abs(x - mouseX) < 6.0f) hoveredKey = int(i);
         }
         if (ImGui::IsItemClicked(0)) {
-            selectedKey_ = hoveredKey;
-            draggingKey_ = hoveredKey >= 0;
+            edit.selectedKey = hoveredKey;
+            edit.draggingKey = hoveredKey >= 0;
         }
         if (ImGui::IsItemClicked(1) && hoveredKey >= 0) {
-            selectedKey_ = hoveredKey;
+            edit.selectedKey = hoveredKey;
             ImGui::OpenPopup("##keymenu");
         }
         if (trackHovered && ImGui::IsMouseDoubleClicked(0) && hoveredKey < 0) {
-            const ParamRef ref = *selectedParam_;
+            const ParamRef ref = *edit.selectedParam;
             const double t = tOf(mouseX);
-            doc_.apply("Add key", "", [&](Preset& p) { keyParam(p, ref, t); });
-            if (const Track* after = trackOf(doc_.preset(), ref)) selectedKey_ = keyIndexAt(*after, t);
+            doc.apply("Add key", "", [&](Preset& p) { keyParam(p, ref, t); });
+            if (const Track* after = trackOf(doc.preset(), ref)) edit.selectedKey = keyIndexAt(*after, t);
             hoveredKey = -1;
         }
-        if (draggingKey_ && trackActive && selectedKey_ >= 0 && ImGui::GetIO().MouseDelta.x != 0.0f) {
-            const int key = selectedKey_;
+        if (edit.draggingKey && trackActive && edit.selectedKey >= 0 && ImGui::GetIO().MouseDelta.x != 0.0f) {
+            const int key = edit.selectedKey;
             const double t = tOf(mouseX);
-            doc_.apply("Move key", "move-key:" + paramAddress(*selectedParam_), [&](Preset& p) {
+            doc.apply("Move key", "move-key:" + paramAddress(*edit.selectedParam), [&](Preset& p) {
                 if (Track* tr = findTrack(p, target)) moveKey(*tr, key, t);
             });
         }
-        if (draggingKey_ && !trackActive) {
-            draggingKey_ = false;
-            doc_.closeMerge();
+        if (edit.draggingKey && !trackActive) {
+            edit.draggingKey = false;
+            doc.closeMerge();
         }
-        track = trackOf(doc_.preset(), *selectedParam_);  // the edits above may have moved it
+        track = trackOf(doc.preset(), *edit.selectedParam);  // the edits above may have moved it
         if (track && trackHovered && hoveredKey >= 0 && hoveredKey < int(track->keys.size()) &&
             !ImGui::IsPopupOpen("##keymenu")) {
             const TrackKey& k = track->keys[std::size_t(hoveredKey)];
-            if (selectedParam_->desc->type == ParamType::Scalar)
+            if (edit.selectedParam->desc->type == ParamType::Scalar)
                 ImGui::SetTooltip("%s  %.6g", clock(k.timeHours).c_str(), k.value.x);
             else
                 ImGui::SetTooltip("%s  (%.4g, %.4g, %.4g)", clock(k.timeHours).c_str(), k.value.x, k.value.y,
@@ -282,25 +280,17 @@ void Editor::drawTimeline() {
         }
     }
     if (ImGui::BeginPopup("##keymenu")) {
-        if (ImGui::MenuItem("Delete key", "Del") && selectedKey_ >= 0) {
-            const int key = selectedKey_;
-            doc_.apply("Delete key", "", [&](Preset& p) { removeKey(p, target, key); });
-            selectedKey_ = -1;
-        }
-        if (ImGui::MenuItem("Copy", "Ctrl+C")) {
-            if (const Track* t = selectedParam_ ? trackOf(doc_.preset(), *selectedParam_) : nullptr;
-                t && selectedKey_ >= 0 && selectedKey_ < int(t->keys.size()))
-                keyClipboard_ = {true, selectedParam_->desc->type, t->keys[std::size_t(selectedKey_)].value};
-        }
-        if (ImGui::MenuItem("Jump to key") && selectedParam_) {
-            if (const Track* t = trackOf(doc_.preset(), *selectedParam_);
-                t && selectedKey_ >= 0 && selectedKey_ < int(t->keys.size()))
-                jumpTo(t->keys[std::size_t(selectedKey_)].timeHours);
+        if (ImGui::MenuItem("Delete key", "Del") && edit.selectedKey >= 0) deleteSelectedKey();
+        if (ImGui::MenuItem("Copy", "Ctrl+C")) copySelectedKey();
+        if (ImGui::MenuItem("Jump to key") && edit.selectedParam) {
+            if (const Track* t = trackOf(doc.preset(), *edit.selectedParam);
+                t && edit.selectedKey >= 0 && edit.selectedKey < int(t->keys.size()))
+                playback.jumpTo(t->keys[std::size_t(edit.selectedKey)].timeHours);
         }
         const char* names[] = {"Step", "Linear", "Smooth"};
         for (int i = 0; i < 3; ++i)
             if (ImGui::MenuItem(names[i])) {
-                doc_.apply("Interpolation", "", [&](Preset& p) {
+                doc.apply("Interpolation", "", [&](Preset& p) {
                     if (Track* t = findTrack(p, target)) t->interpolation = Interpolation(i);
                 });
             }
@@ -309,36 +299,26 @@ void Editor::drawTimeline() {
 
     // Keyboard on the timeline: Delete, Ctrl+C, Ctrl+V.
     if (ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows) && !ImGui::GetIO().WantTextInput &&
-        selectedParam_) {
-        const Track* t = trackOf(doc_.preset(), *selectedParam_);
-        if (ImGui::IsKeyPressed(GLFW_KEY_DELETE, false) && t && selectedKey_ >= 0) {
-            const int key = selectedKey_;
-            doc_.apply("Delete key", "", [&](Preset& p) { removeKey(p, target, key); });
-            selectedKey_ = -1;
-        }
-        if (ImGui::GetIO().KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_C, false) && t && selectedKey_ >= 0 &&
-            selectedKey_ < int(t->keys.size()))
-            keyClipboard_ = {true, selectedParam_->desc->type, t->keys[std::size_t(selectedKey_)].value};
-        if (ImGui::GetIO().KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_V, false) && keyClipboard_.valid) {
-            const ParamRef ref = *selectedParam_;
-            const double now = timeHours_;
-            const KeyClipboard clip = keyClipboard_;
-            doc_.apply("Paste key", "", [&](Preset& p) { pasteKey(p, ref, clip, now); });
-        }
+        edit.selectedParam) {
+        const Track* t = trackOf(doc.preset(), *edit.selectedParam);
+        if (ImGui::IsKeyPressed(GLFW_KEY_DELETE, false) && t && edit.selectedKey >= 0) deleteSelectedKey();
+        if (ImGui::GetIO().KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_C, false)) copySelectedKey();
+        if (ImGui::GetIO().KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_V, false) && edit.keyClipboard.valid)
+            pasteKeyNow();
     }
-    timelineHovered_ = ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows);
+    edit.timelineHovered = ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows);
 
     // Curve view: the selected parameter's value over the day.
-    track = selectedParam_ ? trackOf(doc_.preset(), *selectedParam_) : nullptr;
-    if (yEnd - yCurve > 24.0f && selectedParam_) {
-        const ParamRef ref = *selectedParam_;
+    track = edit.selectedParam ? trackOf(doc.preset(), *edit.selectedParam) : nullptr;
+    if (yEnd - yCurve > 24.0f && edit.selectedParam) {
+        const ParamRef ref = *edit.selectedParam;
         const int components = ref.desc->type == ParamType::Scalar ? 1 : 3;
         constexpr int kSamples = 192;
         double values[kSamples + 1][3];
         double lo = 1e300, hi = -1e300;
         for (int s = 0; s <= kSamples; ++s) {
             double v[4];
-            readValueAt(doc_.preset(), ref, 24.0 * s / kSamples * (1.0 - 1e-9), v);
+            readValueAt(doc.preset(), ref, 24.0 * s / kSamples * (1.0 - 1e-9), v);
             for (int c = 0; c < components; ++c) {
                 values[s][c] = v[c];
                 lo = std::min(lo, v[c]);
@@ -362,7 +342,7 @@ void Editor::drawTimeline() {
             for (std::size_t i = 0; i < track->keys.size(); ++i)
                 for (int c = 0; c < components; ++c)
                     dl->AddCircleFilled(ImVec2(xOf(track->keys[i].timeHours), yOf(track->keys[i].value[c])),
-                                        int(i) == selectedKey_ ? 4.5f : 3.0f, colours[c]);
+                                        int(i) == edit.selectedKey ? 4.5f : 3.0f, colours[c]);
         char range[64];
         std::snprintf(range, sizeof range, "%.4g", hi);
         dl->AddText(ImVec2(canvasPos.x + 4.0f, top - 4.0f), IM_COL32(150, 150, 150, 255), range);
@@ -381,21 +361,21 @@ void Editor::drawTimeline() {
         ImGui::SetCursorScreenPos(ImVec2(x0, yCurve));
         ImGui::InvisibleButton("##curve", ImVec2(x1 - x0, yEnd - yCurve));
         if (ImGui::IsItemActive()) {
-            timeHours_ = tOf(ImGui::GetIO().MousePos.x);
-            playing_ = false;
+            playback.timeHours = tOf(ImGui::GetIO().MousePos.x);
+            playback.playing = false;
         }
-        if (ImGui::IsItemHovered() && selectedParam_) {
+        if (ImGui::IsItemHovered() && edit.selectedParam) {
             double v[4];
             const double t = tOf(mouseX);
-            readValueAt(doc_.preset(), *selectedParam_, t, v);
-            if (selectedParam_->desc->type == ParamType::Scalar)
+            readValueAt(doc.preset(), *edit.selectedParam, t, v);
+            if (edit.selectedParam->desc->type == ParamType::Scalar)
                 ImGui::SetTooltip("%s  %.6g", clock(t).c_str(), v[0]);
             else
                 ImGui::SetTooltip("%s  (%.4g, %.4g, %.4g)", clock(t).c_str(), v[0], v[1], v[2]);
         }
     }
     // Playhead.
-    const float xt = xOf(timeHours_);
+    const float xt = xOf(playback.timeHours);
     dl->AddLine(ImVec2(xt, yRuler), ImVec2(xt, yEnd), IM_COL32(255, 90, 70, 255), 2.0f);
     dl->AddTriangleFilled(ImVec2(xt - 5.0f, yRuler), ImVec2(xt + 5.0f, yRuler), ImVec2(xt, yRuler + 7.0f),
                           IM_COL32(255, 90, 70, 255));

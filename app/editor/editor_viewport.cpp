@@ -25,15 +25,15 @@
 namespace aerial::editor {
 
 renderer::CameraFrame Editor::viewportCameraFrame() const {
-    const double aspect = viewportSize_.y > 0.0 ? viewportSize_.x / viewportSize_.y : 16.0 / 9.0;
-    return camera_.cameraFrame(aspect);
+    const double aspect = view_.size.y > 0.0 ? view_.size.x / view_.size.y : 16.0 / 9.0;
+    return view_.camera.cameraFrame(aspect);
 }
 
 void Editor::rebuildDisplay() {
     renderer::DisplayDesc desc;
-    desc.display = displayName_;
-    desc.view = viewName_;
-    desc.exposureEv = exposureEv_;
+    desc.display = view_.displayName;
+    desc.view = view_.viewName;
+    desc.exposureEv = view_.exposureEv;
     desc.logger = {[](renderer::LogLevel level, const char* message, void*) {
                        if (level >= renderer::LogLevel::Warning)
                            std::fprintf(stderr, "aerial-editor: display: %s\n", message);
@@ -46,117 +46,121 @@ void Editor::rebuildDisplay() {
         desc.view.clear();
         display = std::make_unique<renderer::DisplayTransform>(desc);
     }
-    displayName_ = display->display();
-    viewName_ = display->view();
-    display_ = std::move(display);
+    view_.displayName = display->display();
+    view_.viewName = display->view();
+    view_.display = std::move(display);
 }
 
 void Editor::ensureDisplayTexture(int width, int height) {
-    if (displayTexture_ && displayWidth_ == width && displayHeight_ == height) return;
-    if (displayTexture_) glDeleteTextures(1, &displayTexture_);
-    glCreateTextures(GL_TEXTURE_2D, 1, &displayTexture_);
-    glTextureStorage2D(displayTexture_, 1, GL_RGBA8, width, height);
-    glTextureParameteri(displayTexture_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(displayTexture_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTextureParameteri(displayTexture_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(displayTexture_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    displayWidth_ = width;
-    displayHeight_ = height;
+    if (view_.displayTexture && view_.displayWidth == width && view_.displayHeight == height) return;
+    if (view_.displayTexture) glDeleteTextures(1, &view_.displayTexture);
+    glCreateTextures(GL_TEXTURE_2D, 1, &view_.displayTexture);
+    glTextureStorage2D(view_.displayTexture, 1, GL_RGBA8, width, height);
+    glTextureParameteri(view_.displayTexture, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(view_.displayTexture, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(view_.displayTexture, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(view_.displayTexture, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    view_.displayWidth = width;
+    view_.displayHeight = height;
 }
 
 void Editor::renderViewport() {
-    if (!viewportVisible_ || viewportSize_.x < 1.0 || viewportSize_.y < 1.0) return;
+    if (!view_.visible || view_.size.x < 1.0 || view_.size.y < 1.0) return;
     const auto start = std::chrono::steady_clock::now();
-    const int width = std::max(1, int(std::lround(viewportSize_.x * resolutionScale_)));
-    const int height = std::max(1, int(std::lround(viewportSize_.y * resolutionScale_)));
+    const int width = std::max(1, int(std::lround(view_.size.x * view_.resolutionScale)));
+    const int height = std::max(1, int(std::lround(view_.size.y * view_.resolutionScale)));
     // Nothing that the frame depends on changed: keep the last one (an idle
     // editor costs no rendering on a software rasteriser).
     char signature[512];
-    const CameraState& c = camera_.state();
+    const CameraState& c = view_.camera.state();
     std::snprintf(signature, sizeof signature,
                   "%d %d %.17g %llu %llu %.17g %.17g %.17g %.17g %.17g %.17g %d%d%d%d%d%d%d%d %s %s %.17g %p",
-                  width, height, timeHours_, static_cast<unsigned long long>(doc_.revision()),
-                  static_cast<unsigned long long>(skyGeneration_), c.target.x, c.target.y, c.target.z,
-                  c.distance, c.yaw, c.pitch + 1000.0 * c.verticalFovDeg, passes_.sky, passes_.scene,
-                  passes_.globalFog, passes_.volumes, passes_.emitters, passes_.transparent,
-                  passes_.particles, showStars_, displayName_.c_str(), viewName_.c_str(), exposureEv_,
-                  static_cast<const void*>(display_.get()));
-    if (displayTexture_ && renderWidth_ == width && renderHeight_ == height &&
-        lastRenderSignature_ == signature && options_.benchFrames == 0)
+                  width, height, playback_.timeHours, static_cast<unsigned long long>(doc_.revision()),
+                  static_cast<unsigned long long>(sky_.generation), c.target.x, c.target.y, c.target.z,
+                  c.distance, c.yaw, c.pitch + 1000.0 * c.verticalFovDeg, view_.passes.sky,
+                  view_.passes.scene, view_.passes.globalFog, view_.passes.volumes, view_.passes.emitters,
+                  view_.passes.transparent, view_.passes.particles, view_.showStars,
+                  view_.displayName.c_str(), view_.viewName.c_str(), view_.exposureEv,
+                  static_cast<const void*>(view_.display.get()));
+    if (view_.displayTexture && view_.renderWidth == width && view_.renderHeight == height &&
+        view_.lastRenderSignature == signature && options_.benchFrames == 0)
         return;
-    lastRenderSignature_ = signature;
+    view_.lastRenderSignature = signature;
     renderer::FrameDesc frame;
     frame.width = width;
     frame.height = height;
-    frame.passes = passes_;
+    frame.passes = view_.passes;
     // --bench: every 10th frame also measures the passes (glFinish around each).
-    const bool timed = options_.benchFrames > 0 && frameIndex_ >= 3 && frameIndex_ % 10 == 0;
+    const bool timed = options_.benchFrames > 0 && frames_.frameIndex >= 3 && frames_.frameIndex % 10 == 0;
     frame.gpuTimers = timed;
-    frame.stars = showStars_;  // View > Stars
-    renderer_->render(camera_.camera(viewportSize_.x / viewportSize_.y), state_, frame);
-    if (timed && renderer_->stats().timed) benchPasses_.push_back(renderer_->stats().wallMilliseconds);
+    frame.stars = view_.showStars;  // View > Stars
+    view_.renderer->render(view_.camera.camera(view_.size.x / view_.size.y), sky_.state, frame);
+    if (timed && view_.renderer->stats().timed)
+        frames_.benchPasses.push_back(view_.renderer->stats().wallMilliseconds);
     ensureDisplayTexture(width, height);
-    display_->applyGpu(renderer_->colourTexture(), displayTexture_, width, height);
-    renderWidth_ = width;
-    renderHeight_ = height;
-    renderMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    view_.display->applyGpu(view_.renderer->colourTexture(), view_.displayTexture, width, height);
+    view_.renderWidth = width;
+    view_.renderHeight = height;
+    view_.renderMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 void Editor::drawViewport() {
     // Toolbar: gizmo mode and space, resolution.
     ImGui::SetCursorPos(ImVec2(6.0f, ImGui::GetCursorPosY() + 2.0f));
-    auto modeButton = [&](const char* label, GizmoMode mode, const char* tip) {
-        const bool on = gizmoMode_ == mode;
+    auto modeButton = [&](const char* label, GizmoMode mode, const char* action, const char* tip) {
+        const bool on = view_.gizmoMode == mode;
         if (on) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
-        if (ImGui::SmallButton(label)) gizmoMode_ = mode;
+        if (ImGui::SmallButton(label)) actions_.run(action);
         if (on) ImGui::PopStyleColor();
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tip);
         ImGui::SameLine();
     };
-    modeButton("Move", GizmoMode::Translate,
+    modeButton("Move", GizmoMode::Translate, "gizmo_move",
                "Move (W): drag an arrow, a plane square or the centre; Ctrl snaps to 1 m");
-    modeButton("Rotate", GizmoMode::Rotate, "Rotate (E): drag a ring; Ctrl snaps to 15 deg");
-    modeButton("Scale", GizmoMode::Scale, "Scale (R): drag an axis cube or the centre; Ctrl snaps to 0.1");
-    if (ImGui::SmallButton(gizmoSpace_ == GizmoSpace::World ? "World" : "Local"))
-        gizmoSpace_ = gizmoSpace_ == GizmoSpace::World ? GizmoSpace::Local : GizmoSpace::World;
+    modeButton("Rotate", GizmoMode::Rotate, "gizmo_rotate", "Rotate (E): drag a ring; Ctrl snaps to 15 deg");
+    modeButton("Scale", GizmoMode::Scale, "gizmo_scale",
+               "Scale (R): drag an axis cube or the centre; Ctrl snaps to 0.1");
+    if (ImGui::SmallButton(view_.gizmoSpace == GizmoSpace::World ? "World" : "Local"))
+        actions_.run("gizmo_local_axes");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Gizmo axes: world or the object's own (L)");
     ImGui::SameLine();
-    ImGui::TextDisabled("%dx%d (%d%%)  RMB orbit/fly (WASDQE), MMB pan, wheel zoom, F frame", renderWidth_,
-                        renderHeight_, int(resolutionScale_ * 100.0 + 0.5));
+    ImGui::TextDisabled("%dx%d (%d%%)  RMB orbit/fly (WASDQE), MMB pan, wheel zoom, F frame",
+                        view_.renderWidth, view_.renderHeight, int(view_.resolutionScale * 100.0 + 0.5));
 
     const ImVec2 avail = ImGui::GetContentRegionAvail();
     const ImVec2 origin = ImGui::GetCursorScreenPos();
-    viewportOrigin_ = {origin.x, origin.y};
-    viewportSize_ = {std::max(1.0f, avail.x), std::max(1.0f, avail.y)};
-    viewportVisible_ = avail.x >= 1.0f && avail.y >= 1.0f;
-    if (!viewportVisible_) return;
-    if (displayTexture_)
-        ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(displayTexture_)), avail,
+    view_.origin = {origin.x, origin.y};
+    view_.size = {std::max(1.0f, avail.x), std::max(1.0f, avail.y)};
+    view_.visible = avail.x >= 1.0f && avail.y >= 1.0f;
+    if (!view_.visible) return;
+    if (view_.displayTexture)
+        ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(view_.displayTexture)), avail,
                      ImVec2(0, 1), ImVec2(1, 0));
     else
         ImGui::InvisibleButton("##viewport", avail);
     const bool hovered = ImGui::IsItemHovered();
     const ImVec2 mouse = ImGui::GetIO().MousePos;
-    viewportInteraction(hovered, {double(mouse.x) - origin.x, double(mouse.y) - origin.y}, viewportOrigin_);
+    viewportInteraction(hovered, {double(mouse.x) - origin.x, double(mouse.y) - origin.y}, view_.origin);
 }
 
 bool Editor::gizmoTransformOfSelection(GizmoTransform& out) const {
     const Preset& p = doc_.preset();
     auto read = [&](ParamScope scope, const char* key, int index, double v[4]) {
-        readValueAt(p, ParamRef{findParam(scope, key), index}, timeHours_, v);
+        readValueAt(p, ParamRef{findParam(scope, key), index}, playback_.timeHours, v);
     };
     double v[4];
-    if (selection_.kind == Selection::Kind::Volume && selection_.index < int(p.volumes.size())) {
-        read(ParamScope::Volume, "position_m", selection_.index, v);
+    if (edit_.selection.kind == Selection::Kind::Volume && edit_.selection.index < int(p.volumes.size())) {
+        read(ParamScope::Volume, "position_m", edit_.selection.index, v);
         out.position = {v[0], v[1], v[2]};
-        read(ParamScope::Volume, "rotation_xyzw", selection_.index, v);
+        read(ParamScope::Volume, "rotation_xyzw", edit_.selection.index, v);
         out.rotation = glm::dquat(v[3], v[0], v[1], v[2]);
-        read(ParamScope::Volume, "half_extents_m", selection_.index, v);
+        read(ParamScope::Volume, "half_extents_m", edit_.selection.index, v);
         out.scale = {v[0], v[1], v[2]};
         return true;
     }
-    if (selection_.kind == Selection::Kind::Emitter && selection_.index < int(p.emitters.size())) {
-        read(ParamScope::Emitter, "position_m", selection_.index, v);
+    if (edit_.selection.kind == Selection::Kind::Emitter && edit_.selection.index < int(p.emitters.size())) {
+        read(ParamScope::Emitter, "position_m", edit_.selection.index, v);
         out.position = {v[0], v[1], v[2]};
         out.rotation = glm::dquat(1.0, 0.0, 0.0, 0.0);
         out.scale = glm::dvec3(1.0);
@@ -166,15 +170,15 @@ bool Editor::gizmoTransformOfSelection(GizmoTransform& out) const {
 }
 
 void Editor::applyGizmoTransform(const GizmoTransform& t) {
-    if (!objectSelected()) return;
-    const bool volume = selection_.kind == Selection::Kind::Volume;
+    if (!edit_.objectSelected()) return;
+    const bool volume = edit_.selection.kind == Selection::Kind::Volume;
     const ParamScope scope = volume ? ParamScope::Volume : ParamScope::Emitter;
-    const int index = selection_.index;
-    const double time = timeHours_;
-    const char* label = gizmoMode_ == GizmoMode::Translate ? "Move"
-                        : gizmoMode_ == GizmoMode::Rotate  ? "Rotate"
-                                                           : "Scale";
-    doc_.apply(label, gizmoMergeKey_, [&](Preset& p) {
+    const int index = edit_.selection.index;
+    const double time = playback_.timeHours;
+    const char* label = view_.gizmoMode == GizmoMode::Translate ? "Move"
+                        : view_.gizmoMode == GizmoMode::Rotate  ? "Rotate"
+                                                                : "Scale";
+    doc_.apply(label, view_.gizmoMergeKey, [&](Preset& p) {
         const double position[4] = {t.position.x, t.position.y, t.position.z, 0.0};
         setValueAt(p, ParamRef{findParam(scope, "position_m"), index}, position, time);
         if (!volume) return;
@@ -187,14 +191,14 @@ void Editor::applyGizmoTransform(const GizmoTransform& t) {
 
 void Editor::viewportInteraction(bool hovered, glm::dvec2 mouse, glm::dvec2 origin) {
     const ImGuiIO& io = ImGui::GetIO();
-    const bool scripted = !scriptedMouse_.empty() || scriptedMouseActive_;
+    const bool scripted = !view_.scriptedMouse.empty() || view_.scriptedMouseActive;
     std::optional<ScriptedMouse> scriptedInput;
     if (scripted) {
-        if (!scriptedMouse_.empty()) {
-            scriptedInput = scriptedMouse_.front();
-            scriptedMouse_.pop_front();
+        if (!view_.scriptedMouse.empty()) {
+            scriptedInput = view_.scriptedMouse.front();
+            view_.scriptedMouse.pop_front();
         }
-        scriptedMouseActive_ = !scriptedMouse_.empty();
+        view_.scriptedMouseActive = !view_.scriptedMouse.empty();
     }
     ViewInput in;
     if (!scripted) {
@@ -219,13 +223,13 @@ void Editor::viewportInteraction(bool hovered, glm::dvec2 mouse, glm::dvec2 orig
     } else if (scriptedInput && scriptedInput->right) {
         // A scripted right drag: the camera orbits as under the mouse.
         in.rightDown = scriptedInput->down;
-        if (!scriptedInput->pressed) in.mouseDelta = scriptedInput->position - lastScriptedMouse_;
+        if (!scriptedInput->pressed) in.mouseDelta = scriptedInput->position - view_.lastScriptedMouse;
         in.hovered = true;
     }
-    if (scriptedInput) lastScriptedMouse_ = scriptedInput->position;
+    if (scriptedInput) view_.lastScriptedMouse = scriptedInput->position;
     in.dt = io.DeltaTime;
-    in.viewportSize = viewportSize_;
-    const ViewUpdate view = camera_.update(in);
+    in.viewportSize = view_.size;
+    const ViewUpdate view = view_.camera.update(in);
 
     GizmoInput gi;
     if (scripted) {
@@ -245,15 +249,17 @@ void Editor::viewportInteraction(bool hovered, glm::dvec2 mouse, glm::dvec2 orig
     const renderer::CameraFrame frame = viewportCameraFrame();
     bool gizmoOwnsMouse = false;
     GizmoTransform transform;
-    const bool haveTransform = showHelpers_ && gizmoTransformOfSelection(transform);
-    const GizmoMode mode = selection_.kind == Selection::Kind::Emitter ? GizmoMode::Translate : gizmoMode_;
+    const bool haveTransform = view_.showHelpers && gizmoTransformOfSelection(transform);
+    const GizmoMode mode =
+        edit_.selection.kind == Selection::Kind::Emitter ? GizmoMode::Translate : view_.gizmoMode;
     if (haveTransform) {
         GizmoSnap snap;
         snap.enabled = io.KeyCtrl && !scripted;
-        const GizmoResult r = gizmo_.update(frame, viewportSize_, gi, mode, gizmoSpace_, snap, transform);
+        const GizmoResult r =
+            view_.gizmo.update(frame, view_.size, gi, mode, view_.gizmoSpace, snap, transform);
         if (r.started) {
             static unsigned long long dragCounter = 0;
-            gizmoMergeKey_ = "gizmo:" + std::to_string(++dragCounter);
+            view_.gizmoMergeKey = "gizmo:" + std::to_string(++dragCounter);
             doc_.closeMerge();
         }
         if (r.changed) applyGizmoTransform(transform);
@@ -261,9 +267,9 @@ void Editor::viewportInteraction(bool hovered, glm::dvec2 mouse, glm::dvec2 orig
         gizmoOwnsMouse = r.hovered || r.active || r.started || r.finished;
     }
     if (gi.pressed && !gizmoOwnsMouse) {
-        const Ray ray = rayThroughPixel(frame, gi.mouse, viewportSize_);
-        const double iconRadius = angularRadiusOfPixels(frame, viewportSize_.y, 10.0);
-        const PickHit hit = pick(ray, state_.volumes, state_.emitters, iconRadius, true);
+        const Ray ray = rayThroughPixel(frame, gi.mouse, view_.size);
+        const double iconRadius = angularRadiusOfPixels(frame, view_.size.y, 10.0);
+        const PickHit hit = pick(ray, sky_.state.volumes, sky_.state.emitters, iconRadius, true);
         if (hit.kind == PickHit::Kind::Volume)
             select({Selection::Kind::Volume, hit.index});
         else if (hit.kind == PickHit::Kind::Emitter)
@@ -272,48 +278,52 @@ void Editor::viewportInteraction(bool hovered, glm::dvec2 mouse, glm::dvec2 orig
             select({Selection::Kind::None, -1});
     }
 
-    if (!showHelpers_) return;
+    if (!view_.showHelpers) return;
     ImDrawList* dl = ImGui::GetWindowDrawList();
     dl->PushClipRect(ImVec2(float(origin.x), float(origin.y)),
-                     ImVec2(float(origin.x + viewportSize_.x), float(origin.y + viewportSize_.y)), true);
-    if (showGrid_) drawGroundGrid(dl, origin, frame, viewportSize_);
-    for (std::size_t i = 0; i < state_.volumes.size(); ++i) {
-        const bool selected = selection_.kind == Selection::Kind::Volume && selection_.index == int(i);
-        drawVolumeOutline(dl, origin, frame, viewportSize_, state_.volumes[i],
+                     ImVec2(float(origin.x + view_.size.x), float(origin.y + view_.size.y)), true);
+    if (view_.showGrid) drawGroundGrid(dl, origin, frame, view_.size);
+    for (std::size_t i = 0; i < sky_.state.volumes.size(); ++i) {
+        const bool selected =
+            edit_.selection.kind == Selection::Kind::Volume && edit_.selection.index == int(i);
+        drawVolumeOutline(dl, origin, frame, view_.size, sky_.state.volumes[i],
                           selected ? overlayColour(1.0, 0.6, 0.1) : overlayColour(0.8, 0.8, 0.9, 0.25),
                           selected ? 2.0f : 1.0f);
     }
-    for (std::size_t i = 0; i < state_.emitters.size(); ++i)
-        drawEmitterIcon(dl, origin, frame, viewportSize_,
-                        doc_.preset().emitters.size() > i ? doc_.preset().emitters[i] : state_.emitters[i],
-                        selection_.kind == Selection::Kind::Emitter && selection_.index == int(i));
+    for (std::size_t i = 0; i < sky_.state.emitters.size(); ++i)
+        drawEmitterIcon(
+            dl, origin, frame, view_.size,
+            doc_.preset().emitters.size() > i ? doc_.preset().emitters[i] : sky_.state.emitters[i],
+            edit_.selection.kind == Selection::Kind::Emitter && edit_.selection.index == int(i));
     if (haveTransform) {
         GizmoTransform shown;
         gizmoTransformOfSelection(shown);
-        gizmo_.draw(dl, origin, frame, viewportSize_, mode, gizmoSpace_, shown);
+        view_.gizmo.draw(dl, origin, frame, view_.size, mode, view_.gizmoSpace, shown);
     }
     dl->PopClipRect();
 }
 
 void Editor::frameSelection() {
-    const double aspect = viewportSize_.y > 0.0 ? viewportSize_.x / viewportSize_.y : 16.0 / 9.0;
+    const double aspect = view_.size.y > 0.0 ? view_.size.x / view_.size.y : 16.0 / 9.0;
     GizmoTransform t;
     if (!gizmoTransformOfSelection(t)) return;
     double radius = 2.0;
-    if (selection_.kind == Selection::Kind::Volume && selection_.index < int(state_.volumes.size())) {
+    if (edit_.selection.kind == Selection::Kind::Volume &&
+        edit_.selection.index < int(sky_.state.volumes.size())) {
         glm::dvec3 lo, hi;
-        fogVolumeBounds(state_.volumes[std::size_t(selection_.index)], lo, hi);
+        fogVolumeBounds(sky_.state.volumes[std::size_t(edit_.selection.index)], lo, hi);
         radius = 0.5 * glm::length(hi - lo);
     }
-    camera_.frame(t.position, radius, aspect);
+    view_.camera.frame(t.position, radius, aspect);
 }
 
 glm::dvec3 Editor::placeForNewObject() const {
     const renderer::CameraFrame frame = viewportCameraFrame();
     GroundHeightFunction ground;
-    if (scenePath_.empty()) ground = [](double x, double z) { return renderer::builtinTerrainHeight(x, z); };
+    if (view_.scenePath.empty())
+        ground = [](double x, double z) { return renderer::builtinTerrainHeight(x, z); };
     // Where the view ray meets the ground before the orbit pivot, else at the pivot.
-    const double pivot = camera_.state().distance;
+    const double pivot = view_.camera.state().distance;
     glm::dvec3 where = placeInFront(frame, pivot, pivot, ground).value_or(frame.eye + pivot * frame.forward);
     where.y += 4.0;  // sit on the ground rather than in it
     return where;
@@ -327,18 +337,18 @@ bool Editor::screenshot(const std::string& path, std::string& error) {
         return false;
     }
     // A full-resolution frame of the viewport (not the scaled interactive one).
-    const int width = std::max(1, int(std::lround(viewportSize_.x)));
-    const int height = std::max(1, int(std::lround(viewportSize_.y)));
+    const int width = std::max(1, int(std::lround(view_.size.x)));
+    const int height = std::max(1, int(std::lround(view_.size.y)));
     renderer::FrameDesc frame;
     frame.width = width;
     frame.height = height;
-    frame.passes = passes_;
-    frame.stars = showStars_;  // View > Stars
-    renderer_->render(camera_.camera(double(width) / double(height)), state_, frame);
-    const renderer::Image image = renderer_->readColour();
-    renderWidth_ = 0;  // the next frame renders the scaled view again
+    frame.passes = view_.passes;
+    frame.stars = view_.showStars;  // View > Stars
+    view_.renderer->render(view_.camera.camera(double(width) / double(height)), sky_.state, frame);
+    const renderer::Image image = view_.renderer->readColour();
+    view_.renderWidth = 0;  // the next frame renders the scaled view again
     const bool ok = extension == ".exr" ? renderer::writeExr(image, path, error)
-                                        : renderer::writePng(image, path, *display_, error);
+                                        : renderer::writePng(image, path, *view_.display, error);
     return ok;
 }
 

@@ -1,0 +1,259 @@
+// editor/editor_actions.cpp — every user action, declared once in the action
+// table (actions.hpp): the main menu bar is drawn from it (same order,
+// labels, shortcuts and enabled states), the keyboard shortcuts are matched
+// against it, scripts call its scriptable actions by name (editor_script.cpp)
+// and panels run its actions by name.
+#include "editor.hpp"
+
+#include <GLFW/glfw3.h>  // GLFW_INCLUDE_NONE is defined for this target
+#include <imgui.h>
+
+#include <aerial/renderer/scene.hpp>
+
+#include <cmath>
+#include <cstdio>
+
+namespace aerial::editor {
+
+void Editor::declareActions() {
+    ActionTable& t = actions_;
+    using S = Shortcut;
+    const auto objectSelected = [this] { return edit_.objectSelected(); };
+    const auto needsObject = [](const std::string& name) {
+        return name + ": select a volume or an emitter first";
+    };
+
+    // --- File ------------------------------------------------------------------
+    t.add("request_new", "New", "File").key(GLFW_KEY_N, S::kCtrl).scriptable().does([this] { requestNew(); });
+    t.add("open_dialog", "Open...", "File").key(GLFW_KEY_O, S::kCtrl).does([this] { requestOpen(""); });
+    t.add("open_recent", "Open Recent", "File").drawsMenu([this](const char* label) {
+        if (!ImGui::BeginMenu(label, !recent_.files().empty())) return;
+        std::string chosen;
+        for (const std::string& file : recent_.files())
+            if (ImGui::MenuItem(file.c_str())) chosen = file;
+        ImGui::Separator();
+        if (ImGui::MenuItem("Clear recent files")) recent_.clear();
+        ImGui::EndMenu();
+        if (!chosen.empty()) requestOpen(chosen);
+    });
+    t.add("save_current", "Save", "File").key(GLFW_KEY_S, S::kCtrl).does([this] { saveOrSaveAs(false); });
+    t.add("save_as", "Save As...", "File").key(GLFW_KEY_S, S::kCtrl | S::kShift).does([this] {
+        saveOrSaveAs(true);
+    });
+    t.add("load_scene_dialog", "Load scene (glTF)...", "File").separated().does([this] {
+        dialogs_.purpose = DialogPurpose::Scene;
+        dialogs_.fileDialog.open("Load scene (glTF)", FileDialog::Mode::Open, {".gltf", ".glb"},
+                                 view_.scenePath);
+    });
+    t.add("builtin_scene", "Built-in scene", "File")
+        .enabledWhen([this] { return !view_.scenePath.empty(); })
+        .does([this] {
+            view_.renderer->setScene(renderer::makeBuiltinScene());
+            view_.lastRenderSignature.clear();
+            view_.scenePath.clear();
+            setStatus("Built-in scene");
+        });
+    t.add("screenshot_dialog", "Screenshot...", "File").separated().does([this] {
+        dialogs_.purpose = DialogPurpose::Screenshot;
+        dialogs_.fileDialog.open("Screenshot (.png display-referred, .exr scene-linear)",
+                                 FileDialog::Mode::Save, {".png", ".exr"}, "");
+    });
+    t.add("export_dialog", "Export for game...", "File")
+        .enabledWhen([this] { return !export_.running(); })
+        .does([this] {
+            dialogs_.purpose = DialogPurpose::Export;
+            dialogs_.fileDialog.open("Export for game (aerial bake) into folder", FileDialog::Mode::Directory,
+                                     {}, "");
+        });
+    t.add("request_quit", "Quit", "File").separated().key(GLFW_KEY_Q, S::kCtrl).scriptable().does([this] {
+        requestQuit();
+    });
+
+    // --- Edit ------------------------------------------------------------------
+    t.add("undo", "Undo", "Edit")
+        .key(GLFW_KEY_Z, S::kCtrl, true)
+        .scriptable()
+        .labelledBy([this] { return "Undo " + doc_.undoLabel(); })
+        .enabledWhen([this] { return doc_.canUndo(); }, "nothing to undo")
+        .does([this] {
+            if (doc_.undo()) edit_.validate(doc_.preset());
+        });
+    t.add("redo", "Redo", "Edit")
+        .key(GLFW_KEY_Z, S::kCtrl | S::kShift, true)
+        .key(GLFW_KEY_Y, S::kCtrl, true)
+        .scriptable()
+        .labelledBy([this] { return "Redo " + doc_.redoLabel(); })
+        .enabledWhen([this] { return doc_.canRedo(); }, "nothing to redo")
+        .does([this] {
+            if (doc_.redo()) edit_.validate(doc_.preset());
+        });
+    t.add("delete", "Delete", "Edit")
+        .separated()
+        .key(GLFW_KEY_DELETE)
+        .keyOnlyWhen([this] { return !edit_.timelineHovered; })  // the timeline deletes keys
+        .scriptable()
+        .oneUndoStep()
+        .enabledWhen(objectSelected, needsObject("delete"))
+        .does([this] { deleteSelection(); });
+    t.add("duplicate", "Duplicate", "Edit")
+        .key(GLFW_KEY_D, S::kCtrl)
+        .scriptable()
+        .oneUndoStep()
+        .enabledWhen(objectSelected, needsObject("duplicate"))
+        .does([this] { duplicateSelection(); });
+    t.add("key_all_changed_parameters", "Key all changed parameters", "Edit")
+        .separated()
+        .oneUndoStep()
+        .does([this] {
+            const int count = keyAllChangedAt(doc_, playback_.timeHours);
+            setStatus(std::to_string(count) + " keys set at " + clockText());
+        });
+
+    // --- Create: in front of the camera --------------------------------------------
+    t.add("add_box_volume", "Box volume", "Create").key(GLFW_KEY_B, S::kShift).oneUndoStep().does([this] {
+        addVolumeInFront(FogVolumeShape::Box);
+    });
+    t.add("add_ellipsoid_volume", "Ellipsoid volume", "Create")
+        .key(GLFW_KEY_E, S::kShift)
+        .oneUndoStep()
+        .does([this] { addVolumeInFront(FogVolumeShape::Ellipsoid); });
+    t.add("add_point_emitter", "Emitter", "Create").key(GLFW_KEY_P, S::kShift).oneUndoStep().does([this] {
+        addEmitterInFront(EmitterKind::Point);
+    });
+    t.add("add_lightning", "Lightning", "Create").key(GLFW_KEY_T, S::kShift).oneUndoStep().does([this] {
+        addEmitterInFront(EmitterKind::Lightning);
+    });
+
+    // --- View --------------------------------------------------------------------
+    t.add("ocio_display", "OCIO display", "View").drawsMenu([this](const char* label) {
+        if (!view_.display || !ImGui::BeginMenu(label)) return;
+        for (const std::string& d : view_.display->displays())
+            if (ImGui::MenuItem(d.c_str(), nullptr, d == view_.display->display())) {
+                view_.displayName = d;
+                view_.viewName.clear();
+                rebuildDisplay();
+            }
+        ImGui::EndMenu();
+    });
+    t.add("ocio_view", "OCIO view", "View").drawsMenu([this](const char* label) {
+        if (!view_.display || !ImGui::BeginMenu(label)) return;
+        for (const std::string& v : view_.display->views())
+            if (ImGui::MenuItem(v.c_str(), nullptr, v == view_.display->view())) {
+                view_.viewName = v;
+                rebuildDisplay();
+            }
+        ImGui::EndMenu();
+    });
+    t.add("exposure", "Exposure [EV]", "View").drawsMenu([this](const char* label) {
+        float ev = float(view_.exposureEv);
+        ImGui::SetNextItemWidth(140.0f);
+        if (ImGui::SliderFloat(label, &ev, -10.0f, 10.0f, "%.2f")) {
+            view_.exposureEv = ev;
+            if (view_.display) view_.display->setExposureEv(ev);
+        }
+    });
+    t.add("resolution_scale_menu", "Resolution scale", "View").drawsMenu([this](const char* label) {
+        if (!ImGui::BeginMenu(label)) return;
+        for (double s : {0.25, 0.5, 0.75, 1.0}) {
+            char percent[32];
+            std::snprintf(percent, sizeof percent, "%d%%", int(s * 100.0 + 0.5));
+            if (ImGui::MenuItem(percent, nullptr, std::abs(view_.resolutionScale - s) < 1e-9))
+                view_.resolutionScale = s;
+        }
+        ImGui::EndMenu();
+    });
+    // View switches: a check mark, toggled by the item.
+    const auto toggle = [&t](const char* name, const char* label, bool& flag, bool separated = false) {
+        Action& a = t.add(name, label, "View");
+        if (separated) a.separated();
+        bool* f = &flag;
+        a.checkedWhen([f] { return *f; }).does([f] { *f = !*f; });
+    };
+    toggle("show_helpers", "Helpers (outlines, icons, gizmo)", view_.showHelpers, true);
+    toggle("show_grid", "Ground grid", view_.showGrid);
+    toggle("pass_sky", "Sky", view_.passes.sky, true);
+    toggle("show_stars", "Stars", view_.showStars);
+    toggle("pass_scene", "Scene geometry", view_.passes.scene);
+    toggle("pass_global_fog", "Global fog", view_.passes.globalFog);
+    toggle("pass_volumes", "Fog volumes", view_.passes.volumes);
+    toggle("pass_emitters", "Emitters", view_.passes.emitters);
+    toggle("pass_transparent", "Transparent objects", view_.passes.transparent);
+    toggle("pass_particles", "Fog particles", view_.passes.particles);
+    const auto gizmoMode = [&t, this](const char* name, const char* label, int key, GizmoMode mode,
+                                      bool separated = false) {
+        Action& a = t.add(name, label, "View");
+        if (separated) a.separated();
+        a.key(key).checkedWhen([this, mode] { return view_.gizmoMode == mode; }).does([this, mode] {
+            view_.gizmoMode = mode;
+        });
+    };
+    gizmoMode("gizmo_move", "Move", GLFW_KEY_W, GizmoMode::Translate, true);
+    gizmoMode("gizmo_rotate", "Rotate", GLFW_KEY_E, GizmoMode::Rotate);
+    gizmoMode("gizmo_scale", "Scale", GLFW_KEY_R, GizmoMode::Scale);
+    t.add("gizmo_local_axes", "Local axes", "View")
+        .key(GLFW_KEY_L)
+        .checkedWhen([this] { return view_.gizmoSpace == GizmoSpace::Local; })
+        .does([this] {
+            view_.gizmoSpace = view_.gizmoSpace == GizmoSpace::World ? GizmoSpace::Local : GizmoSpace::World;
+        });
+    t.add("frame", "Frame selection", "View")
+        .key(GLFW_KEY_F)
+        .scriptable()
+        .enabledWhen(objectSelected, needsObject("frame"))
+        .does([this] { frameSelection(); });
+
+    // --- Keys only -----------------------------------------------------------------
+    t.add("play_pause", "Play / pause").key(GLFW_KEY_SPACE).does([this] {
+        playback_.playing = !playback_.playing;
+    });
+    t.add("cancel_gizmo_drag", "Cancel the gizmo drag")
+        .key(GLFW_KEY_ESCAPE)
+        .enabledWhen([this] { return view_.gizmo.active(); })
+        .does([this] {
+            GizmoTransform transform;
+            if (gizmoTransformOfSelection(transform) && view_.gizmo.cancel(transform)) {
+                applyGizmoTransform(transform);
+                doc_.closeMerge();
+            }
+        });
+}
+
+void Editor::drawMenuBar() {
+    if (!ImGui::BeginMainMenuBar()) return;
+    for (const char* menu : {"File", "Edit", "Create", "View"}) {
+        if (!ImGui::BeginMenu(menu)) continue;
+        for (const Action& a : actions_.all()) {
+            if (a.menu != menu) continue;
+            if (a.separatorBefore) ImGui::Separator();
+            if (a.drawMenu) {
+                a.drawMenu(a.label.c_str());
+                continue;
+            }
+            const std::string label = a.text ? a.text() : a.label;
+            const std::string keys = a.keys.empty() ? std::string() : shortcutText(a.keys.front());
+            if (ImGui::MenuItem(label.c_str(), keys.empty() ? nullptr : keys.c_str(),
+                                a.checked && a.checked(), a.isEnabled()))
+                a.run();
+        }
+        ImGui::EndMenu();
+    }
+    ImGui::EndMainMenuBar();
+}
+
+void Editor::handleShortcuts() {
+    const ImGuiIO& io = ImGui::GetIO();
+    if (io.WantTextInput || ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)) return;
+    const bool ctrl = io.KeyCtrl, shift = io.KeyShift;
+    if (!ctrl && view_.camera.flying()) return;  // W A S D Q E fly
+    const int held = (ctrl ? Shortcut::kCtrl : 0) | (shift ? Shortcut::kShift : 0);
+    for (const Action& a : actions_.all()) {
+        for (const Shortcut& s : a.keys) {
+            if (!actions_.answers(s, held) || !ImGui::IsKeyPressed(s.key, s.repeat)) continue;
+            if (a.keyAllowed && !a.keyAllowed()) continue;
+            if (a.isEnabled()) a.run();
+            break;
+        }
+    }
+}
+
+}  // namespace aerial::editor

@@ -1,0 +1,202 @@
+// editor/editor_parts.hpp — the parts the editor is made of. Each part owns
+// one kind of state; Editor (editor.hpp) composes them and panels take the
+// parts they need. Plain data with a few calls (as Dear ImGui likes it: the
+// application owns its data and widgets edit it in place).
+//
+//   Document (document.hpp)  the preset being edited, its file, dirty, undo
+//   EditState                what is selected (object, parameter, key), the
+//                            key clipboard, the outliner's inline rename
+//   Playback                 the time of day; play, loop, speed
+//   SkyService               the preset evaluated at that time and the sun's
+//                            and moon's sky tables solved for it
+//   ViewportState            renderer, OCIO display, render target, camera,
+//                            gizmo and picking state, view options
+//   Dialogs                  file dialog, unsaved-changes prompt, error and
+//                            recovery modals, dropped files
+//   ScriptRunner             the --script commands and what they wait for
+//   FrameStats               frame timing, --bench samples, idle detection
+#pragma once
+
+#include "autosave.hpp"
+#include "document.hpp"
+#include "file_dialog.hpp"
+#include "preset_edit.hpp"
+#include "script.hpp"
+#include "viewport/camera_controller.hpp"
+#include "viewport/gizmo.hpp"
+
+#include <aerial/evaluate.hpp>
+#include <aerial/renderer/display.hpp>
+#include <aerial/renderer/renderer.hpp>
+#include <aerial/sky.hpp>
+
+#include <chrono>
+#include <cstdint>
+#include <deque>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace aerial::editor {
+
+/// What the outliner has selected.
+struct Selection {
+    enum class Kind { None, Atmosphere, Lights, Fog, Volume, Emitter };
+    Kind kind = Kind::Fog;
+    int index = -1;  ///< volume or emitter index
+    bool operator==(const Selection&) const = default;
+};
+
+/// The selection and the panels' editing state (outliner, inspector, timeline).
+struct EditState {
+    Selection selection;
+    std::optional<ParamRef> selectedParam;  ///< the inspector's parameter (the timeline's track)
+    int selectedKey = -1;                   ///< a key of that parameter's track
+    bool draggingKey = false;
+    bool timelineHovered = false;  ///< Delete then deletes keys, not the object
+    KeyClipboard keyClipboard;
+    bool renaming = false;  ///< the outliner's inline rename
+    std::string renameBuffer;
+
+    /// A volume or an emitter is selected.
+    bool objectSelected() const {
+        return selection.kind == Selection::Kind::Volume || selection.kind == Selection::Kind::Emitter;
+    }
+    /// Clears what refers to objects, parameters or keys that `preset` no longer has.
+    void validate(const Preset& preset);
+};
+
+/// The outliner's sky preview: a small fisheye of the solved sky.
+struct SkyPreview {
+    unsigned texture = 0;
+    std::uint64_t generation = ~0ull;  ///< the SkyService::generation it shows
+    std::string settings;              ///< the display, view and exposure it was made with
+};
+
+/// The time of day and its playback.
+struct Playback {
+    double timeHours = 9.0;  ///< [h] local solar time
+    bool playing = false;
+    double speed = 1.0;  ///< game hours per real second
+    bool loop = true;
+
+    /// Advances the time by `dt` real seconds while playing (at most 0.25 s a frame).
+    void advance(double dt);
+    void jumpTo(double hours) { timeHours = wrapHours(hours); }
+};
+
+/// The preset evaluated at a time, and the sky tables solved for it.
+struct SkyService {
+    std::unique_ptr<CompiledPreset> compiled;
+    std::uint64_t compiledRevision = 0;
+    PresetState state;  ///< every parameter at the current time
+    std::unique_ptr<SkySolver> sunSolver, moonSolver;
+    bool valid = false;
+    AtmosphereParams solvedAir{};
+    glm::dvec3 solvedSun{0.0}, solvedMoon{0.0};
+    double solveMs = 0.0;          ///< the last solve [ms]
+    std::uint64_t generation = 0;  ///< counts solves (what the sky preview compares)
+
+    /// Evaluates the document's preset at `timeHours`, compiling it again
+    /// after a change. True when it was compiled again.
+    bool evaluate(const Document& doc, double timeHours);
+    /// Solves both tables again when the atmosphere or a light direction
+    /// changed since the last solve. True when it solved.
+    bool solve();
+};
+
+/// Synthetic viewport mouse input for scripts (one entry per frame).
+struct ScriptedMouse {
+    glm::dvec2 position{0.0};  ///< px from the viewport's top-left
+    bool down = false;
+    bool pressed = false;
+    bool released = false;
+    bool right = false;  ///< the right button (camera orbit) instead of the left (gizmo, picking)
+};
+
+/// The viewport: renderer and display transform, the texture ImGui shows,
+/// camera, gizmo and picking state, and the View menu's options.
+struct ViewportState {
+    std::unique_ptr<renderer::Renderer> renderer;
+    std::unique_ptr<renderer::DisplayTransform> display;
+    std::string displayName, viewName;  ///< the OCIO display and view asked for
+    double exposureEv = 0.0;
+    double resolutionScale = 0.5;
+    bool showHelpers = true;
+    bool showGrid = false;
+    renderer::RenderPasses passes;
+    bool showStars = true;  ///< View > Stars (the sky pass's stars at night)
+    std::string scenePath;  ///< "" = the built-in scene
+
+    unsigned displayTexture = 0;
+    int displayWidth = 0, displayHeight = 0;
+    int renderWidth = 0, renderHeight = 0;
+    glm::dvec2 origin{0.0}, size{640.0, 360.0};  ///< [px] in the window
+    bool visible = false;
+    std::string renderLogError;
+    std::string lastRenderSignature;  ///< what the last viewport frame was rendered from
+    double renderMs = 0.0;
+
+    CameraController camera;
+    Gizmo gizmo;
+    GizmoMode gizmoMode = GizmoMode::Translate;
+    GizmoSpace gizmoSpace = GizmoSpace::World;
+    std::string gizmoMergeKey;
+    std::deque<ScriptedMouse> scriptedMouse;
+    bool scriptedMouseActive = false;
+    glm::dvec2 lastScriptedMouse{0.0};
+};
+
+/// What waits behind the unsaved-changes prompt.
+enum class Pending { None, New, Open, Quit, OpenRecovery };
+/// The unsaved-changes prompt's buttons (and the script's `answer`).
+enum class UnsavedChoice { Save, Discard, Cancel };
+/// What the file dialog's result is for.
+enum class DialogPurpose { None, Open, SaveAs, Scene, Screenshot, Export };
+
+/// Modals, prompts and the file dialog.
+struct Dialogs {
+    std::string errorTitle, errorText;
+    bool openErrorModal = false;
+    Pending pending = Pending::None;
+    std::string pendingPath;
+    bool openUnsavedModal = false;
+    bool unsavedPromptOpen = false;
+    bool continueAfterSave = false;  ///< a Save As started from the unsaved prompt
+    std::optional<RecoveryCandidate> recovery;
+    bool openRecoveryModal = false;
+    FileDialog fileDialog;
+    DialogPurpose purpose = DialogPurpose::None;
+    std::vector<std::string> drops;  ///< dropped files, handled at the next frame
+
+    /// The unsaved-changes prompt is open or about to open.
+    bool unsavedPromptShown() const { return unsavedPromptOpen || openUnsavedModal; }
+};
+
+/// The automation script (--script) and what its current command waits for.
+struct ScriptRunner {
+    std::vector<ScriptCommand> commands;
+    std::size_t next = 0;
+    int waitFrames = 0;
+    bool waitsForMouse = false;
+    std::deque<double> times;  ///< scrub: one time per frame
+    bool waitsForAutosave = false;
+    int autosaveWrites = 0;
+    std::string windowShotPath;  ///< window_screenshot: captured after the next frame is drawn
+};
+
+/// Frame timing, --bench samples and idle detection.
+struct FrameStats {
+    double frameMs = 0.0;  ///< frame to frame [ms] (--bench)
+    double workMs = 0.0;   ///< the last frame's work without waiting for events [ms] (status bar)
+    std::chrono::steady_clock::time_point lastFrame = std::chrono::steady_clock::now();
+    std::vector<double> benchFrameMs;
+    std::vector<double> benchSolveMs;
+    std::vector<renderer::PassTimes>
+        benchPasses;  ///< viewport passes, timed with glFinish (every 10th frame)
+    int frameIndex = 0;
+    int idleFrames = 0;  ///< frames without input (the loop then waits for events)
+};
+
+}  // namespace aerial::editor

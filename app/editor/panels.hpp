@@ -1,0 +1,49 @@
+// editor/panels.hpp — the panels around the viewport. Each draws one
+// window's contents with Dear ImGui and edits, in place, the parts it is
+// given (editor_parts.hpp) and nothing else; a user action it offers runs
+// the action table's declaration (actions.hpp). What a panel has to say
+// goes to `status` (the status bar).
+//
+//   editor_outliner.cpp   drawOutliner, drawSkyPreview
+//   editor_inspector.cpp  drawInspector, editParam, keyAllChangedAt
+//   editor_timeline.cpp   drawTimeline
+#pragma once
+
+#include "actions.hpp"
+#include "editor_parts.hpp"
+
+#include <functional>
+#include <string>
+
+namespace aerial::editor {
+
+/// The outliner: the atmosphere, lights, global fog, every volume and
+/// emitter (select, rename inline, duplicate, delete). `select` selects as
+/// a click in the viewport does.
+void drawOutliner(Document& doc, EditState& edit, const ActionTable& actions,
+                  const std::function<void(Selection)>& select);
+
+/// The sky preview below the outliner: the solved sky as a fisheye through
+/// the viewport's display transform, made again when the sky or the
+/// display changed.
+void drawSkyPreview(SkyPreview& preview, const SkyService& sky, const ViewportState& view, int frameIndex);
+
+/// The inspector of the selection, generated from the parameter table;
+/// `state` is the preset evaluated at `timeHours`.
+void drawInspector(Document& doc, EditState& edit, double timeHours, const PresetState& state,
+                   const ActionTable& actions, std::string& status);
+
+/// The timeline: playback controls, ruler, keys and the selected parameter's curve.
+void drawTimeline(Document& doc, EditState& edit, Playback& playback, const ActionTable& actions,
+                  std::string& status);
+
+/// Sets a parameter at `timeHours` as the inspector does: a key when it is
+/// animated, else its constant value. One undo step, or with `continuous`
+/// part of the step of a drag (until Document::closeMerge).
+void editParam(Document& doc, const ParamRef& ref, const double value[4], bool continuous, double timeHours);
+
+/// Keys every animatable parameter whose value at `timeHours` differs from
+/// the saved preset (one undo step); returns how many.
+int keyAllChangedAt(Document& doc, double timeHours);
+
+}  // namespace aerial::editor
