@@ -12,6 +12,8 @@
 #include "frame_block.hpp"
 #include "render_pass.hpp"
 
+#include <aerial/finite.hpp>
+
 #include <algorithm>
 #include <cmath>
 
@@ -21,8 +23,7 @@ int uploadEmitters(RendererResources& gpu, const std::vector<Emitter>& emitters)
     std::vector<EmitterGpu> packed;
     packed.reserve(emitters.size());
     for (const Emitter& e : emitters) {
-        const bool positionOk = finite(e.position) && std::fabs(e.position.x) <= 1e30 &&
-                                std::fabs(e.position.y) <= 1e30 && std::fabs(e.position.z) <= 1e30;
+        const bool positionOk = withinCoordinateRange(e.position);
         const double intensity = nonNegative(e.intensity, 1e30);
         if (!positionOk || !(intensity > 0.0)) continue;
         EmitterGpu g;

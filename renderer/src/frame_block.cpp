@@ -5,6 +5,7 @@
 #include "sky_textures.hpp"
 
 #include <aerial/evaluate.hpp>
+#include <aerial/finite.hpp>
 #include <aerial/sky.hpp>
 #include <aerial/sun.hpp>
 
@@ -39,8 +40,6 @@ Mat4 toMat4(const glm::dmat4& m) {
     return out;
 }
 
-bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-
 double nonNegative(double x, double bound) {
     return (std::isfinite(x) && x > 0.0) ? std::min(x, bound) : 0.0;
 }
@@ -50,7 +49,7 @@ glm::dvec3 colourOf(const glm::dvec3& c) {
 }
 
 glm::dvec3 unitOr(const glm::dvec3& v, const glm::dvec3& fallback) {
-    if (!finite(v)) return fallback;
+    if (!isFinite(v)) return fallback;
     const double m = std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
     if (!(m > 0.0)) return fallback;
     return glm::normalize(v / m);

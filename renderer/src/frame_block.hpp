@@ -63,8 +63,6 @@ Vec4 toVec4(const glm::dvec3& v, double w = 0.0);
 Vec3 toVec3(const glm::dvec3& v);
 Mat4 toMat4(const glm::dmat4& m);
 
-/// All three components finite.
-bool finite(const glm::dvec3& v);
 /// Finite, non-negative, at most `bound`; 0 otherwise.
 double nonNegative(double x, double bound);
 /// Each channel through nonNegative(c, 1e30).

@@ -3,6 +3,8 @@
 
 #include "frame_block.hpp"
 
+#include <aerial/finite.hpp>
+
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/vec4.hpp>
@@ -75,7 +77,7 @@ GpuMesh uploadMesh(const SceneMesh& mesh, bool withNormals) {
     for (std::uint32_t index : mesh.indices) {
         const glm::dvec3 p =
             glm::dvec3(mesh.worldFromObject * glm::dvec4(glm::dvec3(mesh.positions[index]), 1.0));
-        if (!finite(p)) continue;
+        if (!isFinite(p)) continue;
         lo = glm::min(lo, p);
         hi = glm::max(hi, p);
     }

@@ -16,6 +16,7 @@
 #include "sky_textures.hpp"
 
 #include <aerial/evaluate.hpp>
+#include <aerial/finite.hpp>
 #include <aerial/sky.hpp>
 
 #include <epoxy/gl.h>
@@ -29,7 +30,6 @@ namespace {
 
 using detail::clampOr;
 using detail::colourOf;
-using detail::finite;
 using detail::GpuMesh;
 
 /// The frame, in order (renderer.hpp).
@@ -209,7 +209,7 @@ void Renderer::setScene(const SceneDesc& scene) {
         s.meshes.push_back(gpu);
     }
     for (const FogSprite& sprite : scene.sprites) {
-        const bool ok = finite(sprite.position) && std::isfinite(sprite.radius) && sprite.radius > 0.0 &&
+        const bool ok = isFinite(sprite.position) && std::isfinite(sprite.radius) && sprite.radius > 0.0 &&
                         sprite.radius < 1e6 && std::fabs(sprite.position.x) < 1e15 &&
                         std::fabs(sprite.position.y) < 1e15 && std::fabs(sprite.position.z) < 1e15;
         if (!ok) continue;

@@ -4,8 +4,8 @@
 // fog_volume_marched.glsl for VolumeMethod::RayMarched64):
 // L <- L T_v + C_v (1 - T_v).
 //
-// Reads:  the state's volumes (packed by prepareVolume: core's validity rules
-//         and sanitising), FrameBlock, linear depth (unit 4), the depth
+// Reads:  the state's volumes (core's prepareFogVolume, packed by
+//         prepareVolume), FrameBlock, linear depth (unit 4), the depth
 //         buffer (hulls seen from outside are depth-tested against it).
 // Writes: the colour, through compositeTarget (no depth writes); the
 //         VolumeBlock per volume; RenderStats::volumesDrawn, volumesDrawnInside.
@@ -21,9 +21,10 @@
 #include "render_pass.hpp"
 
 #include <aerial/evaluate.hpp>
+#include <aerial/fog_volume.hpp>
 
 #include <glm/geometric.hpp>
-#include <glm/gtc/quaternion.hpp>
+#include <glm/mat4x4.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -36,8 +37,8 @@ double distanceToBox(const glm::dvec3& p, const glm::dvec3& lo, const glm::dvec3
     return glm::length(glm::max(glm::max(lo - p, p - hi), glm::dvec3(0.0)));
 }
 
-/// A fog volume reduced to what its pass needs (mirrors core's
-/// prepareVolume: the same validity rules and sanitising).
+/// A fog volume reduced to what its pass needs: core's prepareFogVolume
+/// (its validity rules and sanitising) packed for the GPU.
 struct PreparedVolume {
     VolumeBlock block;
     double sortDistance = 0.0;
@@ -47,51 +48,34 @@ struct PreparedVolume {
 
 bool prepareVolume(const FogVolume& v, std::size_t index, const CameraFrame& camera,
                    double nearCornerDistance, PreparedVolume& out) {
-    constexpr double kMaxCoordinate = 1.0e30;
-    const glm::dvec3 s = v.halfExtents;
-    const bool extentsOk = s.x >= 1e-6 && s.y >= 1e-6 && s.z >= 1e-6 && s.x <= kMaxCoordinate &&
-                           s.y <= kMaxCoordinate && s.z <= kMaxCoordinate;
-    const glm::dquat q = v.rotation;
-    const double qNorm2 = q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z;
-    const bool positionOk = finite(v.position) && std::fabs(v.position.x) <= kMaxCoordinate &&
-                            std::fabs(v.position.y) <= kMaxCoordinate &&
-                            std::fabs(v.position.z) <= kMaxCoordinate;
-    const double density = nonNegative(v.density, 1e150);
-    if (!extentsOk || !(std::isfinite(qNorm2) && qNorm2 > 1e-200) || !positionOk || !(density > 0.0)) {
-        return false;
-    }
-    const glm::dmat3 r = glm::mat3_cast(q / std::sqrt(qNorm2));
-    const glm::dvec3 rows[3] = {r[0] / s.x, r[1] / s.y, r[2] / s.z};  // objectFromWorld = S^-1 R^T
+    const PreparedFogVolume p = prepareFogVolume(v);
+    if (!p.valid || !(p.density > 0.0)) return false;
 
     glm::dmat4 worldFromObject(1.0);
-    for (int c = 0; c < 3; ++c) worldFromObject[c] = glm::dvec4(r[c] * s[c], 0.0);
-    worldFromObject[3] = glm::dvec4(v.position, 1.0);
+    for (int c = 0; c < 3; ++c) worldFromObject[c] = glm::dvec4(p.worldFromObject[c], 0.0);
+    worldFromObject[3] = glm::dvec4(p.position, 1.0);
 
     out.block.worldFromObject = toMat4(worldFromObject);
-    out.block.objectFromWorldRow0 = toVec3(rows[0]);
-    out.block.shape = v.shape == FogVolumeShape::Ellipsoid ? 1.0f : 0.0f;
-    out.block.objectFromWorldRow1 = toVec3(rows[1]);
-    out.block.density = static_cast<float>(density);
-    out.block.objectFromWorldRow2 = toVec3(rows[2]);
-    out.block.falloff = static_cast<float>(nonNegative(v.falloff, 1e150));
-    const double offset = std::isfinite(v.gradientOffset) ? std::clamp(v.gradientOffset, -1e150, 1e150) : 0.0;
-    out.block.position = toVec3(v.position);
-    out.block.gradientOffset = static_cast<float>(offset);
-    out.block.gradientDirection = toVec3(unitOr(v.gradientDirection, {0.0, 1.0, 0.0}));
-    out.block.colourMode = static_cast<float>(static_cast<int>(v.colourMode));
-    out.block.colour = toVec3(colourOf(v.colour));
+    out.block.objectFromWorldRow0 = toVec3(p.row0);
+    out.block.shape = p.shape == FogVolumeShape::Ellipsoid ? 1.0f : 0.0f;
+    out.block.objectFromWorldRow1 = toVec3(p.row1);
+    out.block.density = static_cast<float>(p.density);
+    out.block.objectFromWorldRow2 = toVec3(p.row2);
+    out.block.falloff = static_cast<float>(p.falloff);
+    out.block.position = toVec3(p.position);
+    out.block.gradientOffset = static_cast<float>(p.gradientOffset);
+    out.block.gradientDirection = toVec3(p.gradient);
+    out.block.colourMode = static_cast<float>(static_cast<int>(p.colourMode));
+    out.block.colour = toVec3(p.colour);
 
-    glm::dvec3 lo, hi;
-    fogVolumeBounds(v, lo, hi);
-    out.sortDistance = distanceToBox(camera.eye, lo, hi);
+    out.sortDistance = distanceToBox(camera.eye, p.boundsMin, p.boundsMax);
     out.index = index;
     // Inside mode when the hull may reach the eye's near-plane sphere: the
     // world distance to the hull is at least min(s) times the object-space
     // distance (conservative; inside mode is always correct, only slower).
-    const glm::dvec3 o =
-        glm::dvec3(glm::dot(rows[0], camera.eye - v.position), glm::dot(rows[1], camera.eye - v.position),
-                   glm::dot(rows[2], camera.eye - v.position));
+    const glm::dvec3 o = p.toObject(camera.eye - p.position);
     const double objectDistance = glm::length(o - glm::clamp(o, glm::dvec3(-1.0), glm::dvec3(1.0)));
+    const glm::dvec3 s = v.halfExtents;
     out.inside = std::min({s.x, s.y, s.z}) * objectDistance <= 1.01 * nearCornerDistance;
     return true;
 }
