@@ -1,5 +1,6 @@
 // editor/autosave.cpp — see autosave.hpp.
 #include "autosave.hpp"
+#include "user_dirs.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -19,12 +20,7 @@ namespace aerial::editor {
 namespace fs = std::filesystem;
 
 std::string stateDirectory() {
-    if (const char* dir = std::getenv("AERIAL_STATE_DIR"); dir && *dir) return dir;
-    if (const char* xdg = std::getenv("XDG_STATE_HOME"); xdg && *xdg)
-        return (fs::path(xdg) / "aerial").string();
-    if (const char* home = std::getenv("HOME"); home && *home)
-        return (fs::path(home) / ".local" / "state" / "aerial").string();
-    return "/tmp/aerial-state";
+    return userDirectory({"AERIAL_STATE_DIR", "XDG_STATE_HOME", ".local/state", "/tmp/aerial-state"});
 }
 
 namespace {

@@ -9,6 +9,7 @@
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
 
+#include <aerial/clock.hpp>
 #include <aerial/renderer/image.hpp>
 #include <aerial/renderer/scene.hpp>
 
@@ -54,14 +55,6 @@ void printNoDisplay(const char* why) {
         "  aerial bake PRESET --out DIR                         # sky tables + parameters for a game\n"
         "or run the editor under a virtual display: xvfb-run -a aerial-editor\n",
         why);
-}
-
-std::string formatClock(double hours) {
-    const double t = wrapHours(hours);
-    int minutes = int(std::floor(t * 60.0 + 1e-6));
-    char text[16];
-    std::snprintf(text, sizeof text, "%02d:%02d", (minutes / 60) % 24, minutes % 60);
-    return text;
 }
 
 double percentile(std::vector<double> values, double p) {
@@ -442,8 +435,8 @@ void Editor::layout() {
 void Editor::drawStatusBar() {
     const double elevationDeg = sky_.state.sunLight.body.elevation * 180.0 / kPi;
     ImGui::Text("%s   sun %+.1f deg   frame %.1f ms   render %dx%d   sky solve %.2f ms",
-                formatClock(playback_.timeHours).c_str(), elevationDeg, frames_.workMs, view_.renderWidth,
-                view_.renderHeight, sky_.solveMs);
+                aerial::formatClock(playback_.timeHours, ClockResolution::Minutes).c_str(), elevationDeg,
+                frames_.workMs, view_.renderWidth, view_.renderHeight, sky_.solveMs);
     if (export_.running()) {
         ImGui::SameLine();
         ImGui::SetNextItemWidth(160.0f);
@@ -462,7 +455,9 @@ void Editor::drawStatusBar() {
 
 void Editor::setStatus(std::string text) { status_ = std::move(text); }
 
-std::string Editor::clockText() const { return formatClock(playback_.timeHours); }
+std::string Editor::clockText() const {
+    return aerial::formatClock(playback_.timeHours, ClockResolution::Minutes);
+}
 
 void Editor::showError(std::string title, std::string text) {
     dialogs_.errorTitle = std::move(title);

@@ -9,6 +9,8 @@
 // track changes its constant value. A slider drag is one undo step.
 #include "panels.hpp"
 
+#include <aerial/clock.hpp>
+
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -285,9 +287,9 @@ void drawInspector(Document& doc, EditState& edit, double timeHours, const Prese
                             state.moonLight.body.illuminatedFraction * 100.0);
                 const Location& where = preset.environment.location;
                 const double rise = sunriseHours(where), set = 24.0 - rise;
-                ImGui::Text("Sunrise %02d:%02d, sunset %02d:%02d, day %.1f h", int(rise),
-                            int((rise - int(rise)) * 60.0), int(set), int((set - int(set)) * 60.0),
-                            dayLengthHours(where));
+                ImGui::Text("Sunrise %s, sunset %s, day %.1f h",
+                            formatClock(rise, ClockResolution::Minutes).c_str(),
+                            formatClock(set, ClockResolution::Minutes).c_str(), dayLengthHours(where));
             }
             break;
         }

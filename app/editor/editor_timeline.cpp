@@ -7,6 +7,8 @@
 // timeline) and the curve of its values over the day.
 #include "panels.hpp"
 
+#include <aerial/clock.hpp>
+
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -20,28 +22,8 @@
 namespace aerial::editor {
 namespace {
 
-std::string clock(double hours) {
-    const double t = wrapHours(hours);
-    const int minutes = int(std::floor(t * 60.0 + 1e-6));
-    char text[16];
-    std::snprintf(text, sizeof text, "%02d:%02d", (minutes / 60) % 24, minutes % 60);
-    return text;
-}
-
-bool parseClock(const std::string& text, double& hours) {
-    int h = 0, m = 0;
-    char extra = 0;
-    if (std::sscanf(text.c_str(), "%d:%d%c", &h, &m, &extra) == 2 && h >= 0 && h < 24 && m >= 0 && m < 60) {
-        hours = h + m / 60.0;
-        return true;
-    }
-    double v = 0.0;
-    if (std::sscanf(text.c_str(), "%lf%c", &v, &extra) == 1 && v >= 0.0 && v < 24.0) {
-        hours = v;
-        return true;
-    }
-    return false;
-}
+/// The time field and tooltips show the minute that has begun, as a clock.
+std::string clock(double hours) { return formatClock(hours, ClockResolution::Minutes); }
 
 void diamond(ImDrawList* dl, ImVec2 c, float r, ImU32 colour, bool filled) {
     const ImVec2 p[4] = {ImVec2(c.x, c.y - r), ImVec2(c.x + r, c.y), ImVec2(c.x, c.y + r),
@@ -81,7 +63,7 @@ void drawTimeline(Document& doc, EditState& edit, Playback& playback, const Acti
     ImGui::SetNextItemWidth(60.0f);
     if (ImGui::InputText("##time", &timeText, ImGuiInputTextFlags_EnterReturnsTrue)) {
         double t;
-        if (parseClock(timeText, t)) playback.jumpTo(t);
+        if (aerial::parseClock(timeText, t)) playback.jumpTo(t);
     }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Time of day (HH:MM or hours), local solar time");
 

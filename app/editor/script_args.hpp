@@ -5,6 +5,8 @@
 
 #include "preset_edit.hpp"
 
+#include <aerial/clock.hpp>
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -23,14 +25,14 @@ inline bool toNumber(const std::string& text, double& out) {
     return end && *end == '\0' && std::isfinite(out);
 }
 
+/// A time of day: anything aerial::parseClock reads ("06:30", "7.5h"), or
+/// decimal hours up to 24 inclusive (the end of the day, for a play range).
 inline bool toTime(const std::string& text, double& hours) {
-    int h = 0, m = 0;
-    char extra = 0;
-    if (std::sscanf(text.c_str(), "%d:%d%c", &h, &m, &extra) == 2 && h >= 0 && h < 24 && m >= 0 && m < 60) {
-        hours = h + m / 60.0;
-        return true;
-    }
-    return toNumber(text, hours) && hours >= 0.0 && hours <= 24.0;
+    if (parseClock(text, hours)) return true;
+    double value = 0.0;
+    if (!toNumber(text, value) || value < 0.0 || value > 24.0) return false;
+    hours = value;
+    return true;
 }
 
 inline std::string formatValues(const double* v, int n) {

@@ -1,5 +1,6 @@
 // editor/settings.cpp — see settings.hpp.
 #include "settings.hpp"
+#include "user_dirs.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -15,12 +16,7 @@ namespace aerial::editor {
 namespace fs = std::filesystem;
 
 std::string configDirectory() {
-    if (const char* dir = std::getenv("AERIAL_CONFIG_DIR"); dir && *dir) return dir;
-    if (const char* xdg = std::getenv("XDG_CONFIG_HOME"); xdg && *xdg)
-        return (fs::path(xdg) / "aerial").string();
-    if (const char* home = std::getenv("HOME"); home && *home)
-        return (fs::path(home) / ".config" / "aerial").string();
-    return "/tmp/aerial-config";
+    return userDirectory({"AERIAL_CONFIG_DIR", "XDG_CONFIG_HOME", ".config", "/tmp/aerial-config"});
 }
 
 namespace {

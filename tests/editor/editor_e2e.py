@@ -65,8 +65,13 @@ class Env:
         # -a picks a free display; starting the search at a per-process number keeps
         # tests run in parallel (ctest -j) from racing for the same one.
         first = str(100 + (os.getpid() * 7 + len(script)) % 800)
-        return ["xvfb-run", "-a", "-n", first, "-s", "-screen 0 1024x768x24", self.editor, "--size", WINDOW,
-                "--script", script] + list(extra)
+        # Our own auth file: xvfb-run then makes no temporary directory of its
+        # own, whose removal sometimes failed ("problem while cleaning up
+        # temporary directory", exit 5) and hid the editor's exit status.
+        auth = self.path("Xauthority")
+        open(auth, "a").close()
+        return ["xvfb-run", "-a", "-n", first, "-f", auth, "-s", "-screen 0 1024x768x24", self.editor, "--size",
+                WINDOW, "--script", script] + list(extra)
 
     def run(self, script, extra=(), expect_rc=0, timeout=240):
         cmd = self.command(script, extra)
