@@ -51,11 +51,7 @@ namespace {
 
 bool runs(const FrameContext& f) { return f.desc.passes.emitters && f.block.emitterCount > 0; }
 
-void draw(FrameContext& f) {
-    beginComposite(f.gpu, GL_ONE, GL_ONE);
-    drawFullscreen(f.gpu, Pass::Emitters);
-    endComposite(f.gpu);
-}
+void draw(FrameContext& f) { compositeFullscreen(f.gpu, Pass::Emitters, GL_ONE, GL_ONE); }
 
 }  // namespace
 

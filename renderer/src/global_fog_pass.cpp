@@ -14,11 +14,7 @@ namespace {
 
 bool runs(const FrameContext& f) { return f.desc.passes.globalFog && f.block.fogDensity > 0.0f; }
 
-void draw(FrameContext& f) {
-    beginComposite(f.gpu, GL_ONE, GL_SRC_ALPHA);
-    drawFullscreen(f.gpu, Pass::GlobalFog);
-    endComposite(f.gpu);
-}
+void draw(FrameContext& f) { compositeFullscreen(f.gpu, Pass::GlobalFog, GL_ONE, GL_SRC_ALPHA); }
 
 }  // namespace
 

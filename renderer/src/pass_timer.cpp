@@ -83,4 +83,10 @@ void endComposite(const RendererResources& gpu) {
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, gpu.sceneTarget);
 }
 
+void compositeFullscreen(const RendererResources& gpu, Pass program, GLenum srcRgb, GLenum dstRgb) {
+    beginComposite(gpu, srcRgb, dstRgb);
+    drawFullscreen(gpu, program);
+    endComposite(gpu);
+}
+
 }  // namespace aerial::renderer::detail

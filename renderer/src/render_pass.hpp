@@ -136,6 +136,10 @@ void drawFullscreen(const RendererResources& gpu, Pass program);
 void beginComposite(const RendererResources& gpu, GLenum srcRgb, GLenum dstRgb);
 void endComposite(const RendererResources& gpu);
 
+/// One full-screen triangle of `program` composited with (srcRgb, dstRgb):
+/// beginComposite, drawFullscreen, endComposite (the global fog, emitters).
+void compositeFullscreen(const RendererResources& gpu, Pass program, GLenum srcRgb, GLenum dstRgb);
+
 /// Uploads the valid emitters (finite position, positive intensity; colours
 /// and attenuations sanitised) to gpu.emitterBuffer, growing it as needed;
 /// returns how many (emitter_pass.cpp).

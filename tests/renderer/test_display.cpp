@@ -230,6 +230,14 @@ TEST_F(DisplayGpu, GpuMatchesCpu) {
     EXPECT_TRUE(log.errors.empty()) << log.errors.front();
 }
 
+/// The roles and file rules of the small test configs: everything is "lin".
+constexpr const char* kLinearRoles =
+    "roles:\n"
+    "  default: lin\n"
+    "  scene_linear: lin\n"
+    "file_rules:\n"
+    "  - !<Rule> {name: Default, colorspace: default}\n";
+
 /// A config whose views need LUT textures on the GPU (a 3D cube and a 1D
 /// curve, written beside it), to exercise the texture upload.
 TEST_F(DisplayGpu, LutTexturesMatchTheCpu) {
@@ -253,12 +261,8 @@ TEST_F(DisplayGpu, LutTexturesMatchTheCpu) {
         std::ofstream config(dir / "luts.ocio");
         config << "ocio_profile_version: 2\n"
                   "search_path: .\n"
-                  "roles:\n"
-                  "  default: lin\n"
-                  "  scene_linear: lin\n"
-                  "file_rules:\n"
-                  "  - !<Rule> {name: Default, colorspace: default}\n"
-                  "displays:\n"
+               << kLinearRoles
+               << "displays:\n"
                   "  LUT Display:\n"
                   "    - !<View> {name: Cube, colorspace: cube}\n"
                   "    - !<View> {name: Curve, colorspace: curve}\n"
@@ -303,12 +307,8 @@ TEST(Display, OcioEnvironmentIsHonoured) {
     {
         std::ofstream out(config);
         out << "ocio_profile_version: 2\n"
-               "roles:\n"
-               "  default: lin\n"
-               "  scene_linear: lin\n"
-               "file_rules:\n"
-               "  - !<Rule> {name: Default, colorspace: default}\n"
-               "displays:\n"
+            << kLinearRoles
+            << "displays:\n"
                "  Tiny Display:\n"
                "    - !<View> {name: Half Gain, colorspace: half}\n"
                "colorspaces:\n"

@@ -89,6 +89,13 @@ FrameBlockInputs testInputs() {
     return in;  // no tables: no sky ambient
 }
 
+/// The frame block of `state` seen by testCamera().
+FrameBlock blockFor(const PresetState& state, const renderer::FrameDesc& frame = {},
+                    const FrameBlockInputs& inputs = testInputs()) {
+    const renderer::Camera camera = testCamera();
+    return makeFrameBlock(camera, renderer::cameraFrame(camera), state, frame, inputs);
+}
+
 TEST(FrameBlock, CameraFieldsReproduceTheFrustum) {
     const renderer::Camera camera = testCamera();
     const renderer::CameraFrame view = renderer::cameraFrame(camera);
@@ -161,10 +168,8 @@ TEST(FrameBlock, LightsDiscsAndSkyMapping) {
 }
 
 TEST(FrameBlock, FogFieldsAndRadianceCap) {
-    const renderer::Camera camera = testCamera();
-    const renderer::CameraFrame view = renderer::cameraFrame(camera);
     renderer::FrameDesc frame;
-    const FrameBlock half = makeFrameBlock(camera, view, testState(), frame, testInputs());
+    const FrameBlock half = blockFor(testState(), frame);
     EXPECT_FLOAT_EQ(half.fogDensity, 0.004f);
     EXPECT_FLOAT_EQ(half.fogFalloff, 0.02f);
     EXPECT_FLOAT_EQ(half.fogBaseHeight, 3.0f);
@@ -173,7 +178,7 @@ TEST(FrameBlock, FogFieldsAndRadianceCap) {
     EXPECT_EQ(half.radianceCap, 3.0e4f);
     frame.precision = renderer::ColourPrecision::Float;
     frame.passes.globalFog = false;  // no global fog anywhere, the transparent passes included
-    const FrameBlock full = makeFrameBlock(camera, view, testState(), frame, testInputs());
+    const FrameBlock full = blockFor(testState(), frame);
     EXPECT_EQ(full.radianceCap, 1.0e30f);
     EXPECT_EQ(full.fogDensity, 0.0f);
     EXPECT_FLOAT_EQ(full.fogFalloff, 0.02f);
@@ -181,14 +186,13 @@ TEST(FrameBlock, FogFieldsAndRadianceCap) {
 
 TEST(FrameBlock, StarsFollowTheSunAndTheSwitch) {
     const renderer::Camera camera = testCamera();
-    const renderer::CameraFrame view = renderer::cameraFrame(camera);
     PresetState night = testState();
     night.sunLight.body.elevation = -0.5;  // below -10 deg
     night.timeHours = 1.5;
     night.environment.location.latitudeDeg = 30.0;
     night.zenithTransmittance = {0.8, 0.85, 0.9};
     const FrameBlockInputs inputs = testInputs();
-    const FrameBlock fb = makeFrameBlock(camera, view, night, {}, inputs);
+    const FrameBlock fb = blockFor(night, {}, inputs);
     EXPECT_FLOAT_EQ(fb.starIlluminance, float(renderer::kStarIlluminance));
     const CelestialFrame sky = celestialFrame(night.environment.location, night.timeHours);
     expectNear3(fb.starAxisX, sky.equatorX, 1e-6, "equator x");
@@ -199,12 +203,12 @@ TEST(FrameBlock, StarsFollowTheSunAndTheSwitch) {
 
     renderer::FrameDesc off;
     off.stars = false;
-    EXPECT_EQ(makeFrameBlock(camera, view, night, off, inputs).starIlluminance, 0.0f);
-    EXPECT_EQ(makeFrameBlock(camera, view, testState(), {}, inputs).starIlluminance, 0.0f);  // day
+    EXPECT_EQ(blockFor(night, off, inputs).starIlluminance, 0.0f);
+    EXPECT_EQ(blockFor(testState(), {}, inputs).starIlluminance, 0.0f);  // day
     PresetState dusk = night;
     dusk.sunLight.body.elevation = -4.0 * kPiD / 180.0;  // half way through the fade
-    EXPECT_NEAR(makeFrameBlock(camera, view, dusk, {}, inputs).starIlluminance,
-                0.5 * renderer::kStarIlluminance, 1e-6 * renderer::kStarIlluminance);
+    EXPECT_NEAR(blockFor(dusk, {}, inputs).starIlluminance, 0.5 * renderer::kStarIlluminance,
+                1e-6 * renderer::kStarIlluminance);
 }
 
 // --- std140 offsets: the GLSL blocks laid out by the rules, against offsetof.

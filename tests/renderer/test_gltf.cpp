@@ -537,6 +537,18 @@ TEST(Gltf, UnsupportedPrimitiveModeIsAWarning) {
         << r.warnings[0];
 }
 
+/// A float frame of the meshes alone: no sky, no stars (the states here are
+/// built by hand).
+renderer::FrameDesc meshOnlyFrame(int width, int height) {
+    renderer::FrameDesc frame;
+    frame.stars = false;
+    frame.width = width;
+    frame.height = height;
+    frame.precision = renderer::ColourPrecision::Float;
+    frame.passes.sky = false;
+    return frame;
+}
+
 TEST_F(GlTest, GltfCubeLinearDepthAtCentre) {
     const GltfLoadResult loaded = loadGltfScene(writeGltf("depth_cube.gltf", cubeDoc()).string());
     ASSERT_TRUE(loaded.ok()) << loaded.error;
@@ -552,12 +564,7 @@ TEST_F(GlTest, GltfCubeLinearDepthAtCentre) {
     camera.farDistance = 100.0;
     constexpr int kW = 64, kH = 48;
     camera.aspect = double(kW) / kH;
-    renderer::FrameDesc frame;
-    frame.stars = false;  // a state built by hand
-    frame.width = kW;
-    frame.height = kH;
-    frame.precision = renderer::ColourPrecision::Float;
-    frame.passes.sky = false;
+    const renderer::FrameDesc frame = meshOnlyFrame(kW, kH);
     r.render(camera, PresetState{}, frame);
     const renderer::Image depth = r.readLinearDepth();
     ASSERT_EQ(depth.width, kW);
@@ -604,12 +611,7 @@ TEST_F(GlTest, GltfTexturedQuadRendersItsTexelsBlended) {
     PresetState air;
     air.sunLight = light({0.0, 0.0, 1.0}, glm::dvec3(0.0), glm::dvec3(3.14159265358979323846));
     air.moonLight.illuminance = glm::dvec3(0.0);
-    renderer::FrameDesc frame;
-    frame.stars = false;  // a state built by hand
-    frame.width = kW;
-    frame.height = kH;
-    frame.precision = renderer::ColourPrecision::Float;
-    frame.passes.sky = false;
+    const renderer::FrameDesc frame = meshOnlyFrame(kW, kH);
     r.render(camera, air, frame);
     EXPECT_EQ(r.stats().transparentDrawn, 1);
     const renderer::Image colour = r.readColour();
