@@ -15,11 +15,14 @@
 //         values beyond the half range clamp to 65504. --exposure does not
 //         apply (a usage error): the file holds the unscaled radiance.
 //   .png  8-bit display-referred, through the OpenColorIO display transform
-//         (renderer/display.hpp): radiance * 2^EV (--exposure, default 0 EV:
-//         a daylight sky lands near 1), then the view (--view, default the
-//         config's default: "Un-tone-mapped" in Aerial's built-in config,
-//         i.e. clamped to [0, 1] and sRGB-encoded; "ACES 1.0 - SDR Video"
-//         tone-maps) of the display (--display, default "sRGB - Display").
+//         (renderer/display.hpp): radiance times the preset's exposure
+//         (aerial/exposure.hpp: its manual EV100, or automatic — metered
+//         from this frame, clamped to its range, fully adapted — and its
+//         compensation at this time) times 2^EV (--exposure, default 0:
+//         added to the preset's), then the view (--view, default the
+//         config's default: "ACES 1.0 - SDR Video" in Aerial's built-in
+//         config, a filmic tone map; "Un-tone-mapped" clamps to [0, 1] and
+//         sRGB-encodes) of the display (--display, default "sRGB - Display").
 //         The config is $OCIO when set (a broken one falls back to the
 //         built-in config with a warning), else the built-in one. An unknown
 //         display or view is a usage error that lists the known ones.
@@ -41,12 +44,17 @@
 //   {"file", "format" ("exr"/"png"), "width", "height",
 //    "preset": {"file", "name"}, "time_h", "time",
 //    "camera": {"eye", "target", "fov_deg"}, "precision" ("half"/"float"),
-//    "exposure_ev", "display", "view", "ocio_config" (null for EXR),
+//    "exposure": {"mode", "average_luminance" (metered, radiance units),
+//    "ev100" (what the preset's exposure chose), "compensation_ev",
+//    "exposure_ev" (--exposure), "display_ev" (the stops the display
+//    multiplied by: log2 radianceScale + exposure_ev; null for EXR)},
+//    "display", "view", "ocio_config" (null for EXR),
 //    "renderer" (GL_RENDERER and version),
 //    "setup_ms" (context, shaders, scene), "solve_ms" (sun and moon tables),
 //    "render_ms" (render and read-back), "write_ms"}
 #include "cli_common.hpp"
 
+#include <aerial/exposure.hpp>
 #include <aerial/limits.hpp>
 #include <aerial/renderer/camera.hpp>
 #include <aerial/renderer/display.hpp>
@@ -295,6 +303,14 @@ int runRender(const RenderOptions& options) {
         dataError("the rendered frame has " + std::to_string(bad) + " non-finite values (NaN or Inf); " +
                   out.string() + " not written");
 
+    // The preset's exposure, fully adapted (one frame): manual EV100, or
+    // metered from this frame and clamped; --exposure adds to it.
+    const ExposureParams& exposure = state.environment.exposure;
+    const double averageLuminance = meterAverageLuminance(image.pixels, image.channels);
+    const double ev100 = targetEv100(exposure, averageLuminance);
+    const double displayEv = std::log2(radianceScale(exposure, ev100)) + exposureEv;
+    if (display) display->setExposureEv(displayEv);
+
     const auto writeStart = std::chrono::steady_clock::now();
     writeImage(image, out, format, display.get());
     const double writeMs = millisecondsSince(writeStart);
@@ -311,7 +327,13 @@ int runRender(const RenderOptions& options) {
              {"time", formatTime(state.timeHours)},
              {"camera", {{"eye", toJson(eye)}, {"target", toJson(target)}, {"fov_deg", options.fovDeg}}},
              {"precision", options.floatTarget ? "float" : "half"},
-             {"exposure_ev", format == Format::Png ? Json(exposureEv) : Json(nullptr)},
+             {"exposure",
+              {{"mode", exposure.mode == ExposureMode::Manual ? "manual" : "automatic"},
+               {"average_luminance", averageLuminance},
+               {"ev100", ev100},
+               {"compensation_ev", exposure.compensationEv},
+               {"exposure_ev", format == Format::Png ? Json(exposureEv) : Json(nullptr)},
+               {"display_ev", format == Format::Png ? Json(displayEv) : Json(nullptr)}}},
              {"display", display ? Json(display->display()) : Json(nullptr)},
              {"view", display ? Json(display->view()) : Json(nullptr)},
              {"ocio_config", display ? Json(display->configSource()) : Json(nullptr)},
@@ -364,9 +386,9 @@ Command addRenderCommand(CLI::App& parent) {
     app->add_option("--display", options->display,
                     "PNG only: OpenColorIO display (default: the config's default, \"sRGB - Display\")")
         ->type_name("NAME");
-    app->add_option(
-           "--view", options->view,
-           "PNG only: OpenColorIO view, e.g. \"Un-tone-mapped\" (default) or \"ACES 1.0 - SDR Video\"")
+    app->add_option("--view", options->view,
+                    "PNG only: OpenColorIO view, e.g. \"ACES 1.0 - SDR Video\" (default, tone-mapped) or "
+                    "\"Un-tone-mapped\"")
         ->type_name("NAME");
     app->add_flag("--float", options->floatTarget,
                   "Render into RGBA32F instead of RGBA16F (the EXR is half float either way)");

@@ -434,9 +434,12 @@ void Editor::layout() {
 
 void Editor::drawStatusBar() {
     const double elevationDeg = sky_.state.sunLight.body.elevation * 180.0 / kPi;
-    ImGui::Text("%s   sun %+.1f deg   frame %.1f ms   render %dx%d   sky solve %.2f ms",
+    const ExposureParams& exposure = sky_.state.environment.exposure;
+    ImGui::Text("%s   sun %+.1f deg   EV100 %.1f %s%+.1f   frame %.1f ms   render %dx%d   sky solve %.2f ms",
                 aerial::formatClock(playback_.timeHours, ClockResolution::Minutes).c_str(), elevationDeg,
-                frames_.workMs, view_.renderWidth, view_.renderHeight, sky_.solveMs);
+                view_.exposure.ev100(), exposure.mode == ExposureMode::Manual ? "manual " : "auto ",
+                exposure.compensationEv + view_.exposureEv, frames_.workMs, view_.renderWidth,
+                view_.renderHeight, sky_.solveMs);
     if (export_.running()) {
         ImGui::SameLine();
         ImGui::SetNextItemWidth(160.0f);

@@ -105,6 +105,10 @@ private:
     // --- editor_viewport.cpp -------------------------------------------------
     void drawViewport();
     void renderViewport();
+    /// Meters the frame just rendered for the preset's exposure.
+    void meterViewport();
+    /// The rendered frame through the display transform at the viewport's exposure.
+    void showViewport(int width, int height);
     void ensureDisplayTexture(int width, int height);
     void viewportInteraction(bool hovered, glm::dvec2 mouse, glm::dvec2 origin);
     bool gizmoTransformOfSelection(GizmoTransform& out) const;

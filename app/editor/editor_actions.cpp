@@ -144,13 +144,11 @@ void Editor::declareActions() {
             }
         ImGui::EndMenu();
     });
-    t.add("exposure", "Exposure [EV]", "View").drawsMenu([this](const char* label) {
+    t.add("exposure", "Exposure offset [EV]", "View").drawsMenu([this](const char* label) {
+        // On top of the preset's exposure (Environment > Exposure), for this view only.
         float ev = float(view_.exposureEv);
         ImGui::SetNextItemWidth(140.0f);
-        if (ImGui::SliderFloat(label, &ev, -10.0f, 10.0f, "%.2f")) {
-            view_.exposureEv = ev;
-            if (view_.display) view_.display->setExposureEv(ev);
-        }
+        if (ImGui::SliderFloat(label, &ev, -10.0f, 10.0f, "%+.2f")) view_.exposureEv = ev;
     });
     t.add("resolution_scale_menu", "Resolution scale", "View").drawsMenu([this](const char* label) {
         if (!ImGui::BeginMenu(label)) return;

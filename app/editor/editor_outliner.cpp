@@ -134,8 +134,9 @@ namespace {
 
 void updateSkyPreview(SkyPreview& preview, const SkyService& sky, const ViewportState& view, int frameIndex) {
     char settings[160];
-    std::snprintf(settings, sizeof settings, "%s|%s|%.6f", view.displayName.c_str(), view.viewName.c_str(),
-                  view.exposureEv);
+    // The viewport's exposure (the preset's, adapting, plus the offset), to 0.1 EV.
+    std::snprintf(settings, sizeof settings, "%s|%s|%.1f", view.displayName.c_str(), view.viewName.c_str(),
+                  view.display ? view.display->exposureEv() : 0.0);
     if (preview.texture && preview.generation == sky.generation && preview.settings == settings) return;
     // While scrubbing, refresh every 4th frame: the preview is small and the viewport matters more.
     if (preview.texture && preview.settings == settings && (frameIndex % 4) != 0) return;

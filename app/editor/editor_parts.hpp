@@ -22,6 +22,7 @@
 #include "file_dialog.hpp"
 #include "preset_edit.hpp"
 #include "script.hpp"
+#include "view_exposure.hpp"
 #include "viewport/camera_controller.hpp"
 #include "viewport/gizmo.hpp"
 
@@ -121,7 +122,9 @@ struct ViewportState {
     std::unique_ptr<renderer::Renderer> renderer;
     std::unique_ptr<renderer::DisplayTransform> display;
     std::string displayName, viewName;  ///< the OCIO display and view asked for
-    double exposureEv = 0.0;
+    double exposureEv = 0.0;            ///< View > Exposure offset [EV], on top of the preset's
+    ViewExposure exposure;              ///< the preset's exposure, metered and adapting
+    std::chrono::steady_clock::time_point lastExposureStep{};
     double resolutionScale = 0.5;
     bool showHelpers = true;
     bool showGrid = false;

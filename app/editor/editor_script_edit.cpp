@@ -402,14 +402,14 @@ void Editor::declareEditScriptCommands() {
                    }
                    return true;
                }});
-    table.add({"exposure", 1, 1, "exposure EV", "the display exposure", [this](W w, E error) {
+    table.add({"exposure", 1, 1, "exposure EV", "the view's exposure offset, on top of the preset's",
+               [this](W w, E error) {
                    double ev;
                    if (!toNumber(w[1], ev)) {
                        error = "exposure: \"" + w[1] + "\" is not a number";
                        return false;
                    }
-                   view_.exposureEv = ev;
-                   view_.display->setExposureEv(ev);
+                   view_.exposureEv = ev;  // the next frame shows it (it is in the frame's signature)
                    return true;
                }});
     table.add({"resolution_scale", 1, 1, "resolution_scale S", "the viewport's resolution scale (0.1 .. 1)",

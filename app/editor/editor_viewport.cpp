@@ -33,7 +33,7 @@ void Editor::rebuildDisplay() {
     renderer::DisplayDesc desc;
     desc.display = view_.displayName;
     desc.view = view_.viewName;
-    desc.exposureEv = view_.exposureEv;
+    desc.exposureEv = view_.exposure.displayEv(sky_.state.environment.exposure, view_.exposureEv);
     desc.logger = {[](renderer::LogLevel level, const char* message, void*) {
                        if (level >= renderer::LogLevel::Warning)
                            std::fprintf(stderr, "aerial-editor: display: %s\n", message);
@@ -82,9 +82,18 @@ void Editor::renderViewport() {
                   view_.passes.transparent, view_.passes.particles, view_.showStars,
                   view_.displayName.c_str(), view_.viewName.c_str(), view_.exposureEv,
                   static_cast<const void*>(view_.display.get()));
+    const auto now = std::chrono::steady_clock::now();
+    const double dt = view_.lastExposureStep.time_since_epoch().count() == 0
+                          ? 0.0
+                          : std::chrono::duration<double>(now - view_.lastExposureStep).count();
+    view_.lastExposureStep = now;
+    const ExposureParams& exposure = sky_.state.environment.exposure;
     if (view_.displayTexture && view_.renderWidth == width && view_.renderHeight == height &&
-        view_.lastRenderSignature == signature && options_.benchFrames == 0)
+        view_.lastRenderSignature == signature && options_.benchFrames == 0) {
+        // The same frame; only an adapting exposure shows it again.
+        if (view_.exposure.adapt(exposure, dt)) showViewport(width, height);
         return;
+    }
     view_.lastRenderSignature = signature;
     renderer::FrameDesc frame;
     frame.width = width;
@@ -97,12 +106,30 @@ void Editor::renderViewport() {
     view_.renderer->render(view_.camera.camera(view_.size.x / view_.size.y), sky_.state, frame);
     if (timed && view_.renderer->stats().timed)
         frames_.benchPasses.push_back(view_.renderer->stats().wallMilliseconds);
-    ensureDisplayTexture(width, height);
-    view_.display->applyGpu(view_.renderer->colourTexture(), view_.displayTexture, width, height);
+    meterViewport();
+    view_.exposure.adapt(exposure, dt);
+    showViewport(width, height);
     view_.renderWidth = width;
     view_.renderHeight = height;
     view_.renderMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+void Editor::meterViewport() {
+    const ExposureParams& exposure = sky_.state.environment.exposure;
+    double average = 0.0;
+    if (exposure.mode == ExposureMode::Automatic) {
+        // Every 4th pixel is plenty for a 64-bin histogram.
+        const renderer::Image image = view_.renderer->readColour();
+        average = meterAverageLuminance(image.pixels, image.channels, 4);
+    }
+    view_.exposure.meter(exposure, average);
+}
+
+void Editor::showViewport(int width, int height) {
+    view_.display->setExposureEv(view_.exposure.displayEv(sky_.state.environment.exposure, view_.exposureEv));
+    ensureDisplayTexture(width, height);
+    view_.display->applyGpu(view_.renderer->colourTexture(), view_.displayTexture, width, height);
 }
 
 void Editor::drawViewport() {
@@ -347,6 +374,12 @@ bool Editor::screenshot(const std::string& path, std::string& error) {
     view_.renderer->render(view_.camera.camera(double(width) / double(height)), sky_.state, frame);
     const renderer::Image image = view_.renderer->readColour();
     view_.renderWidth = 0;  // the next frame renders the scaled view again
+    // The settled exposure of this frame (what the viewport adapts to).
+    const ExposureParams& exposure = sky_.state.environment.exposure;
+    ViewExposure settled;
+    settled.meter(exposure, meterAverageLuminance(image.pixels, image.channels));
+    settled.settle();
+    view_.display->setExposureEv(settled.displayEv(exposure, view_.exposureEv));
     const bool ok = extension == ".exr" ? renderer::writeExr(image, path, error)
                                         : renderer::writePng(image, path, *view_.display, error);
     return ok;

@@ -94,4 +94,29 @@ double LuminanceHistogram::averageLuminance(double lowFraction, double highFract
     return sumWeight > 0.0 ? std::exp2(sumLog / sumWeight) : std::exp2(minLog2_);
 }
 
+double meterAverageLuminance(std::span<const float> pixels, int channels, std::size_t step) {
+    LuminanceHistogram histogram;
+    if (channels >= 3) {
+        const std::size_t stride = std::size_t(channels) * std::max<std::size_t>(step, 1);
+        for (std::size_t i = 0; i + 2 < pixels.size(); i += stride) {
+            histogram.add(luminance({pixels[i], pixels[i + 1], pixels[i + 2]}) * kNitsPerRadianceUnit);
+        }
+    }
+    return histogram.averageLuminance(kMeterLowFraction, kMeterHighFraction) / kNitsPerRadianceUnit;
+}
+
+double targetEv100(const ExposureParams& p, double averageLuminance) {
+    if (p.mode == ExposureMode::Manual) return std::isfinite(p.ev100) ? p.ev100 : 0.0;
+    const double metered = ev100FromAverageLuminance(averageLuminance * kNitsPerRadianceUnit);
+    double lo = std::isfinite(p.minEv100) ? p.minEv100 : -60.0;
+    double hi = std::isfinite(p.maxEv100) ? p.maxEv100 : 60.0;
+    if (lo > hi) std::swap(lo, hi);
+    return std::clamp(metered, lo, hi);
+}
+
+double radianceScale(const ExposureParams& p, double ev100) {
+    const double compensation = std::isfinite(p.compensationEv) ? p.compensationEv : 0.0;
+    return kNitsPerRadianceUnit * exposureScale(ev100 - compensation);
+}
+
 }  // namespace aerial

@@ -20,6 +20,7 @@ constexpr std::array<sv, 3> kColourModeNames = {"sky", "tinted", "custom"};
 constexpr std::array<sv, 2> kShapeNames = {"box", "ellipsoid"};
 constexpr std::array<sv, 2> kEmitterKindNames = {"point", "lightning"};
 constexpr std::array<sv, 3> kInterpolationNames = {"step", "linear", "smooth"};
+constexpr std::array<sv, 2> kExposureModeNames = {"manual", "automatic"};
 
 struct Range {
     double min, max, uiMin, uiMax;
@@ -230,6 +231,42 @@ const std::vector<ParamDesc>& globalTable() {
             true, [](void* o) { return &env(o).fogColour; },
             "Fog tint (tinted) or in-scattered radiance (custom), scene-linear Rec.709, "
             "0..1e5 per channel. Default white."),
+        // Exposure (exposure.hpp).
+        enumeration(
+            G, "exposure.mode", "Exposure mode", kExposureModeNames, 1,
+            [](const void* o) { return std::int64_t(static_cast<const Environment*>(o)->exposure.mode); },
+            [](void* o, std::int64_t v) { env(o).exposure.mode = ExposureMode(v); },
+            "manual: the EV100 below; automatic: metered from each frame (the 10-90 % band of its "
+            "luminance), clamped to min..max EV100 and adapting over time. Default automatic."),
+        scalar(
+            G, "exposure.ev100", "EV100 (manual)", "EV", {-10, 25, -6, 20}, 15.0, false, true,
+            [](void* o) { return &env(o).exposure.ev100; },
+            "Manual exposure value at ISO 100 [EV], -10..25: 15 a sunny noon, 11 an overcast day, "
+            "5 a lit street at night, -2 moonlight. Default 15."),
+        scalar(
+            G, "exposure.compensation_ev", "Exposure compensation", "EV", {-10, 10, -5, 5}, 0.0, false, true,
+            [](void* o) { return &env(o).exposure.compensationEv; },
+            "Added to the exposure [EV], -10..10, in both modes; positive is brighter. Key it to set "
+            "how dusk and night read. Default 0."),
+        scalar(
+            G, "exposure.min_ev100", "Minimum EV100", "EV", {-10, 25, -10, 20}, -4.0, false, true,
+            [](void* o) { return &env(o).exposure.minEv100; },
+            "Automatic: the darkest scene exposed to middle grey [EV100], -10..25; darker scenes read "
+            "dark (night stays night). Default -4."),
+        scalar(
+            G, "exposure.max_ev100", "Maximum EV100", "EV", {-10, 25, 0, 25}, 17.0, false, true,
+            [](void* o) { return &env(o).exposure.maxEv100; },
+            "Automatic: the brightest scene exposed to middle grey [EV100], -10..25. Default 17."),
+        scalar(
+            G, "exposure.adapt_up_per_s", "Adaptation to brighter", "1/s", {0, 100, 0.1, 20}, 3.0, true,
+            false, [](void* o) { return &env(o).exposure.adaptUpPerSecond; },
+            "Automatic: how fast the exposure follows a brighter scene [1/s], 0..100 (the fraction "
+            "1 - exp(-speed dt) of the gap closes in dt seconds; 0 jumps at once). Default 3."),
+        scalar(
+            G, "exposure.adapt_down_per_s", "Adaptation to darker", "1/s", {0, 100, 0.1, 20}, 1.0, true,
+            false, [](void* o) { return &env(o).exposure.adaptDownPerSecond; },
+            "Automatic: how fast the exposure follows a darker scene [1/s], 0..100 (0 jumps at once). "
+            "Default 1."),
     };
     return table;
 }

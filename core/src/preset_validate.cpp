@@ -190,6 +190,11 @@ void validateInto(const Preset& constPreset, Issues& issues) {
                          "Mie extinction " + formatDouble(air.mieExtinction[c]) +
                              " must be >= Mie scattering " + formatDouble(air.mieScattering[c]));
     }
+    const ExposureParams& exposure = preset.environment.exposure;
+    if (exposure.minEv100 > exposure.maxEv100)
+        issues.error("/exposure/min_ev100", "minimum EV100 " + formatDouble(exposure.minEv100) +
+                                                " must be <= maximum EV100 " +
+                                                formatDouble(exposure.maxEv100));
     checkObjects(preset.volumes, ParamScope::Volume, "volumes", issues);
     checkObjects(preset.emitters, ParamScope::Emitter, "emitters", issues);
 

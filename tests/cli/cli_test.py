@@ -314,7 +314,7 @@ class Eval(unittest.TestCase):
         with open(preset("foggy_valley_morning")) as f:
             document = json.load(f)
         state = run_json(self, "eval", preset("foggy_valley_morning"), "--time", "06:00")
-        globals_in_file = leaf_paths({k: document[k] for k in ("location", "atmosphere", "sun", "moon", "fog")})
+        globals_in_file = leaf_paths({k: document[k] for k in ("location", "atmosphere", "sun", "moon", "fog", "exposure")})
         self.assertEqual(leaf_paths(state["parameters"]), globals_in_file)
         self.assertEqual([v["id"] for v in state["volumes"]], [v["id"] for v in document["volumes"]])
         for volume, in_file in zip(state["volumes"], document["volumes"]):
@@ -578,7 +578,15 @@ class Render(unittest.TestCase):
                      "--out", out)
         self.assertEqual((r["file"], r["format"], r["width"], r["height"]), (out, "exr", 64, 36))
         self.assertEqual(r["time"], "07:00")
-        self.assertIsNone(r["exposure_ev"])
+        self.assertIsNone(r["exposure"]["exposure_ev"])  # the EXR holds radiance
+        self.assertIsNone(r["exposure"]["display_ev"])
+        self.assertEqual(r["exposure"]["mode"], "automatic")
+        # Automatic: the metered EV100 of the frame, inside the preset's range.
+        with open(preset("foggy_valley_morning")) as f:
+            limits = json.load(f)["exposure"]
+        meter = math.log2(r["exposure"]["average_luminance"] * 5000.0 * 100.0 / 12.5)
+        self.assertAlmostEqual(r["exposure"]["ev100"], min(max(meter, limits["min_ev100"]), limits["max_ev100"]),
+                               delta=1e-9)
         for key in ("solve_ms", "render_ms"):
             self.assertGreaterEqual(r[key], 0.0)
         with open(out, "rb") as f:
@@ -611,17 +619,17 @@ class Render(unittest.TestCase):
         out = os.path.join(self.dir, "default.png")
         r = run_json(self, "render", "default", "--size", "16x9", "--exposure", "-1", "--out", out)
         self.assertEqual(r["preset"]["file"], "<built-in default>")
-        self.assertEqual((r["time"], r["exposure_ev"]), ("12:00", -1.0))
+        self.assertEqual((r["time"], r["exposure"]["exposure_ev"]), ("12:00", -1.0))
         self.assertEqual(read_png(out)[:2], (16, 9))
 
     def test_png_views_through_opencolorio(self):
         plain = os.path.join(self.dir, "plain.png")
         aces = os.path.join(self.dir, "aces.png")
-        r = run_json(self, "render", "default", "--size", "16x9", "--out", plain)
+        r = run_json(self, "render", "default", "--size", "16x9", "--view", "Un-tone-mapped", "--out", plain)
+        self.assertEqual(r["view"], "Un-tone-mapped")
+        r = run_json(self, "render", "default", "--size", "16x9", "--out", aces)
         self.assertEqual((r["display"], r["view"], r["ocio_config"]),
-                         ("sRGB - Display", "Un-tone-mapped", "built-in"))
-        r = run_json(self, "render", "default", "--size", "16x9", "--view", "ACES 1.0 - SDR Video", "--out", aces)
-        self.assertEqual(r["view"], "ACES 1.0 - SDR Video")
+                         ("sRGB - Display", "ACES 1.0 - SDR Video", "built-in"))
         self.assertNotEqual(read_png(plain)[4], read_png(aces)[4], "the tone-mapped view changed nothing")
         # A broken $OCIO: a warning, and the built-in config.
         env = dict(os.environ, OCIO=os.path.join(WORK, "no_such_config.ocio"))

@@ -1,7 +1,9 @@
 // test_exposure.cpp — physical-camera exposure (aerial/exposure.hpp) against
 // closed forms: the meter equation, the saturation scale, the exact
 // exponential adaptation, and histogram averages against the sorted pixels.
+#include <aerial/evaluate.hpp>
 #include <aerial/exposure.hpp>
+#include <aerial/preset.hpp>
 
 #include <gtest/gtest.h>
 
@@ -87,6 +89,69 @@ TEST(Exposure, HistogramAverageMatchesTheSortedPixels) {
     EXPECT_EQ(junk.totalWeight(), 3.0);
     EXPECT_TRUE(std::isfinite(junk.averageLuminance(std::nan(""), 2.0)));
     EXPECT_TRUE(std::isfinite(junk.averageLuminance(0.7, 0.2)));
+}
+
+TEST(Exposure, PresetExposureMetersTheFrameInCandelas) {
+    // A frame of two luminances [radiance units]: 80 % at 0.2, 20 % at 4
+    // (a lamp). The 10-90 % band holds 0.2 with weight 0.7 and 4 with weight
+    // 0.1; bins are half a stop, so within a quarter stop of the geometric
+    // mean of the band. (The histogram ends at 2^16 cd/m^2 = 13 units.)
+    std::vector<float> rgba;
+    for (int i = 0; i < 1000; ++i) {
+        const float v = i % 5 == 0 ? 4.0f : 0.2f;
+        rgba.insert(rgba.end(), {v, v, v, 1.0f});
+    }
+    const double band = (0.7 * std::log2(0.2 * 5000.0) + 0.1 * std::log2(4.0 * 5000.0)) / 0.8;
+    const double average = aerial::meterAverageLuminance(rgba, 4);
+    EXPECT_NEAR(std::log2(average * aerial::kNitsPerRadianceUnit), band, 0.25);
+    // Every 5th pixel sees only the lamp: step samples whole pixels.
+    EXPECT_NEAR(std::log2(aerial::meterAverageLuminance(rgba, 4, 5)), 2.0, 0.25);
+    EXPECT_TRUE(std::isfinite(aerial::meterAverageLuminance({}, 4)));
+    EXPECT_TRUE(std::isfinite(aerial::meterAverageLuminance(rgba, 2)));  // not RGB: empty
+
+    aerial::ExposureParams p;  // automatic, -4..17
+    const double metered = std::log2(average * 5000.0 * 100.0 / 12.5);
+    EXPECT_NEAR(aerial::targetEv100(p, average), metered, 1e-12);
+    EXPECT_EQ(aerial::targetEv100(p, 1e-12), -4.0);  // night stays night
+    EXPECT_EQ(aerial::targetEv100(p, 1e6), 17.0);
+    p.mode = aerial::ExposureMode::Manual;
+    p.ev100 = 11.0;
+    EXPECT_EQ(aerial::targetEv100(p, average), 11.0);
+    // The scale: 5000 cd/m^2 per unit over 1.2 x 2^(EV - compensation).
+    p.compensationEv = 2.0;
+    EXPECT_NEAR(aerial::radianceScale(p, 11.0), 5000.0 / (1.2 * std::exp2(9.0)), 1e-12);
+}
+
+TEST(Exposure, ThePresetBlockLoadsValidatesAndKeysTheCompensation) {
+    const char* text = R"({"version": 1, "name": "x",
+        "exposure": {"mode": "manual", "ev100": 12.5, "compensation_ev": -1, "min_ev100": -2, "max_ev100": 16},
+        "tracks": [{"param": "exposure.compensation_ev", "interpolation": "linear",
+                    "keys": [{"time_h": 6, "value": 0}, {"time_h": 18, "value": 2}]}]})";
+    const aerial::PresetLoadResult r = aerial::parsePreset(text, "x.json");
+    ASSERT_TRUE(r.ok()) << (r.errors.empty() ? "" : r.errors[0].toString());
+    const aerial::ExposureParams& e = r.preset->environment.exposure;
+    EXPECT_EQ(e.mode, aerial::ExposureMode::Manual);
+    EXPECT_EQ(e.ev100, 12.5);
+    EXPECT_EQ(e.minEv100, -2.0);
+    EXPECT_EQ(e.adaptUpPerSecond, 3.0);  // the default
+    // Keyed: linear between 06:00 (0) and 18:00 (2).
+    const aerial::CompiledPreset compiled(*r.preset);
+    EXPECT_NEAR(compiled.evaluate(9.0).environment.exposure.compensationEv, 0.5, 1e-12);
+    // A file without the block gets the defaults; min above max is an error.
+    EXPECT_EQ(aerial::parsePreset(R"({"version": 1, "name": "x"})").preset->environment.exposure.mode,
+              aerial::ExposureMode::Automatic);
+    const aerial::PresetLoadResult bad = aerial::parsePreset(
+        R"({"version": 1, "name": "x", "exposure": {"min_ev100": 9, "max_ev100": 3}})", "b.json");
+    ASSERT_FALSE(bad.ok());
+    EXPECT_NE(
+        bad.errors[0].toString().find("/exposure/min_ev100: minimum EV100 9 must be <= maximum EV100 3"),
+        std::string::npos)
+        << bad.errors[0].toString();
+    const aerial::PresetLoadResult mode =
+        aerial::parsePreset(R"({"version": 1, "name": "x", "exposure": {"mode": "auto"}})", "m.json");
+    ASSERT_FALSE(mode.ok());
+    EXPECT_NE(mode.errors[0].toString().find("/exposure/mode"), std::string::npos)
+        << mode.errors[0].toString();
 }
 
 }  // namespace

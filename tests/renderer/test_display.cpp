@@ -122,7 +122,7 @@ TEST(Display, BuiltinConfigHasTheViews) {
     EXPECT_EQ(display.configSource(), "built-in");
     EXPECT_FALSE(display.fellBack());
     EXPECT_EQ(display.display(), "sRGB - Display");
-    EXPECT_EQ(display.view(), kUntoneMapped);
+    EXPECT_EQ(display.view(), kAces);  // the default: tone-mapped, as a game shows it
     const std::vector<std::string> views = display.views();
     EXPECT_NE(std::find(views.begin(), views.end(), kUntoneMapped), views.end());
     EXPECT_NE(std::find(views.begin(), views.end(), kAces), views.end());

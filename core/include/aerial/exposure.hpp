@@ -2,7 +2,14 @@
 // physical-camera formulas of Unreal's and HDRP's auto exposure, for a game
 // that wants the EV the editor shows.
 //
-// Usage:
+// Usage (a game, with the preset's exposure block, state.environment.exposure):
+//   const aerial::ExposureParams& p = state.environment.exposure;
+//   double average = aerial::meterAverageLuminance(pixels, 4);   // RGBA radiance, once a frame
+//   double target = aerial::targetEv100(p, average);              // manual: p.ev100
+//   ev = aerial::adaptEv100(ev, target, dt, p.adaptUpPerSecond, p.adaptDownPerSecond);
+//   float scale = float(aerial::radianceScale(p, ev));            // radiance -> display-linear
+//
+// The parts, for a game with its own meter:
 //   aerial::LuminanceHistogram histogram;                 // log2 L in [-16, 16]
 //   for (const glm::dvec3& rgb : framePixels) histogram.add(aerial::luminance(rgb));
 //   double target = aerial::ev100FromAverageLuminance(histogram.averageLuminance(0.10, 0.90));
@@ -24,7 +31,13 @@
 //   * the average of a frame is taken in log2 luminance over a histogram,
 //     between two percentiles (Unreal: 10 % and 90 %), so a small bright sun
 //     or a dark corner does not swing the exposure.
-// Luminance is in the scene's radiance unit; a positive compensation
+// Units: the physical formulas take luminance in cd/m^2. Aerial's radiance
+// unit is kNitsPerRadianceUnit cd/m^2: the default sun intensity 20 lights
+// the ground like the ~100 000 lx of a clear noon, so one unit of
+// illuminance is ~5000 lx and one of radiance ~5000 cd/m^2; EV100 values
+// then read as on a real camera (a sunny noon ~15, a lit street at night ~5).
+// The functions on ExposureParams take radiance units; the others cd/m^2.
+// A positive compensation
 // brightens the picture (subtract it from EV100). Nothing here returns NaN or
 // Inf: non-finite or non-positive luminances count as the darkest bin.
 #pragma once
@@ -33,6 +46,7 @@
 
 #include <array>
 #include <cstddef>
+#include <span>
 
 namespace aerial {
 
@@ -81,5 +95,54 @@ private:
     std::array<double, kBins> bins_{};
     double total_ = 0.0;
 };
+
+/// cd/m^2 per unit of Aerial's radiance (see "Units" above).
+inline constexpr double kNitsPerRadianceUnit = 5000.0;
+
+/// How a preset chooses its exposure.
+enum class ExposureMode {
+    Manual,     ///< ExposureParams::ev100, keyed over the day if wanted
+    Automatic,  ///< metered from each frame, clamped, adapting over time
+};
+
+/// The preset's "exposure" block (parameter table: "exposure.*").
+struct ExposureParams {
+    ExposureMode mode = ExposureMode::Automatic;
+    /// Manual EV100 [EV]; -10..25. Default 15 (a sunny noon).
+    double ev100 = 15.0;
+    /// Compensation [EV], -10..10, added to the exposure (positive is
+    /// brighter) in both modes; key it to set how dusk and night read.
+    double compensationEv = 0.0;
+    /// Automatic range [EV100]: the meter's EV is clamped to it, so a
+    /// starlit night does not become grey day. Default -4..17.
+    double minEv100 = -4.0;
+    double maxEv100 = 17.0;
+    /// Automatic adaptation speeds [1/s]: the fraction 1 - exp(-speed dt)
+    /// of the gap closes in dt seconds; up when the scene gets brighter.
+    double adaptUpPerSecond = 3.0;
+    double adaptDownPerSecond = 1.0;
+};
+
+/// The band of the metering histogram that counts (Unreal's defaults).
+inline constexpr double kMeterLowFraction = 0.10;
+inline constexpr double kMeterHighFraction = 0.90;
+
+/// The average luminance [radiance units] of a frame as the automatic
+/// exposure meters it: luminance() of every `step`-th pixel (of `channels`
+/// floats, RGB first) into a LuminanceHistogram of log2 cd/m^2 over
+/// [-16, 16], averaged between kMeterLowFraction and kMeterHighFraction.
+/// Non-finite pixels count as black; an empty frame gives 2^-16 cd/m^2.
+double meterAverageLuminance(std::span<const float> pixels, int channels, std::size_t step = 1);
+
+/// The EV100 the exposure asks for, before adaptation and compensation:
+/// Manual, p.ev100; Automatic, ev100FromAverageLuminance of the average
+/// [radiance units] in cd/m^2, clamped to [minEv100, maxEv100].
+double targetEv100(const ExposureParams& p, double averageLuminance);
+
+/// What multiplies radiance [units] to give the display transform's
+/// scene-linear input, at this EV100 with the preset's compensation:
+/// kNitsPerRadianceUnit * exposureScale(ev100 - compensationEv). The
+/// metered average lands on 0.104, just under middle grey.
+double radianceScale(const ExposureParams& p, double ev100);
 
 }  // namespace aerial

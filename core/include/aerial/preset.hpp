@@ -14,7 +14,7 @@
 // File format (../shared/DESIGN.md, "Presets"): a JSON object with
 // "version": 1, "name", "description", the global parameters grouped as
 // "location", "atmosphere" {"rayleigh", "mie", "ozone"}, "sun", "moon",
-// "fog", then "volumes" and "emitters" (arrays of objects with string "id"s)
+// "fog", "exposure", then "volumes" and "emitters" (arrays of objects with string "id"s)
 // and "tracks" (see timeline.hpp). Every key that carries a unit says it
 // (`scale_height_m`, `density_per_m`). The keys, ranges and defaults come
 // from the parameter table (param_table.hpp); the JSON Schema in
@@ -46,6 +46,7 @@
 
 #include <aerial/atmosphere.hpp>
 #include <aerial/emitter.hpp>
+#include <aerial/exposure.hpp>
 #include <aerial/fog_volume.hpp>
 #include <aerial/height_fog.hpp>
 #include <aerial/sun.hpp>
@@ -101,6 +102,9 @@ struct Environment {
     FogColourMode fogColourMode = FogColourMode::Sky;
     /// Global fog tint or radiance (see fogColourMode), scene-linear Rec.709.
     glm::dvec3 fogColour{1.0, 1.0, 1.0};
+    /// How radiance becomes a picture: manual or automatic EV100 and a
+    /// compensation keyed over the day (aerial/exposure.hpp).
+    ExposureParams exposure;
 };
 
 /// A whole preset: what a file holds, what the editor edits.

@@ -5,9 +5,10 @@
 // The config is, in order: DisplayDesc::config when not empty, else the file
 // named by $OCIO when set, else Aerial's built-in config
 // (renderer/ocio/config.ocio, embedded at build time; display "sRGB -
-// Display", views "Un-tone-mapped", "ACES 1.0 - SDR Video" and "Raw"). A
-// config that fails to load falls back to the built-in one with a warning
-// through the logger (DisplayTransform::fellBack()).
+// Display", views "ACES 1.0 - SDR Video" (the default: a filmic tone map,
+// as a game shows it), "Un-tone-mapped" and "Raw"). A config that fails to
+// load falls back to the built-in one with a warning through the logger
+// (DisplayTransform::fellBack()).
 //
 // Exposure is in EV: the scene-linear colour is multiplied by 2^EV before
 // the view. Alpha passes through unchanged.
