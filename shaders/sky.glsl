@@ -113,10 +113,23 @@ vec3 starRadiance(vec3 v) {
     return sum * (illuminance / (kTwoPi * sigma * sigma)) * transmittance;
 }
 
+// Airglow (core's aerial/night_sky.hpp is the reference and documents the
+// model): kAirglowZenithRadiance times the van Rhijn factor of a shell 90 km
+// up, dimmed like the stars; faded in with them (frame.nightSky).
+const vec3 kAirglowZenithRadiance = vec3(2.6e-5, 3.5e-5, 4.2e-5);
+const float kAirglowShell = 6360000.0 / (6360000.0 + 90000.0);  // Rg / (Rg + h)
+
+vec3 airglowRadiance(vec3 v) {
+    if (!(frame.nightSky > 0.0) || v.y <= 0.0) return vec3(0.0);
+    float vanRhijn = inversesqrt(1.0 - kAirglowShell * kAirglowShell * (1.0 - v.y * v.y));
+    vec3 transmittance = pow(frame.starTransmittance, vec3(airMass(v.y)));
+    return frame.nightSky * kAirglowZenithRadiance * vanRhijn * transmittance;
+}
+
 void main() {
     vec3 v = normalize(vFarRay);
     vec3 radiance = skyRadiance(v, true);
-    radiance += starRadiance(v);
+    radiance += starRadiance(v) + airglowRadiance(v);
     radiance += lightDisc(v, frame.sunDirection, frame.sunDiscChord, frame.sunIlluminance,
                           frame.sunDiscInverseSolidAngle);
     radiance += lightDisc(v, frame.moonDirection, frame.moonDiscChord, frame.moonIlluminance,

@@ -6,6 +6,7 @@
 
 #include <aerial/evaluate.hpp>
 #include <aerial/finite.hpp>
+#include <aerial/night_sky.hpp>
 #include <aerial/sky.hpp>
 #include <aerial/sun.hpp>
 
@@ -109,7 +110,11 @@ FrameBlock makeFrameBlock(const Camera& camera, const CameraFrame& view, const P
                                       : glm::dvec3(0.0)) +
         (in.moon.valid && in.moon.table ? skyIrradiance(*in.moon.table, g, colourOf(moon.illuminanceSpace))
                                         : glm::dvec3(0.0));
-    fb.skyAmbient = toVec3(colourOf(ambient));
+    // The night sky (stars and airglow) fades in as the sun sets.
+    const double nightSky = frame.stars ? starVisibility(sun.body.elevation) : 0.0;
+    const glm::dvec3 airglow =
+        nightSky > 0.0 ? nightSky * airglowIrradiance(state.zenithTransmittance) : glm::dvec3(0.0);
+    fb.skyAmbient = toVec3(colourOf(ambient + airglow));
 
     // Without the global fog pass, the transparent meshes and particles get
     // no global fog either (they read the same density).
@@ -146,6 +151,7 @@ FrameBlock makeFrameBlock(const Camera& camera, const CameraFrame& view, const P
     const double starSigma = std::min(0.6 * fov / double(h), kStarMaxSigma);
     fb.starAxisX = toVec3(unitOr(celestial.equatorX, {1.0, 0.0, 0.0}));
     fb.starIlluminance = static_cast<float>(starE);
+    fb.nightSky = static_cast<float>(starE > 0.0 ? nightSky : 0.0);
     fb.starAxisY = toVec3(unitOr(celestial.equatorY, {0.0, 0.0, 1.0}));
     fb.starSigma = static_cast<float>(starSigma);
     fb.starPole = toVec3(unitOr(celestial.pole, {0.0, 1.0, 0.0}));

@@ -42,7 +42,7 @@ struct FrameBlock {
     Vec3 moonDirection;
     float moonDiscChord = 0.0f;
     Vec3 moonIlluminanceSpace;
-    float padMoon = 0.0f;
+    float nightSky = 0.0f;  ///< stars and airglow, 0..1 (starVisibility; 0 with FrameDesc::stars off)
     Vec3 moonIlluminance;
     float moonDiscInverseSolidAngle = 0.0f;
     Vec3 sunHorizonRayleigh;

@@ -63,7 +63,7 @@ layout(std140, binding = 0) uniform FrameBlock {
     vec3 moonDirection;
     float moonDiscChord;
     vec3 moonIlluminanceSpace;
-    float padMoon;
+    float nightSky;
     vec3 moonIlluminance;
     float moonDiscInverseSolidAngle;
     vec3 sunHorizonRayleigh;

@@ -9,6 +9,7 @@
 #include "gpu_types.hpp"
 
 #include <aerial/evaluate.hpp>
+#include <aerial/night_sky.hpp>
 #include <aerial/renderer/renderer.hpp>
 #include <aerial/sun.hpp>
 
@@ -209,6 +210,14 @@ TEST(FrameBlock, StarsFollowTheSunAndTheSwitch) {
     dusk.sunLight.body.elevation = -4.0 * kPiD / 180.0;  // half way through the fade
     EXPECT_NEAR(blockFor(dusk, {}, inputs).starIlluminance, 0.5 * renderer::kStarIlluminance,
                 1e-6 * renderer::kStarIlluminance);
+    EXPECT_FLOAT_EQ(blockFor(dusk, {}, inputs).nightSky, 0.5f);
+
+    // The airglow lights the scene with the stars: its irradiance joins the
+    // sky ambient (no sky tables here, so the ambient is the airglow alone).
+    EXPECT_FLOAT_EQ(fb.nightSky, 1.0f);
+    expectNear3(fb.skyAmbient, airglowIrradiance(night.zenithTransmittance), 1e-10, "airglow ambient");
+    EXPECT_EQ(blockFor(night, off, inputs).nightSky, 0.0f);
+    expectNear3(blockFor(night, off, inputs).skyAmbient, glm::dvec3(0.0), 0.0, "no night sky, no airglow");
 }
 
 // --- std140 offsets: the GLSL blocks laid out by the rules, against offsetof.
@@ -300,6 +309,7 @@ TEST(FrameBlock, Std140OffsetsMatchTheGlslBlocks) {
                   AERIAL_OFFSET(FrameBlock, moonDirection),
                   AERIAL_OFFSET(FrameBlock, moonDiscChord),
                   AERIAL_OFFSET(FrameBlock, moonIlluminanceSpace),
+                  AERIAL_OFFSET(FrameBlock, nightSky),
                   AERIAL_OFFSET(FrameBlock, moonIlluminance),
                   AERIAL_OFFSET(FrameBlock, moonDiscInverseSolidAngle),
                   AERIAL_OFFSET(FrameBlock, sunHorizonRayleigh),

@@ -1,0 +1,69 @@
+// test_night_sky.cpp — airglow (aerial/night_sky.hpp) against closed forms
+// and an independent quadrature: the van Rhijn factor of a thin shell, the
+// Kasten-Young air mass, and the irradiance as a fine Simpson integral over
+// the elevation angle (not the library's midpoint rule in mu).
+#include <aerial/night_sky.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+TEST(NightSky, VanRhijnAndAirMassClosedForms) {
+    EXPECT_DOUBLE_EQ(aerial::airglowVanRhijn(1.0), 1.0);
+    const double r = 6360.0 / 6450.0;
+    EXPECT_NEAR(aerial::airglowVanRhijn(0.0), 1.0 / std::sqrt(1.0 - r * r), 1e-12);  // ~6 at the horizon
+    EXPECT_NEAR(aerial::airglowVanRhijn(0.5), 1.0 / std::sqrt(1.0 - r * r * 0.75), 1e-12);
+    EXPECT_NEAR(aerial::relativeAirMass(1.0), 1.0, 3e-4);
+    EXPECT_NEAR(aerial::relativeAirMass(0.5), 1.0 / (0.5 + 0.50572 * std::pow(96.07995 - 60.0, -1.6364)),
+                1e-9);
+    EXPECT_NEAR(aerial::relativeAirMass(0.0), 38.0, 0.2);  // Kasten-Young at the horizon
+}
+
+TEST(NightSky, RadianceFollowsTheModelAndIsZeroBelowTheHorizon) {
+    const glm::dvec3 t(0.7, 0.8, 0.9);
+    const glm::dvec3 zenith = aerial::airglowRadiance({0.0, 1.0, 0.0}, t);
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(zenith[c],
+                    aerial::kAirglowZenithRadiance[c] * std::pow(t[c], aerial::relativeAirMass(1.0)), 1e-18);
+    const glm::dvec3 low = aerial::airglowRadiance({0.0, 0.2, 0.9798}, t);  // not unit: normalised
+    const double mu = 0.2 / std::sqrt(0.04 + 0.9798 * 0.9798);
+    EXPECT_NEAR(low.y,
+                aerial::kAirglowZenithRadiance.y * aerial::airglowVanRhijn(mu) *
+                    std::pow(0.8, aerial::relativeAirMass(mu)),
+                1e-15);
+    EXPECT_EQ(aerial::airglowRadiance({0.0, -0.1, 1.0}, t), glm::dvec3(0.0));
+    EXPECT_EQ(aerial::airglowRadiance({std::nan(""), 1.0, 0.0}, t), glm::dvec3(0.0));
+    const double inf = std::numeric_limits<double>::infinity();
+    const glm::dvec3 junk = aerial::airglowRadiance({0.0, 1.0, 0.0}, {inf, -1.0, std::nan("")});
+    EXPECT_TRUE(std::isfinite(junk.x) && std::isfinite(junk.y) && std::isfinite(junk.z));
+}
+
+TEST(NightSky, IrradianceIsTheCosineWeightedIntegral) {
+    // Simpson's rule over the elevation e in [0, pi/2] with 20000 intervals:
+    // E = 2 pi integral L(sin e) sin e cos e de.
+    for (const glm::dvec3& t : {glm::dvec3(1.0), glm::dvec3(0.6, 0.75, 0.85)}) {
+        const int n = 20000;
+        glm::dvec3 sum(0.0);
+        for (int i = 0; i <= n; ++i) {
+            const double e = 0.5 * kPi * i / n;
+            const double w = (i == 0 || i == n) ? 1.0 : (i % 2 ? 4.0 : 2.0);
+            sum +=
+                w * aerial::airglowRadiance({std::cos(e), std::sin(e), 0.0}, t) * std::sin(e) * std::cos(e);
+        }
+        const glm::dvec3 reference = sum * (0.5 * kPi / n / 3.0) * (2.0 * kPi);
+        const glm::dvec3 e = aerial::airglowIrradiance(t);
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(e[c] / reference[c], 1.0, 1e-4) << c;
+        // Without extinction the shell is brighter than a uniform sky of the
+        // zenith radiance (pi L0) because of the van Rhijn factor.
+        if (t == glm::dvec3(1.0)) {
+            EXPECT_GT(e.y, kPi * aerial::kAirglowZenithRadiance.y);
+        }
+    }
+}
+
+}  // namespace
