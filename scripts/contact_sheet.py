@@ -1,0 +1,189 @@
+#!/usr/bin/env python3
+"""contact_sheet.py — every shipped preset at eight hours of the day, labelled,
+in one PNG: how an artist chooses a preset (by looking, not by reading JSON).
+
+Each cell is `aerial render PRESET --time T` of the built-in scene from the
+default camera, with the preset's own exposure (its "exposure" block) and the
+default (tone-mapped) view: exactly what `aerial render` shows. Pure Python
+(zlib only): reads the 8-bit PNGs aerial writes, writes one 8-bit RGB PNG.
+
+Usage:
+  scripts/contact_sheet.py --aerial build/release/app/aerial --out docs/contact_sheet.png
+  scripts/contact_sheet.py --aerial ... --cell 160x90 --hours 06:00,12:00 --presets clear_summer_day
+"""
+import argparse
+import concurrent.futures
+import glob
+import os
+import struct
+import subprocess
+import sys
+import tempfile
+import zlib
+
+HOURS = ["02:00", "05:30", "07:00", "09:30", "12:00", "16:00", "18:45", "21:30"]
+
+# A 5x7 bitmap font for the labels: each glyph is 7 rows of 5 bits.
+FONT = {
+    "a": "00000 00000 01110 00001 01111 10001 01111", "b": "10000 10000 11110 10001 10001 10001 11110",
+    "c": "00000 00000 01110 10000 10000 10001 01110", "d": "00001 00001 01111 10001 10001 10001 01111",
+    "e": "00000 00000 01110 10001 11111 10000 01110", "f": "00110 01001 01000 11100 01000 01000 01000",
+    "g": "00000 01111 10001 10001 01111 00001 01110", "h": "10000 10000 10110 11001 10001 10001 10001",
+    "i": "00100 00000 01100 00100 00100 00100 01110", "j": "00010 00000 00110 00010 00010 10010 01100",
+    "k": "10000 10000 10010 10100 11000 10100 10010", "l": "01100 00100 00100 00100 00100 00100 01110",
+    "m": "00000 00000 11010 10101 10101 10001 10001", "n": "00000 00000 10110 11001 10001 10001 10001",
+    "o": "00000 00000 01110 10001 10001 10001 01110", "p": "00000 00000 11110 10001 11110 10000 10000",
+    "q": "00000 00000 01111 10001 01111 00001 00001", "r": "00000 00000 10110 11001 10000 10000 10000",
+    "s": "00000 00000 01111 10000 01110 00001 11110", "t": "01000 01000 11100 01000 01000 01001 00110",
+    "u": "00000 00000 10001 10001 10001 10011 01101", "v": "00000 00000 10001 10001 10001 01010 00100",
+    "w": "00000 00000 10001 10001 10101 10101 01010", "x": "00000 00000 10001 01010 00100 01010 10001",
+    "y": "00000 00000 10001 10001 01111 00001 01110", "z": "00000 00000 11111 00010 00100 01000 11111",
+    "0": "01110 10001 10011 10101 11001 10001 01110", "1": "00100 01100 00100 00100 00100 00100 01110",
+    "2": "01110 10001 00001 00010 00100 01000 11111", "3": "11111 00010 00100 00010 00001 10001 01110",
+    "4": "00010 00110 01010 10010 11111 00010 00010", "5": "11111 10000 11110 00001 00001 10001 01110",
+    "6": "00110 01000 10000 11110 10001 10001 01110", "7": "11111 00001 00010 00100 01000 01000 01000",
+    "8": "01110 10001 10001 01110 10001 10001 01110", "9": "01110 10001 10001 01111 00001 00010 01100",
+    ":": "00000 01100 01100 00000 01100 01100 00000", ".": "00000 00000 00000 00000 00000 01100 01100",
+    "-": "00000 00000 00000 11111 00000 00000 00000", "_": "00000 00000 00000 00000 00000 00000 11111",
+    " ": "00000 00000 00000 00000 00000 00000 00000",
+}
+
+
+def read_png(path):
+    """8-bit RGB or RGBA, non-interlaced (what stb_image_write writes) -> (w, h, rgb bytes)."""
+    with open(path, "rb") as f:
+        data = f.read()
+    if data[:8] != b"\x89PNG\r\n\x1a\n":
+        sys.exit("contact_sheet: %s is not a PNG" % path)
+    pos, idat, width, height, channels = 8, b"", 0, 0, 0
+    while pos < len(data):
+        (length,) = struct.unpack(">I", data[pos:pos + 4])
+        kind, body = data[pos + 4:pos + 8], data[pos + 8:pos + 8 + length]
+        if kind == b"IHDR":
+            width, height, depth, ctype, _, _, interlace = struct.unpack(">IIBBBBB", body)
+            if depth != 8 or ctype not in (2, 6) or interlace:
+                sys.exit("contact_sheet: %s: only 8-bit RGB/RGBA, non-interlaced PNGs are read" % path)
+            channels = 3 if ctype == 2 else 4
+        elif kind == b"IDAT":
+            idat += body
+        pos += 12 + length
+    raw = zlib.decompress(idat)
+    stride = width * channels
+    out = bytearray(width * height * 3)
+    prev = bytearray(stride)
+    for y in range(height):
+        kind = raw[y * (stride + 1)]
+        line = bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
+        for i in range(stride):
+            a = line[i - channels] if i >= channels else 0
+            b = prev[i]
+            c = prev[i - channels] if i >= channels else 0
+            if kind == 1:
+                line[i] = (line[i] + a) & 255
+            elif kind == 2:
+                line[i] = (line[i] + b) & 255
+            elif kind == 3:
+                line[i] = (line[i] + (a + b) // 2) & 255
+            elif kind == 4:
+                p = a + b - c
+                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+        for x in range(width):
+            out[(y * width + x) * 3:(y * width + x) * 3 + 3] = line[x * channels:x * channels + 3]
+        prev = line
+    return width, height, out
+
+
+def write_png(path, width, height, rgb):
+    rows = b"".join(b"\x00" + bytes(rgb[y * width * 3:(y + 1) * width * 3]) for y in range(height))
+
+    def chunk(kind, body):
+        return struct.pack(">I", len(body)) + kind + body + struct.pack(">I", zlib.crc32(kind + body) & 0xFFFFFFFF)
+
+    data = (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0)) +
+            chunk(b"IDAT", zlib.compress(rows, 9)) + chunk(b"IEND", b""))
+    tmp = path + ".tmp"
+    with open(tmp, "wb") as f:
+        f.write(data)
+    os.replace(tmp, path)
+
+
+class Canvas:
+    def __init__(self, width, height, colour=(24, 24, 28)):
+        self.width, self.height = width, height
+        self.rgb = bytearray(bytes(colour) * (width * height))
+
+    def blit(self, x0, y0, w, h, rgb):
+        for y in range(h):
+            row = (y0 + y) * self.width + x0
+            self.rgb[row * 3:(row + w) * 3] = rgb[y * w * 3:(y + 1) * w * 3]
+
+    def text(self, x0, y0, text, scale=2, colour=(230, 230, 230)):
+        for n, ch in enumerate(text.lower()):
+            glyph = FONT.get(ch, FONT[" "]).split()
+            for gy, bits in enumerate(glyph):
+                for gx, bit in enumerate(bits):
+                    if bit != "1":
+                        continue
+                    for sy in range(scale):
+                        for sx in range(scale):
+                            x, y = x0 + (n * 6 + gx) * scale + sx, y0 + gy * scale + sy
+                            if 0 <= x < self.width and 0 <= y < self.height:
+                                self.rgb[(y * self.width + x) * 3:(y * self.width + x) * 3 + 3] = bytes(colour)
+
+
+def main():
+    here = os.path.dirname(os.path.abspath(__file__))
+    source = os.path.dirname(here)
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--aerial", required=True, help="the aerial CLI (build/release/app/aerial)")
+    ap.add_argument("--out", required=True, help="the contact sheet, .png")
+    ap.add_argument("--cell", default="192x108", help="each frame's size, WxH (default 192x108)")
+    ap.add_argument("--hours", default=",".join(HOURS), help="comma-separated times (default eight hours)")
+    ap.add_argument("--presets", default="", help="comma-separated preset names (default every shipped preset)")
+    ap.add_argument("--jobs", type=int, default=2)
+    args = ap.parse_args()
+    cw, ch = (int(v) for v in args.cell.lower().split("x"))
+    hours = [h for h in args.hours.split(",") if h]
+    if args.presets:
+        presets = [os.path.join(source, "presets", p + ".json") for p in args.presets.split(",")]
+    else:
+        presets = sorted(p for p in glob.glob(os.path.join(source, "presets", "*.json"))
+                         if not p.endswith(".schema.json"))
+    with tempfile.TemporaryDirectory() as work:
+        jobs = []
+        for i, preset in enumerate(presets):
+            for j, hour in enumerate(hours):
+                out = os.path.join(work, "%d_%d.png" % (i, j))
+                jobs.append((out, [args.aerial, "render", preset, "--time", hour, "--size", args.cell, "--out", out]))
+
+        def render(job):
+            p = subprocess.run(job[1], capture_output=True, text=True)
+            if p.returncode != 0:
+                sys.exit("contact_sheet: %s failed: %s" % (" ".join(job[1]), p.stderr.strip()))
+
+        with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
+            list(pool.map(render, jobs))
+        gap, label_w, header_h = 4, 16 + 12 * max(len(os.path.basename(p)[:-5]) for p in presets) // 2, 24
+        label_w = max(label_w, 140)
+        canvas = Canvas(label_w + len(hours) * (cw + gap), header_h + len(presets) * (ch + gap))
+        for j, hour in enumerate(hours):
+            canvas.text(label_w + j * (cw + gap) + cw // 2 - len(hour) * 6, 5, hour)
+        for i, preset in enumerate(presets):
+            name = os.path.basename(preset)[:-5]
+            y0 = header_h + i * (ch + gap)
+            words = name.split("_")
+            for k, word in enumerate(words):
+                canvas.text(6, y0 + ch // 2 - len(words) * 9 + k * 18, word)
+            for j in range(len(hours)):
+                w, h, rgb = read_png(os.path.join(work, "%d_%d.png" % (i, j)))
+                if (w, h) != (cw, ch):
+                    sys.exit("contact_sheet: a frame is %dx%d, not %dx%d" % (w, h, cw, ch))
+                canvas.blit(label_w + j * (cw + gap), y0, w, h, rgb)
+    write_png(args.out, canvas.width, canvas.height, canvas.rgb)
+    print("wrote %s (%dx%d: %d presets x %d hours)" % (args.out, canvas.width, canvas.height, len(presets),
+                                                        len(hours)))
+
+
+if __name__ == "__main__":
+    main()
