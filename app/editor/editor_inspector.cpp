@@ -45,6 +45,7 @@ bool startsWith(std::string_view text, std::string_view prefix) {
 Selection::Kind globalGroup(const ParamDesc& p) {
     if (startsWith(p.path, "sun.") || startsWith(p.path, "moon.")) return Selection::Kind::Lights;
     if (startsWith(p.path, "fog.")) return Selection::Kind::Fog;
+    if (startsWith(p.path, "exposure.")) return Selection::Kind::Exposure;
     return Selection::Kind::Atmosphere;
 }
 
@@ -253,7 +254,8 @@ void drawInspector(Document& doc, EditState& edit, double timeHours, const Prese
             break;
         case Selection::Kind::Atmosphere:
         case Selection::Kind::Lights:
-        case Selection::Kind::Fog: {
+        case Selection::Kind::Fog:
+        case Selection::Kind::Exposure: {
             if (edit.selection.kind == Selection::Kind::Atmosphere) {
                 std::string name = preset.name, description = preset.description;
                 if (ImGui::InputText("Preset name", &name))
@@ -290,6 +292,16 @@ void drawInspector(Document& doc, EditState& edit, double timeHours, const Prese
                 ImGui::Text("Sunrise %s, sunset %s, day %.1f h",
                             formatClock(rise, ClockResolution::Minutes).c_str(),
                             formatClock(set, ClockResolution::Minutes).c_str(), dayLengthHours(where));
+            }
+            if (edit.selection.kind == Selection::Kind::Exposure) {
+                ImGui::Spacing();
+                ImGui::TextDisabled("Now");
+                ImGui::Separator();
+                const ExposureParams& e = state.environment.exposure;
+                ImGui::Text("Compensation %+.2f EV at this time", e.compensationEv);
+                ImGui::TextWrapped(
+                    "The viewport shows it (status bar: the EV100 in use); View > Exposure offset "
+                    "adds to it for this view only, without changing the preset.");
             }
             break;
         }

@@ -430,6 +430,50 @@ quit
     print("OK: screenshot")
 
 
+def case_exposure(env):
+    """The preset's exposure reaches the picture: manual EV100 12 shows the
+    same pixels as EV100 14 with the view's offset +2 and as EV100 14 with a
+    compensation of +2 (the display multiplies by 2^-EV100 in each case), and
+    two stops brighter than EV100 14 alone."""
+    shots = {k: env.path(k + ".png") for k in ("ev12", "ev14_offset", "ev14_comp", "ev14")}
+    env.run(env.script("exposure.txt", """
+time 12
+select exposure
+set exposure.mode manual
+set exposure.ev100 12
+screenshot {ev12}
+set exposure.ev100 14
+exposure 2
+screenshot {ev14_offset}
+exposure 0
+set exposure.compensation_ev 2
+screenshot {ev14_comp}
+set exposure.compensation_ev 0
+screenshot {ev14}
+expect_param exposure.ev100 14 0
+quit
+""".format(**shots)))
+    images = {k: read_png(v) for k, v in shots.items()}
+
+    def mean_level(image):
+        w, h, bpp, rows = image
+        return sum(sum(row[x * bpp + c] for c in range(3)) for row in rows for x in range(w)) / (3.0 * w * h)
+
+    def max_difference(a, b):
+        w, h, bpp, ra = a
+        rb = b[3]
+        return max(abs(ra[y][i] - rb[y][i]) for y in range(h) for i in range(w * bpp) if i % bpp < 3)
+
+    for other in ("ev14_offset", "ev14_comp"):
+        d = max_difference(images["ev12"], images[other])
+        check(d <= 1, "EV100 12 and %s differ by up to %d levels; the same exposure must give the same picture"
+              % (other, d))
+    bright, dark = mean_level(images["ev12"]), mean_level(images["ev14"])
+    print("mean 8-bit level: EV100 12 %.1f, EV100 14 %.1f" % (bright, dark))
+    check(bright > dark + 20.0, "two stops more exposure did not brighten the picture (%.1f vs %.1f)" % (bright, dark))
+    print("OK: exposure")
+
+
 def case_errors(env):
     """A bad preset shows the loader's errors and changes nothing; a script error
     names its line; without a display the editor says so and exits 2."""
@@ -550,6 +594,7 @@ CASES = {
     "undo_redo": case_undo_redo,
     "crash_recovery": case_crash_recovery,
     "screenshot": case_screenshot,
+    "exposure": case_exposure,
     "errors": case_errors,
 }
 
