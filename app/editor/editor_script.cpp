@@ -322,9 +322,10 @@ void Editor::declareScriptCommands() {
              error = "expect_keys " + w[1] + ": have " + std::to_string(have);
              return false;
          }});
-    table.add({"expect_selected", 1, 2, "expect_selected volume|emitter|none|fog|atmosphere|lights [N]",
+    table.add({"expect_selected", 1, 2, "expect_selected volume|emitter|none|fog|atmosphere|lights|exposure [N]",
                "what the outliner has selected", [this](W w, E error) {
-                   static const char* kinds[] = {"none", "atmosphere", "lights", "fog", "volume", "emitter"};
+                   static const char* kinds[] = {"none",   "atmosphere", "lights",  "fog",
+                                                 "volume", "emitter",    "exposure"};
                    const std::string have = kinds[int(edit_.selection.kind)];
                    double n = -1;
                    if (w.size() == 3 && !toNumber(w[2], n)) {
