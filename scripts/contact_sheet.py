@@ -4,8 +4,11 @@ in one PNG: how an artist chooses a preset (by looking, not by reading JSON).
 
 Each cell is `aerial render PRESET --time T` of the built-in scene from the
 default camera, with the preset's own exposure (its "exposure" block) and the
-default (tone-mapped) view: exactly what `aerial render` shows. Pure Python
-(zlib only): reads the 8-bit PNGs aerial writes, writes one 8-bit RGB PNG.
+default (tone-mapped) view: exactly what `aerial render` shows. The last
+column plots the preset's main parameters over the day (`aerial eval` every
+half hour): sun and moon elevation, the global fog density (log scale) and
+the exposure compensation. Pure Python (zlib only): reads the 8-bit PNGs
+aerial writes, writes one 8-bit RGB PNG.
 
 Usage:
   scripts/contact_sheet.py --aerial build/release/app/aerial --out docs/contact_sheet.png
@@ -14,6 +17,8 @@ Usage:
 import argparse
 import concurrent.futures
 import glob
+import json
+import math
 import os
 import struct
 import subprocess
@@ -95,7 +100,22 @@ def read_png(path):
 
 
 def write_png(path, width, height, rgb):
-    rows = b"".join(b"\x00" + bytes(rgb[y * width * 3:(y + 1) * width * 3]) for y in range(height))
+    """8-bit RGB, every row Paeth-filtered (smaller for rendered pictures)."""
+    stride = width * 3
+    rows = bytearray()
+    prev = bytes(stride)
+    for y in range(height):
+        line = bytes(rgb[y * stride:(y + 1) * stride])
+        out = bytearray(stride)
+        for i in range(stride):
+            a = line[i - 3] if i >= 3 else 0
+            b = prev[i]
+            c = prev[i - 3] if i >= 3 else 0
+            p = a + b - c
+            pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+            out[i] = (line[i] - (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+        rows += b"\x04" + out
+        prev = line
 
     def chunk(kind, body):
         return struct.pack(">I", len(body)) + kind + body + struct.pack(">I", zlib.crc32(kind + body) & 0xFFFFFFFF)
@@ -108,6 +128,11 @@ def write_png(path, width, height, rgb):
     os.replace(tmp, path)
 
 
+def pool_map(function, items, jobs=2):
+    with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, jobs)) as pool:
+        return list(pool.map(function, items))
+
+
 class Canvas:
     def __init__(self, width, height, colour=(24, 24, 28)):
         self.width, self.height = width, height
@@ -118,6 +143,15 @@ class Canvas:
             row = (y0 + y) * self.width + x0
             self.rgb[row * 3:(row + w) * 3] = rgb[y * w * 3:(y + 1) * w * 3]
 
+    def point(self, x, y, colour):
+        if 0 <= x < self.width and 0 <= y < self.height:
+            self.rgb[(y * self.width + x) * 3:(y * self.width + x) * 3 + 3] = bytes(colour)
+
+    def line(self, x0, y0, x1, y1, colour):
+        n = max(abs(x1 - x0), abs(y1 - y0), 1)
+        for k in range(n + 1):
+            self.point(round(x0 + (x1 - x0) * k / n), round(y0 + (y1 - y0) * k / n), colour)
+
     def text(self, x0, y0, text, scale=2, colour=(230, 230, 230)):
         for n, ch in enumerate(text.lower()):
             glyph = FONT.get(ch, FONT[" "]).split()
@@ -127,9 +161,45 @@ class Canvas:
                         continue
                     for sy in range(scale):
                         for sx in range(scale):
-                            x, y = x0 + (n * 6 + gx) * scale + sx, y0 + gy * scale + sy
-                            if 0 <= x < self.width and 0 <= y < self.height:
-                                self.rgb[(y * self.width + x) * 3:(y * self.width + x) * 3 + 3] = bytes(colour)
+                            self.point(x0 + (n * 6 + gx) * scale + sx, y0 + gy * scale + sy, colour)
+
+
+# The plotted curves: (label, colour, value from `aerial eval --json`, range).
+CURVES = [
+    ("sun", (255, 200, 60), lambda e: e["sun"]["elevation_deg"], (-90.0, 90.0)),
+    ("moon", (150, 190, 255), lambda e: e["moon"]["elevation_deg"], (-90.0, 90.0)),
+    ("fog", (200, 200, 200), lambda e: math.log10(max(e["parameters"]["fog"]["density_per_m"], 1e-6)), (-6.0, -1.0)),
+    ("ev comp", (240, 90, 200), lambda e: e["parameters"]["exposure"]["compensation_ev"], (-3.0, 3.0)),
+]
+
+
+def evaluate_day(aerial, preset):
+    """`aerial eval --json` every half hour, 00:00 to 24:00."""
+    rows = []
+    for k in range(49):
+        p = subprocess.run([aerial, "eval", preset, "--time", str(min(k * 0.5, 23.99)), "--json"],
+                           capture_output=True, text=True)
+        if p.returncode != 0:
+            sys.exit("contact_sheet: aerial eval %s failed: %s" % (preset, p.stderr.strip()))
+        rows.append((k * 0.5, json.loads(p.stdout)))
+    return rows
+
+
+def plot_day(canvas, x0, y0, w, h, rows):
+    """The curves over 24 h in a w x h box: the horizon (elevation 0, EV 0) dotted, 6/12/18 h marked."""
+    for gx in (6, 12, 18):
+        for y in range(y0, y0 + h, 3):
+            canvas.point(x0 + round(gx / 24.0 * (w - 1)), y, (70, 70, 78))
+    for x in range(x0, x0 + w, 3):
+        canvas.point(x, y0 + h // 2, (90, 90, 98))
+    for _, colour, value, (lo, hi) in CURVES:
+        last = None
+        for t, e in rows:
+            v = min(max((value(e) - lo) / (hi - lo), 0.0), 1.0)
+            here = (x0 + round(t / 24.0 * (w - 1)), y0 + round((1.0 - v) * (h - 1)))
+            if last:
+                canvas.line(last[0], last[1], here[0], here[1], colour)
+            last = here
 
 
 def main():
@@ -162,13 +232,18 @@ def main():
             if p.returncode != 0:
                 sys.exit("contact_sheet: %s failed: %s" % (" ".join(job[1]), p.stderr.strip()))
 
-        with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
-            list(pool.map(render, jobs))
-        gap, label_w, header_h = 4, 16 + 12 * max(len(os.path.basename(p)[:-5]) for p in presets) // 2, 24
-        label_w = max(label_w, 140)
-        canvas = Canvas(label_w + len(hours) * (cw + gap), header_h + len(presets) * (ch + gap))
+        list(pool_map(render, jobs, args.jobs))
+        days = list(pool_map(lambda p: evaluate_day(args.aerial, p), presets, args.jobs))
+        gap, label_w, header_h = 4, 140, 24
+        plot_w = 2 * cw
+        frames_w = len(hours) * (cw + gap)
+        canvas = Canvas(label_w + frames_w + plot_w + gap, header_h + len(presets) * (ch + gap))
         for j, hour in enumerate(hours):
             canvas.text(label_w + j * (cw + gap) + cw // 2 - len(hour) * 6, 5, hour)
+        legend_x = label_w + frames_w
+        for label, colour, _, _ in CURVES:
+            canvas.text(legend_x, 5, label, colour=colour)
+            legend_x += (len(label) + 1) * 12
         for i, preset in enumerate(presets):
             name = os.path.basename(preset)[:-5]
             y0 = header_h + i * (ch + gap)
@@ -180,9 +255,10 @@ def main():
                 if (w, h) != (cw, ch):
                     sys.exit("contact_sheet: a frame is %dx%d, not %dx%d" % (w, h, cw, ch))
                 canvas.blit(label_w + j * (cw + gap), y0, w, h, rgb)
+            plot_day(canvas, label_w + frames_w, y0, plot_w, ch, days[i])
     write_png(args.out, canvas.width, canvas.height, canvas.rgb)
-    print("wrote %s (%dx%d: %d presets x %d hours)" % (args.out, canvas.width, canvas.height, len(presets),
-                                                        len(hours)))
+    print("wrote %s (%dx%d: %d presets x %d hours, and their day)" % (args.out, canvas.width, canvas.height,
+                                                                       len(presets), len(hours)))
 
 
 if __name__ == "__main__":
