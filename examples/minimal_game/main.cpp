@@ -5,13 +5,18 @@
 //   3. re-solve the sky tables of the sun and the moon when the light moved
 //      (here: every step; a game spreads beginSolve/continueSolve over frames);
 //   4. build the fog scene for the frame and query the fog between the camera
-//      and each transparent object (they cannot read the fogged depth buffer).
+//      and each transparent object (they cannot read the fogged depth buffer);
+//   5. expose the frame as the artist's preset says (manual, or metered from
+//      the frame's average luminance, plus the compensation keyed at this hour).
 //
 // Usage: minimal_game PRESET.json [STEP_HOURS]
 // Prints, per step: the time, the sun direction, the fog colour seen looking
-// at the glass pane and the fog transmittance and in-scatter in front of it.
+// at the glass pane, the fog transmittance and in-scatter in front of it, and
+// the EV100 and radiance scale of the preset's exposure (metered here on the
+// zenith sky, where a game meters its rendered frame).
 // Exit code 0, or 1 when the preset does not load or a result is not finite.
 #include <aerial/evaluate.hpp>
+#include <aerial/exposure.hpp>
 #include <aerial/fog_query.hpp>
 #include <aerial/preset.hpp>
 #include <aerial/sky.hpp>
@@ -58,7 +63,7 @@ int main(int argc, char** argv) {
     const glm::dvec3 glassPane(40.0, 3.0, -145.0);
 
     std::printf("%s\n%5s  %-26s  %-26s  %-8s  %s\n", preset.preset().name.c_str(), "time", "sun direction",
-                "fog colour at the pane", "T_pane", "in-scatter at the pane");
+                "fog colour at the pane", "T_pane", "in-scatter at the pane                EV100  scale");
     for (int step = 0; step * stepHours < 24.0 - 1e-9; ++step) {
         const double t = step * stepHours;
         preset.evaluate(t, state);
@@ -75,13 +80,29 @@ int main(int argc, char** argv) {
         const glm::dvec3 fogColour = fog.fogColour(glassPane - camera);
         // The pane would be shaded: L = L_pane * pane.transmittance + pane.inScatter.
 
+        // 5. Exposure: a game meters its frame (aerial::meterAverageLuminance
+        // of its pixels) and adapts over time (aerial::adaptEv100); the zenith
+        // sky stands in for the frame here.
+        const glm::dvec3 up(0.0, 1.0, 0.0);
+        const double g = air.mieAnisotropy;
+        const double average =
+            aerial::luminance(aerial::skyRadiance(sunSky.table(), g, up, state.sunLight.illuminanceSpace) +
+                              aerial::skyRadiance(moonSky.table(), g, up, state.moonLight.illuminanceSpace));
+        const aerial::ExposureParams& exposure = state.environment.exposure;
+        const double ev100 = aerial::targetEv100(exposure, average);
+        const double scale =
+            aerial::radianceScale(exposure, ev100);  // multiplies radiance before tone mapping
+
         const glm::dvec3& sun = state.sunLight.body.direction;
-        std::printf("%02d:%02d  (%7.4f, %7.4f, %7.4f)  (%7.4f, %7.4f, %7.4f)  %8.5f  (%.4f, %.4f, %.4f)\n",
-                    int(t), int(std::lround((t - int(t)) * 60.0)) % 60, sun.x, sun.y, sun.z, fogColour.r,
-                    fogColour.g, fogColour.b, pane.transmittance.g, pane.inScatter.r, pane.inScatter.g,
-                    pane.inScatter.b);
+        std::printf(
+            "%02d:%02d  (%7.4f, %7.4f, %7.4f)  (%7.4f, %7.4f, %7.4f)  %8.5f  (%.4f, %.4f, %.4f)  %6.2f  "
+            "%.4g\n",
+            int(t), int(std::lround((t - int(t)) * 60.0)) % 60, sun.x, sun.y, sun.z, fogColour.r, fogColour.g,
+            fogColour.b, pane.transmittance.g, pane.inScatter.r, pane.inScatter.g, pane.inScatter.b, ev100,
+            scale);
         if (!finite(sun) || !finite(fogColour) || !finite(pane.inScatter) || !(pane.transmittance.g >= 0.0) ||
-            !(pane.transmittance.g <= 1.0)) {
+            !(pane.transmittance.g <= 1.0) || !std::isfinite(ev100) ||
+            !(scale > 0.0 && std::isfinite(scale))) {
             std::fprintf(stderr, "minimal_game: a result at %.2f h is not finite or out of range\n", t);
             return 1;
         }
