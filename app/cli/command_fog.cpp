@@ -40,7 +40,8 @@ Json fogLightToJson(const FogLight& light) {
     return {{"direction", toJson(light.direction)},
             {"illuminance_space_rgb", toJson(light.illuminance)},
             {"horizon_rayleigh", toJson(light.horizonRayleigh)},
-            {"horizon_mie", toJson(light.horizonMie)}};
+            {"horizon_mie", toJson(light.horizonMie)},
+            {"horizon_multiple", toJson(light.horizonMultiple)}};
 }
 
 int runFog(const FogOptions& options) {

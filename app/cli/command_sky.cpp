@@ -39,14 +39,17 @@ struct SkyOptions {
 };
 
 struct LightSample {
-    glm::dvec3 radiance{0.0};
+    glm::dvec3 radiance{0.0};  ///< single + multiple
+    glm::dvec3 single{0.0};    ///< E (P_R I_R + P_M I_M)
+    glm::dvec3 multiple{0.0};  ///< E I_ms (0 for the exact single-scattering integral)
     SkySample integrals;
 };
 
 Json sampleToJson(const LightSample& s) {
     return {{"radiance_rgb", toJson(s.radiance)},
             {"rayleigh", toJson(s.integrals.rayleigh)},
-            {"mie", toJson(s.integrals.mie)}};
+            {"mie", toJson(s.integrals.mie)},
+            {"multiple", toJson(s.integrals.multiple)}};
 }
 
 double phaseWeighted(double mu, double g, const SkySample& s, int c) {
@@ -57,6 +60,12 @@ LightSample tableSample(const SkyTable& table, double g, const glm::dvec3& v, co
     LightSample out;
     out.integrals = sampleSkyTable(table, v);
     out.radiance = skyRadiance(table, g, v, light.illuminanceSpace);
+    const double mu =
+        v.x * table.lightDirection.x + v.y * table.lightDirection.y + v.z * table.lightDirection.z;
+    for (int c = 0; c < 3; ++c) {
+        out.single[c] = light.illuminanceSpace[c] * phaseWeighted(mu, g, out.integrals, c);
+        out.multiple[c] = light.illuminanceSpace[c] * out.integrals.multiple[c];
+    }
     return out;
 }
 
@@ -69,6 +78,7 @@ LightSample referenceSample(const AtmosphereParams& air, const glm::dvec3& v, co
         v.x * light.body.direction.x + v.y * light.body.direction.y + v.z * light.body.direction.z;
     for (int c = 0; c < 3; ++c)
         out.radiance[c] = light.illuminanceSpace[c] * phaseWeighted(mu, air.mieAnisotropy, out.integrals, c);
+    out.single = out.radiance;
     return out;
 }
 
@@ -90,13 +100,17 @@ int runSky(const SkyOptions& options) {
     const LightSample exactSun = referenceSample(air, v, state.sunLight);
     const LightSample exactMoon = referenceSample(air, v, state.moonLight);
     const glm::dvec3 table = tableSun.radiance + tableMoon.radiance;
+    const glm::dvec3 single = tableSun.single + tableMoon.single;
+    const glm::dvec3 multiple = tableSun.multiple + tableMoon.multiple;
     const glm::dvec3 exact = exactSun.radiance + exactMoon.radiance;
 
     Json relative = Json::array();
     double maxRelative = 0.0;
     for (int c = 0; c < 3; ++c) {
         if (exact[c] > 0.0) {
-            const double r = table[c] / exact[c] - 1.0;
+            // Single scattering against its exact integral (the multiple
+            // scattering has no exact counterpart here).
+            const double r = single[c] / exact[c] - 1.0;
             relative.push_back(r);
             maxRelative = std::max(maxRelative, std::abs(r));
         } else {
@@ -119,6 +133,8 @@ int runSky(const SkyOptions& options) {
                    {"table",
                     {{"size", {desc.azimuthCount, desc.elevationCount}},
                      {"radiance_rgb", toJson(table)},
+                     {"single_scattering_rgb", toJson(single)},
+                     {"multiple_scattering_rgb", toJson(multiple)},
                      {"sun", sampleToJson(tableSun)},
                      {"moon", sampleToJson(tableMoon)}}},
                    {"reference",
@@ -134,8 +150,11 @@ int runSky(const SkyOptions& options) {
                 azimuth * kDegreesPerRadian);
     std::printf("  %-28s %12.6g %12.6g %12.6g\n", ("table " + options.size + " (sun + moon)").c_str(),
                 table.x, table.y, table.z);
-    std::printf("  %-28s %12.6g %12.6g %12.6g\n", "exact integral (sun + moon)", exact.x, exact.y, exact.z);
-    std::printf("  %-28s", "relative difference");
+    std::printf("  %-28s %12.6g %12.6g %12.6g\n", "  single scattering", single.x, single.y, single.z);
+    std::printf("  %-28s %12.6g %12.6g %12.6g\n", "  multiple scattering", multiple.x, multiple.y,
+                multiple.z);
+    std::printf("  %-28s %12.6g %12.6g %12.6g\n", "exact integral (single)", exact.x, exact.y, exact.z);
+    std::printf("  %-28s", "relative difference (single)");
     for (int c = 0; c < 3; ++c) {
         if (relative[std::size_t(c)].is_null())
             std::printf(" %12s", "-");

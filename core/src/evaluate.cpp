@@ -214,9 +214,9 @@ FogSceneDesc fogSceneDesc(const PresetState& state, const SkyTable& sunSky, cons
     desc.emitters = state.emitters;
     desc.mieAnisotropy = state.environment.atmosphere.mieAnisotropy;
     desc.lights[0] = {state.sunLight.body.direction, state.sunLight.illuminanceSpace, sunSky.horizonRayleigh,
-                      sunSky.horizonMie};
+                      sunSky.horizonMie, sunSky.horizonMultiple};
     desc.lights[1] = {state.moonLight.body.direction, state.moonLight.illuminanceSpace,
-                      moonSky.horizonRayleigh, moonSky.horizonMie};
+                      moonSky.horizonRayleigh, moonSky.horizonMie, moonSky.horizonMultiple};
     return desc;
 }
 

@@ -73,6 +73,7 @@ struct PreparedLight {
     glm::dvec3 illuminance{0.0};
     glm::dvec3 horizonRayleigh{0.0};
     glm::dvec3 horizonMie{0.0};
+    glm::dvec3 horizonMultiple{0.0};
 };
 
 }  // namespace
@@ -99,9 +100,11 @@ struct FogScene::Impl {
             p.illuminance = detail::sanitiseColour(light.illuminance);
             p.horizonRayleigh = detail::sanitiseColour(light.horizonRayleigh);
             p.horizonMie = detail::sanitiseColour(light.horizonMie);
+            p.horizonMultiple = detail::sanitiseColour(light.horizonMultiple);
             const bool on = glm::dot(p.illuminance, p.illuminance) > 0.0 &&
                             (glm::dot(p.horizonRayleigh, p.horizonRayleigh) > 0.0 ||
-                             glm::dot(p.horizonMie, p.horizonMie) > 0.0);
+                             glm::dot(p.horizonMie, p.horizonMie) > 0.0 ||
+                             glm::dot(p.horizonMultiple, p.horizonMultiple) > 0.0);
             if (on) {
                 lights[lightCount++] = p;
             }
@@ -131,8 +134,8 @@ struct FogScene::Impl {
         for (std::size_t k = 0; k < lightCount; ++k) {
             const PreparedLight& l = lights[k];
             const double mu = std::clamp(glm::dot(v, l.direction), -1.0, 1.0);
-            colour += l.illuminance *
-                      (rayleighPhase(mu) * l.horizonRayleigh + miePhase(mu, mieAnisotropy) * l.horizonMie);
+            colour += l.illuminance * (rayleighPhase(mu) * l.horizonRayleigh +
+                                       miePhase(mu, mieAnisotropy) * l.horizonMie + l.horizonMultiple);
         }
         return colour;
     }

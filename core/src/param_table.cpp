@@ -185,6 +185,11 @@ const std::vector<ParamDesc>& globalTable() {
             [](void* o) { return &env(o).atmosphere.ozoneWidth; },
             "Full width of the ozone tent [m], 1..120000 (zero density at peak +- width/2). "
             "Default 30000."),
+        triple(
+            G, ParamType::Colour, "atmosphere.ground_albedo_rgb", "Ground albedo", "", {0, 1, 0, 1},
+            glm::dvec3(0.3), false, true, [](void* o) { return &env(o).atmosphere.groundAlbedo; },
+            "Lambertian albedo of the ground per RGB channel, 0..1: the sunlight the ground "
+            "reflects back into the sky (multiple scattering). Default 0.3 grey."),
         // Sun and moon (preset.hpp, LightParams).
         triple(
             G, ParamType::Colour, "sun.colour_rgb", "Sun colour", "", {0, 100, 0, 2}, glm::dvec3(1.0), false,

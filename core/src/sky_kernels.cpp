@@ -256,6 +256,44 @@ AERIAL_INLINE void skyLayer(
     }
 }
 
+/// Psi_ms at one shell for every column: the light's zenith cosine
+/// alpha + beta cos(phi) -> LUT column x = sign(mu) sqrt|mu|,
+/// u = (x + 1) / 2 (n - 1) (sky_multiple.hpp) -> linear interpolation.
+AERIAL_INLINE void shellPsi(int nc, float alpha, float beta, int n, const float* __restrict psi0,
+                            const float* __restrict psi1, const float* __restrict psi2,
+                            const float* __restrict cosPhi, float* __restrict out0, float* __restrict out1,
+                            float* __restrict out2) {
+    const float scale = 0.5f * float(n - 1);
+    const float maxU = float(n - 1) - 1e-3f;
+    for (int i = 0; i < nc; ++i) {
+        const float mu = alpha + beta * cosPhi[i];
+        const float root = fastSqrt(minNonNegative(std::abs(mu), 1.0f));
+        const float x = std::bit_cast<float>(std::bit_cast<int>(root) |
+                                             (std::bit_cast<int>(mu) & static_cast<int>(0x80000000u)));
+        const float u = minNonNegative(maxZero((x + 1.0f) * scale), maxU);
+        const int iu = static_cast<int>(u);
+        const float f = u - float(iu);
+        out0[i] = psi0[iu] + f * (psi0[iu + 1] - psi0[iu]);
+        out1[i] = psi1[iu] + f * (psi1[iu + 1] - psi1[iu]);
+        out2[i] = psi2[iu] + f * (psi2[iu + 1] - psi2[iu]);
+    }
+}
+
+/// A layer's multiple scattering for every column: msA Psi(a) + msB Psi(b)
+/// (Psi linear along the layer, weighted by the layer's sigma_s T shape).
+AERIAL_INLINE void msLayer(int nc, const LayerConstants& k, const float* __restrict a0,
+                           const float* __restrict a1, const float* __restrict a2, const float* __restrict b0,
+                           const float* __restrict b1, const float* __restrict b2, float* __restrict acc0,
+                           float* __restrict acc1, float* __restrict acc2) {
+    const float wa0 = k.msA[0], wa1 = k.msA[1], wa2 = k.msA[2];
+    const float wb0 = k.msB[0], wb1 = k.msB[1], wb2 = k.msB[2];
+    for (int i = 0; i < nc; ++i) {
+        acc0[i] += wa0 * a0[i] + wb0 * b0[i];
+        acc1[i] += wa1 * a1[i] + wb1 * b1[i];
+        acc2[i] += wa2 * a2[i] + wb2 * b2[i];
+    }
+}
+
 /// The light at shell j (0: the viewer's, j > 0: the upper shell of layer
 /// j - 1) into its record slot.
 AERIAL_INLINE void lightAtShell(const SkyKernelArgs& a, int j, float maxU) {
@@ -272,6 +310,13 @@ AERIAL_INLINE void lightAtShell(const SkyKernelArgs& a, int j, float maxU) {
     float* r = a.shells + std::size_t(j % kShellSlots) * kShellRecord * nc;
     skyShell(nc, alpha, beta, ch, scale, a.knee, maxU, t0, t1, t2, a.cosPhi, r, r + nc, r + 2 * nc,
              r + 3 * nc, r + 4 * nc, r + 5 * nc, r + 6 * nc, r + 7 * nc, r + 8 * nc, r + 9 * nc);
+    if (a.psi != nullptr) {
+        const int n = a.psiCosines;
+        const float* p0 = a.psi + std::size_t(j) * n;
+        const float* p1 = a.psi + (rows + std::size_t(j)) * n;
+        const float* p2 = a.psi + (2 * rows + std::size_t(j)) * n;
+        shellPsi(nc, alpha, beta, n, p0, p1, p2, a.cosPhi, r + 10 * nc, r + 11 * nc, r + 12 * nc);
+    }
 }
 
 }  // namespace
@@ -344,7 +389,7 @@ AERIAL_HOT_KERNEL void skyKernel(const SkyKernelArgs& a) {
     float* acc = a.acc;
     auto shell = [&](int j) { return a.shells + std::size_t(j % kShellSlots) * kShellRecord * nc; };
     for (int j = 0; j <= std::min(nl, kShellSlots - 1); ++j) lightAtShell(a, j, maxU);
-    for (int i = 0; i < 6 * nc; ++i) acc[i] = 0.0f;
+    for (int i = 0; i < 9 * nc; ++i) acc[i] = 0.0f;
     for (int l = 0; l < nl; ++l) {
         if (l >= 2 && l + 2 <= nl) lightAtShell(a, l + 2, maxU);
         const LayerConstants& k = a.layer[l];
@@ -357,6 +402,74 @@ AERIAL_HOT_KERNEL void skyKernel(const SkyKernelArgs& a) {
                  up + 4 * nc, up + 5 * nc, up + 6 * nc, up + 7 * nc, up + 8 * nc, c, c + nc, c + 2 * nc, d,
                  d + nc, d + 2 * nc, lo + 9 * nc, up + 9 * nc, c + 9 * nc, d + 9 * nc, acc, acc + nc,
                  acc + 2 * nc, acc + 3 * nc, acc + 4 * nc, acc + 5 * nc);
+        if (a.psi != nullptr)
+            msLayer(nc, k, lo + 10 * nc, lo + 11 * nc, lo + 12 * nc, up + 10 * nc, up + 11 * nc, up + 12 * nc,
+                    acc + 6 * nc, acc + 7 * nc, acc + 8 * nc);
+    }
+}
+
+/// The sun seen from one crossing of a multiple-scattering ray, for every
+/// combination of sun cosine and azimuth (as skyShell, without the roots).
+AERIAL_HOT_KERNEL void msCrossingKernel(const MsCrossingArgs& a) {
+    const int n = a.count;
+    const float* __restrict p = a.p;
+    const float* __restrict q = a.q;
+    const float* __restrict t0 = a.depth0;
+    const float* __restrict t1 = a.depth1;
+    const float* __restrict t2 = a.depth2;
+    float* __restrict tau0 = a.record;
+    float* __restrict tau1 = a.record + n;
+    float* __restrict tau2 = a.record + 2 * n;
+    float* __restrict tr0 = a.record + 3 * n;
+    float* __restrict tr1 = a.record + 4 * n;
+    float* __restrict tr2 = a.record + 5 * n;
+    float* __restrict margins = a.record + 6 * n;
+    for (int i = 0; i < n; ++i) {
+        const float margin = a.alpha * p[i] + a.beta * q[i] - a.horizonCos;
+        const float x = maxZero(margin);
+        const float u = minNonNegative(x / (x + a.knee) * a.angleScale, a.maxU);
+        const int iu = static_cast<int>(u);
+        const float f = u - float(iu);
+        const float d0 = t0[iu] + f * (t0[iu + 1] - t0[iu]);
+        const float d1 = t1[iu] + f * (t1[iu + 1] - t1[iu]);
+        const float d2 = t2[iu] + f * (t2[iu + 1] - t2[iu]);
+        tau0[i] = d0;
+        tau1[i] = d1;
+        tau2[i] = d2;
+        tr0[i] = expNeg(d0);
+        tr1[i] = expNeg(d1);
+        tr2[i] = expNeg(d2);
+        margins[i] = margin;
+    }
+}
+
+/// One segment of a multiple-scattering ray for every combination:
+/// weight T_sun(a) E1(d) lit, d = tauView + tau_sun(b) - tau_sun(a)
+/// (exponentialMoments), lit the fraction of the segment where the margin,
+/// linear between its ends, is positive.
+AERIAL_HOT_KERNEL void msSegmentKernel(const MsSegmentArgs& a) {
+    const int n = a.count;
+    const float* __restrict ra = a.a;
+    const float* __restrict rb = a.b;
+    float* __restrict acc = a.acc;
+    for (int c = 0; c < 3; ++c) {
+        const float w = a.weight[c], tv = a.tauView[c], eView = expNeg(tv);
+        const float* __restrict tauA = ra + c * n;
+        const float* __restrict tauB = rb + c * n;
+        const float* __restrict trA = ra + (3 + c) * n;
+        const float* __restrict trB = rb + (3 + c) * n;
+        const float* __restrict mA = ra + 6 * n;
+        const float* __restrict mB = rb + 6 * n;
+        float* __restrict out = acc + c * n;
+        for (int i = 0; i < n; ++i) {
+            const float marginA = mA[i], marginB = mB[i];
+            const float pos = maxZero(marginA) + maxZero(marginB);
+            const float neg = maxZero(-marginA) + maxZero(-marginB);
+            const float lit = pos / (pos + neg + 1e-30f);
+            float f1, f2;
+            exponentialMoments(trA[i], trB[i] * eView, tv + tauB[i] - tauA[i], f1, f2);
+            out[i] += w * lit * f1;
+        }
     }
 }
 

@@ -70,13 +70,14 @@ struct LayerConstants {
     float alpha, beta, horizonCos, angleScale;  // upper shell: light cosine alpha + beta cos(phi), table row
     float start, end, invLength;                // layer extent along the view ray
     float p[6], q[6];                           // weight p + q t: R rgb, M rgb
+    float msA[3], msB[3];                       // multiple scattering: sigma_s T weights of Psi at a and b
     float curvature;                            // tanh(lambda / 4) / 3, see curvatureFactor
     int stencilC, stencilD;  // the stencil's two shells besides the layer's own (curvatureFactor)
     float stencil[4];        // -2/3 (cubic at mid-layer - chord): weights of tau at shells a, b, C, D
 };
 
-/// Floats per column of a shell record (skyShell).
-constexpr int kShellRecord = 10;
+/// Floats per column of a shell record (skyShell: 10; shellPsi: 3 more).
+constexpr int kShellRecord = 13;
 /// Shell records kept at a time: a layer's stencil spans four shells.
 constexpr int kShellSlots = 4;
 
@@ -91,14 +92,51 @@ struct SkyKernelArgs {
     const float* shadowOut;                         // [columns]
     const LayerConstants* layer;                    // [layers]
     const float* depth;                             // [3][layers + 1][angles] optical depth to the light
+    /// Multiple scattering: Psi_ms resampled at the shells, [3][layers + 1][psiCosines]
+    /// (sky_multiple.hpp, column mapping msColumnOfCosine); null: single scattering only.
+    const float* psi;
+    int psiCosines;
     float* shells;  // [kShellSlots][kShellRecord][columns] scratch: the light at the shells in use
-    float* acc;     // [6][columns]
+    float* acc;     // [9][columns]: R rgb, M rgb, multiple rgb (with psi)
 };
 
 /// The inner loop of a sky row over contiguous float arrays, no branch: the
 /// light at every shell (table lookup), then each layer's closed-form
 /// integral times its curvature factor and lit fraction, summed into acc
-/// (Rayleigh rgb, Mie rgb). `columns` is a multiple of 16 (no scalar tail).
+/// (Rayleigh rgb, Mie rgb), and with `psi` the multiple scattering of each
+/// layer, msA Psi(a) + msB Psi(b) (multiple rgb). `columns` is a multiple of
+/// 16 (no scalar tail).
 void skyKernel(const SkyKernelArgs& a);
+
+struct MsCrossingArgs {
+    int count;                                 // combinations of sun cosine and azimuth, a multiple of 16
+    float alpha, beta;                         // sun zenith cosine at the crossing: alpha P + beta Q
+    float horizonCos, angleScale, knee, maxU;  // the crossing's optical-depth row
+    const float* p;                            // [count] mu_s
+    const float* q;                            // [count] sqrt(1 - mu_s^2) cos(phi)
+    const float* depth0;                       // the row, per channel [angles]
+    const float* depth1;
+    const float* depth2;
+    float* record;  // [7][count]: tau rgb, T = e^-tau rgb, margin above the horizon cosine
+};
+
+/// The sun seen from one crossing of a multiple-scattering ray with a shell
+/// (sky_multiple.cpp), for every combination: table lookup as in skyShell.
+void msCrossingKernel(const MsCrossingArgs& a);
+
+struct MsSegmentArgs {
+    int count;
+    float weight[3];  // the segment's scattering column mass times T(start -> segment start), rgb
+    float tauView[3];
+    const float* a;  // crossing records (msCrossingKernel) at the segment's ends
+    const float* b;
+    float* acc;  // [3][count]
+};
+
+/// One segment between two crossings, for every combination: the integral of
+/// sigma_s T(start -> s) T(s -> sun) over it, with the total optical depth
+/// linear along the segment (closed form), times the lit fraction (the part
+/// where the margin, interpolated linearly, is positive).
+void msSegmentKernel(const MsSegmentArgs& a);
 
 }  // namespace aerial::detail

@@ -48,8 +48,10 @@
 // hot loops work on contiguous float arrays (sky_kernels.hpp) and are
 // compiled for AVX-512, AVX2 and the baseline (target_clones, chosen at load
 // time): no global -march needed.
+#include "sky_depth.hpp"
 #include "sky_kernels.hpp"
 #include "sky_layers.hpp"
+#include "sky_multiple.hpp"
 #include "worker_pool.hpp"
 
 #include <aerial/limits.hpp>
@@ -70,11 +72,6 @@ using namespace detail;
 namespace {
 
 constexpr int kDefaultOpticalDepthAngles = 128;
-/// Knee of the angle mapping u = x / (x + k) (x = c - c_h): half the columns
-/// lie within k of the horizon cosine.
-constexpr double kAngleKnee = 0.05;
-
-double safeSqrt(double x) { return x > 0.0 ? std::sqrt(x) : 0.0; }
 
 /// Distance along a ray from radius r0 with zenith cosine mu >= 0 to the
 /// sphere of radius r >= r0, given dr2 = r^2 - r0^2 >= 0 (no cancellation).
@@ -82,24 +79,6 @@ double upwardCrossing(double r0, double mu, double dr2) {
     if (!(dr2 > 0.0)) return 0.0;
     const double b = r0 * mu;
     return dr2 / (b + std::sqrt(b * b + dr2));
-}
-
-DensityConstants densityConstants(const AtmosphereParams& air) {
-    DensityConstants k;
-    if (air.rayleighScaleHeight > 0.0) {
-        k.invRayleighH = float(1.0 / air.rayleighScaleHeight);
-        k.rayleighOn = 1.0f;
-    }
-    if (air.mieScaleHeight > 0.0) {
-        k.invMieH = float(1.0 / air.mieScaleHeight);
-        k.mieOn = 1.0f;
-    }
-    if (air.ozoneWidth > 0.0) {
-        k.ozoneCenter = float(air.ozoneCenterHeight);
-        k.ozoneInvHalfWidth = float(2.0 / air.ozoneWidth);
-        k.ozoneOn = 1.0f;
-    }
-    return k;
 }
 
 /// The curvature stencil of layer l (LayerConstants::stencil): the cubic
@@ -156,9 +135,8 @@ struct SkySolver::Impl {
         std::vector<float> layerDepth, layerT, nodeT0, nodeT1;  // [3 layers]
         std::vector<float> shells;                              // [kShellSlots][kShellRecord][padded columns]
         std::vector<float> shadowIn, shadowOut;                 // [padded columns]
-        std::vector<float> acc;                                 // [6 padded columns]
-        // optical-depth rows
-        std::vector<float> q, len1, start2, len2, depthR, depthM, depthO;  // [angles]
+        std::vector<float> acc;                                 // [9 padded columns]
+        DepthRowScratch depthRow;                               // optical-depth rows
     };
 
     SkySolverDesc desc;
@@ -176,6 +154,10 @@ struct SkySolver::Impl {
     std::vector<float> layerCurvature;          // [layers] tanh(lambda / 4) / 3, see curvatureFactor
     std::vector<float> depth;                   // [3][layers + 1][angles]
     DensityConstants density;
+    // Multiple scattering (sky_multiple.hpp): the LUT and Psi_ms at the shells.
+    bool multiple = true;
+    MultipleScatteringLut ms;
+    std::vector<float> psiShell;  // [3][layers + 1][kMsCosines]
 
     // Light-dependent state.
     glm::dvec3 light{0.0, 1.0, 0.0};
@@ -194,7 +176,11 @@ struct SkySolver::Impl {
 
     // Threads: per-worker scratch and the pool (last: its threads stop first).
     std::vector<Scratch> scratch;       // [threads], 0 = the caller
+    std::vector<MsScratch> msScratch;   // [threads]
     std::atomic<int> depthRowsDone{0};  // optical-depth rows finished in the running dispatch
+    std::atomic<int> msDepthRowsDone{0};
+    std::atomic<int> psiRowsDone{0};
+    std::atomic<bool> psiReady{false};  // psiShell resampled in the running dispatch
     std::optional<WorkerPool> pool;
 
     explicit Impl(const SkySolverDesc& d);
@@ -204,7 +190,7 @@ struct SkySolver::Impl {
     void buildLayers();
     void buildDepthRow(int row, Scratch& s);
     void solveRow(int row, Scratch& s);
-    void run(int depthRows, int rowBegin, int rowEnd);
+    void run(bool rebuild, int rowBegin, int rowEnd);
     void publish();
 };
 
@@ -243,7 +229,10 @@ SkySolver::Impl::Impl(const SkySolverDesc& d) : desc(d) {
         t.elevationCount = elevationCount;
         t.rayleigh.assign(std::size_t(azimuthCount) * elevationCount * 3, 0.0f);
         t.mie.assign(std::size_t(azimuthCount) * elevationCount * 3, 0.0f);
+        t.multiple.assign(std::size_t(azimuthCount) * elevationCount * 3, 0.0f);
     }
+    multiple = !desc.singleScatteringOnly;
+    psiShell.assign(std::size_t(3) * (layers + 1) * kMsCosines, 0.0f);
     scratch.resize(std::size_t(desc.threadCount));
     for (Scratch& s : scratch) {
         s.crossing.assign(std::size_t(layers) + 1, 0.0);
@@ -255,29 +244,54 @@ SkySolver::Impl::Impl(const SkySolverDesc& d) : desc(d) {
         s.shells.assign(std::size_t(kShellSlots) * kShellRecord * paddedColumns, 0.0f);
         s.shadowIn.assign(std::size_t(paddedColumns), -1.0f);  // padding stays unshadowed
         s.shadowOut.assign(std::size_t(paddedColumns), -1.0f);
-        s.acc.assign(std::size_t(6) * paddedColumns, 0.0f);
-        for (auto* v : {&s.q, &s.len1, &s.start2, &s.len2, &s.depthR, &s.depthM, &s.depthO})
-            v->assign(std::size_t(angles), 0.0f);
+        s.acc.assign(std::size_t(9) * paddedColumns, 0.0f);
+        s.depthRow.resize(angles);
     }
+    msScratch.resize(std::size_t(desc.threadCount));
     pool.emplace(desc.threadCount);
 }
 
-// One dispatch: items [0, depthRows) build optical-depth rows; the rest
-// solve sky rows, which wait (briefly, yielding) until every depth row is
-// done.
-void SkySolver::Impl::run(int depthRows, int rowBegin, int rowEnd) {
+// One dispatch. With `rebuild`, the first items build the optical-depth
+// rows (the solver's, then the multiple-scattering LUT's), then the rows of
+// Psi_ms (which wait for the LUT's optical depths; the thread that finishes
+// the last one resamples Psi_ms at the shells); the rest solve sky rows,
+// which wait (briefly, yielding) until all of that is done.
+void SkySolver::Impl::run(bool rebuild, int rowBegin, int rowEnd) {
+    const int depthRows = rebuild ? layers + 1 : 0;
+    const int msRows = rebuild && multiple ? kMsRows : 0;
     depthRowsDone.store(0);  // published to the workers by the pool's dispatch
+    msDepthRowsDone.store(0);
+    psiRowsDone.store(0);
+    psiReady.store(msRows == 0);
     auto item = [&](int index, int worker) {
-        Scratch& s = scratch[std::size_t(worker)];
         if (index < depthRows) {
-            buildDepthRow(index, s);
+            buildDepthRow(index, scratch[std::size_t(worker)]);
             depthRowsDone.fetch_add(1, std::memory_order_release);
-        } else {
-            while (depthRowsDone.load(std::memory_order_acquire) < depthRows) std::this_thread::yield();
-            solveRow(rowBegin + index - depthRows, s);
+            return;
         }
+        index -= depthRows;
+        if (index < msRows) {
+            ms.buildDepthRow(index, msScratch[std::size_t(worker)]);
+            msDepthRowsDone.fetch_add(1, std::memory_order_release);
+            return;
+        }
+        index -= msRows;
+        if (index < msRows) {
+            while (msDepthRowsDone.load(std::memory_order_acquire) < msRows) std::this_thread::yield();
+            ms.buildPsiRow(index, msScratch[std::size_t(worker)]);
+            if (psiRowsDone.fetch_add(1, std::memory_order_acq_rel) + 1 == msRows) {
+                ms.resample(shellHeight.data(), layers + 1, psiShell.data());
+                psiReady.store(true, std::memory_order_release);
+            }
+            return;
+        }
+        index -= msRows;
+        while (depthRowsDone.load(std::memory_order_acquire) < depthRows ||
+               !psiReady.load(std::memory_order_acquire))
+            std::this_thread::yield();
+        solveRow(rowBegin + index, scratch[std::size_t(worker)]);
     };
-    pool->run(depthRows + (rowEnd - rowBegin), item);
+    pool->run(depthRows + 2 * msRows + (rowEnd - rowBegin), item);
 }
 
 // Shells of equal mixed mass between the viewer and the top (see the file
@@ -288,13 +302,10 @@ void SkySolver::Impl::buildLayers() {
     const double h0 = std::clamp(air.viewerHeight, 0.0, top);
     equalMassShells(air, h0, top, layers, shellHeight.data());
     for (int k = 0; k <= layers; ++k) {
-        const double r = rg + shellHeight[std::size_t(k)];
-        const double ratio = rg / r;
-        const double ch = -safeSqrt(1.0 - ratio * ratio);
+        const double ch = horizonCosine(air, shellHeight[std::size_t(k)]);
         horizonCosD[std::size_t(k)] = ch;
         horizonCos[std::size_t(k)] = float(ch);
-        const double range = 1.0 - ch;
-        angleScale[std::size_t(k)] = float((angles - 1) * (range + kAngleKnee) / range);
+        angleScale[std::size_t(k)] = float(detail::angleScale(angles, ch));
     }
     for (int l = 0; l < layers; ++l) {
         const double dh = shellHeight[std::size_t(l) + 1] - shellHeight[std::size_t(l)];
@@ -307,51 +318,10 @@ void SkySolver::Impl::buildLayers() {
 // Row `row` of the optical-depth table: transmittance from shell `row`
 // towards each tabulated light zenith cosine.
 void SkySolver::Impl::buildDepthRow(int row, Scratch& s) {
-    const double rg = air.planetRadius;
-    const double rt = std::max(air.atmosphereRadius, rg);
-    const double h = shellHeight[std::size_t(row)];
-    const double r = rg + h;
-    const double ch = horizonCosD[std::size_t(row)];
-    const double range = 1.0 - ch;
-    const double capacity = range / (range + kAngleKnee);  // a at u = 1
-    const double r2MinusRg2 = h * (r + rg);
-    const double rt2MinusRg2 = (rt - rg) * (rt + rg);
-    for (int m = 0; m < angles; ++m) {
-        const double a = capacity * m / (angles - 1);
-        const double c = std::min(ch + a * kAngleKnee / (1.0 - a), 1.0);
-        // p^2 - Rg^2 = (r^2 - Rg^2) - r^2 c^2; negative for rising rays whose
-        // line passes below the ground, >= 0 for falling rays above the horizon.
-        double q = r2MinusRg2 - r * r * c * c;
-        if (c < 0.0) q = std::max(q, 0.0);
-        const double dStart = r * c;  // signed distance of the start from the perigee
-        const double dTop = safeSqrt(rt2MinusRg2 - q);
-        s.q[std::size_t(m)] = float(q);
-        s.len1[std::size_t(m)] = float(std::max(-dStart, 0.0));
-        s.start2[std::size_t(m)] = float(std::max(dStart, 0.0));
-        s.len2[std::size_t(m)] = float(std::max(dTop - std::max(dStart, 0.0), 0.0));
-    }
-    DepthKernelArgs args{};
-    args.count = angles;
-    args.planetRadius = float(rg);
-    args.planetRadius2 = float(rg * rg);
-    args.density = density;
-    args.q = s.q.data();
-    args.len1 = s.len1.data();
-    args.start2 = s.start2.data();
-    args.len2 = s.len2.data();
-    args.depthR = s.depthR.data();
-    args.depthM = s.depthM.data();
-    args.depthO = s.depthO.data();
-    depthKernel(args);
-    for (int ch3 = 0; ch3 < 3; ++ch3) {
-        const float br = float(air.rayleighScattering[ch3]);
-        const float bm = float(air.mieExtinction[ch3]);
-        const float bo = float(air.ozoneAbsorption[ch3]);
-        float* out = depth.data() + (std::size_t(ch3) * (layers + 1) + row) * angles;
-        for (int m = 0; m < angles; ++m)
-            out[m] =
-                br * s.depthR[std::size_t(m)] + bm * s.depthM[std::size_t(m)] + bo * s.depthO[std::size_t(m)];
-    }
+    const std::size_t plane = std::size_t(layers + 1) * angles;
+    float* out = depth.data() + std::size_t(row) * angles;
+    opticalDepthRow(air, density, shellHeight[std::size_t(row)], horizonCosD[std::size_t(row)], angles,
+                    s.depthRow, out, out + plane, out + 2 * plane);
 }
 
 // One elevation row: columns 0..azimuthCount/2, mirrored into the back table.
@@ -422,6 +392,7 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
         const double mass[2] = {s.mass[std::size_t(3 * l)], s.mass[std::size_t(3 * l + 1)]};
         const float* profile[2] = {&s.nodeR[std::size_t(4 * l)], &s.nodeM[std::size_t(4 * l)]};
         for (int c = 0; c < 3; ++c) {
+            double msA = 0.0, msB = 0.0;  // multiple scattering: sigma_s T weights of Psi at a and b
             const std::size_t at = std::size_t(3 * l + c);
             const double tau = s.layerDepth[at];
             const double layerT = s.layerT[at];
@@ -444,7 +415,11 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
                 const double wA = total * (1.0 - centroid), wB = total * centroid;
                 lc.p[3 * p + c] = float(4.0 * wA - 2.0 * wB);
                 lc.q[3 * p + c] = float(6.0 * (wB - wA));
+                msA += wA;
+                msB += wB;
             }
+            lc.msA[c] = float(msA);
+            lc.msB[c] = float(msB);
             viewT[c] *= layerT;
         }
         lc.curvature = layerCurvature[std::size_t(l)];
@@ -521,6 +496,8 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
     k.shadowOut = s.shadowOut.data();
     k.layer = s.layer.data();
     k.depth = depth.data();
+    k.psi = multiple ? psiShell.data() : nullptr;
+    k.psiCosines = kMsCosines;
     k.shells = s.shells.data();
     k.acc = s.acc.data();
     skyKernel(k);
@@ -532,8 +509,12 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
             // Never below 0 (rounding) and never NaN.
             const float r = s.acc[std::size_t(c * paddedColumns + i)];
             const float m = s.acc[std::size_t((3 + c) * paddedColumns + i)];
+            const float x = s.acc[std::size_t((6 + c) * paddedColumns + i)];
             const float vr = r > 0.0f ? r : 0.0f;
             const float vm = m > 0.0f ? m : 0.0f;
+            const float vx = x > 0.0f ? x : 0.0f;
+            out.multiple[at0 + c] = vx;
+            out.multiple[at1 + c] = vx;
             out.rayleigh[at0 + c] = vr;
             out.rayleigh[at1 + c] = vr;
             out.mie[at0 + c] = vm;
@@ -566,6 +547,9 @@ static AtmosphereParams sanitized(const AtmosphereParams& in) {
     a.mieScaleHeight = finiteOr(in.mieScaleHeight, 0.0);
     a.ozoneCenterHeight = finiteOr(in.ozoneCenterHeight, d.ozoneCenterHeight);
     a.ozoneWidth = finiteOr(in.ozoneWidth, 0.0);
+    for (int c = 0; c < 3; ++c)
+        a.groundAlbedo[c] =
+            std::isfinite(in.groundAlbedo[c]) ? std::clamp(in.groundAlbedo[c], 0.0, 1.0) : 0.3;
     return a;
 }
 
@@ -578,6 +562,7 @@ void SkySolver::Impl::setAtmosphere(const AtmosphereParams& params) {
     }
     cacheValid = false;
     buildLayers();
+    if (multiple) ms.setAtmosphere(air);
     depthPending = true;
 }
 
@@ -601,15 +586,17 @@ void SkySolver::Impl::setLight(const glm::dvec3& direction) {
 // Horizon averages (row 0, all columns, equal weights) and the swap.
 void SkySolver::Impl::publish() {
     SkyTable& back = tables[1 - front];
-    glm::dvec3 sumR(0.0), sumM(0.0);
+    glm::dvec3 sumR(0.0), sumM(0.0), sumX(0.0);
     for (int i = 0; i < azimuthCount; ++i) {
         for (int c = 0; c < 3; ++c) {
             sumR[c] += back.rayleigh[std::size_t(i) * 3 + c];
             sumM[c] += back.mie[std::size_t(i) * 3 + c];
+            sumX[c] += back.multiple[std::size_t(i) * 3 + c];
         }
     }
     back.horizonRayleigh = sumR / double(azimuthCount);
     back.horizonMie = sumM / double(azimuthCount);
+    back.horizonMultiple = sumX / double(azimuthCount);
     back.generation = tables[front].generation + 1;
     front = 1 - front;
 }
@@ -622,8 +609,7 @@ void SkySolver::solve(const AtmosphereParams& air, const glm::dvec3& lightDirect
     m.amortised = false;
     m.setAtmosphere(air);
     m.setLight(lightDirection);
-    const int depthRows = m.depthPending ? m.layers + 1 : 0;
-    m.run(depthRows, 0, m.elevationCount);
+    m.run(m.depthPending, 0, m.elevationCount);
     if (m.depthPending) {
         m.cachedAir = m.rawAir;
         m.cacheValid = true;
@@ -645,14 +631,14 @@ bool SkySolver::continueSolve(int rows) {
     if (!m.amortised) return true;
     rows = std::max(rows, 1);
     if (m.depthPending) {
-        m.run(m.layers + 1, 0, 0);
+        m.run(true, 0, 0);
         m.cachedAir = m.rawAir;
         m.cacheValid = true;
         m.depthPending = false;
         --rows;
     }
     const int end = std::min(m.nextRow + rows, m.elevationCount);
-    m.run(0, m.nextRow, end);
+    m.run(false, m.nextRow, end);
     m.nextRow = end;
     if (m.nextRow < m.elevationCount) return false;
     m.amortised = false;
@@ -667,5 +653,17 @@ const SkyTable& SkySolver::table() const { return impl_->tables[impl_->front]; }
 const SkySolverDesc& SkySolver::desc() const { return impl_->desc; }
 
 void SkySolver::invalidateCache() { impl_->cacheValid = false; }
+
+MultipleScatteringTable SkySolver::multipleScatteringTable() const {
+    MultipleScatteringTable t;
+    if (!impl_->multiple) return t;
+    t.heightCount = kMsRows;
+    t.cosineCount = kMsCosines;
+    t.heights = impl_->ms.heights();
+    t.cosines.resize(std::size_t(kMsCosines));
+    for (int j = 0; j < kMsCosines; ++j) t.cosines[std::size_t(j)] = msCosineOfColumn(j);
+    t.psi = impl_->ms.psi();
+    return t;
+}
 
 }  // namespace aerial

@@ -46,10 +46,12 @@ SkySample sampleSkyTable(const SkyTable& table, const glm::dvec3& viewDirection)
     const double weight[4] = {(1 - fi) * (1 - fj), fi * (1 - fj), (1 - fi) * fj, fi * fj};
     const std::size_t at[4] = {(std::size_t(j0) * w + i0) * 3, (std::size_t(j0) * w + i1) * 3,
                                (std::size_t(j1) * w + i0) * 3, (std::size_t(j1) * w + i1) * 3};
+    const bool multiple = table.multiple.size() >= texels;
     for (int k = 0; k < 4; ++k) {
         for (int c = 0; c < 3; ++c) {
             out.rayleigh[c] += weight[k] * table.rayleigh[at[k] + c];
             out.mie[c] += weight[k] * table.mie[at[k] + c];
+            if (multiple) out.multiple[c] += weight[k] * table.multiple[at[k] + c];
         }
     }
     return out;
@@ -61,7 +63,7 @@ glm::dvec3 skyRadiance(const SkyTable& table, double mieAnisotropy, const glm::d
     const glm::dvec3 v = normalizedOr(viewDirection, glm::dvec3(0.0, 1.0, 0.0));
     const glm::dvec3 l = normalizedOr(table.lightDirection, glm::dvec3(0.0, 1.0, 0.0));
     const double mu = dot3(v, l);
-    return illuminance * (rayleighPhase(mu) * s.rayleigh + miePhase(mu, mieAnisotropy) * s.mie);
+    return illuminance * (rayleighPhase(mu) * s.rayleigh + miePhase(mu, mieAnisotropy) * s.mie + s.multiple);
 }
 
 glm::dvec3 horizonFogRadiance(const SkyTable& table, double mieAnisotropy, const glm::dvec3& viewDirection,
@@ -69,8 +71,8 @@ glm::dvec3 horizonFogRadiance(const SkyTable& table, double mieAnisotropy, const
     const glm::dvec3 v = normalizedOr(viewDirection, glm::dvec3(0.0, 1.0, 0.0));
     const glm::dvec3 l = normalizedOr(table.lightDirection, glm::dvec3(0.0, 1.0, 0.0));
     const double mu = dot3(v, l);
-    return illuminance *
-           (rayleighPhase(mu) * table.horizonRayleigh + miePhase(mu, mieAnisotropy) * table.horizonMie);
+    return illuminance * (rayleighPhase(mu) * table.horizonRayleigh +
+                          miePhase(mu, mieAnisotropy) * table.horizonMie + table.horizonMultiple);
 }
 
 }  // namespace aerial

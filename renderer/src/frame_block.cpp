@@ -105,6 +105,8 @@ FrameBlock makeFrameBlock(const Camera& camera, const CameraFrame& view, const P
     fb.sunHorizonMie = toVec3(colourOf(in.sun.horizonMie));
     fb.moonHorizonRayleigh = toVec3(colourOf(in.moon.horizonRayleigh));
     fb.moonHorizonMie = toVec3(colourOf(in.moon.horizonMie));
+    fb.sunHorizonMultiple = toVec3(colourOf(in.sun.horizonMultiple));
+    fb.moonHorizonMultiple = toVec3(colourOf(in.moon.horizonMultiple));
     const glm::dvec3 ambient =
         (in.sun.valid && in.sun.table ? skyIrradiance(*in.sun.table, g, colourOf(sun.illuminanceSpace))
                                       : glm::dvec3(0.0)) +

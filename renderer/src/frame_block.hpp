@@ -28,6 +28,7 @@ struct FrameSkyInput {
     int rows = 1;
     glm::dvec3 horizonRayleigh{0.0};
     glm::dvec3 horizonMie{0.0};
+    glm::dvec3 horizonMultiple{0.0};
 };
 
 /// Everything makeFrameBlock reads besides the camera and the state.

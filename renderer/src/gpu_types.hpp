@@ -77,6 +77,10 @@ struct FrameBlock {
     float padPole = 0.0f;
     Vec3 starTransmittance;
     float padStarTransmittance = 0.0f;
+    Vec3 sunHorizonMultiple;  ///< horizon average of I_ms [1/sr]
+    float padSunMultiple = 0.0f;
+    Vec3 moonHorizonMultiple;
+    float padMoonMultiple = 0.0f;
 };
 static_assert(offsetof(FrameBlock, clipFromWorld) == 0);
 static_assert(offsetof(FrameBlock, eye) == 64);
@@ -119,7 +123,9 @@ static_assert(offsetof(FrameBlock, starAxisY) == 432);
 static_assert(offsetof(FrameBlock, starSigma) == 444);
 static_assert(offsetof(FrameBlock, starPole) == 448);
 static_assert(offsetof(FrameBlock, starTransmittance) == 464);
-static_assert(sizeof(FrameBlock) == 480);
+static_assert(offsetof(FrameBlock, sunHorizonMultiple) == 480);
+static_assert(offsetof(FrameBlock, moonHorizonMultiple) == 496);
+static_assert(sizeof(FrameBlock) == 512);
 
 /// shaders/common/volume.glsl, VolumeBlock (binding 1): one fog volume.
 struct VolumeBlock {
@@ -218,6 +224,6 @@ constexpr unsigned kMoonRayleighUnit = 2;
 constexpr unsigned kMoonMieUnit = 3;
 constexpr unsigned kLinearDepthUnit = 4;
 constexpr unsigned kBaseColourUnit = 5;
-constexpr unsigned kTextureUnitCount = 6;
+constexpr unsigned kTextureUnitCount = 8;
 
 }  // namespace aerial::renderer::detail

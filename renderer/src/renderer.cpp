@@ -266,6 +266,7 @@ void Renderer::Impl::render(const Camera& camera, const PresetState& state, cons
         in.rows = sky.rows;
         in.horizonRayleigh = sky.horizonRayleigh;
         in.horizonMie = sky.horizonMie;
+        in.horizonMultiple = sky.horizonMultiple;
         return in;
     };
     inputs.sun = skyInput(sunSky, sunTable);
@@ -278,8 +279,9 @@ void Renderer::Impl::render(const Camera& camera, const PresetState& state, cons
     glBindBufferBase(GL_UNIFORM_BUFFER, detail::kVolumeBinding, volumeBuffer);
     glBindBufferBase(GL_UNIFORM_BUFFER, detail::kObjectBinding, objectBuffer);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, detail::kEmitterBinding, emitterBuffer);
-    const GLuint unitTextures[detail::kTextureUnitCount] = {sunSky.rayleigh, sunSky.mie,  moonSky.rayleigh,
-                                                            moonSky.mie,     linearDepth, whiteTexture};
+    const GLuint unitTextures[detail::kTextureUnitCount] = {
+        sunSky.rayleigh, sunSky.mie,   moonSky.rayleigh, moonSky.mie,
+        linearDepth,     whiteTexture, sunSky.multiple,  moonSky.multiple};
     for (unsigned unit = 0; unit < detail::kTextureUnitCount; ++unit) {
         glBindTextureUnit(unit, unitTextures[unit]);
         glBindSampler(unit, 0);

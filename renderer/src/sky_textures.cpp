@@ -27,11 +27,13 @@ GLuint makeTexture(int columns, int rows, const std::vector<float>& rgba) {
 SkyTextures::~SkyTextures() {
     if (rayleigh != 0) glDeleteTextures(1, &rayleigh);
     if (mie != 0) glDeleteTextures(1, &mie);
+    if (multiple != 0) glDeleteTextures(1, &multiple);
 }
 
 void SkyTextures::upload(const SkyTable& table) {
     if (rayleigh != 0) glDeleteTextures(1, &rayleigh);
     if (mie != 0) glDeleteTextures(1, &mie);
+    if (multiple != 0) glDeleteTextures(1, &multiple);
     const std::size_t texels = table.azimuthCount > 0 && table.elevationCount > 0
                                    ? static_cast<std::size_t>(table.azimuthCount) * table.elevationCount
                                    : 0;
@@ -40,20 +42,25 @@ void SkyTextures::upload(const SkyTable& table) {
     rows = valid ? table.elevationCount : 1;
     std::vector<float> r(static_cast<std::size_t>(columns) * rows * 4, 0.0f);
     std::vector<float> m(r.size(), 0.0f);
+    std::vector<float> x(r.size(), 0.0f);
+    const bool hasMultiple = valid && table.multiple.size() >= texels * 3;  // absent: zeros
     if (valid) {
         for (std::size_t i = 0; i < texels; ++i) {
             for (int c = 0; c < 3; ++c) {
                 r[i * 4 + c] = table.rayleigh[i * 3 + c];
                 m[i * 4 + c] = table.mie[i * 3 + c];
+                if (hasMultiple) x[i * 4 + c] = table.multiple[i * 3 + c];
             }
         }
     }
     rayleigh = makeTexture(columns, rows, r);
     mie = makeTexture(columns, rows, m);
+    multiple = makeTexture(columns, rows, x);
     lightAzimuth = valid ? table.lightAzimuth : 0.0;
     lightDirection = table.lightDirection;
     horizonRayleigh = valid ? table.horizonRayleigh : glm::dvec3(0.0);
     horizonMie = valid ? table.horizonMie : glm::dvec3(0.0);
+    horizonMultiple = valid ? table.horizonMultiple : glm::dvec3(0.0);
 }
 
 glm::dvec3 skyIrradiance(const SkyTable& table, double mieAnisotropy, const glm::dvec3& illuminance) {

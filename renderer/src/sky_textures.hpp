@@ -9,17 +9,19 @@
 
 namespace aerial::renderer::detail {
 
-/// I_R and I_M of one table as RGBA32F textures (alpha 0), GL_LINEAR,
+/// I_R, I_M and I_ms of one table as RGBA32F textures (alpha 0), GL_LINEAR,
 /// GL_REPEAT on s (the azimuth wraps), GL_CLAMP_TO_EDGE on t.
 struct SkyTextures {
     GLuint rayleigh = 0;
     GLuint mie = 0;
+    GLuint multiple = 0;
     int columns = 1;
     int rows = 1;
     double lightAzimuth = 0.0;
     glm::dvec3 lightDirection{0.0, 1.0, 0.0};
     glm::dvec3 horizonRayleigh{0.0};
     glm::dvec3 horizonMie{0.0};
+    glm::dvec3 horizonMultiple{0.0};
     bool valid = false;  ///< false: the table was empty or malformed (black)
 
     ~SkyTextures();
@@ -28,7 +30,7 @@ struct SkyTextures {
 };
 
 /// Cosine-weighted sky irradiance on an upward surface from one table,
-/// E_sky = E * integral over the upper hemisphere of (P_R I_R + P_M I_M) v.y
+/// E_sky = E * integral over the upper hemisphere of (P_R I_R + P_M I_M + I_ms) v.y
 /// dOmega, by the midpoint rule on a 64 x 16 grid of directions sampled with
 /// sampleSkyTable.
 glm::dvec3 skyIrradiance(const SkyTable& table, double mieAnisotropy, const glm::dvec3& illuminance);

@@ -76,15 +76,15 @@ float exponentialOpticalDepth(float b, float c, float height, float rise, float 
 }
 
 /// The sky's fog colour in direction v (unit): sum over sun and moon of
-/// E (P_R(mu) I_R,horizon + P_M(mu, g) I_M,horizon) (FogScene::fogColour).
+/// E (P_R(mu) I_R,horizon + P_M(mu, g) I_M,horizon + I_ms,horizon) (FogScene::fogColour).
 vec3 skyFogColour(vec3 v) {
     float g = frame.mieAnisotropy;
     float muSun = dot(v, frame.sunDirection);
     float muMoon = dot(v, frame.moonDirection);
     return frame.sunIlluminanceSpace * (rayleighPhase(muSun) * frame.sunHorizonRayleigh +
-                                            miePhase(muSun, g) * frame.sunHorizonMie) +
+                                            miePhase(muSun, g) * frame.sunHorizonMie + frame.sunHorizonMultiple) +
            frame.moonIlluminanceSpace * (rayleighPhase(muMoon) * frame.moonHorizonRayleigh +
-                                             miePhase(muMoon, g) * frame.moonHorizonMie);
+                                             miePhase(muMoon, g) * frame.moonHorizonMie + frame.moonHorizonMultiple);
 }
 
 /// Colour of fog in a colour mode (0 sky, 1 tinted, 2 custom; FogColourMode).

@@ -17,7 +17,7 @@
 //                       atmosphere E, rgb), <light>Illuminance (reaching the
 //                       ground, rgb), <light>DiscInverseSolidAngle (1 / the
 //                       disc's solid angle [1/sr]), <light>HorizonRayleigh /
-//                       Mie (phase-less horizon averages I_R, I_M),
+//                       Mie / Multiple (horizon averages I_R, I_M, I_ms),
 //                       <light>TableAzimuth (the table's light azimuth [rad])
 //   mieAnisotropy       Cornette-Shanks g of the sky and fog colour
 //   skyAmbient          cosine-weighted sky irradiance on an upward surface
@@ -98,6 +98,10 @@ layout(std140, binding = 0) uniform FrameBlock {
     float padPole;
     vec3 starTransmittance;
     float padStarTransmittance;
+    vec3 sunHorizonMultiple;
+    float padSunMultiple;
+    vec3 moonHorizonMultiple;
+    float padMoonMultiple;
 } frame;
 
 // Ray from the eye to the far plane at normalised device coordinates ndc

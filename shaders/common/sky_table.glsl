@@ -16,6 +16,8 @@ layout(binding = 0) uniform sampler2D uSunRayleigh;
 layout(binding = 1) uniform sampler2D uSunMie;
 layout(binding = 2) uniform sampler2D uMoonRayleigh;
 layout(binding = 3) uniform sampler2D uMoonMie;
+layout(binding = 6) uniform sampler2D uSunMultiple;   // I_ms, isotropic (no phase)
+layout(binding = 7) uniform sampler2D uMoonMultiple;
 
 /// Elevation [rad, >= 0] and world azimuth [rad] (from north (-Z) towards
 /// east (+X); straight up gives 0) of direction v. `accurate` uses
@@ -53,22 +55,23 @@ vec2 skyTableTexel(vec3 v, float lightAzimuth, vec2 size) {
 /// the azimuth and GL_CLAMP_TO_EDGE the rows, which is sampleSkyTable().
 vec3 sampleTable(sampler2D table, vec2 texel, vec2 size) { return texture(table, (texel + 0.5) / size).rgb; }
 
-vec3 lightSky(sampler2D rayleigh, sampler2D mie, vec3 v, vec2 angles, vec3 lightDirection, float lightAzimuth,
-              vec2 size, vec3 illuminance) {
+vec3 lightSky(sampler2D rayleigh, sampler2D mie, sampler2D multiple, vec3 v, vec2 angles, vec3 lightDirection,
+              float lightAzimuth, vec2 size, vec3 illuminance) {
     if (all(equal(illuminance, vec3(0.0)))) return vec3(0.0);
     vec2 texel = skyTableTexelAt(angles, lightAzimuth, size);
     float mu = dot(v, lightDirection);
     return illuminance * (rayleighPhase(mu) * sampleTable(rayleigh, texel, size) +
-                          miePhase(mu, frame.mieAnisotropy) * sampleTable(mie, texel, size));
+                          miePhase(mu, frame.mieAnisotropy) * sampleTable(mie, texel, size) +
+                          sampleTable(multiple, texel, size));
 }
 
 /// Sky radiance in direction v (unit) from both tables, without the discs;
 /// `accurate` as in skyAngles.
 vec3 skyRadiance(vec3 v, bool accurate) {
     vec2 angles = skyAngles(v, accurate);
-    return lightSky(uSunRayleigh, uSunMie, v, angles, frame.sunDirection, frame.sunTableAzimuth,
+    return lightSky(uSunRayleigh, uSunMie, uSunMultiple, v, angles, frame.sunDirection, frame.sunTableAzimuth,
                     vec2(frame.sunTableColumns, frame.sunTableRows), frame.sunIlluminanceSpace) +
-           lightSky(uMoonRayleigh, uMoonMie, v, angles, frame.moonDirection, frame.moonTableAzimuth,
+           lightSky(uMoonRayleigh, uMoonMie, uMoonMultiple, v, angles, frame.moonDirection, frame.moonTableAzimuth,
                     vec2(frame.moonTableColumns, frame.moonTableRows), frame.moonIlluminanceSpace);
 }
 

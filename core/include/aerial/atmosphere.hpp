@@ -47,6 +47,11 @@ struct AtmosphereParams {
     double ozoneCenterHeight = 25000.0;
     /// Full width of the ozone tent [m] (density 0 at centre +- width/2). Default 30 000.
     double ozoneWidth = 30000.0;
+
+    /// Lambertian albedo of the ground [0..1], RGB: the ground reflects the
+    /// sun into the sky's higher scattering orders (the multiple-scattering
+    /// LUT of <aerial/sky.hpp>). Default 0.3 grey.
+    glm::dvec3 groundAlbedo{0.3, 0.3, 0.3};
 };
 
 constexpr double kPi = 3.14159265358979323846;

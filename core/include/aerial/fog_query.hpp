@@ -4,7 +4,7 @@
 // Usage:
 //   aerial::FogSceneDesc desc;
 //   desc.heightFog = fog;  desc.volumes = volumes;  desc.emitters = emitters;
-//   desc.lights[0] = {sunDir, sunIlluminance, sky.horizonRayleigh, sky.horizonMie};
+//   desc.lights[0] = {sunDir, sunIlluminance, sky.horizonRayleigh, sky.horizonMie, sky.horizonMultiple};
 //   aerial::FogScene scene(desc);                    // builds the BVH once
 //   aerial::FogQueryResult r = scene.query(camera, glassPane);
 //   // shade the pane: L = L_pane * r.transmittance + r.inScatter
@@ -53,6 +53,7 @@ struct FogLight {
     glm::dvec3 illuminance{0.0};          ///< E, RGB (0 turns the light off)
     glm::dvec3 horizonRayleigh{0.0};      ///< SkyTable::horizonRayleigh for this light
     glm::dvec3 horizonMie{0.0};           ///< SkyTable::horizonMie for this light
+    glm::dvec3 horizonMultiple{0.0};      ///< SkyTable::horizonMultiple for this light (isotropic)
 };
 
 struct FogSceneDesc {
@@ -116,7 +117,7 @@ public:
 
     /// The fog colour of the sky in a view direction (global fog's L_fog):
     /// sum over the lights of E (P_R(mu) horizonRayleigh + P_M(mu, g)
-    /// horizonMie), mu = dot(v, light direction). The direction need not be
+    /// horizonMie + horizonMultiple), mu = dot(v, light direction). The direction need not be
     /// unit (zero or non-finite means +Y).
     glm::dvec3 fogColour(const glm::dvec3& viewDirection) const;
 

@@ -1,5 +1,6 @@
-// aerial/sky.hpp — the Nishita 1993 single-scattering sky, solved on the CPU
-// into a hemisphere table that the renderer (or a game) samples per pixel.
+// aerial/sky.hpp — the Nishita 1993 single-scattering sky with Hillaire 2020
+// multiple scattering, solved on the CPU into a hemisphere table that the
+// renderer (or a game) samples per pixel.
 //
 // Usage:
 //   aerial::SkySolver solver;                       // 128 x 64 x 32, all cores
@@ -16,9 +17,30 @@
 // the upper hemisphere the two phase-less single-scattering integrals
 //   I_R(v) = integral beta_R(h(s)) T(viewer -> x(s)) T(x(s) -> light) ds
 //   I_M(v) = integral beta_M(h(s)) T(viewer -> x(s)) T(x(s) -> light) ds
-// (RGB each, dimensionless), so that the radiance is
-//   L(v) = E * (P_R(mu) I_R(v) + P_M(mu) I_M(v)),  mu = dot(v, light),
-// with the phase functions applied per pixel.
+// (RGB each, dimensionless) and the multiple scattering, already isotropic,
+//   I_ms(v) = integral (beta_R + beta_M)(h(s)) T(viewer -> x(s)) Psi_ms(h(x), mu_s(x)) ds
+// (RGB, [1/sr]), so that the radiance is
+//   L(v) = E * (P_R(mu) I_R(v) + P_M(mu) I_M(v) + I_ms(v)),  mu = dot(v, light),
+// with the phase functions applied per pixel. The single-scattering channels
+// do not depend on the multiple scattering (they stay checkable against
+// their exact integral, sky_reference.hpp).
+//
+// Multiple scattering (Hillaire 2020, "A Scalable and Production Ready Sky
+// and Atmosphere Rendering Technique", section 5.5, eq. 5-10): Psi_ms(h, mu_s)
+// is the radiance per unit sun illuminance [1/sr] that all orders >= 2 add at
+// height h for a sun of zenith cosine mu_s, assuming isotropic scattering of
+// the second order and a geometric series of the higher ones:
+//   Psi_ms = L_2nd / (1 - f_ms), L_2nd the second order from 64 directions
+// (single scattering of the sun along each ray to the ground or the top, plus
+// the ground's Lambertian bounce with AtmosphereParams::groundAlbedo) and f_ms
+// the transfer (the same integral of unit isotropic in-scattering). The LUT
+// (MultipleScatteringTable) has 25 heights (the shells of 24 equal-mass
+// layers from the ground to the top) x 32 sun cosines (mu = sign(x) x^2, x
+// uniform in [-1, 1]: dense near the horizon). It depends only on the
+// atmosphere and is cached with the optical-depth table. Along a view ray it
+// is taken at each shell (height of the shell, the sun's zenith cosine where
+// the ray crosses it), linear within a layer, times the layer's exact
+// integral of beta_s T(viewer -> s).
 //
 // Table mapping (the one contract between the solver and every sampler):
 //   * rows j = 0..elevationCount-1 hold elevation
@@ -33,7 +55,7 @@
 //   * texel (i, j) is stored at index (j * azimuthCount + i) * 3 (RGB, float).
 //   Directions below the horizon use row 0.
 //
-// Horizon average (SkyTable::horizonRayleigh / horizonMie): row 0 only
+// Horizon average (SkyTable::horizonRayleigh / horizonMie / horizonMultiple): row 0 only
 // (elevation exactly 0), all azimuthCount columns with equal weight
 // 1 / azimuthCount, i.e. the azimuthal mean of the horizon ring.
 #pragma once
@@ -72,6 +94,20 @@ struct SkySolverDesc {
     /// horizon; 0 = 128, 8..kMaxOpticalDepthAngles (4096).
     int opticalDepthAngles = 0;
     int threadCount = 0;  ///< threads incl. the caller; 0 = all hardware threads, 1 = caller only
+    /// True: no multiple scattering (SkyTable::multiple stays 0, no LUT is
+    /// built); for comparisons and benchmarks. Default false.
+    bool singleScatteringOnly = false;
+};
+
+/// The multiple-scattering LUT Psi_ms (Hillaire 2020, eq. 10) of the cached
+/// atmosphere: radiance per unit sun illuminance [1/sr] added by all
+/// scattering orders >= 2 at a height for a sun zenith cosine.
+struct MultipleScatteringTable {
+    int heightCount = 0;          ///< rows
+    int cosineCount = 0;          ///< columns
+    std::vector<double> heights;  ///< [heightCount] height of each row above the ground [m]
+    std::vector<double> cosines;  ///< [cosineCount] the sun's zenith cosine of each column
+    std::vector<float> psi;       ///< RGB at (row * cosineCount + column) * 3
 };
 
 /// The solved hemisphere table for one light (sun or moon).
@@ -80,10 +116,12 @@ struct SkyTable {
     int elevationCount = 0;
     std::vector<float> rayleigh;  ///< I_R, RGB per texel (see mapping above)
     std::vector<float> mie;       ///< I_M, RGB per texel
-    /// Average of the horizon row(s), phase-less: the colour of far fog
-    /// is E * (P_R(mu) horizonRayleigh + P_M(mu) horizonMie).
+    std::vector<float> multiple;  ///< I_ms [1/sr], RGB per texel (isotropic: no phase to apply)
+    /// Average of the horizon row(s): the colour of far fog is
+    /// E * (P_R(mu) horizonRayleigh + P_M(mu) horizonMie + horizonMultiple).
     glm::dvec3 horizonRayleigh{0.0};
     glm::dvec3 horizonMie{0.0};
+    glm::dvec3 horizonMultiple{0.0};
     /// The light direction (unit, from the scene) the table was solved for.
     glm::dvec3 lightDirection{0.0, 1.0, 0.0};
     /// Azimuth of the light [rad], from north (-Z) towards east (+X).
@@ -96,27 +134,31 @@ struct SkyTable {
 struct SkySample {
     glm::dvec3 rayleigh{0.0};
     glm::dvec3 mie{0.0};
+    glm::dvec3 multiple{0.0};  ///< 0 where the table has no multiple channel
 };
 
 /// Table lookup for a unit view direction (world space).
 SkySample sampleSkyTable(const SkyTable& table, const glm::dvec3& viewDirection);
 
 /// Radiance [same unit as illuminance / sr] in a view direction: the table
-/// sample with both phase functions applied for that direction.
+/// sample with both phase functions applied for that direction, plus the
+/// multiple scattering: E (P_R I_R + P_M I_M + I_ms).
 glm::dvec3 skyRadiance(const SkyTable& table, double mieAnisotropy, const glm::dvec3& viewDirection,
                        const glm::dvec3& illuminance);
 
 /// Colour of far fog seen in a view direction: the horizon averages with the
-/// per-direction phase functions.
+/// per-direction phase functions, E (P_R horizonRayleigh + P_M horizonMie +
+/// horizonMultiple).
 glm::dvec3 horizonFogRadiance(const SkyTable& table, double mieAnisotropy, const glm::dvec3& viewDirection,
                               const glm::dvec3& illuminance);
 
 /// The Nishita 1993 solver: a 2D optical-depth table (height x light zenith
 /// angle, Rayleigh, Mie and ozone) and integration over exponentially
-/// distributed layers along each view ray. Multithreaded (threads made once,
+/// distributed layers along each view ray, plus Hillaire 2020 multiple
+/// scattering (the Psi_ms LUT, built with the optical-depth table). Multithreaded (threads made once,
 /// in the constructor); allocates nothing per solve. Single-threaded,
 /// multi-threaded and amortised solves give bit-identical tables. The
-/// optical-depth table is kept while the AtmosphereParams stay bitwise equal,
+/// optical-depth table and the Psi_ms LUT are kept while the AtmosphereParams stay bitwise equal,
 /// so a moving sun only re-solves the hemisphere. Earth shadow: where the ray
 /// from a point to the light hits the planet, that point is unlit (the
 /// transmittance to the light is 0), also for a light below the horizon.
@@ -141,9 +183,13 @@ public:
     /// True while an amortised solve is in progress.
     bool solving() const;
 
-    /// Forgets the cached optical-depth table, so the next solve rebuilds it
-    /// even if the AtmosphereParams are bitwise unchanged (benchmarks).
+    /// Forgets the cached optical-depth table and Psi_ms LUT, so the next solve
+    /// rebuilds them even if the AtmosphereParams are bitwise unchanged (benchmarks).
     void invalidateCache();
+
+    /// A copy of the Psi_ms LUT of the last atmosphere built (empty before
+    /// the first solve and with singleScatteringOnly).
+    MultipleScatteringTable multipleScatteringTable() const;
 
     /// The last completed table (zeros, generation 0, before the first).
     const SkyTable& table() const;

@@ -1,0 +1,305 @@
+// sky_multiple.cpp — the multiple-scattering LUT Psi_ms (sky_multiple.hpp;
+// Hillaire 2020, section 5.5).
+#include "sky_multiple.hpp"
+
+#include "sky_layers.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace aerial::detail {
+namespace {
+
+/// Distance from radius r0 along a ray with zenith cosine mu to the shell
+/// r^2 = r0^2 + dr2: the far root for a rising ray (mu >= 0) or the exit
+/// after the perigee (`far`), else the near root of a falling ray; without
+/// cancellation. b2 = (r0 mu)^2 + dr2 >= 0.
+double crossingDistance(double r0, double mu, double dr2, bool far) {
+    const double b = r0 * mu;
+    const double root = std::sqrt(std::max(b * b + dr2, 0.0));
+    if (b >= 0.0) return dr2 > 0.0 ? dr2 / (b + root) : 0.0;  // rising: -b + root
+    return far ? -b + root : -dr2 / (-b + root);              // falling: -b -+ root
+}
+
+/// (1 - e^-tau) / tau: the integral of sigma_s T over a segment per unit scattering depth.
+double transferFactor(double tau) { return tau < 1e-4 ? 1.0 - 0.5 * tau : -std::expm1(-tau) / tau; }
+
+}  // namespace
+
+double msCosineOfColumn(int column) {
+    const double x = -1.0 + 2.0 * column / (kMsCosines - 1);
+    return x * std::abs(x);
+}
+
+MsScratch::MsScratch() {
+    depthRow.resize(kMsAngles);
+    crossing.assign(kMsMaxCrossings, 0.0);
+    shell.assign(kMsMaxCrossings, 0);
+    for (auto* v : {&nodeS, &nodeR, &nodeM, &nodeO}) v->assign(std::size_t(4) * kMsMaxCrossings, 0.0f);
+    records.assign(std::size_t(2) * 7 * kMsCombos, 0.0f);
+    acc.assign(std::size_t(3) * kMsCombos, 0.0f);
+    ground.assign(std::size_t(3) * kMsCombos, 0.0);
+}
+
+MultipleScatteringLut::MultipleScatteringLut() {
+    height_.assign(kMsRows, 0.0);
+    horizonCos_.assign(kMsRows, 0.0);
+    angleScale_.assign(kMsRows, 0.0f);
+    depth_.assign(std::size_t(3) * kMsRows * kMsAngles, 0.0f);
+    psi_.assign(std::size_t(kMsRows) * kMsCosines * 3, 0.0f);
+    comboP_.assign(kMsCombos, 0.0f);
+    comboQ_.assign(kMsCombos, 0.0f);
+    for (int j = 0; j < kMsCosines; ++j) {
+        const double mu = msCosineOfColumn(j);
+        const double sinS = std::sqrt(std::max(1.0 - mu * mu, 0.0));
+        for (int a = 0; a < kMsAzimuths; ++a) {
+            // Azimuth midpoints (a + 1/2) 2 pi / 8 in (0, pi); their mirrors give the other 4.
+            const double phi = (a + 0.5) * kPi / kMsAzimuths;
+            comboP_[std::size_t(j * kMsAzimuths + a)] = float(mu);
+            comboQ_[std::size_t(j * kMsAzimuths + a)] = float(sinS * std::cos(phi));
+        }
+    }
+}
+
+void MultipleScatteringLut::setAtmosphere(const AtmosphereParams& air) {
+    air_ = air;
+    density_ = densityConstants(air);
+    const double top = std::max(air.atmosphereRadius - air.planetRadius, 0.0);
+    equalMassShells(air, 0.0, top, kMsLayers, height_.data());
+    for (int k = 0; k < kMsRows; ++k) {
+        horizonCos_[std::size_t(k)] = horizonCosine(air, height_[std::size_t(k)]);
+        angleScale_[std::size_t(k)] = float(angleScale(kMsAngles, horizonCos_[std::size_t(k)]));
+    }
+    // The ground's share of f_ms: the radiance rho / pi E that the ground
+    // reflects when the sky above it in-scatters unit isotropic luminance,
+    // E = 2 pi integral_0^1 L_f(mu) mu dmu over the upward zenith bands.
+    MsScratch& s = groundScratch_;
+    double irradiance[3] = {0.0, 0.0, 0.0};
+    for (int z = 0; z < kMsZeniths / 2; ++z) {
+        const double cosT = 1.0 - (2.0 * z + 1.0) / kMsZeniths;
+        double lf[3], endT[3];
+        bool ground = false;
+        rayTransfer(0, cosT, s, lf, endT, ground);
+        for (int c = 0; c < 3; ++c) irradiance[c] += 2.0 * kPi * lf[c] * cosT * (2.0 / kMsZeniths);
+    }
+    for (int c = 0; c < 3; ++c)
+        groundReflection_[c] = std::clamp(air.groundAlbedo[c], 0.0, 1.0) / kPi * irradiance[c];
+}
+
+void MultipleScatteringLut::buildDepthRow(int row, MsScratch& s) {
+    const std::size_t plane = std::size_t(kMsRows) * kMsAngles;
+    float* out = depth_.data() + std::size_t(row) * kMsAngles;
+    opticalDepthRow(air_, density_, height_[std::size_t(row)], horizonCos_[std::size_t(row)], kMsAngles,
+                    s.depthRow, out, out + plane, out + 2 * plane);
+}
+
+// The crossings of the ray from shell `row` with zenith cosine cosT with
+// the shells, in order (s.crossing, s.shell; the first is the start), and
+// the densities at 4 Gauss-Legendre nodes per segment between them.
+int MultipleScatteringLut::rayCrossings(int row, double cosT, MsScratch& s, bool& hitsGround) const {
+    const double rg = air_.planetRadius;
+    const double hk = height_[std::size_t(row)];
+    const double rk = rg + hk;
+    const double sinT = std::sqrt(std::max(1.0 - cosT * cosT, 0.0));
+    // Crossings with the shells, in order along the ray.
+    int n = 0;
+    auto push = [&](double dist, int j) {
+        s.crossing[std::size_t(n)] = dist;
+        s.shell[std::size_t(n)] = j;
+        ++n;
+    };
+    push(0.0, row);
+    auto dr2Of = [&](int j) {
+        const double hj = height_[std::size_t(j)];
+        return (hj - hk) * (rg + hj + rk);
+    };
+    hitsGround = false;
+    if (cosT >= 0.0) {
+        for (int j = row + 1; j < kMsRows; ++j) push(crossingDistance(rk, cosT, dr2Of(j), true), j);
+    } else {
+        hitsGround = rk * sinT < rg;
+        int lowest = row;
+        for (int j = row - 1; j >= 0; --j) {
+            const double b = rk * cosT;
+            if (b * b + dr2Of(j) < 0.0) break;  // the perigee lies above shell j
+            push(crossingDistance(rk, cosT, dr2Of(j), false), j);
+            lowest = j;
+        }
+        if (!hitsGround) {
+            for (int j = lowest; j < kMsRows; ++j) push(crossingDistance(rk, cosT, dr2Of(j), true), j);
+        }
+    }
+
+    // Densities at 4 Gauss-Legendre nodes per segment.
+    hitsGround = hitsGround && cosT < 0.0;
+    const int segments = n - 1;
+    for (int i = 0; i < segments; ++i) {
+        const double a = s.crossing[std::size_t(i)], b = s.crossing[std::size_t(i) + 1];
+        for (int g = 0; g < 4; ++g) s.nodeS[std::size_t(4 * i + g)] = float(a + (b - a) * kGaussT[g]);
+    }
+    if (segments > 0) {
+        NodeKernelArgs nodes{};
+        nodes.count = 4 * segments;
+        nodes.viewerHeight = float(hk);
+        nodes.r0 = float(rk);
+        nodes.twoR0Mu = float(2.0 * rk * cosT);
+        nodes.density = density_;
+        nodes.s = s.nodeS.data();
+        nodes.rayleigh = s.nodeR.data();
+        nodes.mie = s.nodeM.data();
+        nodes.ozone = s.nodeO.data();
+        nodeKernel(nodes);
+    }
+
+    return n;
+}
+
+/// Unit isotropic in-scattering of the rays from shell `row` along cosT:
+/// out = integral sigma_s T ds, and T to the ray's end.
+void MultipleScatteringLut::rayTransfer(int row, double cosT, MsScratch& s, double out[3], double endT[3],
+                                        bool& hitsGround) const {
+    const int n = rayCrossings(row, cosT, s, hitsGround);
+    for (int c = 0; c < 3; ++c) {
+        out[c] = 0.0;
+        endT[c] = 1.0;
+    }
+    for (int i = 0; i + 1 < n; ++i) {
+        double scatter[3], tau[3];
+        segmentDepths(i, s, scatter, tau);
+        for (int c = 0; c < 3; ++c) {
+            out[c] += scatter[c] * endT[c] * transferFactor(tau[c]);
+            endT[c] *= std::exp(-tau[c]);
+        }
+    }
+}
+
+/// Scattering and extinction optical depths of segment i of the last rayCrossings.
+void MultipleScatteringLut::segmentDepths(int i, const MsScratch& s, double scatter[3], double tau[3]) const {
+    const double len = s.crossing[std::size_t(i) + 1] - s.crossing[std::size_t(i)];
+    double mR = 0.0, mM = 0.0, mO = 0.0;
+    for (int g = 0; g < 4; ++g) {
+        mR += kGaussW[g] * s.nodeR[std::size_t(4 * i + g)];
+        mM += kGaussW[g] * s.nodeM[std::size_t(4 * i + g)];
+        mO += kGaussW[g] * s.nodeO[std::size_t(4 * i + g)];
+    }
+    mR *= len;
+    mM *= len;
+    mO *= len;
+    for (int c = 0; c < 3; ++c) {
+        scatter[c] = air_.rayleighScattering[c] * mR + air_.mieScattering[c] * mM;
+        tau[c] = air_.rayleighScattering[c] * mR + air_.mieExtinction[c] * mM + air_.ozoneAbsorption[c] * mO;
+    }
+}
+
+void MultipleScatteringLut::buildPsiRow(int row, MsScratch& s) {
+    const double rg = air_.planetRadius;
+    const double hk = height_[std::size_t(row)];
+    const double rk = rg + hk;
+    const std::size_t plane = std::size_t(kMsRows) * kMsAngles;
+    std::fill(s.acc.begin(), s.acc.end(), 0.0f);
+    std::fill(s.ground.begin(), s.ground.end(), 0.0);
+    double transfer[3] = {0.0, 0.0, 0.0};  // sum over the zenith bands of the unit in-scattering
+
+    for (int z = 0; z < kMsZeniths; ++z) {
+        const double cosT = 1.0 - (2.0 * z + 1.0) / kMsZeniths;
+        const double sinT = std::sqrt(std::max(1.0 - cosT * cosT, 0.0));
+        bool hitsGround = false;
+        const int n = rayCrossings(row, cosT, s, hitsGround);
+        const int segments = n - 1;
+
+        // The sun seen from crossing i at shell j: zenith cosine there
+        // (r_k mu_s + s omega.sun) / r_j = alpha P + beta Q.
+        auto crossingArgs = [&](int i, float* record) {
+            const int j = s.shell[std::size_t(i)];
+            const double dist = s.crossing[std::size_t(i)];
+            const double rj = rg + height_[std::size_t(j)];
+            MsCrossingArgs c{};
+            c.count = kMsCombos;
+            c.alpha = float((rk + dist * cosT) / rj);
+            c.beta = float(dist * sinT / rj);
+            c.horizonCos = float(horizonCos_[std::size_t(j)]);
+            c.angleScale = angleScale_[std::size_t(j)];
+            c.knee = float(kAngleKnee);
+            c.maxU = float(kMsAngles - 1) - 1e-3f;
+            c.p = comboP_.data();
+            c.q = comboQ_.data();
+            c.depth0 = depth_.data() + std::size_t(j) * kMsAngles;
+            c.depth1 = c.depth0 + plane;
+            c.depth2 = c.depth0 + 2 * plane;
+            c.record = record;
+            return c;
+        };
+        float* record[2] = {s.records.data(), s.records.data() + std::size_t(7) * kMsCombos};
+        msCrossingKernel(crossingArgs(0, record[0]));
+        double viewT[3] = {1.0, 1.0, 1.0};
+        for (int i = 0; i < segments; ++i) {
+            double scatter[3], tau[3];
+            segmentDepths(i, s, scatter, tau);
+            msCrossingKernel(crossingArgs(i + 1, record[(i + 1) % 2]));
+            MsSegmentArgs seg{};
+            seg.count = kMsCombos;
+            seg.a = record[i % 2];
+            seg.b = record[(i + 1) % 2];
+            seg.acc = s.acc.data();
+            double segT[3];
+            for (int c = 0; c < 3; ++c) {
+                seg.weight[c] = float(scatter[c] * viewT[c]);
+                seg.tauView[c] = float(tau[c]);
+                segT[c] = std::exp(-tau[c]);
+                transfer[c] += scatter[c] * viewT[c] * transferFactor(tau[c]);
+            }
+            msSegmentKernel(seg);
+            for (int c = 0; c < 3; ++c) viewT[c] *= segT[c];
+        }
+        if (hitsGround) {
+            // The ground reflects the unit field too (f_ms's ground share).
+            for (int c = 0; c < 3; ++c) transfer[c] += viewT[c] * groundReflection_[c];
+            // The last crossing is the ground (shell 0, horizon cosine 0): its
+            // margin is the sun's zenith cosine there.
+            const float* r = record[segments % 2];
+            for (int c = 0; c < 3; ++c) {
+                for (int m = 0; m < kMsCombos; ++m) {
+                    const double mu = std::max(double(r[6 * kMsCombos + m]), 0.0);
+                    s.ground[std::size_t(c * kMsCombos + m)] += viewT[c] * r[(3 + c) * kMsCombos + m] * mu;
+                }
+            }
+        }
+    }
+
+    // Means over the 64 directions: each combination stands for 2 of them.
+    const double directions = double(kMsZeniths) * 2.0 * kMsAzimuths;
+    for (int c = 0; c < 3; ++c) {
+        const double fms = std::clamp(transfer[c] / kMsZeniths, 0.0, 0.999);
+        const double albedo = std::clamp(air_.groundAlbedo[c], 0.0, 1.0);
+        for (int j = 0; j < kMsCosines; ++j) {
+            double sum = 0.0;
+            for (int a = 0; a < kMsAzimuths; ++a) {
+                const std::size_t m = std::size_t(c * kMsCombos + j * kMsAzimuths + a);
+                sum += 2.0 * (double(s.acc[m]) / (4.0 * kPi) + s.ground[m] * albedo / kPi);
+            }
+            const double l2 = sum / directions;
+            const double value = l2 / (1.0 - fms);
+            psi_[(std::size_t(row) * kMsCosines + j) * 3 + c] = std::isfinite(value) ? float(value) : 0.0f;
+        }
+    }
+}
+
+void MultipleScatteringLut::resample(const double* heights, int count, float* out) const {
+    for (int k = 0; k < count; ++k) {
+        const double h = heights[k];
+        int i = 0;
+        while (i + 2 < kMsRows && height_[std::size_t(i) + 1] < h) ++i;
+        const double h0 = height_[std::size_t(i)], h1 = height_[std::size_t(i) + 1];
+        const double f = h1 > h0 ? std::clamp((h - h0) / (h1 - h0), 0.0, 1.0) : 0.0;
+        for (int c = 0; c < 3; ++c) {
+            float* dst = out + (std::size_t(c) * count + k) * kMsCosines;
+            for (int j = 0; j < kMsCosines; ++j) {
+                const double a = psi_[(std::size_t(i) * kMsCosines + j) * 3 + c];
+                const double b = psi_[((std::size_t(i) + 1) * kMsCosines + j) * 3 + c];
+                dst[j] = float(a + f * (b - a));
+            }
+        }
+    }
+}
+
+}  // namespace aerial::detail

@@ -1,0 +1,241 @@
+// test_sky_multiple.cpp — the sky's multiple scattering (Hillaire 2020
+// Psi_ms LUT, <aerial/sky.hpp>): the solver's total radiance against a Monte
+// Carlo path tracer written apart from it (tests/support/ms_reference.hpp)
+// plus the exact single-scattering integral, and the LUT's properties
+// (finite, positive, zero without scattering, ground albedo ordering,
+// bit-identical across thread counts and amortised solves).
+//
+// Error metric of the reference comparison: per direction and channel
+// |L_solver - L_ref| / max(L_ref, 1% of the brightest reference radiance of
+// that sun over the compared directions and channels); the worst per sun is
+// printed. Under AddressSanitizer / UndefinedBehaviorSanitizer builds (or
+// with AERIAL_TEST_QUICK set) the comparison runs a smaller configuration:
+// 3 sun elevations and 128 paths per direction instead of 7 and 512.
+#include <aerial/atmosphere.hpp>
+#include <aerial/sky.hpp>
+#include <aerial/sky_reference.hpp>
+
+#include "ms_reference.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <vector>
+
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_UNDEFINED__)
+#define AERIAL_SANITIZED 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(undefined_behavior_sanitizer)
+#define AERIAL_SANITIZED 1
+#endif
+#endif
+
+namespace aerial {
+namespace {
+
+constexpr double kDeg = kPi / 180.0;
+
+glm::dvec3 direction(double elevationDeg, double azimuthDeg) {
+    const double e = elevationDeg * kDeg, a = azimuthDeg * kDeg;
+    return {std::sin(a) * std::cos(e), std::sin(e), -std::cos(a) * std::cos(e)};
+}
+
+bool quick() {
+#ifdef AERIAL_SANITIZED
+    return true;
+#else
+    return std::getenv("AERIAL_TEST_QUICK") != nullptr;
+#endif
+}
+
+struct SunCase {
+    double elevation;
+    double tolerance;  // measured worst (512 paths) plus margin, see the file comment and the report
+};
+
+// The tolerances are regression bounds, not the goal of 5%: Hillaire's
+// isotropic second order and geometric series under-estimate the horizon of
+// a low sun (see the printed table; tests/support/ms_reference.hpp).
+const SunCase kSuns[] = {{-6.0, 0.75}, {-2.0, 0.45}, {0.0, 0.80}, {2.0, 0.40},
+                         {10.0, 0.22}, {30.0, 0.13}, {90.0, 0.06}};
+
+TEST(SkyMultiple, TotalRadianceAgainstPathTracer) {
+    const AtmosphereParams air;
+    const reference::MultipleScatteringTracer tracer(air);
+    SkyReferenceSettings single;
+    single.viewSteps = 512;
+    single.lightSteps = 128;
+    const int paths = quick() ? 128 : 512;
+    SkySolver solver;
+    std::printf(
+        "[ sky ms  ] sun elev | worst error | at (elev, azimuth from the sun) | channel | "
+        "solver / reference total | multiple / total (ref)\n");
+    for (const SunCase& sun : kSuns) {
+        if (quick() && sun.elevation != -2.0 && sun.elevation != 10.0 && sun.elevation != 90.0) continue;
+        const glm::dvec3 light = direction(sun.elevation, 0.0);
+        solver.solve(air, light);
+        struct Probe {
+            double el, az;
+            glm::dvec3 solver, ref, ms;
+        };
+        std::vector<Probe> probes;
+        double brightest = 0.0;
+        for (double el : {0.0, 2.0, 10.0, 45.0, 90.0}) {
+            for (double az : {0.0, 90.0, 180.0}) {
+                if (el == 90.0 && az > 0.0) continue;
+                const glm::dvec3 v = direction(el, az);
+                Probe p{el, az, skyRadiance(solver.table(), air.mieAnisotropy, v, glm::dvec3(1.0)),
+                        glm::dvec3(0.0), glm::dvec3(0.0)};
+                p.ms = tracer.multipleScattering(v, light, paths, 1234 + probes.size());
+                p.ref = referenceSkyRadiance(air, v, light, glm::dvec3(1.0), single) + p.ms;
+                for (int c = 0; c < 3; ++c) brightest = std::max(brightest, p.ref[c]);
+                probes.push_back(p);
+            }
+        }
+        double worst = 0.0;
+        const Probe* at = nullptr;
+        int channel = 0;
+        for (const Probe& p : probes) {
+            for (int c = 0; c < 3; ++c) {
+                const double err = std::abs(p.solver[c] - p.ref[c]) / std::max(p.ref[c], 0.01 * brightest);
+                if (err > worst) {
+                    worst = err;
+                    at = &p;
+                    channel = c;
+                }
+            }
+        }
+        ASSERT_NE(at, nullptr);
+        std::printf(
+            "[ sky ms  ] %+6.1f   | %9.3f   | (%4.0f, %4.0f)                   | %c       | %.4g / %.4g | "
+            "%.2f\n",
+            sun.elevation, worst, at->el, at->az, "RGB"[channel], at -> solver[channel], at -> ref[channel],
+            at -> ms[channel] / at -> ref[channel]);
+        EXPECT_LT(worst, sun.tolerance) << "sun " << sun.elevation;
+    }
+}
+
+TEST(SkyMultiple, LutIsFiniteAndPositive) {
+    AtmosphereParams air;
+    SkySolver solver;
+    solver.solve(air, direction(10.0, 0.0));
+    const MultipleScatteringTable lut = solver.multipleScatteringTable();
+    ASSERT_GT(lut.heightCount, 1);
+    ASSERT_GT(lut.cosineCount, 1);
+    ASSERT_EQ(lut.psi.size(), std::size_t(lut.heightCount) * lut.cosineCount * 3);
+    for (float x : lut.psi) {
+        ASSERT_TRUE(std::isfinite(x));
+        ASSERT_GE(x, 0.0f);
+    }
+    // A sun above the horizon lights every height: strictly positive there.
+    for (int row = 0; row < lut.heightCount; ++row) {
+        for (int j = 0; j < lut.cosineCount; ++j) {
+            if (!(lut.cosines[std::size_t(j)] > 0.05)) continue;
+            for (int c = 0; c < 3; ++c) {
+                EXPECT_GT(lut.psi[(std::size_t(row) * lut.cosineCount + j) * 3 + c], 0.0f) << row << " " << j;
+            }
+        }
+    }
+    EXPECT_DOUBLE_EQ(lut.heights.front(), 0.0);
+    EXPECT_DOUBLE_EQ(lut.heights.back(), air.atmosphereRadius - air.planetRadius);
+    EXPECT_DOUBLE_EQ(lut.cosines.front(), -1.0);
+    EXPECT_DOUBLE_EQ(lut.cosines.back(), 1.0);
+    for (float x : solver.table().multiple) ASSERT_TRUE(std::isfinite(x) && x >= 0.0f);
+}
+
+TEST(SkyMultiple, ZeroWithoutScattering) {
+    AtmosphereParams air;
+    air.rayleighScattering = glm::dvec3(0.0);
+    air.mieScattering = glm::dvec3(0.0);
+    SkySolver solver;
+    solver.solve(air, direction(20.0, 0.0));
+    for (float x : solver.table().multiple) ASSERT_EQ(x, 0.0f);
+    EXPECT_EQ(solver.table().horizonMultiple, glm::dvec3(0.0));
+}
+
+TEST(SkyMultiple, GroundAlbedoBrightensTheSky) {
+    AtmosphereParams dark, bright;
+    dark.groundAlbedo = glm::dvec3(0.0);
+    bright.groundAlbedo = glm::dvec3(1.0);
+    SkySolver a, b;
+    a.solve(dark, direction(30.0, 0.0));
+    b.solve(bright, direction(30.0, 0.0));
+    const std::vector<float>& x = a.table().multiple;
+    const std::vector<float>& y = b.table().multiple;
+    ASSERT_EQ(x.size(), y.size());
+    for (std::size_t i = 0; i < x.size(); ++i) ASSERT_LT(x[i], y[i]) << i;
+    // Single scattering does not see the ground.
+    EXPECT_EQ(a.table().rayleigh, b.table().rayleigh);
+    EXPECT_EQ(a.table().mie, b.table().mie);
+}
+
+TEST(SkyMultiple, SingleScatteringChannelsUnchanged) {
+    AtmosphereParams air;
+    SkySolverDesc only;
+    only.singleScatteringOnly = true;
+    SkySolver a, b(only);
+    a.solve(air, direction(3.0, 40.0));
+    b.solve(air, direction(3.0, 40.0));
+    EXPECT_EQ(a.table().rayleigh, b.table().rayleigh);
+    EXPECT_EQ(a.table().mie, b.table().mie);
+    for (float x : b.table().multiple) ASSERT_EQ(x, 0.0f);
+    EXPECT_TRUE(b.multipleScatteringTable().psi.empty());
+}
+
+TEST(SkyMultiple, BitIdenticalAcrossThreadsAndAmortised) {
+    AtmosphereParams air;
+    air.mieScattering = glm::dvec3(12e-6);
+    air.mieExtinction = air.mieScattering / 0.9;
+    const glm::dvec3 light = direction(-3.0, 120.0);
+    SkySolverDesc one;
+    one.threadCount = 1;
+    SkySolverDesc many;
+    many.threadCount = 4;
+    SkySolver a(one), b(many), c(many);
+    a.solve(air, light);
+    b.solve(air, light);
+    c.beginSolve(air, light);
+    while (!c.continueSolve(5)) {
+    }
+    EXPECT_EQ(a.table().multiple, b.table().multiple);
+    EXPECT_EQ(a.table().multiple, c.table().multiple);
+    EXPECT_EQ(a.table().horizonMultiple, b.table().horizonMultiple);
+    EXPECT_EQ(a.multipleScatteringTable().psi, b.multipleScatteringTable().psi);
+    // The cached LUT gives the same result as a rebuilt one.
+    b.solve(air, light);
+    EXPECT_EQ(a.table().multiple, b.table().multiple);
+}
+
+TEST(SkyMultiple, HorizonAverageAndFogColour) {
+    AtmosphereParams air;
+    SkySolver solver;
+    solver.solve(air, direction(6.0, 0.0));
+    const SkyTable& t = solver.table();
+    glm::dvec3 sum(0.0);
+    for (int i = 0; i < t.azimuthCount; ++i)
+        for (int c = 0; c < 3; ++c) sum[c] += t.multiple[std::size_t(i) * 3 + c];
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_GT(t.horizonMultiple[c], 0.0);
+        EXPECT_NEAR(t.horizonMultiple[c], sum[c] / t.azimuthCount, 1e-12 * sum[c]);
+    }
+    // Far fog and the sky: the isotropic term is added as it is.
+    const glm::dvec3 v = direction(0.0, 90.0), e(2.0);
+    const SkySample s = sampleSkyTable(t, v);
+    const glm::dvec3 withMs = skyRadiance(t, air.mieAnisotropy, v, e);
+    SkyTable noMs = t;
+    std::fill(noMs.multiple.begin(), noMs.multiple.end(), 0.0f);
+    noMs.horizonMultiple = glm::dvec3(0.0);
+    const glm::dvec3 without = skyRadiance(noMs, air.mieAnisotropy, v, e);
+    const glm::dvec3 fogWith = horizonFogRadiance(t, air.mieAnisotropy, v, e);
+    const glm::dvec3 fogWithout = horizonFogRadiance(noMs, air.mieAnisotropy, v, e);
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(withMs[c] - without[c], e[c] * s.multiple[c], 1e-12);
+        EXPECT_NEAR(fogWith[c] - fogWithout[c], e[c] * t.horizonMultiple[c], 1e-12);
+    }
+}
+
+}  // namespace
+}  // namespace aerial
