@@ -6,9 +6,10 @@
 //   sky_<NNN>_<HHMM>_sun.exr, sky_<NNN>_<HHMM>_moon.exr
 //       one file per time step per light: the light's hemisphere sky table
 //       (sky.hpp), W x H pixels, half float, ZIP compressed (--compression),
-//       six channels
+//       nine channels
 //         rayleigh.R rayleigh.G rayleigh.B   phase-less Rayleigh integral I_R
 //         mie.R mie.G mie.B                  phase-less Mie integral I_M
+//         multiple.R multiple.G multiple.B   isotropic higher orders I_ms [1/sr]
 //       pixel (x, y) = table texel (column i = x, row j = y): the first line
 //       (y = 0) is the horizon, the last the zenith. Header attributes:
 //       aerialLight ("sun"/"moon"), aerialTimeHours, aerialLightAzimuthRad,
@@ -17,15 +18,17 @@
 //       format, preset, steps and table mapping, and for every step: the
 //       time, the full evaluated state (sun, moon, every parameter, volumes,
 //       emitters: as `aerial eval --json`) and per light its EXR file name,
-//       light direction and azimuth, and horizon averages (the fog colour).
+//       light direction and azimuth, and horizon averages (the fog colour);
+//       how to expose a frame as the preset says ("exposure").
 //
 // Radiance in a world direction v (unit): for each light,
 //   el = asin(max(v.y, 0)), j = (H - 1) sqrt(el / (pi/2))   (quadratic rows)
 //   phi = (atan2(v.x, -v.z) - light_azimuth_rad) mod 2 pi,  i = W phi / (2 pi)
-//   I_R, I_M = bilinear(i, j), the azimuth wrapping;  mu = dot(v, light)
-//   L += E (3/(16 pi) (1 + mu^2) I_R + P_CS(mu, g) I_M),
+//   I_R, I_M, I_ms = bilinear(i, j), the azimuth wrapping;  mu = dot(v, light)
+//   L += E (3/(16 pi) (1 + mu^2) I_R + P_CS(mu, g) I_M + I_ms),
 // E = illuminance_space_rgb of that light, g = parameters.atmosphere.mie.
-// anisotropy. Far fog: the same with horizon_rayleigh / horizon_mie.
+// anisotropy. Far fog: the same with horizon_rayleigh / horizon_mie /
+// horizon_multiple.
 //
 // Writing is atomic: every file is written to a hidden temporary beside
 // it, fsync'ed and renamed into place, and manifest.json is removed first and
@@ -66,8 +69,10 @@ namespace fs = std::filesystem;
 
 constexpr const char* kManifestName = "manifest.json";
 constexpr int kManifestFormatVersion = 1;
-constexpr const char* kChannelNames[6] = {"rayleigh.R", "rayleigh.G", "rayleigh.B",
-                                          "mie.R",      "mie.G",      "mie.B"};
+constexpr int kChannelCount = 9;
+constexpr const char* kChannelNames[kChannelCount] = {"rayleigh.R", "rayleigh.G", "rayleigh.B",
+                                                      "mie.R",      "mie.G",      "mie.B",
+                                                      "multiple.R", "multiple.G", "multiple.B"};
 
 constexpr const char* kRowMapping =
     "row j = EXR line y (y = 0 first) holds elevation el_j = pi/2 * (j / (H - 1))^2 rad above the horizon "
@@ -103,11 +108,13 @@ Imath::half toHalf(float value) {
 void writeSkyExr(const fs::path& path, const SkyTable& table, const char* light, double timeHours,
                  Imf::Compression compression) {
     const int w = table.azimuthCount, h = table.elevationCount;
-    std::vector<Imath::half> pixels(std::size_t(w) * std::size_t(h) * 6);
+    constexpr std::size_t n = kChannelCount;
+    std::vector<Imath::half> pixels(std::size_t(w) * std::size_t(h) * n);
     for (std::size_t texel = 0; texel < std::size_t(w) * std::size_t(h); ++texel) {
         for (int c = 0; c < 3; ++c) {
-            pixels[texel * 6 + std::size_t(c)] = toHalf(table.rayleigh[texel * 3 + std::size_t(c)]);
-            pixels[texel * 6 + 3 + std::size_t(c)] = toHalf(table.mie[texel * 3 + std::size_t(c)]);
+            pixels[texel * n + std::size_t(c)] = toHalf(table.rayleigh[texel * 3 + std::size_t(c)]);
+            pixels[texel * n + 3 + std::size_t(c)] = toHalf(table.mie[texel * 3 + std::size_t(c)]);
+            pixels[texel * n + 6 + std::size_t(c)] = toHalf(table.multiple[texel * 3 + std::size_t(c)]);
         }
     }
     // Encoded in memory, then written atomically (every byte through the
@@ -127,8 +134,8 @@ void writeSkyExr(const fs::path& path, const SkyTable& table, const char* light,
             header.insert("aerialMapping",
                           Imf::StringAttribute(std::string(kRowMapping) + "; " + kColumnMapping));
             Imf::FrameBuffer frame;
-            const std::size_t xStride = sizeof(Imath::half) * 6, yStride = xStride * std::size_t(w);
-            for (int k = 0; k < 6; ++k)
+            const std::size_t xStride = sizeof(Imath::half) * n, yStride = xStride * std::size_t(w);
+            for (int k = 0; k < kChannelCount; ++k)
                 frame.insert(
                     kChannelNames[k],
                     Imf::Slice(Imf::HALF, reinterpret_cast<char*>(pixels.data() + k), xStride, yStride));
@@ -179,7 +186,8 @@ Json lightBakeToJson(const SkyTable& table, const std::string& file) {
             {"light_direction", toJson(table.lightDirection)},
             {"light_azimuth_rad", table.lightAzimuth},
             {"horizon_rayleigh", toJson(table.horizonRayleigh)},
-            {"horizon_mie", toJson(table.horizonMie)}};
+            {"horizon_mie", toJson(table.horizonMie)},
+            {"horizon_multiple", toJson(table.horizonMultiple)}};
 }
 
 int runBake(const BakeOptions& options) {
@@ -252,15 +260,26 @@ int runBake(const BakeOptions& options) {
            "light_azimuth_rad per step and light"},
           {"sampling", "bilinear in (i, j); i wraps, j clamps to [0, H - 1]"},
           {"radiance",
-           "L(v) = sum over sun and moon of E * (P_R(mu) * rayleigh + P_M(mu, g) * mie), mu = dot(v, "
-           "light_direction), E = illuminance_space_rgb, g = parameters.atmosphere.mie.anisotropy"},
+           "L(v) = sum over sun and moon of E * (P_R(mu) * rayleigh + P_M(mu, g) * mie + multiple), mu = "
+           "dot(v, light_direction), E = illuminance_space_rgb, g = parameters.atmosphere.mie.anisotropy"},
           {"phase_rayleigh", "P_R(mu) = 3 / (16 pi) * (1 + mu^2)"},
           {"phase_mie",
            "P_M(mu, g) = 3 / (8 pi) * (1 - g^2) (1 + mu^2) / ((2 + g^2) (1 + g^2 - 2 g mu)^1.5)"},
           {"fog_colour",
-           "far fog seen along v: the radiance formula with horizon_rayleigh / horizon_mie in place of the "
-           "table sample"},
-          {"values", "phase-less single-scattering integrals (dimensionless), scene-linear"}}},
+           "far fog seen along v: the radiance formula with horizon_rayleigh / horizon_mie / "
+           "horizon_multiple in place of the table sample"},
+          {"values",
+           "rayleigh, mie: phase-less single-scattering integrals (dimensionless); multiple: the isotropic "
+           "higher orders (Hillaire 2020), per steradian, phase already applied; scene-linear"}}},
+        {"exposure",
+         {{"nits_per_radiance_unit", kNitsPerRadianceUnit},
+          {"how",
+           "per step, parameters.exposure: mode manual -> EV100 = ev100; automatic -> EV100 = "
+           "clamp(log2(L_avg "
+           "* nits_per_radiance_unit * 100 / 12.5), min_ev100, max_ev100), L_avg the frame's average "
+           "luminance (10-90 % band of a log2 histogram), adapting at adapt_up_per_s / adapt_down_per_s; "
+           "multiply radiance by nits_per_radiance_unit / (1.2 * 2^(EV100 - compensation_ev)) before tone "
+           "mapping (aerial/exposure.hpp)"}}},
         {"steps", steps}};
     writeText(dir / kManifestName, jsonText(manifest) + "\n");
     syncPath(dir, true);

@@ -415,7 +415,8 @@ class Fog(unittest.TestCase):
 
 
 class Bake(unittest.TestCase):
-    CHANNELS = {"rayleigh.R", "rayleigh.G", "rayleigh.B", "mie.R", "mie.G", "mie.B"}
+    CHANNELS = {"rayleigh.R", "rayleigh.G", "rayleigh.B", "mie.R", "mie.G", "mie.B", "multiple.R", "multiple.G",
+                "multiple.B"}
 
     def test_bake_writes_exr_tables_and_a_manifest(self):
         out_dir = os.path.join(WORK, "bake_hazy_sunset")
@@ -457,7 +458,12 @@ class Bake(unittest.TestCase):
                 kind, value = attributes["aerialLight"]
                 self.assertEqual(value.decode(), light)
                 self.assertEqual(len(step[light]["horizon_rayleigh"]), 3)
+                self.assertEqual(len(step[light]["horizon_multiple"]), 3)
         self.assertEqual(referenced, {f for f in files if f.endswith(".exr")})
+        # A sunlit sky has higher orders at the horizon; the exposure says how to expose it.
+        self.assertTrue(all(v > 0.0 for v in manifest["steps"][2]["sun"]["horizon_multiple"]))
+        self.assertIn("+ multiple", table["radiance"])
+        self.assertEqual(manifest["exposure"]["nits_per_radiance_unit"], 5000.0)
 
         # The manifest's parameters are exactly what `aerial eval` gives.
         noon = run_json(self, "eval", preset("hazy_sunset"), "--time", "12:00")
