@@ -1,9 +1,11 @@
 // bench_sky.cpp — the Nishita sky solver (128 x 64 table).
 //
-//   BM_SkySolve/layers:L/threads:T/rebuild:R
+//   BM_SkySolve/layers:L/threads:T/rebuild:R/multiple:M
 //       one solve; threads 0 = all hardware threads; rebuild 1 forces the
-//       optical-depth table to be rebuilt every time (the full cost), 0 reuses
-//       it (parameters unchanged, only the sun moves). Wall time.
+//       optical-depth table (and the Psi_ms LUT) to be rebuilt every time (the
+//       full cost), 0 reuses them (parameters unchanged, only the sun moves);
+//       multiple 0 = single scattering only (SkySolverDesc::singleScatteringOnly).
+//       Wall time.
 //   BM_SkyReferenceSolve
 //       the brute-force double-precision reference (tests/support) on 4 of
 //       the 64 rows (260 directions, 1000 x 200 steps each); the counters give
@@ -35,6 +37,7 @@ void BM_SkySolve(benchmark::State& state) {
     desc.layerCount = int(state.range(0));
     desc.threadCount = int(state.range(1));
     const bool rebuild = state.range(2) != 0;
+    desc.singleScatteringOnly = state.range(3) == 0;
     aerial::SkySolver solver(desc);
     const aerial::AtmosphereParams air;
     solver.solve(air, sunAt(10.0));
@@ -48,13 +51,8 @@ void BM_SkySolve(benchmark::State& state) {
     state.counters["texels"] = double(desc.azimuthCount * desc.elevationCount);
 }
 BENCHMARK(BM_SkySolve)
-    ->ArgNames({"layers", "threads", "rebuild"})
-    ->Args({32, 1, 1})
-    ->Args({32, 0, 1})
-    ->Args({32, 1, 0})
-    ->Args({32, 0, 0})
-    ->Args({40, 1, 1})  // the default layer count
-    ->Args({40, 0, 1})
+    ->ArgNames({"layers", "threads", "rebuild", "multiple"})
+    ->ArgsProduct({{32}, {1, 0}, {1, 0}, {0, 1}})
     ->Unit(benchmark::kMicrosecond)
     ->UseRealTime();
 
