@@ -20,11 +20,12 @@ import glob
 import json
 import math
 import os
-import struct
 import subprocess
 import sys
 import tempfile
-import zlib
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from pngio import PngError, read_rgb, write_png  # noqa: E402
 
 HOURS = ["02:00", "05:30", "07:00", "09:30", "12:00", "16:00", "18:45", "21:30"]
 
@@ -55,77 +56,11 @@ FONT = {
 
 
 def read_png(path):
-    """8-bit RGB or RGBA, non-interlaced (what stb_image_write writes) -> (w, h, rgb bytes)."""
-    with open(path, "rb") as f:
-        data = f.read()
-    if data[:8] != b"\x89PNG\r\n\x1a\n":
-        sys.exit("contact_sheet: %s is not a PNG" % path)
-    pos, idat, width, height, channels = 8, b"", 0, 0, 0
-    while pos < len(data):
-        (length,) = struct.unpack(">I", data[pos:pos + 4])
-        kind, body = data[pos + 4:pos + 8], data[pos + 8:pos + 8 + length]
-        if kind == b"IHDR":
-            width, height, depth, ctype, _, _, interlace = struct.unpack(">IIBBBBB", body)
-            if depth != 8 or ctype not in (2, 6) or interlace:
-                sys.exit("contact_sheet: %s: only 8-bit RGB/RGBA, non-interlaced PNGs are read" % path)
-            channels = 3 if ctype == 2 else 4
-        elif kind == b"IDAT":
-            idat += body
-        pos += 12 + length
-    raw = zlib.decompress(idat)
-    stride = width * channels
-    out = bytearray(width * height * 3)
-    prev = bytearray(stride)
-    for y in range(height):
-        kind = raw[y * (stride + 1)]
-        line = bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
-        for i in range(stride):
-            a = line[i - channels] if i >= channels else 0
-            b = prev[i]
-            c = prev[i - channels] if i >= channels else 0
-            if kind == 1:
-                line[i] = (line[i] + a) & 255
-            elif kind == 2:
-                line[i] = (line[i] + b) & 255
-            elif kind == 3:
-                line[i] = (line[i] + (a + b) // 2) & 255
-            elif kind == 4:
-                p = a + b - c
-                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
-                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
-        for x in range(width):
-            out[(y * width + x) * 3:(y * width + x) * 3 + 3] = line[x * channels:x * channels + 3]
-        prev = line
-    return width, height, out
-
-
-def write_png(path, width, height, rgb):
-    """8-bit RGB, every row Paeth-filtered (smaller for rendered pictures)."""
-    stride = width * 3
-    rows = bytearray()
-    prev = bytes(stride)
-    for y in range(height):
-        line = bytes(rgb[y * stride:(y + 1) * stride])
-        out = bytearray(stride)
-        for i in range(stride):
-            a = line[i - 3] if i >= 3 else 0
-            b = prev[i]
-            c = prev[i - 3] if i >= 3 else 0
-            p = a + b - c
-            pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
-            out[i] = (line[i] - (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
-        rows += b"\x04" + out
-        prev = line
-
-    def chunk(kind, body):
-        return struct.pack(">I", len(body)) + kind + body + struct.pack(">I", zlib.crc32(kind + body) & 0xFFFFFFFF)
-
-    data = (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0)) +
-            chunk(b"IDAT", zlib.compress(rows, 9)) + chunk(b"IEND", b""))
-    tmp = path + ".tmp"
-    with open(tmp, "wb") as f:
-        f.write(data)
-    os.replace(tmp, path)
+    """8-bit RGB or RGBA -> (w, h, rgb bytes); exits with the reason on anything else."""
+    try:
+        return read_rgb(path)
+    except (OSError, PngError) as e:
+        sys.exit("contact_sheet: %s" % e)
 
 
 def pool_map(function, items, jobs=2):

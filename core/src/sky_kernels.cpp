@@ -473,4 +473,25 @@ AERIAL_HOT_KERNEL void msSegmentKernel(const MsSegmentArgs& a) {
     }
 }
 
+void segmentNodeDensities(const double* crossing, int segments, double h0, double r0, double mu,
+                          const DensityConstants& density, float* s, float* rayleigh, float* mie,
+                          float* ozone) {
+    if (segments <= 0) return;
+    for (int i = 0; i < segments; ++i) {
+        const double a = crossing[i], b = crossing[i + 1];
+        for (int g = 0; g < 4; ++g) s[4 * i + g] = float(a + (b - a) * kGaussT[g]);
+    }
+    NodeKernelArgs nodes{};
+    nodes.count = 4 * segments;
+    nodes.viewerHeight = float(h0);
+    nodes.r0 = float(r0);
+    nodes.twoR0Mu = float(2.0 * r0 * mu);
+    nodes.density = density;
+    nodes.s = s;
+    nodes.rayleigh = rayleigh;
+    nodes.mie = mie;
+    nodes.ozone = ozone;
+    nodeKernel(nodes);
+}
+
 }  // namespace aerial::detail

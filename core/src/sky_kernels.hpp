@@ -61,6 +61,13 @@ struct NodeKernelArgs {
 /// Densities at the view-ray quadrature nodes of one row.
 void nodeKernel(const NodeKernelArgs& a);
 
+/// The same for a ray cut at `crossing[0..segments]` (distances from its
+/// start at height h0, radius r0, zenith cosine mu): the 4 Gauss-Legendre
+/// nodes of each segment into s[4 segments], then nodeKernel.
+void segmentNodeDensities(const double* crossing, int segments, double h0, double r0, double mu,
+                          const DensityConstants& density, float* s, float* rayleigh, float* mie,
+                          float* ozone);
+
 /// Per-row transmittances of the layers: e^-tau, e^(-tau t_0), e^(-tau t_1).
 void layerExpKernel(int n, const float* __restrict tau, float* __restrict layerT, float* __restrict nodeT0,
                     float* __restrict nodeT1);

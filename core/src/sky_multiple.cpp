@@ -133,23 +133,8 @@ int MultipleScatteringLut::rayCrossings(int row, double cosT, MsScratch& s, bool
     // Densities at 4 Gauss-Legendre nodes per segment.
     hitsGround = hitsGround && cosT < 0.0;
     const int segments = n - 1;
-    for (int i = 0; i < segments; ++i) {
-        const double a = s.crossing[std::size_t(i)], b = s.crossing[std::size_t(i) + 1];
-        for (int g = 0; g < 4; ++g) s.nodeS[std::size_t(4 * i + g)] = float(a + (b - a) * kGaussT[g]);
-    }
-    if (segments > 0) {
-        NodeKernelArgs nodes{};
-        nodes.count = 4 * segments;
-        nodes.viewerHeight = float(hk);
-        nodes.r0 = float(rk);
-        nodes.twoR0Mu = float(2.0 * rk * cosT);
-        nodes.density = density_;
-        nodes.s = s.nodeS.data();
-        nodes.rayleigh = s.nodeR.data();
-        nodes.mie = s.nodeM.data();
-        nodes.ozone = s.nodeO.data();
-        nodeKernel(nodes);
-    }
+    segmentNodeDensities(s.crossing.data(), segments, hk, rk, cosT, density_, s.nodeS.data(), s.nodeR.data(),
+                         s.nodeM.data(), s.nodeO.data());
 
     return n;
 }

@@ -342,21 +342,8 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
     const double viewLength = s.crossing[std::size_t(layers)];
 
     // Densities at 4 Gauss-Legendre nodes per layer.
-    for (int l = 0; l < layers; ++l) {
-        const double a = s.crossing[std::size_t(l)], b = s.crossing[std::size_t(l) + 1];
-        for (int g = 0; g < 4; ++g) s.nodeS[std::size_t(4 * l + g)] = float(a + (b - a) * kGaussT[g]);
-    }
-    NodeKernelArgs nodes{};
-    nodes.count = 4 * layers;
-    nodes.viewerHeight = float(h0);
-    nodes.r0 = float(r0);
-    nodes.twoR0Mu = float(2.0 * r0 * sinEl);
-    nodes.density = density;
-    nodes.s = s.nodeS.data();
-    nodes.rayleigh = s.nodeR.data();
-    nodes.mie = s.nodeM.data();
-    nodes.ozone = s.nodeO.data();
-    nodeKernel(nodes);
+    segmentNodeDensities(s.crossing.data(), layers, h0, r0, sinEl, density, s.nodeS.data(), s.nodeR.data(),
+                         s.nodeM.data(), s.nodeO.data());
 
     // Layer weights and the transmittance from the viewer. A layer's weight
     // W_X = T(viewer -> a) beta_X m_X (1 - e^-tau) / tau is the exact integral

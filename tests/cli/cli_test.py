@@ -22,7 +22,9 @@ import struct
 import subprocess
 import sys
 import unittest
-import zlib
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts"))
+from pngio import decode_png  # noqa: E402  (the one PNG reader)
 
 AERIAL = ""
 ROOT = ""
@@ -141,43 +143,8 @@ def read_chlist(value):
 
 
 def read_png(path):
-    """(width, height, colour type, bit depth, rows of bytes) of an 8-bit RGB/RGBA PNG, unfiltered by hand."""
-    with open(path, "rb") as f:
-        data = f.read()
-    if data[:8] != bytes([0x89, 0x50, 0x4E, 0x47, 0x0D, 0x0A, 0x1A, 0x0A]):
-        raise ValueError(path + ": not a PNG file (magic %s)" % data[:8].hex())
-    pos, ihdr, idat = 8, None, b""
-    while pos < len(data):
-        (length,) = struct.unpack(">I", data[pos:pos + 4])
-        kind, body = data[pos + 4:pos + 8], data[pos + 8:pos + 8 + length]
-        if kind == b"IHDR":
-            ihdr = body
-        elif kind == b"IDAT":
-            idat += body
-        pos += 12 + length
-    width, height, depth, colour = struct.unpack(">IIBB", ihdr[:10])
-    if depth != 8 or colour not in (2, 6):
-        return width, height, colour, depth, None
-    bpp = 3 if colour == 2 else 4
-    raw, stride, rows, prev = zlib.decompress(idat), width * bpp, [], bytearray(width * bpp)
-    for y in range(height):
-        kind, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
-        for i in range(stride):
-            a = line[i - bpp] if i >= bpp else 0
-            b, c = prev[i], prev[i - bpp] if i >= bpp else 0
-            if kind == 1:
-                line[i] = (line[i] + a) & 255
-            elif kind == 2:
-                line[i] = (line[i] + b) & 255
-            elif kind == 3:
-                line[i] = (line[i] + (a + b) // 2) & 255
-            elif kind == 4:
-                p = a + b - c
-                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
-                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
-        rows.append(bytes(line))
-        prev = line
-    return width, height, colour, depth, rows
+    """(width, height, colour type, bit depth, rows of bytes) of an 8-bit RGB/RGBA PNG (scripts/pngio.py)."""
+    return decode_png(path)
 
 
 def has_render_command():

@@ -15,11 +15,12 @@ import os
 import re
 import shutil
 import signal
-import struct
 import subprocess
 import sys
 import time
-import zlib
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts"))
+from pngio import PngError, decode_png  # noqa: E402  (the one PNG reader)
 
 WINDOW = "640x360"
 
@@ -116,46 +117,14 @@ def key_value(k):
 # --- PNG reading (8-bit RGB/RGBA, non-interlaced, as stb writes) ------------
 
 def read_png(path):
-    with open(path, "rb") as f:
-        data = f.read()
-    check(data[:8] == b"\x89PNG\r\n\x1a\n", "%s is not a PNG" % path)
-    pos, idat, width, height, ctype = 8, b"", 0, 0, 0
-    while pos < len(data):
-        (length,) = struct.unpack(">I", data[pos:pos + 4])
-        kind = data[pos + 4:pos + 8]
-        body = data[pos + 8:pos + 8 + length]
-        if kind == b"IHDR":
-            width, height, depth, ctype, _, _, interlace = struct.unpack(">IIBBBBB", body)
-            check(depth == 8 and ctype in (2, 6) and interlace == 0, "unsupported PNG format")
-        elif kind == b"IDAT":
-            idat += body
-        pos += 12 + length
-    raw = zlib.decompress(idat)
-    bpp = 3 if ctype == 2 else 4
-    stride = width * bpp
-    rows, prev, i = [], bytearray(stride), 0
-    for _ in range(height):
-        ftype = raw[i]
-        line = bytearray(raw[i + 1:i + 1 + stride])
-        i += 1 + stride
-        for x in range(stride):
-            a = line[x - bpp] if x >= bpp else 0
-            b = prev[x]
-            c = prev[x - bpp] if x >= bpp else 0
-            if ftype == 1:
-                line[x] = (line[x] + a) & 255
-            elif ftype == 2:
-                line[x] = (line[x] + b) & 255
-            elif ftype == 3:
-                line[x] = (line[x] + (a + b) // 2) & 255
-            elif ftype == 4:
-                p = a + b - c
-                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
-                pred = a if pa <= pb and pa <= pc else (b if pb <= pc else c)
-                line[x] = (line[x] + pred) & 255
-        rows.append(line)
-        prev = line
-    return width, height, bpp, rows
+    """(width, height, bytes per pixel, rows) of the editor's 8-bit RGB/RGBA PNGs (scripts/pngio.py)."""
+    check(os.path.exists(path), "%s was not written" % path)
+    try:
+        width, height, colour, depth, rows = decode_png(path)
+    except PngError as e:
+        fail(str(e))
+    check(rows is not None, "%s: unsupported PNG format (colour %d, depth %d)" % (path, colour, depth))
+    return width, height, 3 if colour == 2 else 4, rows
 
 
 # --- cases -------------------------------------------------------------------
