@@ -322,7 +322,8 @@ void Editor::declareScriptCommands() {
              error = "expect_keys " + w[1] + ": have " + std::to_string(have);
              return false;
          }});
-    table.add({"expect_selected", 1, 2, "expect_selected volume|emitter|none|fog|atmosphere|lights|exposure [N]",
+    table.add({"expect_selected", 1, 2,
+               "expect_selected volume|emitter|none|fog|atmosphere|lights|exposure [N]",
                "what the outliner has selected", [this](W w, E error) {
                    static const char* kinds[] = {"none",   "atmosphere", "lights",  "fog",
                                                  "volume", "emitter",    "exposure"};
