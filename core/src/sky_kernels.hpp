@@ -61,6 +61,22 @@ struct NodeKernelArgs {
 /// Densities at the view-ray quadrature nodes of one row.
 void nodeKernel(const NodeKernelArgs& a);
 
+/// Mean Rayleigh, Mie and ozone densities of segment i, from its 4
+/// Gauss-Legendre node densities (times the segment's length: its column
+/// masses; the callers multiply in their own order).
+struct MeanDensity {
+    double rayleigh, mie, ozone;
+};
+inline MeanDensity segmentMeanDensity(const float* rayleigh, const float* mie, const float* ozone, int i) {
+    MeanDensity m{0.0, 0.0, 0.0};
+    for (int g = 0; g < 4; ++g) {
+        m.rayleigh += kGaussW[g] * rayleigh[4 * i + g];
+        m.mie += kGaussW[g] * mie[4 * i + g];
+        m.ozone += kGaussW[g] * ozone[4 * i + g];
+    }
+    return m;
+}
+
 /// The same for a ray cut at `crossing[0..segments]` (distances from its
 /// start at height h0, radius r0, zenith cosine mu): the 4 Gauss-Legendre
 /// nodes of each segment into s[4 segments], then nodeKernel.

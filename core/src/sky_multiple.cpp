@@ -161,15 +161,8 @@ void MultipleScatteringLut::rayTransfer(int row, double cosT, MsScratch& s, doub
 /// Scattering and extinction optical depths of segment i of the last rayCrossings.
 void MultipleScatteringLut::segmentDepths(int i, const MsScratch& s, double scatter[3], double tau[3]) const {
     const double len = s.crossing[std::size_t(i) + 1] - s.crossing[std::size_t(i)];
-    double mR = 0.0, mM = 0.0, mO = 0.0;
-    for (int g = 0; g < 4; ++g) {
-        mR += kGaussW[g] * s.nodeR[std::size_t(4 * i + g)];
-        mM += kGaussW[g] * s.nodeM[std::size_t(4 * i + g)];
-        mO += kGaussW[g] * s.nodeO[std::size_t(4 * i + g)];
-    }
-    mR *= len;
-    mM *= len;
-    mO *= len;
+    const MeanDensity m = segmentMeanDensity(s.nodeR.data(), s.nodeM.data(), s.nodeO.data(), i);
+    const double mR = m.rayleigh * len, mM = m.mie * len, mO = m.ozone * len;
     for (int c = 0; c < 3; ++c) {
         scatter[c] = air_.rayleighScattering[c] * mR + air_.mieScattering[c] * mM;
         tau[c] = air_.rayleighScattering[c] * mR + air_.mieExtinction[c] * mM + air_.ozoneAbsorption[c] * mO;

@@ -355,12 +355,8 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
     // with wA = W (1 - centroid), wB = W centroid.
     for (int l = 0; l < layers; ++l) {
         const double len = s.crossing[std::size_t(l) + 1] - s.crossing[std::size_t(l)];
-        double mR = 0.0, mM = 0.0, mO = 0.0;
-        for (int g = 0; g < 4; ++g) {
-            mR += kGaussW[g] * s.nodeR[std::size_t(4 * l + g)];
-            mM += kGaussW[g] * s.nodeM[std::size_t(4 * l + g)];
-            mO += kGaussW[g] * s.nodeO[std::size_t(4 * l + g)];
-        }
+        const MeanDensity m = segmentMeanDensity(s.nodeR.data(), s.nodeM.data(), s.nodeO.data(), l);
+        const double mR = m.rayleigh, mM = m.mie, mO = m.ozone;
         s.mass[std::size_t(3 * l)] = mR * len;
         s.mass[std::size_t(3 * l + 1)] = mM * len;
         s.mass[std::size_t(3 * l + 2)] = mO * len;
