@@ -85,6 +85,23 @@ ParamDesc enumeration(ParamScope scope, sv path, sv label, std::span<const sv> n
     return p;
 }
 
+/// A seed: an integer 0..4294967295, default 1, never animated.
+ParamDesc seedParam(ParamScope scope, sv path, sv doc, std::int64_t (*get)(const void*),
+                    void (*set)(void*, std::int64_t)) {
+    ParamDesc p;
+    p.scope = scope;
+    p.type = ParamType::Int;
+    p.path = path;
+    p.label = "Seed";
+    p.doc = doc;
+    p.minValue = p.uiMin = 0.0;
+    p.maxValue = p.uiMax = 4294967295.0;
+    p.defaultValue[0] = 1.0;
+    p.getInt = get;
+    p.setInt = set;
+    return p;
+}
+
 ParamDesc text(ParamScope scope, sv path, sv label, bool required, std::string* (*access)(void*), sv doc) {
     ParamDesc p;
     p.scope = scope;
@@ -272,6 +289,56 @@ const std::vector<ParamDesc>& globalTable() {
             false, [](void* o) { return &env(o).exposure.adaptDownPerSecond; },
             "Automatic: how fast the exposure follows a darker scene [1/s], 0..100 (0 jumps at once). "
             "Default 1."),
+        // Clouds (clouds.hpp).
+        scalar(
+            G, "clouds.coverage", "Cloud coverage", "", {0, 1, 0, 1}, 0.0, false, true,
+            [](void* o) { return &env(o).clouds.coverage; },
+            "Fraction of the sky the cloud layer covers, 0..1 (0 clear, 1 overcast). Default 0."),
+        scalar(
+            G, "clouds.bottom_m", "Cloud base", "m", {0, 20000, 0, 8000}, 1500.0, false, true,
+            [](void* o) { return &env(o).clouds.bottomM; },
+            "Height of the layer's base above the ground [m], 0..20000. Default 1500."),
+        scalar(
+            G, "clouds.thickness_m", "Cloud layer thickness", "m", {10, 20000, 100, 8000}, 2000.0, false, true,
+            [](void* o) { return &env(o).clouds.thicknessM; },
+            "Thickness of the layer [m], 10..20000 (must be > 0). Default 2000."),
+        scalar(
+            G, "clouds.density_per_m", "Cloud density", "1/m", {0, 1, 1e-4, 0.5}, 0.02, true, true,
+            [](void* o) { return &env(o).clouds.densityPerM; },
+            "Extinction inside a full cloud [1/m], 0..1; visibility inside ~3.9 / density. Default 0.02."),
+        seedParam(
+            G, "clouds.seed", "Seed of the cloud noise, 0..4294967295; a game regenerates the same noise "
+            "from it. Default 1.",
+            [](const void* o) { return static_cast<const Environment*>(o)->clouds.seed; },
+            [](void* o, std::int64_t v) { env(o).clouds.seed = v; }),
+        scalar(
+            G, "clouds.type", "Cloud type", "", {0, 1, 0, 1}, 0.6, false, true,
+            [](void* o) { return &env(o).clouds.type; },
+            "Shape of the height profile, 0 flat stratus .. 0.5 stratocumulus .. 1 towering cumulus. "
+            "Default 0.6."),
+        scalar(
+            G, "clouds.shape_scale_m", "Cloud shape scale", "m", {500, 200000, 2000, 60000}, 12000.0, true,
+            true, [](void* o) { return &env(o).clouds.shapeScaleM; },
+            "Size of one tile of the shape noise [m], 500..200000; cloud cells are about a quarter of "
+            "it. Default 12000."),
+        scalar(
+            G, "clouds.detail_scale_m", "Cloud detail scale", "m", {50, 20000, 100, 5000}, 1200.0, true, true,
+            [](void* o) { return &env(o).clouds.detailScaleM; },
+            "Size of one tile of the erosion noise [m], 50..20000. Default 1200."),
+        scalar(
+            G, "clouds.erosion", "Cloud erosion", "", {0, 0.9, 0, 0.9}, 0.35, false, true,
+            [](void* o) { return &env(o).clouds.erosion; },
+            "How much the detail noise eats the cloud edges, 0..0.9 (0 smooth blobs). Default 0.35."),
+        scalar(
+            G, "clouds.anisotropy", "Cloud anisotropy", "", {0, 0.95, 0, 0.95}, 0.6, false, true,
+            [](void* o) { return &env(o).clouds.anisotropy; },
+            "Forward-scattering asymmetry g, 0..0.95: the bright silver lining of a cloud in front of "
+            "the sun. Default 0.6."),
+        triple(
+            G, ParamType::Colour, "clouds.albedo_rgb", "Cloud albedo", "", {0, 1, 0, 1}, glm::dvec3(0.98), false,
+            true, [](void* o) { return &env(o).clouds.albedo; },
+            "Single-scattering albedo per RGB channel, 0..1 (scattering = albedo x extinction); "
+            "below 1 tints and darkens the clouds. Default 0.98."),
     };
     return table;
 }
@@ -380,18 +447,10 @@ const std::vector<ParamDesc>& emitterTable() {
                          false, true, [](void* o) { return &emi(o).colour; },
                          "Colour, scene-linear Rec.709, 0..1e5 per channel. Default white."),
                  });
-        ParamDesc seed;
-        seed.scope = E;
-        seed.type = ParamType::Int;
-        seed.path = "seed";
-        seed.label = "Seed";
-        seed.doc = "Seed of the lightning flash pattern, 0..4294967295. Default 1.";
-        seed.minValue = seed.uiMin = 0.0;
-        seed.maxValue = seed.uiMax = 4294967295.0;
-        seed.defaultValue[0] = 1.0;
-        seed.getInt = [](const void* o) { return std::int64_t(static_cast<const Emitter*>(o)->seed); };
-        seed.setInt = [](void* o, std::int64_t v) { emi(o).seed = std::uint32_t(v); };
-        t.push_back(seed);
+        t.push_back(seedParam(
+            E, "seed", "Seed of the lightning flash pattern, 0..4294967295. Default 1.",
+            [](const void* o) { return std::int64_t(static_cast<const Emitter*>(o)->seed); },
+            [](void* o, std::int64_t v) { emi(o).seed = std::uint32_t(v); }));
         t.push_back(scalar(
             E, "flashes_per_minute", "Flashes per minute", "1/min", {0, 6000, 0, 120}, 6.0, false, false,
             [](void* o) { return &emi(o).flashesPerMinute; },

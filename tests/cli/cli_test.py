@@ -281,7 +281,7 @@ class Eval(unittest.TestCase):
         with open(preset("foggy_valley_morning")) as f:
             document = json.load(f)
         state = run_json(self, "eval", preset("foggy_valley_morning"), "--time", "06:00")
-        globals_in_file = leaf_paths({k: document[k] for k in ("location", "atmosphere", "sun", "moon", "fog", "exposure")})
+        globals_in_file = leaf_paths({k: document[k] for k in ("location", "atmosphere", "sun", "moon", "fog", "exposure", "clouds")})
         self.assertEqual(leaf_paths(state["parameters"]), globals_in_file)
         self.assertEqual([v["id"] for v in state["volumes"]], [v["id"] for v in document["volumes"]])
         for volume, in_file in zip(state["volumes"], document["volumes"]):

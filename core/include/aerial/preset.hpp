@@ -14,7 +14,7 @@
 // File format (../shared/DESIGN.md, "Presets"): a JSON object with
 // "version": 1, "name", "description", the global parameters grouped as
 // "location", "atmosphere" {"rayleigh", "mie", "ozone"}, "sun", "moon",
-// "fog", "exposure", then "volumes" and "emitters" (arrays of objects with string "id"s)
+// "fog", "exposure", "clouds", then "volumes" and "emitters" (arrays of objects with string "id"s)
 // and "tracks" (see timeline.hpp). Every key that carries a unit says it
 // (`scale_height_m`, `density_per_m`). The keys, ranges and defaults come
 // from the parameter table (param_table.hpp); the JSON Schema in
@@ -45,6 +45,7 @@
 #pragma once
 
 #include <aerial/atmosphere.hpp>
+#include <aerial/clouds.hpp>
 #include <aerial/emitter.hpp>
 #include <aerial/exposure.hpp>
 #include <aerial/fog_volume.hpp>
@@ -105,6 +106,8 @@ struct Environment {
     /// How radiance becomes a picture: manual or automatic EV100 and a
     /// compensation keyed over the day (aerial/exposure.hpp).
     ExposureParams exposure;
+    /// The volumetric cloud layer (aerial/clouds.hpp); coverage 0 by default.
+    CloudParams clouds;
 };
 
 /// A whole preset: what a file holds, what the editor edits.
