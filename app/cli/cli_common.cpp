@@ -269,6 +269,10 @@ Json paramValueToJson(const ParamDesc& p, void* object) {
         case ParamType::Colour:
         case ParamType::Vec3:
             return toJson(*p.vec3(object));
+        case ParamType::Vec2: {
+            const glm::dvec2& v = *p.vec2(object);
+            return Json::array({v.x, v.y});
+        }
         case ParamType::Quaternion: {
             const glm::dquat& q = *p.quat(object);
             return Json::array({q.x, q.y, q.z, q.w});

@@ -152,6 +152,13 @@ void drawParam(Document& doc, EditState& edit, const ParamRef& ref, double timeH
                                          &hi, "%.4g");
             break;
         }
+        case ParamType::Vec2: {  // [x, z], the label carries the unit
+            const double lo = p.minValue, hi = p.maxValue;
+            const double span = (p.uiMax > p.uiMin ? p.uiMax - p.uiMin : 1.0);
+            changed = ImGui::DragScalarN(label.c_str(), ImGuiDataType_Double, v, 2, float(span / 400.0), &lo,
+                                         &hi, "%.4g");
+            break;
+        }
         case ParamType::Colour: {
             float c[3] = {float(v[0]), float(v[1]), float(v[2])};
             changed =

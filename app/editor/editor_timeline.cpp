@@ -254,8 +254,11 @@ void drawTimeline(Document& doc, EditState& edit, Playback& playback, const Acti
         if (track && trackHovered && hoveredKey >= 0 && hoveredKey < int(track->keys.size()) &&
             !ImGui::IsPopupOpen("##keymenu")) {
             const TrackKey& k = track->keys[std::size_t(hoveredKey)];
-            if (edit.selectedParam->desc->type == ParamType::Scalar)
+            const int components = edit.selectedParam->desc->components();
+            if (components == 1)
                 ImGui::SetTooltip("%s  %.6g", clock(k.timeHours).c_str(), k.value.x);
+            else if (components == 2)
+                ImGui::SetTooltip("%s  (%.4g, %.4g)", clock(k.timeHours).c_str(), k.value.x, k.value.y);
             else
                 ImGui::SetTooltip("%s  (%.4g, %.4g, %.4g)", clock(k.timeHours).c_str(), k.value.x, k.value.y,
                                   k.value.z);
@@ -294,7 +297,7 @@ void drawTimeline(Document& doc, EditState& edit, Playback& playback, const Acti
     track = edit.selectedParam ? trackOf(doc.preset(), *edit.selectedParam) : nullptr;
     if (yEnd - yCurve > 24.0f && edit.selectedParam) {
         const ParamRef ref = *edit.selectedParam;
-        const int components = ref.desc->type == ParamType::Scalar ? 1 : 3;
+        const int components = std::min(ref.desc->components(), 3);  // animatable: 1, 2 or 3
         constexpr int kSamples = 192;
         double values[kSamples + 1][3];
         double lo = 1e300, hi = -1e300;
@@ -314,8 +317,10 @@ void drawTimeline(Document& doc, EditState& edit, Playback& playback, const Acti
         }
         const float top = yCurve + 6.0f, bottom = yEnd - 6.0f;
         auto yOf = [&](double v) { return bottom - float((v - lo) / (hi - lo)) * (bottom - top); };
+        // x red, y green, z blue (a Vec2's second component is world Z).
         const ImU32 colours[3] = {components == 1 ? IM_COL32(240, 190, 60, 255) : IM_COL32(230, 80, 80, 255),
-                                  IM_COL32(90, 200, 90, 255), IM_COL32(90, 140, 240, 255)};
+                                  components == 2 ? IM_COL32(90, 140, 240, 255) : IM_COL32(90, 200, 90, 255),
+                                  IM_COL32(90, 140, 240, 255)};
         for (int c = 0; c < components; ++c)
             for (int s = 0; s < kSamples; ++s)
                 dl->AddLine(ImVec2(xOf(24.0 * s / kSamples), yOf(values[s][c])),
@@ -350,8 +355,11 @@ void drawTimeline(Document& doc, EditState& edit, Playback& playback, const Acti
             double v[4];
             const double t = tOf(mouseX);
             readValueAt(doc.preset(), *edit.selectedParam, t, v);
-            if (edit.selectedParam->desc->type == ParamType::Scalar)
+            const int components = edit.selectedParam->desc->components();
+            if (components == 1)
                 ImGui::SetTooltip("%s  %.6g", clock(t).c_str(), v[0]);
+            else if (components == 2)
+                ImGui::SetTooltip("%s  (%.4g, %.4g)", clock(t).c_str(), v[0], v[1]);
             else
                 ImGui::SetTooltip("%s  (%.4g, %.4g, %.4g)", clock(t).c_str(), v[0], v[1], v[2]);
         }

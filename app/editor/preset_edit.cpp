@@ -12,7 +12,9 @@
 namespace aerial::editor {
 namespace {
 
-int trackComponents(const ParamDesc& desc) { return desc.type == ParamType::Scalar ? 1 : 3; }
+/// Numbers in a track key of an animatable parameter: 1 (Scalar), 2 (Vec2,
+/// in value.x, .y) or 3 (Colour, Vec3).
+int trackComponents(const ParamDesc& desc) { return desc.components(); }
 
 /// Concatenation by appends (GCC 12 warns falsely on `"x" + std::string`).
 template <class... Parts>
@@ -137,6 +139,11 @@ void readBaseValue(const Preset& preset, const ParamRef& ref, double out[4]) {
             out[0] = v.x, out[1] = v.y, out[2] = v.z;
             break;
         }
+        case ParamType::Vec2: {
+            const glm::dvec2& v = *p.vec2(object);
+            out[0] = v.x, out[1] = v.y;
+            break;
+        }
         case ParamType::Quaternion: {
             const glm::dquat& q = *p.quat(object);
             out[0] = q.x, out[1] = q.y, out[2] = q.z, out[3] = q.w;
@@ -154,9 +161,9 @@ void readBaseValue(const Preset& preset, const ParamRef& ref, double out[4]) {
 void readValueAt(const Preset& preset, const ParamRef& ref, double timeHours, double out[4]) {
     readBaseValue(preset, ref, out);
     if (const Track* track = trackOf(preset, ref); track && !track->keys.empty()) {
-        const glm::dvec3 v = evaluateTrack(*track, timeHours, trackComponents(*ref.desc));
-        out[0] = v.x;
-        if (ref.desc->type != ParamType::Scalar) out[1] = v.y, out[2] = v.z;
+        const int components = trackComponents(*ref.desc);
+        const glm::dvec3 v = evaluateTrack(*track, timeHours, components);
+        for (int c = 0; c < components; ++c) out[c] = v[c];
     }
 }
 
@@ -189,6 +196,14 @@ void setValueAt(Preset& preset, const ParamRef& ref, const double value[4], doub
                 setKey(*track, timeHours, v);
             else
                 *p.vec3(object) = v;
+            break;
+        }
+        case ParamType::Vec2: {
+            const glm::dvec2 v(clampValue(value[0]), clampValue(value[1]));
+            if (Track* track = trackOf(preset, ref))
+                setKey(*track, timeHours, glm::dvec3(v, 0.0));
+            else
+                *p.vec2(object) = v;
             break;
         }
         case ParamType::Quaternion: {
@@ -237,9 +252,9 @@ bool keyParam(Preset& preset, const ParamRef& ref, double timeHours) {
     }
     const int existing = keyIndexAt(*track, timeHours);
     const double t = existing >= 0 ? track->keys[std::size_t(existing)].timeHours : wrapHours(timeHours);
-    setKey(*track, t,
-           glm::dvec3(value[0], ref.desc->type == ParamType::Scalar ? 0.0 : value[1],
-                      ref.desc->type == ParamType::Scalar ? 0.0 : value[2]));
+    glm::dvec3 key(value[0], value[1], value[2]);
+    for (int c = trackComponents(*ref.desc); c < 3; ++c) key[c] = 0.0;
+    setKey(*track, t, key);
     return true;
 }
 
@@ -304,8 +319,9 @@ int keyAllChanged(Preset& preset, const Preset& baseline, double timeHours) {
 
 bool pasteKey(Preset& preset, const ParamRef& ref, const KeyClipboard& clip, double timeHours) {
     if (!clip.valid || !ref.desc || !ref.desc->animatable || !paramObjectOf(preset, ref)) return false;
-    const bool scalarClip = clip.type == ParamType::Scalar, scalarParam = ref.desc->type == ParamType::Scalar;
-    if (scalarClip != scalarParam) return false;
+    // A key fits a parameter with as many numbers (a colour's key fits a
+    // Vec3, a Vec2's only a Vec2).
+    if (ParamDesc::componentCount(clip.type) != trackComponents(*ref.desc)) return false;
     if (!keyParam(preset, ref, timeHours)) return false;
     const double value[4] = {clip.value.x, clip.value.y, clip.value.z, 0.0};
     setValueAt(preset, ref, value, timeHours);  // the track exists now: sets the key

@@ -92,7 +92,8 @@ struct KeyClipboard {
 };
 
 /// Pastes `clip` as a key at `timeHours` on the parameter (creating its
-/// track); false when the parameter is not animatable or of another type.
+/// track); false when the parameter is not animatable or its keys hold
+/// another count of numbers (scalar 1, Vec2 2, Colour/Vec3 3).
 bool pasteKey(Preset& preset, const ParamRef& ref, const KeyClipboard& clip, double timeHours);
 
 // ---------------------------------------------------------------------------

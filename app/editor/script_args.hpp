@@ -48,6 +48,8 @@ inline std::string formatValues(const double* v, int n) {
 /// How many numbers a value of `p` has.
 inline int valueCount(const ParamDesc& p) {
     switch (p.type) {
+        case ParamType::Vec2:
+            return 2;
         case ParamType::Colour:
         case ParamType::Vec3:
             return 3;

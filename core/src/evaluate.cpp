@@ -123,7 +123,7 @@ struct CompiledPreset::Impl {
                 b.object = indexOf(preset.emitters, track.target.objectId);
                 if (b.object >= preset.emitters.size()) continue;
             }
-            b.track = compileTrack(track, desc->type == ParamType::Scalar ? 1 : 3);
+            b.track = compileTrack(track, desc->components());
             if (tableDependsOn(*desc)) useTable = false;
             bindings.push_back(std::move(b));
         }
@@ -166,6 +166,9 @@ void CompiledPreset::evaluate(double timeHours, PresetState& state) const {
         const ParamDesc& d = *b.desc;
         if (d.type == ParamType::Scalar)
             *d.scalar(object) = std::clamp(v.x, d.minValue, d.maxValue);
+        else if (d.type == ParamType::Vec2)
+            *d.vec2(object) =
+                glm::clamp(glm::dvec2(v.x, v.y), glm::dvec2(d.minValue), glm::dvec2(d.maxValue));
         else
             *d.vec3(object) = glm::clamp(v, glm::dvec3(d.minValue), glm::dvec3(d.maxValue));
     }

@@ -68,6 +68,28 @@ ParamDesc triple(ParamScope scope, ParamType type, sv path, sv label, sv unit, R
     return p;
 }
 
+/// A horizontal 2-vector [x, z] (x = world X, y = world Z), such as a wind
+/// velocity; `r` bounds each component.
+[[maybe_unused]] ParamDesc vector2(ParamScope scope, sv path, sv label, sv unit, Range r, glm::dvec2 def,
+                                   bool animatable, glm::dvec2* (*access)(void*), sv doc) {
+    ParamDesc p;
+    p.scope = scope;
+    p.type = ParamType::Vec2;
+    p.path = path;
+    p.label = label;
+    p.unit = unit;
+    p.doc = doc;
+    p.minValue = r.min;
+    p.maxValue = r.max;
+    p.uiMin = r.uiMin;
+    p.uiMax = r.uiMax;
+    p.defaultValue[0] = def.x;
+    p.defaultValue[1] = def.y;
+    p.animatable = animatable;
+    p.vec2 = access;
+    return p;
+}
+
 ParamDesc enumeration(ParamScope scope, sv path, sv label, std::span<const sv> names, int def,
                       std::int64_t (*get)(const void*), void (*set)(void*, std::int64_t), sv doc) {
     ParamDesc p;
@@ -473,12 +495,14 @@ const std::vector<ParamDesc>& emitterTable() {
 
 }  // namespace
 
-int ParamDesc::components() const {
+int ParamDesc::componentCount(ParamType type) {
     switch (type) {
         case ParamType::Scalar:
         case ParamType::Enum:
         case ParamType::Int:
             return 1;
+        case ParamType::Vec2:
+            return 2;
         case ParamType::Colour:
         case ParamType::Vec3:
             return 3;

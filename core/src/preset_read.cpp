@@ -184,6 +184,11 @@ public:
                 *p.vec3(object) = glm::dvec3(v[0], v[1], v[2]);
                 break;
             }
+            case ParamType::Vec2: {
+                double v[2];
+                if (readNumbers(node, pointer, v, 2)) *p.vec2(object) = glm::dvec2(v[0], v[1]);
+                break;
+            }
             case ParamType::Quaternion: {
                 double v[4];
                 if (readNumbers(node, pointer, v, 4) &&
@@ -392,8 +397,11 @@ public:
                     } else if (p && p->type == ParamType::Scalar) {
                         readNumber(value, pointerJoin(at, "value"), key.value.x);
                     } else if (p) {
-                        double v[3];
-                        if (readNumbers(value, pointerJoin(at, "value"), v, 3))
+                        // Vectors: components() numbers into x, y(, z); a
+                        // Vec2's [x, z] lands in x, y with z = 0.
+                        const int count = p->components() == 2 ? 2 : 3;
+                        double v[3] = {0.0, 0.0, 0.0};
+                        if (readNumbers(value, pointerJoin(at, "value"), v, count))
                             key.value = glm::dvec3(v[0], v[1], v[2]);
                     }
                     for (std::int32_t m = nodes_[std::size_t(c)].firstChild; m >= 0;

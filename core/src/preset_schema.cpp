@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -59,6 +60,13 @@ ojson schemaFor(const ParamDesc& p) {
             s["maxItems"] = 3;
             s["default"] = {p.defaultValue[0], p.defaultValue[1], p.defaultValue[2]};
             break;
+        case ParamType::Vec2:
+            s["type"] = "array";
+            s["items"] = {{"type", "number"}, {"minimum", p.minValue}, {"maximum", p.maxValue}};
+            s["minItems"] = 2;
+            s["maxItems"] = 2;
+            s["default"] = {p.defaultValue[0], p.defaultValue[1]};
+            break;
         case ParamType::Quaternion:
             s["type"] = "array";
             s["items"] = {{"type", "number"}, {"minimum", -1.000001}, {"maximum", 1.000001}};
@@ -107,6 +115,19 @@ ojson objectSchema(ParamScope scope) {
     if (!required.empty()) s["required"] = required;
     s["additionalProperties"] = false;
     return s;
+}
+
+// The fewest and most numbers a key value array holds: 3 (Colour/Vec3),
+// widened to 2 once an animatable Vec2 exists.
+void keyArrayLengths(int& fewest, int& most) {
+    fewest = most = 3;
+    for (ParamScope scope : {ParamScope::Global, ParamScope::Volume, ParamScope::Emitter}) {
+        for (const ParamDesc& p : paramTable(scope)) {
+            if (!p.animatable || p.type == ParamType::Scalar) continue;
+            fewest = std::min(fewest, p.components());
+            most = std::max(most, p.components());
+        }
+    }
 }
 
 ojson animatableNames(ParamScope scope) {
@@ -162,14 +183,18 @@ std::string presetJsonSchema() {
     ojson defs = ojson::object();
     defs["volume"] = objectSchema(ParamScope::Volume);
     defs["emitter"] = objectSchema(ParamScope::Emitter);
+    int fewest = 3, most = 3;
+    keyArrayLengths(fewest, most);
     ojson key;
     key["type"] = "object";
-    key["properties"] = {
-        {"time_h", {{"type", "number"}, {"minimum", 0}, {"exclusiveMaximum", 24}}},
-        {"value",
-         {{"oneOf",
-           {{{"type", "number"}},
-            {{"type", "array"}, {"items", {{"type", "number"}}}, {"minItems", 3}, {"maxItems", 3}}}}}}};
+    key["properties"] = {{"time_h", {{"type", "number"}, {"minimum", 0}, {"exclusiveMaximum", 24}}},
+                         {"value",
+                          {{"oneOf",
+                            {{{"type", "number"}},
+                             {{"type", "array"},
+                              {"items", {{"type", "number"}}},
+                              {"minItems", fewest},
+                              {"maxItems", most}}}}}}};
     key["required"] = {"time_h", "value"};
     key["additionalProperties"] = false;
     defs["key"] = key;

@@ -104,6 +104,11 @@ void checkParam(const ParamDesc& p, void* object, const std::string& pointer, Is
             }
             break;
         }
+        case ParamType::Vec2: {
+            const glm::dvec2 v = *p.vec2(object);
+            for (int c = 0; c < 2; ++c) checkNumber(p, v[c], pointerJoin(pointer, std::size_t(c)), issues);
+            break;
+        }
         case ParamType::Quaternion: {
             const glm::dquat q = *p.quat(object);
             const double c[4] = {q.x, q.y, q.z, q.w};
@@ -254,7 +259,8 @@ void validateInto(const Preset& constPreset, Issues& issues) {
             if (p->type == ParamType::Scalar) {
                 checkNumber(*p, key.value.x, valueAt, issues);
             } else {
-                for (int c = 0; c < 3; ++c)
+                // Vec2 keys carry [x, z] in value.x, .y (.z unused).
+                for (int c = 0; c < p->components(); ++c)
                     checkNumber(*p, key.value[c], pointerJoin(valueAt, std::size_t(c)), issues);
             }
         }

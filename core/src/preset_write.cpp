@@ -55,6 +55,12 @@ public:
                 numbers(c, 3);
                 break;
             }
+            case ParamType::Vec2: {
+                const glm::dvec2 v = *p.vec2(object);
+                const double c[2] = {v.x, v.y};
+                numbers(c, 2);
+                break;
+            }
             case ParamType::Quaternion: {
                 const glm::dquat q = *p.quat(object);
                 const double c[4] = {q.x, q.y, q.z, q.w};
@@ -166,7 +172,9 @@ public:
         for (std::size_t i = 0; i < list.size(); ++i) {
             const Track& t = list[i];
             const ParamDesc* p = findParam(t.target.scope, t.target.param);
-            const bool scalarValues = !p || p->type == ParamType::Scalar;
+            // Numbers per key value: 1 (scalar; also an unknown target's
+            // keys, as read), 2 (Vec2 [x, z] from value.x, .y) or 3.
+            const int valueCount = !p || p->type == ParamType::Scalar ? 1 : p->components() == 2 ? 2 : 3;
             if (i) out += ',';
             newline(2);
             out += '{';
@@ -193,11 +201,11 @@ public:
                 if (k) out += ',';
                 newline(4);
                 out += "{\"time_h\": " + formatDouble(t.keys[k].timeHours) + ", \"value\": ";
-                if (scalarValues) {
+                if (valueCount == 1) {
                     out += formatDouble(t.keys[k].value.x);
                 } else {
                     const double c[3] = {t.keys[k].value.x, t.keys[k].value.y, t.keys[k].value.z};
-                    numbers(c, 3);
+                    numbers(c, valueCount);
                 }
                 out += '}';
             }

@@ -35,14 +35,14 @@ double wrapHours(double timeHours) {
 CompiledTrack compileTrack(const Track& track, int components) {
     CompiledTrack out;
     out.interpolation = track.interpolation;
-    out.components = components == 1 ? 1 : 3;
+    out.components = components == 1 || components == 2 ? components : 3;
     const std::size_t n = track.keys.size();
     out.times.reserve(n);
     out.values.reserve(n);
     for (const TrackKey& k : track.keys) {
         out.times.push_back(k.timeHours);
         glm::dvec3 v = k.value;
-        if (out.components == 1) v.y = v.z = 0.0;
+        for (int c = out.components; c < 3; ++c) v[c] = 0.0;
         out.values.push_back(v);
     }
     if (track.interpolation != Interpolation::Smooth || n < 2) return out;

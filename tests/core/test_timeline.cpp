@@ -190,6 +190,59 @@ TEST(Timeline, ScalarTracksIgnoreUnusedComponents) {
     EXPECT_EQ(v.z, 0.0);
 }
 
+TEST(Timeline, Vec2TracksInterpolatePerComponentAndZeroZ) {
+    // A horizontal 2-vector [x, z] (ParamType::Vec2) keyed in value.x, .y;
+    // a stray .z in the keys must not leak through.
+    Track t;
+    t.interpolation = Interpolation::Linear;
+    t.keys = {{6.0, glm::dvec3(2.0, -4.0, 9.0)}, {8.0, glm::dvec3(4.0, 0.0, 9.0)}};
+    const CompiledTrack c = aerial::compileTrack(t, 2);
+    EXPECT_EQ(c.components, 2);
+    for (const glm::dvec3& v : c.values) EXPECT_EQ(v.z, 0.0);
+    const glm::dvec3 mid = aerial::evaluateTrack(c, 7.0);
+    EXPECT_NEAR(mid.x, 3.0, 1e-15);
+    EXPECT_NEAR(mid.y, -2.0, 1e-15);
+    EXPECT_EQ(mid.z, 0.0);
+
+    // Smooth: each component hits its keys, stays within each segment's
+    // keys (monotone), and z stays 0 everywhere.
+    t.interpolation = Interpolation::Smooth;
+    t.keys = {{3.0, glm::dvec3(1.0, 5.0, 0.0)},
+              {9.0, glm::dvec3(6.0, -5.0, 0.0)},
+              {15.0, glm::dvec3(2.0, 0.5, 0.0)},
+              {21.0, glm::dvec3(-3.0, 1.0, 0.0)}};
+    const CompiledTrack s = aerial::compileTrack(t, 2);
+    EXPECT_EQ(s.components, 2);
+    ASSERT_EQ(s.tangents.size(), 4u);
+    for (const glm::dvec3& m : s.tangents) EXPECT_EQ(m.z, 0.0);
+    for (const TrackKey& k : t.keys) {
+        const glm::dvec3 v = aerial::evaluateTrack(s, k.timeHours);
+        EXPECT_EQ(v.x, k.value.x) << k.timeHours;
+        EXPECT_EQ(v.y, k.value.y) << k.timeHours;
+    }
+    for (int i = 0; i < 4; ++i) {
+        const TrackKey& a = t.keys[std::size_t(i)];
+        const TrackKey& b = t.keys[std::size_t((i + 1) % 4)];
+        for (int step = 0; step <= 24; ++step) {
+            const double time = a.timeHours + 6.0 * step / 24.0;
+            const glm::dvec3 v = aerial::evaluateTrack(s, time);
+            for (int ch = 0; ch < 2; ++ch) {
+                EXPECT_GE(v[ch], std::min(a.value[ch], b.value[ch])) << time;
+                EXPECT_LE(v[ch], std::max(a.value[ch], b.value[ch])) << time;
+            }
+            EXPECT_EQ(v.z, 0.0) << time;
+        }
+    }
+    // The same keys as a 3-component track give the same x and y.
+    const CompiledTrack three = aerial::compileTrack(t, 3);
+    for (double time : {0.5, 4.0, 11.25, 17.0, 23.5}) {
+        const glm::dvec3 v2 = aerial::evaluateTrack(s, time);
+        const glm::dvec3 v3 = aerial::evaluateTrack(three, time);
+        EXPECT_EQ(v2.x, v3.x) << time;
+        EXPECT_EQ(v2.y, v3.y) << time;
+    }
+}
+
 TEST(Timeline, SetKeyKeepsKeysOrdered) {
     Track t;
     aerial::setKey(t, 12.0, glm::dvec3(1.0));

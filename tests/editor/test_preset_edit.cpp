@@ -152,6 +152,63 @@ TEST(PresetEdit, CopyPasteKeys) {
     EXPECT_TRUE(validatePreset(p).empty());
 }
 
+TEST(PresetEdit, Vec2ValuesKeysAndPaste) {
+    // No table entry is a Vec2 yet: a hand-made, animatable one (its field
+    // lives outside Environment) drives the generic editing paths.
+    static glm::dvec2 wind(0.0, 0.0);
+    ParamDesc d;
+    d.scope = ParamScope::Global;
+    d.type = ParamType::Vec2;
+    d.path = "test.wind_m_per_s";
+    d.label = "Wind";
+    d.minValue = -100.0;
+    d.maxValue = 100.0;
+    d.uiMin = -30.0;
+    d.uiMax = 30.0;
+    d.animatable = true;
+    d.vec2 = [](void*) { return &wind; };
+    const ParamRef r{&d, -1};
+    Preset p = defaultPreset();
+
+    // Constant value: set (clamped per component) and read back as [x, z].
+    const double set[4] = {4.0, -250.0, 7.0, 0.0};
+    setValueAt(p, r, set, 12.0);
+    EXPECT_EQ(wind, glm::dvec2(4.0, -100.0));
+    double v[4];
+    readValueAt(p, r, 12.0, v);
+    EXPECT_EQ(v[0], 4.0);
+    EXPECT_EQ(v[1], -100.0);
+    EXPECT_EQ(v[2], 0.0);
+
+    // Keying makes a track whose keys hold x, z in value.x, .y and z = 0.
+    ASSERT_TRUE(keyParam(p, r, 6.0));
+    const Track* track = trackOf(p, r);
+    ASSERT_NE(track, nullptr);
+    ASSERT_EQ(track->keys.size(), 1u);
+    EXPECT_EQ(track->keys[0].value, glm::dvec3(4.0, -100.0, 0.0));
+    const double later[4] = {-2.0, 10.0, 5.0, 0.0};
+    setValueAt(p, r, later, 18.0);  // auto-key
+    track = trackOf(p, r);
+    ASSERT_EQ(track->keys.size(), 2u);
+    EXPECT_EQ(track->keys[1].value, glm::dvec3(-2.0, 10.0, 0.0));
+    EXPECT_EQ(wind, glm::dvec2(4.0, -100.0)) << "a keyed parameter keeps its base value";
+    readValueAt(p, r, 18.0, v);
+    EXPECT_EQ(v[0], -2.0);
+    EXPECT_EQ(v[1], 10.0);
+    EXPECT_EQ(v[2], 0.0);
+
+    // A Vec2 key pastes onto a Vec2 only.
+    KeyClipboard clip{true, ParamType::Vec2, glm::dvec3(1.5, 2.5, 0.0)};
+    EXPECT_TRUE(pasteKey(p, r, clip, 9.0));
+    readValueAt(p, r, 9.0, v);
+    EXPECT_EQ(v[0], 1.5);
+    EXPECT_EQ(v[1], 2.5);
+    EXPECT_FALSE(pasteKey(p, ref(p, "fog.colour_rgb"), clip, 9.0)) << "a 2-vector onto a colour";
+    EXPECT_FALSE(pasteKey(p, ref(p, "fog.falloff_per_m"), clip, 9.0)) << "a 2-vector onto a scalar";
+    KeyClipboard colour{true, ParamType::Colour, glm::dvec3(0.1, 0.2, 0.3)};
+    EXPECT_FALSE(pasteKey(p, r, colour, 9.0)) << "a colour onto a 2-vector";
+}
+
 TEST(PresetEdit, Objects) {
     Preset p = defaultPreset();
     const int v = addVolume(p, FogVolumeShape::Ellipsoid, {1, 2, 3});

@@ -31,6 +31,7 @@
 #include <aerial/timeline.hpp>
 
 #include <glm/gtc/quaternion.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include <cassert>
@@ -45,6 +46,7 @@ enum class ParamType {
     Scalar,      ///< double
     Colour,      ///< glm::dvec3, scene-linear Rec.709 RGB
     Vec3,        ///< glm::dvec3 (positions, extents, per-channel coefficients)
+    Vec2,        ///< glm::dvec2, horizontal [x, z] (x = world X, y = world Z); JSON [x, z]
     Quaternion,  ///< glm::dquat, unit; JSON [x, y, z, w]
     Enum,        ///< an enum class; JSON string from enumNames
     Int,         ///< integer (e.g. a seed); JSON integer
@@ -67,7 +69,7 @@ struct ParamDesc {
     /// Tooltip / documentation: meaning, unit, range.
     std::string_view doc;
     /// Valid range, inclusive, for Scalar/Int and every component of
-    /// Colour/Vec3 (Quaternion: unit length instead). Values outside are
+    /// Colour/Vec3/Vec2 (Quaternion: unit length instead). Values outside are
     /// errors in validation and in the loader.
     double minValue = 0.0;
     double maxValue = 0.0;
@@ -76,14 +78,17 @@ struct ParamDesc {
     double uiMin = 0.0;
     double uiMax = 0.0;
     /// Default value: x for Scalar/Int/Enum (enum index), xyz for
-    /// Colour/Vec3, xyzw for Quaternion (w = real part). Equals the
+    /// Colour/Vec3, xz as [0], [1] for Vec2, xyzw for Quaternion (w = real
+    /// part). Equals the
     /// struct's default member initialiser (a test checks).
     double defaultValue[4] = {0.0, 0.0, 0.0, 0.0};
     /// String default.
     std::string_view defaultText;
     /// Show the slider logarithmically.
     bool logScale = false;
-    /// May carry a timeline track (Scalar, Colour, Vec3 only).
+    /// May carry a timeline track (Scalar, Colour, Vec3, Vec2 only). A
+    /// track's keys hold components() numbers (TrackKey::value's x, y, z;
+    /// a Vec2's [x, z] as value.x, value.y, with value.z = 0).
     bool animatable = false;
     /// Vec3 that must have unit length (|v| within 1e-6 of 1).
     bool unitLength = false;
@@ -95,6 +100,7 @@ struct ParamDesc {
     // Accessors; the one matching `type` is set, the others are null.
     double* (*scalar)(void* object) = nullptr;             ///< Scalar
     glm::dvec3* (*vec3)(void* object) = nullptr;           ///< Colour, Vec3
+    glm::dvec2* (*vec2)(void* object) = nullptr;           ///< Vec2
     glm::dquat* (*quat)(void* object) = nullptr;           ///< Quaternion
     std::string* (*string)(void* object) = nullptr;        ///< String
     std::int64_t (*getInt)(const void* object) = nullptr;  ///< Enum, Int
@@ -105,8 +111,12 @@ struct ParamDesc {
         const std::size_t dot = path.rfind('.');
         return dot == std::string_view::npos ? path : path.substr(dot + 1);
     }
-    /// 1 for Scalar/Int/Enum, 3 for Colour/Vec3, 4 for Quaternion, 0 for String.
-    int components() const;
+    /// 1 for Scalar/Int/Enum, 2 for Vec2, 3 for Colour/Vec3, 4 for
+    /// Quaternion, 0 for String.
+    int components() const { return componentCount(type); }
+
+    /// components() of a type.
+    static int componentCount(ParamType type);
 };
 
 /// Every parameter of a scope, in canonical (file) order.
@@ -140,7 +150,7 @@ inline void* paramObject(const ParamDesc& p, Emitter& emitter) {
 }
 
 /// A parameter's current value as up to four doubles (see defaultValue's
-/// layout); strings give zeros.
+/// layout: a Vec2 fills out[0], out[1]); strings give zeros.
 template <class Object>
 void readParam(const ParamDesc& p, const Object& object, double out[4]) {
     void* o = paramObject(p, const_cast<Object&>(object));
@@ -153,6 +163,11 @@ void readParam(const ParamDesc& p, const Object& object, double out[4]) {
         case ParamType::Vec3: {
             const glm::dvec3& v = *p.vec3(o);
             out[0] = v.x, out[1] = v.y, out[2] = v.z;
+            break;
+        }
+        case ParamType::Vec2: {
+            const glm::dvec2& v = *p.vec2(o);
+            out[0] = v.x, out[1] = v.y;
             break;
         }
         case ParamType::Quaternion: {

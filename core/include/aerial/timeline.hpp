@@ -22,7 +22,8 @@
 //     it. Each segment is then monotone, so the curve never leaves the range
 //     of its two keys (a density keyed 0 -> 0.01 -> 0 never goes negative);
 //     evaluation also clamps to that range against rounding.
-//   * Colours interpolate per channel in scene-linear RGB.
+//   * Colours interpolate per channel in scene-linear RGB; vectors (3 or
+//     2 components) per component.
 //   * Targets are stable: a global parameter by its path
 //     ("fog.density_per_m"), a volume's or emitter's parameter by the
 //     object's id and the parameter key, so renaming or reordering objects
@@ -68,7 +69,8 @@ struct TrackTarget {
 struct TrackKey {
     /// Time of day [h], 0 <= t < 24.
     double timeHours = 0.0;
-    /// The value in the parameter's unit; scalars use .x only (y, z are 0).
+    /// The value in the parameter's unit; scalars use .x only (y, z are 0),
+    /// horizontal 2-vectors [x, z] use .x and .y (z is 0).
     glm::dvec3 value{0.0};
 };
 
@@ -83,14 +85,16 @@ struct Track {
 /// tangents, computed once.
 struct CompiledTrack {
     Interpolation interpolation = Interpolation::Smooth;
-    int components = 1;         ///< 1 (scalar) or 3 (vec3 / colour)
+    int components = 1;         ///< 1 (scalar), 2 (vec2 in x, y) or 3 (vec3 / colour)
     std::vector<double> times;  ///< [h], strictly increasing in [0, 24)
     std::vector<glm::dvec3> values;
     std::vector<glm::dvec3> tangents;  ///< d value / d t [unit per h] (Smooth only)
 };
 
 /// Prepares a track; keys must be valid (validatePreset checks them). An
-/// empty key list gives a track that evaluates to 0.
+/// empty key list gives a track that evaluates to 0. `components` is 1, 2 or
+/// 3 (ParamDesc::components() of the target; other values read as 3): the
+/// keys' components past it are taken as 0.
 CompiledTrack compileTrack(const Track& track, int components);
 
 /// The track's value at time t [h] (wrapped into [0, 24); a non-finite t
