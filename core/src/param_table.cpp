@@ -70,7 +70,7 @@ ParamDesc triple(ParamScope scope, ParamType type, sv path, sv label, sv unit, R
 
 /// A horizontal 2-vector [x, z] (x = world X, y = world Z), such as a wind
 /// velocity; `r` bounds each component.
-[[maybe_unused]] ParamDesc vector2(ParamScope scope, sv path, sv label, sv unit, Range r, glm::dvec2 def,
+ParamDesc vector2(ParamScope scope, sv path, sv label, sv unit, Range r, glm::dvec2 def,
                                    bool animatable, glm::dvec2* (*access)(void*), sv doc) {
     ParamDesc p;
     p.scope = scope;
@@ -328,6 +328,11 @@ const std::vector<ParamDesc>& globalTable() {
             G, "clouds.density_per_m", "Cloud density", "1/m", {0, 1, 1e-4, 0.5}, 0.02, true, true,
             [](void* o) { return &env(o).clouds.densityPerM; },
             "Extinction inside a full cloud [1/m], 0..1; visibility inside ~3.9 / density. Default 0.02."),
+        vector2(
+            G, "clouds.wind_m_per_s", "Wind", "m/s", {-1000, 1000, -40, 40}, glm::dvec2(10.0, 3.0), true,
+            [](void* o) { return &env(o).clouds.windMPerS; },
+            "Wind drifting the clouds [m/s], horizontal [x, z] (world X, Z), -1000..1000 per component; "
+            "the layer at time t is the layer at 00:00 moved by wind x t. Default [10, 3]."),
         seedParam(
             G, "clouds.seed", "Seed of the cloud noise, 0..4294967295; a game regenerates the same noise "
             "from it. Default 1.",

@@ -84,7 +84,7 @@ TEST(ParamTable, PathsAreUniqueAndFindable) {
 TEST(ParamTable, KeysCarryTheirUnits) {
     const std::map<std::string, std::string> suffix = {
         {"m", "_m"}, {"1/m", "_per_m"},        {"1/m^2", "_per_m2"}, {"deg", "_deg"},
-        {"s", "_s"}, {"1/min", "_per_minute"}, {"h", "_h"}};
+        {"s", "_s"}, {"1/min", "_per_minute"}, {"h", "_h"}, {"m/s", "_m_per_s"}, {"1/s", "_per_s"}};
     int checked = 0;
     for (ParamScope scope : kScopes) {
         for (const ParamDesc& p : aerial::paramTable(scope)) {
