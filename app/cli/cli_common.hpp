@@ -60,6 +60,7 @@ Command addValidateCommand(CLI::App& parent);
 Command addEvalCommand(CLI::App& parent);
 Command addSkyCommand(CLI::App& parent);
 Command addFogCommand(CLI::App& parent);
+Command addCloudsCommand(CLI::App& parent);
 Command addBakeCommand(CLI::App& parent);
 Command addDayCommand(CLI::App& parent);
 /// Only in a build with the renderer (AERIAL_HAVE_RENDERER).

@@ -19,7 +19,9 @@
 //       time, the full evaluated state (sun, moon, every parameter, volumes,
 //       emitters: as `aerial eval --json`) and per light its EXR file name,
 //       light direction and azimuth, and horizon averages (the fog colour);
-//       how to expose a frame as the preset says ("exposure").
+//       how to expose a frame as the preset says ("exposure"); the clouds'
+//       noise seed and, when the preset has clouds, the FNV-1a fingerprint
+//       of the texels aerial::cloudNoise(seed) gives ("clouds").
 //
 // Radiance in a world direction v (unit): for each light,
 //   el = asin(max(v.y, 0)), j = (H - 1) sqrt(el / (pi/2))   (quadratic rows)
@@ -68,6 +70,27 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr const char* kManifestName = "manifest.json";
+
+/// How a game gets the clouds' noise: regenerate it from the seed through
+/// the library and check the fingerprint (only computed when some step has
+/// clouds; generating the noise costs ~0.4 s).
+Json cloudsToJson(std::int64_t seed, bool cloudy) {
+    Json clouds = {{"seed", seed},
+                   {"shape_size", CloudNoise::kShapeSize},
+                   {"detail_size", CloudNoise::kDetailSize},
+                   {"how",
+                    "per step, parameters.clouds; the noise is aerial::cloudNoise(seed) (aerial/clouds.hpp): "
+                    "shape and detail R32F 3D textures, texel (i, j, k) at (k * size + j) * size + i, sampled "
+                    "with GL_LINEAR + GL_REPEAT; the layer's density and its offset by the wind as "
+                    "aerial::cloudDensityAt"}};
+    if (cloudy) {
+        char hex[19];
+        std::snprintf(hex, sizeof hex, "0x%016llx",
+                      static_cast<unsigned long long>(cloudNoiseFingerprint(*cloudNoise(seed))));
+        clouds["noise_fnv1a64"] = hex;
+    }
+    return clouds;
+}
 constexpr int kManifestFormatVersion = 1;
 constexpr int kChannelCount = 9;
 constexpr const char* kChannelNames[kChannelCount] = {"rayleigh.R", "rayleigh.G", "rayleigh.B",
@@ -215,11 +238,13 @@ int runBake(const BakeOptions& options) {
     SkyTables tables(desc);
     PresetState state;
     Json steps = Json::array();
+    bool cloudy = false;  // some step has clouds: the manifest fingerprints their noise
     Progress progress(stepCount, options.quiet);
     for (int k = 0; k < stepCount; ++k) {
         const double t = k * stepHours;
         compiled.evaluate(t, state);
         tables.solve(state);
+        cloudy = cloudy || aerial::prepareClouds(state).active();
         std::string clock = formatTime(t);
         clock.erase(std::remove(clock.begin(), clock.end(), ':'), clock.end());
         std::string index = std::to_string(k);
@@ -280,6 +305,7 @@ int runBake(const BakeOptions& options) {
            "luminance (10-90 % band of a log2 histogram), adapting at adapt_up_per_s / adapt_down_per_s; "
            "multiply radiance by nits_per_radiance_unit / (1.2 * 2^(EV100 - compensation_ev)) before tone "
            "mapping (aerial/exposure.hpp)"}}},
+        {"clouds", cloudsToJson(compiled.preset().environment.clouds.seed, cloudy)},
         {"steps", steps}};
     writeText(dir / kManifestName, jsonText(manifest) + "\n");
     syncPath(dir, true);

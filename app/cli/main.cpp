@@ -86,6 +86,7 @@ int main(int argc, char** argv) {
                    "  aerial eval presets/hazy_sunset.json --time 18:30 --json\n"
                    "  aerial sky presets/clear_summer_day.json --time 12:00 --dir 0,1,0\n"
                    "  aerial fog presets/foggy_valley_morning.json --time 7 --from 0,2,0 --to 0,2,-500\n"
+                   "  aerial clouds presets/clear_summer_day.json --time 14:00 --at 0,0,0\n"
                    "  aerial bake presets/hazy_sunset.json --out bake/ --step 0.5h\n"
                    "  aerial day"
 #ifdef AERIAL_HAVE_RENDERER
@@ -96,7 +97,8 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
 
     std::vector<Command> commands = {addValidateCommand(app), addEvalCommand(app), addSkyCommand(app),
-                                     addFogCommand(app),      addBakeCommand(app), addDayCommand(app)};
+                                     addFogCommand(app),      addCloudsCommand(app), addBakeCommand(app),
+                                     addDayCommand(app)};
 #ifdef AERIAL_HAVE_RENDERER
     commands.push_back(addRenderCommand(app));
 #endif

@@ -21,6 +21,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <mutex>
 #include <thread>
 
@@ -249,6 +250,23 @@ std::shared_ptr<const CloudNoise> cloudNoise(std::int64_t seed) {
     cache.insert(cache.begin(), made);
     if (cache.size() > kCached) cache.pop_back();
     return made;
+}
+
+std::uint64_t cloudNoiseFingerprint(const CloudNoise& noise) {
+    std::uint64_t h = 0xcbf29ce484222325ULL;
+    auto feed = [&h](const std::vector<float>& texels) {
+        for (float v : texels) {
+            std::uint32_t bits = 0;
+            std::memcpy(&bits, &v, sizeof bits);
+            for (int b = 0; b < 4; ++b) {
+                h ^= (bits >> (8 * b)) & 0xffU;
+                h *= 0x100000001b3ULL;
+            }
+        }
+    };
+    feed(noise.shape);
+    feed(noise.detail);
+    return h;
 }
 
 double sampleTileable(const std::vector<float>& texels, int size, const glm::dvec3& uvw) {

@@ -208,6 +208,10 @@ PresetState evaluate(const Preset& preset, double timeHours) {
     return CompiledPreset(preset).evaluate(timeHours);
 }
 
+CloudField prepareClouds(const PresetState& state) {
+    return prepareClouds(state.environment.clouds, {}, state.timeHours, state.environment.atmosphere.planetRadius);
+}
+
 FogSceneDesc fogSceneDesc(const PresetState& state, const SkyTable& sunSky, const SkyTable& moonSky) {
     FogSceneDesc desc;
     desc.heightFog = state.environment.fog;

@@ -7,14 +7,19 @@
 //   4. build the fog scene for the frame and query the fog between the camera
 //      and each transparent object (they cannot read the fogged depth buffer);
 //   5. expose the frame as the artist's preset says (manual, or metered from
-//      the frame's average luminance, plus the compensation keyed at this hour).
+//      the frame's average luminance, plus the compensation keyed at this hour);
+//   6. ask the clouds whether the player stands in their shadow (the noise is
+//      generated once from the preset's seed, the same texels the editor and
+//      the bake's manifest fingerprint describe).
 //
 // Usage: minimal_game PRESET.json [STEP_HOURS]
 // Prints, per step: the time, the sun direction, the fog colour seen looking
 // at the glass pane, the fog transmittance and in-scatter in front of it, and
 // the EV100 and radiance scale of the preset's exposure (metered here on the
-// zenith sky, where a game meters its rendered frame).
+// zenith sky, where a game meters its rendered frame), and the sunlight the
+// clouds let through to the camera (1 = clear).
 // Exit code 0, or 1 when the preset does not load or a result is not finite.
+#include <aerial/clouds.hpp>
 #include <aerial/evaluate.hpp>
 #include <aerial/exposure.hpp>
 #include <aerial/fog_query.hpp>
@@ -63,7 +68,8 @@ int main(int argc, char** argv) {
     const glm::dvec3 glassPane(40.0, 3.0, -145.0);
 
     std::printf("%s\n%5s  %-26s  %-26s  %-8s  %s\n", preset.preset().name.c_str(), "time", "sun direction",
-                "fog colour at the pane", "T_pane", "in-scatter at the pane                EV100  scale");
+                "fog colour at the pane", "T_pane",
+                "in-scatter at the pane                EV100  scale     sun_through_clouds");
     for (int step = 0; step * stepHours < 24.0 - 1e-9; ++step) {
         const double t = step * stepHours;
         preset.evaluate(t, state);
@@ -93,16 +99,20 @@ int main(int argc, char** argv) {
         const double scale =
             aerial::radianceScale(exposure, ev100);  // multiplies radiance before tone mapping
 
+        // 6. Cloud shadow: the sun's transmittance through the clouds at the player.
         const glm::dvec3& sun = state.sunLight.body.direction;
+        const aerial::CloudField clouds = aerial::prepareClouds(state);
+        const double sunThroughClouds = aerial::cloudSunVisibility(clouds, camera, sun);
+
         std::printf(
             "%02d:%02d  (%7.4f, %7.4f, %7.4f)  (%7.4f, %7.4f, %7.4f)  %8.5f  (%.4f, %.4f, %.4f)  %6.2f  "
-            "%.4g\n",
+            "%-8.4g  %.4f\n",
             int(t), int(std::lround((t - int(t)) * 60.0)) % 60, sun.x, sun.y, sun.z, fogColour.r, fogColour.g,
             fogColour.b, pane.transmittance.g, pane.inScatter.r, pane.inScatter.g, pane.inScatter.b, ev100,
-            scale);
+            scale, sunThroughClouds);
         if (!finite(sun) || !finite(fogColour) || !finite(pane.inScatter) || !(pane.transmittance.g >= 0.0) ||
             !(pane.transmittance.g <= 1.0) || !std::isfinite(ev100) ||
-            !(scale > 0.0 && std::isfinite(scale))) {
+            !(scale > 0.0 && std::isfinite(scale)) || !(sunThroughClouds >= 0.0 && sunThroughClouds <= 1.0)) {
             std::fprintf(stderr, "minimal_game: a result at %.2f h is not finite or out of range\n", t);
             return 1;
         }

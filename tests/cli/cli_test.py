@@ -208,6 +208,10 @@ class Validate(unittest.TestCase):
         ("mie_extinction_below_scattering.json", "/atmosphere/mie/extinction_per_m/1", 6, 37, "must be >="),
         ("not_an_object.json", "", 1, 1, "expected an object"),
         ("bad_track_value.json", "/tracks/0/keys/0/value", 4, 65, "array of 3 numbers"),
+        ("cloud_coverage_out_of_range.json", "/clouds/coverage", 3, 26, "out of range: 1.5 is not in 0..1"),
+        ("cloud_thickness_zero.json", "/clouds/thickness_m", 4, 29, "out of range: 0 is not in 10..20000 m"),
+        ("cloud_negative_density.json", "/clouds/density_per_m", 3, 31, "out of range: -0.01 is not in 0..1 1/m"),
+        ("cloud_wind_arity.json", "/clouds/wind_m_per_s", 3, 30, "expected an array of 2 numbers, got an array of 3"),
     ]
 
     def test_every_shipped_preset_is_valid(self):
@@ -381,6 +385,97 @@ class Fog(unittest.TestCase):
         self.assertEqual(set(r["lights"]), {"sun", "moon"})
 
 
+class Clouds(unittest.TestCase):
+    RG = 6360000.0
+
+    @classmethod
+    def setUpClass(cls):
+        cls.LAYER = os.path.join(ROOT, "tests", "data", "cli", "clouds_layer.json")
+
+    def height(self, p):
+        x, y, z = p
+        return math.sqrt(x * x + z * z + (y + self.RG) ** 2) - self.RG
+
+    def at_height(self, x, z, h):
+        """The point at (x, z) standing h above the curved ground."""
+        return (x, math.sqrt((self.RG + h) ** 2 - x * x - z * z) - self.RG, z)
+
+    def test_points_in_order_with_every_answer(self):
+        points = [(0, 0, 0), (2000, 0, -500), (-300, 2500, 40), (100, 9000, 100)]
+        r = run_json(self, "clouds", self.LAYER, "--time", "14:00", *["--at=%g,%g,%g" % p for p in points])
+        self.assertTrue(r["clouds_active"])
+        self.assertEqual([tuple(p["at"]) for p in r["points"]], [tuple(map(float, p)) for p in points])
+        for p, q in zip(points, r["points"]):
+            self.assertAlmostEqual(q["height_m"], self.height(p), delta=1e-6)
+            for key in ("sun_visibility", "transmittance"):
+                self.assertTrue(0.0 <= q[key] <= 1.0, q)
+            self.assertAlmostEqual(q["coverage"], 0.7)
+        # Above the layer (9 km) nothing lies between the point and the sun or the sky.
+        self.assertEqual(r["points"][3]["sun_visibility"], 1.0)
+        self.assertEqual(r["points"][3]["transmittance"], 1.0)
+        # A 0.7 cover over 2 km of cloud hides the sun somewhere among a few points.
+        many = run_json(self, "clouds", self.LAYER, "--time", "14:00",
+                        *["--at=%d,0,%d" % (400 * i, -300 * i) for i in range(40)])
+        vis = [p["sun_visibility"] for p in many["points"]]
+        self.assertLess(min(vis), 0.05)
+        self.assertEqual(max(vis), 1.0)
+
+    def test_up_through_the_layer_equals_down_through_it(self):
+        # The same segment marched from either end gives the same samples.
+        for x, z in ((0, 0), (1234, -777), (-5000, 3000)):
+            # Radially, so both ends see the same segment.
+            ground = self.at_height(x, z, 0)
+            k = (self.RG + 6000.0) / self.RG  # 6 km up the same radius
+            above = (x * k, (ground[1] + self.RG) * k - self.RG, z * k)
+            up = run_json(self, "clouds", self.LAYER, "--time", "10:00", "--at=%r,%r,%r" % ground,
+                          "--dir", "%r,%r,%r" % (x, ground[1] + self.RG, z))
+            down = run_json(self, "clouds", self.LAYER, "--time", "10:00", "--at=%g,%g,%g" % above,
+                            "--dir", "%r,%r,%r" % (-x, -(above[1] + self.RG), -z))
+            a, b = up["points"][0]["transmittance"], down["points"][0]["transmittance"]
+            self.assertAlmostEqual(a, b, delta=1e-5 * a + 1e-12)  # rounding of the printed points
+
+    def test_the_wind_carries_the_layer(self):
+        # wind [10, 3] m/s: at 13:00 the cloud at p + wind * 3600 s is the cloud at p at 12:00.
+        base = [self.at_height(1300.0 * i, -900.0 * i, 1900 + 25.0 * (i % 10)) for i in range(60)]
+        later = [self.at_height(p[0] + 36000.0, p[2] + 10800.0, self.height(p)) for p in base]
+        r0 = run_json(self, "clouds", self.LAYER, "--time", "12:00", *["--at=%r,%r,%r" % p for p in base])
+        r1 = run_json(self, "clouds", self.LAYER, "--time", "13:00", *["--at=%r,%r,%r" % p for p in later])
+        d0 = [p["density_per_m"] for p in r0["points"]]
+        d1 = [p["density_per_m"] for p in r1["points"]]
+        self.assertGreater(sum(1 for d in d0 if d > 0), 3)
+        for a, b in zip(d0, d1):
+            self.assertAlmostEqual(a, b, delta=1e-6 * a + 1e-12)
+
+    def test_a_clear_preset_has_no_cloud(self):
+        r = run_json(self, "clouds", os.path.join(ROOT, "tests", "data", "cli", "global_fog_only.json"), "--time",
+                     "18:00", "--at", "0,0,0", "--at", "0,2000,0")
+        self.assertFalse(r["clouds_active"])
+        for p in r["points"]:
+            self.assertEqual((p["sun_visibility"], p["transmittance"], p["density_per_m"]), (1.0, 1.0, 0.0))
+
+    def test_bake_manifest_carries_the_clouds(self):
+        out = os.path.join(WORK, "bake_clouds")
+        code, _, err = run("bake", self.LAYER, "--out", out, "--step", "12h", "--size", "16x8", "--quiet")
+        self.assertEqual(code, 0, err)
+        with open(os.path.join(out, "manifest.json")) as f:
+            m = json.load(f)
+        self.assertEqual(m["clouds"]["seed"], 5)
+        self.assertRegex(m["clouds"]["noise_fnv1a64"], r"^0x[0-9a-f]{16}$")
+        self.assertEqual(m["steps"][0]["parameters"]["clouds"]["coverage"], 0.7)
+        clear = os.path.join(WORK, "bake_clear")
+        code, _, err = run("bake", os.path.join(ROOT, "tests", "data", "cli", "global_fog_only.json"), "--out",
+                           clear, "--step", "12h", "--size", "16x8", "--quiet")
+        self.assertEqual(code, 0, err)
+        with open(os.path.join(clear, "manifest.json")) as f:
+            self.assertNotIn("noise_fnv1a64", json.load(f)["clouds"])
+
+    def test_eval_shows_the_clouds_block(self):
+        r = run_json(self, "eval", self.LAYER, "--time", "12:00")
+        self.assertEqual(r["parameters"]["clouds"]["coverage"], 0.7)
+        self.assertEqual(r["parameters"]["clouds"]["wind_m_per_s"], [10.0, 3.0])
+        self.assertEqual(r["parameters"]["clouds"]["seed"], 5)
+
+
 class Bake(unittest.TestCase):
     CHANNELS = {"rayleigh.R", "rayleigh.G", "rayleigh.B", "mie.R", "mie.G", "mie.B", "multiple.R", "multiple.G",
                 "multiple.B"}
@@ -502,6 +597,10 @@ class CommandLineErrors(unittest.TestCase):
             (["sky", good, "--dir", "1,2"], 2, "--dir"),
             (["sky", good], 2, "--dir"),
             (["fog", good, "--from", "0,1,0", "--to", "0,1"], 2, "--to"),
+            (["clouds", good, "--at", "0,1"], 2, "--at"),
+            (["clouds", good, "--at", "0,nan,0"], 2, "--at"),
+            (["clouds", good, "--at", "0,0,0", "--dir", "0,0,0"], 2, "--dir"),
+            (["clouds", good], 2, "--at"),
             (["bake", good, "--out", out_dir, "--size", "0x5"], 2, "--size"),
             (["bake", good, "--out", out_dir, "--size", "128"], 2, "--size"),
             (["bake", good, "--out", out_dir, "--step", "0"], 2, "--step"),
@@ -515,6 +614,8 @@ class CommandLineErrors(unittest.TestCase):
             (["eval", missing], 1, missing),
             (["sky", missing, "--dir", "0,1,0"], 1, missing),
             (["fog", missing, "--from", "0,1,0", "--to", "0,1,-5"], 1, missing),
+            (["clouds", missing, "--at", "0,0,0"], 1, missing),
+            (["clouds", invalid, "--at", "0,0,0"], 1, invalid + ":5:40:"),
             (["bake", missing, "--out", out_dir], 1, missing),
             (["day", missing], 1, missing),
             (["validate", missing], 1, missing),

@@ -66,11 +66,17 @@ TEST(CloudNoise, DeterministicWhateverTheThreadCountAndSeedDependent) {
     const auto cached = aerial::cloudNoise(7);
     EXPECT_EQ(0, std::memcmp(one.shape.data(), cached->shape.data(), one.shape.size() * sizeof(float)));
     EXPECT_EQ(cached.get(), aerial::cloudNoise(7).get());
+    EXPECT_EQ(aerial::cloudNoiseFingerprint(one), aerial::cloudNoiseFingerprint(*cached));
     // Another seed is other noise: most texels differ.
     const auto other = aerial::cloudNoise(8);
     std::size_t same = 0;
     for (std::size_t i = 0; i < one.shape.size(); ++i) same += one.shape[i] == other->shape[i];
     EXPECT_LT(double(same) / double(one.shape.size()), 0.01);
+    EXPECT_NE(aerial::cloudNoiseFingerprint(one), aerial::cloudNoiseFingerprint(*other));
+    // The fingerprint sees a single flipped bit.
+    aerial::CloudNoise flipped = one;
+    flipped.detail[12345] = std::nextafter(flipped.detail[12345], 2.0f);
+    EXPECT_NE(aerial::cloudNoiseFingerprint(one), aerial::cloudNoiseFingerprint(flipped));
 }
 
 TEST(CloudNoise, ValuesInUnitRangeAndShapeUniformSoCoverageMeansCoverage) {

@@ -328,6 +328,10 @@ const Fixture kFixtures[] = {
     {"mie_extinction_below_scattering.json", "/atmosphere/mie/extinction_per_m/1", 6, 37, "must be >="},
     {"not_an_object.json", "", 1, 1, "expected an object"},
     {"bad_track_value.json", "/tracks/0/keys/0/value", 4, 65, "array of 3 numbers"},
+    {"cloud_coverage_out_of_range.json", "/clouds/coverage", 3, 26, "out of range: 1.5 is not in 0..1"},
+    {"cloud_thickness_zero.json", "/clouds/thickness_m", 4, 29, "out of range: 0 is not in 10..20000 m"},
+    {"cloud_negative_density.json", "/clouds/density_per_m", 3, 31, "out of range: -0.01 is not in 0..1 1/m"},
+    {"cloud_wind_arity.json", "/clouds/wind_m_per_s", 3, 30, "expected an array of 2 numbers, got an array of 3"},
 };
 
 TEST(Preset, MalformedFilesGiveLocatedErrors) {

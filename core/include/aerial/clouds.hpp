@@ -137,6 +137,12 @@ CloudNoise generateCloudNoise(std::int64_t seed, int threadCount = 0);
 /// seeds); thread-safe.
 std::shared_ptr<const CloudNoise> cloudNoise(std::int64_t seed);
 
+/// FNV-1a (64 bit) over the bytes of the shape then the detail texels
+/// (little-endian IEEE floats): a game that regenerates the noise from the
+/// seed checks it got the same texels, bit for bit, against the bake's
+/// manifest.
+std::uint64_t cloudNoiseFingerprint(const CloudNoise& noise);
+
 /// Trilinear, wrapping sample of a tileable texture (size^3 floats) at uvw
 /// (period 1), texel centres at (i + 0.5) / size.
 double sampleTileable(const std::vector<float>& texels, int size, const glm::dvec3& uvw);

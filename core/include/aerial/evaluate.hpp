@@ -32,6 +32,7 @@
 // evaluate calls transmittanceToSpace directly (slower).
 #pragma once
 
+#include <aerial/clouds.hpp>
 #include <aerial/emitter.hpp>
 #include <aerial/fog_query.hpp>
 #include <aerial/fog_volume.hpp>
@@ -108,6 +109,11 @@ private:
 /// fog lights — direction, illuminance above the atmosphere and the horizon
 /// averages of the sky tables solved for this state's sun and moon.
 FogSceneDesc fogSceneDesc(const PresetState& state, const SkyTable& sunSky, const SkyTable& moonSky);
+
+/// The clouds of a state for CPU cloud queries (clouds.hpp): the evaluated
+/// cloud layer at the state's time (wind offset), the planet's radius.
+/// Cheap once the seed's noise is cached.
+CloudField prepareClouds(const PresetState& state);
 
 /// Convenience: compile and evaluate once (slow path; a game keeps a
 /// CompiledPreset).
