@@ -46,6 +46,7 @@ Selection::Kind globalGroup(const ParamDesc& p) {
     if (startsWith(p.path, "sun.") || startsWith(p.path, "moon.")) return Selection::Kind::Lights;
     if (startsWith(p.path, "fog.")) return Selection::Kind::Fog;
     if (startsWith(p.path, "exposure.")) return Selection::Kind::Exposure;
+    if (startsWith(p.path, "clouds.")) return Selection::Kind::Clouds;
     return Selection::Kind::Atmosphere;
 }
 
@@ -262,7 +263,8 @@ void drawInspector(Document& doc, EditState& edit, double timeHours, const Prese
         case Selection::Kind::Atmosphere:
         case Selection::Kind::Lights:
         case Selection::Kind::Fog:
-        case Selection::Kind::Exposure: {
+        case Selection::Kind::Exposure:
+        case Selection::Kind::Clouds: {
             if (edit.selection.kind == Selection::Kind::Atmosphere) {
                 std::string name = preset.name, description = preset.description;
                 if (ImGui::InputText("Preset name", &name))
@@ -299,6 +301,20 @@ void drawInspector(Document& doc, EditState& edit, double timeHours, const Prese
                 ImGui::Text("Sunrise %s, sunset %s, day %.1f h",
                             formatClock(rise, ClockResolution::Minutes).c_str(),
                             formatClock(set, ClockResolution::Minutes).c_str(), dayLengthHours(where));
+            }
+            if (edit.selection.kind == Selection::Kind::Clouds) {
+                ImGui::Spacing();
+                ImGui::TextDisabled("Now");
+                ImGui::Separator();
+                const CloudParams& c = state.environment.clouds;
+                const double speed = std::hypot(c.windMPerS.x, c.windMPerS.y);
+                ImGui::Text("Coverage %.0f%%, layer %.0f..%.0f m", c.coverage * 100.0, c.bottomM,
+                            c.bottomM + c.thicknessM);
+                ImGui::Text("Inside a full cloud you see %.0f m", c.densityPerM > 0.0 ? 3.912 / c.densityPerM : 0.0);
+                ImGui::Text("Drifting %.1f m/s (%.0f km/h) towards azimuth %.0f deg", speed, speed * 3.6,
+                            std::fmod(std::atan2(c.windMPerS.x, -c.windMPerS.y) * kDegrees + 360.0, 360.0));
+                if (c.coverage <= 0.0)
+                    ImGui::TextWrapped("Coverage 0: a clear sky. Raise the coverage (and key it over the day).");
             }
             if (edit.selection.kind == Selection::Kind::Exposure) {
                 ImGui::Spacing();

@@ -50,6 +50,7 @@ void drawOutliner(Document& doc, EditState& edit, const ActionTable& actions,
     item("Sun & moon", {Selection::Kind::Lights, -1});
     item("Global fog", {Selection::Kind::Fog, -1});
     item("Exposure", {Selection::Kind::Exposure, -1});
+    item("Clouds", {Selection::Kind::Clouds, -1});
 
     auto objects = [&](bool volume) {
         const ParamScope scope = volume ? ParamScope::Volume : ParamScope::Emitter;

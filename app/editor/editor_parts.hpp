@@ -43,7 +43,7 @@ namespace aerial::editor {
 
 /// What the outliner has selected.
 struct Selection {
-    enum class Kind { None, Atmosphere, Lights, Fog, Volume, Emitter, Exposure };
+    enum class Kind { None, Atmosphere, Lights, Fog, Volume, Emitter, Exposure, Clouds };
     Kind kind = Kind::Fog;
     int index = -1;  ///< volume or emitter index
     bool operator==(const Selection&) const = default;

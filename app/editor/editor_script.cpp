@@ -323,10 +323,10 @@ void Editor::declareScriptCommands() {
              return false;
          }});
     table.add({"expect_selected", 1, 2,
-               "expect_selected volume|emitter|none|fog|atmosphere|lights|exposure [N]",
+               "expect_selected volume|emitter|none|fog|atmosphere|lights|exposure|clouds [N]",
                "what the outliner has selected", [this](W w, E error) {
-                   static const char* kinds[] = {"none",   "atmosphere", "lights",  "fog",
-                                                 "volume", "emitter",    "exposure"};
+                   static const char* kinds[] = {"none",   "atmosphere", "lights",   "fog",
+                                                 "volume", "emitter",    "exposure", "clouds"};
                    const std::string have = kinds[int(edit_.selection.kind)];
                    double n = -1;
                    if (w.size() == 3 && !toNumber(w[2], n)) {

@@ -86,7 +86,7 @@ void Editor::declareEditScriptCommands() {
                    actions_.run(w[1] == "point" ? "add_point_emitter" : "add_lightning");
                    return true;
                }});
-    table.add({"select", 1, 2, "select atmosphere|lights|fog|exposure|none | select volume|emitter N",
+    table.add({"select", 1, 2, "select atmosphere|lights|fog|exposure|clouds|none | select volume|emitter N",
                "select in the outliner", [this](W w, E error) {
                    double index = -1;
                    if (w.size() == 3 && !toNumber(w[2], index)) {
@@ -106,6 +106,8 @@ void Editor::declareEditScriptCommands() {
                        select({Selection::Kind::Fog, -1});
                    else if (w[1] == "exposure")
                        select({Selection::Kind::Exposure, -1});
+                   else if (w[1] == "clouds")
+                       select({Selection::Kind::Clouds, -1});
                    else if (w[1] == "none")
                        select({Selection::Kind::None, -1});
                    else {
