@@ -75,14 +75,15 @@ constexpr const char* kManifestName = "manifest.json";
 /// the library and check the fingerprint (only computed when some step has
 /// clouds; generating the noise costs ~0.4 s).
 Json cloudsToJson(std::int64_t seed, bool cloudy) {
-    Json clouds = {{"seed", seed},
-                   {"shape_size", CloudNoise::kShapeSize},
-                   {"detail_size", CloudNoise::kDetailSize},
-                   {"how",
-                    "per step, parameters.clouds; the noise is aerial::cloudNoise(seed) (aerial/clouds.hpp): "
-                    "shape and detail R32F 3D textures, texel (i, j, k) at (k * size + j) * size + i, sampled "
-                    "with GL_LINEAR + GL_REPEAT; the layer's density and its offset by the wind as "
-                    "aerial::cloudDensityAt"}};
+    Json clouds = {
+        {"seed", seed},
+        {"shape_size", CloudNoise::kShapeSize},
+        {"detail_size", CloudNoise::kDetailSize},
+        {"how",
+         "per step, parameters.clouds; the noise is aerial::cloudNoise(seed) (aerial/clouds.hpp): "
+         "shape and detail R32F 3D textures, texel (i, j, k) at (k * size + j) * size + i, sampled "
+         "with GL_LINEAR + GL_REPEAT; the layer's density and its offset by the wind as "
+         "aerial::cloudDensityAt"}};
     if (cloudy) {
         char hex[19];
         std::snprintf(hex, sizeof hex, "0x%016llx",

@@ -81,10 +81,11 @@ int runClouds(const CloudsOptions& options) {
                 clouds.active() ? "" : " (clear sky)");
     for (std::size_t i = 0; i < points.size(); ++i) {
         const Answer& a = answers[i];
-        std::printf("  (%g, %g, %g): sun visibility %.6g, transmittance along (%.4g, %.4g, %.4g) %.6g, "
-                    "density %.6g 1/m, coverage %.4g, height %.6g m\n",
-                    points[i].x, points[i].y, points[i].z, a.sunVisibility, direction.x, direction.y,
-                    direction.z, a.transmittance, a.density, a.coverage, a.height);
+        std::printf(
+            "  (%g, %g, %g): sun visibility %.6g, transmittance along (%.4g, %.4g, %.4g) %.6g, "
+            "density %.6g 1/m, coverage %.4g, height %.6g m\n",
+            points[i].x, points[i].y, points[i].z, a.sunVisibility, direction.x, direction.y, direction.z,
+            a.transmittance, a.density, a.coverage, a.height);
     }
     return kExitOk;
 }
@@ -105,8 +106,9 @@ Command addCloudsCommand(CLI::App& parent) {
     app->add_option("--dir", options->dir, "Direction of the transmittance ray (default 0,1,0: straight up)")
         ->type_name("X,Y,Z");
     app->add_flag("--json", options->json, "Machine-readable output");
-    app->footer(helpFooter("  aerial clouds presets/clear_summer_day.json --time 14:00 --at 0,0,0 --at 2000,0,-500\n"
-                           "  aerial clouds presets/stormy_night.json --time 01:00 --at=-300,2,40 --dir 0.3,1,0 --json"));
+    app->footer(helpFooter(
+        "  aerial clouds presets/clear_summer_day.json --time 14:00 --at 0,0,0 --at 2000,0,-500\n"
+        "  aerial clouds presets/stormy_night.json --time 01:00 --at=-300,2,40 --dir 0.3,1,0 --json"));
     return {app, [options] { return runClouds(*options); }};
 }
 

@@ -310,11 +310,13 @@ void drawInspector(Document& doc, EditState& edit, double timeHours, const Prese
                 const double speed = std::hypot(c.windMPerS.x, c.windMPerS.y);
                 ImGui::Text("Coverage %.0f%%, layer %.0f..%.0f m", c.coverage * 100.0, c.bottomM,
                             c.bottomM + c.thicknessM);
-                ImGui::Text("Inside a full cloud you see %.0f m", c.densityPerM > 0.0 ? 3.912 / c.densityPerM : 0.0);
+                ImGui::Text("Inside a full cloud you see %.0f m",
+                            c.densityPerM > 0.0 ? 3.912 / c.densityPerM : 0.0);
                 ImGui::Text("Drifting %.1f m/s (%.0f km/h) towards azimuth %.0f deg", speed, speed * 3.6,
                             std::fmod(std::atan2(c.windMPerS.x, -c.windMPerS.y) * kDegrees + 360.0, 360.0));
                 if (c.coverage <= 0.0)
-                    ImGui::TextWrapped("Coverage 0: a clear sky. Raise the coverage (and key it over the day).");
+                    ImGui::TextWrapped(
+                        "Coverage 0: a clear sky. Raise the coverage (and key it over the day).");
             }
             if (edit.selection.kind == Selection::Kind::Exposure) {
                 ImGui::Spacing();

@@ -2,7 +2,8 @@
 // global fog, every fog volume and emitter: select, rename inline, duplicate,
 // delete) and, below it, the sky preview: the solved sky seen from below as a
 // fisheye (zenith in the centre, the horizon on the rim, north up, east
-// right), through the same OCIO display transform as the viewport.
+// right), with the cloud layer's opacity over it, through the same OCIO
+// display transform as the viewport.
 #include "panels.hpp"
 
 #include <epoxy/gl.h>  // epoxy before any other GL header
@@ -11,18 +12,23 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include <aerial/clouds.hpp>
+#include <aerial/evaluate.hpp>
 #include <aerial/renderer/image.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <limits>
 #include <vector>
 
 namespace aerial::editor {
 namespace {
 
 constexpr int kSkyPreviewSize = 96;
+/// Where the sky preview looks from [m]: above the ground at the origin.
+constexpr glm::dvec3 kPreviewEye(0.0, 2.0, 0.0);
 
 bool hasTracks(const Preset& preset, ParamScope scope, const std::string& id) {
     for (const Track& t : preset.tracks)
@@ -135,10 +141,17 @@ void drawOutliner(Document& doc, EditState& edit, const ActionTable& actions,
 namespace {
 
 void updateSkyPreview(SkyPreview& preview, const SkyService& sky, const ViewportState& view, int frameIndex) {
-    char settings[160];
+    // The clouds, when there are any: they move with the time and change
+    // with their parameters without a new sky solve.
+    const CloudField clouds = prepareClouds(sky.state);
+    const CloudParams& cp = sky.state.environment.clouds;
+    char settings[256];
     // The viewport's exposure (the preset's, adapting, plus the offset), to 0.1 EV.
-    std::snprintf(settings, sizeof settings, "%s|%s|%.1f", view.displayName.c_str(), view.viewName.c_str(),
-                  view.display ? view.display->exposureEv() : 0.0);
+    std::snprintf(settings, sizeof settings, "%s|%s|%.1f|%d|%.3f|%.4g|%.4g|%.4g|%.4g|%.3f|%lld",
+                  view.displayName.c_str(), view.viewName.c_str(),
+                  view.display ? view.display->exposureEv() : 0.0, clouds.active() ? 1 : 0,
+                  clouds.active() ? sky.state.timeHours : 0.0, cp.coverage, cp.densityPerM, cp.bottomM,
+                  cp.thicknessM, cp.type, static_cast<long long>(cp.seed));
     if (preview.texture && preview.generation == sky.generation && preview.settings == settings) return;
     // While scrubbing, refresh every 4th frame: the preview is small and the viewport matters more.
     if (preview.texture && preview.settings == settings && (frameIndex % 4) != 0) return;
@@ -150,6 +163,15 @@ void updateSkyPreview(SkyPreview& preview, const SkyService& sky, const Viewport
     const double g = sky.state.environment.atmosphere.mieAnisotropy;
     const SkyTable& sun = sky.sunSolver->table();
     const SkyTable& moon = sky.moonSolver->table();
+    glm::dvec3 cloudLight(0.0);
+    if (clouds.active()) {
+        const glm::dvec3 up(0.0, 1.0, 0.0);
+        glm::dvec3 zenith(0.0);
+        if (sun.generation > 0) zenith += skyRadiance(sun, g, up, sky.state.sunLight.illuminanceSpace);
+        if (moon.generation > 0) zenith += skyRadiance(moon, g, up, sky.state.moonLight.illuminanceSpace);
+        cloudLight =
+            cp.albedo * (0.04 * (sky.state.sunLight.illuminance + sky.state.moonLight.illuminance) + zenith);
+    }
     for (int y = 0; y < n; ++y)
         for (int x = 0; x < n; ++x) {
             const double u = (x + 0.5) / n * 2.0 - 1.0, v = (y + 0.5) / n * 2.0 - 1.0;
@@ -167,6 +189,14 @@ void updateSkyPreview(SkyPreview& preview, const SkyService& sky, const Viewport
             glm::dvec3 L(0.0);
             if (sun.generation > 0) L += skyRadiance(sun, g, dir, sky.state.sunLight.illuminanceSpace);
             if (moon.generation > 0) L += skyRadiance(moon, g, dir, sky.state.moonLight.illuminanceSpace);
+            if (clouds.active()) {
+                // A preview, not the renderer's lighting: the cloud's opacity
+                // along the ray (16 samples) over a cloud lit by a share of
+                // the sun and moon that reach the viewer and by the zenith sky.
+                const double t =
+                    cloudTransmittance(clouds, kPreviewEye, dir, std::numeric_limits<double>::infinity(), 16);
+                L = L * t + cloudLight * (1.0 - t);
+            }
             px[0] = float(L.x), px[1] = float(L.y), px[2] = float(L.z), px[3] = 1.0f;
         }
     const renderer::Image shown = view.display->applyCpu(image);

@@ -65,17 +65,19 @@ struct PerlinLattice {
     int period = 1;
     std::vector<std::uint8_t> gradient;  // index into kGradients per lattice point
 
-    PerlinLattice(int period_, std::uint32_t salt) : period(period_), gradient(std::size_t(period_) * period_ * period_) {
+    PerlinLattice(int period_, std::uint32_t salt)
+        : period(period_), gradient(std::size_t(period_) * period_ * period_) {
         for (int z = 0; z < period; ++z)
             for (int y = 0; y < period; ++y)
                 for (int x = 0; x < period; ++x)
-                    gradient[std::size_t((z * period + y) * period + x)] = std::uint8_t(hashCell(x, y, z, salt) % 12);
+                    gradient[std::size_t((z * period + y) * period + x)] =
+                        std::uint8_t(hashCell(x, y, z, salt) % 12);
     }
 
     double noise(const glm::dvec3& x) const {
-        static constexpr double kGradients[12][3] = {{1, 1, 0},  {-1, 1, 0},  {1, -1, 0}, {-1, -1, 0},
-                                                     {1, 0, 1},  {-1, 0, 1},  {1, 0, -1}, {-1, 0, -1},
-                                                     {0, 1, 1},  {0, -1, 1},  {0, 1, -1}, {0, -1, -1}};
+        static constexpr double kGradients[12][3] = {{1, 1, 0}, {-1, 1, 0}, {1, -1, 0}, {-1, -1, 0},
+                                                     {1, 0, 1}, {-1, 0, 1}, {1, 0, -1}, {-1, 0, -1},
+                                                     {0, 1, 1}, {0, -1, 1}, {0, 1, -1}, {0, -1, -1}};
         const glm::dvec3 cell = glm::floor(x);
         const glm::dvec3 f = x - cell;
         const int ix = int(cell.x), iy = int(cell.y), iz = int(cell.z);
@@ -83,7 +85,8 @@ struct PerlinLattice {
         for (int c = 0; c < 8; ++c) {
             const int dx = c & 1, dy = (c >> 1) & 1, dz = (c >> 2) & 1;
             const double* g = kGradients[gradient[std::size_t(
-                (wrapPow2(iz + dz, period) * period + wrapPow2(iy + dy, period)) * period + wrapPow2(ix + dx, period))]];
+                (wrapPow2(iz + dz, period) * period + wrapPow2(iy + dy, period)) * period +
+                wrapPow2(ix + dx, period))]];
             corner[c] = g[0] * (f.x - dx) + g[1] * (f.y - dy) + g[2] * (f.z - dz);
         }
         const double u = fade(f.x), v = fade(f.y), w = fade(f.z);
@@ -103,7 +106,8 @@ struct WorleyLattice {
     int period = 1;
     std::vector<glm::dvec3> points;
 
-    WorleyLattice(int period_, std::uint32_t salt) : period(period_), points(std::size_t(period_) * period_ * period_) {
+    WorleyLattice(int period_, std::uint32_t salt)
+        : period(period_), points(std::size_t(period_) * period_ * period_) {
         for (int z = 0; z < period; ++z)
             for (int y = 0; y < period; ++y)
                 for (int x = 0; x < period; ++x) {
@@ -176,18 +180,27 @@ struct CloudNoiseFields::Lattices {
     WorleyLattice erosion4, erosion8, erosion16;
 
     explicit Lattices(std::uint32_t s)
-        : perlin4(4, s ^ 0x3001U), perlin8(8, s ^ 0x3002U), perlin16(16, s ^ 0x3003U), billow4(4, s ^ 0x1001U),
-          worley8(8, s ^ 0x1002U), worley16(16, s ^ 0x1003U), worley32(32, s ^ 0x1004U), erosion4(4, s ^ 0x2001U),
-          erosion8(8, s ^ 0x2002U), erosion16(16, s ^ 0x2003U) {}
+        : perlin4(4, s ^ 0x3001U),
+          perlin8(8, s ^ 0x3002U),
+          perlin16(16, s ^ 0x3003U),
+          billow4(4, s ^ 0x1001U),
+          worley8(8, s ^ 0x1002U),
+          worley16(16, s ^ 0x1003U),
+          worley32(32, s ^ 0x1004U),
+          erosion4(4, s ^ 0x2001U),
+          erosion8(8, s ^ 0x2002U),
+          erosion16(16, s ^ 0x2003U) {}
 };
 
 CloudNoiseFields::CloudNoiseFields(std::int64_t seed)
-    : lattices_(std::make_unique<Lattices>(mix32(std::uint32_t(seed) ^ mix32(std::uint32_t(std::uint64_t(seed) >> 32))))) {}
+    : lattices_(std::make_unique<Lattices>(
+          mix32(std::uint32_t(seed) ^ mix32(std::uint32_t(std::uint64_t(seed) >> 32))))) {}
 CloudNoiseFields::~CloudNoiseFields() = default;
 
 double CloudNoiseFields::shape(const glm::dvec3& u) const {
     const Lattices& l = *lattices_;
-    const double p = l.perlin4.noise(u * 4.0) + 0.5 * l.perlin8.noise(u * 8.0) + 0.25 * l.perlin16.noise(u * 16.0);
+    const double p =
+        l.perlin4.noise(u * 4.0) + 0.5 * l.perlin8.noise(u * 8.0) + 0.25 * l.perlin16.noise(u * 16.0);
     const double perlin01 = saturate(0.5 + 0.5 * p / 1.75 * 1.6);
     // Perlin-Worley: the Perlin fBm remapped to start at the Worley billow.
     const double perlinWorley = remap(perlin01, 0.0, 1.0, l.billow4.billow(u * 4.0), 1.0);
@@ -242,7 +255,8 @@ std::shared_ptr<const CloudNoise> cloudNoise(std::int64_t seed) {
     std::lock_guard<std::mutex> lock(mutex);
     for (std::size_t i = 0; i < cache.size(); ++i) {
         if (cache[i]->seed == seed) {
-            std::rotate(cache.begin(), cache.begin() + std::ptrdiff_t(i), cache.begin() + std::ptrdiff_t(i) + 1);
+            std::rotate(cache.begin(), cache.begin() + std::ptrdiff_t(i),
+                        cache.begin() + std::ptrdiff_t(i) + 1);
             return cache.front();
         }
     }

@@ -66,8 +66,9 @@ double cloudHeightProfile(double heightFraction, double type) {
     return smooth01(f / 0.08) * smooth01((top - f) / fall);
 }
 
-bool CloudField::active() const { return params.densityPerM > 0.0 && noise != nullptr &&
-                                         (params.coverage > 0.0 || !volumes.empty()); }
+bool CloudField::active() const {
+    return params.densityPerM > 0.0 && noise != nullptr && (params.coverage > 0.0 || !volumes.empty());
+}
 
 CloudField prepareClouds(const CloudParams& params, std::span<const CloudVolume> volumes, double timeHours,
                          double planetRadius) {
@@ -93,7 +94,8 @@ CloudField prepareClouds(const CloudParams& params, std::span<const CloudVolume>
 
     // Wind offset in double, reduced modulo each tile so the GPU's floats
     // stay small (exact: both textures have period 1 in uvw).
-    const double seconds = std::isfinite(timeHours) ? (timeHours - 24.0 * std::floor(timeHours / 24.0)) * 3600.0 : 0.0;
+    const double seconds =
+        std::isfinite(timeHours) ? (timeHours - 24.0 * std::floor(timeHours / 24.0)) * 3600.0 : 0.0;
     const glm::dvec2 w = glm::clamp(p.windMPerS, glm::dvec2(-1000.0), glm::dvec2(1000.0)) * seconds;
     auto reduce = [](const glm::dvec2& v, double period) { return v - period * glm::floor(v / period); };
     field.shapeOffset = reduce(w, p.shapeScaleM);
@@ -150,10 +152,11 @@ double cloudDensityAt(const CloudField& clouds, const glm::dvec3& p) {
     return cp.densityPerM * saturate((d - e) / (1.0 - e));
 }
 
-CloudSegments cloudLayerSegments(const CloudField& clouds, const glm::dvec3& origin, const glm::dvec3& direction,
-                                 double tMax) {
+CloudSegments cloudLayerSegments(const CloudField& clouds, const glm::dvec3& origin,
+                                 const glm::dvec3& direction, double tMax) {
     CloudSegments out;
-    if (!withinCoordinateRange(origin) || !withinCoordinateRange(direction) || std::isnan(tMax) || !(tMax > 0.0))
+    if (!withinCoordinateRange(origin) || !withinCoordinateRange(direction) || std::isnan(tMax) ||
+        !(tMax > 0.0))
         return out;
     const double rg = clouds.planetRadius;
     const double bottom = clouds.params.bottomM, top = bottom + clouds.params.thicknessM;
@@ -196,7 +199,8 @@ double cloudOpticalDepth(const CloudField& clouds, const glm::dvec3& origin, con
         const int n = std::max(1, int(std::floor(steps * span / total + 0.5)));
         const double dt = span / n;
         double sum = 0.0;
-        for (int i = 0; i < n; ++i) sum += cloudDensityAt(clouds, origin + direction * (s.t0[k] + (i + 0.5) * dt));
+        for (int i = 0; i < n; ++i)
+            sum += cloudDensityAt(clouds, origin + direction * (s.t0[k] + (i + 0.5) * dt));
         tau += sum * dt * length;
     }
     return std::min(tau, kMaxOpticalDepth);
@@ -207,7 +211,8 @@ double cloudTransmittance(const CloudField& clouds, const glm::dvec3& origin, co
     return std::exp(-cloudOpticalDepth(clouds, origin, direction, tMax, steps));
 }
 
-double cloudSunVisibility(const CloudField& clouds, const glm::dvec3& point, const glm::dvec3& toLight, int steps) {
+double cloudSunVisibility(const CloudField& clouds, const glm::dvec3& point, const glm::dvec3& toLight,
+                          int steps) {
     return cloudTransmittance(clouds, point, toLight, std::numeric_limits<double>::infinity(), steps);
 }
 

@@ -70,8 +70,8 @@ ParamDesc triple(ParamScope scope, ParamType type, sv path, sv label, sv unit, R
 
 /// A horizontal 2-vector [x, z] (x = world X, y = world Z), such as a wind
 /// velocity; `r` bounds each component.
-ParamDesc vector2(ParamScope scope, sv path, sv label, sv unit, Range r, glm::dvec2 def,
-                                   bool animatable, glm::dvec2* (*access)(void*), sv doc) {
+ParamDesc vector2(ParamScope scope, sv path, sv label, sv unit, Range r, glm::dvec2 def, bool animatable,
+                  glm::dvec2* (*access)(void*), sv doc) {
     ParamDesc p;
     p.scope = scope;
     p.type = ParamType::Vec2;
@@ -321,8 +321,8 @@ const std::vector<ParamDesc>& globalTable() {
             [](void* o) { return &env(o).clouds.bottomM; },
             "Height of the layer's base above the ground [m], 0..20000. Default 1500."),
         scalar(
-            G, "clouds.thickness_m", "Cloud layer thickness", "m", {10, 20000, 100, 8000}, 2000.0, false, true,
-            [](void* o) { return &env(o).clouds.thicknessM; },
+            G, "clouds.thickness_m", "Cloud layer thickness", "m", {10, 20000, 100, 8000}, 2000.0, false,
+            true, [](void* o) { return &env(o).clouds.thicknessM; },
             "Thickness of the layer [m], 10..20000 (must be > 0). Default 2000."),
         scalar(
             G, "clouds.density_per_m", "Cloud density", "1/m", {0, 1, 1e-4, 0.5}, 0.02, true, true,
@@ -334,7 +334,8 @@ const std::vector<ParamDesc>& globalTable() {
             "Wind drifting the clouds [m/s], horizontal [x, z] (world X, Z), -1000..1000 per component; "
             "the layer at time t is the layer at 00:00 moved by wind x t. Default [10, 3]."),
         seedParam(
-            G, "clouds.seed", "Seed of the cloud noise, 0..4294967295; a game regenerates the same noise "
+            G, "clouds.seed",
+            "Seed of the cloud noise, 0..4294967295; a game regenerates the same noise "
             "from it. Default 1.",
             [](const void* o) { return static_cast<const Environment*>(o)->clouds.seed; },
             [](void* o, std::int64_t v) { env(o).clouds.seed = v; }),
@@ -362,8 +363,8 @@ const std::vector<ParamDesc>& globalTable() {
             "Forward-scattering asymmetry g, 0..0.95: the bright silver lining of a cloud in front of "
             "the sun. Default 0.6."),
         triple(
-            G, ParamType::Colour, "clouds.albedo_rgb", "Cloud albedo", "", {0, 1, 0, 1}, glm::dvec3(0.98), false,
-            true, [](void* o) { return &env(o).clouds.albedo; },
+            G, ParamType::Colour, "clouds.albedo_rgb", "Cloud albedo", "", {0, 1, 0, 1}, glm::dvec3(0.98),
+            false, true, [](void* o) { return &env(o).clouds.albedo; },
             "Single-scattering albedo per RGB channel, 0..1 (scattering = albedo x extinction); "
             "below 1 tints and darkens the clouds. Default 0.98."),
     };

@@ -43,7 +43,8 @@ glm::dvec3 randomPointInLayer(std::mt19937_64& rng, const aerial::CloudParams& p
 
 /// The optical depth by an independent fine trapezoid quadrature of the
 /// density along [0, tEnd] (not the library's segments or step rule).
-double fineOpticalDepth(const aerial::CloudField& f, const glm::dvec3& o, const glm::dvec3& d, double tEnd, int n) {
+double fineOpticalDepth(const aerial::CloudField& f, const glm::dvec3& o, const glm::dvec3& d, double tEnd,
+                        int n) {
     double sum = 0.0;
     const double dt = tEnd / n;
     for (int i = 0; i <= n; ++i) {
@@ -118,16 +119,16 @@ TEST(CloudNoise, TilesSeamlesslyAtItsBorders) {
         }
     }
     EXPECT_LT(worstPeriod, 1e-9);
-    EXPECT_LT(worstSeam, 1e-4);      // a step of 2e-7 of the tile
-    EXPECT_GT(typicalStep, 1e-3);    // while one texel apart the field moves
+    EXPECT_LT(worstSeam, 1e-4);    // a step of 2e-7 of the tile
+    EXPECT_GT(typicalStep, 1e-3);  // while one texel apart the field moves
     const auto noise = aerial::cloudNoise(1);
     constexpr int n = aerial::CloudNoise::kShapeSize;
     // Sampling wraps: uvw and uvw + integer give the same value.
     std::uniform_real_distribution<double> u(-2.0, 2.0);
     for (int i = 0; i < 200; ++i) {
         const glm::dvec3 p(u(rng), u(rng), u(rng));
-        EXPECT_NEAR(aerial::sampleTileable(noise->shape, n, p), aerial::sampleTileable(noise->shape, n, p + 3.0),
-                    1e-6);
+        EXPECT_NEAR(aerial::sampleTileable(noise->shape, n, p),
+                    aerial::sampleTileable(noise->shape, n, p + 3.0), 1e-6);
     }
 }
 
@@ -319,7 +320,8 @@ TEST(CloudVolumes, SetTheCoverageOnlyInsideTheirSoftBounds) {
         // The storm's object-space radius.
         const glm::dvec3 o = glm::inverse(storm.rotation) * (q - storm.position) / storm.halfExtents;
         const double r = glm::length(o);
-        const bool inHole = std::fabs(q.x - hole.position.x) <= 2000 && std::fabs(q.z - hole.position.z) <= 2000 &&
+        const bool inHole = std::fabs(q.x - hole.position.x) <= 2000 &&
+                            std::fabs(q.z - hole.position.z) <= 2000 &&
                             std::fabs(q.y - hole.position.y) <= 3000;
         const double c = aerial::cloudCoverageAt(shaped, q);
         if (r >= 1.0 && !inHole) {
@@ -343,7 +345,8 @@ TEST(CloudVolumes, SetTheCoverageOnlyInsideTheirSoftBounds) {
 
 TEST(CloudLayer, BadInputGivesFiniteAnswers) {
     const aerial::CloudField f = aerial::prepareClouds(overcastLayer(), {}, 12.0, kRg);
-    const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+    const double nan = std::numeric_limits<double>::quiet_NaN(),
+                 inf = std::numeric_limits<double>::infinity();
     EXPECT_EQ(aerial::cloudDensityAt(f, {nan, 2000, 0}), 0.0);
     EXPECT_EQ(aerial::cloudTransmittance(f, {0, nan, 0}, {0, 1, 0}), 1.0);
     EXPECT_EQ(aerial::cloudTransmittance(f, {0, 0, 0}, {inf, 1, 0}), 1.0);

@@ -120,8 +120,8 @@ struct CloudVolume {
 /// (i, j, k) at index (k * size + j) * size + i. The renderer uploads these
 /// exact floats (R32F, GL_LINEAR, GL_REPEAT).
 struct CloudNoise {
-    static constexpr int kShapeSize = 128;   ///< Perlin-Worley shape, 128^3
-    static constexpr int kDetailSize = 32;   ///< Worley erosion, 32^3
+    static constexpr int kShapeSize = 128;  ///< Perlin-Worley shape, 128^3
+    static constexpr int kDetailSize = 32;  ///< Worley erosion, 32^3
     std::int64_t seed = 0;
     std::vector<float> shape;   ///< kShapeSize^3
     std::vector<float> detail;  ///< kDetailSize^3
@@ -193,7 +193,8 @@ struct CloudSegments {
     double t0[2] = {0.0, 0.0};
     double t1[2] = {0.0, 0.0};
 };
-CloudSegments cloudLayerSegments(const CloudField& clouds, const glm::dvec3& origin, const glm::dvec3& direction,
+CloudSegments cloudLayerSegments(const CloudField& clouds, const glm::dvec3& origin,
+                                 const glm::dvec3& direction,
                                  double tMax = std::numeric_limits<double>::infinity());
 
 /// Samples of the reference march (enough for 1e-3 on the shipped presets).
