@@ -61,6 +61,7 @@ void main() {
 }
 #else
 #include "common/emitters.glsl"
+#include "common/clouds.glsl"
 layout(binding = 4) uniform sampler2D uLinearDepth;
 
 in vec2 vCorner;
@@ -83,6 +84,7 @@ void main() {
     float alpha = clamp(vAlbedoOpacity.w, 0.0, 1.0) * profile * fade;
     if (!(alpha > 0.0)) discard;
     vec3 irradiance = frame.sunIlluminance + frame.moonIlluminance;
+    if (clouds.shadowActive > 0.5) irradiance *= cloudShadowVisibility(vWorld);  // cloud shadow
     for (int k = 0; k < frame.emitterCount; ++k) {
         vec3 toLight = emitters[k].position - vWorld;
         irradiance += emitters[k].colour * emitters[k].intensity /

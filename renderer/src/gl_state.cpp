@@ -34,7 +34,7 @@ void GLAPIENTRY debugCallback(GLenum /*source*/, GLenum type, GLuint id, GLenum 
     logMessage(*tDebugRoute.logger, level, text.c_str());
 }
 
-constexpr GLuint kUniformIndices[] = {kFrameBinding, kVolumeBinding, kObjectBinding};
+constexpr GLuint kUniformIndices[] = {kFrameBinding, kVolumeBinding, kObjectBinding, kCloudBinding};
 
 }  // namespace
 
@@ -83,9 +83,10 @@ GlStateGuard::GlStateGuard(const Logger* logger, bool routeDebugOutput, int* err
     glGetIntegerv(GL_FRONT_FACE, &frontFace_);
     glGetIntegerv(GL_ACTIVE_TEXTURE, &activeTexture_);
     glGetIntegerv(GL_PACK_ALIGNMENT, &packAlignment_);
-    for (unsigned unit = 0; unit < kTextureUnitCount; ++unit) {
+    for (unsigned unit = 0; unit < kSavedUnits; ++unit) {
         glActiveTexture(GL_TEXTURE0 + unit);
-        glGetIntegerv(GL_TEXTURE_BINDING_2D, &textures_[unit]);
+        glGetIntegerv(savedTarget(unit) == GL_TEXTURE_3D ? GL_TEXTURE_BINDING_3D : GL_TEXTURE_BINDING_2D,
+                      &textures_[unit]);
         glGetIntegerv(GL_SAMPLER_BINDING, &samplers_[unit]);
     }
     glActiveTexture(static_cast<GLenum>(activeTexture_));
@@ -146,9 +147,9 @@ GlStateGuard::~GlStateGuard() {
     glCullFace(static_cast<GLenum>(cullMode_));
     glFrontFace(static_cast<GLenum>(frontFace_));
     glPixelStorei(GL_PACK_ALIGNMENT, packAlignment_);
-    for (unsigned unit = 0; unit < kTextureUnitCount; ++unit) {
+    for (unsigned unit = 0; unit < kSavedUnits; ++unit) {
         glActiveTexture(GL_TEXTURE0 + unit);
-        glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(textures_[unit]));
+        glBindTexture(savedTarget(unit), static_cast<GLuint>(textures_[unit]));
         glBindSampler(unit, static_cast<GLuint>(samplers_[unit]));
     }
     glActiveTexture(static_cast<GLenum>(activeTexture_));

@@ -13,8 +13,8 @@ namespace aerial::renderer::detail {
 /// viewport, program, vertex array, array buffer, blend (enable, functions,
 /// equations), depth (test, mask, function, clamp), culling (enable, mode,
 /// front face), scissor and stencil tests, colour mask, active texture, the
-/// 2D texture and sampler bound to units 0..unitCount-1, the uniform buffer
-/// bindings 0, 1, 3 and shader storage binding 2 (with ranges), pack
+/// texture and sampler bound to units 0..10 (the cloud units 8, 9 as 3D), the uniform buffer
+/// bindings 0, 1, 3, 4 and shader storage binding 2 (with ranges), pack
 /// alignment, and the debug-output callback and enable.
 class GlStateGuard {
 public:
@@ -39,9 +39,14 @@ private:
     GLint blendEquationRgb_ = GL_FUNC_ADD, blendEquationAlpha_ = GL_FUNC_ADD;
     GLint depthFunc_ = GL_LESS, cullMode_ = GL_BACK, frontFace_ = GL_CCW;
     GLint activeTexture_ = GL_TEXTURE0, packAlignment_ = 4;
-    GLint textures_[8] = {};
-    GLint samplers_[8] = {};
-    IndexedBuffer uniformBindings_[4];
+    /// Units 0..7 (2D) and the cloud units 8, 9 (3D) and 10 (2D).
+    static constexpr unsigned kSavedUnits = 11;
+    static GLenum savedTarget(unsigned unit) {
+        return unit == 8 || unit == 9 ? GL_TEXTURE_3D : GL_TEXTURE_2D;
+    }
+    GLint textures_[kSavedUnits] = {};
+    GLint samplers_[kSavedUnits] = {};
+    IndexedBuffer uniformBindings_[5];
     IndexedBuffer storageBinding_;
     bool debugRouted_ = false;
     GLboolean debugOutput_ = GL_FALSE, debugSynchronous_ = GL_FALSE;

@@ -192,6 +192,68 @@ static_assert(offsetof(ObjectBlock, boundsMax) == 208);
 static_assert(offsetof(ObjectBlock, cornerFog) == 224);
 static_assert(sizeof(ObjectBlock) == 352);
 
+/// shaders/common/clouds.glsl, CloudBlock (binding 4): the cloud layer of
+/// the frame (aerial::CloudField in float) and the cloud shadow map's
+/// placement; built by makeCloudBlock (cloud_pass.cpp).
+struct CloudBlock {
+    float shapeOffset[2] = {};   ///< wind offset mod the shape tile [m], [x, z]
+    float detailOffset[2] = {};  ///< wind offset mod the detail tile [m]
+    float planetRadius = 0.0f;   ///< Rg [m]
+    float bottomM = 0.0f;        ///< [m] above the ground
+    float thicknessM = 0.0f;     ///< [m]
+    float coverage = 0.0f;       ///< 0..1
+    float densityPerM = 0.0f;    ///< [1/m]
+    float type = 0.0f;           ///< 0 stratus .. 1 cumulus
+    float shapeScaleM = 0.0f;    ///< [m]
+    float detailScaleM = 0.0f;   ///< [m]
+    float erosion = 0.0f;
+    float anisotropy = 0.0f;           ///< forward HG g
+    std::int32_t steps = 0;            ///< view-ray samples (midpoint march)
+    std::int32_t lightSteps = 0;       ///< samples towards the light
+    Vec3 albedo;                       ///< single-scattering albedo, rgb
+    std::int32_t volumeCount = 0;      ///< cloud volumes (always 0: not in presets yet)
+    Vec3 rayleighScattering;           ///< sea level [1/m]
+    float rayleighScaleHeight = 0.0f;  ///< [m]
+    Vec3 mieExtinction;                ///< sea level [1/m]
+    float mieScaleHeight = 0.0f;       ///< [m]
+    float shadowOrigin[2] =
+        {};  ///< world [x, z] of the shadow map's corner (texel (0, 0)'s outer corner) [m]
+    float shadowExtentM = 0.0f;    ///< side of the square the map covers [m]
+    float shadowActive = 0.0f;     ///< 1: scene lights multiply by the map's visibility
+    Vec3 shadowToLight;            ///< unit direction the map was marched along
+    std::int32_t shadowSteps = 0;  ///< samples per texel (kCloudSunVisibilitySteps)
+    std::int32_t outputMode = 0;   ///< 0 lit, 1 transmittance only (CloudOutput)
+    float shadowSize = 0.0f;       ///< texels per side of the map
+    float padShadow[2] = {};
+};
+static_assert(offsetof(CloudBlock, detailOffset) == 8);
+static_assert(offsetof(CloudBlock, planetRadius) == 16);
+static_assert(offsetof(CloudBlock, bottomM) == 20);
+static_assert(offsetof(CloudBlock, thicknessM) == 24);
+static_assert(offsetof(CloudBlock, coverage) == 28);
+static_assert(offsetof(CloudBlock, densityPerM) == 32);
+static_assert(offsetof(CloudBlock, type) == 36);
+static_assert(offsetof(CloudBlock, shapeScaleM) == 40);
+static_assert(offsetof(CloudBlock, detailScaleM) == 44);
+static_assert(offsetof(CloudBlock, erosion) == 48);
+static_assert(offsetof(CloudBlock, anisotropy) == 52);
+static_assert(offsetof(CloudBlock, steps) == 56);
+static_assert(offsetof(CloudBlock, lightSteps) == 60);
+static_assert(offsetof(CloudBlock, albedo) == 64);
+static_assert(offsetof(CloudBlock, volumeCount) == 76);
+static_assert(offsetof(CloudBlock, rayleighScattering) == 80);
+static_assert(offsetof(CloudBlock, rayleighScaleHeight) == 92);
+static_assert(offsetof(CloudBlock, mieExtinction) == 96);
+static_assert(offsetof(CloudBlock, mieScaleHeight) == 108);
+static_assert(offsetof(CloudBlock, shadowOrigin) == 112);
+static_assert(offsetof(CloudBlock, shadowExtentM) == 120);
+static_assert(offsetof(CloudBlock, shadowActive) == 124);
+static_assert(offsetof(CloudBlock, shadowToLight) == 128);
+static_assert(offsetof(CloudBlock, shadowSteps) == 140);
+static_assert(offsetof(CloudBlock, outputMode) == 144);
+static_assert(offsetof(CloudBlock, shadowSize) == 148);
+static_assert(sizeof(CloudBlock) == 160);
+
 /// shaders/particles.glsl, per-instance vertex attributes (locations 0..3).
 struct SpriteInstance {
     float centreRadius[4];
@@ -218,6 +280,7 @@ constexpr unsigned kFrameBinding = 0;
 constexpr unsigned kVolumeBinding = 1;
 constexpr unsigned kEmitterBinding = 2;
 constexpr unsigned kObjectBinding = 3;
+constexpr unsigned kCloudBinding = 4;
 constexpr unsigned kSunRayleighUnit = 0;
 constexpr unsigned kSunMieUnit = 1;
 constexpr unsigned kMoonRayleighUnit = 2;
@@ -225,5 +288,9 @@ constexpr unsigned kMoonMieUnit = 3;
 constexpr unsigned kLinearDepthUnit = 4;
 constexpr unsigned kBaseColourUnit = 5;
 constexpr unsigned kTextureUnitCount = 8;
+/// The cloud layer's units (bound by the frame next to the 8 above).
+constexpr unsigned kCloudShapeUnit = 8;
+constexpr unsigned kCloudDetailUnit = 9;
+constexpr unsigned kCloudShadowUnit = 10;
 
 }  // namespace aerial::renderer::detail

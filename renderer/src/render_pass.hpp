@@ -21,6 +21,7 @@
 #include "shader_library.hpp"
 #include "sky_textures.hpp"
 
+#include <aerial/clouds.hpp>
 #include <aerial/fog_query.hpp>
 #include <aerial/renderer/camera.hpp>
 #include <aerial/renderer/renderer.hpp>
@@ -56,6 +57,13 @@ struct RendererResources {
     GLuint sceneTarget = 0, compositeTarget = 0;
     SkyTextures sunSky, moonSky;
     SkyTable sunTable, moonTable;
+    /// The cloud layer (cloud_pass.cpp): the noise of cloudSeed (R32F 3D,
+    /// created on the first frame with clouds), the shadow map and its
+    /// target, the CloudBlock buffer.
+    GLuint cloudShape = 0, cloudDetail = 0;
+    std::int64_t cloudSeed = -1;  ///< seed of the uploaded noise (-1: none)
+    GLuint cloudShadowMap = 0, cloudShadowTarget = 0;
+    GLuint cloudBuffer = 0;
 };
 
 /// One frame as the passes see it.
@@ -72,6 +80,12 @@ public:
     const FrameBlock& block;  ///< already uploaded to gpu.frameBuffer
     RendererResources& gpu;
     RenderStats& stats;
+    /// The frame's cloud layer (prepareClouds of the state) and its block,
+    /// already uploaded to gpu.cloudBuffer; set by Renderer::Impl::render.
+    const CloudField* clouds = nullptr;
+    CloudBlock cloudBlock;
+    /// The layer is drawn this frame: clouds active and the pass on.
+    bool cloudsDrawn() const { return clouds != nullptr && clouds->active() && desc.passes.clouds; }
 
     /// The CPU fog of the volumes and emitters for the transparent meshes
     /// and the particles (core's fogSceneDesc without the global fog, which
@@ -98,6 +112,8 @@ extern const RenderPass kVolumePass;       // volume_pass.cpp
 extern const RenderPass kEmitterPass;      // emitter_pass.cpp
 extern const RenderPass kTransparentPass;  // transparent_pass.cpp
 extern const RenderPass kParticlePass;     // particle_pass.cpp
+extern const RenderPass kCloudShadowPass;  // cloud_shadow_pass.cpp
+extern const RenderPass kCloudPass;        // cloud_pass.cpp
 
 /// Runs passes, measuring each when FrameDesc::gpuTimers: a GL_TIME_ELAPSED
 /// query around its draws and the wall time between glFinish calls before
@@ -144,5 +160,22 @@ void compositeFullscreen(const RendererResources& gpu, Pass program, GLenum srcR
 /// and attenuations sanitised) to gpu.emitterBuffer, growing it as needed;
 /// returns how many (emitter_pass.cpp).
 int uploadEmitters(RendererResources& gpu, const std::vector<Emitter>& emitters);
+
+/// Side of the cloud shadow map [texels] and of the ground square it covers [m].
+constexpr int kCloudShadowSize = 256;
+constexpr double kCloudShadowExtentM = 8000.0;
+
+/// The frame's cloud block (cloud_pass.cpp; no GL): the field's parameters
+/// and wind offsets in float, the air for the clouds' fade into the
+/// atmosphere, the march settings of `frame`, and the shadow map placed
+/// around the eye (see cloud_shadow_pass.cpp); shadowActive when the field
+/// is active and the cloud pass is on. Fills `shadow` with the placement.
+CloudBlock makeCloudBlock(const CloudField& field, const PresetState& state, const FrameDesc& frame,
+                          const glm::dvec3& eye, CloudShadowStats& shadow);
+
+/// Uploads the field's noise when its seed differs from gpu.cloudSeed
+/// (cloud_pass.cpp); creates the shadow map on first use.
+void prepareCloudResources(RendererResources& gpu, const CloudField& field);
+void destroyCloudResources(RendererResources& gpu);
 
 }  // namespace aerial::renderer::detail

@@ -15,6 +15,7 @@
 #include "shader_library.hpp"
 #include "sky_textures.hpp"
 
+#include <aerial/clouds.hpp>
 #include <aerial/evaluate.hpp>
 #include <aerial/finite.hpp>
 #include <aerial/sky.hpp>
@@ -34,8 +35,9 @@ using detail::GpuMesh;
 
 /// The frame, in order (renderer.hpp).
 const detail::RenderPass* const kFramePasses[] = {
-    &detail::kScenePass,   &detail::kSkyPass,         &detail::kGlobalFogPass, &detail::kVolumePass,
-    &detail::kEmitterPass, &detail::kTransparentPass, &detail::kParticlePass,
+    &detail::kCloudShadowPass, &detail::kScenePass,       &detail::kSkyPass,
+    &detail::kCloudPass,       &detail::kGlobalFogPass,   &detail::kVolumePass,
+    &detail::kEmitterPass,     &detail::kTransparentPass, &detail::kParticlePass,
 };
 
 }  // namespace
@@ -147,6 +149,8 @@ Renderer::Renderer(const RendererDesc& desc) : impl_(std::make_unique<Impl>()) {
     glNamedBufferData(s.frameBuffer, sizeof(detail::FrameBlock), nullptr, GL_DYNAMIC_DRAW);
     glCreateBuffers(1, &s.volumeBuffer);
     glNamedBufferData(s.volumeBuffer, sizeof(detail::VolumeBlock), nullptr, GL_DYNAMIC_DRAW);
+    glCreateBuffers(1, &s.cloudBuffer);
+    glNamedBufferData(s.cloudBuffer, sizeof(detail::CloudBlock), nullptr, GL_DYNAMIC_DRAW);
     glCreateBuffers(1, &s.objectBuffer);
     glNamedBufferData(s.objectBuffer, sizeof(detail::ObjectBlock), nullptr, GL_DYNAMIC_DRAW);
     detail::uploadEmitters(s, {});
@@ -160,6 +164,7 @@ Renderer::~Renderer() {
     if (s.emptyVertexArray == 0) return;  // never initialised (no context)
     s.destroyTargets();
     s.destroyScene();
+    detail::destroyCloudResources(s);
     detail::destroyMesh(s.hull);
     glDeleteTextures(1, &s.whiteTexture);
     glDeleteVertexArrays(1, &s.spriteArray);
@@ -274,16 +279,33 @@ void Renderer::Impl::render(const Camera& camera, const PresetState& state, cons
     const detail::FrameBlock block = detail::makeFrameBlock(camera, view, state, frameDesc, inputs);
     glNamedBufferSubData(frameBuffer, 0, sizeof block, &block);
 
+    // The cloud layer at this time (the noise re-uploaded when the seed
+    // changes; nothing at all while the layer is empty).
+    const CloudField clouds = prepareClouds(state.environment.clouds, {}, state.timeHours,
+                                            state.environment.atmosphere.planetRadius);
+    if (frameDesc.passes.clouds) detail::prepareCloudResources(*this, clouds);
+    const detail::CloudBlock cloudBlock =
+        detail::makeCloudBlock(clouds, state, frameDesc, view.eye, stats.cloudShadow);
+    glNamedBufferSubData(cloudBuffer, 0, sizeof cloudBlock, &cloudBlock);
+
     // The frame's bindings and the baseline state of render_pass.hpp.
     glBindBufferBase(GL_UNIFORM_BUFFER, detail::kFrameBinding, frameBuffer);
     glBindBufferBase(GL_UNIFORM_BUFFER, detail::kVolumeBinding, volumeBuffer);
     glBindBufferBase(GL_UNIFORM_BUFFER, detail::kObjectBinding, objectBuffer);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, detail::kEmitterBinding, emitterBuffer);
+    glBindBufferBase(GL_UNIFORM_BUFFER, detail::kCloudBinding, cloudBuffer);
     const GLuint unitTextures[detail::kTextureUnitCount] = {
         sunSky.rayleigh, sunSky.mie,   moonSky.rayleigh, moonSky.mie,
         linearDepth,     whiteTexture, sunSky.multiple,  moonSky.multiple};
     for (unsigned unit = 0; unit < detail::kTextureUnitCount; ++unit) {
         glBindTextureUnit(unit, unitTextures[unit]);
+        glBindSampler(unit, 0);
+    }
+    const GLuint cloudTextures[3][2] = {{detail::kCloudShapeUnit, cloudShape},
+                                        {detail::kCloudDetailUnit, cloudDetail},
+                                        {detail::kCloudShadowUnit, cloudShadowMap}};
+    for (const auto& [unit, texture] : cloudTextures) {
+        glBindTextureUnit(unit, texture);
         glBindSampler(unit, 0);
     }
     glDisable(GL_SCISSOR_TEST);
@@ -307,6 +329,8 @@ void Renderer::Impl::render(const Camera& camera, const PresetState& state, cons
     glClearBufferfi(GL_DEPTH_STENCIL, 0, 1.0f, 0);
 
     detail::FrameContext frame(camera, view, state, frameDesc, block, *this, stats);
+    frame.clouds = &clouds;
+    frame.cloudBlock = cloudBlock;
     timer.beginFrame(frameDesc.gpuTimers);
     for (const detail::RenderPass* pass : kFramePasses) timer.run(*pass, frame);
     timer.endFrame(stats);
@@ -355,6 +379,14 @@ Image Renderer::readColour() const {
     detail::GlStateGuard guard(&s.desc.logger, s.desc.debugOutput, &impl_->stats.glErrors);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     return readTexture(s.colour, s.width, s.height, 4, GL_RGBA);
+}
+
+Image Renderer::readCloudShadow() const {
+    const Impl& s = *impl_;
+    if (!s.stats.cloudShadow.drawn) return {};
+    detail::GlStateGuard guard(&s.desc.logger, s.desc.debugOutput, &impl_->stats.glErrors);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    return readTexture(s.cloudShadowMap, detail::kCloudShadowSize, detail::kCloudShadowSize, 1, GL_RED);
 }
 
 Image Renderer::readLinearDepth() const {

@@ -204,6 +204,10 @@ const char* ShaderLibrary::fileOf(Pass pass) {
             return "particles.glsl";
         case Pass::FogVolumeMarched:
             return "fog_volume_marched.glsl";
+        case Pass::Clouds:
+            return "clouds.glsl";
+        case Pass::CloudShadow:
+            return "cloud_shadow.glsl";
         case Pass::Count:
             break;
     }

@@ -50,6 +50,8 @@ enum class Pass {
     Transparent,
     Particles,
     FogVolumeMarched,
+    Clouds,
+    CloudShadow,
     Count
 };
 

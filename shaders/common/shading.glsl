@@ -24,10 +24,13 @@
 // material is exactly Lambert: L = emission + base / pi E_total.
 // Requires common/frame.glsl, common/atmosphere.glsl, common/sky_table.glsl,
 // common/object.glsl.
+// Clouds: the sun and moon are multiplied by the cloud shadow map's
+// visibility at p (common/clouds.glsl) while a cloud layer is drawn.
 #ifndef AERIAL_SHADING_GLSL
 #define AERIAL_SHADING_GLSL
 
 #include "common/emitters.glsl"
+#include "common/clouds.glsl"
 layout(binding = 5) uniform sampler2D uBaseColour;  // sRGB8_A8: decoded to linear by the sampler
 
 struct Surface {
@@ -98,8 +101,15 @@ vec2 environmentBrdf(float roughness, float nv) {
 void shadeSurface(Surface s, vec3 p, vec3 n, vec3 v, out vec3 diffuse, out vec3 specular) {
     diffuse = vec3(0.0);
     specular = vec3(0.0);
-    addLight(s, n, v, frame.sunDirection, frame.sunIlluminance, diffuse, specular);
-    addLight(s, n, v, frame.moonDirection, frame.moonIlluminance, diffuse, specular);
+    vec3 sunE = frame.sunIlluminance;
+    vec3 moonE = frame.moonIlluminance;
+    if (clouds.shadowActive > 0.5) {  // the cloud shadow (common/clouds.glsl); off: exactly as without clouds
+        float visibility = cloudShadowVisibility(p);
+        sunE *= visibility;
+        moonE *= visibility;
+    }
+    addLight(s, n, v, frame.sunDirection, sunE, diffuse, specular);
+    addLight(s, n, v, frame.moonDirection, moonE, diffuse, specular);
     for (int k = 0; k < frame.emitterCount; ++k) {
         vec3 toLight = emitters[k].position - p;
         float r2 = dot(toLight, toLight);

@@ -29,6 +29,7 @@
 namespace aerial::test {
 namespace {
 
+using renderer::detail::CloudBlock;
 using renderer::detail::FrameBlock;
 using renderer::detail::FrameBlockInputs;
 using renderer::detail::makeFrameBlock;
@@ -356,6 +357,35 @@ TEST(FrameBlock, Std140OffsetsMatchTheGlslBlocks) {
                   AERIAL_OFFSET(ObjectBlock, baseColourTextured), AERIAL_OFFSET(ObjectBlock, boundsMin),
                   AERIAL_OFFSET(ObjectBlock, boundsMax), AERIAL_OFFSET(ObjectBlock, cornerFog)},
                  sizeof(ObjectBlock));
+    expectLayout("common/clouds.glsl", "CloudBlock",
+                 {AERIAL_OFFSET(CloudBlock, shapeOffset),
+                  AERIAL_OFFSET(CloudBlock, detailOffset),
+                  AERIAL_OFFSET(CloudBlock, planetRadius),
+                  AERIAL_OFFSET(CloudBlock, bottomM),
+                  AERIAL_OFFSET(CloudBlock, thicknessM),
+                  AERIAL_OFFSET(CloudBlock, coverage),
+                  AERIAL_OFFSET(CloudBlock, densityPerM),
+                  AERIAL_OFFSET(CloudBlock, type),
+                  AERIAL_OFFSET(CloudBlock, shapeScaleM),
+                  AERIAL_OFFSET(CloudBlock, detailScaleM),
+                  AERIAL_OFFSET(CloudBlock, erosion),
+                  AERIAL_OFFSET(CloudBlock, anisotropy),
+                  AERIAL_OFFSET(CloudBlock, steps),
+                  AERIAL_OFFSET(CloudBlock, lightSteps),
+                  AERIAL_OFFSET(CloudBlock, albedo),
+                  AERIAL_OFFSET(CloudBlock, volumeCount),
+                  AERIAL_OFFSET(CloudBlock, rayleighScattering),
+                  AERIAL_OFFSET(CloudBlock, rayleighScaleHeight),
+                  AERIAL_OFFSET(CloudBlock, mieExtinction),
+                  AERIAL_OFFSET(CloudBlock, mieScaleHeight),
+                  AERIAL_OFFSET(CloudBlock, shadowOrigin),
+                  AERIAL_OFFSET(CloudBlock, shadowExtentM),
+                  AERIAL_OFFSET(CloudBlock, shadowActive),
+                  AERIAL_OFFSET(CloudBlock, shadowToLight),
+                  AERIAL_OFFSET(CloudBlock, shadowSteps),
+                  AERIAL_OFFSET(CloudBlock, outputMode),
+                  AERIAL_OFFSET(CloudBlock, shadowSize)},
+                 sizeof(CloudBlock));
 }
 
 }  // namespace

@@ -32,6 +32,12 @@
 //      with the phase functions), fog volumes and emitters per object from the
 //      CPU fog query (FogScene) at the 8 corners of the mesh's world bounds,
 //      interpolated trilinearly per fragment (Wenzel 2006);
+//   0. (clouds only) the cloud shadow map: optical depth from the ground
+//      towards the sun through the cloud layer (cloud_shadow.glsl); the
+//      scene, transparent and particle lighting multiply the sun and moon by
+//      its visibility;
+//   2b. (clouds only) the cloud layer, ray-marched per pixel over the sky
+//      and the scene, before the global fog (clouds.glsl);
 //   7. soft fog particles (SceneDesc::sprites), back to front, faded by the
 //      scene depth; global fog per vertex, the volumes' and emitters' fog
 //      from one CPU query per sprite (at its centre).
@@ -110,6 +116,18 @@ struct RenderPasses {
     /// fog when globalFog is off, no volume or emitter fog when those are off.
     bool transparent = true;
     bool particles = true;  ///< soft fog particles (SceneDesc::sprites)
+    /// The volumetric cloud layer (state.environment.clouds) and its shadow
+    /// on the scene; neither runs while the layer is empty (coverage 0).
+    bool clouds = true;
+};
+
+/// What the cloud pass writes.
+enum class CloudOutput {
+    Lit,  ///< clouds lit and composited over the frame (default)
+    /// Test mode: rgb = (T, optical depth, 0) of the view ray through the
+    /// clouds, written over the colour without blending (no lighting, no
+    /// air); T matches aerial::cloudTransmittance with FrameDesc::cloudSteps.
+    Transmittance,
 };
 
 /// How the fog-volume pass integrates a volume's density.
@@ -138,6 +156,10 @@ struct FrameDesc {
     double sunDiscRadius = 0.004653;
     /// Angular radius of the moon disc [rad]; 0 hides it. Default 0.2588 deg.
     double moonDiscRadius = 0.004517;
+    CloudOutput cloudOutput = CloudOutput::Lit;
+    /// Samples of the cloud pass's view-ray march (core's midpoint march:
+    /// max(1, round(steps x share)) per shell segment), 1..1024. Default 64.
+    int cloudSteps = 64;
 };
 
 struct ShaderReloadResult {
@@ -157,11 +179,28 @@ struct PassTimes {
     double emitters = 0.0;
     double transparent = 0.0;
     double particles = 0.0;
-    double total() const { return scene + sky + globalFog + volumes + emitters + transparent + particles; }
+    double cloudShadow = 0.0;  ///< the cloud shadow map
+    double clouds = 0.0;       ///< the cloud layer
+    double total() const {
+        return scene + sky + globalFog + volumes + emitters + transparent + particles + cloudShadow + clouds;
+    }
+};
+
+/// Where the cloud shadow map of the last frame lies (RenderStats).
+struct CloudShadowStats {
+    bool drawn = false;  ///< false: no clouds this frame (no map, no shadow)
+    int size = 0;        ///< texels per side
+    /// World [x, z] of the map's corner [m]; texel (i, j) holds the optical
+    /// depth towards the light from the ground point (originX + (i + 0.5)
+    /// extentM / size, 0, originZ + (j + 0.5) extentM / size).
+    double originX = 0.0, originZ = 0.0;
+    double extentM = 0.0;               ///< side of the square [m]
+    glm::dvec3 toLight{0.0, 1.0, 0.0};  ///< unit direction marched (the brighter of sun and moon)
 };
 
 /// Statistics of the last render.
 struct RenderStats {
+    CloudShadowStats cloudShadow;
     int volumesDrawn = 0;
     int volumesDrawnInside = 0;  ///< hulls drawn as back faces without depth test
     int emitters = 0;
@@ -215,6 +254,9 @@ public:
     /// depth (1 channel, z_view / far; 1 where only sky is seen).
     Image readColour() const;
     Image readLinearDepth() const;
+    /// The last frame's cloud shadow map (1 channel: optical depth towards
+    /// the light, RenderStats::cloudShadow says where); empty without clouds.
+    Image readCloudShadow() const;
     /// GL names of the frame's textures (for an editor's viewport).
     unsigned int colourTexture() const;
     unsigned int linearDepthTexture() const;

@@ -1,0 +1,206 @@
+// clouds.glsl — the cloud layer pass (renderer/src/cloud_pass.cpp): a
+// full-resolution midpoint march per pixel through the shell segments of
+// common/clouds.glsl (core's cloudOpticalDepth sample placement), lit by the
+// sun and moon after the atmosphere, the sky and lightning emitters, then
+// faded into the air between the viewer and the cloud (DESIGN.md "Clouds").
+//
+// Inputs: frame (eye, corner rays, lights: direction and E_ground,
+//   skyAmbient), CloudBlock and the noise (common/clouds.glsl), the sky
+//   tables (units 0..3, the air's colour), uLinearDepth (unit 4), the
+//   emitters (binding 2).
+// Output (location 0), blended with glBlendFunc(GL_ONE, GL_SRC_ALPHA):
+//   rgb = S (the clouds' radiance reaching the eye), a = T (their
+//   transmittance), so L <- L T + S: the sky and the scene behind are seen
+//   through the cloud. CloudBlock.outputMode 1 (tests): rgb = (T, tau, 0),
+//   a = 1, unblended, with T = exp(-tau) the plain march (no early exit),
+//   which is aerial::cloudTransmittance(eye, v, scene distance, steps).
+//
+// The view ray stops at the scene: t <= the linear scene depth along the ray
+// (sky pixels: no limit). The optical depth is continuous in that distance,
+// so terrain reaching into the layer clips the clouds softly (the density
+// between the eye and the terrain fades the cloud out; no hard edge).
+//
+// Per sample of extinction sigma_t = rho and scattering sigma_s = albedo rho:
+//   S(p) = sigma_s [ sum_lights E_l sum_{i<N} a^i P_i(mu_l) exp(-b^i tau_l(p))
+//                    + E_sky / (2 pi) A(f)
+//                    + sum_emitters colour i / (1 + a_e r^2) / (4 pi) ]
+// integrated over a step of length d with Hillaire 2015's energy-conserving
+// form S_int = (S - S exp(-sigma_t d)) / sigma_t, L += T S_int,
+// T *= exp(-sigma_t d).
+//   Lights: E_l is frame.<light>Illuminance (E_space x T_atmosphere, what
+//     the sky pass and the scene use); tau_l the optical depth towards the
+//     light by kLightSteps midpoint samples over [0, min(exit of the top
+//     sphere, kLightMaxDistanceFactor x thickness)], quadratically spaced
+//     (dense near p). Beer-Lambert, no powder term.
+//   Multiple scattering: Wrenninge 2013 ("Oz: the great and volumetric",
+//     SIGGRAPH talk) as Hillaire 2016 uses it ("Physically based sky,
+//     atmosphere and cloud rendering in Frostbite", section 5.5.2): N =
+//     kOctaves = 3 octaves, scattering a^i, extinction b^i, phase
+//     anisotropy c^i with a = 0.5, b = 0.5, c = 0.5 (a <= b keeps it
+//     energy-conserving).
+//   Phase P_i: two Henyey-Greenstein lobes, mix(HG(mu, g c^i),
+//     HG(mu, -0.3 c^i), 0.3): the forward lobe g = clouds.anisotropy gives
+//     the silver lining round a cloud in front of the sun, the back lobe
+//     (-0.3, weight 0.3) lightens the side facing the light.
+//   Ambient: the sky's upward irradiance E_sky seen as a uniform upper
+//     hemisphere (radiance E_sky / pi, half of the sphere: E_sky / (2 pi) as
+//     for the particles), darkened with depth in the cloud by A(f) =
+//     mix(0.25, 1, f), f the height fraction in the layer (bases see less
+//     sky than tops).
+//   Emitters: their fog falloff read as irradiance (as in shading.glsl),
+//     isotropic, unshadowed: lightning inside the layer lights it up.
+// Air: the clouds' radiance is seen through the atmosphere between the eye
+//   and the cloud's transmittance-weighted distance d_c = sum t (T_i -
+//   T_i+1) / (1 - T): T_air = exp(-(beta_R tau(H_R) + beta_M,ext tau(H_M)))
+//   with tau the exponential integral from the eye's height to the cloud
+//   point's (the global fog's formula, atmosphere.glsl), and the air's own
+//   light there taken from the sky behind (skyRadiance(v)), so a distant
+//   cloud fades into the sky at the horizon:
+//   S = S_cloud T_air + (1 - T) (1 - T_air) L_sky(v).
+// Robustness: a sample with no density costs one profile test; the march
+//   stops once T < kTransmittanceCutoff (lit mode); NaN or Inf never leave
+//   the pass (S sanitised to [0, radianceCap], T to [0, 1]).
+#include "common/frame.glsl"
+
+#ifdef AERIAL_VERTEX_SHADER
+#include "common/fullscreen.glsl"
+#else
+#include "common/atmosphere.glsl"
+#include "common/sky_table.glsl"
+#include "common/emitters.glsl"
+#include "common/clouds.glsl"
+
+layout(binding = 4) uniform sampler2D uLinearDepth;
+
+in vec3 vFarRay;
+layout(location = 0) out vec4 outColour;
+
+const int kOctaves = 3;
+const float kOctaveScattering = 0.5;  // a
+const float kOctaveExtinction = 0.5;  // b
+const float kOctavePhase = 0.5;       // c
+const float kBackLobeG = -0.3;
+const float kBackLobeWeight = 0.3;
+const float kLightMaxDistanceFactor = 4.0;
+const float kTransmittanceCutoff = 1e-3;
+const float kAmbientBase = 0.25;
+
+/// Henyey-Greenstein (1 - g^2) / (4 pi (1 + g^2 - 2 g mu)^1.5) [1/sr].
+float henyeyGreenstein(float mu, float g) {
+    float g2 = g * g;
+    float denom = max(1.0 + g2 - 2.0 * g * clamp(mu, -1.0, 1.0), 1e-6);
+    return (1.0 - g2) / (4.0 * kPi * denom * sqrt(denom));
+}
+
+/// The two-lobe phase of octave i (anisotropies scaled by c^i).
+float cloudPhase(float mu, float octaveScale) {
+    return mix(henyeyGreenstein(mu, clouds.anisotropy * octaveScale),
+               henyeyGreenstein(mu, kBackLobeG * octaveScale), kBackLobeWeight);
+}
+
+/// Optical depth from p towards the light l (unit) through the layer.
+float lightOpticalDepth(vec3 p, vec3 l) {
+    float t0, t1;
+    if (!cloudSphereRoots(p, l, clouds.bottomM + clouds.thicknessM, t0, t1)) return 0.0;
+    float len = min(max(t1, 0.0), kLightMaxDistanceFactor * clouds.thicknessM);
+    if (!(len > 0.0)) return 0.0;
+    int n = max(clouds.lightSteps, 1);
+    float tau = 0.0;
+    float previous = 0.0;
+    for (int i = 1; i <= n; ++i) {
+        float s = float(i) / float(n);
+        float edge = len * s * s;
+        tau += cloudDensityAt(p + l * (0.5 * (previous + edge))) * (edge - previous);
+        previous = edge;
+    }
+    return tau;
+}
+
+/// In-scattering of one light with illuminance E at p (per unit sigma_s).
+vec3 lightScattering(vec3 p, vec3 l, vec3 E, float mu) {
+    if (all(equal(E, vec3(0.0)))) return vec3(0.0);
+    float tau = lightOpticalDepth(p, l);
+    vec3 sum = vec3(0.0);
+    float a = 1.0, b = 1.0, c = 1.0;
+    for (int i = 0; i < kOctaves; ++i) {
+        sum += a * cloudPhase(mu, c) * exp(-b * tau) * E;
+        a *= kOctaveScattering;
+        b *= kOctaveExtinction;
+        c *= kOctavePhase;
+    }
+    return sum;
+}
+
+void main() {
+    float farLength = length(vFarRay);
+    vec3 v = vFarRay / farLength;
+    float depth01 = texelFetch(uLinearDepth, ivec2(gl_FragCoord.xy), 0).r;
+    float tMax = depth01 >= 1.0 ? 1.0e30 : depth01 * farLength;
+    vec3 o = frame.eye;
+
+    if (clouds.outputMode == 1) {
+        float tau = cloudOpticalDepth(o, v, tMax, clouds.steps);
+        outColour = vec4(exp(-tau), tau, 0.0, 1.0);
+        return;
+    }
+
+    vec2 segments[2];
+    int count = cloudLayerSegments(o, v, tMax, segments[0], segments[1]);
+    if (count == 0) {
+        outColour = vec4(0.0, 0.0, 0.0, 1.0);
+        return;
+    }
+    float total = (segments[0].y - segments[0].x) + (count > 1 ? segments[1].y - segments[1].x : 0.0);
+    float muSun = dot(v, frame.sunDirection);
+    float muMoon = dot(v, frame.moonDirection);
+    vec3 ambient = frame.skyAmbient / (2.0 * kPi);
+    vec3 radiance = vec3(0.0);
+    float transmittance = 1.0;
+    float weightedDistance = 0.0;
+    for (int k = 0; k < count && transmittance >= kTransmittanceCutoff; ++k) {
+        float span = segments[k].y - segments[k].x;
+        int n = cloudSegmentSamples(clouds.steps, span, total);
+        float dt = span / float(n);
+        for (int i = 0; i < n; ++i) {
+            float t = segments[k].x + (float(i) + 0.5) * dt;
+            vec3 p = o + v * t;
+            float f;
+            float rho = cloudDensityAt(p, f);
+            if (!(rho > 0.0)) continue;
+            vec3 S = lightScattering(p, frame.sunDirection, frame.sunIlluminance, muSun) +
+                     lightScattering(p, frame.moonDirection, frame.moonIlluminance, muMoon) +
+                     ambient * mix(kAmbientBase, 1.0, cloudSaturate(f));
+            for (int e = 0; e < frame.emitterCount; ++e) {
+                vec3 toEmitter = emitters[e].position - p;
+                S += emitters[e].colour * emitters[e].intensity /
+                     ((1.0 + max(emitters[e].attenuation, 0.0) * dot(toEmitter, toEmitter)) * 4.0 * kPi);
+            }
+            S *= clouds.albedo * rho;
+            float stepTransmittance = exp(-rho * dt);
+            radiance += transmittance * (S - S * stepTransmittance) / rho;
+            weightedDistance += t * transmittance * (1.0 - stepTransmittance);
+            transmittance *= stepTransmittance;
+            if (transmittance < kTransmittanceCutoff) break;
+        }
+    }
+
+    // The air between the eye and the cloud.
+    float opacity = 1.0 - transmittance;
+    float cloudDistance = opacity > 1e-6 ? weightedDistance / opacity : segments[0].x;
+    float eyeHeight = cloudHeightAboveGround(o);
+    float rise = cloudHeightAboveGround(o + v * cloudDistance) - eyeHeight;
+    float rayleighScale = clouds.rayleighScaleHeight > 0.0 ? 1.0 / clouds.rayleighScaleHeight : 0.0;
+    float mieScale = clouds.mieScaleHeight > 0.0 ? 1.0 / clouds.mieScaleHeight : 0.0;
+    vec3 airTau = clouds.rayleighScattering * exponentialOpticalDepth(1.0, rayleighScale, eyeHeight, rise, cloudDistance) +
+                  clouds.mieExtinction * exponentialOpticalDepth(1.0, mieScale, eyeHeight, rise, cloudDistance);
+    vec3 air = exp(-airTau);
+    vec3 skyBehind = min(skyRadiance(v, false), vec3(frame.radianceCap));
+    vec3 S = radiance * air + opacity * (1.0 - air) * skyBehind;
+
+    // Nothing non-finite or negative leaves the pass.
+    bool finite = all(greaterThanEqual(S, vec3(0.0))) && all(lessThan(S, vec3(3.0e38)));
+    S = finite ? min(S, vec3(frame.radianceCap)) : vec3(0.0);
+    transmittance = transmittance >= 0.0 && transmittance <= 1.0 ? transmittance : 1.0;
+    outColour = vec4(S, transmittance);
+}
+#endif

@@ -1,0 +1,305 @@
+// test_renderer_clouds.cpp — the cloud layer on the GPU against core's CPU
+// reference (aerial/clouds.hpp): the cloud pass's transmittance mode per
+// pixel against cloudTransmittance on the same rays and scene distances
+// (1e-3), the cloud shadow map against cloudSunVisibility at its texels'
+// ground points (2e-3), coverage 0 leaving the frame bit-identical, and no
+// NaN/Inf with extreme parameters.
+#include "gl_fixture.hpp"
+
+#include <aerial/clouds.hpp>
+#include <aerial/evaluate.hpp>
+#include <aerial/renderer/scene.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <limits>
+
+namespace aerial::test {
+namespace {
+
+/// The default preset at `hours` with a partly cloudy layer (coverage 0.6).
+PresetState cloudyState(double hours, double coverage = 0.6) {
+    const CompiledPreset compiled;
+    PresetState state = compiled.evaluate(hours);
+    CloudParams& c = state.environment.clouds;
+    c.coverage = coverage;
+    c.type = 0.7;
+    c.windMPerS = {14.0, -6.0};
+    return state;
+}
+
+CloudField fieldOf(const PresetState& state) {
+    return prepareClouds(state.environment.clouds, {}, state.timeHours,
+                         state.environment.atmosphere.planetRadius);
+}
+
+/// The unit ray through the centre of image pixel (x, y) (row 0 at the top),
+/// in double: the GPU's bilinear far-corner ray (common/frame.glsl).
+glm::dvec3 pixelRay(const renderer::CameraFrame& f, int x, int y, int width, int height, double& farLength) {
+    const double u = (x + 0.5) / width;
+    const double v = (height - 1 - y + 0.5) / height;
+    const glm::dvec3 bottom = glm::mix(f.farCornerRays[0], f.farCornerRays[1], u);
+    const glm::dvec3 top = glm::mix(f.farCornerRays[2], f.farCornerRays[3], u);
+    const glm::dvec3 ray = glm::mix(bottom, top, v);
+    farLength = glm::length(ray);
+    return ray / farLength;
+}
+
+renderer::FrameDesc transmittanceFrame(int steps) {
+    renderer::FrameDesc frame = floatFrame();
+    frame.passes.sky = false;
+    frame.passes.globalFog = false;
+    frame.passes.volumes = false;
+    frame.passes.emitters = false;
+    frame.passes.transparent = false;
+    frame.passes.particles = false;
+    frame.cloudOutput = renderer::CloudOutput::Transmittance;
+    frame.cloudSteps = steps;
+    return frame;
+}
+
+struct TransmittanceComparison {
+    double maxError = 0.0;
+    int worstX = 0, worstY = 0;
+    int partlyCloudy = 0;  ///< pixels with 0.05 < T < 0.95 on the CPU
+    int pixels = 0;
+};
+
+TransmittanceComparison compareTransmittance(renderer::Renderer& r, const renderer::Camera& camera,
+                                             const PresetState& state, int steps) {
+    const renderer::FrameDesc frame = transmittanceFrame(steps);
+    r.render(camera, state, frame);
+    const renderer::Image colour = r.readColour();
+    const renderer::Image depth = r.readLinearDepth();
+    const renderer::CameraFrame view = renderer::cameraFrame(camera);
+    const CloudField field = fieldOf(state);
+    TransmittanceComparison out;
+    for (int y = 0; y < colour.height; ++y) {
+        for (int x = 0; x < colour.width; ++x) {
+            double farLength = 0.0;
+            const glm::dvec3 v = pixelRay(view, x, y, colour.width, colour.height, farLength);
+            const double depth01 = depth.pixels[std::size_t(y) * depth.width + x];
+            const double tMax =
+                depth01 >= 1.0 ? std::numeric_limits<double>::infinity() : depth01 * farLength;
+            const double cpu = cloudTransmittance(field, view.eye, v, tMax, steps);
+            const double gpu = colour.pixels[(std::size_t(y) * colour.width + x) * 4];
+            const double error = std::fabs(gpu - cpu);
+            if (error > out.maxError) {
+                out.maxError = error;
+                out.worstX = x;
+                out.worstY = y;
+            }
+            out.partlyCloudy += cpu > 0.05 && cpu < 0.95 ? 1 : 0;
+            ++out.pixels;
+        }
+    }
+    return out;
+}
+
+TEST_F(GlTest, CloudTransmittanceMatchesTheCpuMarch) {
+    renderer::Renderer r(rendererDesc());
+    ASSERT_TRUE(r.valid()) << r.error();
+    r.setScene(renderer::makeBuiltinScene());
+    const int steps = 64;
+    // From the valley looking up and along the horizon (terrain clips the
+    // lower rays), and from inside the layer.
+    const renderer::Camera low = makeCamera({0.0, 30.0, 120.0}, {0.0, 160.0, -400.0}, 4000.0, 1.2);
+    const renderer::Camera inside = makeCamera({300.0, 2300.0, 0.0}, {900.0, 2200.0, -1000.0}, 4000.0, 1.2);
+    for (double hours : {6.5, 12.0, 17.75}) {
+        const PresetState state = cloudyState(hours);
+        for (const renderer::Camera* camera : {&low, &inside}) {
+            const TransmittanceComparison c = compareTransmittance(r, *camera, state, steps);
+            std::printf(
+                "[ measured ] clouds at %.2f h, eye y %.0f m: max |T_gpu - T_cpu| = %.2e at (%d, %d), "
+                "%d of %d pixels partly cloudy\n",
+                hours, camera->eye.y, c.maxError, c.worstX, c.worstY, c.partlyCloudy, c.pixels);
+            EXPECT_LE(c.maxError, 1e-3) << hours << " h, eye y " << camera->eye.y;
+            EXPECT_GT(c.partlyCloudy, c.pixels / 50) << "the comparison needs partly cloudy pixels";
+        }
+    }
+    EXPECT_TRUE(log.errors.empty()) << log.errors.front();
+    EXPECT_EQ(r.stats().glErrors, 0);
+}
+
+TEST_F(GlTest, CloudShadowMapMatchesCpuSunVisibility) {
+    renderer::Renderer r(rendererDesc());
+    ASSERT_TRUE(r.valid()) << r.error();
+    r.setScene(renderer::makeBuiltinScene());
+    const renderer::Camera camera = makeCamera({0.0, 30.0, 120.0}, {0.0, 10.0, -200.0}, 4000.0);
+    for (double hours : {8.0, 12.0, 16.5}) {
+        const PresetState state = cloudyState(hours);
+        renderer::FrameDesc frame = floatFrame();
+        r.render(camera, state, frame);
+        const renderer::CloudShadowStats& placement = r.stats().cloudShadow;
+        ASSERT_TRUE(placement.drawn);
+        const renderer::Image map = r.readCloudShadow();
+        ASSERT_EQ(map.width, placement.size);
+        const CloudField field = fieldOf(state);
+        double maxError = 0.0, minVisibility = 1.0;
+        int shadowed = 0, samples = 0;
+        const double texel = placement.extentM / placement.size;
+        for (int y = 0; y < map.height; y += 5) {
+            for (int x = 0; x < map.width; x += 5) {
+                const int j = map.height - 1 - y;  // the image is top-down
+                const glm::dvec3 ground(placement.originX + (x + 0.5) * texel, 0.0,
+                                        placement.originZ + (j + 0.5) * texel);
+                const double cpu = cloudSunVisibility(field, ground, placement.toLight);
+                const double gpu = std::exp(-double(map.pixels[std::size_t(y) * map.width + x]));
+                maxError = std::max(maxError, std::fabs(gpu - cpu));
+                minVisibility = std::min(minVisibility, cpu);
+                shadowed += cpu < 0.9 ? 1 : 0;
+                ++samples;
+            }
+        }
+        std::printf(
+            "[ measured ] cloud shadow map at %.1f h: max |V_gpu - V_cpu| = %.2e over %d texels, "
+            "%d shadowed, min visibility %.3f\n",
+            hours, maxError, samples, shadowed, minVisibility);
+        EXPECT_LE(maxError, 2e-3) << hours << " h";
+        EXPECT_GT(shadowed, samples / 20) << "the comparison needs shadowed texels";
+    }
+    EXPECT_TRUE(log.errors.empty()) << log.errors.front();
+    EXPECT_EQ(r.stats().glErrors, 0);
+}
+
+TEST_F(GlTest, CloudsDimTheSunOnTheScene) {
+    renderer::Renderer r(rendererDesc());
+    ASSERT_TRUE(r.valid()) << r.error();
+    r.setScene(renderer::makeBuiltinScene());
+    const renderer::Camera camera = makeCamera({0.0, 30.0, 120.0}, {0.0, 10.0, -200.0}, 4000.0);
+    renderer::FrameDesc frame = floatFrame();
+    frame.passes.sky = false;
+    frame.passes.globalFog = false;
+    frame.passes.clouds = false;
+    PresetState state = cloudyState(12.0, 1.0);
+    state.environment.clouds.densityPerM = 0.2;
+    const SkyPair sky = solveSky(state.environment.atmosphere, state.sunLight.body.direction,
+                                 state.moonLight.body.direction, 32, 16);
+    r.setSky(sky.sun, sky.moon);
+    r.render(camera, state, frame);
+    const renderer::Image clear = r.readColour();
+    frame.passes.clouds = true;
+    frame.cloudSteps = 4;  // the view march does not matter: no sky pixel is compared
+    r.render(camera, state, frame);
+    const renderer::Image overcast = r.readColour();
+    const renderer::Image depth = r.readLinearDepth();
+    double sumClear = 0.0, sumOvercast = 0.0;
+    for (std::size_t i = 0; i < depth.pixels.size(); ++i) {
+        if (depth.pixels[i] >= 1.0f) continue;
+        sumClear += clear.pixels[i * 4 + 1];
+        sumOvercast += overcast.pixels[i * 4 + 1];
+    }
+    std::printf("[ measured ] scene green under full overcast / clear sky: %.3f\n", sumOvercast / sumClear);
+    EXPECT_LT(sumOvercast, 0.6 * sumClear) << "the sun must be hidden by a full cloud cover";
+    EXPECT_GT(sumOvercast, 0.0) << "the sky still lights the scene";
+}
+
+TEST_F(GlTest, CoverageZeroRendersBitIdenticallyToNoCloudPass) {
+    renderer::Renderer r(rendererDesc());
+    ASSERT_TRUE(r.valid()) << r.error();
+    r.setScene(renderer::makeBuiltinScene());
+    const renderer::Camera camera = makeCamera({0.0, 30.0, 120.0}, {0.0, 60.0, -200.0}, 4000.0);
+    for (double hours : {7.0, 12.0, 22.0}) {
+        PresetState state = cloudyState(hours, 0.0);
+        renderer::FrameDesc frame;
+        frame.width = kWidth;
+        frame.height = kHeight;
+        frame.passes.clouds = false;
+        r.render(camera, state, frame);
+        const renderer::Image without = r.readColour();
+        frame.passes.clouds = true;
+        r.render(camera, state, frame);
+        const renderer::Image with = r.readColour();
+        EXPECT_FALSE(r.stats().cloudShadow.drawn);
+        EXPECT_EQ(r.readCloudShadow().pixels.size(), 0u);
+        ASSERT_EQ(with.pixels.size(), without.pixels.size());
+        std::size_t different = 0;
+        for (std::size_t i = 0; i < with.pixels.size(); ++i) {
+            different += std::memcmp(&with.pixels[i], &without.pixels[i], sizeof(float)) != 0 ? 1 : 0;
+        }
+        EXPECT_EQ(different, 0u) << hours << " h";
+    }
+}
+
+TEST_F(GlTest, ExtremeCloudsGiveFinitePixels) {
+    renderer::Renderer r(rendererDesc());
+    ASSERT_TRUE(r.valid()) << r.error();
+    r.setScene(renderer::makeBuiltinScene());
+    const renderer::Camera cameras[] = {
+        makeCamera({0.0, 30.0, 120.0}, {0.0, 60.0, -200.0}, 4000.0),
+        makeCamera({0.0, 900.0, 0.0}, {500.0, 950.0, -800.0}, 4000.0),
+        makeCamera({0.0, 30000.0, 0.0}, {100.0, 0.0, -100.0}, 100000.0),
+    };
+    int frames = 0;
+    for (double hours : {0.5, 6.0, 12.0, 19.6}) {
+        PresetState state = cloudyState(hours, 1.0);
+        CloudParams& c = state.environment.clouds;
+        c.bottomM = 0.0;
+        c.thicknessM = 20000.0;
+        c.densityPerM = 1.0;
+        c.erosion = 0.9;
+        c.anisotropy = 0.95;
+        c.albedo = {1.0, 1.0, 1.0};
+        c.shapeScaleM = 500.0;
+        c.detailScaleM = 50.0;
+        c.windMPerS = {1000.0, -1000.0};
+        Emitter flash;
+        flash.position = {200.0, 800.0, -400.0};
+        flash.intensity = 1e6;
+        flash.attenuation = 1e-8;
+        state.emitters.push_back(flash);
+        const SkyPair sky = solveSky(state.environment.atmosphere, state.sunLight.body.direction,
+                                     state.moonLight.body.direction, 32, 16);
+        r.setSky(sky.sun, sky.moon);
+        for (const renderer::Camera& camera : cameras) {
+            renderer::FrameDesc frame;
+            frame.width = 96;
+            frame.height = 54;
+            frame.cloudSteps = 24;
+            r.render(camera, state, frame);
+            const renderer::Image image = r.readColour();
+            int bad = 0;
+            double brightest = 0.0;
+            for (float p : image.pixels) {
+                bad += std::isfinite(p) ? 0 : 1;
+                brightest = std::max(brightest, double(p));
+            }
+            EXPECT_EQ(bad, 0) << hours << " h, eye y " << camera.eye.y;
+            EXPECT_LE(brightest, 65504.0);
+            ++frames;
+        }
+    }
+    std::printf("[ measured ] %d frames of extreme clouds without NaN/Inf\n", frames);
+    EXPECT_TRUE(log.errors.empty()) << log.errors.front();
+    EXPECT_EQ(r.stats().glErrors, 0);
+}
+
+/// The pass's cost (run by hand: --gtest_also_run_disabled_tests).
+TEST_F(GlTest, DISABLED_CloudPassTiming) {
+    renderer::Renderer r(rendererDesc());
+    ASSERT_TRUE(r.valid()) << r.error();
+    r.setScene(renderer::makeBuiltinScene());
+    const PresetState state = cloudyState(12.0, 0.5);
+    const SkyPair sky = solveSky(state.environment.atmosphere, state.sunLight.body.direction,
+                                 state.moonLight.body.direction, 64, 32);
+    r.setSky(sky.sun, sky.moon);
+    for (auto [w, h] : {std::pair{320, 180}, std::pair{1280, 720}}) {
+        renderer::Camera camera = makeCamera({0.0, 30.0, 120.0}, {0.0, 60.0, -200.0}, 4000.0);
+        camera.aspect = double(w) / h;
+        renderer::FrameDesc frame;
+        frame.width = w;
+        frame.height = h;
+        frame.gpuTimers = true;
+        r.render(camera, state, frame);  // warm-up (noise upload)
+        r.render(camera, state, frame);
+        const renderer::PassTimes& t = r.stats().wallMilliseconds;
+        std::printf("[ measured ] %dx%d: clouds %.1f ms, cloud shadow %.1f ms, total %.1f ms\n", w, h,
+                    t.clouds, t.cloudShadow, t.total());
+    }
+}
+
+}  // namespace
+}  // namespace aerial::test
