@@ -17,7 +17,7 @@
 //   manifest.json
 //       format, preset, steps and table mapping, and for every step: the
 //       time, the full evaluated state (sun, moon, every parameter, volumes,
-//       emitters: as `aerial eval --json`) and per light its EXR file name,
+//       emitters, cloud volumes: as `aerial eval --json`) and per light its EXR file name,
 //       light direction and azimuth, and horizon averages (the fog colour);
 //       how to expose a frame as the preset says ("exposure"); the clouds'
 //       noise seed and, when the preset has clouds, the FNV-1a fingerprint
@@ -75,14 +75,15 @@ constexpr const char* kManifestName = "manifest.json";
 /// the library and check the fingerprint (only computed when some step has
 /// clouds; generating the noise costs ~0.4 s).
 Json cloudsToJson(std::int64_t seed, bool cloudy) {
-    Json clouds = {{"seed", seed},
-                   {"shape_size", CloudNoise::kShapeSize},
-                   {"detail_size", CloudNoise::kDetailSize},
-                   {"how",
-                    "per step, parameters.clouds; the noise is aerial::cloudNoise(seed) (aerial/clouds.hpp): "
-                    "shape and detail R32F 3D textures, texel (i, j, k) at (k * size + j) * size + i, sampled "
-                    "with GL_LINEAR + GL_REPEAT; the layer's density and its offset by the wind as "
-                    "aerial::cloudDensityAt"}};
+    Json clouds = {
+        {"seed", seed},
+        {"shape_size", CloudNoise::kShapeSize},
+        {"detail_size", CloudNoise::kDetailSize},
+        {"how",
+         "per step, parameters.clouds; the noise is aerial::cloudNoise(seed) (aerial/clouds.hpp): "
+         "shape and detail R32F 3D textures, texel (i, j, k) at (k * size + j) * size + i, sampled "
+         "with GL_LINEAR + GL_REPEAT; the layer's density and its offset by the wind as "
+         "aerial::cloudDensityAt"}};
     if (cloudy) {
         char hex[19];
         std::snprintf(hex, sizeof hex, "0x%016llx",
