@@ -323,6 +323,10 @@ Json parametersToJson(const FogVolume& volume) { return flatParametersToJson(Par
 
 Json parametersToJson(const Emitter& emitter) { return flatParametersToJson(ParamScope::Emitter, emitter); }
 
+Json parametersToJson(const CloudVolume& volume) {
+    return flatParametersToJson(ParamScope::CloudVolume, volume);
+}
+
 std::string formatParam(const ParamDesc& p, const void* object) {
     const Json v = paramValueToJson(p, const_cast<void*>(object));
     if (v.is_string()) return v.get<std::string>();
@@ -356,13 +360,16 @@ Json stateToJson(const PresetState& state) {
         e["flash"] = i < state.emitterFlash.size() ? state.emitterFlash[i] : 1.0;
         emitters.push_back(std::move(e));
     }
+    Json cloudVolumes = Json::array();
+    for (const CloudVolume& v : state.cloudVolumes) cloudVolumes.push_back(parametersToJson(v));
     return {{"time_h", state.timeHours},
             {"time", formatTime(state.timeHours)},
             {"sun", lightToJson(state.sunLight)},
             {"moon", lightToJson(state.moonLight)},
             {"parameters", parametersToJson(state.environment)},
             {"volumes", std::move(volumes)},
-            {"emitters", std::move(emitters)}};
+            {"emitters", std::move(emitters)},
+            {"cloud_volumes", std::move(cloudVolumes)}};
 }
 
 namespace {

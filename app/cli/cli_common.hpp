@@ -139,11 +139,12 @@ std::string formatTime(double hours);
 Json toJson(const glm::dvec3& v);
 
 /// Every parameter of the object, as the preset file writes it: globals
-/// nested by their dotted path ({"atmosphere": {"mie": {...}}}), volumes
-/// and emitters as flat objects keyed by the parameter key.
+/// nested by their dotted path ({"atmosphere": {"mie": {...}}}), volumes,
+/// emitters and cloud volumes as flat objects keyed by the parameter key.
 Json parametersToJson(const Environment& environment);
 Json parametersToJson(const FogVolume& volume);
 Json parametersToJson(const Emitter& emitter);
+Json parametersToJson(const CloudVolume& volume);
 
 /// One parameter's value for people: "0.004", "(1, 0.9, 0.8)", "ellipsoid".
 std::string formatParam(const ParamDesc& param, const void* object);
@@ -153,7 +154,7 @@ std::string formatParam(const ParamDesc& param, const void* object);
 Json lightToJson(const LightState& light);
 
 /// The whole evaluated state: time, sun, moon, parameters, volumes,
-/// emitters (with their lightning flash multiplier).
+/// emitters (with their lightning flash multiplier), cloud volumes.
 Json stateToJson(const PresetState& state);
 
 /// JSON text with two-space indentation, arrays of numbers on one line.

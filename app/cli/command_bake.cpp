@@ -17,7 +17,7 @@
 //   manifest.json
 //       format, preset, steps and table mapping, and for every step: the
 //       time, the full evaluated state (sun, moon, every parameter, volumes,
-//       emitters: as `aerial eval --json`) and per light its EXR file name,
+//       emitters, cloud volumes: as `aerial eval --json`) and per light its EXR file name,
 //       light direction and azimuth, and horizon averages (the fog colour);
 //       how to expose a frame as the preset says ("exposure"); the clouds'
 //       noise seed and, when the preset has clouds, the FNV-1a fingerprint

@@ -9,7 +9,7 @@
 //    "moon": {...},
 //    "parameters": {every global parameter, nested as in the preset file},
 //    "volumes": [{every volume parameter}], "emitters": [{every emitter
-//    parameter, "flash"}]}
+//    parameter, "flash"}], "cloud_volumes": [{every cloud volume parameter}]}
 // Keyed values are applied; emitter intensities include the lightning flash.
 // Without --json: a readable summary, one parameter per line with its unit.
 #include "cli_common.hpp"
@@ -82,6 +82,10 @@ int runEval(const EvalOptions& options) {
                     e.name.c_str(), flash);
         printParameters(ParamScope::Emitter, e, "  ");
     }
+    for (const CloudVolume& v : state.cloudVolumes) {
+        std::printf("\ncloud volume %s \"%s\"\n", v.id.c_str(), v.name.c_str());
+        printParameters(ParamScope::CloudVolume, v, "  ");
+    }
     return kExitOk;
 }
 
@@ -90,7 +94,8 @@ int runEval(const EvalOptions& options) {
 Command addEvalCommand(CLI::App& parent) {
     auto options = std::make_shared<EvalOptions>();
     CLI::App* app = parent.add_subcommand(
-        "eval", "The preset at a time of day: sun, moon, every parameter, volumes and emitters");
+        "eval",
+        "The preset at a time of day: sun, moon, every parameter, volumes, emitters and cloud volumes");
     app->add_option("preset", options->preset, "Preset file (JSON)")->required()->type_name("PRESET");
     addTimeOption(*app, options->time);
     app->add_flag("--json", options->json, "Machine-readable output");

@@ -96,13 +96,25 @@ bool Document::redo() {
 }
 
 std::string uniqueObjectId(const Preset& preset, bool volume, std::string_view base) {
+    return uniqueObjectId(preset, volume ? ParamScope::Volume : ParamScope::Emitter, base);
+}
+
+std::string uniqueObjectId(const Preset& preset, ParamScope scope, std::string_view base) {
+    auto inList = [](const auto& objects, const std::string& id) {
+        for (const auto& o : objects)
+            if (o.id == id) return true;
+        return false;
+    };
     auto taken = [&](const std::string& id) {
-        if (volume) {
-            for (const FogVolume& v : preset.volumes)
-                if (v.id == id) return true;
-        } else {
-            for (const Emitter& e : preset.emitters)
-                if (e.id == id) return true;
+        switch (scope) {
+            case ParamScope::Volume:
+                return inList(preset.volumes, id);
+            case ParamScope::Emitter:
+                return inList(preset.emitters, id);
+            case ParamScope::CloudVolume:
+                return inList(preset.cloudVolumes, id);
+            case ParamScope::Global:
+                return false;
         }
         return false;
     };

@@ -114,5 +114,8 @@ private:
 /// A volume or emitter id not used yet in `preset` for that scope:
 /// `base`, or `base_2`, `base_3`, ...
 std::string uniqueObjectId(const Preset& preset, bool volume, std::string_view base);
+/// The same for any object scope (Volume, Emitter, CloudVolume; Global
+/// returns `base`).
+std::string uniqueObjectId(const Preset& preset, ParamScope scope, std::string_view base);
 
 }  // namespace aerial::editor

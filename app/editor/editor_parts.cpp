@@ -15,9 +15,8 @@ void EditState::validate(const Preset& p) {
         selection = p.emitters.empty() ? Selection{Selection::Kind::Fog, -1}
                                        : Selection{Selection::Kind::Emitter, int(p.emitters.size()) - 1};
     if (selectedParam && selectedParam->object >= 0) {
-        const std::size_t count =
-            selectedParam->scope() == ParamScope::Volume ? p.volumes.size() : p.emitters.size();
-        if (std::size_t(selectedParam->object) >= count) selectedParam.reset();
+        if (std::size_t(selectedParam->object) >= objectCount(p, selectedParam->scope()))
+            selectedParam.reset();
     }
     if (selectedParam) {
         const Track* track = trackOf(p, *selectedParam);

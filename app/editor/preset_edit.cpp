@@ -36,14 +36,50 @@ bool parseIndex(std::string_view text, int& out) {
 }
 
 const std::string* objectId(const Preset& preset, const ParamRef& ref) {
-    if (ref.scope() == ParamScope::Volume && ref.object >= 0 && ref.object < int(preset.volumes.size()))
-        return &preset.volumes[std::size_t(ref.object)].id;
-    if (ref.scope() == ParamScope::Emitter && ref.object >= 0 && ref.object < int(preset.emitters.size()))
-        return &preset.emitters[std::size_t(ref.object)].id;
+    if (ref.object < 0 || std::size_t(ref.object) >= objectCount(preset, ref.scope())) return nullptr;
+    const std::size_t i = std::size_t(ref.object);
+    switch (ref.scope()) {
+        case ParamScope::Volume:
+            return &preset.volumes[i].id;
+        case ParamScope::Emitter:
+            return &preset.emitters[i].id;
+        case ParamScope::CloudVolume:
+            return &preset.cloudVolumes[i].id;
+        case ParamScope::Global:
+            return nullptr;
+    }
     return nullptr;
 }
 
 }  // namespace
+
+std::size_t objectCount(const Preset& preset, ParamScope scope) {
+    switch (scope) {
+        case ParamScope::Volume:
+            return preset.volumes.size();
+        case ParamScope::Emitter:
+            return preset.emitters.size();
+        case ParamScope::CloudVolume:
+            return preset.cloudVolumes.size();
+        case ParamScope::Global:
+            return 0;
+    }
+    return 0;
+}
+
+std::string_view addressPrefix(ParamScope scope) {
+    switch (scope) {
+        case ParamScope::Volume:
+            return "volume";
+        case ParamScope::Emitter:
+            return "emitter";
+        case ParamScope::CloudVolume:
+            return "cloud_volume";
+        case ParamScope::Global:
+            return "";
+    }
+    return "";
+}
 
 std::optional<ParamRef> parseParamAddress(const Preset& preset, std::string_view address,
                                           std::string* error) {
@@ -54,14 +90,14 @@ std::optional<ParamRef> parseParamAddress(const Preset& preset, std::string_view
     ParamScope scope = ParamScope::Global;
     std::string_view key = address;
     int index = -1;
-    for (ParamScope s : {ParamScope::Volume, ParamScope::Emitter}) {
-        const std::string_view prefix = s == ParamScope::Volume ? "volume[" : "emitter[";
+    for (ParamScope s : {ParamScope::Volume, ParamScope::Emitter, ParamScope::CloudVolume}) {
+        const std::string prefix = cat(addressPrefix(s), "[");
         if (address.substr(0, prefix.size()) != prefix) continue;
         const std::size_t close = address.find("].", prefix.size());
         if (close == std::string_view::npos ||
             !parseIndex(address.substr(prefix.size(), close - prefix.size()), index))
             return fail(cat("\"", address, "\": expected ", prefix, "N].KEY"));
-        const std::size_t count = s == ParamScope::Volume ? preset.volumes.size() : preset.emitters.size();
+        const std::size_t count = objectCount(preset, s);
         if (std::size_t(index) >= count)
             return fail(cat("\"", address, "\": there are ", std::to_string(count), " ", scopeName(s), "s"));
         scope = s;
@@ -78,7 +114,8 @@ std::string paramAddress(const ParamRef& ref) {
     if (!ref.desc) return {};
     std::string out;
     if (ref.scope() != ParamScope::Global) {
-        out = ref.scope() == ParamScope::Volume ? "volume[" : "emitter[";
+        out = addressPrefix(ref.scope());
+        out += '[';
         out += std::to_string(ref.object);
         out += "].";
     }
@@ -97,6 +134,10 @@ void* paramObjectOf(Preset& preset, const ParamRef& ref) {
         case ParamScope::Emitter:
             return ref.object >= 0 && ref.object < int(preset.emitters.size())
                        ? &preset.emitters[std::size_t(ref.object)]
+                       : nullptr;
+        case ParamScope::CloudVolume:
+            return ref.object >= 0 && ref.object < int(preset.cloudVolumes.size())
+                       ? &preset.cloudVolumes[std::size_t(ref.object)]
                        : nullptr;
     }
     return nullptr;
@@ -314,6 +355,11 @@ int keyAllChanged(Preset& preset, const Preset& baseline, double timeHours) {
             if (baseline.emitters[b].id == preset.emitters[i].id)
                 for (const ParamDesc& p : paramTable(ParamScope::Emitter))
                     keyIfChanged({&p, int(i)}, {&p, int(b)});
+    for (std::size_t i = 0; i < preset.cloudVolumes.size(); ++i)
+        for (std::size_t b = 0; b < baseline.cloudVolumes.size(); ++b)
+            if (baseline.cloudVolumes[b].id == preset.cloudVolumes[i].id)
+                for (const ParamDesc& p : paramTable(ParamScope::CloudVolume))
+                    keyIfChanged({&p, int(i)}, {&p, int(b)});
     return count;
 }
 
@@ -374,13 +420,13 @@ int addEmitter(Preset& preset, EmitterKind kind, const glm::dvec3& position) {
 /// Appends a copy of (preset.*objects)[index] with a new unique id, " copy"
 /// after its name and moved by `offset`; false for a bad index.
 template <class Object>
-static bool appendCopy(Preset& preset, std::vector<Object> Preset::*objects, bool volume, int index,
+static bool appendCopy(Preset& preset, std::vector<Object> Preset::*objects, ParamScope scope, int index,
                        const glm::dvec3& offset, std::string& oldId, std::string& newId) {
     std::vector<Object>& list = preset.*objects;
     if (index < 0 || index >= int(list.size())) return false;
     Object copy = list[std::size_t(index)];
     oldId = copy.id;
-    copy.id = newId = uniqueObjectId(preset, volume, oldId);
+    copy.id = newId = uniqueObjectId(preset, scope, oldId);
     copy.name += " copy";
     copy.position += offset;
     list.push_back(std::move(copy));
@@ -389,11 +435,20 @@ static bool appendCopy(Preset& preset, std::vector<Object> Preset::*objects, boo
 
 int duplicateObject(Preset& preset, ParamScope scope, int index, const glm::dvec3& offset) {
     std::string oldId, newId;
-    const bool copied = scope == ParamScope::Volume
-                            ? appendCopy(preset, &Preset::volumes, true, index, offset, oldId, newId)
-                        : scope == ParamScope::Emitter
-                            ? appendCopy(preset, &Preset::emitters, false, index, offset, oldId, newId)
-                            : false;
+    bool copied = false;
+    switch (scope) {
+        case ParamScope::Volume:
+            copied = appendCopy(preset, &Preset::volumes, scope, index, offset, oldId, newId);
+            break;
+        case ParamScope::Emitter:
+            copied = appendCopy(preset, &Preset::emitters, scope, index, offset, oldId, newId);
+            break;
+        case ParamScope::CloudVolume:
+            copied = appendCopy(preset, &Preset::cloudVolumes, scope, index, offset, oldId, newId);
+            break;
+        case ParamScope::Global:
+            break;
+    }
     if (!copied) return -1;
     const std::size_t trackCount = preset.tracks.size();
     for (std::size_t i = 0; i < trackCount; ++i) {
@@ -404,7 +459,7 @@ int duplicateObject(Preset& preset, ParamScope scope, int index, const glm::dvec
             for (TrackKey& k : copy.keys) k.value += offset;
         preset.tracks.push_back(std::move(copy));
     }
-    return scope == ParamScope::Volume ? int(preset.volumes.size()) - 1 : int(preset.emitters.size()) - 1;
+    return int(objectCount(preset, scope)) - 1;
 }
 
 bool deleteObject(Preset& preset, ParamScope scope, int index) {
@@ -413,6 +468,8 @@ bool deleteObject(Preset& preset, ParamScope scope, int index) {
         return removeObject(preset, scope, std::string(preset.volumes[std::size_t(index)].id));
     if (scope == ParamScope::Emitter && index >= 0 && index < int(preset.emitters.size()))
         return removeObject(preset, scope, std::string(preset.emitters[std::size_t(index)].id));
+    if (scope == ParamScope::CloudVolume && index >= 0 && index < int(preset.cloudVolumes.size()))
+        return removeObject(preset, scope, std::string(preset.cloudVolumes[std::size_t(index)].id));
     return false;
 }
 
@@ -423,6 +480,10 @@ bool renameObject(Preset& preset, ParamScope scope, int index, const std::string
     }
     if (scope == ParamScope::Emitter && index >= 0 && index < int(preset.emitters.size())) {
         preset.emitters[std::size_t(index)].name = name;
+        return true;
+    }
+    if (scope == ParamScope::CloudVolume && index >= 0 && index < int(preset.cloudVolumes.size())) {
+        preset.cloudVolumes[std::size_t(index)].name = name;
         return true;
     }
     return false;

@@ -21,7 +21,8 @@ namespace aerial::editor {
 /// One parameter of one object of a preset.
 struct ParamRef {
     const ParamDesc* desc = nullptr;
-    /// Index into preset.volumes / preset.emitters; -1 for globals.
+    /// Index into preset.volumes / preset.emitters / preset.cloudVolumes;
+    /// -1 for globals.
     int object = -1;
 
     ParamScope scope() const { return desc ? desc->scope : ParamScope::Global; }
@@ -29,13 +30,20 @@ struct ParamRef {
 };
 
 /// "fog.density_per_m" (global), "volume[2].density_per_m",
-/// "emitter[0].intensity_per_m". nullopt with `error` set when the address
+/// "emitter[0].intensity_per_m", "cloud_volume[1].coverage". nullopt with `error` set when the address
 /// or the object index is unknown.
 std::optional<ParamRef> parseParamAddress(const Preset& preset, std::string_view address, std::string* error);
 /// The inverse of parseParamAddress.
 std::string paramAddress(const ParamRef& ref);
 
-/// The object a parameter lives in (Environment, FogVolume or Emitter);
+/// How many objects of a scope the preset holds (0 for Global).
+std::size_t objectCount(const Preset& preset, ParamScope scope);
+/// The address prefix of a scope: "volume", "emitter", "cloud_volume"; ""
+/// for Global.
+std::string_view addressPrefix(ParamScope scope);
+
+/// The object a parameter lives in (Environment, FogVolume, Emitter or
+/// CloudVolume);
 /// null when the index is out of range.
 void* paramObjectOf(Preset& preset, const ParamRef& ref);
 const void* paramObjectOf(const Preset& preset, const ParamRef& ref);
@@ -79,7 +87,7 @@ bool removeKey(Preset& preset, const TrackTarget& target, int index);
 /// kMinKeyGap away) and into [0, 24 - kMinKeyGap]. Returns the key's time.
 double moveKey(Track& track, int index, double timeHours);
 
-/// Every animatable parameter (globals, volumes, emitters) whose value
+/// Every animatable parameter (globals, volumes, emitters, cloud volumes) whose value
 /// shown at `timeHours` differs from `baseline`'s (matched by object id) gets
 /// a key there. Returns how many keys were set.
 int keyAllChanged(Preset& preset, const Preset& baseline, double timeHours);
@@ -110,10 +118,10 @@ inline constexpr double kNewEmitterAttenuationPerM2 = 0.05;
 int addVolume(Preset& preset, FogVolumeShape shape, const glm::dvec3& position);
 /// Adds an emitter (point or lightning) with artist-sane values; returns its index.
 int addEmitter(Preset& preset, EmitterKind kind, const glm::dvec3& position);
-/// Duplicates a volume or emitter (new id, " copy" name, tracks copied,
+/// Duplicates a volume, emitter or cloud volume (new id, " copy" name, tracks copied,
 /// offset by `offset`); returns the new index or -1.
 int duplicateObject(Preset& preset, ParamScope scope, int index, const glm::dvec3& offset);
-/// Removes a volume or emitter and its tracks.
+/// Removes a volume, emitter or cloud volume and its tracks.
 bool deleteObject(Preset& preset, ParamScope scope, int index);
 /// Renames (the shown name, not the id).
 bool renameObject(Preset& preset, ParamScope scope, int index, const std::string& name);

@@ -75,7 +75,7 @@ private:
 struct Binding {
     const ParamDesc* desc = nullptr;
     ParamScope scope = ParamScope::Global;
-    std::size_t object = 0;  // index into volumes / emitters
+    std::size_t object = 0;  // index into volumes / emitters / cloud volumes
     CompiledTrack track;
 };
 
@@ -122,6 +122,9 @@ struct CompiledPreset::Impl {
             } else if (b.scope == ParamScope::Emitter) {
                 b.object = indexOf(preset.emitters, track.target.objectId);
                 if (b.object >= preset.emitters.size()) continue;
+            } else if (b.scope == ParamScope::CloudVolume) {
+                b.object = indexOf(preset.cloudVolumes, track.target.objectId);
+                if (b.object >= preset.cloudVolumes.size()) continue;
             }
             b.track = compileTrack(track, desc->components());
             if (tableDependsOn(*desc)) useTable = false;
@@ -156,12 +159,25 @@ void CompiledPreset::evaluate(double timeHours, PresetState& state) const {
     state.volumes = preset.volumes;
     state.emitters = preset.emitters;
     state.emitterFlash.resize(preset.emitters.size());
+    state.cloudVolumes = preset.cloudVolumes;
 
     // 2. Tracks, written through their pre-bound accessors, clamped to range.
     for (const Binding& b : impl.bindings) {
-        void* object = b.scope == ParamScope::Global   ? static_cast<void*>(&state.environment)
-                       : b.scope == ParamScope::Volume ? static_cast<void*>(&state.volumes[b.object])
-                                                       : static_cast<void*>(&state.emitters[b.object]);
+        void* object = nullptr;
+        switch (b.scope) {
+            case ParamScope::Global:
+                object = &state.environment;
+                break;
+            case ParamScope::Volume:
+                object = &state.volumes[b.object];
+                break;
+            case ParamScope::Emitter:
+                object = &state.emitters[b.object];
+                break;
+            case ParamScope::CloudVolume:
+                object = &state.cloudVolumes[b.object];
+                break;
+        }
         const glm::dvec3 v = evaluateTrack(b.track, t);
         const ParamDesc& d = *b.desc;
         if (d.type == ParamType::Scalar)
@@ -209,7 +225,8 @@ PresetState evaluate(const Preset& preset, double timeHours) {
 }
 
 CloudField prepareClouds(const PresetState& state) {
-    return prepareClouds(state.environment.clouds, {}, state.timeHours, state.environment.atmosphere.planetRadius);
+    return prepareClouds(state.environment.clouds, state.cloudVolumes, state.timeHours,
+                         state.environment.atmosphere.planetRadius);
 }
 
 FogSceneDesc fogSceneDesc(const PresetState& state, const SkyTable& sunSky, const SkyTable& moonSky) {

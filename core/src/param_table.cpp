@@ -15,6 +15,7 @@ using sv = std::string_view;
 Environment& env(void* o) { return *static_cast<Environment*>(o); }
 FogVolume& vol(void* o) { return *static_cast<FogVolume*>(o); }
 Emitter& emi(void* o) { return *static_cast<Emitter*>(o); }
+CloudVolume& cvol(void* o) { return *static_cast<CloudVolume*>(o); }
 
 constexpr std::array<sv, 3> kColourModeNames = {"sky", "tinted", "custom"};
 constexpr std::array<sv, 2> kShapeNames = {"box", "ellipsoid"};
@@ -146,9 +147,27 @@ std::vector<ParamDesc> identityParams(ParamScope scope, sv idDoc) {
                 "Name shown to the artist. Default empty.")};
 }
 
+/// The orientation every placed shape (fog volume, cloud volume) carries.
+ParamDesc rotationParam(ParamScope scope, glm::dquat* (*access)(void*)) {
+    ParamDesc p;
+    p.scope = scope;
+    p.type = ParamType::Quaternion;
+    p.path = "rotation_xyzw";
+    p.label = "Rotation";
+    p.doc =
+        "Orientation, world from object, unit quaternion [x, y, z, w]. "
+        "Default identity [0, 0, 0, 1].";
+    p.minValue = p.uiMin = -1.0;
+    p.maxValue = p.uiMax = 1.0;
+    p.defaultValue[3] = 1.0;
+    p.quat = access;
+    return p;
+}
+
 constexpr ParamScope G = ParamScope::Global;
 constexpr ParamScope V = ParamScope::Volume;
 constexpr ParamScope E = ParamScope::Emitter;
+constexpr ParamScope C = ParamScope::CloudVolume;
 constexpr double kTopOfAtmosphere = 60000.0;  // Rt - Rg with the default radii [m]
 
 const std::vector<ParamDesc>& globalTable() {
@@ -390,19 +409,7 @@ const std::vector<ParamDesc>& volumeTable() {
                          glm::dvec3(0.0), false, true, [](void* o) { return &vol(o).position; },
                          "Centre [m], world space (Y up, north -Z), -1e7..1e7. Default 0."),
                  });
-        ParamDesc rotation;
-        rotation.scope = V;
-        rotation.type = ParamType::Quaternion;
-        rotation.path = "rotation_xyzw";
-        rotation.label = "Rotation";
-        rotation.doc =
-            "Orientation, world from object, unit quaternion [x, y, z, w]. "
-            "Default identity [0, 0, 0, 1].";
-        rotation.minValue = rotation.uiMin = -1.0;
-        rotation.maxValue = rotation.uiMax = 1.0;
-        rotation.defaultValue[3] = 1.0;
-        rotation.quat = [](void* o) { return &vol(o).rotation; };
-        t.push_back(rotation);
+        t.push_back(rotationParam(V, [](void* o) { return &vol(o).rotation; }));
         t.push_back(triple(
             V, ParamType::Vec3, "half_extents_m", "Half extents", "m", {1e-3, 1e7, 0.1, 1000},
             glm::dvec3(10.0), false, true, [](void* o) { return &vol(o).halfExtents; },
@@ -499,6 +506,43 @@ const std::vector<ParamDesc>& emitterTable() {
     return table;
 }
 
+const std::vector<ParamDesc>& cloudVolumeTable() {
+    static const std::vector<ParamDesc> table = [] {
+        std::vector<ParamDesc> t = identityParams<CloudVolume>(
+            C,
+            "Stable identifier (1..64 of A-Z a-z 0-9 _ - .), unique among cloud volumes; "
+            "timeline tracks refer to it. Required.");
+        t.push_back(enumeration(
+            C, "shape", "Shape", kShapeNames, int(FogVolumeShape::Ellipsoid),
+            [](const void* o) { return std::int64_t(static_cast<const CloudVolume*>(o)->shape); },
+            [](void* o, std::int64_t v) { cvol(o).shape = FogVolumeShape(v); },
+            "box (unit cube [-1,1]^3) or ellipsoid (unit sphere) in object space. Default ellipsoid."));
+        t.push_back(triple(
+            C, ParamType::Vec3, "position_m", "Position", "m", {-1e7, 1e7, -50000, 50000}, {0.0, 2500.0, 0.0},
+            false, true, [](void* o) { return &cvol(o).position; },
+            "Centre [m], world space (Y up, north -Z), -1e7..1e7; the layer's height is above the "
+            "ground at y = 0. Default [0, 2500, 0]."));
+        t.push_back(rotationParam(C, [](void* o) { return &cvol(o).rotation; }));
+        t.push_back(triple(
+            C, ParamType::Vec3, "half_extents_m", "Half extents", "m", {1, 1e7, 100, 50000},
+            {4000.0, 2000.0, 4000.0}, false, true, [](void* o) { return &cvol(o).halfExtents; },
+            "Half extents along the object axes [m], 1..1e7. Default [4000, 2000, 4000] (a storm "
+            "cell 8 km across)."));
+        t.push_back(scalar(
+            C, "coverage", "Coverage", "", {0, 1, 0, 1}, 1.0, false, true,
+            [](void* o) { return &cvol(o).coverage; },
+            "Cloud coverage inside, 0..1, replacing the layer's (clouds.coverage): 1 a storm cell, "
+            "0 a clear hole. Default 1."));
+        t.push_back(scalar(
+            C, "edge_softness", "Edge softness", "", {0, 1, 0, 1}, 0.3, false, true,
+            [](void* o) { return &cvol(o).edgeSoftness; },
+            "Outer fraction of the shape (in object-space radius) over which the coverage blends "
+            "smoothly back to the layer's, 0..1 (0 a hard edge). Default 0.3."));
+        return t;
+    }();
+    return table;
+}
+
 }  // namespace
 
 int ParamDesc::componentCount(ParamType type) {
@@ -528,6 +572,8 @@ std::span<const ParamDesc> paramTable(ParamScope scope) {
             return volumeTable();
         case ParamScope::Emitter:
             return emitterTable();
+        case ParamScope::CloudVolume:
+            return cloudVolumeTable();
     }
     return {};
 }
@@ -546,6 +592,8 @@ std::string_view scopeName(ParamScope scope) {
             return "volume";
         case ParamScope::Emitter:
             return "emitter";
+        case ParamScope::CloudVolume:
+            return "cloud volume";
     }
     return "";
 }

@@ -27,6 +27,10 @@ bool presetsIdentical(const Preset& constA, const Preset& constB) {
                 readParam(p, *static_cast<Emitter*>(x), u);
                 readParam(p, *static_cast<Emitter*>(y), v);
                 break;
+            case ParamScope::CloudVolume:
+                readParam(p, *static_cast<CloudVolume*>(x), u);
+                readParam(p, *static_cast<CloudVolume*>(y), v);
+                break;
         }
         return std::memcmp(u, v, sizeof u) == 0;
     };
@@ -34,7 +38,7 @@ bool presetsIdentical(const Preset& constA, const Preset& constB) {
     for (const ParamDesc& p : paramTable(ParamScope::Global))
         if (!same(p, &a.environment, &b.environment)) return false;
     if (a.volumes.size() != b.volumes.size() || a.emitters.size() != b.emitters.size() ||
-        a.tracks.size() != b.tracks.size())
+        a.cloudVolumes.size() != b.cloudVolumes.size() || a.tracks.size() != b.tracks.size())
         return false;
     for (std::size_t i = 0; i < a.volumes.size(); ++i)
         for (const ParamDesc& p : paramTable(ParamScope::Volume))
@@ -42,6 +46,9 @@ bool presetsIdentical(const Preset& constA, const Preset& constB) {
     for (std::size_t i = 0; i < a.emitters.size(); ++i)
         for (const ParamDesc& p : paramTable(ParamScope::Emitter))
             if (!same(p, &a.emitters[i], &b.emitters[i])) return false;
+    for (std::size_t i = 0; i < a.cloudVolumes.size(); ++i)
+        for (const ParamDesc& p : paramTable(ParamScope::CloudVolume))
+            if (!same(p, &a.cloudVolumes[i], &b.cloudVolumes[i])) return false;
     for (std::size_t i = 0; i < a.tracks.size(); ++i) {
         const Track& s = a.tracks[i];
         const Track& t = b.tracks[i];

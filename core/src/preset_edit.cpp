@@ -1,6 +1,6 @@
 // preset_edit.cpp — editing helpers on a Preset (aerial/preset.hpp):
-// finding a track, renaming and removing volumes and emitters together with
-// the tracks that target them.
+// finding a track, renaming and removing volumes, emitters and cloud volumes
+// together with the tracks that target them.
 #include "preset_validate.hpp"
 
 #include <aerial/preset.hpp>
@@ -56,6 +56,8 @@ bool changeObjectId(Preset& preset, ParamScope scope, const std::string& oldId, 
             return changeId(preset.volumes, preset.tracks, scope, oldId, newId);
         case ParamScope::Emitter:
             return changeId(preset.emitters, preset.tracks, scope, oldId, newId);
+        case ParamScope::CloudVolume:
+            return changeId(preset.cloudVolumes, preset.tracks, scope, oldId, newId);
         case ParamScope::Global:
             return false;
     }
@@ -68,6 +70,8 @@ bool removeObject(Preset& preset, ParamScope scope, const std::string& id) {
             return removeById(preset.volumes, preset.tracks, scope, id);
         case ParamScope::Emitter:
             return removeById(preset.emitters, preset.tracks, scope, id);
+        case ParamScope::CloudVolume:
+            return removeById(preset.cloudVolumes, preset.tracks, scope, id);
         case ParamScope::Global:
             return false;
     }

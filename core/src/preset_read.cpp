@@ -16,6 +16,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <iterator>
 #include <set>
 
 namespace aerial {
@@ -333,6 +334,9 @@ public:
             return;
         if (scope == ParamScope::Emitter && !withinLimit(node, pointer, limits::kMaxEmitters, "emitters"))
             return;
+        if (scope == ParamScope::CloudVolume &&
+            !withinLimit(node, pointer, limits::kMaxCloudVolumes, "cloud volumes"))
+            return;
         out.reserve(nodes_[std::size_t(node)].childCount);
         std::size_t i = 0;
         for (std::int32_t c = nodes_[std::size_t(node)].firstChild; c >= 0;
@@ -345,21 +349,24 @@ public:
 
     void readTrack(std::int32_t node, const std::string& pointer, Track& track) {
         if (!expectKind(node, pointer, JNode::Object)) return;
-        const std::int32_t volume = member(node, "volume");
-        const std::int32_t emitter = member(node, "emitter");
-        const std::int32_t param = member(node, "param");
-        if (volume >= 0 && emitter >= 0)
-            error(emitter, pointerJoin(pointer, "emitter"),
-                  "a track targets a volume or an emitter, not both");
-        if (volume >= 0) {
-            track.target.scope = ParamScope::Volume;
-            if (expectKind(volume, pointerJoin(pointer, "volume"), JNode::String))
-                track.target.objectId = nodes_[std::size_t(volume)].text;
-        } else if (emitter >= 0) {
-            track.target.scope = ParamScope::Emitter;
-            if (expectKind(emitter, pointerJoin(pointer, "emitter"), JNode::String))
-                track.target.objectId = nodes_[std::size_t(emitter)].text;
+        // The object key ("volume", "emitter", "cloud_volume") names the
+        // scope; none is a global parameter's track.
+        bool targeted = false;
+        for (const ParamScope scope : kObjectScopes) {
+            const sv key = trackObjectKey(scope);
+            const std::int32_t object = member(node, key);
+            if (object < 0) continue;
+            const std::string at = pointerJoin(pointer, key);
+            if (targeted) {
+                error(object, at, "a track targets one volume, emitter or cloud volume, not several");
+                continue;
+            }
+            targeted = true;
+            track.target.scope = scope;
+            if (expectKind(object, at, JNode::String))
+                track.target.objectId = nodes_[std::size_t(object)].text;
         }
+        const std::int32_t param = member(node, "param");
         if (param < 0)
             error(node, pointerJoin(pointer, "param"), "missing required field \"param\"");
         else if (expectKind(param, pointerJoin(pointer, "param"), JNode::String))
@@ -416,8 +423,9 @@ public:
         for (std::int32_t m = nodes_[std::size_t(node)].firstChild; m >= 0;
              m = nodes_[std::size_t(m)].nextSibling) {
             const std::string& name = nodes_[std::size_t(m)].key;
-            if (name != "volume" && name != "emitter" && name != "param" && name != "interpolation" &&
-                name != "keys")
+            const bool objectKey = std::any_of(std::begin(kObjectScopes), std::end(kObjectScopes),
+                                               [&](ParamScope s) { return trackObjectKey(s) == name; });
+            if (!objectKey && name != "param" && name != "interpolation" && name != "keys")
                 warnUnknown(m, pointerJoin(pointer, name));
         }
     }
@@ -459,6 +467,8 @@ public:
                 readObjectArray(c, ParamScope::Volume, at, preset.volumes);
             } else if (n.key == "emitters") {
                 readObjectArray(c, ParamScope::Emitter, at, preset.emitters);
+            } else if (n.key == "cloud_volumes") {
+                readObjectArray(c, ParamScope::CloudVolume, at, preset.cloudVolumes);
             } else if (n.key == "tracks") {
                 if (!expectKind(c, at, JNode::Array) || !withinLimit(c, at, limits::kMaxTracks, "tracks"))
                     continue;

@@ -1,6 +1,7 @@
 // preset_schema.cpp — presetJsonSchema: the JSON Schema (draft 2020-12) of
 // the preset format, generated from the parameter table, with the caps of
-// aerial/limits.hpp as maxItems (volumes, emitters, tracks, keys per track)
+// aerial/limits.hpp as maxItems (volumes, emitters, cloud volumes, tracks,
+// keys per track)
 // and maxLength (ids, names, descriptions). presets/aerial-preset.schema.json
 // is its output: scripts/update_schema.sh rewrites it, test_preset checks
 // that they agree.
@@ -121,7 +122,8 @@ ojson objectSchema(ParamScope scope) {
 // widened to 2 once an animatable Vec2 exists.
 void keyArrayLengths(int& fewest, int& most) {
     fewest = most = 3;
-    for (ParamScope scope : {ParamScope::Global, ParamScope::Volume, ParamScope::Emitter}) {
+    for (ParamScope scope :
+         {ParamScope::Global, ParamScope::Volume, ParamScope::Emitter, ParamScope::CloudVolume}) {
         for (const ParamDesc& p : paramTable(scope)) {
             if (!p.animatable || p.type == ParamType::Scalar) continue;
             fewest = std::min(fewest, p.components());
@@ -175,6 +177,7 @@ std::string presetJsonSchema() {
     }
     props["volumes"] = arraySchema("#/$defs/volume", limits::kMaxVolumes);
     props["emitters"] = arraySchema("#/$defs/emitter", limits::kMaxEmitters);
+    props["cloud_volumes"] = arraySchema("#/$defs/cloud_volume", limits::kMaxCloudVolumes);
     props["tracks"] = arraySchema("#/$defs/track", limits::kMaxTracks);
     root["properties"] = props;
     root["required"] = {"version"};
@@ -183,6 +186,7 @@ std::string presetJsonSchema() {
     ojson defs = ojson::object();
     defs["volume"] = objectSchema(ParamScope::Volume);
     defs["emitter"] = objectSchema(ParamScope::Emitter);
+    defs["cloud_volume"] = objectSchema(ParamScope::CloudVolume);
     int fewest = 3, most = 3;
     keyArrayLengths(fewest, most);
     ojson key;
@@ -220,7 +224,8 @@ std::string presetJsonSchema() {
     };
     defs["track"] = {{"oneOf",
                       {trackVariant(nullptr, ParamScope::Global), trackVariant("volume", ParamScope::Volume),
-                       trackVariant("emitter", ParamScope::Emitter)}}};
+                       trackVariant("emitter", ParamScope::Emitter),
+                       trackVariant("cloud_volume", ParamScope::CloudVolume)}}};
     root["$defs"] = defs;
     return root.dump(2) + "\n";
 }

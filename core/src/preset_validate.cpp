@@ -32,6 +32,20 @@ bool detail::validId(sv id) {
     return true;
 }
 
+sv detail::trackObjectKey(ParamScope scope) {
+    switch (scope) {
+        case ParamScope::Global:
+            return "";
+        case ParamScope::Volume:
+            return "volume";
+        case ParamScope::Emitter:
+            return "emitter";
+        case ParamScope::CloudVolume:
+            return "cloud_volume";
+    }
+    return "";
+}
+
 std::string detail::rangeText(const ParamDesc& p) {
     return formatDouble(p.minValue) + ".." + formatDouble(p.maxValue);
 }
@@ -185,6 +199,8 @@ void validateInto(const Preset& constPreset, Issues& issues) {
     checkText(preset.description, "/description", issues);
     checkCount(preset.volumes.size(), limits::kMaxVolumes, "/volumes", "volumes", issues);
     checkCount(preset.emitters.size(), limits::kMaxEmitters, "/emitters", "emitters", issues);
+    checkCount(preset.cloudVolumes.size(), limits::kMaxCloudVolumes, "/cloud_volumes", "cloud volumes",
+               issues);
     checkCount(preset.tracks.size(), limits::kMaxTracks, "/tracks", "tracks", issues);
     for (const ParamDesc& p : paramTable(ParamScope::Global))
         checkParam(p, &preset.environment, globalPointer(p.path), issues);
@@ -202,13 +218,14 @@ void validateInto(const Preset& constPreset, Issues& issues) {
                                                 formatDouble(exposure.maxEv100));
     checkObjects(preset.volumes, ParamScope::Volume, "volumes", issues);
     checkObjects(preset.emitters, ParamScope::Emitter, "emitters", issues);
+    checkObjects(preset.cloudVolumes, ParamScope::CloudVolume, "cloud_volumes", issues);
 
     for (std::size_t i = 0; i < preset.tracks.size(); ++i) {
         const Track& track = preset.tracks[i];
         const std::string at = pointerJoin("/tracks", i);
         const TrackTarget& target = track.target;
         const ParamDesc* p = findParam(target.scope, target.param);
-        const char* objectKey = target.scope == ParamScope::Volume ? "volume" : "emitter";
+        const sv objectKey = trackObjectKey(target.scope);
         if (!p) {
             issues.error(pointerJoin(at, "param"), "unknown " + std::string(scopeName(target.scope)) +
                                                        " parameter " + quoteString(target.param));
@@ -227,6 +244,12 @@ void validateInto(const Preset& constPreset, Issues& issues) {
             if (!found)
                 issues.error(pointerJoin(at, objectKey),
                              "no emitter with id " + quoteString(target.objectId));
+        } else if (target.scope == ParamScope::CloudVolume) {
+            const bool found = std::any_of(preset.cloudVolumes.begin(), preset.cloudVolumes.end(),
+                                           [&](const CloudVolume& v) { return v.id == target.objectId; });
+            if (!found)
+                issues.error(pointerJoin(at, objectKey),
+                             "no cloud volume with id " + quoteString(target.objectId));
         } else if (!target.objectId.empty()) {
             issues.error(at, "a global parameter's track has no object id");
         }

@@ -13,6 +13,14 @@ namespace aerial::detail {
 /// An object id: 1..limits::kMaxIdBytes characters of A-Z a-z 0-9 _ - .
 bool validId(std::string_view id);
 
+/// The key a track names its object by in a file: "volume", "emitter",
+/// "cloud_volume"; "" for globals.
+std::string_view trackObjectKey(ParamScope scope);
+
+/// The scopes of placed objects (those a track names by id), in file order.
+inline constexpr ParamScope kObjectScopes[] = {ParamScope::Volume, ParamScope::Emitter,
+                                               ParamScope::CloudVolume};
+
 /// A parameter's valid range as text, "min..max".
 std::string rangeText(const ParamDesc& p);
 

@@ -5,6 +5,7 @@
 // the atomic writer (aerial/detail/file_system.hpp).
 #include "json_text.hpp"
 #include "preset_issues.hpp"
+#include "preset_validate.hpp"
 
 #include <aerial/detail/file_system.hpp>
 #include <aerial/param_table.hpp>
@@ -180,7 +181,7 @@ public:
             out += '{';
             if (t.target.scope != ParamScope::Global) {
                 newline(3);
-                key(t.target.scope == ParamScope::Volume ? "volume" : "emitter");
+                key(trackObjectKey(t.target.scope));
                 out += quoteString(t.target.objectId);
                 out += ',';
             }
@@ -238,6 +239,7 @@ std::string presetToJson(const Preset& constPreset) {
     w.globals(preset.environment);
     w.objectArray("volumes", preset.volumes, ParamScope::Volume);
     w.objectArray("emitters", preset.emitters, ParamScope::Emitter);
+    w.objectArray("cloud_volumes", preset.cloudVolumes, ParamScope::CloudVolume);
     w.tracks(preset.tracks);
     w.out += "\n}\n";
     return std::move(w.out);

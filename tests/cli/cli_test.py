@@ -212,6 +212,10 @@ class Validate(unittest.TestCase):
         ("cloud_thickness_zero.json", "/clouds/thickness_m", 4, 29, "out of range: 0 is not in 10..20000 m"),
         ("cloud_negative_density.json", "/clouds/density_per_m", 3, 31, "out of range: -0.01 is not in 0..1 1/m"),
         ("cloud_wind_arity.json", "/clouds/wind_m_per_s", 3, 30, "expected an array of 2 numbers, got an array of 3"),
+        ("cloud_volume_zero_extent.json", "/cloud_volumes/0/half_extents_m/1", 5, 61,
+         "out of range: 0 is not in 1..1e+07 m"),
+        ("cloud_volume_unknown_target.json", "/tracks/1/cloud_volume", 6, 22, 'no cloud volume with id "nope"'),
+        ("cloud_volume_duplicate_ids.json", "/cloud_volumes/2/id", 6, 12, 'duplicate id "cell"'),
     ]
 
     def test_every_shipped_preset_is_valid(self):
@@ -469,6 +473,48 @@ class Clouds(unittest.TestCase):
         with open(os.path.join(clear, "manifest.json")) as f:
             self.assertNotIn("noise_fnv1a64", json.load(f)["clouds"])
 
+    def test_cloud_volumes_set_the_coverage_inside(self):
+        volumes = os.path.join(ROOT, "tests", "data", "cli", "clouds_volumes.json")
+        # The storm cell is keyed from x = 0 (06:00) to x = 24 km (18:00): at noon it is at x = 12 km.
+        points = [(12000, 2500, 0), (-20000, 2500, 10000), (0, 2500, 0), (12000 + 4000 * 0.85, 2500, 0)]
+        r = run_json(self, "clouds", volumes, "--time", "12:00", *["--at=%g,%g,%g" % p for p in points])
+        self.assertTrue(r["clouds_active"])
+        coverage = [p["coverage"] for p in r["points"]]
+        self.assertAlmostEqual(coverage[0], 1.0, delta=1e-12)  # inside the storm cell
+        self.assertEqual(coverage[1], 0.0)  # inside the clear hole
+        self.assertAlmostEqual(coverage[2], 0.3, delta=1e-12)  # outside both: the layer's
+        self.assertTrue(0.3 < coverage[3] < 1.0, coverage)  # in the storm's soft edge
+        # The layer without its volumes has the layer's coverage everywhere.
+        plain = run_json(self, "clouds", self.LAYER, "--time", "12:00", "--at=%g,%g,%g" % points[0])
+        self.assertAlmostEqual(plain["points"][0]["coverage"], 0.7)
+
+    def test_eval_and_bake_list_the_cloud_volumes(self):
+        volumes = os.path.join(ROOT, "tests", "data", "cli", "clouds_volumes.json")
+        with open(volumes) as f:
+            document = json.load(f)
+        r = run_json(self, "eval", volumes, "--time", "12:00")
+        self.assertEqual([v["id"] for v in r["cloud_volumes"]], ["storm", "hole"])
+        self.assertEqual(set(r["cloud_volumes"][0]),
+                         {"id", "name", "shape", "position_m", "rotation_xyzw", "half_extents_m", "coverage",
+                          "edge_softness"})
+        self.assertEqual(r["cloud_volumes"][0]["position_m"], [12000.0, 2500.0, 0.0])  # keyed
+        self.assertEqual(r["cloud_volumes"][1]["shape"], "box")
+        self.assertEqual(r["cloud_volumes"][1]["position_m"], document["cloud_volumes"][1]["position_m"])
+        # Every preset lists them, if only as an empty array.
+        self.assertEqual(run_json(self, "eval", self.LAYER, "--time", "12:00")["cloud_volumes"], [])
+        code, out, err = run("eval", volumes, "--time", "12:00")
+        self.assertEqual(code, 0, err)
+        self.assertIn('cloud volume storm "Storm cell"', out)
+        self.assertIn("edge_softness", out)
+        # The bake manifest reuses the same state.
+        bake = os.path.join(WORK, "bake_cloud_volumes")
+        code, _, err = run("bake", volumes, "--out", bake, "--step", "12h", "--size", "16x8", "--quiet")
+        self.assertEqual(code, 0, err)
+        with open(os.path.join(bake, "manifest.json")) as f:
+            manifest = json.load(f)
+        self.assertEqual(manifest["steps"][1]["time_h"], 12.0)
+        self.assertEqual(manifest["steps"][1]["cloud_volumes"], r["cloud_volumes"])
+
     def test_eval_shows_the_clouds_block(self):
         r = run_json(self, "eval", self.LAYER, "--time", "12:00")
         self.assertEqual(r["parameters"]["clouds"]["coverage"], 0.7)
@@ -530,7 +576,7 @@ class Bake(unittest.TestCase):
         # The manifest's parameters are exactly what `aerial eval` gives.
         noon = run_json(self, "eval", preset("hazy_sunset"), "--time", "12:00")
         step = manifest["steps"][2]
-        for key in ("parameters", "volumes", "emitters"):
+        for key in ("parameters", "volumes", "emitters", "cloud_volumes"):
             self.assertEqual(step[key], noon[key], key)
         self.assertEqual(step["sun"]["direction"], noon["sun"]["direction"])
 

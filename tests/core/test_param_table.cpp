@@ -15,12 +15,14 @@ using aerial::ParamDesc;
 using aerial::ParamScope;
 using aerial::ParamType;
 
-constexpr ParamScope kScopes[] = {ParamScope::Global, ParamScope::Volume, ParamScope::Emitter};
+constexpr ParamScope kScopes[] = {ParamScope::Global, ParamScope::Volume, ParamScope::Emitter,
+                                  ParamScope::CloudVolume};
 
 void defaultsOf(const ParamDesc& p, double out[4]) {
     aerial::Environment env;
     aerial::FogVolume volume;
     aerial::Emitter emitter;
+    aerial::CloudVolume cloudVolume;
     switch (p.scope) {
         case ParamScope::Global:
             aerial::readParam(p, env, out);
@@ -30,6 +32,9 @@ void defaultsOf(const ParamDesc& p, double out[4]) {
             break;
         case ParamScope::Emitter:
             aerial::readParam(p, emitter, out);
+            break;
+        case ParamScope::CloudVolume:
+            aerial::readParam(p, cloudVolume, out);
             break;
     }
 }
@@ -83,8 +88,9 @@ TEST(ParamTable, PathsAreUniqueAndFindable) {
 
 TEST(ParamTable, KeysCarryTheirUnits) {
     const std::map<std::string, std::string> suffix = {
-        {"m", "_m"}, {"1/m", "_per_m"},        {"1/m^2", "_per_m2"}, {"deg", "_deg"},
-        {"s", "_s"}, {"1/min", "_per_minute"}, {"h", "_h"}, {"m/s", "_m_per_s"}, {"1/s", "_per_s"}};
+        {"m", "_m"},     {"1/m", "_per_m"},   {"1/m^2", "_per_m2"},
+        {"deg", "_deg"}, {"s", "_s"},         {"1/min", "_per_minute"},
+        {"h", "_h"},     {"m/s", "_m_per_s"}, {"1/s", "_per_s"}};
     int checked = 0;
     for (ParamScope scope : kScopes) {
         for (const ParamDesc& p : aerial::paramTable(scope)) {
@@ -197,6 +203,35 @@ TEST(ParamTable, AccessorsReachTheNamedFields) {
     EXPECT_EQ(e.seed, 4294967295u);
     findParam(ParamScope::Emitter, "kind")->setInt(&e, 1);
     EXPECT_EQ(e.kind, aerial::EmitterKind::Lightning);
+
+    aerial::CloudVolume c;
+    EXPECT_EQ(findParam(ParamScope::CloudVolume, "position_m")->vec3(&c), &c.position);
+    EXPECT_EQ(findParam(ParamScope::CloudVolume, "half_extents_m")->vec3(&c), &c.halfExtents);
+    EXPECT_EQ(findParam(ParamScope::CloudVolume, "rotation_xyzw")->quat(&c), &c.rotation);
+    EXPECT_EQ(findParam(ParamScope::CloudVolume, "coverage")->scalar(&c), &c.coverage);
+    EXPECT_EQ(findParam(ParamScope::CloudVolume, "edge_softness")->scalar(&c), &c.edgeSoftness);
+    EXPECT_EQ(findParam(ParamScope::CloudVolume, "id")->string(&c), &c.id);
+    const ParamDesc* cloudShape = findParam(ParamScope::CloudVolume, "shape");
+    EXPECT_EQ(cloudShape->enumNames[std::size_t(cloudShape->getInt(&c))], "ellipsoid");
+    cloudShape->setInt(&c, 0);
+    EXPECT_EQ(c.shape, aerial::FogVolumeShape::Box);
+}
+
+TEST(ParamTable, CloudVolumeScope) {
+    EXPECT_EQ(aerial::scopeName(ParamScope::CloudVolume), "cloud volume");
+    for (const char* key : {"position_m", "half_extents_m", "coverage", "edge_softness"}) {
+        const ParamDesc* p = aerial::findParam(ParamScope::CloudVolume, key);
+        ASSERT_NE(p, nullptr) << key;
+        EXPECT_TRUE(p->animatable) << key;
+    }
+    EXPECT_TRUE(aerial::findParam(ParamScope::CloudVolume, "id")->required);
+    EXPECT_FALSE(aerial::findParam(ParamScope::CloudVolume, "shape")->animatable);
+    // A storm cell is at least a metre across: zero and negative extents are out of range.
+    EXPECT_EQ(aerial::findParam(ParamScope::CloudVolume, "half_extents_m")->minValue, 1.0);
+    const ParamDesc* coverage = aerial::findParam(ParamScope::CloudVolume, "coverage");
+    EXPECT_EQ(coverage->minValue, 0.0);
+    EXPECT_EQ(coverage->maxValue, 1.0);
+    EXPECT_EQ(aerial::TrackTarget::cloudVolume("storm", "coverage").scope, ParamScope::CloudVolume);
 }
 
 TEST(ParamTable, CoversEveryParameterTheIssueLists) {

@@ -4,6 +4,7 @@
 #include <aerial/atmosphere.hpp>
 #include <aerial/emitter.hpp>
 #include <aerial/evaluate.hpp>
+#include <aerial/limits.hpp>
 #include <aerial/param_table.hpp>
 #include <aerial/preset.hpp>
 #include <aerial/sun.hpp>
@@ -331,7 +332,12 @@ const Fixture kFixtures[] = {
     {"cloud_coverage_out_of_range.json", "/clouds/coverage", 3, 26, "out of range: 1.5 is not in 0..1"},
     {"cloud_thickness_zero.json", "/clouds/thickness_m", 4, 29, "out of range: 0 is not in 10..20000 m"},
     {"cloud_negative_density.json", "/clouds/density_per_m", 3, 31, "out of range: -0.01 is not in 0..1 1/m"},
-    {"cloud_wind_arity.json", "/clouds/wind_m_per_s", 3, 30, "expected an array of 2 numbers, got an array of 3"},
+    {"cloud_wind_arity.json", "/clouds/wind_m_per_s", 3, 30,
+     "expected an array of 2 numbers, got an array of 3"},
+    {"cloud_volume_zero_extent.json", "/cloud_volumes/0/half_extents_m/1", 5, 61,
+     "out of range: 0 is not in 1..1e+07 m"},
+    {"cloud_volume_unknown_target.json", "/tracks/1/cloud_volume", 6, 22, "no cloud volume with id \"nope\""},
+    {"cloud_volume_duplicate_ids.json", "/cloud_volumes/2/id", 6, 12, "duplicate id \"cell\""},
 };
 
 TEST(Preset, MalformedFilesGiveLocatedErrors) {
@@ -470,8 +476,9 @@ TEST(PresetSave, FailedWriteLeavesOldFileIntact) {
     ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &saved), 0);
 
     ASSERT_FALSE(r.ok());
-    EXPECT_EQ(r.errors[0].message.rfind("not saved: cannot write " + (dir.path() / ".scene.json.tmp-").string(), 0),
-              0u)
+    EXPECT_EQ(
+        r.errors[0].message.rfind("not saved: cannot write " + (dir.path() / ".scene.json.tmp-").string(), 0),
+        0u)
         << r.errors[0].toString();
     EXPECT_NE(r.errors[0].message.find(": File too large"), std::string::npos) << r.errors[0].toString();
     EXPECT_EQ(readFile(file), old);
@@ -709,6 +716,179 @@ TEST(Evaluate, ChangingAnIdRetargetsTracksAndRemovingDropsThem) {
     ASSERT_EQ(p.tracks.size(), 1u);
     EXPECT_EQ(p.tracks[0].target.objectId, "beta");
     EXPECT_TRUE(aerial::validatePreset(p).empty());
+}
+
+// ---------------------------------------------------------------------------
+// Cloud volumes
+
+// A layer of coverage 0.2, a storm cell (coverage 0.9) keyed to drift along
+// +X over the day and a clear hole (box, coverage 0) at a fixed place.
+aerial::Preset cloudVolumePreset() {
+    aerial::Preset p;
+    p.environment.clouds.coverage = 0.2;
+    aerial::CloudVolume storm;
+    storm.id = "storm";
+    storm.name = "Storm cell";
+    storm.position = glm::dvec3(0.1 + 0.2, 2500.0, -1.0 / 3.0);
+    storm.halfExtents = glm::dvec3(4000.0, 1500.0, 1e-3 + 4000.0);
+    storm.coverage = 0.9;
+    storm.edgeSoftness = 0.25;
+    aerial::CloudVolume hole;
+    hole.id = "hole";
+    hole.shape = aerial::FogVolumeShape::Box;
+    hole.position = glm::dvec3(-30000.0, 2500.0, 5000.0);
+    hole.rotation = glm::normalize(glm::dquat(0.9, 0.0, 0.3, 0.0));
+    hole.coverage = 0.0;
+    hole.edgeSoftness = 0.0;
+    p.cloudVolumes = {storm, hole};
+    aerial::Track move;
+    move.target = aerial::TrackTarget::cloudVolume("storm", "position_m");
+    move.interpolation = aerial::Interpolation::Linear;
+    move.keys = {{6.0, glm::dvec3(0.0, 2500.0, 0.0)}, {18.0, glm::dvec3(24000.0, 2500.0, 0.0)}};
+    aerial::Track grow;
+    grow.target = aerial::TrackTarget::cloudVolume("storm", "coverage");
+    grow.interpolation = aerial::Interpolation::Step;
+    grow.keys = {{0.0, glm::dvec3(0.9, 0.0, 0.0)}, {20.0, glm::dvec3(1.0 / 3.0, 0.0, 0.0)}};
+    p.tracks = {move, grow};
+    return p;
+}
+
+TEST(CloudVolumes, RoundTripBitExactWithTracks) {
+    const aerial::Preset p = cloudVolumePreset();
+    ASSERT_TRUE(aerial::validatePreset(p).empty()) << joinIssues(aerial::validatePreset(p));
+    const std::string text = aerial::presetToJson(p);
+    // Canonical place: after "emitters", before "tracks"; tracks name it by "cloud_volume".
+    const std::size_t emitters = text.find("\"emitters\"");
+    const std::size_t cloudVolumes = text.find("\"cloud_volumes\"");
+    const std::size_t tracks = text.find("\"tracks\"");
+    ASSERT_NE(cloudVolumes, std::string::npos) << text;
+    EXPECT_LT(emitters, cloudVolumes);
+    EXPECT_LT(cloudVolumes, tracks);
+    EXPECT_NE(text.find("\"cloud_volume\": \"storm\""), std::string::npos) << text;
+
+    const aerial::PresetLoadResult r = aerial::parsePreset(text, "clouds.json");
+    ASSERT_TRUE(r.ok()) << joinIssues(r.errors);
+    EXPECT_TRUE(r.warnings.empty()) << joinIssues(r.warnings);
+    ASSERT_EQ(r.preset->cloudVolumes.size(), 2u);
+    EXPECT_TRUE(aerial::presetsIdentical(p, *r.preset));
+    EXPECT_TRUE(sameBits(r.preset->cloudVolumes[0].position.x, 0.1 + 0.2));
+    EXPECT_TRUE(sameBits(r.preset->cloudVolumes[0].position.z, -1.0 / 3.0));
+    EXPECT_EQ(r.preset->cloudVolumes[1].shape, aerial::FogVolumeShape::Box);
+    EXPECT_EQ(r.preset->tracks[0].target, aerial::TrackTarget::cloudVolume("storm", "position_m"));
+    EXPECT_EQ(aerial::presetToJson(*r.preset), text);
+
+    // presetsIdentical sees one bit of a cloud volume.
+    aerial::Preset q = p;
+    q.cloudVolumes[1].edgeSoftness = std::nextafter(0.0, 1.0);
+    EXPECT_FALSE(aerial::presetsIdentical(p, q));
+    q = p;
+    q.cloudVolumes.pop_back();
+    EXPECT_FALSE(aerial::presetsIdentical(p, q));
+}
+
+TEST(CloudVolumes, MissingFieldsTakeTheStructDefaults) {
+    const aerial::PresetLoadResult r =
+        aerial::parsePreset(R"({"version": 1, "cloud_volumes": [{"id": "c"}]})");
+    ASSERT_TRUE(r.ok()) << joinIssues(r.errors);
+    const aerial::CloudVolume defaults;
+    const aerial::CloudVolume& c = r.preset->cloudVolumes.at(0);
+    EXPECT_EQ(c.shape, aerial::FogVolumeShape::Ellipsoid);
+    EXPECT_EQ(c.position, defaults.position);
+    EXPECT_EQ(c.halfExtents, defaults.halfExtents);
+    EXPECT_EQ(c.coverage, defaults.coverage);
+    EXPECT_EQ(c.edgeSoftness, defaults.edgeSoftness);
+    // Without cloud volumes the canonical text still lists the (empty) array.
+    EXPECT_NE(aerial::presetToJson(aerial::Preset{}).find("\"cloud_volumes\": []"), std::string::npos);
+}
+
+TEST(CloudVolumes, ValidationNamesTheField) {
+    auto has = [](const std::vector<aerial::PresetIssue>& issues, const char* pointer, const char* reason) {
+        return std::any_of(issues.begin(), issues.end(), [&](const aerial::PresetIssue& i) {
+            return i.pointer == pointer && i.message.find(reason) != std::string::npos;
+        });
+    };
+    aerial::Preset p = cloudVolumePreset();
+    p.cloudVolumes[1].id = "storm";
+    p.cloudVolumes[0].halfExtents.y = 0.0;
+    p.cloudVolumes[0].coverage = 1.5;
+    p.cloudVolumes[1].rotation = glm::dquat(2.0, 0.0, 0.0, 0.0);
+    p.tracks[1].target.objectId = "nope";
+    const auto issues = aerial::validatePreset(p);
+    EXPECT_TRUE(has(issues, "/cloud_volumes/1/id", "duplicate id \"storm\"")) << joinIssues(issues);
+    EXPECT_TRUE(has(issues, "/cloud_volumes/0/half_extents_m/1", "out of range: 0 is not in 1..1e+07 m"))
+        << joinIssues(issues);
+    EXPECT_TRUE(has(issues, "/cloud_volumes/0/coverage", "out of range: 1.5")) << joinIssues(issues);
+    EXPECT_TRUE(has(issues, "/cloud_volumes/1/rotation_xyzw", "unit quaternion")) << joinIssues(issues);
+    EXPECT_TRUE(has(issues, "/tracks/1/cloud_volume", "no cloud volume with id \"nope\""))
+        << joinIssues(issues);
+
+    // Over the cap: refused, naming the limit (in code and in a file).
+    aerial::Preset many;
+    for (std::size_t i = 0; i <= aerial::limits::kMaxCloudVolumes; ++i) {
+        aerial::CloudVolume c;
+        c.id = std::to_string(i);  // (not "c" + ...: GCC 12 warns falsely, -Wrestrict)
+        many.cloudVolumes.push_back(c);
+    }
+    EXPECT_TRUE(
+        has(aerial::validatePreset(many), "/cloud_volumes", "65 cloud volumes, over the limit of 64"));
+    const aerial::PresetLoadResult r = aerial::parsePreset(aerial::presetToJson(many), "many.json");
+    ASSERT_FALSE(r.ok());
+    EXPECT_TRUE(has(r.errors, "/cloud_volumes", "over the limit of 64")) << joinIssues(r.errors);
+    many.cloudVolumes.pop_back();
+    EXPECT_TRUE(aerial::validatePreset(many).empty());
+}
+
+TEST(CloudVolumes, ATrackNamesOneObject) {
+    const aerial::PresetLoadResult r = aerial::parsePreset(R"({"version": 1,
+  "volumes": [{"id": "a"}], "cloud_volumes": [{"id": "a"}],
+  "tracks": [{"volume": "a", "cloud_volume": "a", "param": "position_m", "keys": [{"time_h": 1, "value": [0, 0, 0]}]}]})");
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.errors[0].pointer, "/tracks/0/cloud_volume") << joinIssues(r.errors);
+    EXPECT_NE(r.errors[0].message.find("not several"), std::string::npos) << joinIssues(r.errors);
+}
+
+TEST(CloudVolumes, EvaluateMovesAKeyedVolumeAndPrepareCloudsUsesIt) {
+    const aerial::CompiledPreset compiled(cloudVolumePreset());
+    ASSERT_TRUE(compiled.issues().empty()) << joinIssues(compiled.issues());
+    const aerial::PresetState noon = compiled.evaluate(12.0);
+    ASSERT_EQ(noon.cloudVolumes.size(), 2u);
+    // Linear 0 -> 24000 m from 06:00 to 18:00: halfway at noon.
+    EXPECT_NEAR(noon.cloudVolumes[0].position.x, 12000.0, 1e-9);
+    EXPECT_EQ(noon.cloudVolumes[0].coverage, 0.9);
+    EXPECT_EQ(noon.cloudVolumes[1].position, compiled.preset().cloudVolumes[1].position);
+
+    const aerial::CloudField clouds = aerial::prepareClouds(noon);
+    ASSERT_EQ(clouds.volumes.size(), 2u);
+    // The storm's centre (weight 1 inside the soft edge) has its coverage;
+    // where it stood at 06:00 (now 12 km away, outside it) the layer's.
+    EXPECT_DOUBLE_EQ(aerial::cloudCoverageAt(clouds, {12000.0, 2500.0, 0.0}), 0.9);
+    EXPECT_DOUBLE_EQ(aerial::cloudCoverageAt(clouds, {0.0, 2500.0, 0.0}), 0.2);
+    // The hole clears its box; its hard edge (softness 0) is clear right up to it.
+    EXPECT_EQ(aerial::cloudCoverageAt(clouds, {-30000.0, 2500.0, 5000.0}), 0.0);
+    // Half-way through the storm's soft edge: between the two.
+    const double edge = aerial::cloudCoverageAt(clouds, {12000.0 + 4000.0 * (1.0 - 0.125), 2500.0, 0.0});
+    EXPECT_GT(edge, 0.2);
+    EXPECT_LT(edge, 0.9);
+
+    // Step-keyed coverage after 20:00.
+    const aerial::PresetState night = compiled.evaluate(21.0);
+    EXPECT_EQ(night.cloudVolumes[0].coverage, 1.0 / 3.0);
+    const aerial::CloudField later = aerial::prepareClouds(night);
+    const glm::dvec3 centre = night.cloudVolumes[0].position;
+    EXPECT_DOUBLE_EQ(aerial::cloudCoverageAt(later, centre), 1.0 / 3.0);
+}
+
+TEST(CloudVolumes, ChangingAnIdRetargetsTracksAndRemovingDropsThem) {
+    aerial::Preset p = cloudVolumePreset();
+    ASSERT_TRUE(aerial::changeObjectId(p, aerial::ParamScope::CloudVolume, "storm", "cell"));
+    EXPECT_EQ(p.cloudVolumes[0].id, "cell");
+    EXPECT_NE(aerial::findTrack(p, aerial::TrackTarget::cloudVolume("cell", "coverage")), nullptr);
+    EXPECT_FALSE(aerial::changeObjectId(p, aerial::ParamScope::CloudVolume, "cell", "hole"));
+    EXPECT_TRUE(aerial::validatePreset(p).empty()) << joinIssues(aerial::validatePreset(p));
+    ASSERT_TRUE(aerial::removeObject(p, aerial::ParamScope::CloudVolume, "cell"));
+    EXPECT_EQ(p.cloudVolumes.size(), 1u);
+    EXPECT_TRUE(p.tracks.empty());
+    EXPECT_FALSE(aerial::removeObject(p, aerial::ParamScope::CloudVolume, "cell"));
 }
 
 }  // namespace

@@ -240,5 +240,37 @@ TEST(PresetEdit, Objects) {
     EXPECT_TRUE(validatePreset(p).empty());
 }
 
+TEST(PresetEdit, CloudVolumesAreObjectsToo) {
+    // No inspector for them yet; the model already addresses, keys,
+    // duplicates, renames and deletes them like volumes.
+    Preset p;
+    CloudVolume storm;
+    storm.id = "storm";
+    p.cloudVolumes.push_back(storm);
+    const ParamRef coverage = ref(p, "cloud_volume[0].coverage");
+    EXPECT_EQ(coverage.scope(), ParamScope::CloudVolume);
+    EXPECT_EQ(paramAddress(coverage), "cloud_volume[0].coverage");
+    EXPECT_EQ(objectCount(p, ParamScope::CloudVolume), 1u);
+    std::string error;
+    EXPECT_FALSE(parseParamAddress(p, "cloud_volume[1].coverage", &error));
+    EXPECT_NE(error.find("there are 1 cloud volumes"), std::string::npos) << error;
+    ASSERT_TRUE(keyParam(p, coverage, 9.0));
+    EXPECT_EQ(trackTargetOf(p, coverage), TrackTarget::cloudVolume("storm", "coverage"));
+    const double half[4] = {0.5, 0, 0, 0};
+    setValueAt(p, coverage, half, 9.0);
+    double v[4];
+    readValueAt(p, coverage, 9.0, v);
+    EXPECT_EQ(v[0], 0.5);
+    EXPECT_EQ(duplicateObject(p, ParamScope::CloudVolume, 0, {1000, 0, 0}), 1);
+    EXPECT_EQ(p.cloudVolumes[1].id, "storm_2");
+    EXPECT_EQ(p.tracks.size(), 2u);
+    EXPECT_TRUE(renameObject(p, ParamScope::CloudVolume, 1, "Second cell"));
+    EXPECT_TRUE(validatePreset(p).empty());
+    EXPECT_TRUE(deleteObject(p, ParamScope::CloudVolume, 0));
+    EXPECT_EQ(p.cloudVolumes.size(), 1u);
+    EXPECT_EQ(p.tracks.size(), 1u);
+    EXPECT_EQ(p.tracks[0].target.objectId, "storm_2");
+}
+
 }  // namespace
 }  // namespace aerial::editor

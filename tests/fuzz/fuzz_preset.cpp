@@ -54,6 +54,11 @@ void checkState(const aerial::PresetState& s) {
     for (const aerial::Emitter& m : s.emitters)
         check(isFinite(m.position) && std::isfinite(m.intensity) && isFinite(m.colour) && m.intensity >= 0.0,
               "finite emitter");
+    for (const aerial::CloudVolume& c : s.cloudVolumes)
+        check(isFinite(c.position) && isFinite(c.halfExtents) && std::isfinite(c.coverage) &&
+                  std::isfinite(c.edgeSoftness) && c.coverage >= 0.0 && c.coverage <= 1.0 &&
+                  c.halfExtents.x >= 1.0 && c.halfExtents.y >= 1.0 && c.halfExtents.z >= 1.0,
+              "finite cloud volume, coverage in [0, 1], extents >= 1 m");
 }
 
 }  // namespace

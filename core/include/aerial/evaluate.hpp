@@ -69,6 +69,8 @@ struct PresetState {
     std::vector<Emitter> emitters;
     /// The flash multiplier applied to each emitter (1 for point emitters).
     std::vector<double> emitterFlash;
+    /// Cloud volumes with keyed values applied (prepareClouds passes them on).
+    std::vector<CloudVolume> cloudVolumes;
     LightState sunLight;
     LightState moonLight;
     /// T(viewer -> space) straight up, RGB, 0..1 (what dims the stars;
@@ -111,7 +113,8 @@ private:
 FogSceneDesc fogSceneDesc(const PresetState& state, const SkyTable& sunSky, const SkyTable& moonSky);
 
 /// The clouds of a state for CPU cloud queries (clouds.hpp): the evaluated
-/// cloud layer at the state's time (wind offset), the planet's radius.
+/// cloud layer at the state's time (wind offset), the evaluated cloud
+/// volumes, the planet's radius.
 /// Cheap once the seed's noise is cached.
 CloudField prepareClouds(const PresetState& state);
 

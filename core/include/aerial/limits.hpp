@@ -12,7 +12,7 @@
 // Where each cap is enforced:
 //   * preset files (loadPreset, parsePreset, validatePreset, savePreset):
 //     kMaxPresetFileBytes, kMaxJsonDepth, kMaxJsonValues, kMaxVolumes, kMaxEmitters,
-//     kMaxTracks, kMaxKeysPerTrack, kMaxStringBytes (name, description,
+//     kMaxCloudVolumes, kMaxTracks, kMaxKeysPerTrack, kMaxStringBytes (name, description,
 //     ids are 1..kMaxIdBytes), kMaxPresetIssues (more problems are counted
 //     in one last issue, not listed);
 //   * the sky solver (SkySolverDesc): kMaxSkyAzimuthCount,
@@ -54,6 +54,11 @@ inline constexpr std::size_t kMaxJsonValues = std::size_t(1) << 20;
 inline constexpr std::size_t kMaxVolumes = 1024;
 /// Emitters in one preset.
 inline constexpr std::size_t kMaxEmitters = 1024;
+/// Cloud volumes in one preset. Small on purpose: every sample of the GPU's
+/// cloud march tests each of them, so the renderer uploads at most this
+/// many (a fixed-size uniform array), and a preset with more is refused
+/// rather than drawn differently from the CPU queries.
+inline constexpr std::size_t kMaxCloudVolumes = 64;
 /// Timeline tracks in one preset.
 inline constexpr std::size_t kMaxTracks = 4096;
 /// Keys in one track (one a minute over the day is 1440).

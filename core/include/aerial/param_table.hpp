@@ -21,10 +21,11 @@
 //   const aerial::ParamDesc* d = aerial::findParam(aerial::ParamScope::Global, "fog.density_per_m");
 //
 // The object an accessor takes is, by scope: Global -> Environment,
-// Volume -> FogVolume, Emitter -> Emitter (passed as void*; the typed
-// helpers below check the scope).
+// Volume -> FogVolume, Emitter -> Emitter, CloudVolume -> CloudVolume
+// (passed as void*; the typed helpers below check the scope).
 #pragma once
 
+#include <aerial/clouds.hpp>
 #include <aerial/emitter.hpp>
 #include <aerial/fog_volume.hpp>
 #include <aerial/preset.hpp>
@@ -59,7 +60,8 @@ struct ParamDesc {
     ParamType type = ParamType::Scalar;
     /// Global: dotted path whose parts are the JSON object keys
     /// ("atmosphere.mie.scale_height_m"); the last part is the JSON key.
-    /// Volume/emitter: the JSON key in the object ("density_per_m").
+    /// Volume/emitter/cloud volume: the JSON key in the object
+    /// ("density_per_m").
     /// Also the track target's `param`.
     std::string_view path;
     /// Short name for the inspector ("Scale height").
@@ -125,7 +127,8 @@ std::span<const ParamDesc> paramTable(ParamScope scope);
 /// The parameter with this path in a scope, or null.
 const ParamDesc* findParam(ParamScope scope, std::string_view path);
 
-/// "global", "volume", "emitter".
+/// "global", "volume", "emitter", "cloud volume" (in messages: "unknown
+/// cloud volume parameter \"x\"").
 std::string_view scopeName(ParamScope scope);
 
 /// JSON spelling of enums (the same lists the table uses).
@@ -147,6 +150,11 @@ inline void* paramObject(const ParamDesc& p, Emitter& emitter) {
     assert(p.scope == ParamScope::Emitter);
     (void)p;
     return &emitter;
+}
+inline void* paramObject(const ParamDesc& p, CloudVolume& volume) {
+    assert(p.scope == ParamScope::CloudVolume);
+    (void)p;
+    return &volume;
 }
 
 /// A parameter's current value as up to four doubles (see defaultValue's

@@ -1,5 +1,6 @@
 // aerial/preset.hpp — a time-of-day preset: every parameter of the sky, the
-// fog, the volumes and the emitters, plus the timeline that animates them.
+// fog, the clouds, the volumes, the emitters and the cloud volumes, plus the
+// timeline that animates them.
 // Loading, validating and saving presets (JSON, "version": 1).
 //
 // Usage:
@@ -14,11 +15,11 @@
 // File format (../shared/DESIGN.md, "Presets"): a JSON object with
 // "version": 1, "name", "description", the global parameters grouped as
 // "location", "atmosphere" {"rayleigh", "mie", "ozone"}, "sun", "moon",
-// "fog", "exposure", "clouds", then "volumes" and "emitters" (arrays of objects with string "id"s)
-// and "tracks" (see timeline.hpp). Every key that carries a unit says it
-// (`scale_height_m`, `density_per_m`). The keys, ranges and defaults come
-// from the parameter table (param_table.hpp); the JSON Schema in
-// presets/aerial-preset.schema.json is generated from the same table.
+// "fog", "exposure", "clouds", then "volumes", "emitters" and "cloud_volumes"
+// (arrays of objects with string "id"s) and "tracks" (see timeline.hpp).
+// Every key that carries a unit says it (`scale_height_m`, `density_per_m`). The keys, ranges and defaults
+// come from the parameter table (param_table.hpp); the JSON Schema in presets/aerial-preset.schema.json is
+// generated from the same table.
 //
 // Errors never escape as exceptions and never crash: loading returns either
 // a complete preset or the list of errors, each naming the file, the JSON
@@ -26,14 +27,15 @@
 //
 // Untrusted files: every size a file can ask for is capped (aerial/limits.hpp:
 // 16 MiB per file, 64 levels of nesting, 1 Mi JSON values, 1024 volumes and
-// emitters, 4096 tracks and keys per track, 4096-byte strings); over a cap
-// is an error naming the field and the limit.
+// emitters, 64 cloud volumes, 4096 tracks and keys per track, 4096-byte
+// strings); over a cap is an error naming the field and the limit.
 //
 // Numbers (what the loader does with each kind of bad value):
 //   * rejected, an error: NaN and infinities (JSON has no literal for them; a
 //     number too large for a double is a "number overflow" error), any value
 //     outside its parameter's range (param_table.hpp) — so negative
-//     densities and zero or negative half-extents (>= 0.001 m) are errors —,
+//     densities and zero or negative half-extents (fog volumes >= 0.001 m,
+//     cloud volumes >= 1 m) are errors —,
 //     a zero quaternion and a zero gradient direction (no direction to
 //     normalise), Mie extinction below scattering;
 //   * repaired, a warning: a rotation quaternion or gradient direction that
@@ -120,6 +122,10 @@ struct Preset {
     std::vector<FogVolume> volumes;
     /// Emitters; ids unique among emitters.
     std::vector<Emitter> emitters;
+    /// Cloud volumes (clouds.hpp): each sets the cloud coverage inside it,
+    /// applied in order; ids unique among cloud volumes; at most
+    /// limits::kMaxCloudVolumes.
+    std::vector<CloudVolume> cloudVolumes;
     /// At most one track per target.
     std::vector<Track> tracks;
 };
@@ -164,13 +170,13 @@ struct SaveResult {
 Track* findTrack(Preset& preset, const TrackTarget& target);
 const Track* findTrack(const Preset& preset, const TrackTarget& target);
 
-/// Editing helper: gives a volume (scope Volume) or emitter (scope Emitter)
-/// a new id and retargets its tracks. Returns false and changes nothing when
+/// Editing helper: gives a volume (scope Volume), emitter (scope Emitter) or
+/// cloud volume (scope CloudVolume) a new id and retargets its tracks. Returns false and changes nothing when
 /// `oldId` is unknown or `newId` is malformed or taken.
 bool changeObjectId(Preset& preset, ParamScope scope, const std::string& oldId, const std::string& newId);
 
-/// Editing helper: removes a volume or emitter and the tracks that target
-/// it. Returns false when there is no such object.
+/// Editing helper: removes a volume, emitter or cloud volume and the tracks
+/// that target it. Returns false when there is no such object.
 bool removeObject(Preset& preset, ParamScope scope, const std::string& id);
 
 /// The built-in preset the editor opens on: Earth's atmosphere at 45 deg N

@@ -25,9 +25,10 @@
 //   * Colours interpolate per channel in scene-linear RGB; vectors (3 or
 //     2 components) per component.
 //   * Targets are stable: a global parameter by its path
-//     ("fog.density_per_m"), a volume's or emitter's parameter by the
-//     object's id and the parameter key, so renaming or reordering objects
-//     never breaks a track.
+//     ("fog.density_per_m"), a volume's, emitter's or cloud volume's
+//     parameter by the object's id and the parameter key (in a file:
+//     "volume", "emitter" or "cloud_volume": id, and "param"), so renaming
+//     or reordering objects never breaks a track.
 #pragma once
 
 #include <glm/vec3.hpp>
@@ -39,9 +40,10 @@ namespace aerial {
 
 /// Which struct a parameter lives in.
 enum class ParamScope {
-    Global,   ///< Environment (location, atmosphere, sun, moon, fog)
-    Volume,   ///< FogVolume
-    Emitter,  ///< Emitter
+    Global,       ///< Environment (location, atmosphere, sun, moon, fog)
+    Volume,       ///< FogVolume
+    Emitter,      ///< Emitter
+    CloudVolume,  ///< CloudVolume (clouds.hpp)
 };
 
 enum class Interpolation { Step, Linear, Smooth };
@@ -49,11 +51,11 @@ enum class Interpolation { Step, Linear, Smooth };
 /// What a track animates.
 struct TrackTarget {
     ParamScope scope = ParamScope::Global;
-    /// The volume's or emitter's id; empty for globals.
+    /// The volume's, emitter's or cloud volume's id; empty for globals.
     std::string objectId;
     /// Global: the parameter path ("fog.density_per_m",
-    /// "atmosphere.mie.scattering_per_m"); volume/emitter: the parameter
-    /// key ("density_per_m").
+    /// "atmosphere.mie.scattering_per_m"); volume/emitter/cloud volume: the
+    /// parameter key ("density_per_m").
     std::string param;
 
     static TrackTarget global(std::string path) { return {ParamScope::Global, {}, std::move(path)}; }
@@ -62,6 +64,9 @@ struct TrackTarget {
     }
     static TrackTarget emitter(std::string id, std::string key) {
         return {ParamScope::Emitter, std::move(id), std::move(key)};
+    }
+    static TrackTarget cloudVolume(std::string id, std::string key) {
+        return {ParamScope::CloudVolume, std::move(id), std::move(key)};
     }
     bool operator==(const TrackTarget&) const = default;
 };
