@@ -37,7 +37,11 @@
 //     atmosphere and cloud rendering in Frostbite", section 5.5.2): N =
 //     kOctaves = 3 octaves, scattering a^i, extinction b^i, phase
 //     anisotropy c^i with a = 0.5, b = 0.5, c = 0.5 (a <= b keeps it
-//     energy-conserving).
+//     energy-conserving); and, for the light deep in a thick cloud that
+//     the octaves' Beer-Lambert all but loses, the two-stream diffusion
+//     transmittance (1 - e^-tau) / (1 + 3/4 tau (1 - 0.85)) (Bohren 1987,
+//     "Multiple scattering of light and some of its observable
+//     consequences"), isotropic: cloud bases stay grey, not black.
 //   Phase P_i: two Henyey-Greenstein lobes, mix(HG(mu, g c^i),
 //     HG(mu, -0.3 c^i), 0.3): the forward lobe g = clouds.anisotropy gives
 //     the silver lining round a cloud in front of the sun, the back lobe
@@ -78,6 +82,7 @@ layout(location = 0) out vec4 outColour;
 const int kOctaves = 3;
 const float kOctaveScattering = 0.5;  // a
 const float kOctaveExtinction = 0.5;  // b
+const float kDiffuseWeight = 1.0;
 const float kOctavePhase = 0.5;       // c
 const float kBackLobeG = -0.3;
 const float kBackLobeWeight = 0.3;
@@ -128,6 +133,11 @@ vec3 lightScattering(vec3 p, vec3 l, vec3 E, float mu) {
         b *= kOctaveExtinction;
         c *= kOctavePhase;
     }
+    // Deep inside, the light that scattered many times: the two-stream
+    // (diffusion) transmittance of a slab of optical depth tau, 1 / (1 +
+    // 3/4 tau (1 - g)) with the droplets' g = 0.85 (Bohren 1987), isotropic,
+    // faded in with (1 - e^-tau) so the edges keep the octaves' look.
+    sum += kDiffuseWeight * (1.0 - exp(-tau)) / (1.0 + 0.75 * tau * (1.0 - 0.85)) / (4.0 * kPi) * E;
     return sum;
 }
 
@@ -154,6 +164,16 @@ void main() {
     float muSun = dot(v, frame.sunDirection);
     float muMoon = dot(v, frame.moonDirection);
     vec3 ambient = frame.skyAmbient / (2.0 * kPi);
+    // Light bounced off the ground into the bases: a Lambertian ground of
+    // the atmosphere's albedo under the sun, the moon and the sky, seen
+    // through the gaps between the clouds (the clear fraction, 1 - coverage),
+    // as a uniform lower hemisphere (E a / (2 pi), the sky term's convention).
+    vec3 groundIrradiance = frame.sunIlluminance * max(frame.sunDirection.y, 0.0) +
+                            frame.moonIlluminance * max(frame.moonDirection.y, 0.0) + frame.skyAmbient;
+    vec3 bounce = clouds.groundAlbedo * groundIrradiance * (1.0 - 0.8 * cloudSaturate(clouds.coverage)) /
+                  (2.0 * kPi);
+    // The moon's light is marched only when it matters (> 1 % of the sun's).
+    bool moonLit = dot(frame.moonIlluminance, vec3(1.0)) > 0.01 * dot(frame.sunIlluminance, vec3(1.0));
     vec3 radiance = vec3(0.0);
     float transmittance = 1.0;
     float weightedDistance = 0.0;
@@ -168,8 +188,9 @@ void main() {
             float rho = cloudDensityAt(p, f);
             if (!(rho > 0.0)) continue;
             vec3 S = lightScattering(p, frame.sunDirection, frame.sunIlluminance, muSun) +
-                     lightScattering(p, frame.moonDirection, frame.moonIlluminance, muMoon) +
-                     ambient * mix(kAmbientBase, 1.0, cloudSaturate(f));
+                     ambient * mix(kAmbientBase, 1.0, cloudSaturate(f)) +
+                     bounce * mix(1.0, kAmbientBase, cloudSaturate(f));
+            if (moonLit) S += lightScattering(p, frame.moonDirection, frame.moonIlluminance, muMoon);
             for (int e = 0; e < frame.emitterCount; ++e) {
                 vec3 toEmitter = emitters[e].position - p;
                 S += emitters[e].colour * emitters[e].intensity /

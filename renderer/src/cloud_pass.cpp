@@ -18,6 +18,7 @@
 #include "render_pass.hpp"
 
 #include <aerial/evaluate.hpp>
+#include <aerial/limits.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -75,8 +76,23 @@ CloudBlock makeCloudBlock(const CloudField& field, const PresetState& state, con
     b.steps = std::clamp(frame.cloudSteps, 1, 1024);
     b.lightSteps = 6;
     b.albedo = toVec3(glm::clamp(colourOf(p.albedo), 0.0, 1.0));
-    b.volumeCount = 0;  // cloud volumes are not in presets yet (clouds.glsl)
+    // The cloud volumes core prepared (valid shapes only, sanitised), in order.
+    b.volumeCount = int(std::min<std::size_t>(field.volumes.size(), kGpuCloudVolumes));
+    for (int k = 0; k < b.volumeCount; ++k) {
+        const CloudField::Volume& v = field.volumes[std::size_t(k)];
+        const PreparedFogVolume& g = v.geometry;
+        const glm::dvec3 rows[3] = {g.row0, g.row1, g.row2};
+        const double w[3] = {g.shape == FogVolumeShape::Ellipsoid ? 1.0 : 0.0, v.coverage, v.edgeSoftness};
+        for (int r = 0; r < 3; ++r) {
+            float* out = b.volumeData[4 * k + r];
+            out[0] = float(rows[r].x), out[1] = float(rows[r].y), out[2] = float(rows[r].z),
+            out[3] = float(w[r]);
+        }
+        float* centre = b.volumeData[4 * k + 3];
+        centre[0] = float(g.position.x), centre[1] = float(g.position.y), centre[2] = float(g.position.z);
+    }
     const AtmosphereParams& air = state.environment.atmosphere;
+    b.groundAlbedo = toVec3(glm::clamp(colourOf(air.groundAlbedo), 0.0, 1.0));
     b.rayleighScattering = toVec3(colourOf(air.rayleighScattering));
     b.rayleighScaleHeight = static_cast<float>(nonNegative(air.rayleighScaleHeight, 1e6));
     b.mieExtinction = toVec3(colourOf(air.mieExtinction));

@@ -195,6 +195,10 @@ static_assert(sizeof(ObjectBlock) == 352);
 /// shaders/common/clouds.glsl, CloudBlock (binding 4): the cloud layer of
 /// the frame (aerial::CloudField in float) and the cloud shadow map's
 /// placement; built by makeCloudBlock (cloud_pass.cpp).
+/// Cloud volumes the GPU takes: every one a preset may hold
+/// (limits::kMaxCloudVolumes).
+constexpr int kGpuCloudVolumes = 64;
+
 struct CloudBlock {
     float shapeOffset[2] = {};   ///< wind offset mod the shape tile [m], [x, z]
     float detailOffset[2] = {};  ///< wind offset mod the detail tile [m]
@@ -225,6 +229,12 @@ struct CloudBlock {
     std::int32_t outputMode = 0;   ///< 0 lit, 1 transmittance only (CloudOutput)
     float shadowSize = 0.0f;       ///< texels per side of the map
     float padShadow[2] = {};
+    Vec3 groundAlbedo;  ///< the atmosphere's ground albedo: light bounced up into the cloud bases
+    float padGround = 0.0f;
+    /// Cloud volumes, four vec4 each (clouds.glsl cloudCoverageAt):
+    /// [4k] objectFromWorld row 0, w = shape (0 box, 1 ellipsoid); [4k+1]
+    /// row 1, w = coverage; [4k+2] row 2, w = edge softness; [4k+3] centre [m].
+    float volumeData[kGpuCloudVolumes * 4][4] = {};
 };
 static_assert(offsetof(CloudBlock, detailOffset) == 8);
 static_assert(offsetof(CloudBlock, planetRadius) == 16);
@@ -252,7 +262,9 @@ static_assert(offsetof(CloudBlock, shadowToLight) == 128);
 static_assert(offsetof(CloudBlock, shadowSteps) == 140);
 static_assert(offsetof(CloudBlock, outputMode) == 144);
 static_assert(offsetof(CloudBlock, shadowSize) == 148);
-static_assert(sizeof(CloudBlock) == 160);
+static_assert(offsetof(CloudBlock, groundAlbedo) == 160);
+static_assert(offsetof(CloudBlock, volumeData) == 176);
+static_assert(sizeof(CloudBlock) == 176 + 64 * kGpuCloudVolumes);
 
 /// shaders/particles.glsl, per-instance vertex attributes (locations 0..3).
 struct SpriteInstance {

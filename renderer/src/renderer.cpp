@@ -280,9 +280,10 @@ void Renderer::Impl::render(const Camera& camera, const PresetState& state, cons
     glNamedBufferSubData(frameBuffer, 0, sizeof block, &block);
 
     // The cloud layer at this time (the noise re-uploaded when the seed
-    // changes; nothing at all while the layer is empty).
-    const CloudField clouds = prepareClouds(state.environment.clouds, {}, state.timeHours,
-                                            state.environment.atmosphere.planetRadius);
+    // changes; nothing at all while the layer is empty), with its volumes.
+    const CloudField clouds = prepareClouds(state);
+    static_assert(detail::kGpuCloudVolumes >= int(limits::kMaxCloudVolumes),
+                  "the GPU takes every cloud volume a preset may hold");
     if (frameDesc.passes.clouds) detail::prepareCloudResources(*this, clouds);
     const detail::CloudBlock cloudBlock =
         detail::makeCloudBlock(clouds, state, frameDesc, view.eye, stats.cloudShadow);

@@ -16,7 +16,13 @@
 //                       CloudParams (sanitised by prepareClouds)
 //   anisotropy          forward Henyey-Greenstein g; albedo (rgb)
 //   steps, lightSteps   samples along the view ray / towards the light
-//   volumeCount         cloud volumes: always 0 (not in presets yet)
+//   volumeCount, volumeData  the cloud volumes (at most 64, limits.hpp's
+//                       kMaxCloudVolumes), prepared by core (prepareClouds):
+//                       per volume 4 vec4: objectFromWorld rows 0..2 with
+//                       w = shape (0 box, 1 ellipsoid), coverage, edge
+//                       softness; then the centre [m]
+//   groundAlbedo        the atmosphere's ground albedo (light bounced into
+//                       the cloud bases)
 //   rayleighScattering, rayleighScaleHeight, mieExtinction, mieScaleHeight:
 //                       the air for the clouds' aerial perspective
 //   shadowOrigin, shadowExtentM, shadowToLight, shadowSteps, shadowActive,
@@ -64,6 +70,9 @@ layout(std140, binding = 4) uniform CloudBlock {
     float shadowSize;
     float padShadow0;
     float padShadow1;
+    vec3 groundAlbedo;
+    float padGround;
+    vec4 volumeData[256];  // 4 per volume, 64 volumes
 } clouds;
 
 layout(binding = 8) uniform sampler3D uCloudShape;
@@ -99,12 +108,23 @@ float cloudHeightProfile(float heightFraction, float type) {
     return cloudSmooth01(f / 0.08) * cloudSmooth01((top - f) / fall);
 }
 
-/// The coverage at p. Cloud volumes would blend it here
-/// (c = mix(c, volume coverage, w) in order, clouds.cpp's volumeWeight);
-/// presets hold none yet, so clouds.volumeCount is 0 and this is the layer's.
+/// The coverage at p (cloudCoverageAt of clouds.cpp): the layer's, set by
+/// each cloud volume in order, c = mix(c, volume coverage, w), w = 1 inside
+/// and a smoothstep to 0 over the outer edge_softness of the shape
+/// (object-space radius: max |x_i| for a box, |x| for an ellipsoid).
 float cloudCoverageAt(vec3 p) {
     float c = clouds.coverage;
-    // for (int k = 0; k < clouds.volumeCount; ++k) { ... }  -- no cloud volumes yet
+    for (int k = 0; k < clouds.volumeCount; ++k) {
+        vec4 r0 = clouds.volumeData[4 * k], r1 = clouds.volumeData[4 * k + 1];
+        vec4 r2 = clouds.volumeData[4 * k + 2];
+        vec3 rel = p - clouds.volumeData[4 * k + 3].xyz;
+        vec3 q = vec3(dot(r0.xyz, rel), dot(r1.xyz, rel), dot(r2.xyz, rel));
+        float r = r0.w > 0.5 ? length(q) : max(abs(q.x), max(abs(q.y), abs(q.z)));
+        if (r >= 1.0) continue;
+        float soft = cloudSaturate(r2.w);
+        float w = soft <= 0.0 ? 1.0 : cloudSmooth01((1.0 - r) / soft);
+        c += w * (r1.w - c);
+    }
     return cloudSaturate(c);
 }
 

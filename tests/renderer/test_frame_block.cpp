@@ -384,7 +384,9 @@ TEST(FrameBlock, Std140OffsetsMatchTheGlslBlocks) {
                   AERIAL_OFFSET(CloudBlock, shadowToLight),
                   AERIAL_OFFSET(CloudBlock, shadowSteps),
                   AERIAL_OFFSET(CloudBlock, outputMode),
-                  AERIAL_OFFSET(CloudBlock, shadowSize)},
+                  AERIAL_OFFSET(CloudBlock, shadowSize),
+                  AERIAL_OFFSET(CloudBlock, groundAlbedo),
+                  AERIAL_OFFSET(CloudBlock, volumeData)},
                  sizeof(CloudBlock));
 }
 
