@@ -27,8 +27,10 @@
 // integrated over a step of length d with Hillaire 2015's energy-conserving
 // form S_int = (S - S exp(-sigma_t d)) / sigma_t, L += T S_int,
 // T *= exp(-sigma_t d).
-//   Lights: E_l is frame.<light>Illuminance (E_space x T_atmosphere, what
-//     the sky pass and the scene use); tau_l the optical depth towards the
+//   Lights: E_l is the light above the atmosphere times its transmittance
+//     from the cloud point (lightAtCloud: Schueler's Chapman function for
+//     Rayleigh and Mie at the point's height), so high clouds keep the
+//     sun after it set on the ground; tau_l the optical depth towards the
 //     light by kLightSteps midpoint samples over [0, min(exit of the top
 //     sphere, kLightMaxDistanceFactor x thickness)], quadratically spaced
 //     (dense near p). Beer-Lambert, no powder term.
@@ -103,6 +105,34 @@ float cloudPhase(float mu, float octaveScale) {
                henyeyGreenstein(mu, kBackLobeG * octaveScale), kBackLobeWeight);
 }
 
+/// Schueler's analytic Chapman function (Schueler 2012, "An efficient and
+/// physically plausible real-time sky shading model", GPU Pro 3): the
+/// optical depth of an exponential atmosphere from normalised height h =
+/// height / H towards zenith cosine mu, in units of beta H, with X = Rg / H;
+/// below the point's horizon it goes through the grazing point, so a light
+/// behind the planet gets an enormous depth (no light).
+float chapman(float X, float h, float mu) {
+    float c = sqrt(X + h);
+    if (mu >= 0.0) return c / (c * mu + 1.0) * exp(-h);
+    float x0 = sqrt(max(1.0 - mu * mu, 0.0)) * (X + h);
+    float c0 = sqrt(x0);
+    return 2.0 * c0 * exp(X - x0) - c / (1.0 - c * mu) * exp(-h);
+}
+
+/// The light above the atmosphere as it reaches the point p: at the cloud's
+/// height, not the viewer's, so a layer at 6 km stays lit red after the
+/// sun has set on the ground (Rayleigh and Mie extinction; ozone left out).
+vec3 lightAtCloud(vec3 p, vec3 l, vec3 illuminanceSpace) {
+    float height = max(cloudHeightAboveGround(p), 0.0);
+    // The light's zenith cosine at p (the local vertical of the sphere).
+    vec3 up = normalize(p + vec3(0.0, clouds.planetRadius, 0.0));
+    float mu = dot(up, l);
+    float hR = max(clouds.rayleighScaleHeight, 1.0), hM = max(clouds.mieScaleHeight, 1.0);
+    vec3 tau = clouds.rayleighScattering * hR * chapman(clouds.planetRadius / hR, height / hR, mu) +
+               clouds.mieExtinction * hM * chapman(clouds.planetRadius / hM, height / hM, mu);
+    return illuminanceSpace * exp(-min(tau, vec3(80.0)));
+}
+
 /// Optical depth from p towards the light l (unit) through the layer.
 float lightOpticalDepth(vec3 p, vec3 l) {
     float t0, t1;
@@ -173,7 +203,8 @@ void main() {
     vec3 bounce = clouds.groundAlbedo * groundIrradiance * (1.0 - 0.8 * cloudSaturate(clouds.coverage)) /
                   (2.0 * kPi);
     // The moon's light is marched only when it matters (> 1 % of the sun's).
-    bool moonLit = dot(frame.moonIlluminance, vec3(1.0)) > 0.01 * dot(frame.sunIlluminance, vec3(1.0));
+    bool moonLit = dot(frame.moonIlluminanceSpace, vec3(1.0)) > 0.01 * dot(frame.sunIlluminanceSpace, vec3(1.0)) ||
+                   frame.sunDirection.y < -0.15;
     vec3 radiance = vec3(0.0);
     float transmittance = 1.0;
     float weightedDistance = 0.0;
@@ -187,10 +218,13 @@ void main() {
             float f;
             float rho = cloudDensityAt(p, f);
             if (!(rho > 0.0)) continue;
-            vec3 S = lightScattering(p, frame.sunDirection, frame.sunIlluminance, muSun) +
+            vec3 S = lightScattering(p, frame.sunDirection,
+                                     lightAtCloud(p, frame.sunDirection, frame.sunIlluminanceSpace), muSun) +
                      ambient * mix(kAmbientBase, 1.0, cloudSaturate(f)) +
                      bounce * mix(1.0, kAmbientBase, cloudSaturate(f));
-            if (moonLit) S += lightScattering(p, frame.moonDirection, frame.moonIlluminance, muMoon);
+            if (moonLit)
+                S += lightScattering(p, frame.moonDirection,
+                                     lightAtCloud(p, frame.moonDirection, frame.moonIlluminanceSpace), muMoon);
             for (int e = 0; e < frame.emitterCount; ++e) {
                 vec3 toEmitter = emitters[e].position - p;
                 S += emitters[e].colour * emitters[e].intensity /
