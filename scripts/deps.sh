@@ -19,7 +19,8 @@ packages=(
   # the editor: GLFW window, Dear ImGui 1.86 (needs libstb, above)
   libglfw3-dev libimgui-dev
   # tests and benchmarks; the editor's window tests run under Xvfb
-  libgtest-dev libbenchmark-dev python3 python3-jsonschema xvfb xauth
+  # (python3-ephem: the independent sun and moon ephemeris of tests/cli/ephemeris_test.py)
+  libgtest-dev libbenchmark-dev python3 python3-jsonschema python3-ephem xvfb xauth
   # fuzzing the loaders: clang with libFuzzer (tests/fuzz)
   clang libclang-rt-14-dev
 )

@@ -238,6 +238,7 @@ std::string formatIssue(const PresetIssue& issue) {
 }
 
 Preset loadPresetOrFail(const std::string& path, const std::string& command) {
+    if (path == kDefaultPresetName) return defaultPreset();
     PresetLoadResult result = loadPreset(path);
     for (const PresetIssue& w : result.warnings)
         std::cerr << "aerial " << command << ": " << formatIssue(w) << "\n";
@@ -342,9 +343,12 @@ std::string formatParam(const ParamDesc& p, const void* object) {
 
 Json lightToJson(const LightState& light) {
     return {{"elevation_deg", light.body.elevation * kDegreesPerRadian},
+            {"apparent_elevation_deg", light.body.apparentElevation * kDegreesPerRadian},
             {"azimuth_deg", light.body.azimuth * kDegreesPerRadian},
             {"direction", toJson(light.body.direction)},
+            {"apparent_direction", toJson(light.body.apparentDirection)},
             {"illuminated_fraction", light.body.illuminatedFraction},
+            {"bright_limb_angle_deg", light.body.brightLimbAngle * kDegreesPerRadian},
             {"phase_irradiance", light.body.phaseIrradiance},
             {"illuminance_space_rgb", toJson(light.illuminanceSpace)},
             {"transmittance_rgb", toJson(light.transmittance)},
@@ -362,8 +366,10 @@ Json stateToJson(const PresetState& state) {
     }
     Json cloudVolumes = Json::array();
     for (const CloudVolume& v : state.cloudVolumes) cloudVolumes.push_back(parametersToJson(v));
+    const double julianDayUt = julianDayAt(state.environment.location, state.timeHours);
     return {{"time_h", state.timeHours},
             {"time", formatTime(state.timeHours)},
+            {"julian_day_ut", std::isfinite(julianDayUt) ? Json(julianDayUt) : Json(nullptr)},
             {"sun", lightToJson(state.sunLight)},
             {"moon", lightToJson(state.moonLight)},
             {"parameters", parametersToJson(state.environment)},

@@ -99,9 +99,14 @@ bool parseNumber(const std::string& text, double& out);
 // ---------------------------------------------------------------------------
 // Presets
 
-/// Loads a preset; its warnings go to stderr ("aerial <command>: warning:
-/// ..."). On failure throws dataError with the first error (and how many
-/// more there are).
+/// The PRESET argument that names the built-in default preset
+/// (aerial::defaultPreset()) in every command; a file literally named
+/// "default" is ./default.
+inline constexpr std::string_view kDefaultPresetName = "default";
+
+/// Loads a preset (`default`: the built-in one); its warnings go to stderr
+/// ("aerial <command>: warning: ..."). On failure throws dataError with the
+/// first error (and how many more there are).
 Preset loadPresetOrFail(const std::string& path, const std::string& command);
 
 /// An issue in the validate format: "file:line:col: /pointer: reason"

@@ -324,7 +324,9 @@ Command addBakeCommand(CLI::App& parent) {
         "bake",
         "Sky tables (EXR, per step and light) and every evaluated parameter (manifest.json) over the day, "
         "for games that do not link the library");
-    app->add_option("preset", options->preset, "Preset file (JSON)")->required()->type_name("PRESET");
+    app->add_option("preset", options->preset, "Preset file (JSON), or `default` for the built-in preset")
+        ->required()
+        ->type_name("PRESET");
     app->add_option("--out,-o", options->out, "Output directory (created if missing)")
         ->required()
         ->type_name("DIR");

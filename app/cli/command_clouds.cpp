@@ -96,7 +96,9 @@ Command addCloudsCommand(CLI::App& parent) {
     auto options = std::make_shared<CloudsOptions>();
     CLI::App* app = parent.add_subcommand(
         "clouds", "Cloud queries at points: sun visibility (cloud shadow), transmittance through the layer");
-    app->add_option("preset", options->preset, "Preset file (JSON)")->required()->type_name("PRESET");
+    app->add_option("preset", options->preset, "Preset file (JSON), or `default` for the built-in preset")
+        ->required()
+        ->type_name("PRESET");
     addTimeOption(*app, options->time);
     app->add_option("--at", options->at, "A point x,y,z [m]; repeat for more (answered in order)")
         ->required()

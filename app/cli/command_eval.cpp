@@ -1,11 +1,18 @@
 // command_eval.cpp — `aerial eval PRESET --time T [--json]`: the preset's
-// complete state at one time of day (CompiledPreset::evaluate).
+// complete state at one time of day (CompiledPreset::evaluate). PRESET may be
+// `default` (aerial::defaultPreset()).
 //
 // --json prints stateToJson (cli_common.hpp) plus the preset's file and name:
 //   {"preset": {"file", "name"}, "time_h", "time",
-//    "sun": {"elevation_deg", "azimuth_deg", "direction", "illuminated_fraction",
-//            "phase_irradiance", "illuminance_space_rgb", "transmittance_rgb",
-//            "illuminance_rgb"},
+//    "julian_day_ut" (the instant of a dated preset, aerial/sun.hpp; null
+//    when undated),
+//    "sun": {"elevation_deg" (geometric, topocentric),
+//            "apparent_elevation_deg" (with standard refraction: Saemundsson,
+//            Meeus 16.4), "azimuth_deg" (from north through east, north
+//            offset included), "direction", "apparent_direction",
+//            "illuminated_fraction", "bright_limb_angle_deg" (moon: from the
+//            zenith through east), "phase_irradiance", "illuminance_space_rgb",
+//            "transmittance_rgb", "illuminance_rgb"},
 //    "moon": {...},
 //    "parameters": {every global parameter, nested as in the preset file},
 //    "volumes": [{every volume parameter}], "emitters": [{every emitter
@@ -45,7 +52,7 @@ void printLight(const char* name, const LightState& light) {
 template <class Object>
 void printParameters(ParamScope scope, const Object& object, const char* indent) {
     for (const ParamDesc& p : paramTable(scope)) {
-        if (p.type == ParamType::String) continue;  // ids and names are in the heading
+        if (p.path == "id" || p.path == "name") continue;  // ids and names are in the heading
         const std::string value = formatParam(p, &object);
         std::printf("%s%-40s %-36s %s\n", indent, std::string(p.path).c_str(), value.c_str(),
                     std::string(p.unit).c_str());
@@ -96,7 +103,9 @@ Command addEvalCommand(CLI::App& parent) {
     CLI::App* app = parent.add_subcommand(
         "eval",
         "The preset at a time of day: sun, moon, every parameter, volumes, emitters and cloud volumes");
-    app->add_option("preset", options->preset, "Preset file (JSON)")->required()->type_name("PRESET");
+    app->add_option("preset", options->preset, "Preset file (JSON), or `default` for the built-in preset")
+        ->required()
+        ->type_name("PRESET");
     addTimeOption(*app, options->time);
     app->add_flag("--json", options->json, "Machine-readable output");
     app->footer(

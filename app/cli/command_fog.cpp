@@ -119,7 +119,9 @@ Command addFogCommand(CLI::App& parent) {
     auto options = std::make_shared<FogOptions>();
     CLI::App* app = parent.add_subcommand(
         "fog", "Fog between a camera and a transparent object: transmittance, in-scatter, crossed volumes");
-    app->add_option("preset", options->preset, "Preset file (JSON)")->required()->type_name("PRESET");
+    app->add_option("preset", options->preset, "Preset file (JSON), or `default` for the built-in preset")
+        ->required()
+        ->type_name("PRESET");
     addTimeOption(*app, options->time);
     app->add_option("--from", options->from, "Segment start (the camera) x,y,z [m]")
         ->required()

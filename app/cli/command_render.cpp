@@ -223,8 +223,8 @@ int runRender(const RenderOptions& options) {
         }
     }
 
-    const bool builtin = options.preset == "default";
-    Preset preset = builtin ? defaultPreset() : loadPresetOrFail(options.preset, "render");
+    const bool builtin = options.preset == kDefaultPresetName;
+    Preset preset = loadPresetOrFail(options.preset, "render");
     const std::string name = preset.name;
     const CompiledPreset compiled(std::move(preset));
 

@@ -176,7 +176,9 @@ Command addSkyCommand(CLI::App& parent) {
     CLI::App* app = parent.add_subcommand(
         "sky",
         "Sky radiance in a direction: the renderer's table next to the exact single-scattering integral");
-    app->add_option("preset", options->preset, "Preset file (JSON)")->required()->type_name("PRESET");
+    app->add_option("preset", options->preset, "Preset file (JSON), or `default` for the built-in preset")
+        ->required()
+        ->type_name("PRESET");
     addTimeOption(*app, options->time);
     app->add_option("--dir,-d", options->direction, "View direction x,y,z (world: Y up, north -Z, east +X)")
         ->required()

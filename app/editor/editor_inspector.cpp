@@ -292,12 +292,28 @@ void drawInspector(Document& doc, EditState& edit, double timeHours, const Prese
                 ImGui::Spacing();
                 ImGui::TextDisabled("Now");
                 ImGui::Separator();
-                ImGui::Text("Sun elevation %.2f deg, azimuth %.1f deg",
-                            state.sunLight.body.elevation * kDegrees, state.sunLight.body.azimuth * kDegrees);
+                const Location& where = preset.environment.location;
+                // When and where: the date and time as the preset reads them (aerial/sun.hpp).
+                const std::string when = formatClock(timeHours, ClockResolution::Minutes);
+                const char ns = where.latitudeDeg < 0.0 ? 'S' : 'N';
+                const char ew = where.longitudeDeg < 0.0 ? 'W' : 'E';
+                if (std::isfinite(julianDayAt(where, timeHours))) {
+                    const bool clock = where.timeMode == TimeMode::Clock;
+                    ImGui::Text("%s %s %s%+g, %.2f %c %.2f %c", where.date.c_str(), when.c_str(),
+                                clock ? "UTC" : "solar time, lon ",
+                                clock ? where.utcOffsetHours : where.longitudeDeg,
+                                std::abs(where.latitudeDeg), ns, std::abs(where.longitudeDeg), ew);
+                } else {
+                    ImGui::Text("Undated: day %.0f, %s solar time, %.2f %c", where.dayOfYear, when.c_str(),
+                                std::abs(where.latitudeDeg), ns);
+                }
+                ImGui::Text("Sun elevation %.2f deg (apparent %.2f), azimuth %.1f deg",
+                            state.sunLight.body.elevation * kDegrees,
+                            state.sunLight.body.apparentElevation * kDegrees,
+                            state.sunLight.body.azimuth * kDegrees);
                 ImGui::Text("Moon elevation %.2f deg, lit %.0f%%", state.moonLight.body.elevation * kDegrees,
                             state.moonLight.body.illuminatedFraction * 100.0);
-                const Location& where = preset.environment.location;
-                const double rise = sunriseHours(where), set = 24.0 - rise;
+                const double rise = sunriseHours(where), set = sunsetHours(where);
                 ImGui::Text("Sunrise %s, sunset %s, day %.1f h",
                             formatClock(rise, ClockResolution::Minutes).c_str(),
                             formatClock(set, ClockResolution::Minutes).c_str(), dayLengthHours(where));

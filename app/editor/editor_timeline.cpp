@@ -57,7 +57,7 @@ void drawTimeline(Document& doc, EditState& edit, Playback& playback, const Acti
     ImGui::SameLine();
     if (ImGui::Button("Noon")) playback.jumpTo(12.0);
     ImGui::SameLine();
-    if (ImGui::Button("Sunset")) playback.jumpTo(24.0 - sunriseHours(where));
+    if (ImGui::Button("Sunset")) playback.jumpTo(sunsetHours(where));
     ImGui::SameLine();
     std::string timeText = clock(playback.timeHours);
     ImGui::SetNextItemWidth(60.0f);
@@ -158,8 +158,8 @@ void drawTimeline(Document& doc, EditState& edit, Playback& playback, const Acti
 
     dl->AddRectFilled(ImVec2(x0, yRuler), ImVec2(x1, yEnd), IM_COL32(30, 30, 34, 255));
     // Night shading: where the sun is below the horizon.
-    const double rise = sunriseHours(where), set = 24.0 - rise;
-    if (rise > 0.0 && rise < 12.0) {
+    const double rise = sunriseHours(where), set = sunsetHours(where);
+    if (rise > 0.0 && rise < set) {
         dl->AddRectFilled(ImVec2(x0, ySummary), ImVec2(xOf(rise), yEnd), IM_COL32(20, 22, 40, 255));
         dl->AddRectFilled(ImVec2(xOf(set), ySummary), ImVec2(x1, yEnd), IM_COL32(20, 22, 40, 255));
     }

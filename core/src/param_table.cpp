@@ -22,6 +22,7 @@ constexpr std::array<sv, 2> kShapeNames = {"box", "ellipsoid"};
 constexpr std::array<sv, 2> kEmitterKindNames = {"point", "lightning"};
 constexpr std::array<sv, 3> kInterpolationNames = {"step", "linear", "smooth"};
 constexpr std::array<sv, 2> kExposureModeNames = {"manual", "automatic"};
+constexpr std::array<sv, 2> kTimeModeNames = {"solar", "clock"};
 
 struct Range {
     double min, max, uiMin, uiMax;
@@ -178,9 +179,31 @@ const std::vector<ParamDesc>& globalTable() {
             [](void* o) { return &env(o).location.latitudeDeg; },
             "Geographic latitude [deg], -90..90, north positive. Default 45."),
         scalar(
+            G, "location.longitude_deg", "Longitude", "deg", {-180, 180, -180, 180}, 0, false, false,
+            [](void* o) { return &env(o).location.longitudeDeg; },
+            "Geographic longitude [deg], -180..180, east positive. Used with a date only. Default 0."),
+        scalar(
+            G, "location.utc_offset_h", "UTC offset", "h", {-12, 14, -12, 14}, 0, false, false,
+            [](void* o) { return &env(o).location.utcOffsetHours; },
+            "Local clock time minus UT [h], -12..14 (2 for CEST). Used with a date in clock mode only. "
+            "Default 0."),
+        text(
+            G, "location.date", "Date", false, [](void* o) { return &env(o).location.date; },
+            "Calendar date \"YYYY-MM-DD\", 1800-01-01..2200-12-31: the sun and moon come from "
+            "ephemerides for that day (NOAA, Meeus 47) and day_of_year and moon_phase_offset_days are "
+            "unused. Empty (the default, every version-1 preset): the undated model of day_of_year."),
+        enumeration(
+            G, "location.time_mode", "Time mode", kTimeModeNames, 0,
+            [](const void* o) { return std::int64_t(static_cast<const Environment*>(o)->location.timeMode); },
+            [](void* o, std::int64_t v) { env(o).location.timeMode = TimeMode(v); },
+            "How a dated preset reads its time of day. solar: local apparent solar time at the longitude "
+            "(noon = the sun on the meridian); clock: local clock time at the UTC offset (the equation of "
+            "time applies). Without a date, time is always solar. Default solar."),
+        scalar(
             G, "location.day_of_year", "Day of year", "day", {1, 365, 1, 365}, 172, false, false,
             [](void* o) { return &env(o).location.dayOfYear; },
-            "Day of the year [1..365]; sets the solar declination. Default 172 (June solstice)."),
+            "Day of the year [1..365] of the undated model (no date); sets the solar declination. "
+            "Unused when a date is set. Default 172 (June solstice, as 2026-06-21)."),
         scalar(
             G, "location.north_offset_deg", "North offset", "deg", {-360, 360, -180, 180}, 0, false, false,
             [](void* o) { return &env(o).location.northOffsetDeg; },
@@ -188,8 +211,8 @@ const std::vector<ParamDesc>& globalTable() {
         scalar(
             G, "location.moon_phase_offset_days", "Moon phase offset", "day", {0, 29.530589, 0, 29.530589}, 0,
             false, false, [](void* o) { return &env(o).location.moonPhaseOffsetDays; },
-            "Shifts the moon's age [days], 0..29.53: chooses the night of the month "
-            "(~14.8 after a new moon is full). Default 0."),
+            "Shifts the moon's age [days], 0..29.53, in the undated model: chooses the night of the "
+            "month (~14.8 after a new moon is full). Unused when a date is set. Default 0."),
         // Atmosphere (atmosphere.hpp).
         scalar(
             G, "atmosphere.viewer_height_m", "Viewer height", "m", {0, kTopOfAtmosphere, 0, 20000}, 0, false,

@@ -94,6 +94,10 @@ ojson schemaFor(const ParamDesc& p) {
             if (p.path == "id") {
                 s["pattern"] = idPattern();
                 s["maxLength"] = limits::kMaxIdBytes;
+            } else if (p.path == "location.date") {
+                // The calendar check itself (month lengths, 1800..2200) is the validator's.
+                s["pattern"] = "^([0-9]{4}-[0-9]{2}-[0-9]{2})?$";
+                s["default"] = std::string(p.defaultText);
             } else {
                 s["maxLength"] = limits::kMaxStringBytes;
                 s["default"] = std::string(p.defaultText);

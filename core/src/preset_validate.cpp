@@ -9,6 +9,7 @@
 
 #include <aerial/limits.hpp>
 #include <aerial/preset.hpp>
+#include <aerial/sun.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -154,6 +155,13 @@ void checkParam(const ParamDesc& p, void* object, const std::string& pointer, Is
                 if (!validId(s))
                     issues.error(pointer, "an id must be 1..64 characters of A-Z a-z 0-9 _ - . (got " +
                                               quoteString(validUtf8(s) ? s : std::string("?")) + ")");
+            } else if (p.path == "location.date") {
+                CalendarDate date;
+                if (!s.empty() && !parseCalendarDate(s, date))
+                    issues.error(pointer,
+                                 "location.date must be a calendar date \"YYYY-MM-DD\" from 1800-01-01 "
+                                 "to 2200-12-31, or \"\" for none (got " +
+                                     quoteString(validUtf8(s) ? s : std::string("?")) + ")");
             } else {
                 checkText(s, pointer, issues);
             }

@@ -623,6 +623,36 @@ class Bake(unittest.TestCase):
         self.assertEqual(len(err.splitlines()), 3, err)
 
 
+class DefaultPreset(unittest.TestCase):
+    """Every command that takes a preset takes `default`: the built-in
+    aerial::defaultPreset() (one place: loadPresetOrFail)."""
+
+    def test_every_command_takes_default(self):
+        evaluated = run_json(self, "eval", "default", "--time", "10:00")
+        self.assertEqual(evaluated["preset"]["file"], "default")
+        self.assertIn("apparent_elevation_deg", evaluated["sun"])
+        self.assertIsNone(evaluated["julian_day_ut"])  # the default preset is undated
+        self.assertGreater(evaluated["sun"]["apparent_elevation_deg"], evaluated["sun"]["elevation_deg"])
+        run_json(self, "sky", "default", "--time", "10:00", "--dir", "0,1,0")
+        run_json(self, "fog", "default", "--time", "10:00", "--from=0,2,0", "--to=0,2,-100")
+        run_json(self, "clouds", "default", "--time", "10:00", "--at", "0,1000,0")
+        run_json(self, "day", "default", "--step", "6")
+        out_dir = os.path.join(WORK, "bake_default")
+        shutil.rmtree(out_dir, ignore_errors=True)
+        code, out, err = run("bake", "default", "--out", out_dir, "--step", "12h", "--size", "16x8")
+        self.assertEqual(code, 0, err)
+        self.assertTrue(os.path.isfile(os.path.join(out_dir, "manifest.json")))
+        # The text form of eval shows the date parameters too.
+        code, out, err = run("eval", "default", "--time", "10:00")
+        self.assertEqual(code, 0, err)
+        self.assertIn("location.date", out)
+
+    def test_a_file_named_default_is_dot_slash_default(self):
+        code, out, err = run("eval", "./default", "--time", "10:00")
+        self.assertNotEqual(code, 0)
+        self.assertIn("./default", err)
+
+
 class CommandLineErrors(unittest.TestCase):
     def test_bad_input_gives_one_line_and_the_right_exit_code(self):
         good = preset("hazy_sunset")

@@ -338,6 +338,10 @@ const Fixture kFixtures[] = {
      "out of range: 0 is not in 1..1e+07 m"},
     {"cloud_volume_unknown_target.json", "/tracks/1/cloud_volume", 6, 22, "no cloud volume with id \"nope\""},
     {"cloud_volume_duplicate_ids.json", "/cloud_volumes/2/id", 6, 12, "duplicate id \"cell\""},
+    {"date_not_a_day.json", "/location/date", 3, 44,
+     "location.date must be a calendar date \"YYYY-MM-DD\" from 1800-01-01 to 2200-12-31, or \"\" for none "
+     "(got \"2026-02-30\")"},
+    {"time_mode_unknown.json", "/location/time_mode", 3, 51, "unknown value \"local\""},
 };
 
 TEST(Preset, MalformedFilesGiveLocatedErrors) {
@@ -396,6 +400,34 @@ TEST(Preset, MissingFileIsAnError) {
     ASSERT_EQ(r.errors.size(), 1u);
     EXPECT_EQ(r.errors[0].file, "/nonexistent/dir/none.json");
     EXPECT_NE(r.errors[0].message.find("cannot open"), std::string::npos);
+}
+
+// A version-1 location block (no date, longitude, offset or time mode)
+// loads as the undated model: the sun of day_of_year in solar time, exactly
+// as before the dated model existed.
+TEST(Preset, VersionOneLocationStaysUndated) {
+    const aerial::PresetLoadResult r = aerial::parsePreset(
+        R"({"version": 1, "location": {"latitude_deg": 38, "day_of_year": 225, "moon_phase_offset_days": 8}})");
+    ASSERT_TRUE(r.ok()) << joinIssues(r.errors);
+    const aerial::Location& where = r.preset->environment.location;
+    EXPECT_TRUE(where.date.empty());
+    EXPECT_EQ(where.timeMode, aerial::TimeMode::Solar);
+    EXPECT_EQ(where.longitudeDeg, 0.0);
+    EXPECT_EQ(where.utcOffsetHours, 0.0);
+    const double dec = aerial::solarDeclination(225.0);
+    const double lat = 38.0 * 3.14159265358979323846 / 180.0;
+    EXPECT_DOUBLE_EQ(aerial::sunPosition(where, 12.0).elevation,
+                     std::asin(std::sin(lat) * std::sin(dec) + std::cos(lat) * std::cos(dec)));
+    // A dated file round-trips its new fields.
+    const aerial::PresetLoadResult d = aerial::parsePreset(
+        R"({"version": 1, "location": {"longitude_deg": 8.5, "utc_offset_h": 2, "date": "2026-06-21",
+            "time_mode": "clock"}})");
+    ASSERT_TRUE(d.ok()) << joinIssues(d.errors);
+    EXPECT_EQ(d.preset->environment.location.date, "2026-06-21");
+    EXPECT_EQ(d.preset->environment.location.timeMode, aerial::TimeMode::Clock);
+    const aerial::PresetLoadResult again = aerial::parsePreset(aerial::presetToJson(*d.preset));
+    ASSERT_TRUE(again.ok());
+    EXPECT_TRUE(aerial::presetsIdentical(*again.preset, *d.preset));
 }
 
 TEST(Preset, MissingFieldsTakeTableDefaults) {
