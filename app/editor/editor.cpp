@@ -500,10 +500,12 @@ void Editor::printBench() const {
         frames_.benchSolveMs.size(), passMedian([](const renderer::PassTimes& t) { return t.total(); }),
         frames_.benchPasses.size());
     std::printf(
-        "    scene %.2f  sky %.2f  global fog %.2f  volumes %.2f  emitters %.2f  transparent %.2f  "
-        "particles %.2f\n",
+        "    scene %.2f  sky %.2f  clouds %.2f  cloud shadow %.2f  global fog %.2f  volumes %.2f  emitters %.2f  "
+        "transparent %.2f  particles %.2f\n",
         passMedian([](const renderer::PassTimes& t) { return t.scene; }),
         passMedian([](const renderer::PassTimes& t) { return t.sky; }),
+        passMedian([](const renderer::PassTimes& t) { return t.clouds; }),
+        passMedian([](const renderer::PassTimes& t) { return t.cloudShadow; }),
         passMedian([](const renderer::PassTimes& t) { return t.globalFog; }),
         passMedian([](const renderer::PassTimes& t) { return t.volumes; }),
         passMedian([](const renderer::PassTimes& t) { return t.emitters; }),
