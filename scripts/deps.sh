@@ -20,7 +20,7 @@ packages=(
   libglfw3-dev libimgui-dev
   # tests and benchmarks; the editor's window tests run under Xvfb
   # (python3-ephem: the independent sun and moon ephemeris of tests/cli/ephemeris_test.py)
-  libgtest-dev libbenchmark-dev python3 python3-jsonschema python3-ephem xvfb xauth
+  libgtest-dev libbenchmark-dev python3 python3-jsonschema python3-ephem xvfb xauth openexr
   # fuzzing the loaders: clang with libFuzzer (tests/fuzz)
   clang libclang-rt-14-dev
 )

@@ -13,7 +13,15 @@
 //       pixel (x, y) = table texel (column i = x, row j = y): the first line
 //       (y = 0) is the horizon, the last the zenith. Header attributes:
 //       aerialLight ("sun"/"moon"), aerialTimeHours, aerialLightAzimuthRad,
-//       aerialLightDirection (V3d), aerialMapping (the mapping in words).
+//       aerialLightDirection (V3d), aerialMapping (the mapping in words),
+//       aerialMieAnisotropy, aerialLightIlluminance (V3d, above the
+//       atmosphere) and aerialRadiance (how to turn a texel into radiance).
+//   sky_<NNN>_<HHMM>_radiance.exr
+//       the sky of both lights as plain RGB radiance (channels R, G, B, half
+//       float), equirectangular over the whole sphere with line 0 at the
+//       zenith (--radiance-size, default 256x128): a sky texture any engine
+//       and any RGBA-only EXR reader takes as it is. Header: the mapping in
+//       words, the Mie anisotropy, each light's direction and illuminance.
 //   manifest.json
 //       format, preset, steps and table mapping, and for every step: the
 //       time, the full evaluated state (sun, moon, every parameter, volumes,
@@ -106,11 +114,18 @@ constexpr const char* kColumnMapping =
     "the "
     "light's azimuth towards east; the azimuth wraps (column W = column 0) and column i equals column W - i";
 
+constexpr const char* kRadianceMapping =
+    "equirectangular over the whole sphere: pixel (x, y) of a W x H image looks along azimuth "
+    "phi = 2 pi (x + 0.5) / W from north (-Z) towards east (+X) and elevation el = pi/2 - pi (y + 0.5) / H "
+    "(line y = 0 at the zenith, the last line at the nadir); direction = (cos el sin phi, sin el, "
+    "-cos el cos phi); below the horizon the horizon's radiance (the far fog)";
+
 struct BakeOptions {
     std::string preset;
     std::string out;
     std::string step = "0.5h";
     std::string size = "128x64";
+    std::string radianceSize = "256x128";
     std::string compression = "zip";
     bool quiet = false;
 };
@@ -130,7 +145,7 @@ Imath::half toHalf(float value) {
 }
 
 void writeSkyExr(const fs::path& path, const SkyTable& table, const char* light, double timeHours,
-                 Imf::Compression compression) {
+                 double mieAnisotropy, const glm::dvec3& illuminanceSpace, Imf::Compression compression) {
     const int w = table.azimuthCount, h = table.elevationCount;
     constexpr std::size_t n = kChannelCount;
     std::vector<Imath::half> pixels(std::size_t(w) * std::size_t(h) * n);
@@ -157,6 +172,14 @@ void writeSkyExr(const fs::path& path, const SkyTable& table, const char* light,
                                                        table.lightDirection.z)));
             header.insert("aerialMapping",
                           Imf::StringAttribute(std::string(kRowMapping) + "; " + kColumnMapping));
+            header.insert("aerialMieAnisotropy", Imf::DoubleAttribute(mieAnisotropy));
+            header.insert(
+                "aerialLightIlluminance",
+                Imf::V3dAttribute(Imath::V3d(illuminanceSpace.x, illuminanceSpace.y, illuminanceSpace.z)));
+            header.insert("aerialRadiance",
+                          Imf::StringAttribute("L = illuminance (3/(16 pi) (1 + mu^2) rayleigh + "
+                                               "cornette_shanks(mu, mie_anisotropy) mie + multiple), mu = "
+                                               "dot(view, light direction)"));
             Imf::FrameBuffer frame;
             const std::size_t xStride = sizeof(Imath::half) * n, yStride = xStride * std::size_t(w);
             for (int k = 0; k < kChannelCount; ++k)
@@ -169,6 +192,54 @@ void writeSkyExr(const fs::path& path, const SkyTable& table, const char* light,
         } catch (const std::exception& e) {
             dataError("cannot encode " + path.string() + ": " + e.what());
         }
+    }
+    writeFileAtomically(path, encoded.str());
+}
+
+/// The sky of both lights as plain RGB radiance (half float, channels R, G,
+/// B), equirectangular (kRadianceMapping): a sky texture any engine and any
+/// RGBA-only EXR reader takes as it is.
+void writeRadianceExr(const fs::path& path, const SkyTable& sun, const SkyTable& moon,
+                      const PresetState& state, int width, int height, Imf::Compression compression) {
+    const double g = state.environment.atmosphere.mieAnisotropy;
+    std::vector<Imath::half> pixels(std::size_t(width) * std::size_t(height) * 3);
+    for (int y = 0; y < height; ++y) {
+        const double el = kPi / 2.0 - kPi * (y + 0.5) / height;
+        for (int x = 0; x < width; ++x) {
+            const double phi = 2.0 * kPi * (x + 0.5) / width;
+            const glm::dvec3 v(std::cos(el) * std::sin(phi), std::sin(el), -std::cos(el) * std::cos(phi));
+            const glm::dvec3 L = skyRadiance(sun, g, v, state.sunLight.illuminanceSpace) +
+                                 skyRadiance(moon, g, v, state.moonLight.illuminanceSpace);
+            for (int c = 0; c < 3; ++c)
+                pixels[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * 3 + std::size_t(c)] =
+                    toHalf(float(L[c]));
+        }
+    }
+    Imf::StdOSStream encoded;
+    try {
+        Imf::Header header(width, height);
+        header.compression() = compression;
+        for (const char* name : {"R", "G", "B"}) header.channels().insert(name, Imf::Channel(Imf::HALF));
+        header.insert("aerialTimeHours", Imf::DoubleAttribute(state.timeHours));
+        header.insert("aerialMapping", Imf::StringAttribute(kRadianceMapping));
+        header.insert("aerialMieAnisotropy", Imf::DoubleAttribute(g));
+        auto v3 = [](const glm::dvec3& v) { return Imf::V3dAttribute(Imath::V3d(v.x, v.y, v.z)); };
+        header.insert("aerialSunDirection", v3(state.sunLight.body.direction));
+        header.insert("aerialSunIlluminance", v3(state.sunLight.illuminanceSpace));
+        header.insert("aerialMoonDirection", v3(state.moonLight.body.direction));
+        header.insert("aerialMoonIlluminance", v3(state.moonLight.illuminanceSpace));
+        header.insert("aerialUnits", Imf::StringAttribute("scene-linear Rec.709 radiance, 1 = 5000 cd/m^2"));
+        Imf::FrameBuffer frame;
+        const std::size_t xStride = sizeof(Imath::half) * 3, yStride = xStride * std::size_t(width);
+        const char* names[3] = {"R", "G", "B"};
+        for (int c = 0; c < 3; ++c)
+            frame.insert(names[c],
+                         Imf::Slice(Imf::HALF, reinterpret_cast<char*>(pixels.data() + c), xStride, yStride));
+        Imf::OutputFile file(encoded, header);
+        file.setFrameBuffer(frame);
+        file.writePixels(height);
+    } catch (const std::exception& e) {
+        dataError("cannot encode " + path.string() + ": " + e.what());
     }
     writeFileAtomically(path, encoded.str());
 }
@@ -219,6 +290,8 @@ int runBake(const BakeOptions& options) {
     SkySolverDesc desc;
     parseTableSize(options.size, "--size", desc.azimuthCount, desc.elevationCount);
     const Imf::Compression compression = exrCompression(options.compression);
+    int radianceWidth = 0, radianceHeight = 0;
+    parseImageSize(options.radianceSize, "--radiance-size", 4096, radianceWidth, radianceHeight);
     Preset preset = loadPresetOrFail(options.preset, "bake");
     const Json presetInfo = {
         {"file", options.preset}, {"name", preset.name}, {"description", preset.description}};
@@ -252,13 +325,19 @@ int runBake(const BakeOptions& options) {
         index.insert(0, std::size_t(std::max(0, indexWidth - int(index.size()))), '0');
         const std::string stem = "sky_" + index + "_" + clock;
         const std::string sunFile = stem + "_sun.exr", moonFile = stem + "_moon.exr";
-        writeSkyExr(dir / sunFile, tables.sun(), "sun", t, compression);
-        writeSkyExr(dir / moonFile, tables.moon(), "moon", t, compression);
+        const double g = state.environment.atmosphere.mieAnisotropy;
+        writeSkyExr(dir / sunFile, tables.sun(), "sun", t, g, state.sunLight.illuminanceSpace, compression);
+        writeSkyExr(dir / moonFile, tables.moon(), "moon", t, g, state.moonLight.illuminanceSpace,
+                    compression);
+        const std::string radianceFile = stem + "_radiance.exr";
+        writeRadianceExr(dir / radianceFile, tables.sun(), tables.moon(), state, radianceWidth,
+                         radianceHeight, compression);
 
         Json step = {{"index", k}};
         step.update(stateToJson(state));
         step["sun"].update(lightBakeToJson(tables.sun(), sunFile));
         step["moon"].update(lightBakeToJson(tables.moon(), moonFile));
+        step["radiance_file"] = radianceFile;
         steps.push_back(std::move(step));
         progress.update(k + 1, formatTime(t), sunFile + ", " + moonFile);
     }
@@ -306,13 +385,25 @@ int runBake(const BakeOptions& options) {
            "luminance (10-90 % band of a log2 histogram), adapting at adapt_up_per_s / adapt_down_per_s; "
            "multiply radiance by nits_per_radiance_unit / (1.2 * 2^(EV100 - compensation_ev)) before tone "
            "mapping (aerial/exposure.hpp)"}}},
+        {"radiance",
+         {{"file_pattern", "sky_<index>_<HHMM>_radiance.exr (per step: radiance_file)"},
+          {"width", radianceWidth},
+          {"height", radianceHeight},
+          {"channels", {"R", "G", "B"}},
+          {"pixel_type", "half"},
+          {"mapping", kRadianceMapping},
+          {"values",
+           "scene-linear Rec.709 radiance of the sky (sun and moon, phase applied), ready to use as a "
+           "sky texture; the tables beside it hold the phase-less integrals"}}},
         {"clouds", cloudsToJson(compiled.preset().environment.clouds.seed, cloudy)},
         {"steps", steps}};
     writeText(dir / kManifestName, jsonText(manifest) + "\n");
     syncPath(dir, true);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::printf("baked %d steps (%d EXR files, %dx%d) and %s into %s in %.2f s\n", stepCount, 2 * stepCount,
-                desc.azimuthCount, desc.elevationCount, kManifestName, dir.string().c_str(), seconds);
+    std::printf(
+        "baked %d steps (%d EXR tables, %dx%d, and %d radiance EXRs, %dx%d) and %s into %s in %.2f s\n",
+        stepCount, 2 * stepCount, desc.azimuthCount, desc.elevationCount, stepCount, radianceWidth,
+        radianceHeight, kManifestName, dir.string().c_str(), seconds);
     return kExitOk;
 }
 
@@ -336,6 +427,9 @@ Command addBakeCommand(CLI::App& parent) {
     app->add_option("--size", options->size, "Sky table size: azimuth columns x elevation rows")
         ->type_name("WxH")
         ->capture_default_str();
+    app->add_option("--radiance-size", options->radianceSize,
+                    "Size of the per-step RGB radiance EXR (equirectangular, zenith on line 0)")
+        ->type_name("WxH");
     app->add_option("--compression", options->compression, "EXR compression (lossless): zip, piz or none")
         ->type_name("KIND")
         ->capture_default_str();

@@ -13,6 +13,7 @@ by hand (python3 has no OpenEXR module).
 """
 
 import argparse
+import re
 import base64
 import json
 import math
@@ -389,6 +390,68 @@ class Fog(unittest.TestCase):
         self.assertEqual(set(r["lights"]), {"sun", "moon"})
 
 
+class BakeRadiance(unittest.TestCase):
+    """The per-step RGB radiance EXR: a sky texture any engine reads."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.out = os.path.join(WORK, "bake_radiance")
+        # The tables at the size `aerial sky` solves (128x64), so the two agree.
+        code, _, err = run("bake", preset("hazy_sunset"), "--out", cls.out, "--step", "6h", "--radiance-size",
+                           "64x32", "--quiet")
+        assert code == 0, err
+        with open(os.path.join(cls.out, "manifest.json")) as f:
+            cls.manifest = json.load(f)
+
+    def test_manifest_names_the_files_and_the_mapping(self):
+        self.assertEqual(self.manifest["radiance"]["channels"], ["R", "G", "B"])
+        self.assertIn("line y = 0 at the zenith", self.manifest["radiance"]["mapping"])
+        for step in self.manifest["steps"]:
+            self.assertTrue(os.path.isfile(os.path.join(self.out, step["radiance_file"])), step["radiance_file"])
+
+    def test_openexr_tools_read_the_header(self):
+        exrheader = shutil.which("exrheader")
+        self.assertIsNotNone(exrheader, "exrheader (Debian package openexr, installed by scripts/deps.sh)")
+        step = self.manifest["steps"][3]  # 18:00
+        p = subprocess.run([exrheader, os.path.join(self.out, step["radiance_file"])], capture_output=True,
+                           text=True)
+        self.assertEqual(p.returncode, 0, p.stderr)
+        for line in ("aerialMieAnisotropy (type double)", "aerialSunIlluminance (type v3d)",
+                     "aerialSunDirection (type v3d)", "aerialMapping (type string)", "dataWindow (type box2i): (0 0) - (63 31)"):
+            self.assertIn(line, p.stdout)
+        channels = re.findall(r"^\s+([A-Za-z.]+), 16-bit floating-point", p.stdout, re.M)
+        self.assertEqual(sorted(channels), ["B", "G", "R"])
+        # The tables carry the anisotropy and the light's illuminance too.
+        p = subprocess.run([exrheader, os.path.join(self.out, step["sun"]["table_file"])], capture_output=True,
+                           text=True)
+        self.assertIn("aerialLightIlluminance (type v3d)", p.stdout)
+        self.assertIn("aerialMieAnisotropy (type double): 0.", p.stdout)
+
+    def test_an_rgba_only_reader_sees_the_sky_the_renderer_shows(self):
+        if not RGBA_PROBE:
+            self.skipTest("no --rgba-probe given")
+        step = self.manifest["steps"][3]  # 18:00, a low sun: colour varies across the sky
+        w, h = 64, 32
+        pixels = [(5, 2), (40, 9), (17, 14), (60, 15), (33, 0)]
+        p = subprocess.run([RGBA_PROBE, os.path.join(self.out, step["radiance_file"])] +
+                           ["%d,%d" % xy for xy in pixels], capture_output=True, text=True)
+        self.assertEqual(p.returncode, 0, p.stderr)
+        lines = p.stdout.splitlines()
+        self.assertEqual(lines[0], "%d %d" % (w, h))
+        for (x, y), line in zip(pixels, lines[1:]):
+            r, g, b, a = map(float, line.split()[2:])
+            self.assertEqual(a, 1.0)  # no alpha channel: the reader fills 1
+            phi = 2 * math.pi * (x + 0.5) / w
+            el = math.pi / 2 - math.pi * (y + 0.5) / h
+            d = (math.cos(el) * math.sin(phi), math.sin(el), -math.cos(el) * math.cos(phi))
+            sky = run_json(self, "sky", preset("hazy_sunset"), "--time", "18:00",
+                           "--dir=%r,%r,%r" % d)
+            ref = sky["table"]["radiance_rgb"]
+            for got, want in zip((r, g, b), ref):
+                # half float: 11 significant bits
+                self.assertAlmostEqual(got, want, delta=2e-3 * want + 1e-7, msg=(x, y, got, want))
+
+
 class Clouds(unittest.TestCase):
     RG = 6360000.0
 
@@ -533,7 +596,8 @@ class Bake(unittest.TestCase):
         self.assertEqual(code, 0, err)
         self.assertIn("baked 4 steps", out)
         files = sorted(os.listdir(out_dir))
-        self.assertEqual(len([f for f in files if f.endswith(".exr")]), 8, files)
+        self.assertEqual(len([f for f in files if f.endswith("_sun.exr") or f.endswith("_moon.exr")]), 8, files)
+        self.assertEqual(len([f for f in files if f.endswith("_radiance.exr")]), 4, files)
         self.assertIn("manifest.json", files)
         self.assertFalse([f for f in files if f.startswith(".")], "temporary files left behind")
 
@@ -567,6 +631,7 @@ class Bake(unittest.TestCase):
                 self.assertEqual(value.decode(), light)
                 self.assertEqual(len(step[light]["horizon_rayleigh"]), 3)
                 self.assertEqual(len(step[light]["horizon_multiple"]), 3)
+        referenced |= {step["radiance_file"] for step in manifest["steps"]}
         self.assertEqual(referenced, {f for f in files if f.endswith(".exr")})
         # A sunlit sky has higher orders at the horizon; the exposure says how to expose it.
         self.assertTrue(all(v > 0.0 for v in manifest["steps"][2]["sun"]["horizon_multiple"]))
@@ -1055,14 +1120,16 @@ class Day(unittest.TestCase):
 
 
 def main():
-    global AERIAL, ROOT, WORK, TEST_HOOKS
+    global AERIAL, ROOT, WORK, TEST_HOOKS, RGBA_PROBE
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--aerial", required=True, help="the aerial binary")
     parser.add_argument("--source-dir", required=True, help="the repository root")
     parser.add_argument("--work-dir", required=True, help="a scratch directory (emptied first)")
     parser.add_argument("--test-hooks", choices=["on", "off"], default="on",
                         help="whether aerial was built with AERIAL_TEST_HOOKS (default on)")
+    parser.add_argument("--rgba-probe", default="", help="tests/tools/exr_rgba_probe (RGBA-only EXR reader)")
     args, rest = parser.parse_known_args()
+    RGBA_PROBE = os.path.abspath(args.rgba_probe) if args.rgba_probe else ""
     AERIAL, ROOT, WORK = os.path.abspath(args.aerial), os.path.abspath(args.source_dir), os.path.abspath(
         args.work_dir)
     TEST_HOOKS = args.test_hooks == "on"
