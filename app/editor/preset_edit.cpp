@@ -67,19 +67,7 @@ std::size_t objectCount(const Preset& preset, ParamScope scope) {
     return 0;
 }
 
-std::string_view addressPrefix(ParamScope scope) {
-    switch (scope) {
-        case ParamScope::Volume:
-            return "volume";
-        case ParamScope::Emitter:
-            return "emitter";
-        case ParamScope::CloudVolume:
-            return "cloud_volume";
-        case ParamScope::Global:
-            return "";
-    }
-    return "";
-}
+std::string_view addressPrefix(ParamScope scope) { return scopeKey(scope); }
 
 std::optional<ParamRef> parseParamAddress(const Preset& preset, std::string_view address,
                                           std::string* error) {

@@ -621,6 +621,20 @@ std::string_view scopeName(ParamScope scope) {
     return "";
 }
 
+std::string_view scopeKey(ParamScope scope) {
+    switch (scope) {
+        case ParamScope::Global:
+            return "";
+        case ParamScope::Volume:
+            return "volume";
+        case ParamScope::Emitter:
+            return "emitter";
+        case ParamScope::CloudVolume:
+            return "cloud_volume";
+    }
+    return "";
+}
+
 std::string_view interpolationName(Interpolation interpolation) {
     return kInterpolationNames[std::size_t(interpolation)];
 }

@@ -33,19 +33,7 @@ bool detail::validId(sv id) {
     return true;
 }
 
-sv detail::trackObjectKey(ParamScope scope) {
-    switch (scope) {
-        case ParamScope::Global:
-            return "";
-        case ParamScope::Volume:
-            return "volume";
-        case ParamScope::Emitter:
-            return "emitter";
-        case ParamScope::CloudVolume:
-            return "cloud_volume";
-    }
-    return "";
-}
+sv detail::trackObjectKey(ParamScope scope) { return scopeKey(scope); }
 
 std::string detail::rangeText(const ParamDesc& p) {
     return formatDouble(p.minValue) + ".." + formatDouble(p.maxValue);

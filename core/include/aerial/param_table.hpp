@@ -131,6 +131,11 @@ const ParamDesc* findParam(ParamScope scope, std::string_view path);
 /// cloud volume parameter \"x\"").
 std::string_view scopeName(ParamScope scope);
 
+/// The key a scope's objects go by in files and addresses: "volume",
+/// "emitter", "cloud_volume" (a track's object key, the editor's address
+/// prefix); "" for Global.
+std::string_view scopeKey(ParamScope scope);
+
 /// JSON spelling of enums (the same lists the table uses).
 std::string_view interpolationName(Interpolation interpolation);
 bool parseInterpolation(std::string_view name, Interpolation& out);
