@@ -37,7 +37,9 @@
 //      scene, transparent and particle lighting multiply the sun and moon by
 //      its visibility;
 //   2b. (clouds only) the cloud layer, ray-marched per pixel over the sky
-//      and the scene, before the global fog (clouds.glsl);
+//      and the scene, before the global fog (clouds.glsl); or, with
+//      FrameDesc::cloudQuality Amortised, one pixel per block traced and the
+//      rest reprojected from the previous frames (cloud_reconstruct.glsl);
 //   7. soft fog particles (SceneDesc::sprites), back to front, faded by the
 //      scene depth; global fog per vertex, the volumes' and emitters' fog
 //      from one CPU query per sprite (at its centre).
