@@ -18,6 +18,10 @@
 //     ratios (marched / analytic), and the largest
 //     per-pixel difference between the two frames relative to the pixel
 //     (max over channels |L_analytic - L_marched| / max(L_marched, 1e-3)).
+//   CloudsReferenceVsAmortised/W/H: the cloud layer's pass, the
+//     full-resolution reference against CloudQuality::Amortised (4 x 4
+//     blocks, still view, and its reset frame) side by side in one run, at
+//     320 x 180 and 1280 x 720: each pass's wall time and the ratios.
 //
 //   build/release/bench/aerial_bench_renderer --benchmark_counters_tabular=true
 #include <aerial/evaluate.hpp>
@@ -220,5 +224,74 @@ void FogVolumesAnalyticVsMarched(benchmark::State& state) {
     state.counters["volumes_drawn"] = s.renderer->stats().volumesDrawn;
 }
 BENCHMARK(FogVolumesAnalyticVsMarched)->Unit(benchmark::kMillisecond)->Iterations(6);
+
+/// The cloud pass, reference against amortised, at width x height
+/// (range(0), range(1)) with a partly cloudy layer (coverage 0.6, type 0.7)
+/// over the default view tilted up at the sky; both in one run. The
+/// amortised path (4 x 4 blocks) is timed in three states: a reset frame
+/// (the first after a jump: estimates everywhere), a still frame after 16
+/// still ones (the steady state of a viewport at rest: every pixel traced
+/// or kept), and a frame of a slow pan (history reprojected and clamped).
+/// Counters [ms]: the cloud pass's wall time between glFinish calls (trace
+/// and reconstruction together), and the ratios reference / amortised.
+void CloudsReferenceVsAmortised(benchmark::State& state) {
+    Setup& s = *setup();
+    if (!s.error.empty()) {
+        state.SkipWithError(s.error.c_str());
+        return;
+    }
+    aerial::PresetState cloudy = s.state;
+    cloudy.environment.clouds.coverage = 0.6;
+    cloudy.environment.clouds.type = 0.7;
+    const int w = int(state.range(0)), h = int(state.range(1));
+    aerial::renderer::Camera camera = s.camera;
+    camera.aspect = double(w) / h;
+    camera.target = camera.eye + glm::dvec3(0.0, 130.0, -520.0);
+    FrameDesc reference;
+    reference.width = w;
+    reference.height = h;
+    reference.gpuTimers = true;
+    FrameDesc amortised = reference;
+    amortised.cloudQuality = aerial::renderer::CloudQuality::Amortised;
+    FrameDesc reset = amortised;
+    reset.cloudResetHistory = true;
+    auto cloudMs = [&](const FrameDesc& frame, const aerial::renderer::Camera& view) {
+        s.renderer->render(view, cloudy, frame);
+        return s.renderer->stats().wallMilliseconds.clouds;
+    };
+    cloudMs(reference, camera);  // the noise upload, llvmpipe's shader compiles
+    cloudMs(reset, camera);
+    cloudMs(amortised, camera);
+    double referenceMs = 0.0, stillMs = 0.0, resetMs = 0.0, panMs = 0.0;
+    for (auto _ : state) {
+        referenceMs += cloudMs(reference, camera);
+        resetMs += cloudMs(reset, camera);
+        for (int k = 0; k < 16; ++k) cloudMs(amortised, camera);  // every pixel traced once
+        stillMs += cloudMs(amortised, camera);
+        // Panning 0.2 deg per frame: the history reprojected and clamped.
+        aerial::renderer::Camera pan = camera;
+        for (int k = 1; k <= 4; ++k) {
+            const double a = 0.0035 * k;
+            const glm::dvec3 d = camera.target - camera.eye;
+            pan.target = camera.eye + glm::dvec3(d.x * std::cos(a) - d.z * std::sin(a), d.y,
+                                                 d.x * std::sin(a) + d.z * std::cos(a));
+            const double ms = cloudMs(amortised, pan);
+            if (k == 4) panMs += ms;
+        }
+    }
+    const double n = double(state.iterations());
+    state.counters["reference_ms"] = referenceMs / n;
+    state.counters["still_ms"] = stillMs / n;
+    state.counters["pan_ms"] = panMs / n;
+    state.counters["reset_ms"] = resetMs / n;
+    state.counters["still_ratio"] = stillMs > 0.0 ? referenceMs / stillMs : 0.0;
+    state.counters["pan_ratio"] = panMs > 0.0 ? referenceMs / panMs : 0.0;
+    state.counters["reset_ratio"] = resetMs > 0.0 ? referenceMs / resetMs : 0.0;
+}
+BENCHMARK(CloudsReferenceVsAmortised)
+    ->Args({320, 180})
+    ->Args({1280, 720})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(3);
 
 }  // namespace

@@ -8,6 +8,8 @@
 //   skyAmbient), CloudBlock and the noise (common/clouds.glsl), the sky
 //   tables (units 0..3, the air's colour), uLinearDepth (unit 4), the
 //   emitters (binding 2).
+// uTrace (location 0): zero for the reference; the amortised path's trace
+//   (block size, and which pixel of each block) otherwise, see main.
 // Output (location 0), blended with glBlendFunc(GL_ONE, GL_SRC_ALPHA):
 //   rgb = S (the clouds' radiance reaching the eye), a = T (their
 //   transmittance), so L <- L T + S: the sky and the scene behind are seen
@@ -79,6 +81,10 @@
 layout(binding = 4) uniform sampler2D uLinearDepth;
 
 in vec3 vFarRay;
+/// (0, 0, 0): the reference, one fragment per pixel. (x, y, n): the
+/// amortised trace into a target of one texel per n x n block, marching
+/// the block's pixel (x, y).
+layout(location = 0) uniform ivec3 uTrace;
 layout(location = 0) out vec4 outColour;
 
 const int kOctaves = 3;
@@ -172,9 +178,18 @@ vec3 lightScattering(vec3 p, vec3 l, vec3 E, float mu) {
 }
 
 void main() {
-    float farLength = length(vFarRay);
-    vec3 v = vFarRay / farLength;
-    float depth01 = texelFetch(uLinearDepth, ivec2(gl_FragCoord.xy), 0).r;
+    // The amortised path's trace (cloud_amortised.cpp): this fragment is one
+    // block of uTrace.z x uTrace.z pixels and marches the ray of the block's
+    // pixel uTrace.xy (clamped to the frame), with that pixel's depth.
+    vec3 farRay = vFarRay;
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    if (uTrace.z > 0) {
+        pixel = min(pixel * uTrace.z + uTrace.xy, ivec2(frame.viewportSize) - 1);
+        farRay = farRayAtFragment(vec2(pixel) + 0.5);
+    }
+    float farLength = length(farRay);
+    vec3 v = farRay / farLength;
+    float depth01 = texelFetch(uLinearDepth, pixel, 0).r;
     float tMax = depth01 >= 1.0 ? 1.0e30 : depth01 * farLength;
     vec3 o = frame.eye;
 

@@ -1,7 +1,9 @@
 // cloud_pass.cpp — pass 2b: the volumetric cloud layer, ray-marched per
 // pixel at full resolution (the reference path; shaders/clouds.glsl and
-// shaders/common/clouds.glsl), and the cloud resources every pass shares:
-// the noise textures of the layer's seed and the CloudBlock.
+// shaders/common/clouds.glsl) or, with FrameDesc::cloudQuality Amortised
+// and lit output, the amortised path of cloud_amortised.cpp; and the cloud
+// resources every pass shares: the noise textures of the layer's seed and
+// the CloudBlock.
 //
 // Reads:  FrameBlock (eye, corner rays, lights, sky ambient), CloudBlock
 //         (binding 4), the noise (units 8, 9), linear depth (unit 4), the
@@ -29,6 +31,13 @@ namespace {
 bool runs(const FrameContext& f) { return f.cloudsDrawn(); }
 
 void draw(FrameContext& f) {
+    if (f.desc.cloudOutput == CloudOutput::Lit && f.desc.cloudQuality == CloudQuality::Amortised) {
+        drawAmortisedClouds(f);
+        return;
+    }
+    f.stats.cloudHistory = CloudHistoryStats{};
+    forgetCloudHistory(f.gpu);
+    glProgramUniform3i(f.gpu.shaders.program(Pass::Clouds), 0, 0, 0, 0);  // the reference (uTrace)
     if (f.desc.cloudOutput == CloudOutput::Transmittance) {
         compositeFullscreen(f.gpu, Pass::Clouds, GL_ONE, GL_ZERO);
     } else {
@@ -162,6 +171,7 @@ void destroyCloudResources(RendererResources& gpu) {
     glDeleteBuffers(1, &gpu.cloudBuffer);
     gpu.cloudShape = gpu.cloudDetail = gpu.cloudShadowMap = gpu.cloudShadowTarget = gpu.cloudBuffer = 0;
     gpu.cloudSeed = -1;
+    destroyCloudHistory(gpu);
 }
 
 }  // namespace aerial::renderer::detail

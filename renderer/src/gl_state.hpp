@@ -40,7 +40,7 @@ private:
     GLint depthFunc_ = GL_LESS, cullMode_ = GL_BACK, frontFace_ = GL_CCW;
     GLint activeTexture_ = GL_TEXTURE0, packAlignment_ = 4;
     /// Units 0..7 (2D) and the cloud units 8, 9 (3D) and 10 (2D).
-    static constexpr unsigned kSavedUnits = 11;
+    static constexpr unsigned kSavedUnits = 14;
     static GLenum savedTarget(unsigned unit) {
         return unit == 8 || unit == 9 ? GL_TEXTURE_3D : GL_TEXTURE_2D;
     }

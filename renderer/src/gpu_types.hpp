@@ -304,5 +304,9 @@ constexpr unsigned kTextureUnitCount = 8;
 constexpr unsigned kCloudShapeUnit = 8;
 constexpr unsigned kCloudDetailUnit = 9;
 constexpr unsigned kCloudShadowUnit = 10;
+/// The amortised cloud path's inputs (cloud_reconstruct.glsl).
+constexpr unsigned kCloudTraceUnit = 11;
+constexpr unsigned kCloudHistoryUnit = 12;
+constexpr unsigned kPreviousDepthUnit = 13;
 
 }  // namespace aerial::renderer::detail

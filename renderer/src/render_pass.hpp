@@ -64,6 +64,26 @@ struct RendererResources {
     std::int64_t cloudSeed = -1;  ///< seed of the uploaded noise (-1: none)
     GLuint cloudShadowMap = 0, cloudShadowTarget = 0;
     GLuint cloudBuffer = 0;
+    /// The amortised cloud path (cloud_amortised.cpp): its targets and what
+    /// it remembers of the previous frame.
+    struct CloudHistory {
+        int width = 0, height = 0, block = 0;  ///< of the targets (0: none)
+        ColourPrecision precision = ColourPrecision::Half;
+        GLuint trace = 0, traceTarget = 0;  ///< one sample per block: (S, T)
+        /// Full resolution, ping-pong: (S, T) of a traced or reprojected
+        /// pixel, (S, T + 2) of an estimate; written with the colour.
+        GLuint history[2] = {}, target[2] = {};
+        GLuint previousDepth = 0;  ///< the previous frame's linear depth
+        int current = 0;           ///< history[current] is the last frame's
+        bool valid = false;        ///< history[current] holds a frame to reuse
+        int sampleIndex = 0;       ///< of the last frame
+        glm::dmat4 clipFromWorld{1.0};
+        glm::dvec3 eye{0.0}, forward{0.0, 0.0, -1.0};
+        double timeHours = 0.0;
+        FrameBlock frameBlock;
+        CloudBlock cloudBlock;
+        std::vector<double> emitters;  ///< the emitters' numbers, to see a change
+    } cloudHistory;
 };
 
 /// One frame as the passes see it.
@@ -177,5 +197,14 @@ CloudBlock makeCloudBlock(const CloudField& field, const PresetState& state, con
 /// (cloud_pass.cpp); creates the shadow map on first use.
 void prepareCloudResources(RendererResources& gpu, const CloudField& field);
 void destroyCloudResources(RendererResources& gpu);
+
+/// The amortised cloud path (cloud_amortised.cpp): the trace of one pixel
+/// per block, then the reconstruction that reprojects the history and
+/// composites (L <- L T + S) in one draw. Decides itself whether the
+/// history is kept (FrameDesc's thresholds) and reports in stats.cloudHistory.
+void drawAmortisedClouds(FrameContext& frame);
+/// Forgets the history (the targets stay).
+void forgetCloudHistory(RendererResources& gpu);
+void destroyCloudHistory(RendererResources& gpu);
 
 }  // namespace aerial::renderer::detail

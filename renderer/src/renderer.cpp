@@ -236,6 +236,7 @@ void Renderer::setSky(const SkyTable& sunTable, const SkyTable& moonTable) {
     s.moonTable = moonTable;
     s.sunSky.upload(sunTable);
     s.moonSky.upload(moonTable);
+    detail::forgetCloudHistory(s);  // the clouds' ambient light changed
     detail::drainGlErrors(s.desc.logger, "Renderer::setSky");
 }
 
@@ -335,6 +336,7 @@ void Renderer::Impl::render(const Camera& camera, const PresetState& state, cons
     timer.beginFrame(frameDesc.gpuTimers);
     for (const detail::RenderPass* pass : kFramePasses) timer.run(*pass, frame);
     timer.endFrame(stats);
+    if (!frame.cloudsDrawn()) detail::forgetCloudHistory(*this);  // the next amortised frame starts afresh
 }
 
 ShaderReloadResult Renderer::reloadShaders() { return reloadShaders(impl_->desc.shaderDirectory); }

@@ -3,7 +3,10 @@
 // pixel against cloudTransmittance on the same rays and scene distances
 // (1e-3), the cloud shadow map against cloudSunVisibility at its texels'
 // ground points (2e-3), coverage 0 leaving the frame bit-identical, and no
-// NaN/Inf with extreme parameters.
+// NaN/Inf with extreme parameters; the amortised path against the reference
+// (sky PSNR on linear values after still frames and during playback), and its
+// history forgotten on time, camera and parameter jumps (the frame after the
+// jump bit-identical to a fresh renderer's first frame).
 #include "gl_fixture.hpp"
 
 #include <aerial/clouds.hpp>
@@ -16,6 +19,8 @@
 #include <cstdio>
 #include <cstring>
 #include <limits>
+#include <memory>
+#include <string>
 
 namespace aerial::test {
 namespace {
@@ -294,26 +299,237 @@ TEST_F(GlTest, ExtremeCloudsGiveFinitePixels) {
                                      state.moonLight.body.direction, 32, 16);
         r.setSky(sky.sun, sky.moon);
         for (const renderer::Camera& camera : cameras) {
-            renderer::FrameDesc frame;
-            frame.width = 96;
-            frame.height = 54;
-            frame.cloudSteps = 24;
-            r.render(camera, state, frame);
-            const renderer::Image image = r.readColour();
-            int bad = 0;
-            double brightest = 0.0;
-            for (float p : image.pixels) {
-                bad += std::isfinite(p) ? 0 : 1;
-                brightest = std::max(brightest, double(p));
+            for (auto quality : {renderer::CloudQuality::Reference, renderer::CloudQuality::Amortised}) {
+                renderer::FrameDesc frame;
+                frame.width = 96;
+                frame.height = 54;
+                frame.cloudSteps = 24;
+                frame.cloudQuality = quality;
+                r.render(camera, state, frame);
+                r.render(camera, state, frame);  // amortised: with history
+                const renderer::Image image = r.readColour();
+                int bad = 0;
+                double brightest = 0.0;
+                for (float p : image.pixels) {
+                    bad += std::isfinite(p) ? 0 : 1;
+                    brightest = std::max(brightest, double(p));
+                }
+                EXPECT_EQ(bad, 0) << hours << " h, eye y " << camera.eye.y;
+                EXPECT_LE(brightest, 65504.0);
+                ++frames;
             }
-            EXPECT_EQ(bad, 0) << hours << " h, eye y " << camera.eye.y;
-            EXPECT_LE(brightest, 65504.0);
-            ++frames;
         }
     }
     std::printf("[ measured ] %d frames of extreme clouds without NaN/Inf\n", frames);
     EXPECT_TRUE(log.errors.empty()) << log.errors.front();
     EXPECT_EQ(r.stats().glErrors, 0);
+}
+
+// --- The amortised path (FrameDesc::cloudQuality Amortised) ---------------
+
+constexpr int kAmortisedWidth = 320;
+constexpr int kAmortisedHeight = 180;
+
+renderer::FrameDesc amortisedFrame(renderer::CloudQuality quality, int block = 4) {
+    renderer::FrameDesc frame = floatFrame();
+    frame.width = kAmortisedWidth;
+    frame.height = kAmortisedHeight;
+    frame.cloudQuality = quality;
+    frame.cloudAmortisedBlock = block;
+    return frame;
+}
+
+/// PSNR [dB] of `image` against `reference` over the sky pixels (linear
+/// depth 1: where the clouds are seen; the scene pixels hold no cloud from
+/// this view), on the scene-linear float RGB values (no tone mapping), with
+/// the peak the reference's largest channel there: 10 log10(peak^2 / MSE).
+/// 1000 when identical.
+double skyPsnr(const renderer::Image& image, const renderer::Image& reference, const renderer::Image& depth) {
+    double squares = 0.0, peak = 0.0;
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < depth.pixels.size(); ++i) {
+        if (depth.pixels[i] < 1.0f) continue;
+        for (int c = 0; c < 3; ++c) {
+            const double d = double(image.pixels[i * 4 + c]) - double(reference.pixels[i * 4 + c]);
+            squares += d * d;
+            peak = std::max(peak, double(reference.pixels[i * 4 + c]));
+        }
+        count += 3;
+    }
+    if (count == 0 || squares == 0.0) return 1000.0;
+    return 10.0 * std::log10(peak * peak / (squares / double(count)));
+}
+
+/// Largest |a - b| over every channel of two frames.
+double maxDifference(const renderer::Image& a, const renderer::Image& b) {
+    double out = a.pixels.size() == b.pixels.size() ? 0.0 : 1e30;
+    for (std::size_t i = 0; i < std::min(a.pixels.size(), b.pixels.size()); ++i) {
+        out = std::max(out, std::fabs(double(a.pixels[i]) - double(b.pixels[i])));
+    }
+    return out;
+}
+
+class AmortisedCloudTest : public GlTest {
+protected:
+    void SetUp() override {
+        GlTest::SetUp();
+        state_ = cloudyState(12.0);
+        sky_ = solveSky(state_.environment.atmosphere, state_.sunLight.body.direction,
+                        state_.moonLight.body.direction, 32, 16);
+    }
+    std::unique_ptr<renderer::Renderer> makeRenderer() {
+        auto r = std::make_unique<renderer::Renderer>(rendererDesc());
+        EXPECT_TRUE(r->valid()) << r->error();
+        r->setScene(renderer::makeBuiltinScene());
+        r->setSky(sky_.sun, sky_.moon);
+        return r;
+    }
+    /// Looking up from the valley at the partly cloudy layer.
+    const renderer::Camera camera_ = makeCamera({0.0, 30.0, 120.0}, {0.0, 160.0, -400.0}, 4000.0, 1.2);
+    PresetState state_;
+    SkyPair sky_;
+};
+
+TEST_F(AmortisedCloudTest, StillViewConvergesOnTheReference) {
+    auto r = makeRenderer();
+    r->render(camera_, state_, amortisedFrame(renderer::CloudQuality::Reference));
+    const renderer::Image reference = r->readColour();
+    const renderer::Image depth = r->readLinearDepth();
+    EXPECT_FALSE(r->stats().cloudHistory.amortised);
+    for (int block : {2, 4}) {
+        const renderer::FrameDesc frame = amortisedFrame(renderer::CloudQuality::Amortised, block);
+        double psnr[17] = {};
+        for (int k = 0; k < 17; ++k) {
+            r->render(camera_, state_, frame);
+            const renderer::CloudHistoryStats& h = r->stats().cloudHistory;
+            EXPECT_TRUE(h.amortised);
+            EXPECT_EQ(h.historyUsed, k > 0) << k;
+            EXPECT_EQ(h.still, k > 0) << k;
+            EXPECT_EQ(h.sampleIndex, k % (block * block));
+            psnr[k] = skyPsnr(r->readColour(), reference, depth);
+        }
+        std::printf(
+            "[ measured ] amortised clouds, %dx%d blocks, still view, sky PSNR vs reference after frames "
+            "1, 2, 4, 8, 16: %.1f, %.1f, %.1f, %.1f, %.1f dB\n",
+            block, block, psnr[0], psnr[1], psnr[3], psnr[7], psnr[15]);
+        EXPECT_GE(psnr[7], 35.0) << block << "x" << block << " blocks after 8 frames";
+        EXPECT_GE(psnr[block * block - 1], 60.0) << "every pixel traced once: the reference itself";
+        r->render(camera_, state_, amortisedFrame(renderer::CloudQuality::Reference));  // forgets
+    }
+    EXPECT_TRUE(log.errors.empty()) << log.errors.front();
+    EXPECT_EQ(r->stats().glErrors, 0);
+}
+
+TEST_F(AmortisedCloudTest, PlaybackKeepsTheHistoryAndStaysClose) {
+    // One second of preset time per frame (playback): the history is kept,
+    // moved with the wind, clamped to the new samples. Measured against the
+    // reference of each frame's time; the bound guards against ghosting
+    // (a stale history drops far lower), it is not the converged quality.
+    for (int block : {2, 4}) {
+        auto r = makeRenderer();
+        const renderer::FrameDesc frame = amortisedFrame(renderer::CloudQuality::Amortised, block);
+        double worst = 1000.0;
+        for (int k = 0; k < 12; ++k) {
+            PresetState state = cloudyState(12.0 + k / 3600.0);
+            r->render(camera_, state, frame);
+            EXPECT_EQ(r->stats().cloudHistory.historyUsed, k > 0) << k;
+            EXPECT_FALSE(r->stats().cloudHistory.still);
+            if (k < 8) continue;
+            const renderer::Image amortised = r->readColour();
+            auto reference = makeRenderer();
+            reference->render(camera_, state, amortisedFrame(renderer::CloudQuality::Reference));
+            worst =
+                std::min(worst, skyPsnr(amortised, reference->readColour(), reference->readLinearDepth()));
+        }
+        std::printf(
+            "[ measured ] amortised clouds, %dx%d blocks, during playback (1 s per frame, wind 15 m/s): "
+            "worst sky PSNR %.1f dB over frames 9..12\n",
+            block, block, worst);
+        EXPECT_GE(worst, 25.0) << block;
+    }
+}
+
+// After a jump the frame must equal a fresh renderer's first frame of the
+// same view (no history at all): bit for bit.
+TEST_F(AmortisedCloudTest, TimeJumpForgetsTheOldClouds) {
+    auto r = makeRenderer();
+    const renderer::FrameDesc frame = amortisedFrame(renderer::CloudQuality::Amortised);
+    for (int k = 0; k < 8; ++k) r->render(camera_, state_, frame);
+    const PresetState later = cloudyState(13.0);
+    r->render(camera_, later, frame);
+    EXPECT_STREQ(r->stats().cloudHistory.resetReason, "time jump");
+    const renderer::Image jumped = r->readColour();
+    auto fresh = makeRenderer();
+    fresh->render(camera_, later, frame);
+    const double difference = maxDifference(jumped, fresh->readColour());
+    std::printf("[ measured ] time jump 12:00 -> 13:00: max |jumped - fresh| = %.3g\n", difference);
+    EXPECT_EQ(difference, 0.0) << "no trace of the old clouds";
+
+    // Without the rejection the old clouds would stay (the test can see them).
+    auto ghost = makeRenderer();
+    renderer::FrameDesc lax = frame;
+    lax.cloudHistoryMaxTimeStepHours = 100.0;
+    for (int k = 0; k < 8; ++k) ghost->render(camera_, state_, lax);
+    ghost->render(camera_, later, lax);
+    EXPECT_TRUE(ghost->stats().cloudHistory.historyUsed);
+    EXPECT_GT(maxDifference(ghost->readColour(), fresh->readColour()), 0.0);
+
+    // Frames until the image is within 35 dB of the reference after the jump.
+    auto reference = makeRenderer();
+    reference->render(camera_, later, amortisedFrame(renderer::CloudQuality::Reference));
+    const renderer::Image truth = reference->readColour();
+    const renderer::Image depth = reference->readLinearDepth();
+    for (int block : {2, 4}) {
+        renderer::FrameDesc f = frame;
+        f.cloudAmortisedBlock = block;
+        for (int k = 0; k < 8; ++k) r->render(camera_, state_, f);
+        int frames = 0;
+        double psnr = 0.0;
+        while (frames < 32 && psnr < 35.0) {
+            r->render(camera_, later, f);
+            psnr = skyPsnr(r->readColour(), truth, depth);
+            ++frames;
+        }
+        std::printf("[ measured ] %dx%d blocks: %d frames after a time jump to reach 35 dB (%.1f dB)\n",
+                    block, block, frames, psnr);
+        EXPECT_LE(frames, block * block);
+    }
+    EXPECT_TRUE(log.errors.empty()) << log.errors.front();
+}
+
+TEST_F(AmortisedCloudTest, CameraJumpAndResetForgetTheOldClouds) {
+    auto r = makeRenderer();
+    const renderer::FrameDesc frame = amortisedFrame(renderer::CloudQuality::Amortised);
+    const renderer::Camera elsewhere = makeCamera({400.0, 60.0, -300.0}, {700.0, 300.0, -900.0}, 4000.0, 1.2);
+    const renderer::Camera turned = makeCamera({0.0, 30.0, 120.0}, {500.0, 200.0, 0.0}, 4000.0, 1.2);
+    auto fresh = makeRenderer();
+    for (const renderer::Camera* jump : {&elsewhere, &turned}) {
+        for (int k = 0; k < 8; ++k) r->render(camera_, state_, frame);
+        r->render(*jump, state_, frame);
+        EXPECT_STREQ(r->stats().cloudHistory.resetReason, "camera jump");
+        fresh->render(*jump, state_, amortisedFrame(renderer::CloudQuality::Reference));  // forgets
+        fresh->render(*jump, state_, frame);
+        EXPECT_EQ(maxDifference(r->readColour(), fresh->readColour()), 0.0) << "eye " << jump->eye.x;
+    }
+    // FrameDesc::cloudResetHistory (the editor's scrub) and a parameter edit.
+    for (int k = 0; k < 8; ++k) r->render(camera_, state_, frame);
+    renderer::FrameDesc reset = frame;
+    reset.cloudResetHistory = true;
+    r->render(camera_, state_, reset);
+    EXPECT_STREQ(r->stats().cloudHistory.resetReason, "requested");
+    PresetState edited = state_;
+    edited.environment.clouds.coverage = 0.45;
+    r->render(camera_, edited, frame);
+    EXPECT_STREQ(r->stats().cloudHistory.resetReason, "cloud parameters");
+    fresh->render(camera_, edited, amortisedFrame(renderer::CloudQuality::Reference));
+    fresh->render(camera_, edited, frame);
+    EXPECT_EQ(maxDifference(r->readColour(), fresh->readColour()), 0.0);
+    // A small step keeps it.
+    const renderer::Camera nudged = makeCamera({1.0, 30.0, 120.0}, {0.0, 160.0, -400.0}, 4000.0, 1.2);
+    r->render(nudged, edited, frame);
+    EXPECT_TRUE(r->stats().cloudHistory.historyUsed);
+    EXPECT_TRUE(log.errors.empty()) << log.errors.front();
+    EXPECT_EQ(r->stats().glErrors, 0);
 }
 
 /// The pass's cost (run by hand: --gtest_also_run_disabled_tests).

@@ -37,7 +37,9 @@
 //      scene, transparent and particle lighting multiply the sun and moon by
 //      its visibility;
 //   2b. (clouds only) the cloud layer, ray-marched per pixel over the sky
-//      and the scene, before the global fog (clouds.glsl);
+//      and the scene, before the global fog (clouds.glsl); or, with
+//      FrameDesc::cloudQuality Amortised, one pixel per block traced and the
+//      rest reprojected from the previous frames (cloud_reconstruct.glsl);
 //   7. soft fog particles (SceneDesc::sprites), back to front, faded by the
 //      scene depth; global fog per vertex, the volumes' and emitters' fog
 //      from one CPU query per sprite (at its centre).
@@ -130,6 +132,19 @@ enum class CloudOutput {
     Transmittance,
 };
 
+/// How the cloud pass spends its time (CloudOutput::Lit only; the
+/// transmittance test mode is always the reference).
+enum class CloudQuality {
+    /// Every pixel ray-marched every frame (default: `aerial render`, the
+    /// goldens, comparisons).
+    Reference,
+    /// One pixel of each FrameDesc::cloudAmortisedBlock^2 block traced per frame,
+    /// the others reprojected from the previous frames (Schneider 2015/2017,
+    /// Nubis: 1/16 of the pixels per frame) and converging on the reference
+    /// for a still view; see cloud_amortised.cpp. The editor's viewport.
+    Amortised,
+};
+
 /// How the fog-volume pass integrates a volume's density.
 enum class VolumeMethod {
     Analytic,      ///< the closed form (default; DESIGN.md "Fog volumes")
@@ -160,6 +175,30 @@ struct FrameDesc {
     /// Samples of the cloud pass's view-ray march (core's midpoint march:
     /// max(1, round(steps x share)) per shell segment), 1..1024. Default 64.
     int cloudSteps = 64;
+    CloudQuality cloudQuality = CloudQuality::Reference;
+    /// CloudQuality::Amortised: the side of the block of which one pixel is
+    /// traced per frame [px], 2 (a quarter of the pixels, converges in 4
+    /// still frames) or 4 (a sixteenth, as Nubis; converges in 16). Other
+    /// values are clamped to 2..4 and 3 is taken as 4. Default 4.
+    int cloudAmortisedBlock = 4;
+    /// CloudQuality::Amortised: forget the clouds of the previous frames
+    /// this frame (the editor sets it while the time is scrubbed, a key is
+    /// edited or the view is cut).
+    bool cloudResetHistory = false;
+    /// CloudQuality::Amortised: the history is also forgotten by itself when,
+    /// since the previous frame, the time of day moved by more than
+    /// cloudHistoryMaxTimeStepHours [h] (default 2 min: playback at normal
+    /// speed steps far less; a scrub or jump steps more), the eye moved by
+    /// more than cloudHistoryMaxMoveM [m] (default 25), or the view turned
+    /// by more than cloudHistoryMaxTurnRad [rad] (default 0.26, 15 deg); and
+    /// when the cloud block (CloudParams, volumes, air, steps) changed while
+    /// the time stood still (an edit; keyed parameters drifting during
+    /// playback are left to the neighbourhood clamp), the size or precision
+    /// changed, the sky was re-solved, or the previous frame drew no
+    /// amortised clouds.
+    double cloudHistoryMaxTimeStepHours = 2.0 / 60.0;
+    double cloudHistoryMaxMoveM = 25.0;
+    double cloudHistoryMaxTurnRad = 0.26;
 };
 
 struct ShaderReloadResult {
@@ -198,9 +237,25 @@ struct CloudShadowStats {
     glm::dvec3 toLight{0.0, 1.0, 0.0};  ///< unit direction marched (the brighter of sun and moon)
 };
 
+/// What the amortised cloud path did in the last frame (RenderStats).
+struct CloudHistoryStats {
+    bool amortised = false;  ///< the frame drew CloudQuality::Amortised clouds
+    /// The previous frames' clouds were used (false: reset this frame).
+    bool historyUsed = false;
+    /// Nothing changed since the previous frame (camera, time, clouds, sky,
+    /// emitters): the history is exact, not clamped.
+    bool still = false;
+    /// Which pixel of each block was traced: 0..cloudAmortisedBlock^2 - 1, 0 after a reset.
+    int sampleIndex = 0;
+    /// Why the history was forgotten ("" when used): "first frame",
+    /// "requested", "time jump", "camera jump", "cloud parameters".
+    const char* resetReason = "";
+};
+
 /// Statistics of the last render.
 struct RenderStats {
     CloudShadowStats cloudShadow;
+    CloudHistoryStats cloudHistory;
     int volumesDrawn = 0;
     int volumesDrawnInside = 0;  ///< hulls drawn as back faces without depth test
     int emitters = 0;
