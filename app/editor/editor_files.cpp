@@ -160,6 +160,7 @@ bool Editor::loadScene(const std::string& path) {
     }
     view_.renderer->setScene(loaded.scene);
     view_.lastRenderSignature.clear();
+    view_.resetCloudHistory = true;
     view_.scenePath = path;
     // Frame the scene: the bounds of every vertex in world space.
     glm::dvec3 lo(1e300), hi(-1e300);

@@ -139,6 +139,14 @@ struct ViewportState {
     bool visible = false;
     std::string renderLogError;
     std::string lastRenderSignature;  ///< what the last viewport frame was rendered from
+    /// Frames rendered since the signature last changed: the amortised clouds
+    /// (one pixel of each 4 x 4 block traced per frame) converge to the
+    /// reference in kCloudConvergeFrames still frames, so an idle viewport
+    /// renders that many more, then stops.
+    int stillFrames = 0;
+    /// The next frame forgets the amortised clouds' history (a preset was
+    /// opened: nothing of the old one may show).
+    bool resetCloudHistory = true;
     double renderMs = 0.0;
 
     CameraController camera;

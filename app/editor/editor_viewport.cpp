@@ -88,17 +88,31 @@ void Editor::renderViewport() {
                           : std::chrono::duration<double>(now - view_.lastExposureStep).count();
     view_.lastExposureStep = now;
     const ExposureParams& exposure = sky_.state.environment.exposure;
-    if (view_.displayTexture && view_.renderWidth == width && view_.renderHeight == height &&
-        view_.lastRenderSignature == signature && options_.benchFrames == 0) {
+    // The amortised clouds converge over a few still frames (renderer.hpp,
+    // CloudQuality::Amortised: one pixel of each 4 x 4 block per frame).
+    constexpr int kCloudBlock = 4, kCloudConvergeFrames = kCloudBlock * kCloudBlock;
+    const bool same = view_.displayTexture && view_.renderWidth == width && view_.renderHeight == height &&
+                      view_.lastRenderSignature == signature;
+    const bool converging =
+        view_.renderer->stats().cloudHistory.amortised && view_.stillFrames < kCloudConvergeFrames;
+    if (same && !converging && options_.benchFrames == 0) {
         // The same frame; only an adapting exposure shows it again.
         if (view_.exposure.adapt(exposure, dt)) showViewport(width, height);
         return;
     }
+    view_.stillFrames = same ? view_.stillFrames + 1 : 0;
     view_.lastRenderSignature = signature;
     renderer::FrameDesc frame;
     frame.width = width;
     frame.height = height;
     frame.passes = view_.passes;
+    // Interactive clouds: a sixteenth of the pixels traced per frame, the
+    // rest reprojected; the renderer forgets the history by itself when the
+    // time, the camera or the clouds jump (scrubbing never smears).
+    frame.cloudQuality = renderer::CloudQuality::Amortised;
+    frame.cloudAmortisedBlock = kCloudBlock;
+    frame.cloudResetHistory = view_.resetCloudHistory;
+    view_.resetCloudHistory = false;
     // --bench: every 10th frame also measures the passes (glFinish around each).
     const bool timed = options_.benchFrames > 0 && frames_.frameIndex >= 3 && frames_.frameIndex % 10 == 0;
     frame.gpuTimers = timed;
