@@ -170,9 +170,17 @@ void updateSkyPreview(SkyPreview& preview, const SkyService& sky, const Viewport
                   view.display ? view.display->exposureEv() : 0.0, clouds.active() ? 1 : 0,
                   clouds.active() ? sky.state.timeHours : 0.0, cp.coverage, cp.densityPerM, cp.bottomM,
                   cp.thicknessM, cp.type, static_cast<long long>(cp.seed));
-    if (preview.texture && preview.generation == sky.generation && preview.settings == settings) return;
+    std::string key = settings;
+    for (const CloudVolume& v : sky.state.cloudVolumes) {  // cloud volumes change the preview too
+        std::snprintf(settings, sizeof settings, "|%d %.4g %.4g %.4g %.4g %.4g %.4g %.4g %.4g %.4g %.3f %.3f",
+                      int(v.shape), v.position.x, v.position.y, v.position.z, v.halfExtents.x,
+                      v.halfExtents.y, v.halfExtents.z, v.rotation.x, v.rotation.y, v.rotation.z, v.coverage,
+                      v.edgeSoftness);
+        key += settings;
+    }
+    if (preview.texture && preview.generation == sky.generation && preview.settings == key) return;
     // While scrubbing, refresh every 4th frame: the preview is small and the viewport matters more.
-    if (preview.texture && preview.settings == settings && (frameIndex % 4) != 0) return;
+    if (preview.texture && preview.settings == key && (frameIndex % 4) != 0) return;
     const int n = kSkyPreviewSize;
     renderer::Image image;
     image.width = image.height = n;
@@ -236,7 +244,7 @@ void updateSkyPreview(SkyPreview& preview, const SkyService& sky, const Viewport
     glTextureSubImage2D(preview.texture, 0, 0, 0, n, n, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
     glPixelStorei(GL_UNPACK_ALIGNMENT, alignment);
     preview.generation = sky.generation;
-    preview.settings = settings;
+    preview.settings = key;
 }
 
 }  // namespace
