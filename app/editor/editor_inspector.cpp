@@ -9,6 +9,8 @@
 // track changes its constant value. A slider drag is one undo step.
 #include "panels.hpp"
 
+#include "viewport/picking.hpp"
+
 #include <aerial/clock.hpp>
 
 #include <GLFW/glfw3.h>
@@ -382,14 +384,11 @@ void drawInspector(Document& doc, EditState& edit, double timeHours, const Prese
                 const CloudParams& c = state.environment.clouds;
                 ImGui::Text("Coverage %.0f%% inside (the layer's %.0f%%)", v.coverage * 100.0,
                             c.coverage * 100.0);
-                ImGui::Text("Centre %.1f, %.1f km (x, z), %.0f m up; layer %.0f..%.0f m",
-                            v.position.x / 1000.0, v.position.z / 1000.0, v.position.y, c.bottomM,
-                            c.bottomM + c.thicknessM);
-                FogVolume shape;
-                shape.shape = v.shape, shape.position = v.position, shape.rotation = v.rotation;
-                shape.halfExtents = v.halfExtents;
+                ImGui::Text("Centre %.1f, %.1f km (x, z), %.0f m up", v.position.x / 1000.0,
+                            v.position.z / 1000.0, v.position.y);
+                ImGui::Text("Layer %.0f..%.0f m", c.bottomM, c.bottomM + c.thicknessM);
                 glm::dvec3 lo, hi;
-                fogVolumeBounds(shape, lo, hi);
+                fogVolumeBounds(shapeOf(v), lo, hi);
                 if (hi.y < c.bottomM || lo.y > c.bottomM + c.thicknessM)
                     ImGui::TextWrapped("Above or below the cloud layer: it changes no cloud.");
             }
