@@ -533,6 +533,16 @@ void Editor::addVolumeInFront(FogVolumeShape shape) {
     setStatus("Added " + doc_.preset().volumes[std::size_t(index)].name);
 }
 
+void Editor::addCloudVolumeAboveView(FogVolumeShape shape) {
+    // In the layer as it is now, above the orbit pivot (the point the camera looks at).
+    const CloudVolume placed = newCloudVolumeAt(sky_.state.environment.clouds, view_.camera.state().target);
+    int index = -1;
+    doc_.apply(shape == FogVolumeShape::Box ? "Add cloud box" : "Add cloud ellipsoid", "",
+               [&](Preset& p) { index = addCloudVolume(p, shape, placed); });
+    select({Selection::Kind::CloudVolume, index});
+    setStatus("Added " + doc_.preset().cloudVolumes[std::size_t(index)].name);
+}
+
 void Editor::addEmitterInFront(EmitterKind kind) {
     glm::dvec3 where = placeForNewObject();
     where.y +=
@@ -546,8 +556,7 @@ void Editor::addEmitterInFront(EmitterKind kind) {
 
 void Editor::deleteSelection() {
     if (!edit_.objectSelected()) return;
-    const ParamScope scope =
-        edit_.selection.kind == Selection::Kind::Volume ? ParamScope::Volume : ParamScope::Emitter;
+    const ParamScope scope = edit_.selection.scope();
     const int index = edit_.selection.index;
     doc_.apply("Delete", "", [&](Preset& p) { deleteObject(p, scope, index); });
     edit_.selectedParam.reset();
@@ -556,12 +565,12 @@ void Editor::deleteSelection() {
 
 void Editor::duplicateSelection() {
     if (!edit_.objectSelected()) return;
-    const ParamScope scope =
-        edit_.selection.kind == Selection::Kind::Volume ? ParamScope::Volume : ParamScope::Emitter;
+    const ParamScope scope = edit_.selection.scope();
     int index = -1;
     const int from = edit_.selection.index;
-    doc_.apply("Duplicate", "",
-               [&](Preset& p) { index = duplicateObject(p, scope, from, glm::dvec3(5.0, 0.0, 0.0)); });
+    // Beside the original: 5 m for fog volumes and emitters, a kilometre for cloud volumes.
+    const glm::dvec3 offset(scope == ParamScope::CloudVolume ? 1000.0 : 5.0, 0.0, 0.0);
+    doc_.apply("Duplicate", "", [&](Preset& p) { index = duplicateObject(p, scope, from, offset); });
     if (index >= 0) select({edit_.selection.kind, index});
 }
 

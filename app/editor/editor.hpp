@@ -94,6 +94,8 @@ private:
     void select(Selection s);
     void addVolumeInFront(FogVolumeShape shape);
     void addEmitterInFront(EmitterKind kind);
+    /// A cloud volume in the cloud layer above the point the camera looks at.
+    void addCloudVolumeAboveView(FogVolumeShape shape);
     void deleteSelection();
     void duplicateSelection();
 
@@ -112,6 +114,9 @@ private:
     void ensureDisplayTexture(int width, int height);
     void viewportInteraction(bool hovered, glm::dvec2 mouse, glm::dvec2 origin);
     bool gizmoTransformOfSelection(GizmoTransform& out) const;
+    /// The selected fog or cloud volume's shape at the current time (what
+    /// picking, outlines and framing use); false for anything else.
+    bool selectedVolumeShape(FogVolume& out) const;
     void applyGizmoTransform(const GizmoTransform& t);
     void frameSelection();
     glm::dvec3 placeForNewObject() const;

@@ -20,7 +20,7 @@ void Editor::declareActions() {
     using S = Shortcut;
     const auto objectSelected = [this] { return edit_.objectSelected(); };
     const auto needsObject = [](const std::string& name) {
-        return name + ": select a volume or an emitter first";
+        return name + ": select a volume, an emitter or a cloud volume first";
     };
 
     // --- File ------------------------------------------------------------------
@@ -123,6 +123,13 @@ void Editor::declareActions() {
     t.add("add_lightning", "Lightning", "Create").key(GLFW_KEY_T, S::kShift).oneUndoStep().does([this] {
         addEmitterInFront(EmitterKind::Lightning);
     });
+    // Cloud volumes: in the cloud layer, above the point the camera looks at.
+    t.add("add_cloud_box", "Cloud box", "Create").separated().oneUndoStep().does([this] {
+        addCloudVolumeAboveView(FogVolumeShape::Box);
+    });
+    t.add("add_cloud_ellipsoid", "Cloud ellipsoid", "Create").oneUndoStep().does([this] {
+        addCloudVolumeAboveView(FogVolumeShape::Ellipsoid);
+    });
 
     // --- View --------------------------------------------------------------------
     t.add("ocio_display", "OCIO display", "View").drawsMenu([this](const char* label) {
@@ -177,6 +184,7 @@ void Editor::declareActions() {
     toggle("pass_emitters", "Emitters", view_.passes.emitters);
     toggle("pass_transparent", "Transparent objects", view_.passes.transparent);
     toggle("pass_particles", "Fog particles", view_.passes.particles);
+    toggle("pass_clouds", "Clouds", view_.passes.clouds);
     const auto gizmoMode = [&t, this](const char* name, const char* label, int key, GizmoMode mode,
                                       bool separated = false) {
         Action& a = t.add(name, label, "View");

@@ -9,6 +9,8 @@
 // track changes its constant value. A slider drag is one undo step.
 #include "panels.hpp"
 
+#include "viewport/picking.hpp"
+
 #include <aerial/clock.hpp>
 
 #include <GLFW/glfw3.h>
@@ -347,15 +349,20 @@ void drawInspector(Document& doc, EditState& edit, double timeHours, const Prese
             break;
         }
         case Selection::Kind::Volume:
-        case Selection::Kind::Emitter: {
-            const bool volume = edit.selection.kind == Selection::Kind::Volume;
-            const ParamScope scope = volume ? ParamScope::Volume : ParamScope::Emitter;
+        case Selection::Kind::Emitter:
+        case Selection::Kind::CloudVolume: {
+            const ParamScope scope = edit.selection.scope();
+            const bool volume = scope == ParamScope::Volume;
+            const bool emitter = scope == ParamScope::Emitter;
             const int index = edit.selection.index;
-            if (index < 0 || index >= int(volume ? preset.volumes.size() : preset.emitters.size())) break;
-            std::string name =
-                volume ? preset.volumes[std::size_t(index)].name : preset.emitters[std::size_t(index)].name;
-            const std::string id =
-                volume ? preset.volumes[std::size_t(index)].id : preset.emitters[std::size_t(index)].id;
+            if (index < 0 || std::size_t(index) >= objectCount(preset, scope)) break;
+            const std::size_t i = std::size_t(index);
+            std::string name = volume    ? preset.volumes[i].name
+                               : emitter ? preset.emitters[i].name
+                                         : preset.cloudVolumes[i].name;
+            const std::string id = volume    ? preset.volumes[i].id
+                                   : emitter ? preset.emitters[i].id
+                                             : preset.cloudVolumes[i].id;
             ImGui::Dummy(ImVec2(ImGui::GetFrameHeight() * 0.8f, 1.0f));
             ImGui::SameLine(0.0f, 4.0f);
             if (ImGui::InputText("Name", &name))
@@ -363,17 +370,31 @@ void drawInspector(Document& doc, EditState& edit, double timeHours, const Prese
             if (ImGui::IsItemDeactivated()) doc.closeMerge();
             if (ImGui::IsItemHovered())
                 ImGui::SetTooltip("id \"%s\" (what tracks refer to; never changes)", id.c_str());
-            const bool lightning =
-                !volume && preset.emitters[std::size_t(index)].kind == EmitterKind::Lightning;
+            const bool lightning = emitter && preset.emitters[i].kind == EmitterKind::Lightning;
             for (const ParamDesc& p : paramTable(scope)) {
                 if (p.type == ParamType::String) continue;  // id and name above
-                if (!volume && !lightning && lightningOnly(p.path)) continue;
+                if (emitter && !lightning && lightningOnly(p.path)) continue;
                 drawParam(doc, edit, {&p, index}, timeHours);
+            }
+            if (scope == ParamScope::CloudVolume && i < state.cloudVolumes.size()) {
+                ImGui::Spacing();
+                ImGui::TextDisabled("Now");
+                ImGui::Separator();
+                const CloudVolume& v = state.cloudVolumes[i];
+                const CloudParams& c = state.environment.clouds;
+                ImGui::Text("Coverage %.0f%% inside (the layer's %.0f%%)", v.coverage * 100.0,
+                            c.coverage * 100.0);
+                ImGui::Text("Centre %.1f, %.1f km (x, z), %.0f m up", v.position.x / 1000.0,
+                            v.position.z / 1000.0, v.position.y);
+                ImGui::Text("Layer %.0f..%.0f m", c.bottomM, c.bottomM + c.thicknessM);
+                glm::dvec3 lo, hi;
+                fogVolumeBounds(shapeOf(v), lo, hi);
+                if (hi.y < c.bottomM || lo.y > c.bottomM + c.thicknessM)
+                    ImGui::TextWrapped("Above or below the cloud layer: it changes no cloud.");
             }
             if (lightning) {
                 ImGui::Spacing();
-                ImGui::Text("Flash now: %.2f",
-                            lightningFlash(preset.emitters[std::size_t(index)], timeHours));
+                ImGui::Text("Flash now: %.2f", lightningFlash(preset.emitters[i], timeHours));
             }
             ImGui::Spacing();
             if (ImGui::Button("Duplicate")) actions.run("duplicate");

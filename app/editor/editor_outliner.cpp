@@ -1,6 +1,6 @@
 // editor/editor_outliner.cpp — the outliner (atmosphere, sun and moon,
-// global fog, every fog volume and emitter: select, rename inline, duplicate,
-// delete) and, below it, the sky preview: the solved sky seen from below as a
+// global fog, every fog volume, emitter and cloud volume: select, rename
+// inline, duplicate, delete) and, below it, the sky preview: the solved sky seen from below as a
 // fisheye (zenith in the centre, the horizon on the rim, north up, east
 // right), with the cloud layer's opacity over it, through the same OCIO
 // display transform as the viewport.
@@ -58,28 +58,45 @@ void drawOutliner(Document& doc, EditState& edit, const ActionTable& actions,
     item("Exposure", {Selection::Kind::Exposure, -1});
     item("Clouds", {Selection::Kind::Clouds, -1});
 
-    auto objects = [&](bool volume) {
-        const ParamScope scope = volume ? ParamScope::Volume : ParamScope::Emitter;
-        const Selection::Kind kind = volume ? Selection::Kind::Volume : Selection::Kind::Emitter;
-        const std::size_t count = volume ? preset.volumes.size() : preset.emitters.size();
+    // The id and the shown name of object `i` of a scope.
+    auto idAndName = [&](ParamScope scope,
+                         std::size_t i) -> std::pair<const std::string*, const std::string*> {
+        switch (scope) {
+            case ParamScope::Volume:
+                return {&preset.volumes[i].id, &preset.volumes[i].name};
+            case ParamScope::Emitter:
+                return {&preset.emitters[i].id, &preset.emitters[i].name};
+            default:
+                return {&preset.cloudVolumes[i].id, &preset.cloudVolumes[i].name};
+        }
+    };
+    auto objects = [&](ParamScope scope) {
+        const Selection::Kind kind = Selection::kindOf(scope);
+        const std::size_t count = objectCount(preset, scope);
+        const char* title = scope == ParamScope::Volume    ? "Fog volumes"
+                            : scope == ParamScope::Emitter ? "Emitters"
+                                                           : "Cloud volumes";
         char header[64];
-        std::snprintf(header, sizeof header, "%s (%zu)###%s", volume ? "Fog volumes" : "Emitters", count,
-                      volume ? "volumes" : "emitters");
+        std::snprintf(header, sizeof header, "%s (%zu)###%s", title, count,
+                      std::string(addressPrefix(scope)).c_str());
         if (!ImGui::TreeNodeEx(header, ImGuiTreeNodeFlags_DefaultOpen | ImGuiTreeNodeFlags_SpanAvailWidth))
             return;
         if (ImGui::BeginPopupContextItem()) {
-            if (volume) {
+            if (scope == ParamScope::Volume) {
                 if (ImGui::MenuItem("Add box volume")) actions.run("add_box_volume");
                 if (ImGui::MenuItem("Add ellipsoid volume")) actions.run("add_ellipsoid_volume");
-            } else {
+            } else if (scope == ParamScope::Emitter) {
                 if (ImGui::MenuItem("Add emitter")) actions.run("add_point_emitter");
                 if (ImGui::MenuItem("Add lightning")) actions.run("add_lightning");
+            } else {
+                if (ImGui::MenuItem("Add cloud box")) actions.run("add_cloud_box");
+                if (ImGui::MenuItem("Add cloud ellipsoid")) actions.run("add_cloud_ellipsoid");
             }
             ImGui::EndPopup();
         }
         for (std::size_t i = 0; i < count; ++i) {
-            const std::string& id = volume ? preset.volumes[i].id : preset.emitters[i].id;
-            const std::string& name = volume ? preset.volumes[i].name : preset.emitters[i].name;
+            const std::string id = *idAndName(scope, i).first;
+            const std::string name = *idAndName(scope, i).second;
             const Selection s{kind, int(i)};
             ImGui::PushID(id.c_str());
             if (edit.renaming && edit.selection == s) {
@@ -123,12 +140,13 @@ void drawOutliner(Document& doc, EditState& edit, const ActionTable& actions,
                 }
             }
             ImGui::PopID();
-            if (volume ? i >= doc.preset().volumes.size() : i >= doc.preset().emitters.size()) break;
+            if (i >= objectCount(doc.preset(), scope)) break;
         }
         ImGui::TreePop();
     };
-    objects(true);
-    objects(false);
+    objects(ParamScope::Volume);
+    objects(ParamScope::Emitter);
+    objects(ParamScope::CloudVolume);
     ImGui::Spacing();
     if (ImGui::SmallButton("+ Box")) actions.run("add_box_volume");
     ImGui::SameLine();
@@ -152,9 +170,17 @@ void updateSkyPreview(SkyPreview& preview, const SkyService& sky, const Viewport
                   view.display ? view.display->exposureEv() : 0.0, clouds.active() ? 1 : 0,
                   clouds.active() ? sky.state.timeHours : 0.0, cp.coverage, cp.densityPerM, cp.bottomM,
                   cp.thicknessM, cp.type, static_cast<long long>(cp.seed));
-    if (preview.texture && preview.generation == sky.generation && preview.settings == settings) return;
+    std::string key = settings;
+    for (const CloudVolume& v : sky.state.cloudVolumes) {  // cloud volumes change the preview too
+        std::snprintf(settings, sizeof settings, "|%d %.4g %.4g %.4g %.4g %.4g %.4g %.4g %.4g %.4g %.3f %.3f",
+                      int(v.shape), v.position.x, v.position.y, v.position.z, v.halfExtents.x,
+                      v.halfExtents.y, v.halfExtents.z, v.rotation.x, v.rotation.y, v.rotation.z, v.coverage,
+                      v.edgeSoftness);
+        key += settings;
+    }
+    if (preview.texture && preview.generation == sky.generation && preview.settings == key) return;
     // While scrubbing, refresh every 4th frame: the preview is small and the viewport matters more.
-    if (preview.texture && preview.settings == settings && (frameIndex % 4) != 0) return;
+    if (preview.texture && preview.settings == key && (frameIndex % 4) != 0) return;
     const int n = kSkyPreviewSize;
     renderer::Image image;
     image.width = image.height = n;
@@ -218,7 +244,7 @@ void updateSkyPreview(SkyPreview& preview, const SkyService& sky, const Viewport
     glTextureSubImage2D(preview.texture, 0, 0, 0, n, n, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
     glPixelStorei(GL_UNPACK_ALIGNMENT, alignment);
     preview.generation = sky.generation;
-    preview.settings = settings;
+    preview.settings = key;
 }
 
 }  // namespace

@@ -7,13 +7,42 @@
 
 namespace aerial::editor {
 
+ParamScope Selection::scopeOf(Kind kind) {
+    switch (kind) {
+        case Kind::Volume:
+            return ParamScope::Volume;
+        case Kind::Emitter:
+            return ParamScope::Emitter;
+        case Kind::CloudVolume:
+            return ParamScope::CloudVolume;
+        default:
+            return ParamScope::Global;
+    }
+}
+
+Selection::Kind Selection::kindOf(ParamScope scope) {
+    switch (scope) {
+        case ParamScope::Volume:
+            return Kind::Volume;
+        case ParamScope::Emitter:
+            return Kind::Emitter;
+        case ParamScope::CloudVolume:
+            return Kind::CloudVolume;
+        default:
+            return Kind::None;
+    }
+}
+
 void EditState::validate(const Preset& p) {
-    if (selection.kind == Selection::Kind::Volume && selection.index >= int(p.volumes.size()))
-        selection = p.volumes.empty() ? Selection{Selection::Kind::Fog, -1}
-                                      : Selection{Selection::Kind::Volume, int(p.volumes.size()) - 1};
-    if (selection.kind == Selection::Kind::Emitter && selection.index >= int(p.emitters.size()))
-        selection = p.emitters.empty() ? Selection{Selection::Kind::Fog, -1}
-                                       : Selection{Selection::Kind::Emitter, int(p.emitters.size()) - 1};
+    // An object past the end (deleted, undone): the last one of its kind, else the group above it.
+    if (const ParamScope scope = selection.scope(); scope != ParamScope::Global) {
+        const int count = int(objectCount(p, scope));
+        if (selection.index >= count)
+            selection = count == 0 ? Selection{scope == ParamScope::CloudVolume ? Selection::Kind::Clouds
+                                                                                : Selection::Kind::Fog,
+                                               -1}
+                                   : Selection{selection.kind, count - 1};
+    }
     if (selectedParam && selectedParam->object >= 0) {
         if (std::size_t(selectedParam->object) >= objectCount(p, selectedParam->scope()))
             selectedParam.reset();

@@ -43,10 +43,17 @@ namespace aerial::editor {
 
 /// What the outliner has selected.
 struct Selection {
-    enum class Kind { None, Atmosphere, Lights, Fog, Volume, Emitter, Exposure, Clouds };
+    enum class Kind { None, Atmosphere, Lights, Fog, Volume, Emitter, Exposure, Clouds, CloudVolume };
     Kind kind = Kind::Fog;
-    int index = -1;  ///< volume or emitter index
+    int index = -1;  ///< volume, emitter or cloud volume index
     bool operator==(const Selection&) const = default;
+
+    /// The parameter scope of an object kind (Volume, Emitter, CloudVolume);
+    /// Global for the others.
+    static ParamScope scopeOf(Kind kind);
+    /// The object kind of a scope (None for Global).
+    static Kind kindOf(ParamScope scope);
+    ParamScope scope() const { return scopeOf(kind); }
 };
 
 /// The selection and the panels' editing state (outliner, inspector, timeline).
@@ -60,10 +67,8 @@ struct EditState {
     bool renaming = false;  ///< the outliner's inline rename
     std::string renameBuffer;
 
-    /// A volume or an emitter is selected.
-    bool objectSelected() const {
-        return selection.kind == Selection::Kind::Volume || selection.kind == Selection::Kind::Emitter;
-    }
+    /// A volume, an emitter or a cloud volume is selected.
+    bool objectSelected() const { return selection.scope() != ParamScope::Global; }
     /// Clears what refers to objects, parameters or keys that `preset` no longer has.
     void validate(const Preset& preset);
 };

@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 
 namespace aerial::editor {
 
@@ -305,6 +306,8 @@ void Editor::declareScriptCommands() {
                countCheck([](const Document& d) { return d.preset().volumes.size(); })});
     table.add({"expect_emitters", 1, 1, "expect_emitters N", "the number of emitters",
                countCheck([](const Document& d) { return d.preset().emitters.size(); })});
+    table.add({"expect_cloud_volumes", 1, 1, "expect_cloud_volumes N", "the number of cloud volumes",
+               countCheck([](const Document& d) { return d.preset().cloudVolumes.size(); })});
     table.add({"expect_undo", 1, 1, "expect_undo N", "the number of undo steps",
                countCheck([](const Document& d) { return d.undoCount(); })});
     table.add(
@@ -323,10 +326,12 @@ void Editor::declareScriptCommands() {
              return false;
          }});
     table.add({"expect_selected", 1, 2,
-               "expect_selected volume|emitter|none|fog|atmosphere|lights|exposure|clouds [N]",
+               "expect_selected volume|emitter|cloud_volume|none|fog|atmosphere|lights|exposure|clouds [N]",
                "what the outliner has selected", [this](W w, E error) {
-                   static const char* kinds[] = {"none",   "atmosphere", "lights",   "fog",
-                                                 "volume", "emitter",    "exposure", "clouds"};
+                   // In Selection::Kind's order.
+                   static const char* kinds[] = {"none",    "atmosphere", "lights", "fog",         "volume",
+                                                 "emitter", "exposure",   "clouds", "cloud_volume"};
+                   static_assert(std::size(kinds) == std::size_t(Selection::Kind::CloudVolume) + 1);
                    const std::string have = kinds[int(edit_.selection.kind)];
                    double n = -1;
                    if (w.size() == 3 && !toNumber(w[2], n)) {

@@ -16,7 +16,7 @@ namespace aerial::editor {
 bool Editor::queueGizmoDrag(GizmoMode mode, int axis, glm::dvec2 deltaPx, int steps, std::string& error) {
     GizmoTransform transform;
     if (!gizmoTransformOfSelection(transform)) {
-        error = "gizmo_drag: select a volume or an emitter first";
+        error = "gizmo_drag: select a volume, an emitter or a cloud volume first";
         return false;
     }
     view_.gizmoMode = mode;
@@ -86,7 +86,21 @@ void Editor::declareEditScriptCommands() {
                    actions_.run(w[1] == "point" ? "add_point_emitter" : "add_lightning");
                    return true;
                }});
-    table.add({"select", 1, 2, "select atmosphere|lights|fog|exposure|clouds|none | select volume|emitter N",
+    table.add({"add_cloud_volume", 1, 1, "add_cloud_volume box|ellipsoid",
+               "a cloud volume in the cloud layer above the point the camera looks at", [this](W w, E error) {
+                   if (w[1] != "box" && w[1] != "ellipsoid") {
+                       error = "add_cloud_volume: box or ellipsoid";
+                       return false;
+                   }
+                   actions_.run(w[1] == "box" ? "add_cloud_box" : "add_cloud_ellipsoid");
+                   const CloudVolume& v = doc_.preset().cloudVolumes.back();
+                   std::printf("added cloud volume %zu at %.17g %.17g %.17g\n",
+                               doc_.preset().cloudVolumes.size() - 1, v.position.x, v.position.y,
+                               v.position.z);
+                   return true;
+               }});
+    table.add({"select", 1, 2,
+               "select atmosphere|lights|fog|exposure|clouds|none | select volume|emitter|cloud_volume N",
                "select in the outliner", [this](W w, E error) {
                    double index = -1;
                    if (w.size() == 3 && !toNumber(w[2], index)) {
@@ -98,6 +112,8 @@ void Editor::declareEditScriptCommands() {
                        select({Selection::Kind::Volume, int(index)});
                    else if (w[1] == "emitter" && index >= 0 && index < double(p.emitters.size()))
                        select({Selection::Kind::Emitter, int(index)});
+                   else if (w[1] == "cloud_volume" && index >= 0 && index < double(p.cloudVolumes.size()))
+                       select({Selection::Kind::CloudVolume, int(index)});
                    else if (w[1] == "atmosphere")
                        select({Selection::Kind::Atmosphere, -1});
                    else if (w[1] == "lights")
@@ -116,14 +132,13 @@ void Editor::declareEditScriptCommands() {
                    }
                    return true;
                }});
-    table.add({"rename", 1, 1, "rename NAME", "rename the selected volume or emitter", [this](W w, E error) {
+    table.add({"rename", 1, 1, "rename NAME", "rename the selected volume, emitter or cloud volume",
+               [this](W w, E error) {
                    if (!edit_.objectSelected()) {
-                       error = "rename: select a volume or an emitter first";
+                       error = "rename: select a volume, an emitter or a cloud volume first";
                        return false;
                    }
-                   const ParamScope scope = edit_.selection.kind == Selection::Kind::Volume
-                                                ? ParamScope::Volume
-                                                : ParamScope::Emitter;
+                   const ParamScope scope = edit_.selection.scope();
                    const int index = edit_.selection.index;
                    doc_.apply("Rename", "", [&](Preset& p) { renameObject(p, scope, index, w[1]); });
                    return true;
@@ -306,13 +321,12 @@ void Editor::declareEditScriptCommands() {
                    if (!screenshot(w[1], error)) return false;
                    std::printf("screenshot %s %dx%d\n", w[1].c_str(), int(std::lround(view_.size.x)),
                                int(std::lround(view_.size.y)));
-                   const Selection& s = edit_.selection;
-                   if (s.kind == Selection::Kind::Volume && s.index < int(sky_.state.volumes.size())) {
-                       // The selected volume's projected bounds in the screenshot's pixels.
+                   FogVolume shape;
+                   if (selectedVolumeShape(shape)) {
+                       // The selected (fog or cloud) volume's projected bounds in the screenshot's pixels.
                        const renderer::CameraFrame frame = viewportCameraFrame();
                        glm::dvec2 lo(1e30), hi(-1e30);
-                       for (const WorldSegment& seg :
-                            volumeOutlineSegments(sky_.state.volumes[std::size_t(s.index)]))
+                       for (const WorldSegment& seg : volumeOutlineSegments(shape))
                            for (const glm::dvec3& p : {seg.first, seg.second})
                                if (std::optional<glm::dvec2> q = projectToViewport(frame, view_.size, p)) {
                                    lo = glm::min(lo, *q);
@@ -397,7 +411,17 @@ void Editor::declareEditScriptCommands() {
                    view_.gizmoSpace = w[1] == "local" ? GizmoSpace::Local : GizmoSpace::World;
                    return true;
                }});
-    table.add({"view", 1, 1, "view NAME", "the OCIO view", [this](W w, E error) {
+    table.add({"view", 1, 2, "view NAME | view clouds on|off",
+               "the OCIO view; or switch the view's cloud layer (View > Clouds)", [this](W w, E error) {
+                   if (w.size() == 3) {
+                       if (w[1] != "clouds" || (w[2] != "on" && w[2] != "off")) {
+                           error = "view: view clouds on|off";
+                           return false;
+                       }
+                       view_.passes.clouds =
+                           w[2] == "on";  // in the frame's signature: the next frame shows it
+                       return true;
+                   }
                    view_.viewName = w[1];
                    rebuildDisplay();
                    if (view_.viewName != w[1]) {

@@ -73,15 +73,15 @@ void Editor::renderViewport() {
     // editor costs no rendering on a software rasteriser).
     char signature[512];
     const CameraState& c = view_.camera.state();
-    std::snprintf(signature, sizeof signature,
-                  "%d %d %.17g %llu %llu %.17g %.17g %.17g %.17g %.17g %.17g %d%d%d%d%d%d%d%d %s %s %.17g %p",
-                  width, height, playback_.timeHours, static_cast<unsigned long long>(doc_.revision()),
-                  static_cast<unsigned long long>(sky_.generation), c.target.x, c.target.y, c.target.z,
-                  c.distance, c.yaw, c.pitch + 1000.0 * c.verticalFovDeg, view_.passes.sky,
-                  view_.passes.scene, view_.passes.globalFog, view_.passes.volumes, view_.passes.emitters,
-                  view_.passes.transparent, view_.passes.particles, view_.showStars,
-                  view_.displayName.c_str(), view_.viewName.c_str(), view_.exposureEv,
-                  static_cast<const void*>(view_.display.get()));
+    std::snprintf(
+        signature, sizeof signature,
+        "%d %d %.17g %llu %llu %.17g %.17g %.17g %.17g %.17g %.17g %d%d%d%d%d%d%d%d%d %s %s %.17g %p", width,
+        height, playback_.timeHours, static_cast<unsigned long long>(doc_.revision()),
+        static_cast<unsigned long long>(sky_.generation), c.target.x, c.target.y, c.target.z, c.distance,
+        c.yaw, c.pitch + 1000.0 * c.verticalFovDeg, view_.passes.sky, view_.passes.scene,
+        view_.passes.globalFog, view_.passes.volumes, view_.passes.emitters, view_.passes.transparent,
+        view_.passes.particles, view_.passes.clouds, view_.showStars, view_.displayName.c_str(),
+        view_.viewName.c_str(), view_.exposureEv, static_cast<const void*>(view_.display.get()));
     const auto now = std::chrono::steady_clock::now();
     const double dt = view_.lastExposureStep.time_since_epoch().count() == 0
                           ? 0.0
@@ -187,33 +187,29 @@ void Editor::drawViewport() {
 
 bool Editor::gizmoTransformOfSelection(GizmoTransform& out) const {
     const Preset& p = doc_.preset();
-    auto read = [&](ParamScope scope, const char* key, int index, double v[4]) {
+    const ParamScope scope = edit_.selection.scope();
+    const int index = edit_.selection.index;
+    if (scope == ParamScope::Global || index < 0 || std::size_t(index) >= objectCount(p, scope)) return false;
+    // Placed shapes (fog and cloud volumes) move, rotate and scale; emitters only move.
+    auto read = [&](const char* key, double v[4]) {
         readValueAt(p, ParamRef{findParam(scope, key), index}, playback_.timeHours, v);
     };
     double v[4];
-    if (edit_.selection.kind == Selection::Kind::Volume && edit_.selection.index < int(p.volumes.size())) {
-        read(ParamScope::Volume, "position_m", edit_.selection.index, v);
-        out.position = {v[0], v[1], v[2]};
-        read(ParamScope::Volume, "rotation_xyzw", edit_.selection.index, v);
-        out.rotation = glm::dquat(v[3], v[0], v[1], v[2]);
-        read(ParamScope::Volume, "half_extents_m", edit_.selection.index, v);
-        out.scale = {v[0], v[1], v[2]};
-        return true;
-    }
-    if (edit_.selection.kind == Selection::Kind::Emitter && edit_.selection.index < int(p.emitters.size())) {
-        read(ParamScope::Emitter, "position_m", edit_.selection.index, v);
-        out.position = {v[0], v[1], v[2]};
-        out.rotation = glm::dquat(1.0, 0.0, 0.0, 0.0);
-        out.scale = glm::dvec3(1.0);
-        return true;
-    }
-    return false;
+    read("position_m", v);
+    out.position = {v[0], v[1], v[2]};
+    out.rotation = glm::dquat(1.0, 0.0, 0.0, 0.0);
+    out.scale = glm::dvec3(1.0);
+    if (scope == ParamScope::Emitter) return true;
+    read("rotation_xyzw", v);
+    out.rotation = glm::dquat(v[3], v[0], v[1], v[2]);
+    read("half_extents_m", v);
+    out.scale = {v[0], v[1], v[2]};
+    return true;
 }
 
 void Editor::applyGizmoTransform(const GizmoTransform& t) {
     if (!edit_.objectSelected()) return;
-    const bool volume = edit_.selection.kind == Selection::Kind::Volume;
-    const ParamScope scope = volume ? ParamScope::Volume : ParamScope::Emitter;
+    const ParamScope scope = edit_.selection.scope();
     const int index = edit_.selection.index;
     const double time = playback_.timeHours;
     const char* label = view_.gizmoMode == GizmoMode::Translate ? "Move"
@@ -222,12 +218,26 @@ void Editor::applyGizmoTransform(const GizmoTransform& t) {
     doc_.apply(label, view_.gizmoMergeKey, [&](Preset& p) {
         const double position[4] = {t.position.x, t.position.y, t.position.z, 0.0};
         setValueAt(p, ParamRef{findParam(scope, "position_m"), index}, position, time);
-        if (!volume) return;
+        if (scope == ParamScope::Emitter) return;
         const double rotation[4] = {t.rotation.x, t.rotation.y, t.rotation.z, t.rotation.w};
         setValueAt(p, ParamRef{findParam(scope, "rotation_xyzw"), index}, rotation, time);
         const double extents[4] = {t.scale.x, t.scale.y, t.scale.z, 0.0};
         setValueAt(p, ParamRef{findParam(scope, "half_extents_m"), index}, extents, time);
     });
+}
+
+bool Editor::selectedVolumeShape(FogVolume& out) const {
+    const Selection& s = edit_.selection;
+    if (s.kind == Selection::Kind::Volume && s.index >= 0 && s.index < int(sky_.state.volumes.size())) {
+        out = sky_.state.volumes[std::size_t(s.index)];
+        return true;
+    }
+    if (s.kind == Selection::Kind::CloudVolume && s.index >= 0 &&
+        s.index < int(sky_.state.cloudVolumes.size())) {
+        out = shapeOf(sky_.state.cloudVolumes[std::size_t(s.index)]);
+        return true;
+    }
+    return false;
 }
 
 void Editor::viewportInteraction(bool hovered, glm::dvec2 mouse, glm::dvec2 origin) {
@@ -310,13 +320,27 @@ void Editor::viewportInteraction(bool hovered, glm::dvec2 mouse, glm::dvec2 orig
     if (gi.pressed && !gizmoOwnsMouse) {
         const Ray ray = rayThroughPixel(frame, gi.mouse, view_.size);
         const double iconRadius = angularRadiusOfPixels(frame, view_.size.y, 10.0);
-        const PickHit hit = pick(ray, sky_.state.volumes, sky_.state.emitters, iconRadius, true);
+        const PickHit hit =
+            pick(ray, sky_.state.volumes, sky_.state.emitters, sky_.state.cloudVolumes, iconRadius, true);
         if (hit.kind == PickHit::Kind::Volume)
             select({Selection::Kind::Volume, hit.index});
         else if (hit.kind == PickHit::Kind::Emitter)
             select({Selection::Kind::Emitter, hit.index});
+        else if (hit.kind == PickHit::Kind::CloudVolume)
+            select({Selection::Kind::CloudVolume, hit.index});
         else
             select({Selection::Kind::None, -1});
+    }
+    // The cloud volume under the mouse (outlined): cloud volumes fill the view, so
+    // only the selected and the hovered one are drawn.
+    int hoveredCloudVolume = -1;
+    if (view_.showHelpers && !sky_.state.cloudVolumes.empty() && in.hovered && !gizmoOwnsMouse &&
+        !view_.gizmo.active() && !scripted) {
+        const Ray ray = rayThroughPixel(frame, gi.mouse, view_.size);
+        const double iconRadius = angularRadiusOfPixels(frame, view_.size.y, 10.0);
+        const PickHit hit =
+            pick(ray, sky_.state.volumes, sky_.state.emitters, sky_.state.cloudVolumes, iconRadius, true);
+        if (hit.kind == PickHit::Kind::CloudVolume) hoveredCloudVolume = hit.index;
     }
 
     if (!view_.showHelpers) return;
@@ -329,6 +353,15 @@ void Editor::viewportInteraction(bool hovered, glm::dvec2 mouse, glm::dvec2 orig
             edit_.selection.kind == Selection::Kind::Volume && edit_.selection.index == int(i);
         drawVolumeOutline(dl, origin, frame, view_.size, sky_.state.volumes[i],
                           selected ? overlayColour(1.0, 0.6, 0.1) : overlayColour(0.8, 0.8, 0.9, 0.25),
+                          selected ? 2.0f : 1.0f);
+    }
+    for (std::size_t i = 0; i < sky_.state.cloudVolumes.size(); ++i) {
+        const bool selected =
+            edit_.selection.kind == Selection::Kind::CloudVolume && edit_.selection.index == int(i);
+        if (!selected && hoveredCloudVolume != int(i)) continue;
+        // Light blue-white: apart from the fog volumes' orange and grey.
+        drawVolumeOutline(dl, origin, frame, view_.size, shapeOf(sky_.state.cloudVolumes[i]),
+                          selected ? overlayColour(0.75, 0.88, 1.0) : overlayColour(0.75, 0.88, 1.0, 0.45),
                           selected ? 2.0f : 1.0f);
     }
     for (std::size_t i = 0; i < sky_.state.emitters.size(); ++i)
@@ -349,10 +382,10 @@ void Editor::frameSelection() {
     GizmoTransform t;
     if (!gizmoTransformOfSelection(t)) return;
     double radius = 2.0;
-    if (edit_.selection.kind == Selection::Kind::Volume &&
-        edit_.selection.index < int(sky_.state.volumes.size())) {
+    FogVolume shape;
+    if (selectedVolumeShape(shape)) {
         glm::dvec3 lo, hi;
-        fogVolumeBounds(sky_.state.volumes[std::size_t(edit_.selection.index)], lo, hi);
+        fogVolumeBounds(shape, lo, hi);
         radius = 0.5 * glm::length(hi - lo);
     }
     view_.camera.frame(t.position, radius, aspect);

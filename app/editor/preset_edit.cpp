@@ -364,9 +364,9 @@ bool pasteKey(Preset& preset, const ParamRef& ref, const KeyClipboard& clip, dou
 
 /// A unique id from `base` (uniqueObjectId) and the name shown for it:
 /// `label`, followed by the id's number when `base` itself was taken.
-static void nameNewObject(const Preset& preset, bool volume, const std::string& base, const char* label,
+static void nameNewObject(const Preset& preset, ParamScope scope, const std::string& base, const char* label,
                           std::string& id, std::string& name) {
-    id = uniqueObjectId(preset, volume, base);
+    id = uniqueObjectId(preset, scope, base);
     name = label;
     if (id != base) {
         name += ' ';
@@ -377,7 +377,7 @@ static void nameNewObject(const Preset& preset, bool volume, const std::string& 
 int addVolume(Preset& preset, FogVolumeShape shape, const glm::dvec3& position) {
     FogVolume v;
     const bool box = shape == FogVolumeShape::Box;
-    nameNewObject(preset, true, box ? "box_volume" : "ellipsoid_volume",
+    nameNewObject(preset, ParamScope::Volume, box ? "box_volume" : "ellipsoid_volume",
                   box ? "Box volume" : "Ellipsoid volume", v.id, v.name);
     v.shape = shape;
     v.position = position;
@@ -388,8 +388,8 @@ int addVolume(Preset& preset, FogVolumeShape shape, const glm::dvec3& position) 
 int addEmitter(Preset& preset, EmitterKind kind, const glm::dvec3& position) {
     Emitter e;
     const bool lightning = kind == EmitterKind::Lightning;
-    nameNewObject(preset, false, lightning ? "lightning" : "emitter", lightning ? "Lightning" : "Emitter",
-                  e.id, e.name);
+    nameNewObject(preset, ParamScope::Emitter, lightning ? "lightning" : "emitter",
+                  lightning ? "Lightning" : "Emitter", e.id, e.name);
     e.kind = kind;
     e.position = position;
     e.intensity = kNewEmitterIntensityPerM;
@@ -403,6 +403,29 @@ int addEmitter(Preset& preset, EmitterKind kind, const glm::dvec3& position) {
     }
     preset.emitters.push_back(e);
     return int(preset.emitters.size()) - 1;
+}
+
+CloudVolume newCloudVolumeAt(const CloudParams& layer, const glm::dvec3& lookAt) {
+    CloudVolume v;
+    const double thickness =
+        std::isfinite(layer.thicknessM) && layer.thicknessM > 0.0 ? layer.thicknessM : 2000.0;
+    const double bottom = std::isfinite(layer.bottomM) ? layer.bottomM : 1500.0;
+    v.position = {std::isfinite(lookAt.x) ? lookAt.x : 0.0, bottom + 0.5 * thickness,
+                  std::isfinite(lookAt.z) ? lookAt.z : 0.0};
+    v.halfExtents = {kNewCloudVolumeHalfWidthM, std::max(0.5 * thickness, 1.0), kNewCloudVolumeHalfWidthM};
+    v.coverage = 1.0;
+    v.edgeSoftness = 0.5;
+    return v;
+}
+
+int addCloudVolume(Preset& preset, FogVolumeShape shape, const CloudVolume& placed) {
+    CloudVolume v = placed;
+    const bool box = shape == FogVolumeShape::Box;
+    nameNewObject(preset, ParamScope::CloudVolume, box ? "cloud_box" : "cloud_ellipsoid",
+                  box ? "Cloud box" : "Cloud ellipsoid", v.id, v.name);
+    v.shape = shape;
+    preset.cloudVolumes.push_back(v);
+    return int(preset.cloudVolumes.size()) - 1;
 }
 
 /// Appends a copy of (preset.*objects)[index] with a new unique id, " copy"

@@ -7,6 +7,7 @@
 // changed") and objects (add, duplicate, delete, rename).
 #pragma once
 
+#include <aerial/clouds.hpp>
 #include <aerial/param_table.hpp>
 #include <aerial/preset.hpp>
 
@@ -118,6 +119,18 @@ inline constexpr double kNewEmitterAttenuationPerM2 = 0.05;
 int addVolume(Preset& preset, FogVolumeShape shape, const glm::dvec3& position);
 /// Adds an emitter (point or lightning) with artist-sane values; returns its index.
 int addEmitter(Preset& preset, EmitterKind kind, const glm::dvec3& position);
+/// Half width [m] (x and z) of a new cloud volume: a cell 6 km across.
+inline constexpr double kNewCloudVolumeHalfWidthM = 3000.0;
+
+/// A new cloud volume for the layer `layer` (the clouds at the current time)
+/// above `lookAt` (the point the camera looks at): centred in the layer
+/// (height bottom + thickness / 2), kNewCloudVolumeHalfWidthM across x and z
+/// and half the thickness tall, coverage 1 (a storm cell), edge softness 0.5.
+/// Id, name and shape are set by addCloudVolume.
+CloudVolume newCloudVolumeAt(const CloudParams& layer, const glm::dvec3& lookAt);
+/// Adds `placed` (newCloudVolumeAt) as a box or an ellipsoid with a fresh id
+/// and name ("Cloud box", "Cloud ellipsoid 2"); returns its index.
+int addCloudVolume(Preset& preset, FogVolumeShape shape, const CloudVolume& placed);
 /// Duplicates a volume, emitter or cloud volume (new id, " copy" name, tracks copied,
 /// offset by `offset`); returns the new index or -1.
 int duplicateObject(Preset& preset, ParamScope scope, int index, const glm::dvec3& offset);

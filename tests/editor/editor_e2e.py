@@ -5,7 +5,8 @@ file code paths. Python standard library only.
 
     editor_e2e.py --editor PATH --source-dir DIR --work-dir DIR CASE
 
-CASE: workflow | undo_redo | crash_recovery | screenshot | errors | prompts | session
+CASE: workflow | undo_redo | crash_recovery | screenshot | exposure | errors | prompts | session |
+      cloud_volume
 
 Every case FAILS (never skips) when the editor cannot start under Xvfb.
 """
@@ -443,6 +444,93 @@ quit
     print("OK: exposure")
 
 
+def case_cloud_volume(env):
+    """A cloud ellipsoid added to a preset with a sparse cloud layer: it sits in
+    the layer above the camera's pivot; moved 9 km ahead (in view of the
+    default camera), coverage 1 inside it makes the sky cloudier than the
+    layer's own coverage there; the gizmo moves it, F frames it, undo removes it."""
+    with open(os.path.join(env.source, "presets", "clear_summer_day.json")) as f:
+        preset = json.load(f)
+    preset["clouds"]["coverage"] = 0.2
+    preset["tracks"] = [t for t in preset.get("tracks", []) if not t.get("param", "").startswith("clouds.")]
+    fixture = env.path("sparse_clouds.json")
+    with open(fixture, "w") as f:
+        json.dump(preset, f, indent=1)
+    clear, before, after = env.path("clear.png"), env.path("before.png"), env.path("after.png")
+    # Cloud marching on llvmpipe is slow: a quarter-resolution viewport and two screenshots.
+    p = env.run(env.script("cloud_volume.txt", """
+open {fixture}
+resolution_scale 0.25
+time 12
+screenshot {clear}
+add_cloud_volume ellipsoid
+expect_cloud_volumes 1
+expect_selected cloud_volume 0
+expect_param cloud_volume[0].half_extents_m 3000 900 3000 0
+set cloud_volume[0].position_m 0 2300 -9000
+set cloud_volume[0].coverage 0.2
+screenshot {before}
+set cloud_volume[0].coverage 1
+expect_param cloud_volume[0].coverage 1 0
+screenshot {after}
+gizmo_drag translate x 60 0 3
+print cloud_volume[0].position_m
+frame
+print_camera
+expect_undo 5
+undo
+undo
+undo
+undo
+undo
+expect_cloud_volumes 0
+expect_clean
+redo
+expect_cloud_volumes 1
+view clouds off
+view clouds on
+quit
+""".format(fixture=fixture, clear=clear, before=before, after=after)))
+    added = re.search(r"added cloud volume 0 at (\S+) (\S+) (\S+)", p.stdout)
+    check(added, "no 'added cloud volume' line")
+    start = [float(added.group(i)) for i in (1, 2, 3)]
+    # The layer at 12:00: bottom 1400 m, 1800 m thick (the fixture has no cloud tracks).
+    check(abs(start[1] - (1400 + 900)) < 1e-9, "the cloud volume is not centred in the layer: %s" % start)
+    moved = re.search(r"cloud_volume\[0\]\.position_m = (\S+) (\S+) (\S+)", p.stdout)
+    check(moved, "no position printed after the gizmo drag")
+    end = [float(moved.group(i)) for i in (1, 2, 3)]
+    print("cloud volume: added at %s, after the drag %s" % (start, end))
+    check(end[0] - start[0] > 10.0, "the gizmo drag along +x did not move the cloud volume along +x")
+    check(abs(end[1] - start[1]) < 1e-9 and abs(end[2] + 9000) < 1e-9, "an x drag changed y or z")
+    camera = re.search(r"camera (\{.*\})", p.stdout)
+    check(camera, "no camera printed")
+    target = json.loads(camera.group(1))["target_m"]
+    check(all(abs(a - b) < 1e-6 for a, b in zip(target, end)), "F did not frame the cloud volume: %s" % target)
+
+    m = re.search(r"selection_bounds (\S+) (\S+) (\S+) (\S+)", p.stdout)
+    check(m, "no selection bounds printed for the cloud volume")
+    x0, y0, x1, y1 = [float(m.group(i)) for i in (1, 2, 3, 4)]
+    w0, h0, bpp, a = read_png(before)
+    w1, h1, _, b = read_png(after)
+    _, _, _, c = read_png(clear)
+    check((w0, h0) == (w1, h1), "screenshots of different sizes")
+    # Inside the volume the coverage is mix(layer, volume, w): the layer's own coverage changes nothing.
+    same = max(abs(a[y][i] - c[y][i]) for y in range(h0) for i in range(w0 * bpp) if i % bpp < 3)
+    check(same <= 1, "a cloud volume with the layer's coverage changed the picture (by up to %d levels)" % same)
+    total = 0.0
+    changed = 0
+    for y in range(h0):
+        for x in range(w0):
+            d = sum(abs(a[y][x * bpp + c] - b[y][x * bpp + c]) for c in range(3)) / 3.0
+            total += d
+            changed += d > 8.0
+    mean = total / (w0 * h0)
+    print("mean |difference| %.2f (8-bit levels), %d of %d px changed by more than 8; volume bounds %s" %
+          (mean, changed, w0 * h0, (x0, y0, x1, y1)))
+    check(changed > w0 * h0 // 50, "coverage 1 in the cloud volume did not change the sky (%d px)" % changed)
+    print("OK: cloud_volume")
+
+
 def case_errors(env):
     """A bad preset shows the loader's errors and changes nothing; a script error
     names its line; without a display the editor says so and exits 2."""
@@ -565,6 +653,7 @@ CASES = {
     "screenshot": case_screenshot,
     "exposure": case_exposure,
     "errors": case_errors,
+    "cloud_volume": case_cloud_volume,
 }
 
 

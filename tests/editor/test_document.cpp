@@ -188,6 +188,11 @@ TEST(Document, EveryKindOfEditRoundTrips) {
          [](Preset& p) { p.volumes[0].rotation = glm::dquat(0.7071067811865476, 0, 0.7071067811865476, 0); }},
         {"gizmo scale", [](Preset& p) { p.volumes[0].halfExtents *= 2.0; }},
         {"preset name", [](Preset& p) { p.name = "Other"; }},
+        {"add cloud volume",
+         [](Preset& p) {
+             addCloudVolume(p, FogVolumeShape::Ellipsoid,
+                            newCloudVolumeAt(p.environment.clouds, {10, 0, -20}));
+         }},
     };
     for (const EditCase& e : edits) {
         SCOPED_TRACE(e.name);
@@ -204,6 +209,40 @@ TEST(Document, EveryKindOfEditRoundTrips) {
         EXPECT_TRUE(presetsIdentical(doc.preset(), after));
         EXPECT_TRUE(doc.dirty());
         EXPECT_EQ(doc.undoLabel(), e.name);
+    }
+}
+
+// A cloud volume added, moved by the gizmo, duplicated and deleted: each
+// step undoes and redoes to the same preset, bit for bit (presetsIdentical
+// compares every parameter's bits).
+TEST(Document, CloudVolumeEditsUndoBitForBit) {
+    Document doc;
+    std::vector<Preset> states{doc.preset()};
+    const auto step = [&](const char* label, const std::function<void(Preset&)>& edit) {
+        ASSERT_TRUE(doc.apply(label, "", edit));
+        states.push_back(doc.preset());
+    };
+    step("Add cloud box", [](Preset& p) {
+        addCloudVolume(p, FogVolumeShape::Box, newCloudVolumeAt(p.environment.clouds, {0.1, 5, 0.3}));
+    });
+    step("Move", [](Preset& p) {
+        const double position[4] = {1234.5678, 2100.25, -987.125, 0};
+        setValueAt(p, *parseParamAddress(p, "cloud_volume[0].position_m", nullptr), position, 9.0);
+    });
+    step("Key coverage",
+         [](Preset& p) { keyParam(p, *parseParamAddress(p, "cloud_volume[0].coverage", nullptr), 9.0); });
+    step("Duplicate", [](Preset& p) { duplicateObject(p, ParamScope::CloudVolume, 0, {1000, 0, 0}); });
+    step("Delete", [](Preset& p) { deleteObject(p, ParamScope::CloudVolume, 0); });
+    ASSERT_EQ(doc.preset().cloudVolumes.size(), 1u);
+    EXPECT_EQ(doc.preset().cloudVolumes[0].id, "cloud_box_2");
+    for (std::size_t i = states.size() - 1; i > 0; --i) {
+        ASSERT_TRUE(doc.undo());
+        EXPECT_TRUE(presetsIdentical(doc.preset(), states[i - 1])) << "undo to state " << i - 1;
+    }
+    EXPECT_FALSE(doc.dirty());
+    for (std::size_t i = 1; i < states.size(); ++i) {
+        ASSERT_TRUE(doc.redo());
+        EXPECT_TRUE(presetsIdentical(doc.preset(), states[i])) << "redo to state " << i;
     }
 }
 

@@ -241,8 +241,7 @@ TEST(PresetEdit, Objects) {
 }
 
 TEST(PresetEdit, CloudVolumesAreObjectsToo) {
-    // No inspector for them yet; the model already addresses, keys,
-    // duplicates, renames and deletes them like volumes.
+    // The model addresses, keys, duplicates, renames and deletes them like volumes.
     Preset p;
     CloudVolume storm;
     storm.id = "storm";
@@ -270,6 +269,39 @@ TEST(PresetEdit, CloudVolumesAreObjectsToo) {
     EXPECT_EQ(p.cloudVolumes.size(), 1u);
     EXPECT_EQ(p.tracks.size(), 1u);
     EXPECT_EQ(p.tracks[0].target.objectId, "storm_2");
+}
+
+TEST(PresetEdit, NewCloudVolumeSitsInTheLayerAboveTheLookAtPoint) {
+    CloudParams layer;
+    layer.bottomM = 1400.0;
+    layer.thicknessM = 1800.0;
+    const CloudVolume v = newCloudVolumeAt(layer, {120.0, 3.0, -450.0});
+    EXPECT_EQ(v.position, glm::dvec3(120.0, 1400.0 + 900.0, -450.0));
+    EXPECT_EQ(v.halfExtents, glm::dvec3(kNewCloudVolumeHalfWidthM, 900.0, kNewCloudVolumeHalfWidthM));
+    EXPECT_EQ(v.coverage, 1.0);
+    EXPECT_EQ(v.edgeSoftness, 0.5);
+    // Not finite where it looks: above the origin.
+    EXPECT_EQ(newCloudVolumeAt(layer, {NAN, 0.0, INFINITY}).position, glm::dvec3(0.0, 2300.0, 0.0));
+
+    Preset p;
+    EXPECT_EQ(addCloudVolume(p, FogVolumeShape::Ellipsoid, v), 0);
+    EXPECT_EQ(addCloudVolume(p, FogVolumeShape::Ellipsoid, v), 1);
+    EXPECT_EQ(addCloudVolume(p, FogVolumeShape::Box, v), 2);
+    EXPECT_EQ(p.cloudVolumes[0].id, "cloud_ellipsoid");
+    EXPECT_EQ(p.cloudVolumes[0].name, "Cloud ellipsoid");
+    EXPECT_EQ(p.cloudVolumes[1].id, "cloud_ellipsoid_2");
+    EXPECT_EQ(p.cloudVolumes[1].name, "Cloud ellipsoid 2");
+    EXPECT_EQ(p.cloudVolumes[2].id, "cloud_box");
+    EXPECT_EQ(p.cloudVolumes[2].shape, FogVolumeShape::Box);
+    EXPECT_EQ(p.cloudVolumes[2].position, v.position);
+    EXPECT_TRUE(validatePreset(p).empty());
+    // Duplicate and delete like any object.
+    EXPECT_EQ(duplicateObject(p, ParamScope::CloudVolume, 2, {1000, 0, 0}), 3);
+    EXPECT_EQ(p.cloudVolumes[3].id, "cloud_box_2");
+    EXPECT_EQ(p.cloudVolumes[3].position, v.position + glm::dvec3(1000, 0, 0));
+    EXPECT_TRUE(deleteObject(p, ParamScope::CloudVolume, 0));
+    EXPECT_EQ(objectCount(p, ParamScope::CloudVolume), 3u);
+    EXPECT_EQ(p.cloudVolumes[0].id, "cloud_ellipsoid_2");
 }
 
 }  // namespace

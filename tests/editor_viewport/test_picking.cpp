@@ -257,6 +257,53 @@ TEST(Pick, NearestHitWinsWhateverTheOrder) {
     EXPECT_EQ(pick({{0, 0, 0}, {0, 0, 0}}, volumes, emitters, alpha).kind, PickHit::Kind::None);
 }
 
+TEST(Pick, CloudVolumesByTheirShapeWhereNothingElseIs) {
+    // A storm cell kilometres across, seen from the ground 10 km away.
+    CloudVolume cell;
+    cell.shape = FogVolumeShape::Ellipsoid;
+    cell.position = {0, 2500, -10000};
+    cell.rotation = glm::angleAxis(0.3, glm::dvec3(0, 1, 0));
+    cell.halfExtents = {3000, 900, 3000};
+    const FogVolume shape = shapeOf(cell);
+    EXPECT_EQ(shape.shape, cell.shape);
+    EXPECT_EQ(shape.position, cell.position);
+    EXPECT_EQ(shape.rotation, cell.rotation);
+    EXPECT_EQ(shape.halfExtents, cell.halfExtents);
+    const std::vector<CloudVolume> cells{cell};
+    const glm::dvec3 eye(0, 2, 0);
+    const Ray atCentre{eye, glm::normalize(cell.position - eye)};
+    PickHit hit = pick(atCentre, {}, {}, cells, 0.01, true);
+    EXPECT_EQ(hit.kind, PickHit::Kind::CloudVolume);
+    EXPECT_EQ(hit.index, 0);
+    EXPECT_NEAR(hit.distance, intersectVolumeShape(atCentre, shape).tIn, 1e-9);
+    // Past the ellipsoid's rim but inside its bounding box: picked by the shape, not the bounds.
+    const Ray corner{{2500, 3300, 0}, {0, 0, -1}};
+    EXPECT_EQ(pick(corner, {}, {}, cells, 0.01, true).kind, PickHit::Kind::None);
+    std::vector<CloudVolume> box = cells;
+    box[0].shape = FogVolumeShape::Box;
+    box[0].rotation = glm::dquat(1, 0, 0, 0);
+    EXPECT_EQ(pick(corner, {}, {}, box, 0.01, true).kind, PickHit::Kind::CloudVolume);
+    // A fog volume or an emitter on the ray wins, even behind the cell's entry.
+    const std::vector<FogVolume> fog{makeVolume(FogVolumeShape::Box, eye + 20000.0 * atCentre.direction,
+                                                glm::dquat(1, 0, 0, 0), {50, 50, 50})};
+    hit = pick(atCentre, fog, {}, cells, 0.01, true);
+    EXPECT_EQ(hit.kind, PickHit::Kind::Volume);
+    std::vector<Emitter> lamps(1);
+    lamps[0].position = eye + 30.0 * atCentre.direction;
+    hit = pick(atCentre, {}, lamps, cells, 0.01, true);
+    EXPECT_EQ(hit.kind, PickHit::Kind::Emitter);
+    // From inside the cell: picked at its exit; the nearer of two overlapping cells.
+    const Ray inside{cell.position, {0, 0, -1}};
+    hit = pick(inside, {}, {}, cells, 0.01);
+    EXPECT_EQ(hit.kind, PickHit::Kind::CloudVolume);
+    EXPECT_NEAR(hit.distance, 3000.0, 1e-6);
+    std::vector<CloudVolume> two = cells;
+    two.push_back(cell);
+    two[1].position.z -= 500.0;
+    hit = pick(inside, {}, {}, two, 0.01);
+    EXPECT_EQ(hit.index, 0);
+}
+
 TEST(Pick, IconsKeepTheirScreenSize) {
     // Camera at the origin looking -Z; an icon of 10 px radius at the centre
     // of a 720 px tall viewport. Rays 9 px off hit it at any distance, 11 px

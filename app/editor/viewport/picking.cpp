@@ -113,6 +113,55 @@ std::optional<double> intersectIcon(const Ray& ray, const glm::dvec3& position, 
     return distance * std::max(cosTheta - std::sqrt(under), 0.0);
 }
 
+FogVolume shapeOf(const CloudVolume& cloudVolume) {
+    FogVolume v;
+    v.shape = cloudVolume.shape;
+    v.position = cloudVolume.position;
+    v.rotation = cloudVolume.rotation;
+    v.halfExtents = cloudVolume.halfExtents;
+    return v;
+}
+
+namespace {
+
+// The nearest volume along a unit ray: its entry, or its exit from inside.
+void nearestVolume(const Ray& r, const std::vector<FogVolume>& volumes, PickHit::Kind kind, PickHit& best,
+                   double& bestDistance) {
+    for (std::size_t i = 0; i < volumes.size(); ++i) {
+        const RayInterval hit = intersectVolumeShape(r, volumes[i]);
+        if (!hit.hit || hit.tOut < 0.0) {
+            continue;
+        }
+        const double t = hit.tIn >= 0.0 ? hit.tIn : hit.tOut;  // inside: the exit
+        if (t < bestDistance) {
+            bestDistance = t;
+            best.kind = kind;
+            best.index = static_cast<int>(i);
+            best.distance = t;
+        }
+    }
+}
+
+}  // namespace
+
+PickHit pick(const Ray& ray, const std::vector<FogVolume>& volumes, const std::vector<Emitter>& emitters,
+             const std::vector<CloudVolume>& cloudVolumes, double iconAngularRadius, bool emittersFirst) {
+    PickHit best = pick(ray, volumes, emitters, iconAngularRadius, emittersFirst);
+    const double len = glm::length(ray.direction);
+    if (best.kind != PickHit::Kind::None || !isFinite(ray.origin) || !std::isfinite(len) || !(len > 0.0)) {
+        return best;
+    }
+    std::vector<FogVolume> shapes;
+    shapes.reserve(cloudVolumes.size());
+    for (const CloudVolume& c : cloudVolumes) {
+        shapes.push_back(shapeOf(c));
+    }
+    double bestDistance = std::numeric_limits<double>::infinity();
+    nearestVolume(Ray{ray.origin, ray.direction / len}, shapes, PickHit::Kind::CloudVolume, best,
+                  bestDistance);
+    return best;
+}
+
 PickHit pick(const Ray& ray, const std::vector<FogVolume>& volumes, const std::vector<Emitter>& emitters,
              double iconAngularRadius, bool emittersFirst) {
     PickHit best;
@@ -123,19 +172,7 @@ PickHit pick(const Ray& ray, const std::vector<FogVolume>& volumes, const std::v
     }
     r.direction /= len;
     double bestDistance = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i < volumes.size(); ++i) {
-        const RayInterval hit = intersectVolumeShape(r, volumes[i]);
-        if (!hit.hit || hit.tOut < 0.0) {
-            continue;
-        }
-        const double t = hit.tIn >= 0.0 ? hit.tIn : hit.tOut;  // inside: the exit
-        if (t < bestDistance) {
-            bestDistance = t;
-            best.kind = PickHit::Kind::Volume;
-            best.index = static_cast<int>(i);
-            best.distance = t;
-        }
-    }
+    nearestVolume(r, volumes, PickHit::Kind::Volume, best, bestDistance);
     if (emittersFirst) {
         bestDistance = std::numeric_limits<double>::infinity();
     }

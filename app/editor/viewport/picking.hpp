@@ -20,6 +20,12 @@
 // is the world distance [m]. Degenerate volumes follow core's rules
 // (fog_volume.hpp, "Sanitising") and are never hit.
 //
+// Cloud volumes are picked by the same geometry (shapeOf: a FogVolume with
+// the cloud volume's shape, position, rotation and half extents). They are
+// kilometres across and hold the camera and every other object, so they
+// come last: a cloud volume is picked only where the ray hits no fog volume
+// and no emitter icon.
+//
 // Emitters are picked as screen-constant icons: a ray hits an emitter when
 // the angle between the ray and the direction to it is at most
 // `iconAngularRadius` — exactly the sphere of radius D sin(alpha) around it
@@ -28,6 +34,7 @@
 // distance is where the ray enters that sphere.
 #pragma once
 
+#include <aerial/clouds.hpp>
 #include <aerial/emitter.hpp>
 #include <aerial/fog_volume.hpp>
 #include <aerial/renderer/camera.hpp>
@@ -92,11 +99,16 @@ RayInterval intersectVolumeShape(const Ray& ray, const FogVolume& volume);
 /// at it, or input is not finite.
 std::optional<double> intersectIcon(const Ray& ray, const glm::dvec3& position, double angularRadius);
 
+/// A cloud volume's shape as a FogVolume (shape, position, rotation, half
+/// extents; the rest default): what core's fog-volume geometry, picking,
+/// outlines and bounds take.
+FogVolume shapeOf(const CloudVolume& cloudVolume);
+
 /// What a click selected.
 struct PickHit {
-    enum class Kind { None, Volume, Emitter };
+    enum class Kind { None, Volume, Emitter, CloudVolume };
     Kind kind = Kind::None;
-    int index = -1;         ///< into the volumes or the emitters vector; -1 for None
+    int index = -1;         ///< into the volumes, emitters or cloud volumes vector; -1 for None
     double distance = 0.0;  ///< along the ray [m]
 };
 
@@ -111,6 +123,13 @@ struct PickHit {
 /// a fog volume can be clicked); otherwise the nearest hit wins.
 PickHit pick(const Ray& ray, const std::vector<FogVolume>& volumes, const std::vector<Emitter>& emitters,
              double iconAngularRadius, bool emittersFirst = false);
+
+/// The same, then the cloud volumes where nothing else was hit: the nearest
+/// by the volume rule above (entry, or exit from inside), ties to the lower
+/// index.
+PickHit pick(const Ray& ray, const std::vector<FogVolume>& volumes, const std::vector<Emitter>& emitters,
+             const std::vector<CloudVolume>& cloudVolumes, double iconAngularRadius,
+             bool emittersFirst = false);
 
 /// A sphere [m]: what CameraController::frame() fits into the view.
 struct BoundingSphere {
