@@ -43,7 +43,7 @@
 //     anisotropy c^i with a = 0.5, b = 0.5, c = 0.5 (a <= b keeps it
 //     energy-conserving); and, for the light deep in a thick cloud that
 //     the octaves' Beer-Lambert all but loses, the two-stream diffusion
-//     transmittance (1 - e^-tau) / (1 + 3/4 tau (1 - 0.85)) (Bohren 1987,
+//     transmittance (1 - e^-tau) / (1 + 3/4 tau (1 - 0.85)) x mu_l / pi (Bohren 1987,
 //     "Multiple scattering of light and some of its observable
 //     consequences"), isotropic: cloud bases stay grey, not black.
 //   Phase P_i: two Henyey-Greenstein lobes, mix(HG(mu, g c^i),
@@ -169,11 +169,16 @@ vec3 lightScattering(vec3 p, vec3 l, vec3 E, float mu) {
         b *= kOctaveExtinction;
         c *= kOctavePhase;
     }
-    // Deep inside, the light that scattered many times: the two-stream
-    // (diffusion) transmittance of a slab of optical depth tau, 1 / (1 +
-    // 3/4 tau (1 - g)) with the droplets' g = 0.85 (Bohren 1987), isotropic,
-    // faded in with (1 - e^-tau) so the edges keep the octaves' look.
-    sum += kDiffuseWeight * (1.0 - exp(-tau)) / (1.0 + 0.75 * tau * (1.0 - 0.85)) / (4.0 * kPi) * E;
+    // The light that scattered many times: inside a thick cloud it is a
+    // nearly isotropic diffuse field of radiance F_d / pi, F_d = E mu_l T_d
+    // the diffuse flux, T_d = 1 / (1 + 3/4 tau (1 - g)) the two-stream
+    // (diffusion) transmittance of a slab of optical depth tau with the
+    // droplets' g = 0.85 (Bohren 1987); with a normalised phase the source
+    // per unit sigma_s is that radiance. Faded in with (1 - e^-tau) so the
+    // edges keep the octaves' look. Without it sunlit tops read darker than
+    // the ground between them and bases go black.
+    float muUp = max(dot(normalize(p + vec3(0.0, clouds.planetRadius, 0.0)), l), 0.0);
+    sum += kDiffuseWeight * (1.0 - exp(-tau)) / (1.0 + 0.75 * tau * (1.0 - 0.85)) * muUp / kPi * E;
     return sum;
 }
 
