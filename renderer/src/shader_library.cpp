@@ -208,6 +208,8 @@ const char* ShaderLibrary::fileOf(Pass pass) {
             return "clouds.glsl";
         case Pass::CloudShadow:
             return "cloud_shadow.glsl";
+        case Pass::ShadowDepth:
+            return "shadow_depth.glsl";
         case Pass::Count:
             break;
     }

@@ -52,6 +52,7 @@ enum class Pass {
     FogVolumeMarched,
     Clouds,
     CloudShadow,
+    ShadowDepth,
     Count
 };
 
