@@ -7,6 +7,10 @@
 //     timer queries (GL_TIME_ELAPSED), w_* the wall time between glFinish
 //     calls around the pass (FrameDesc::gpuTimers), and the frame's wall
 //     time with the read-back (frame_ms).
+//   ShadowMaps/res/width: that frame with the cascaded shadow maps at `res`
+//     texels per cascade (0: off), `width` pixels wide (16:9): the wall time
+//     of the shadow-map pass, of the scene, transparent and particle passes
+//     (whose shading reads it) and of the rest [ms].
 //   Renderer/FogVolumesAnalyticVsMarched: the same frame with 8 fog volumes
 //     (boxes and ellipsoids, rotated, non-uniformly scaled, tilted
 //     gradients, two around the camera's path), rendered in one run with the
@@ -39,6 +43,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -128,6 +133,9 @@ void DefaultScene720p(benchmark::State& state) {
         sum.emitters += t.emitters;
         sum.transparent += t.transparent;
         sum.particles += t.particles;
+        sum.cloudShadow += t.cloudShadow;
+        sum.clouds += t.clouds;
+        sum.shadowMap += t.shadowMap;
     };
     double wall = 0.0;
     for (auto _ : state) {
@@ -145,6 +153,7 @@ void DefaultScene720p(benchmark::State& state) {
         state.counters[p + "emitters"] = t.emitters / n;
         state.counters[p + "transp"] = t.transparent / n;
         state.counters[p + "particles"] = t.particles / n;
+        state.counters[p + "shadowMap"] = t.shadowMap / n;
         state.counters[p + "total"] = t.total() / n;
     };
     report("q_", gpu);  // GL_TIME_ELAPSED queries [ms]
@@ -152,6 +161,51 @@ void DefaultScene720p(benchmark::State& state) {
     state.counters["frame_ms"] = wall / n;
 }
 BENCHMARK(DefaultScene720p)->Unit(benchmark::kMillisecond)->Iterations(8);
+
+/// The same frame with the shadow maps at range(0) texels per cascade (0:
+/// shadows off), range(1) pixels wide (16:9): the wall time of the shadow
+/// pass and of the passes whose shading reads it [ms].
+void ShadowMaps(benchmark::State& state) {
+    Setup& s = *setup();
+    if (!s.error.empty()) {
+        state.SkipWithError(s.error.c_str());
+        return;
+    }
+    FrameDesc frame;
+    frame.width = int(state.range(1));
+    frame.height = frame.width * 9 / 16;
+    frame.gpuTimers = true;
+    frame.passes.shadows = state.range(0) > 0;
+    frame.shadowMap.resolution = int(std::max<std::int64_t>(state.range(0), 256));
+    aerial::renderer::PassTimes sum;
+    double wall = 0.0;
+    for (auto _ : state) {
+        wall += timedFrame(s, s.state, frame);
+        const aerial::renderer::PassTimes& t = s.renderer->stats().wallMilliseconds;
+        sum.shadowMap += t.shadowMap;
+        sum.scene += t.scene;
+        sum.transparent += t.transparent;
+        sum.particles += t.particles;
+        sum.sky += t.total() - t.shadowMap - t.scene - t.transparent - t.particles;  // the rest
+    }
+    const double n = double(state.iterations());
+    state.counters["w_shadowMap"] = sum.shadowMap / n;
+    state.counters["w_scene"] = sum.scene / n;
+    state.counters["w_transp"] = sum.transparent / n;
+    state.counters["w_particles"] = sum.particles / n;
+    state.counters["w_others"] = sum.sky / n;
+    state.counters["frame_ms"] = wall / n;
+}
+BENCHMARK(ShadowMaps)
+    ->ArgNames({"res", "width"})
+    ->Args({0, 1280})
+    ->Args({1024, 1280})
+    ->Args({2048, 1280})
+    ->Args({0, 320})
+    ->Args({1024, 320})
+    ->Args({2048, 320})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(4);
 
 /// Eight volumes over the default view: boxes and ellipsoids along the
 /// valley, rotated, non-uniformly scaled, with tilted gradients; the first

@@ -62,6 +62,7 @@ void main() {
 #else
 #include "common/emitters.glsl"
 #include "common/clouds.glsl"
+#include "common/shadows.glsl"
 layout(binding = 4) uniform sampler2D uLinearDepth;
 
 in vec2 vCorner;
@@ -83,7 +84,17 @@ void main() {
                  clamp((vSpriteDepth - frame.nearDistance) / fadeDistance, 0.0, 1.0);
     float alpha = clamp(vAlbedoOpacity.w, 0.0, 1.0) * profile * fade;
     if (!(alpha > 0.0)) discard;
-    vec3 irradiance = frame.sunIlluminance + frame.moonIlluminance;
+    vec3 sunE = frame.sunIlluminance;
+    vec3 moonE = frame.moonIlluminance;
+    if (shadow.castingLight > 0.5) {  // the scene's shadow maps at the sprite's point (no normal offset)
+        float visibility = sceneShadowVisibility(vWorld, vec3(0.0));
+        if (shadow.castingLight < 1.5) {
+            sunE *= visibility;
+        } else {
+            moonE *= visibility;
+        }
+    }
+    vec3 irradiance = sunE + moonE;
     if (clouds.shadowActive > 0.5) irradiance *= cloudShadowVisibility(vWorld);  // cloud shadow
     for (int k = 0; k < frame.emitterCount; ++k) {
         vec3 toLight = emitters[k].position - vWorld;

@@ -1,10 +1,9 @@
 // command_render.cpp — `aerial render PRESET --out FILE.exr|png [--time T]
 // [--eye x,y,z --target x,y,z --fov deg] [--size WxH] [--exposure EV]
-// [--display NAME] [--view NAME] [--float] [--json]`: one frame of the built-in scene (renderer/scene.hpp:
-// terrain with a valley, a lake, rocks, buildings, glass, a fence, steam)
-// under the preset at one time of day,
-// rendered headless (EGL on Mesa's surfaceless platform, no window) by the
-// same renderer the editor uses.
+// [--display NAME] [--view NAME] [--float] [--shadows on|off] [--json]`: one frame of the built-in scene
+// (renderer/scene.hpp: terrain with a valley, a lake, rocks, buildings, glass, a fence, steam) under the
+// preset at one time of day, rendered headless (EGL on Mesa's surfaceless platform, no window) by the same
+// renderer the editor uses.
 //
 // PRESET is a preset file, or the word `default` for the built-in default
 // preset (aerial::defaultPreset(); a file literally named "default" is
@@ -31,6 +30,10 @@
 // written; the file is written to a hidden temporary beside it, fsync'ed and
 // renamed, so FILE is either untouched or complete.
 //
+// --shadows on|off (default on): the sun's (or, at night, the moon's)
+// cascaded shadow maps on the scene (RenderPasses::shadows, the renderer's
+// default ShadowMapSettings); off renders exactly as without them.
+//
 // --scene FILE.gltf|.glb renders a glTF 2.0 scene (renderer/gltf.hpp)
 // instead of the built-in one; a bad or unsupported file is exit 1 with the
 // loader's one-line message, the loader's warnings go to stderr.
@@ -44,6 +47,7 @@
 //   {"file", "format" ("exr"/"png"), "width", "height",
 //    "preset": {"file", "name"}, "time_h", "time",
 //    "camera": {"eye", "target", "fov_deg"}, "precision" ("half"/"float"),
+//    "shadows" (true/false),
 //    "exposure": {"mode", "average_luminance" (metered, radiance units),
 //    "ev100" (what the preset's exposure chose), "compensation_ev",
 //    "exposure_ev" (--exposure), "display_ev" (the stops the display
@@ -97,6 +101,7 @@ struct RenderOptions {
     std::string display;   // "" = the OCIO config's default display
     std::string view;      // "" = the display's default view
     bool floatTarget = false;
+    std::string shadows = "on";  // on | off
     bool json = false;
 };
 
@@ -287,6 +292,7 @@ int runRender(const RenderOptions& options) {
     frame.height = height;
     frame.precision =
         options.floatTarget ? renderer::ColourPrecision::Float : renderer::ColourPrecision::Half;
+    frame.passes.shadows = options.shadows == "on";
     renderer.render(camera, state, frame);
     const renderer::Image image = renderer.readColour();
     const double renderMs = millisecondsSince(renderStart);
@@ -327,6 +333,7 @@ int runRender(const RenderOptions& options) {
              {"time", formatTime(state.timeHours)},
              {"camera", {{"eye", toJson(eye)}, {"target", toJson(target)}, {"fov_deg", options.fovDeg}}},
              {"precision", options.floatTarget ? "float" : "half"},
+             {"shadows", options.shadows == "on"},
              {"exposure",
               {{"mode", exposure.mode == ExposureMode::Manual ? "manual" : "automatic"},
                {"average_luminance", averageLuminance},
@@ -392,6 +399,11 @@ Command addRenderCommand(CLI::App& parent) {
         ->type_name("NAME");
     app->add_flag("--float", options->floatTarget,
                   "Render into RGBA32F instead of RGBA16F (the EXR is half float either way)");
+    app->add_option("--shadows", options->shadows,
+                    "Sun and moon shadows of the scene (cascaded shadow maps): on or off")
+        ->type_name("on|off")
+        ->check(CLI::IsMember({"on", "off"}))
+        ->capture_default_str();
     app->add_flag("--json", options->json, "Machine-readable output");
     app->footer(
         helpFooter("  aerial render presets/clear_summer_day.json --time 12:00 --out noon.png\n"

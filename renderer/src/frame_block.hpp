@@ -59,6 +59,16 @@ double frameStarIlluminance(const PresetState& state, const FrameDesc& frame);
 FrameBlock makeFrameBlock(const Camera& camera, const CameraFrame& view, const PresetState& state,
                           const FrameDesc& frame, const FrameBlockInputs& inputs);
 
+/// The frame's shadow-map block (shadow_map_pass.cpp; no GL): the brighter
+/// of sun and moon (as makeCloudBlock chooses), inactive when
+/// RenderPasses::shadows is off, `hasCasters` is false, or that light is
+/// below the horizon or dark; otherwise the cascades of `frame.shadowMap`
+/// (practical splits up to maxDistanceM), each an orthographic projection
+/// along the light fitted to its view slice's bounding sphere and snapped
+/// to whole texels. Fills `stats`.
+ShadowBlock makeShadowBlock(const CameraFrame& view, const PresetState& state, const FrameDesc& frame,
+                            bool hasCasters, ShadowMapStats& stats);
+
 /// Conversions of the blocks' fields from double precision.
 Vec4 toVec4(const glm::dvec3& v, double w = 0.0);
 Vec3 toVec3(const glm::dvec3& v);

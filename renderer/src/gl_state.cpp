@@ -34,7 +34,8 @@ void GLAPIENTRY debugCallback(GLenum /*source*/, GLenum type, GLuint id, GLenum 
     logMessage(*tDebugRoute.logger, level, text.c_str());
 }
 
-constexpr GLuint kUniformIndices[] = {kFrameBinding, kVolumeBinding, kObjectBinding, kCloudBinding};
+constexpr GLuint kUniformIndices[] = {kFrameBinding, kVolumeBinding, kObjectBinding, kCloudBinding,
+                                      kShadowBinding};
 
 }  // namespace
 
@@ -70,6 +71,9 @@ GlStateGuard::GlStateGuard(const Logger* logger, bool routeDebugOutput, int* err
     cull_ = glIsEnabled(GL_CULL_FACE);
     scissor_ = glIsEnabled(GL_SCISSOR_TEST);
     stencil_ = glIsEnabled(GL_STENCIL_TEST);
+    polygonOffsetFill_ = glIsEnabled(GL_POLYGON_OFFSET_FILL);
+    glGetFloatv(GL_POLYGON_OFFSET_FACTOR, &polygonOffsetFactor_);
+    glGetFloatv(GL_POLYGON_OFFSET_UNITS, &polygonOffsetUnits_);
     glGetBooleanv(GL_DEPTH_WRITEMASK, &depthMask_);
     glGetBooleanv(GL_COLOR_WRITEMASK, colourMask_);
     glGetIntegerv(GL_BLEND_SRC_RGB, &blendSrcRgb_);
@@ -85,7 +89,10 @@ GlStateGuard::GlStateGuard(const Logger* logger, bool routeDebugOutput, int* err
     glGetIntegerv(GL_PACK_ALIGNMENT, &packAlignment_);
     for (unsigned unit = 0; unit < kSavedUnits; ++unit) {
         glActiveTexture(GL_TEXTURE0 + unit);
-        glGetIntegerv(savedTarget(unit) == GL_TEXTURE_3D ? GL_TEXTURE_BINDING_3D : GL_TEXTURE_BINDING_2D,
+        const GLenum target = savedTarget(unit);
+        glGetIntegerv(target == GL_TEXTURE_3D         ? GL_TEXTURE_BINDING_3D
+                      : target == GL_TEXTURE_2D_ARRAY ? GL_TEXTURE_BINDING_2D_ARRAY
+                                                      : GL_TEXTURE_BINDING_2D,
                       &textures_[unit]);
         glGetIntegerv(GL_SAMPLER_BINDING, &samplers_[unit]);
     }
@@ -138,6 +145,8 @@ GlStateGuard::~GlStateGuard() {
     setEnabled(GL_CULL_FACE, cull_);
     setEnabled(GL_SCISSOR_TEST, scissor_);
     setEnabled(GL_STENCIL_TEST, stencil_);
+    setEnabled(GL_POLYGON_OFFSET_FILL, polygonOffsetFill_);
+    glPolygonOffset(polygonOffsetFactor_, polygonOffsetUnits_);
     glDepthMask(depthMask_);
     glColorMask(colourMask_[0], colourMask_[1], colourMask_[2], colourMask_[3]);
     glBlendFuncSeparate(static_cast<GLenum>(blendSrcRgb_), static_cast<GLenum>(blendDstRgb_),

@@ -33,20 +33,21 @@ private:
     GLint viewport_[4] = {};
     GLint program_ = 0, vertexArray_ = 0, arrayBuffer_ = 0, uniformBuffer_ = 0, storageBuffer_ = 0;
     GLboolean blend_ = GL_FALSE, depthTest_ = GL_FALSE, depthMask_ = GL_TRUE, depthClamp_ = GL_FALSE;
-    GLboolean cull_ = GL_FALSE, scissor_ = GL_FALSE, stencil_ = GL_FALSE;
+    GLboolean cull_ = GL_FALSE, scissor_ = GL_FALSE, stencil_ = GL_FALSE, polygonOffsetFill_ = GL_FALSE;
+    GLfloat polygonOffsetFactor_ = 0.0f, polygonOffsetUnits_ = 0.0f;
     GLboolean colourMask_[4] = {GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE};
     GLint blendSrcRgb_ = GL_ONE, blendDstRgb_ = GL_ZERO, blendSrcAlpha_ = GL_ONE, blendDstAlpha_ = GL_ZERO;
     GLint blendEquationRgb_ = GL_FUNC_ADD, blendEquationAlpha_ = GL_FUNC_ADD;
     GLint depthFunc_ = GL_LESS, cullMode_ = GL_BACK, frontFace_ = GL_CCW;
     GLint activeTexture_ = GL_TEXTURE0, packAlignment_ = 4;
     /// Units 0..7 (2D) and the cloud units 8, 9 (3D) and 10 (2D).
-    static constexpr unsigned kSavedUnits = 14;
+    static constexpr unsigned kSavedUnits = 15;
     static GLenum savedTarget(unsigned unit) {
-        return unit == 8 || unit == 9 ? GL_TEXTURE_3D : GL_TEXTURE_2D;
+        return unit == 8 || unit == 9 ? GL_TEXTURE_3D : unit == 11 ? GL_TEXTURE_2D_ARRAY : GL_TEXTURE_2D;
     }
     GLint textures_[kSavedUnits] = {};
     GLint samplers_[kSavedUnits] = {};
-    IndexedBuffer uniformBindings_[5];
+    IndexedBuffer uniformBindings_[6];
     IndexedBuffer storageBinding_;
     bool debugRouted_ = false;
     GLboolean debugOutput_ = GL_FALSE, debugSynchronous_ = GL_FALSE;

@@ -266,6 +266,34 @@ static_assert(offsetof(CloudBlock, groundAlbedo) == 160);
 static_assert(offsetof(CloudBlock, volumeData) == 176);
 static_assert(sizeof(CloudBlock) == 176 + 64 * kGpuCloudVolumes);
 
+/// shaders/common/shadows.glsl, ShadowBlock (binding 5): the cascaded
+/// shadow maps of the frame; built by makeShadowBlock (shadow_map_pass.cpp).
+constexpr int kMaxShadowCascades = 4;
+
+struct ShadowBlock {
+    /// Per cascade: world [m] -> (u, v, depth) in [0, 1]^3 of its layer
+    /// (orthographic along the light; depth 0 nearest the light).
+    Mat4 shadowFromWorld[kMaxShadowCascades];
+    float splitM[kMaxShadowCascades] = {};     ///< view depth where cascade k ends [m]
+    float texelM[kMaxShadowCascades] = {};     ///< world size of a texel of cascade k [m]
+    float depthPerM[kMaxShadowCascades] = {};  ///< depth units per metre along the light of cascade k
+    Vec3 toLight;                              ///< unit, towards the casting light
+    float castingLight = 0.0f;                 ///< 0 none, 1 the sun casts, 2 the moon casts
+    std::int32_t cascadeCount = 0;
+    float resolution = 0.0f;     ///< texels per side
+    float blendFraction = 0.0f;  ///< share of a cascade's depth range blended into the next
+    float padShadow = 0.0f;
+};
+static_assert(offsetof(ShadowBlock, splitM) == 256);
+static_assert(offsetof(ShadowBlock, texelM) == 272);
+static_assert(offsetof(ShadowBlock, depthPerM) == 288);
+static_assert(offsetof(ShadowBlock, toLight) == 304);
+static_assert(offsetof(ShadowBlock, castingLight) == 316);
+static_assert(offsetof(ShadowBlock, cascadeCount) == 320);
+static_assert(offsetof(ShadowBlock, resolution) == 324);
+static_assert(offsetof(ShadowBlock, blendFraction) == 328);
+static_assert(sizeof(ShadowBlock) == 336);
+
 /// shaders/particles.glsl, per-instance vertex attributes (locations 0..3).
 struct SpriteInstance {
     float centreRadius[4];
@@ -293,6 +321,7 @@ constexpr unsigned kVolumeBinding = 1;
 constexpr unsigned kEmitterBinding = 2;
 constexpr unsigned kObjectBinding = 3;
 constexpr unsigned kCloudBinding = 4;
+constexpr unsigned kShadowBinding = 5;
 constexpr unsigned kSunRayleighUnit = 0;
 constexpr unsigned kSunMieUnit = 1;
 constexpr unsigned kMoonRayleighUnit = 2;
@@ -308,5 +337,7 @@ constexpr unsigned kCloudShadowUnit = 10;
 constexpr unsigned kCloudTraceUnit = 11;
 constexpr unsigned kCloudHistoryUnit = 12;
 constexpr unsigned kPreviousDepthUnit = 13;
+/// The cascaded shadow maps (GL_DEPTH_COMPONENT32F 2D array, comparison on).
+constexpr unsigned kShadowMapUnit = 14;
 
 }  // namespace aerial::renderer::detail

@@ -8,8 +8,8 @@
 // storage buffers and textures (gpu_types.hpp's bindings and units), sets
 // the viewport, clears the targets and leaves the frame's baseline:
 //   draw framebuffer = sceneTarget with both colour attachments drawn,
-//   depth test, blending, face culling, depth clamp, scissor and stencil
-//   off, depth writes and all colour channels on.
+//   depth test, blending, face culling, depth clamp, polygon offset,
+//   scissor and stencil off, depth writes and all colour channels on.
 // A pass sets what it needs on entry and returns to the baseline on exit;
 // program, vertex array and texture unit 5 (base colour) are free for every
 // pass to change. Renderer::render's GlStateGuard restores the caller's state
@@ -84,6 +84,11 @@ struct RendererResources {
         CloudBlock cloudBlock;
         std::vector<double> emitters;  ///< the emitters' numbers, to see a change
     } cloudHistory;
+    /// The cascaded shadow maps (shadow_map_pass.cpp): a
+    /// GL_DEPTH_COMPONENT32F 2D array (one layer per cascade, comparison
+    /// sampling on), its depth-only target, the ShadowBlock buffer.
+    GLuint shadowMap = 0, shadowTarget = 0, shadowBuffer = 0;
+    int shadowMapSize = 0, shadowMapLayers = 0;  ///< of the allocated array
 };
 
 /// One frame as the passes see it.
@@ -104,6 +109,9 @@ public:
     /// already uploaded to gpu.cloudBuffer; set by Renderer::Impl::render.
     const CloudField* clouds = nullptr;
     CloudBlock cloudBlock;
+    /// The frame's shadow maps' block, already uploaded to gpu.shadowBuffer;
+    /// castingLight > 0 when the shadow-map pass draws this frame.
+    ShadowBlock shadowBlock;
     /// The layer is drawn this frame: clouds active and the pass on.
     bool cloudsDrawn() const { return clouds != nullptr && clouds->active() && desc.passes.clouds; }
 
@@ -134,6 +142,7 @@ extern const RenderPass kTransparentPass;  // transparent_pass.cpp
 extern const RenderPass kParticlePass;     // particle_pass.cpp
 extern const RenderPass kCloudShadowPass;  // cloud_shadow_pass.cpp
 extern const RenderPass kCloudPass;        // cloud_pass.cpp
+extern const RenderPass kShadowMapPass;    // shadow_map_pass.cpp
 
 /// Runs passes, measuring each when FrameDesc::gpuTimers: a GL_TIME_ELAPSED
 /// query around its draws and the wall time between glFinish calls before
@@ -209,5 +218,9 @@ void drawAmortisedClouds(FrameContext& frame);
 /// Forgets the history (the targets stay).
 void forgetCloudHistory(RendererResources& gpu);
 void destroyCloudHistory(RendererResources& gpu);
+/// Creates (or re-creates at a new size) the shadow map array, its target
+/// and buffer; destroyShadowResources deletes them.
+void prepareShadowResources(RendererResources& gpu, int resolution, int layers);
+void destroyShadowResources(RendererResources& gpu);
 
 }  // namespace aerial::renderer::detail

@@ -2,7 +2,8 @@
 // uploaded scene and sky tables) and the frame as a list of passes (one
 // file each: scene_pass.cpp, sky_pass.cpp, global_fog_pass.cpp,
 // volume_pass.cpp, emitter_pass.cpp, transparent_pass.cpp,
-// particle_pass.cpp; render_pass.hpp for their contract). See
+// particle_pass.cpp, cloud_shadow_pass.cpp, cloud_pass.cpp,
+// shadow_map_pass.cpp; render_pass.hpp for their contract). See
 // <aerial/renderer/renderer.hpp> for the order and the compositing contract,
 // and shaders/*.glsl for the per-pixel formulas.
 #include <aerial/renderer/renderer.hpp>
@@ -35,9 +36,9 @@ using detail::GpuMesh;
 
 /// The frame, in order (renderer.hpp).
 const detail::RenderPass* const kFramePasses[] = {
-    &detail::kCloudShadowPass, &detail::kScenePass,       &detail::kSkyPass,
-    &detail::kCloudPass,       &detail::kGlobalFogPass,   &detail::kVolumePass,
-    &detail::kEmitterPass,     &detail::kTransparentPass, &detail::kParticlePass,
+    &detail::kCloudShadowPass, &detail::kShadowMapPass, &detail::kScenePass,  &detail::kSkyPass,
+    &detail::kCloudPass,       &detail::kGlobalFogPass, &detail::kVolumePass, &detail::kEmitterPass,
+    &detail::kTransparentPass, &detail::kParticlePass,
 };
 
 }  // namespace
@@ -151,6 +152,8 @@ Renderer::Renderer(const RendererDesc& desc) : impl_(std::make_unique<Impl>()) {
     glNamedBufferData(s.volumeBuffer, sizeof(detail::VolumeBlock), nullptr, GL_DYNAMIC_DRAW);
     glCreateBuffers(1, &s.cloudBuffer);
     glNamedBufferData(s.cloudBuffer, sizeof(detail::CloudBlock), nullptr, GL_DYNAMIC_DRAW);
+    glCreateBuffers(1, &s.shadowBuffer);
+    glNamedBufferData(s.shadowBuffer, sizeof(detail::ShadowBlock), nullptr, GL_DYNAMIC_DRAW);
     glCreateBuffers(1, &s.objectBuffer);
     glNamedBufferData(s.objectBuffer, sizeof(detail::ObjectBlock), nullptr, GL_DYNAMIC_DRAW);
     detail::uploadEmitters(s, {});
@@ -165,6 +168,7 @@ Renderer::~Renderer() {
     s.destroyTargets();
     s.destroyScene();
     detail::destroyCloudResources(s);
+    detail::destroyShadowResources(s);
     detail::destroyMesh(s.hull);
     glDeleteTextures(1, &s.whiteTexture);
     glDeleteVertexArrays(1, &s.spriteArray);
@@ -290,12 +294,25 @@ void Renderer::Impl::render(const Camera& camera, const PresetState& state, cons
         detail::makeCloudBlock(clouds, state, frameDesc, view.eye, stats.cloudShadow);
     glNamedBufferSubData(cloudBuffer, 0, sizeof cloudBlock, &cloudBlock);
 
+    // The shadow maps of the brighter light (nothing while it is below the
+    // horizon, the pass is off or nothing casts).
+    const bool casters = frameDesc.passes.scene &&
+                         std::any_of(meshes.begin(), meshes.end(),
+                                     [](const GpuMesh& m) { return m.alphaMode != AlphaMode::Blend; });
+    const detail::ShadowBlock shadowBlock =
+        detail::makeShadowBlock(view, state, frameDesc, casters, stats.shadowMap);
+    if (stats.shadowMap.drawn) {
+        detail::prepareShadowResources(*this, stats.shadowMap.resolution, stats.shadowMap.cascades);
+    }
+    glNamedBufferSubData(shadowBuffer, 0, sizeof shadowBlock, &shadowBlock);
+
     // The frame's bindings and the baseline state of render_pass.hpp.
     glBindBufferBase(GL_UNIFORM_BUFFER, detail::kFrameBinding, frameBuffer);
     glBindBufferBase(GL_UNIFORM_BUFFER, detail::kVolumeBinding, volumeBuffer);
     glBindBufferBase(GL_UNIFORM_BUFFER, detail::kObjectBinding, objectBuffer);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, detail::kEmitterBinding, emitterBuffer);
     glBindBufferBase(GL_UNIFORM_BUFFER, detail::kCloudBinding, cloudBuffer);
+    glBindBufferBase(GL_UNIFORM_BUFFER, detail::kShadowBinding, shadowBuffer);
     const GLuint unitTextures[detail::kTextureUnitCount] = {
         sunSky.rayleigh, sunSky.mie,   moonSky.rayleigh, moonSky.mie,
         linearDepth,     whiteTexture, sunSky.multiple,  moonSky.multiple};
@@ -303,10 +320,11 @@ void Renderer::Impl::render(const Camera& camera, const PresetState& state, cons
         glBindTextureUnit(unit, unitTextures[unit]);
         glBindSampler(unit, 0);
     }
-    const GLuint cloudTextures[3][2] = {{detail::kCloudShapeUnit, cloudShape},
+    const GLuint frameTextures[4][2] = {{detail::kCloudShapeUnit, cloudShape},
                                         {detail::kCloudDetailUnit, cloudDetail},
-                                        {detail::kCloudShadowUnit, cloudShadowMap}};
-    for (const auto& [unit, texture] : cloudTextures) {
+                                        {detail::kCloudShadowUnit, cloudShadowMap},
+                                        {detail::kShadowMapUnit, stats.shadowMap.drawn ? shadowMap : 0u}};
+    for (const auto& [unit, texture] : frameTextures) {
         glBindTextureUnit(unit, texture);
         glBindSampler(unit, 0);
     }
@@ -315,6 +333,7 @@ void Renderer::Impl::render(const Camera& camera, const PresetState& state, cons
     glDisable(GL_CULL_FACE);
     glDisable(GL_BLEND);
     glDisable(GL_DEPTH_CLAMP);
+    glDisable(GL_POLYGON_OFFSET_FILL);
     glDisable(GL_DEPTH_TEST);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glViewport(0, 0, w, h);
@@ -333,6 +352,7 @@ void Renderer::Impl::render(const Camera& camera, const PresetState& state, cons
     detail::FrameContext frame(camera, view, state, frameDesc, block, *this, stats);
     frame.clouds = &clouds;
     frame.cloudBlock = cloudBlock;
+    frame.shadowBlock = shadowBlock;
     timer.beginFrame(frameDesc.gpuTimers);
     for (const detail::RenderPass* pass : kFramePasses) timer.run(*pass, frame);
     timer.endFrame(stats);

@@ -210,6 +210,8 @@ const char* ShaderLibrary::fileOf(Pass pass) {
             return "cloud_shadow.glsl";
         case Pass::CloudReconstruct:
             return "cloud_reconstruct.glsl";
+        case Pass::ShadowDepth:
+            return "shadow_depth.glsl";
         case Pass::Count:
             break;
     }

@@ -53,6 +53,7 @@ enum class Pass {
     Clouds,
     CloudShadow,
     CloudReconstruct,
+    ShadowDepth,
     Count
 };
 

@@ -26,11 +26,15 @@
 // common/object.glsl.
 // Clouds: the sun and moon are multiplied by the cloud shadow map's
 // visibility at p (common/clouds.glsl) while a cloud layer is drawn.
+// Shadows: the light that casts the cascaded shadow maps (the brighter of
+// sun and moon) is multiplied by their visibility at p
+// (common/shadows.glsl) while they are drawn; the other light is not.
 #ifndef AERIAL_SHADING_GLSL
 #define AERIAL_SHADING_GLSL
 
 #include "common/emitters.glsl"
 #include "common/clouds.glsl"
+#include "common/shadows.glsl"
 layout(binding = 5) uniform sampler2D uBaseColour;  // sRGB8_A8: decoded to linear by the sampler
 
 struct Surface {
@@ -107,6 +111,14 @@ void shadeSurface(Surface s, vec3 p, vec3 n, vec3 v, out vec3 diffuse, out vec3 
         float visibility = cloudShadowVisibility(p);
         sunE *= visibility;
         moonE *= visibility;
+    }
+    if (shadow.castingLight > 0.5) {  // the scene's shadow maps (common/shadows.glsl); off: exactly as without
+        float visibility = sceneShadowVisibility(p, n);
+        if (shadow.castingLight < 1.5) {
+            sunE *= visibility;
+        } else {
+            moonE *= visibility;
+        }
     }
     addLight(s, n, v, frame.sunDirection, sunE, diffuse, specular);
     addLight(s, n, v, frame.moonDirection, moonE, diffuse, specular);

@@ -33,7 +33,9 @@ using renderer::detail::CloudBlock;
 using renderer::detail::FrameBlock;
 using renderer::detail::FrameBlockInputs;
 using renderer::detail::makeFrameBlock;
+using renderer::detail::makeShadowBlock;
 using renderer::detail::ObjectBlock;
+using renderer::detail::ShadowBlock;
 using renderer::detail::Vec3;
 using renderer::detail::VolumeBlock;
 
@@ -229,7 +231,7 @@ struct Std140Member {
 };
 
 /// The members of `uniform <block> { ... }` in a shader source, with their
-/// std140 offsets (scalars, vec2..4, ivec4, mat4 and arrays of vec4).
+/// std140 offsets (scalars, vec2..4, ivec4, mat4 and arrays of vec4 or mat4).
 std::vector<Std140Member> std140Layout(const std::string& file, const std::string& block) {
     std::ifstream in(std::string(AERIAL_SOURCE_DIR) + "/shaders/" + file);
     std::stringstream text;
@@ -264,7 +266,7 @@ std::vector<Std140Member> std140Layout(const std::string& file, const std::strin
         const std::size_t bracket = name.find('[');
         if (bracket != std::string::npos) {  // arrays: elements rounded up to vec4
             alignment = 16;
-            size = 16 * std::stoul(name.substr(bracket + 1));
+            size = (size + 15) / 16 * 16 * std::stoul(name.substr(bracket + 1));
             name = name.substr(0, bracket);
         }
         offset = (offset + alignment - 1) / alignment * alignment;
@@ -388,6 +390,134 @@ TEST(FrameBlock, Std140OffsetsMatchTheGlslBlocks) {
                   AERIAL_OFFSET(CloudBlock, groundAlbedo),
                   AERIAL_OFFSET(CloudBlock, volumeData)},
                  sizeof(CloudBlock));
+    expectLayout("common/shadows.glsl", "ShadowBlock",
+                 {AERIAL_OFFSET(ShadowBlock, shadowFromWorld), AERIAL_OFFSET(ShadowBlock, splitM),
+                  AERIAL_OFFSET(ShadowBlock, texelM), AERIAL_OFFSET(ShadowBlock, depthPerM),
+                  AERIAL_OFFSET(ShadowBlock, toLight), AERIAL_OFFSET(ShadowBlock, castingLight),
+                  AERIAL_OFFSET(ShadowBlock, cascadeCount), AERIAL_OFFSET(ShadowBlock, resolution),
+                  AERIAL_OFFSET(ShadowBlock, blendFraction)},
+                 sizeof(ShadowBlock));
+}
+
+// --- makeShadowBlock: the cascades' placement, without a GL context.
+
+glm::dvec3 shadowCoords(const ShadowBlock& b, int k, const glm::dvec3& p) {
+    const float* m = b.shadowFromWorld[k].m;
+    glm::dvec3 s;
+    for (int r = 0; r < 3; ++r) s[r] = m[r] * p.x + m[4 + r] * p.y + m[8 + r] * p.z + m[12 + r];
+    return s;
+}
+
+PresetState sunState(const glm::dvec3& toSun) {
+    PresetState s;
+    s.sunLight.body.direction = toSun;
+    s.sunLight.illuminance = {1.0, 1.0, 1.0};
+    s.moonLight.illuminance = {0.001, 0.001, 0.001};
+    s.moonLight.body.direction = {0.0, 1.0, 0.0};
+    return s;
+}
+
+TEST(ShadowBlock, CascadesCoverTheirSlicesAndFollowThePracticalSplits) {
+    const renderer::Camera camera = testCamera();
+    const renderer::CameraFrame view = renderer::cameraFrame(camera);
+    renderer::FrameDesc frame;
+    frame.shadowMap.maxDistanceM = 300.0;
+    renderer::ShadowMapStats stats;
+    const ShadowBlock b = makeShadowBlock(view, sunState({0.3, 0.8, -0.2}), frame, true, stats);
+    ASSERT_TRUE(stats.drawn);
+    ASSERT_EQ(b.cascadeCount, 3);
+    EXPECT_EQ(b.castingLight, 1.0f);
+    // z_k = 0.7 n (f/n)^(k/3) + 0.3 (n + (f - n) k/3), n = 0.25, f = 300.
+    const double n = 0.25, f = 300.0;
+    for (int k = 0; k < 3; ++k) {
+        const double i = (k + 1) / 3.0;
+        const double want = 0.7 * n * std::pow(f / n, i) + 0.3 * (n + (f - n) * i);
+        EXPECT_NEAR(stats.splitM[k], want, 1e-9 * want) << "split " << k;
+    }
+    // Every point of each slice (and of the blend band before it) lands
+    // inside its cascade, at least the margin (4 texels) from the edge, at
+    // a depth within [0, 1].
+    double previous = n, previousStart = n;
+    for (int k = 0; k < 3; ++k) {
+        const double z0 = k == 0 ? n : previous - 0.1 * (previous - previousStart);
+        const double z1 = stats.splitM[k];
+        const double margin = 3.99 / b.resolution;
+        for (int sample = 0; sample < 9 * 9 * 9; ++sample) {
+            const double a = (sample % 9) / 8.0, c = (sample / 9 % 9) / 8.0, d = (sample / 81) / 8.0;
+            const double z = z0 + (z1 - z0) * d;
+            const glm::dvec3 ray = renderer::farRayAtNdc(view, 2.0 * a - 1.0, 2.0 * c - 1.0);
+            const glm::dvec3 p = view.eye + ray * (z / view.farDistance);
+            const glm::dvec3 s = shadowCoords(b, k, p);
+            EXPECT_GE(s.x, margin) << k;
+            EXPECT_LE(s.x, 1.0 - margin) << k;
+            EXPECT_GE(s.y, margin) << k;
+            EXPECT_LE(s.y, 1.0 - margin) << k;
+            EXPECT_GT(s.z, 0.0) << k;
+            EXPECT_LT(s.z, 1.0) << k;
+        }
+        previousStart = previous;
+        previous = z1;
+    }
+}
+
+TEST(ShadowBlock, TurningTheCameraKeepsTheTexelSizeAndMovingItKeepsTheTexelGrid) {
+    renderer::FrameDesc frame;
+    const PresetState state = sunState({0.3, 0.8, -0.2});
+    renderer::Camera camera = testCamera();
+    renderer::ShadowMapStats stats, turned, moved;
+    const ShadowBlock b = makeShadowBlock(renderer::cameraFrame(camera), state, frame, true, stats);
+    renderer::Camera turnedCamera = camera;
+    turnedCamera.target = camera.eye + glm::dvec3(70.0, -20.0, 40.0);  // another direction entirely
+    makeShadowBlock(renderer::cameraFrame(turnedCamera), state, frame, true, turned);
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(turned.texelM[k], stats.texelM[k], 1e-12 * stats.texelM[k]) << k;
+    // A small move: a fixed world point keeps its position in texels modulo
+    // whole texels (the grid stays put in the world), for every cascade.
+    renderer::Camera movedCamera = camera;
+    const glm::dvec3 step(0.37 * stats.texelM[0], 0.11, -0.23 * stats.texelM[0]);
+    movedCamera.eye += step;
+    movedCamera.target += step;
+    const ShadowBlock m = makeShadowBlock(renderer::cameraFrame(movedCamera), state, frame, true, moved);
+    const glm::dvec3 point = camera.eye + glm::dvec3(-3.0, -10.0, -20.0);
+    for (int k = 0; k < 3; ++k) {
+        const glm::dvec3 a = shadowCoords(b, k, point) * double(b.resolution);
+        const glm::dvec3 c = shadowCoords(m, k, point) * double(m.resolution);
+        for (int axis = 0; axis < 2; ++axis) {
+            const double shift = c[axis] - a[axis];
+            EXPECT_NEAR(shift, std::round(shift), 2e-3) << "cascade " << k << " axis " << axis;
+        }
+    }
+}
+
+TEST(ShadowBlock, OffBelowTheHorizonOrWithoutCastersAndTheMoonAtNight) {
+    const renderer::CameraFrame view = renderer::cameraFrame(testCamera());
+    renderer::ShadowMapStats stats;
+    renderer::FrameDesc off;
+    off.passes.shadows = false;
+    EXPECT_EQ(makeShadowBlock(view, sunState({0.3, 0.8, -0.2}), off, true, stats).castingLight, 0.0f);
+    EXPECT_FALSE(stats.drawn);
+    EXPECT_EQ(makeShadowBlock(view, sunState({0.3, 0.8, -0.2}), {}, false, stats).castingLight, 0.0f);
+    EXPECT_EQ(makeShadowBlock(view, sunState({0.3, -0.1, -0.2}), {}, true, stats).castingLight, 0.0f);
+    // Night: the moon is the brighter light and casts.
+    PresetState night = sunState({0.3, -0.4, -0.2});
+    night.sunLight.illuminance = glm::dvec3(0.0);
+    night.moonLight.body.direction = {-0.5, 0.6, 0.1};
+    const ShadowBlock moon = makeShadowBlock(view, night, {}, true, stats);
+    EXPECT_EQ(moon.castingLight, 2.0f);
+    EXPECT_TRUE(stats.moon);
+    EXPECT_NEAR(glm::dot(stats.toLight, glm::normalize(glm::dvec3(-0.5, 0.6, 0.1))), 1.0, 1e-12);
+    // Out-of-range settings are clamped; nothing is NaN.
+    renderer::FrameDesc odd;
+    odd.shadowMap.cascades = 9;
+    odd.shadowMap.resolution = 1;
+    odd.shadowMap.maxDistanceM = std::numeric_limits<double>::quiet_NaN();
+    odd.shadowMap.splitLambda = 7.0;
+    const ShadowBlock clamped = makeShadowBlock(view, sunState({0.0, 1.0, 0.0}), odd, true, stats);
+    EXPECT_EQ(clamped.cascadeCount, 4);
+    EXPECT_EQ(clamped.resolution, 256.0f);
+    for (int k = 0; k < 4; ++k) {
+        EXPECT_TRUE(std::isfinite(clamped.splitM[k]) && std::isfinite(clamped.texelM[k]));
+        for (float v : clamped.shadowFromWorld[k].m) EXPECT_TRUE(std::isfinite(v));
+    }
 }
 
 }  // namespace

@@ -36,6 +36,11 @@
 //      towards the sun through the cloud layer (cloud_shadow.glsl); the
 //      scene, transparent and particle lighting multiply the sun and moon by
 //      its visibility;
+//   0b. (shadows on, the sun or moon above the horizon) the cascaded shadow
+//      maps: the opaque and masked meshes' depth seen from the brighter of
+//      the two lights, 1..4 cascades fitted to slices of the view
+//      (shadow_map_pass.cpp); the scene, transparent and particle lighting
+//      multiply that light by its filtered visibility;
 //   2b. (clouds only) the cloud layer, ray-marched per pixel over the sky
 //      and the scene, before the global fog (clouds.glsl); or, with
 //      FrameDesc::cloudQuality Amortised, one pixel per block traced and the
@@ -121,6 +126,30 @@ struct RenderPasses {
     /// The volumetric cloud layer (state.environment.clouds) and its shadow
     /// on the scene; neither runs while the layer is empty (coverage 0).
     bool clouds = true;
+    /// Cascaded shadow maps of the sun (or of the moon when it is the
+    /// brighter light) on the scene, transparent meshes and particles
+    /// (FrameDesc::shadowMap). Off, or with that light below the horizon:
+    /// the frame is exactly as without the pass.
+    bool shadows = true;
+};
+
+/// The cascaded shadow maps (shadow_map_pass.cpp, shaders/shadow_depth.glsl,
+/// shaders/common/shadows.glsl). Out-of-range values are clamped.
+struct ShadowMapSettings {
+    /// Texels per side of each cascade, 256..4096. Default 1024: on Mesa's
+    /// llvmpipe the depth pass of the built-in scene costs ~32 ms at 1024
+    /// and ~98 ms at 2048 (three cascades), the scene pass's lookups +4 ms
+    /// (320 x 180) to +33 ms (1280 x 720); 2048 is the choice on a GPU.
+    int resolution = 1024;
+    /// Cascades over the view, 1..4. Default 3.
+    int cascades = 3;
+    /// View depth [m] where the last cascade ends (and shadows fade out);
+    /// at most the camera's far distance, at least 1 m. Default 300 m (the
+    /// built-in scene is 800 m across).
+    double maxDistanceM = 300.0;
+    /// Practical split scheme (Zhang et al. 2006): each split is
+    /// lambda x logarithmic + (1 - lambda) x uniform, 0..1. Default 0.7.
+    double splitLambda = 0.7;
 };
 
 /// What the cloud pass writes.
@@ -199,6 +228,8 @@ struct FrameDesc {
     double cloudHistoryMaxTimeStepHours = 2.0 / 60.0;
     double cloudHistoryMaxMoveM = 25.0;
     double cloudHistoryMaxTurnRad = 0.26;
+    /// The sun's / moon's shadow maps (RenderPasses::shadows switches them).
+    ShadowMapSettings shadowMap;
 };
 
 struct ShaderReloadResult {
@@ -220,8 +251,10 @@ struct PassTimes {
     double particles = 0.0;
     double cloudShadow = 0.0;  ///< the cloud shadow map
     double clouds = 0.0;       ///< the cloud layer
+    double shadowMap = 0.0;    ///< the cascaded shadow maps of the sun or moon
     double total() const {
-        return scene + sky + globalFog + volumes + emitters + transparent + particles + cloudShadow + clouds;
+        return scene + sky + globalFog + volumes + emitters + transparent + particles + cloudShadow + clouds +
+               shadowMap;
     }
 };
 
@@ -252,10 +285,25 @@ struct CloudHistoryStats {
     const char* resetReason = "";
 };
 
+/// The cascaded shadow maps of the last frame (RenderStats).
+struct ShadowMapStats {
+    bool drawn = false;  ///< false: shadows off, no mesh, or the light below the horizon
+    bool moon = false;   ///< the moon cast them (the brighter light), not the sun
+    int cascades = 0;
+    int resolution = 0;  ///< texels per side of each cascade
+    /// View depth [m] along the camera's forward axis where cascade k ends.
+    double splitM[4] = {};
+    /// World size of one texel of cascade k [m] (2 x its bounding sphere's
+    /// radius / resolution).
+    double texelM[4] = {};
+    glm::dvec3 toLight{0.0, 1.0, 0.0};  ///< unit direction to the casting light
+};
+
 /// Statistics of the last render.
 struct RenderStats {
     CloudShadowStats cloudShadow;
     CloudHistoryStats cloudHistory;
+    ShadowMapStats shadowMap;
     int volumesDrawn = 0;
     int volumesDrawnInside = 0;  ///< hulls drawn as back faces without depth test
     int emitters = 0;
