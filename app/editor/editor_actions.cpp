@@ -185,6 +185,7 @@ void Editor::declareActions() {
     toggle("pass_transparent", "Transparent objects", view_.passes.transparent);
     toggle("pass_particles", "Fog particles", view_.passes.particles);
     toggle("pass_clouds", "Clouds", view_.passes.clouds);
+    toggle("pass_shadows", "Sun shadows", view_.passes.shadows);
     const auto gizmoMode = [&t, this](const char* name, const char* label, int key, GizmoMode mode,
                                       bool separated = false) {
         Action& a = t.add(name, label, "View");

@@ -411,15 +411,17 @@ void Editor::declareEditScriptCommands() {
                    view_.gizmoSpace = w[1] == "local" ? GizmoSpace::Local : GizmoSpace::World;
                    return true;
                }});
-    table.add({"view", 1, 2, "view NAME | view clouds on|off",
-               "the OCIO view; or switch the view's cloud layer (View > Clouds)", [this](W w, E error) {
+    table.add({"view", 1, 2, "view NAME | view clouds|shadows on|off",
+               "the OCIO view; or switch the view's cloud layer or sun shadows (View > Clouds, View > Sun "
+               "shadows)",
+               [this](W w, E error) {
                    if (w.size() == 3) {
-                       if (w[1] != "clouds" || (w[2] != "on" && w[2] != "off")) {
-                           error = "view: view clouds on|off";
+                       if ((w[1] != "clouds" && w[1] != "shadows") || (w[2] != "on" && w[2] != "off")) {
+                           error = "view: view clouds|shadows on|off";
                            return false;
                        }
-                       view_.passes.clouds =
-                           w[2] == "on";  // in the frame's signature: the next frame shows it
+                       // In the frame's signature: the next frame shows it.
+                       (w[1] == "clouds" ? view_.passes.clouds : view_.passes.shadows) = w[2] == "on";
                        return true;
                    }
                    view_.viewName = w[1];

@@ -75,13 +75,14 @@ void Editor::renderViewport() {
     const CameraState& c = view_.camera.state();
     std::snprintf(
         signature, sizeof signature,
-        "%d %d %.17g %llu %llu %.17g %.17g %.17g %.17g %.17g %.17g %d%d%d%d%d%d%d%d%d %s %s %.17g %p", width,
-        height, playback_.timeHours, static_cast<unsigned long long>(doc_.revision()),
+        "%d %d %.17g %llu %llu %.17g %.17g %.17g %.17g %.17g %.17g %d%d%d%d%d%d%d%d%d%d %s %s %.17g %p",
+        width, height, playback_.timeHours, static_cast<unsigned long long>(doc_.revision()),
         static_cast<unsigned long long>(sky_.generation), c.target.x, c.target.y, c.target.z, c.distance,
         c.yaw, c.pitch + 1000.0 * c.verticalFovDeg, view_.passes.sky, view_.passes.scene,
         view_.passes.globalFog, view_.passes.volumes, view_.passes.emitters, view_.passes.transparent,
-        view_.passes.particles, view_.passes.clouds, view_.showStars, view_.displayName.c_str(),
-        view_.viewName.c_str(), view_.exposureEv, static_cast<const void*>(view_.display.get()));
+        view_.passes.particles, view_.passes.clouds, view_.passes.shadows, view_.showStars,
+        view_.displayName.c_str(), view_.viewName.c_str(), view_.exposureEv,
+        static_cast<const void*>(view_.display.get()));
     const auto now = std::chrono::steady_clock::now();
     const double dt = view_.lastExposureStep.time_since_epoch().count() == 0
                           ? 0.0

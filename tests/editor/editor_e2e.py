@@ -489,6 +489,8 @@ redo
 expect_cloud_volumes 1
 view clouds off
 view clouds on
+view shadows off
+view shadows on
 quit
 """.format(fixture=fixture, clear=clear, before=before, after=after)))
     added = re.search(r"added cloud volume 0 at (\S+) (\S+) (\S+)", p.stdout)
