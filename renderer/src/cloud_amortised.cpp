@@ -53,6 +53,7 @@
 //         blending during the reconstruction; returns to the baseline
 //         (sceneTarget, full viewport, blending off, depth writes on).
 #include "frame_block.hpp"
+#include "gl_state.hpp"
 #include "render_pass.hpp"
 
 #include <aerial/evaluate.hpp>
@@ -100,17 +101,6 @@ void deleteTargets(RendererResources::CloudHistory& h) {
     h.valid = false;
 }
 
-GLuint makeTexture(GLenum format, int w, int h) {
-    GLuint t = 0;
-    glCreateTextures(GL_TEXTURE_2D, 1, &t);
-    glTextureStorage2D(t, 1, format, w, h);
-    glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTextureParameteri(t, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glTextureParameteri(t, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(t, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    return t;
-}
-
 void ensureTargets(RendererResources& gpu, int w, int h, int n, ColourPrecision precision) {
     RendererResources::CloudHistory& c = gpu.cloudHistory;
     if (c.width == w && c.height == h && c.block == n && c.precision == precision && c.trace != 0) return;
@@ -120,18 +110,18 @@ void ensureTargets(RendererResources& gpu, int w, int h, int n, ColourPrecision 
     c.block = n;
     c.precision = precision;
     const GLenum format = precision == ColourPrecision::Float ? GL_RGBA32F : GL_RGBA16F;
-    c.trace = makeTexture(format, (w + n - 1) / n, (h + n - 1) / n);
+    c.trace = makeTargetTexture(format, (w + n - 1) / n, (h + n - 1) / n);
     glCreateFramebuffers(1, &c.traceTarget);
     glNamedFramebufferTexture(c.traceTarget, GL_COLOR_ATTACHMENT0, c.trace, 0);
     const GLenum two[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
     for (int k = 0; k < 2; ++k) {
-        c.history[k] = makeTexture(format, w, h);
+        c.history[k] = makeTargetTexture(format, w, h);
         glCreateFramebuffers(1, &c.target[k]);
         glNamedFramebufferTexture(c.target[k], GL_COLOR_ATTACHMENT0, gpu.colour, 0);
         glNamedFramebufferTexture(c.target[k], GL_COLOR_ATTACHMENT1, c.history[k], 0);
         glNamedFramebufferDrawBuffers(c.target[k], 2, two);
     }
-    c.previousDepth = makeTexture(GL_R32F, w, h);
+    c.previousDepth = makeTargetTexture(GL_R32F, w, h);
     c.valid = false;
 }
 

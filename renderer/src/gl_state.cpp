@@ -45,6 +45,17 @@ void logMessage(const Logger& logger, LogLevel level, const char* message) {
     }
 }
 
+GLuint makeTargetTexture(GLenum format, int w, int h) {
+    GLuint t = 0;
+    glCreateTextures(GL_TEXTURE_2D, 1, &t);
+    glTextureStorage2D(t, 1, format, w, h);
+    glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(t, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTextureParameteri(t, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(t, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    return t;
+}
+
 int drainGlErrors(const Logger& logger, const char* where) {
     int count = 0;
     for (GLenum e = glGetError(); e != GL_NO_ERROR && count < 64; e = glGetError()) {

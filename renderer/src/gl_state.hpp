@@ -58,6 +58,10 @@ private:
 /// Drains glGetError, logging each error with `where`; returns the count.
 int drainGlErrors(const Logger& logger, const char* where);
 
+/// A w x h 2D texture of `format` for a render target: one level, nearest
+/// filtering, clamped at the edges (the frame's targets, the cloud history).
+GLuint makeTargetTexture(GLenum format, int w, int h);
+
 /// Sends a message to the logger (no-op for a null function).
 void logMessage(const Logger& logger, LogLevel level, const char* message);
 

@@ -74,16 +74,7 @@ struct Renderer::Impl : detail::RendererResources {
         width = w;
         height = h;
         precision = p;
-        auto texture = [&](GLenum format) {
-            GLuint t = 0;
-            glCreateTextures(GL_TEXTURE_2D, 1, &t);
-            glTextureStorage2D(t, 1, format, w, h);
-            glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-            glTextureParameteri(t, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-            glTextureParameteri(t, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-            glTextureParameteri(t, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-            return t;
-        };
+        auto texture = [&](GLenum format) { return detail::makeTargetTexture(format, w, h); };
         colour = texture(p == ColourPrecision::Float ? GL_RGBA32F : GL_RGBA16F);
         linearDepth = texture(GL_R32F);
         depth = texture(GL_DEPTH_COMPONENT32F);
