@@ -56,6 +56,25 @@ vec3 lightDisc(vec3 v, vec3 direction, float chord, vec3 illuminanceGround, floa
     return illuminanceGround * inverseSolidAngle;
 }
 
+/// The moon's disc with its phase: a point at disc coordinates (u along the
+/// bright limb, w across, radius 1) is lit when u > (1 - 2k) sqrt(1 - w^2)
+/// (the terminator, an ellipse; k the illuminated fraction), and the lit part
+/// carries the whole illuminance (already times the phase law): radiance
+/// E / (k x solid angle).
+vec3 moonDisc(vec3 v) {
+    vec3 m = frame.moonDiscDirection;
+    float chord = frame.moonDiscChord;
+    vec3 d = v - m;
+    if (!(chord > 0.0) || length(d) > chord) return vec3(0.0);
+    float k = clamp(frame.moonLitFraction, 0.0, 1.0);
+    if (k <= 1e-4) return vec3(0.0);
+    vec3 tangent = d - m * dot(d, m);
+    float u = dot(tangent, frame.moonBrightLimb) / chord;
+    float w = length(tangent - frame.moonBrightLimb * dot(tangent, frame.moonBrightLimb)) / chord;
+    if (u < (1.0 - 2.0 * k) * sqrt(max(1.0 - w * w, 0.0))) return vec3(0.0);
+    return frame.moonIlluminance * frame.moonDiscInverseSolidAngle / k;
+}
+
 const uint kStarColumns = 1024u;
 const uint kStarRows = 512u;
 const float kStarProbability = 0.016;
@@ -130,10 +149,9 @@ void main() {
     vec3 v = normalize(vFarRay);
     vec3 radiance = skyRadiance(v, true);
     radiance += starRadiance(v) + airglowRadiance(v);
-    radiance += lightDisc(v, frame.sunDirection, frame.sunDiscChord, frame.sunIlluminance,
+    radiance += lightDisc(v, frame.sunDiscDirection, frame.sunDiscChord, frame.sunIlluminance,
                           frame.sunDiscInverseSolidAngle);
-    radiance += lightDisc(v, frame.moonDirection, frame.moonDiscChord, frame.moonIlluminance,
-                          frame.moonDiscInverseSolidAngle);
+    radiance += moonDisc(v);
     outColour = vec4(min(radiance, vec3(frame.radianceCap)), 1.0);
 }
 #endif

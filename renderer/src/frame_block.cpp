@@ -97,6 +97,32 @@ FrameBlock makeFrameBlock(const Camera& camera, const CameraFrame& view, const P
     fb.moonIlluminanceSpace = toVec3(colourOf(moon.illuminanceSpace));
     fb.moonIlluminance = toVec3(colourOf(moon.illuminance));
     fb.moonDiscInverseSolidAngle = static_cast<float>(perSolidAngle(moonDisc));
+    // The discs at the apparent (refracted) position — refraction is at most
+    // ~0.6 deg; a body whose apparent direction is farther than 1 deg from
+    // its geometric one was built by hand without it, and keeps the latter.
+    auto discDirection = [](const CelestialBody& b) {
+        const glm::dvec3 geometric = unitOr(b.direction, {0.0, 1.0, 0.0});
+        const glm::dvec3 apparent = unitOr(b.apparentDirection, geometric);
+        return glm::dot(apparent, geometric) > std::cos(kPi / 180.0) ? apparent : geometric;
+    };
+    const glm::dvec3 sunDisc3 = discDirection(sun.body), moonDisc3 = discDirection(moon.body);
+    fb.sunDiscDirection = toVec3(sunDisc3);
+    fb.moonDiscDirection = toVec3(moonDisc3);
+    // The moon's phase the right way round: the lit fraction k and the bright
+    // limb's position angle chi (from the zenith through east, sun.hpp) as a
+    // tangent b = cos(chi) up + sin(chi) east at the moon's disc.
+    const double k = moon.body.illuminatedFraction;
+    fb.moonLitFraction = static_cast<float>(std::isfinite(k) ? std::clamp(k, 0.0, 1.0) : 1.0);
+    const glm::dvec3 upWorld(0.0, 1.0, 0.0);
+    glm::dvec3 up = upWorld - moonDisc3 * glm::dot(moonDisc3, upWorld);
+    glm::dvec3 east = glm::cross(upWorld, moonDisc3);
+    if (glm::dot(up, up) < 1e-12 || glm::dot(east, east) < 1e-12) {  // the moon at the zenith
+        east = glm::dvec3(1.0, 0.0, 0.0);
+        up = glm::cross(moonDisc3, east);
+    }
+    const double chi = std::isfinite(moon.body.brightLimbAngle) ? moon.body.brightLimbAngle : 0.0;
+    fb.moonBrightLimb = toVec3(unitOr(
+        std::cos(chi) * glm::normalize(up) + std::sin(chi) * glm::normalize(east), glm::normalize(up)));
 
     const double mie = env.atmosphere.mieAnisotropy;
     const double g = std::isfinite(mie) ? std::clamp(mie, -0.999, 0.999) : 0.0;

@@ -81,6 +81,15 @@ struct FrameBlock {
     float padSunMultiple = 0.0f;
     Vec3 moonHorizonMultiple;
     float padMoonMultiple = 0.0f;
+    /// Where the discs are drawn: the apparent (refracted) directions.
+    Vec3 sunDiscDirection;
+    float moonLitFraction = 1.0f;  ///< illuminated fraction of the moon's disc, 0..1
+    Vec3 moonDiscDirection;
+    float padMoonDisc = 0.0f;
+    /// Unit tangent on the sky at the moon towards the midpoint of its
+    /// bright limb (the terminator lies across it).
+    Vec3 moonBrightLimb;
+    float padBrightLimb = 0.0f;
 };
 static_assert(offsetof(FrameBlock, clipFromWorld) == 0);
 static_assert(offsetof(FrameBlock, eye) == 64);
@@ -125,7 +134,11 @@ static_assert(offsetof(FrameBlock, starPole) == 448);
 static_assert(offsetof(FrameBlock, starTransmittance) == 464);
 static_assert(offsetof(FrameBlock, sunHorizonMultiple) == 480);
 static_assert(offsetof(FrameBlock, moonHorizonMultiple) == 496);
-static_assert(sizeof(FrameBlock) == 512);
+static_assert(offsetof(FrameBlock, sunDiscDirection) == 512);
+static_assert(offsetof(FrameBlock, moonLitFraction) == 524);
+static_assert(offsetof(FrameBlock, moonDiscDirection) == 528);
+static_assert(offsetof(FrameBlock, moonBrightLimb) == 544);
+static_assert(sizeof(FrameBlock) == 560);
 
 /// shaders/common/volume.glsl, VolumeBlock (binding 1): one fog volume.
 struct VolumeBlock {

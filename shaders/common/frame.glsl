@@ -102,6 +102,12 @@ layout(std140, binding = 0) uniform FrameBlock {
     float padSunMultiple;
     vec3 moonHorizonMultiple;
     float padMoonMultiple;
+    vec3 sunDiscDirection;
+    float moonLitFraction;
+    vec3 moonDiscDirection;
+    float padMoonDisc;
+    vec3 moonBrightLimb;
+    float padBrightLimb;
 } frame;
 
 // Ray from the eye to the far plane at normalised device coordinates ndc

@@ -10,6 +10,7 @@
 
 #include <aerial/evaluate.hpp>
 #include <aerial/night_sky.hpp>
+#include <aerial/preset.hpp>
 #include <aerial/renderer/renderer.hpp>
 #include <aerial/sun.hpp>
 
@@ -169,6 +170,34 @@ TEST(FrameBlock, LightsDiscsAndSkyMapping) {
     EXPECT_EQ(fb.moonTableColumns, 16);
     EXPECT_EQ(fb.moonTableRows, 8);
     EXPECT_EQ(fb.emitterCount, 3);
+}
+
+TEST(FrameBlock, DiscsAtTheApparentPositionWithTheMoonsPhase) {
+    // A real evaluation: the built-in preset's sun at 19:54, 1.6 deg below
+    // the horizon, stands ~0.4 deg higher refracted (Saemundsson's formula,
+    // faded out below -1 deg); the disc is drawn there, the light stays
+    // geometric.
+    aerial::PresetState state = aerial::evaluate(aerial::defaultPreset(), 19.9);
+    const double geometric = state.sunLight.body.elevation, apparent = state.sunLight.body.apparentElevation;
+    ASSERT_GT(apparent - geometric, 0.1 * kPi / 180.0) << "refraction near the horizon";
+    const renderer::Camera camera = testCamera();
+    FrameBlock fb = makeFrameBlock(camera, renderer::cameraFrame(camera), state, {}, testInputs());
+    expectNear3(fb.sunDiscDirection, state.sunLight.body.apparentDirection, 1e-6, "sun disc");
+    expectNear3(fb.sunDirection, state.sunLight.body.direction, 1e-6, "sun light");
+    // A body built by hand without an apparent direction keeps its own.
+    state.sunLight.body.apparentDirection = glm::dvec3(0.0, 1.0, 0.0);
+    state.sunLight.body.direction = glm::normalize(glm::dvec3(1.0, 0.2, 0.0));
+    fb = makeFrameBlock(camera, renderer::cameraFrame(camera), state, {}, testInputs());
+    expectNear3(fb.sunDiscDirection, state.sunLight.body.direction, 1e-6, "hand-built sun");
+    // The moon's bright limb: position angle 90 deg from the zenith through
+    // east is east on the sky, a tangent to the disc.
+    state.moonLight.body.direction = state.moonLight.body.apparentDirection =
+        glm::dvec3(0.0, 0.0, 1.0);  // south
+    state.moonLight.body.brightLimbAngle = kPi / 2.0;
+    state.moonLight.body.illuminatedFraction = 0.25;
+    fb = makeFrameBlock(camera, renderer::cameraFrame(camera), state, {}, testInputs());
+    expectNear3(fb.moonBrightLimb, glm::dvec3(1.0, 0.0, 0.0), 1e-6, "bright limb east");
+    EXPECT_FLOAT_EQ(fb.moonLitFraction, 0.25f);
 }
 
 TEST(FrameBlock, FogFieldsAndRadianceCap) {
@@ -339,7 +368,13 @@ TEST(FrameBlock, Std140OffsetsMatchTheGlslBlocks) {
                   AERIAL_OFFSET(FrameBlock, starAxisY),
                   AERIAL_OFFSET(FrameBlock, starSigma),
                   AERIAL_OFFSET(FrameBlock, starPole),
-                  AERIAL_OFFSET(FrameBlock, starTransmittance)},
+                  AERIAL_OFFSET(FrameBlock, starTransmittance),
+                  AERIAL_OFFSET(FrameBlock, sunHorizonMultiple),
+                  AERIAL_OFFSET(FrameBlock, moonHorizonMultiple),
+                  AERIAL_OFFSET(FrameBlock, sunDiscDirection),
+                  AERIAL_OFFSET(FrameBlock, moonLitFraction),
+                  AERIAL_OFFSET(FrameBlock, moonDiscDirection),
+                  AERIAL_OFFSET(FrameBlock, moonBrightLimb)},
                  sizeof(FrameBlock));
     expectLayout(
         "common/volume.glsl", "VolumeBlock",

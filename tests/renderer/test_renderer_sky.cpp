@@ -145,5 +145,62 @@ TEST_F(SkyVsCpu, SunDiscHasTheTransmittedIlluminanceOverItsSolidAngle) {
     EXPECT_LT(worst, 1e-3);
 }
 
+TEST_F(SkyVsCpu, MoonDiscShowsItsPhaseTheRightWayRound) {
+    // A half-lit moon due south (+Z) at 30 deg. Facing south, east is on the
+    // left of the picture: a bright limb at position angle 90 deg (from the
+    // zenith through east) lights the left half; at 0 deg the upper half.
+    // The lit part carries the whole illuminance: the disc's flux is the
+    // moon's illuminance whatever the phase.
+    const glm::dvec3 m = glm::normalize(glm::dvec3(0.0, std::sin(kPi / 6.0), std::cos(kPi / 6.0)));
+    const SkyPair sky = solveSky(AtmosphereParams{}, sunDirection(), m);
+    Renderer r(rendererDesc());
+    ASSERT_TRUE(r.valid());
+    r.setSky(sky.sun, sky.moon);
+    const double fov = 0.04, radius = 0.004517;
+    const Camera camera = skyCamera({0, 2, 0}, glm::dvec3(0, 2, 0) + m, fov);
+    auto render = [&](double limb, double discRadius) {
+        PresetState air = frame();
+        air.moonLight.body.direction = air.moonLight.body.apparentDirection = m;
+        air.moonLight.body.illuminatedFraction = 0.5;
+        air.moonLight.body.brightLimbAngle = limb;
+        FrameDesc f;
+        f.stars = false;
+        f.sunDiscRadius = 0.0;
+        f.moonDiscRadius = discRadius;
+        f.width = kWidth;
+        f.height = kHeight;
+        f.precision = renderer::ColourPrecision::Float;
+        f.passes.scene = f.passes.globalFog = f.passes.volumes = f.passes.emitters = false;
+        f.passes.clouds = f.passes.shadows = false;
+        r.render(camera, air, f);
+        return r.readColour();
+    };
+    const Image without = render(0.0, 0.0);
+    const double pixel = fov / kHeight;  // [rad]
+    for (const double limb : {kPi / 2.0, 0.0}) {
+        const Image with = render(limb, radius);
+        double left = 0.0, right = 0.0, top = 0.0, bottom = 0.0, flux = 0.0;
+        for (int y = 0; y < kHeight; ++y)
+            for (int x = 0; x < kWidth; ++x) {
+                const double added = double(with.at(x, y, 0)) - without.at(x, y, 0);
+                if (!(added > 0.0)) continue;
+                (x < kWidth / 2 ? left : right) += added;
+                (y < kHeight / 2 ? top : bottom) += added;  // row 0 at the top
+                flux += added * pixel * pixel;
+            }
+        const double expected = frame().moonLight.illuminance.x;
+        std::printf(
+            "[ measured ] half moon, bright limb %.0f deg: left/right %.3g/%.3g, top/bottom %.3g/%.3g, "
+            "flux %.4g (illuminance %.4g)\n",
+            limb * 180.0 / kPi, left, right, top, bottom, flux, expected);
+        if (limb > 1.0) {
+            EXPECT_GT(left, 20.0 * right) << "lit on the east, the left when facing south";
+        } else {
+            EXPECT_GT(top, 20.0 * bottom) << "lit from above";
+        }
+        EXPECT_NEAR(flux, expected, 0.1 * expected);
+    }
+}
+
 }  // namespace
 }  // namespace aerial::test
