@@ -71,6 +71,28 @@ bool lightningOnly(std::string_view key) {
 
 }  // namespace
 
+bool editTextParam(Document& doc, const ParamRef& ref, const std::string& text, std::string& error) {
+    const ParamDesc& p = *ref.desc;
+    if (p.type != ParamType::String || ref.scope() != ParamScope::Global) {
+        error = std::string(p.path) + " is not a text parameter of the environment";
+        return false;
+    }
+    Preset candidate = doc.preset();
+    *p.string(&candidate.environment) = text;
+    std::string pointer(1, '/');  // "location.date" -> "/location/date"
+    pointer.append(p.path);
+    std::replace(pointer.begin(), pointer.end(), '.', '/');
+    for (const PresetIssue& issue : validatePreset(candidate)) {
+        if (issue.pointer == pointer) {
+            error = issue.message;
+            return false;
+        }
+    }
+    doc.apply(std::string("Set ") + std::string(p.label), "",
+              [&](Preset& preset) { *p.string(&preset.environment) = text; });
+    return true;
+}
+
 void editParam(Document& doc, const ParamRef& ref, const double value[4], bool continuous, double timeHours) {
     const std::string address = paramAddress(ref);
     const double time = timeHours;
@@ -208,8 +230,28 @@ void drawParam(Document& doc, EditState& edit, const ParamRef& ref, double timeH
             continuous = false;
             break;
         }
-        case ParamType::String:
+        case ParamType::String: {
+            // Text parameters of the environment (location.date): typed, then
+            // checked on Enter; a wrong one is shown and changes nothing.
+            if (ref.scope() != ParamScope::Global) break;
+            static std::string rejectedAddress, rejectedMessage;
+            Environment env = doc.preset().environment;
+            std::string text = *p.string(&env);
+            if (ImGui::InputText(label.c_str(), &text, ImGuiInputTextFlags_EnterReturnsTrue)) {
+                std::string why;
+                if (editTextParam(doc, ref, text, why)) {
+                    rejectedAddress.clear();
+                } else {
+                    rejectedAddress = paramAddress(ref);
+                    rejectedMessage = why;
+                }
+            }
+            if (rejectedAddress == paramAddress(ref))
+                ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "%s (not changed)",
+                                   rejectedMessage.c_str());
+            continuous = false;
             break;
+        }
     }
     if (selected) ImGui::PopStyleVar();
     if (selected) ImGui::PopStyleColor();

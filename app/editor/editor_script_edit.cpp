@@ -149,6 +149,14 @@ void Editor::declareEditScriptCommands() {
                "set a parameter as the inspector does (a key when animated)", [this, param](W w, E error) {
                    const std::optional<ParamRef> ref = param(w[1], error);
                    if (!ref) return false;
+                   if (ref->desc->type == ParamType::String) {  // location.date
+                       std::string why;
+                       if (!editTextParam(doc_, *ref, w.size() > 2 ? w[2] : std::string(), why)) {
+                           error = "set " + w[1] + ": " + why;
+                           return false;
+                       }
+                       return true;
+                   }
                    const int n = valueCount(*ref->desc);
                    const std::size_t argc = w.size() - 1;
                    double v[4] = {0, 0, 0, 0};

@@ -41,6 +41,10 @@ void drawTimeline(Document& doc, EditState& edit, Playback& playback, const Acti
 /// animated, else its constant value. One undo step, or with `continuous`
 /// part of the step of a drag (until Document::closeMerge).
 void editParam(Document& doc, const ParamRef& ref, const double value[4], bool continuous, double timeHours);
+/// Sets a text parameter of the environment (location.date) as one undo
+/// step when the preset still validates; otherwise changes nothing and
+/// returns false with the loader's reason in `error`.
+bool editTextParam(Document& doc, const ParamRef& ref, const std::string& text, std::string& error);
 
 /// Keys every animatable parameter whose value at `timeHours` differs from
 /// the saved preset (one undo step); returns how many.

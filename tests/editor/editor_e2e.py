@@ -546,6 +546,21 @@ quit
 """.format(bad=bad)))
     check(re.search(r"out_of_range\.json:\d+:\d+: /", p.stdout), "the load errors lack file:line:col: /pointer")
 
+    # The date: a real one is set and saved; an impossible one is refused with
+    # the loader's reason and changes nothing.
+    dated = env.path("dated.json")
+    env.run(env.script("date.txt", """
+new
+set location.date 2026-03-21
+save {dated}
+quit
+""".format(dated=dated)))
+    with open(dated) as f:
+        check(json.load(f)["location"]["date"] == "2026-03-21", "the date was not saved")
+    p = env.run(env.script("bad_date.txt", "new\nset location.date 2026-02-30\n"), expect_rc=1)
+    check("must be a calendar date" in p.stderr and "2026-02-30" in p.stderr,
+          "an impossible date is not refused with the reason:\n" + p.stderr[-2000:])
+
     script = env.script("broken.txt", "new\nset fog.density_per_m 0.01\nfrobnicate\n")
     p = env.run(script, expect_rc=1)
     check("broken.txt:3: unknown command" in p.stderr, "the script error does not name line 3")
