@@ -8,6 +8,7 @@
 // track sets a key at the current time (auto-key); editing one without a
 // track changes its constant value. A slider drag is one undo step.
 #include "panels.hpp"
+#include "places.hpp"
 
 #include "viewport/picking.hpp"
 
@@ -279,6 +280,24 @@ void drawParam(Document& doc, EditState& edit, const ParamRef& ref, double timeH
     ImGui::PopID();
 }
 
+/// A city instead of typed coordinates: one undo step that sets latitude,
+/// longitude and UTC offset (places.hpp).
+void drawPlacePicker(Document& doc) {
+    if (ImGui::BeginCombo("Place", "Choose a city...", ImGuiComboFlags_HeightLarge)) {
+        for (const Place& place : places()) {
+            const std::string label = std::string(place.name);
+            if (ImGui::Selectable(label.c_str()))
+                doc.apply("Place: " + label, "", [&](Preset& p) { applyPlace(p.environment.location, place); });
+        }
+        ImGui::EndCombo();
+    }
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "Sets latitude, longitude and the UTC offset of standard time (add 1 h for summer "
+            "time).\nLongitude and offset take effect once the preset has a date; the offset in "
+            "clock time mode.");
+}
+
 }  // namespace
 
 int keyAllChangedAt(Document& doc, double timeHours) {
@@ -333,6 +352,7 @@ void drawInspector(Document& doc, EditState& edit, double timeHours, const Prese
                 drawParam(doc, edit, {&p, -1}, timeHours);
             }
             if (edit.selection.kind == Selection::Kind::Lights) {
+                drawPlacePicker(doc);
                 ImGui::Spacing();
                 ImGui::TextDisabled("Now");
                 ImGui::Separator();
@@ -358,8 +378,9 @@ void drawInspector(Document& doc, EditState& edit, double timeHours, const Prese
                 ImGui::Text("Moon elevation %.2f deg, lit %.0f%%", state.moonLight.body.elevation * kDegrees,
                             state.moonLight.body.illuminatedFraction * 100.0);
                 const double rise = sunriseHours(where), set = sunsetHours(where);
-                ImGui::Text("Sunrise %s, sunset %s, day %.1f h",
+                ImGui::Text("Sunrise %s, noon %s, sunset %s, day %.1f h",
                             formatClock(rise, ClockResolution::Minutes).c_str(),
+                            formatClock(solarNoonHours(where), ClockResolution::Minutes).c_str(),
                             formatClock(set, ClockResolution::Minutes).c_str(), dayLengthHours(where));
             }
             if (edit.selection.kind == Selection::Kind::Clouds) {

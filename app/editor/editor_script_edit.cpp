@@ -3,6 +3,7 @@
 // drags, clicks, camera orbits, display): entries of the script command
 // table (see editor_script.cpp), each through the code the panels use.
 #include "editor.hpp"
+#include "places.hpp"
 #include "script_args.hpp"
 
 #include "viewport/overlay.hpp"
@@ -141,6 +142,20 @@ void Editor::declareEditScriptCommands() {
                    const ParamScope scope = edit_.selection.scope();
                    const int index = edit_.selection.index;
                    doc_.apply("Rename", "", [&](Preset& p) { renameObject(p, scope, index, w[1]); });
+                   return true;
+               }});
+
+    table.add({"place", 1, kAnyArgs, "place CITY", "set latitude, longitude and UTC offset from the city list",
+               [this](W w, E error) {
+                   std::string name = w[1];
+                   for (std::size_t i = 2; i < w.size(); ++i) name += " " + w[i];
+                   const Place* place = findPlace(name);
+                   if (!place) {
+                       error = "place: \"" + name + "\" is not in the city list";
+                       return false;
+                   }
+                   doc_.apply("Place: " + std::string(place->name), "",
+                              [&](Preset& p) { applyPlace(p.environment.location, *place); });
                    return true;
                }});
 

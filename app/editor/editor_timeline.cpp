@@ -55,7 +55,8 @@ void drawTimeline(Document& doc, EditState& edit, Playback& playback, const Acti
     ImGui::SameLine();
     if (ImGui::Button("Sunrise")) playback.jumpTo(sunriseHours(where));
     ImGui::SameLine();
-    if (ImGui::Button("Noon")) playback.jumpTo(12.0);
+    if (ImGui::Button("Noon")) playback.jumpTo(solarNoonHours(where));
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("The sun's highest point today (its meridian crossing)");
     ImGui::SameLine();
     if (ImGui::Button("Sunset")) playback.jumpTo(sunsetHours(where));
     ImGui::SameLine();
@@ -65,7 +66,11 @@ void drawTimeline(Document& doc, EditState& edit, Playback& playback, const Acti
         double t;
         if (aerial::parseClock(timeText, t)) playback.jumpTo(t);
     }
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Time of day (HH:MM or hours), local solar time");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Time of day (HH:MM or hours), %s",
+                          where.timeMode == TimeMode::Clock && !where.date.empty()
+                              ? "local clock time (the location's UTC offset)"
+                              : "local solar time");
 
     const Track* track = edit.selectedParam ? trackOf(preset, *edit.selectedParam) : nullptr;
     const TrackTarget target =

@@ -253,4 +253,14 @@ double sunsetHours(const Location& where) {
 
 double dayLengthHours(const Location& where) { return sunsetHours(where) - sunriseHours(where); }
 
+double solarNoonHours(const Location& where) {
+    CalendarDate date;
+    if (where.timeMode != TimeMode::Clock || !parseCalendarDate(where.date, date)) return 12.0;
+    // Hour angle 0: UT = 12 - longitude/15 - E(UT), the fixed point of julianDayAt's solar branch.
+    const double meanNoon = 12.0 - longitudeOf(where) / kDegToRad / 15.0;
+    double ut = meanNoon;
+    for (int i = 0; i < 3; ++i) ut = meanNoon - ephemeris::sun(julianDay(date, ut)).equationOfTimeHours;
+    return wrap(ut + std::clamp(finiteOr(where.utcOffsetHours, 0.0), -12.0, 14.0), 24.0);
+}
+
 }  // namespace aerial

@@ -395,6 +395,35 @@ TEST(DatedSun, DateDefinesTheDayNotDayOfYear) {
     EXPECT_TRUE(std::isnan(aerial::julianDayAt(where, 9.0)));
 }
 
+TEST(DatedSun, SolarNoonIsTheUpperTransit) {
+    // In clock time noon moves with the longitude inside the time zone and
+    // with the equation of time over the year; at the transit the sun stands
+    // due south (north of the tropics) and as high as it gets that day.
+    for (const char* date : {"2026-02-11", "2026-05-14", "2026-07-26", "2026-11-03"}) {
+        for (double lon : {-7.5, 0.0, 13.4}) {
+            aerial::Location where = dated(date, 52.0, lon, aerial::TimeMode::Clock);
+            where.utcOffsetHours = 1.0;
+            const double noon = aerial::solarNoonHours(where);
+            const aerial::CelestialBody top = aerial::sunPosition(where, noon);
+            EXPECT_NEAR(top.azimuth * 180.0 / 3.14159265358979323846, 180.0, 0.01) << date << " lon " << lon;
+            // Five minutes either side is lower (closer in, the day's change of
+            // declination moves the highest point off the meridian by seconds).
+            const double dt = 5.0 / 60.0;
+            EXPECT_GT(top.elevation, aerial::sunPosition(where, noon - dt).elevation);
+            EXPECT_GT(top.elevation, aerial::sunPosition(where, noon + dt).elevation);
+        }
+    }
+    // The equation of time's extremes: about -14.2 min in mid-February (late
+    // noon), +16.4 min early in November (early noon), at longitude 15 E in UTC+1.
+    EXPECT_NEAR(aerial::solarNoonHours(dated("2026-02-11", 52.0, 15.0, aerial::TimeMode::Clock, 1.0)),
+                12.0 + 14.2 / 60.0, 0.5 / 60.0);
+    EXPECT_NEAR(aerial::solarNoonHours(dated("2026-11-03", 52.0, 15.0, aerial::TimeMode::Clock, 1.0)),
+                12.0 - 16.4 / 60.0, 0.5 / 60.0);
+    // Solar time (dated or not): noon is 12:00 by definition.
+    EXPECT_EQ(aerial::solarNoonHours(dated("2026-02-11", 52.0, 15.0, aerial::TimeMode::Solar)), 12.0);
+    EXPECT_EQ(aerial::solarNoonHours(at(52.0, 42.0)), 12.0);
+}
+
 TEST(DatedSun, PolarDayAndNightAreReported) {
     const aerial::Location summer = dated("2026-06-21", 80.0, 0.0, aerial::TimeMode::Solar);
     EXPECT_EQ(aerial::sunriseHours(summer), 0.0);

@@ -552,11 +552,17 @@ quit
     env.run(env.script("date.txt", """
 new
 set location.date 2026-03-21
+place new york
 save {dated}
 quit
 """.format(dated=dated)))
     with open(dated) as f:
-        check(json.load(f)["location"]["date"] == "2026-03-21", "the date was not saved")
+        where = json.load(f)["location"]
+    check(where["date"] == "2026-03-21", "the date was not saved")
+    check((where["latitude_deg"], where["longitude_deg"], where["utc_offset_h"]) == (40.71, -74.01, -5),
+          "the city list's New York was not set: %r" % where)
+    p = env.run(env.script("bad_place.txt", "new\nplace Atlantis\n"), expect_rc=1)
+    check('"Atlantis" is not in the city list' in p.stderr, "an unknown city is not refused:\n" + p.stderr[-2000:])
     p = env.run(env.script("bad_date.txt", "new\nset location.date 2026-02-30\n"), expect_rc=1)
     check("must be a calendar date" in p.stderr and "2026-02-30" in p.stderr,
           "an impossible date is not refused with the reason:\n" + p.stderr[-2000:])

@@ -268,4 +268,11 @@ double sunriseHours(const Location& where);
 /// (see sunriseHours).
 double sunsetHours(const Location& where);
 
+/// Time of day of the sun's upper transit [h], 0..24 (the highest sun of a
+/// day, the meridian crossing): 12 in solar time, undated or dated (the hour
+/// angle is 15 deg (t - 12) by definition); in clock time
+/// 12 + utcOffset - longitude/15 - E, E the equation of time that day
+/// (ephemeris, iterated to the instant). A game shows it as "noon".
+double solarNoonHours(const Location& where);
+
 }  // namespace aerial
