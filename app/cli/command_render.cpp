@@ -1,6 +1,7 @@
 // command_render.cpp — `aerial render PRESET --out FILE.exr|png [--time T]
 // [--eye x,y,z --target x,y,z --fov deg] [--size WxH] [--exposure EV]
-// [--display NAME] [--view NAME] [--float] [--shadows on|off] [--json]`: one frame of the built-in scene
+// [--display NAME] [--view NAME] [--float] [--shadows on|off] [--fog analytic|volumetric]
+// [--froxel-slices N] [--json]`: one frame of the built-in scene
 // (renderer/scene.hpp: terrain with a valley, a lake, rocks, buildings, glass, a fence, steam) under the
 // preset at one time of day, rendered headless (EGL on Mesa's surfaceless platform, no window) by the same
 // renderer the editor uses.
@@ -34,6 +35,12 @@
 // cascaded shadow maps on the scene (RenderPasses::shadows, the renderer's
 // default ShadowMapSettings); off renders exactly as without them.
 //
+// --fog analytic|volumetric (default analytic: the exact closed forms, what
+// the goldens hold): volumetric draws the global fog, the volumes and the
+// emitters' lit fog through the renderer's froxel grid, where the shadows
+// (scene and clouds) cut light shafts (FogMode::Volumetric);
+// --froxel-slices N (16..256, default 64) its depth slices.
+//
 // --scene FILE.gltf|.glb renders a glTF 2.0 scene (renderer/gltf.hpp)
 // instead of the built-in one; a bad or unsupported file is exit 1 with the
 // loader's one-line message, the loader's warnings go to stderr.
@@ -47,7 +54,7 @@
 //   {"file", "format" ("exr"/"png"), "width", "height",
 //    "preset": {"file", "name"}, "time_h", "time",
 //    "camera": {"eye", "target", "fov_deg"}, "precision" ("half"/"float"),
-//    "shadows" (true/false),
+//    "shadows" (true/false), "fog" ("analytic"/"volumetric"),
 //    "exposure": {"mode", "average_luminance" (metered, radiance units),
 //    "ev100" (what the preset's exposure chose), "compensation_ev",
 //    "exposure_ev" (--exposure), "display_ev" (the stops the display
@@ -102,6 +109,8 @@ struct RenderOptions {
     std::string view;      // "" = the display's default view
     bool floatTarget = false;
     std::string shadows = "on";  // on | off
+    std::string fog = "analytic";  // analytic | volumetric
+    int froxelSlices = 64;
     bool json = false;
 };
 
@@ -293,6 +302,8 @@ int runRender(const RenderOptions& options) {
     frame.precision =
         options.floatTarget ? renderer::ColourPrecision::Float : renderer::ColourPrecision::Half;
     frame.passes.shadows = options.shadows == "on";
+    frame.fogMode = options.fog == "volumetric" ? renderer::FogMode::Volumetric : renderer::FogMode::Analytic;
+    frame.froxels.slices = options.froxelSlices;
     renderer.render(camera, state, frame);
     const renderer::Image image = renderer.readColour();
     const double renderMs = millisecondsSince(renderStart);
@@ -334,6 +345,7 @@ int runRender(const RenderOptions& options) {
              {"camera", {{"eye", toJson(eye)}, {"target", toJson(target)}, {"fov_deg", options.fovDeg}}},
              {"precision", options.floatTarget ? "float" : "half"},
              {"shadows", options.shadows == "on"},
+             {"fog", options.fog},
              {"exposure",
               {{"mode", exposure.mode == ExposureMode::Manual ? "manual" : "automatic"},
                {"average_luminance", averageLuminance},
@@ -403,6 +415,16 @@ Command addRenderCommand(CLI::App& parent) {
                     "Sun and moon shadows of the scene (cascaded shadow maps): on or off")
         ->type_name("on|off")
         ->check(CLI::IsMember({"on", "off"}))
+        ->capture_default_str();
+    app->add_option("--fog", options->fog,
+                    "Fog: analytic (exact closed forms) or volumetric (froxel grid: light shafts through the "
+                    "shadows)")
+        ->type_name("analytic|volumetric")
+        ->check(CLI::IsMember({"analytic", "volumetric"}))
+        ->capture_default_str();
+    app->add_option("--froxel-slices", options->froxelSlices, "Volumetric fog: depth slices of the grid")
+        ->type_name("N")
+        ->check(CLI::Range(16, 256))
         ->capture_default_str();
     app->add_flag("--json", options->json, "Machine-readable output");
     app->footer(

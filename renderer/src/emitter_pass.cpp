@@ -49,7 +49,9 @@ int uploadEmitters(RendererResources& gpu, const std::vector<Emitter>& emitters)
 
 namespace {
 
-bool runs(const FrameContext& f) { return f.desc.passes.emitters && f.block.emitterCount > 0; }
+bool runs(const FrameContext& f) {
+    return f.desc.fogMode == FogMode::Analytic && f.desc.passes.emitters && f.block.emitterCount > 0;
+}
 
 void draw(FrameContext& f) { compositeFullscreen(f.gpu, Pass::Emitters, GL_ONE, GL_ONE); }
 

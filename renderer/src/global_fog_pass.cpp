@@ -12,7 +12,9 @@
 namespace aerial::renderer::detail {
 namespace {
 
-bool runs(const FrameContext& f) { return f.desc.passes.globalFog && f.block.fogDensity > 0.0f; }
+bool runs(const FrameContext& f) {
+    return f.desc.fogMode == FogMode::Analytic && f.desc.passes.globalFog && f.block.fogDensity > 0.0f;
+}
 
 void draw(FrameContext& f) { compositeFullscreen(f.gpu, Pass::GlobalFog, GL_ONE, GL_SRC_ALPHA); }
 

@@ -307,6 +307,30 @@ static_assert(offsetof(ShadowBlock, resolution) == 324);
 static_assert(offsetof(ShadowBlock, blendFraction) == 328);
 static_assert(sizeof(ShadowBlock) == 336);
 
+/// shaders/common/froxel.glsl, FroxelBlock (binding 6): the volumetric
+/// fog's grid; built by makeFroxelBlock (froxel_pass.cpp).
+struct FroxelBlock {
+    std::int32_t gridSize[3] = {0, 0, 0};  ///< froxels x, y, slices
+    std::int32_t volumeCount = 0;          ///< VolumeBlocks in the froxel volume buffer
+    float pixelsPerFroxel = 8.0f;
+    float z0 = 4.0f;      ///< [m]
+    float farM = 0.0f;    ///< [m]
+    float logScale = 0.0f;  ///< ln(1 + farM / z0)
+    float castIsMoon = 0.0f;
+    float sceneShadows = 0.0f;
+    float cloudShadows = 0.0f;
+    float jitter = 0.5f;
+    float globalFog = 0.0f;  ///< 1: the global height fog is part of it (RenderPasses::globalFog)
+    float padFroxel[3] = {};
+};
+static_assert(offsetof(FroxelBlock, volumeCount) == 12);
+static_assert(offsetof(FroxelBlock, pixelsPerFroxel) == 16);
+static_assert(offsetof(FroxelBlock, logScale) == 28);
+static_assert(offsetof(FroxelBlock, castIsMoon) == 32);
+static_assert(offsetof(FroxelBlock, jitter) == 44);
+static_assert(offsetof(FroxelBlock, globalFog) == 48);
+static_assert(sizeof(FroxelBlock) == 64);
+
 /// shaders/particles.glsl, per-instance vertex attributes (locations 0..3).
 struct SpriteInstance {
     float centreRadius[4];
@@ -335,6 +359,9 @@ constexpr unsigned kEmitterBinding = 2;
 constexpr unsigned kObjectBinding = 3;
 constexpr unsigned kCloudBinding = 4;
 constexpr unsigned kShadowBinding = 5;
+constexpr unsigned kFroxelBinding = 6;
+/// Shader storage: the fog volumes of the froxel grid (VolumeBlock[]).
+constexpr unsigned kFroxelVolumeStorageBinding = 3;
 constexpr unsigned kSunRayleighUnit = 0;
 constexpr unsigned kSunMieUnit = 1;
 constexpr unsigned kMoonRayleighUnit = 2;
@@ -352,5 +379,11 @@ constexpr unsigned kCloudHistoryUnit = 12;
 constexpr unsigned kPreviousDepthUnit = 13;
 /// The cascaded shadow maps (GL_DEPTH_COMPONENT32F 2D array, comparison on).
 constexpr unsigned kShadowMapUnit = 14;
+/// The volumetric fog's integrated grid (froxel_apply.glsl): the amortised
+/// clouds' units, bound by each pass that reads them (16 units per stage is
+/// all OpenGL promises).
+constexpr unsigned kFroxelLitSkyUnit = 11;
+constexpr unsigned kFroxelSkyUnit = 12;
+constexpr unsigned kFroxelOwnUnit = 13;
 
 }  // namespace aerial::renderer::detail

@@ -23,6 +23,7 @@
 
 #include <aerial/clouds.hpp>
 #include <aerial/fog_query.hpp>
+#include <aerial/fog_volume.hpp>
 #include <aerial/renderer/camera.hpp>
 #include <aerial/renderer/renderer.hpp>
 #include <aerial/renderer/scene.hpp>
@@ -89,6 +90,16 @@ struct RendererResources {
     /// sampling on), its depth-only target, the ShadowBlock buffer.
     GLuint shadowMap = 0, shadowTarget = 0, shadowBuffer = 0;
     int shadowMapSize = 0, shadowMapLayers = 0;  ///< of the allocated array
+    /// The volumetric fog (froxel_pass.cpp): the injected grid (medium,
+    /// light: x, y, slices), the integrated grid (litSky, sky, own: slices
+    /// + 1 layers), all RGBA32F; the FroxelBlock and the volumes' buffer.
+    struct Froxels {
+        int width = 0, height = 0, slices = 0;  ///< of the allocated textures (0: none)
+        GLuint medium = 0, light = 0;
+        GLuint litSky = 0, sky = 0, own = 0;
+        GLuint block = 0, volumes = 0;
+        GLsizeiptr volumeCapacity = 0;  ///< [bytes]
+    } froxels;
 };
 
 /// One frame as the passes see it.
@@ -114,6 +125,9 @@ public:
     ShadowBlock shadowBlock;
     /// The layer is drawn this frame: clouds active and the pass on.
     bool cloudsDrawn() const { return clouds != nullptr && clouds->active() && desc.passes.clouds; }
+    /// The volumetric fog's block of this frame (froxel_pass.cpp, set by the
+    /// inject pass; gridSize 0 when the fog is analytic or empty).
+    FroxelBlock froxelBlock;
 
     /// The CPU fog of the volumes and emitters for the transparent meshes
     /// and the particles (core's fogSceneDesc without the global fog, which
@@ -143,6 +157,9 @@ extern const RenderPass kParticlePass;     // particle_pass.cpp
 extern const RenderPass kCloudShadowPass;  // cloud_shadow_pass.cpp
 extern const RenderPass kCloudPass;        // cloud_pass.cpp
 extern const RenderPass kShadowMapPass;    // shadow_map_pass.cpp
+extern const RenderPass kFroxelInjectPass;     // froxel_pass.cpp
+extern const RenderPass kFroxelIntegratePass;  // froxel_pass.cpp
+extern const RenderPass kFroxelApplyPass;      // froxel_pass.cpp
 
 /// Runs passes, measuring each when FrameDesc::gpuTimers: a GL_TIME_ELAPSED
 /// query around its draws and the wall time between glFinish calls before
@@ -222,5 +239,19 @@ void destroyCloudHistory(RendererResources& gpu);
 /// and buffer; destroyShadowResources deletes them.
 void prepareShadowResources(RendererResources& gpu, int resolution, int layers);
 void destroyShadowResources(RendererResources& gpu);
+
+/// A prepared fog volume as the GPU takes it (volume_pass.cpp); false when
+/// it is invalid or empty (nothing to draw).
+bool packVolumeBlock(const PreparedFogVolume& volume, VolumeBlock& block);
+
+/// The volumetric fog's grid for a frame of width x height pixels (no GL):
+/// FroxelSettings clamped, the far depth at most the camera's, the casting
+/// light (the brighter of sun and moon, as the shadow maps choose it) and
+/// which shadows dim it. gridSize stays 0 unless `frame.fogMode` is
+/// Volumetric.
+FroxelBlock makeFroxelBlock(const FrameDesc& frame, int width, int height, double farDistance,
+                            const PresetState& state, const ShadowBlock& shadows, const CloudBlock& clouds,
+                            int volumeCount);
+void destroyFroxelResources(RendererResources& gpu);
 
 }  // namespace aerial::renderer::detail

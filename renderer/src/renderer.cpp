@@ -3,7 +3,8 @@
 // file each: scene_pass.cpp, sky_pass.cpp, global_fog_pass.cpp,
 // volume_pass.cpp, emitter_pass.cpp, transparent_pass.cpp,
 // particle_pass.cpp, cloud_shadow_pass.cpp, cloud_pass.cpp,
-// shadow_map_pass.cpp; render_pass.hpp for their contract). See
+// shadow_map_pass.cpp, froxel_pass.cpp; render_pass.hpp for their
+// contract). See
 // <aerial/renderer/renderer.hpp> for the order and the compositing contract,
 // and shaders/*.glsl for the per-pixel formulas.
 #include <aerial/renderer/renderer.hpp>
@@ -36,9 +37,11 @@ using detail::GpuMesh;
 
 /// The frame, in order (renderer.hpp).
 const detail::RenderPass* const kFramePasses[] = {
-    &detail::kCloudShadowPass, &detail::kShadowMapPass, &detail::kScenePass,  &detail::kSkyPass,
-    &detail::kCloudPass,       &detail::kGlobalFogPass, &detail::kVolumePass, &detail::kEmitterPass,
-    &detail::kTransparentPass, &detail::kParticlePass,
+    &detail::kCloudShadowPass,  &detail::kShadowMapPass,       &detail::kScenePass,
+    &detail::kSkyPass,          &detail::kCloudPass,           &detail::kGlobalFogPass,
+    &detail::kVolumePass,       &detail::kEmitterPass,         &detail::kFroxelInjectPass,
+    &detail::kFroxelIntegratePass, &detail::kFroxelApplyPass,  &detail::kTransparentPass,
+    &detail::kParticlePass,
 };
 
 }  // namespace
@@ -160,6 +163,7 @@ Renderer::~Renderer() {
     s.destroyScene();
     detail::destroyCloudResources(s);
     detail::destroyShadowResources(s);
+    detail::destroyFroxelResources(s);
     detail::destroyMesh(s.hull);
     glDeleteTextures(1, &s.whiteTexture);
     glDeleteVertexArrays(1, &s.spriteArray);

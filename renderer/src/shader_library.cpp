@@ -180,6 +180,39 @@ GLuint buildProgram(const std::string& path, const ShaderReader& reader, std::st
     return program;
 }
 
+GLuint buildComputeProgram(const std::string& path, const ShaderReader& reader, std::string& log) {
+    std::string body;
+    std::vector<std::string> files;
+    std::string error;
+    if (!resolveIncludes(path, reader, body, files, error)) {
+        log.append(join({path, ": ", error, "\n"}));
+        return 0;
+    }
+    std::string stageLog;
+    const GLuint stage =
+        compileStage(GL_COMPUTE_SHADER, join({"#version 450 core\n#define AERIAL_COMPUTE_SHADER 1\n", body}), stageLog);
+    if (stage == 0) {
+        log.append(join({path, " (compute stage): compile failed ", fileLegend(files), stageLog}));
+        return 0;
+    }
+    const GLuint program = glCreateProgram();
+    glAttachShader(program, stage);
+    glLinkProgram(program);
+    glDeleteShader(stage);
+    GLint ok = GL_FALSE;
+    glGetProgramiv(program, GL_LINK_STATUS, &ok);
+    if (!ok) {
+        GLint length = 0;
+        glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
+        std::string info(static_cast<std::size_t>(length > 0 ? length : 1), '\0');
+        glGetProgramInfoLog(program, length, nullptr, info.data());
+        log.append(join({path, ": link failed: ", info.c_str(), "\n"}));
+        glDeleteProgram(program);
+        return 0;
+    }
+    return program;
+}
+
 ShaderLibrary::~ShaderLibrary() {
     for (GLuint p : programs_) {
         if (p != 0) glDeleteProgram(p);
@@ -212,6 +245,12 @@ const char* ShaderLibrary::fileOf(Pass pass) {
             return "cloud_reconstruct.glsl";
         case Pass::ShadowDepth:
             return "shadow_depth.glsl";
+        case Pass::FroxelInject:
+            return "froxel_inject.glsl";
+        case Pass::FroxelIntegrate:
+            return "froxel_integrate.glsl";
+        case Pass::FroxelApply:
+            return "froxel_apply.glsl";
         case Pass::Count:
             break;
     }
@@ -221,7 +260,10 @@ const char* ShaderLibrary::fileOf(Pass pass) {
 bool ShaderLibrary::build(const ShaderReader& reader, std::string& log) {
     bool all = true;
     for (int k = 0; k < static_cast<int>(Pass::Count); ++k) {
-        const GLuint program = buildProgram(fileOf(static_cast<Pass>(k)), reader, log);
+        const Pass pass = static_cast<Pass>(k);
+        const bool compute = pass == Pass::FroxelInject || pass == Pass::FroxelIntegrate;
+        const GLuint program = compute ? buildComputeProgram(fileOf(pass), reader, log)
+                                       : buildProgram(fileOf(pass), reader, log);
         if (program == 0) {
             all = false;  // keep the last good program
             continue;

@@ -39,6 +39,8 @@ GLuint linkProgram(GLuint vertexStage, GLuint fragmentStage, std::string& log);
 /// Compiles and links the program of one pass file. Returns 0 and fills
 /// `log` on failure.
 GLuint buildProgram(const std::string& path, const ShaderReader& reader, std::string& log);
+/// The same for a compute pass: one stage, AERIAL_COMPUTE_SHADER defined.
+GLuint buildComputeProgram(const std::string& path, const ShaderReader& reader, std::string& log);
 
 /// The renderer's programs by pass.
 enum class Pass {
@@ -54,6 +56,9 @@ enum class Pass {
     CloudShadow,
     CloudReconstruct,
     ShadowDepth,
+    FroxelInject,     ///< compute
+    FroxelIntegrate,  ///< compute
+    FroxelApply,
     Count
 };
 

@@ -49,24 +49,7 @@ struct PreparedVolume {
 bool prepareVolume(const FogVolume& v, std::size_t index, const CameraFrame& camera,
                    double nearCornerDistance, PreparedVolume& out) {
     const PreparedFogVolume p = prepareFogVolume(v);
-    if (!p.valid || !(p.density > 0.0)) return false;
-
-    glm::dmat4 worldFromObject(1.0);
-    for (int c = 0; c < 3; ++c) worldFromObject[c] = glm::dvec4(p.worldFromObject[c], 0.0);
-    worldFromObject[3] = glm::dvec4(p.position, 1.0);
-
-    out.block.worldFromObject = toMat4(worldFromObject);
-    out.block.objectFromWorldRow0 = toVec3(p.row0);
-    out.block.shape = p.shape == FogVolumeShape::Ellipsoid ? 1.0f : 0.0f;
-    out.block.objectFromWorldRow1 = toVec3(p.row1);
-    out.block.density = static_cast<float>(p.density);
-    out.block.objectFromWorldRow2 = toVec3(p.row2);
-    out.block.falloff = static_cast<float>(p.falloff);
-    out.block.position = toVec3(p.position);
-    out.block.gradientOffset = static_cast<float>(p.gradientOffset);
-    out.block.gradientDirection = toVec3(p.gradient);
-    out.block.colourMode = static_cast<float>(static_cast<int>(p.colourMode));
-    out.block.colour = toVec3(p.colour);
+    if (!packVolumeBlock(p, out.block)) return false;
 
     out.sortDistance = distanceToBox(camera.eye, p.boundsMin, p.boundsMax);
     out.index = index;
@@ -80,7 +63,9 @@ bool prepareVolume(const FogVolume& v, std::size_t index, const CameraFrame& cam
     return true;
 }
 
-bool runs(const FrameContext& f) { return f.desc.passes.volumes && !f.state.volumes.empty(); }
+bool runs(const FrameContext& f) {
+    return f.desc.fogMode == FogMode::Analytic && f.desc.passes.volumes && !f.state.volumes.empty();
+}
 
 void draw(FrameContext& f) {
     RendererResources& gpu = f.gpu;
@@ -131,6 +116,27 @@ void draw(FrameContext& f) {
 }
 
 }  // namespace
+
+bool packVolumeBlock(const PreparedFogVolume& p, VolumeBlock& block) {
+    if (!p.valid || !(p.density > 0.0)) return false;
+    glm::dmat4 worldFromObject(1.0);
+    for (int c = 0; c < 3; ++c) worldFromObject[c] = glm::dvec4(p.worldFromObject[c], 0.0);
+    worldFromObject[3] = glm::dvec4(p.position, 1.0);
+
+    block.worldFromObject = toMat4(worldFromObject);
+    block.objectFromWorldRow0 = toVec3(p.row0);
+    block.shape = p.shape == FogVolumeShape::Ellipsoid ? 1.0f : 0.0f;
+    block.objectFromWorldRow1 = toVec3(p.row1);
+    block.density = static_cast<float>(p.density);
+    block.objectFromWorldRow2 = toVec3(p.row2);
+    block.falloff = static_cast<float>(p.falloff);
+    block.position = toVec3(p.position);
+    block.gradientOffset = static_cast<float>(p.gradientOffset);
+    block.gradientDirection = toVec3(p.gradient);
+    block.colourMode = static_cast<float>(static_cast<int>(p.colourMode));
+    block.colour = toVec3(p.colour);
+    return true;
+}
 
 const RenderPass kVolumePass{&PassTimes::volumes, runs, draw};
 

@@ -180,6 +180,41 @@ enum class VolumeMethod {
     RayMarched64,  ///< 64-step midpoint sum: the benchmark's reference
 };
 
+/// How the fog (global height fog, box and ellipsoid volumes, the emitters'
+/// lit fog) is drawn.
+enum class FogMode {
+    /// Closed-form integrals per pixel (DESIGN.md; default): exact, the
+    /// reference, and the cheap tier; no shadows in the fog.
+    Analytic,
+    /// A froxel grid fitted to the view (froxel_pass.cpp; Wronski 2014,
+    /// Hillaire 2015): density injected from the same closed forms, lit per
+    /// froxel with the casting light's visibility (shadow maps x cloud
+    /// shadows: light shafts), integrated front to back, applied per pixel.
+    /// With every shadow off it equals Analytic up to the grid's
+    /// interpolation (see FroxelSettings). Beyond FroxelSettings::farM the
+    /// global fog continues analytically; volumes there are not drawn.
+    Volumetric,
+};
+
+/// The volumetric fog's grid (FogMode::Volumetric). Out-of-range values are clamped.
+struct FroxelSettings {
+    /// Side of a froxel [px], 4..32. Default 8 (Unreal, HDRP).
+    int pixelsPerFroxel = 8;
+    /// Depth slices, 16..256, exponentially distributed (common/froxel.glsl).
+    /// Default 64 (tests/renderer/test_renderer_froxels.cpp reports the
+    /// error against the analytic fog for 32..256).
+    int slices = 64;
+    /// View depth [m] where the grid ends, 10..100000 (at most the far
+    /// plane). Default 2000 m.
+    double farM = 2000.0;
+    /// Scale of the exponential distribution [m], 0.1..1000: slices are
+    /// ~(z + z0) ln(1 + farM / z0) / slices thick at view depth z. Default 4 m.
+    double nearScaleM = 4.0;
+    /// Where in each slice the casting light's visibility is sampled, 0..1
+    /// (0.5: the middle; the temporal jitter moves it).
+    double jitter = 0.5;
+};
+
 struct FrameDesc {
     int width = 0;   ///< [px]; 0 = 1280
     int height = 0;  ///< [px]; 0 = 720
@@ -230,6 +265,10 @@ struct FrameDesc {
     double cloudHistoryMaxTurnRad = 0.26;
     /// The sun's / moon's shadow maps (RenderPasses::shadows switches them).
     ShadowMapSettings shadowMap;
+    /// Analytic (default) or volumetric fog; RenderPasses::globalFog,
+    /// volumes and emitters switch its parts in both modes.
+    FogMode fogMode = FogMode::Analytic;
+    FroxelSettings froxels;
 };
 
 struct ShaderReloadResult {
@@ -252,9 +291,12 @@ struct PassTimes {
     double cloudShadow = 0.0;  ///< the cloud shadow map
     double clouds = 0.0;       ///< the cloud layer
     double shadowMap = 0.0;    ///< the cascaded shadow maps of the sun or moon
+    double froxelInject = 0.0;     ///< volumetric fog: density and light per froxel
+    double froxelIntegrate = 0.0;  ///< volumetric fog: front-to-back integration
+    double froxelApply = 0.0;      ///< volumetric fog: composited over the frame
     double total() const {
         return scene + sky + globalFog + volumes + emitters + transparent + particles + cloudShadow + clouds +
-               shadowMap;
+               shadowMap + froxelInject + froxelIntegrate + froxelApply;
     }
 };
 
@@ -300,8 +342,17 @@ struct ShadowMapStats {
 };
 
 /// Statistics of the last render.
+/// The volumetric fog of the last frame (RenderStats).
+struct FroxelStats {
+    bool drawn = false;  ///< false: FogMode::Analytic, or nothing to fog
+    int width = 0, height = 0, slices = 0;  ///< the grid [froxels]
+    int volumes = 0;                        ///< fog volumes injected
+    bool shadowed = false;                  ///< shadow maps or cloud shadows dimmed the light
+};
+
 struct RenderStats {
     CloudShadowStats cloudShadow;
+    FroxelStats froxels;
     CloudHistoryStats cloudHistory;
     ShadowMapStats shadowMap;
     int volumesDrawn = 0;

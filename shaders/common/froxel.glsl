@@ -1,0 +1,70 @@
+// common/froxel.glsl — the volumetric fog's grid (FroxelBlock, std140,
+// binding 6; renderer/src/gpu_types.hpp) and its mapping, shared by the
+// inject, integrate and apply stages (froxel_*.glsl).
+//
+// The grid (Wronski 2014, Hillaire 2015): gridSize.x x gridSize.y froxels of
+// pixelsPerFroxel^2 pixels each, gridSize.z slices in view depth z (along
+// frame.forward) from the eye to farM, exponentially distributed as Unreal's:
+//   z(s) = z0 (exp(s ln(1 + farM / z0)) - 1),  s = k / slices in [0, 1],
+// so z(0) = 0, z(1) = farM and a slice is ~ln(1 + farM/z0)/slices of its
+// distance thick (dense near the eye, where shafts are seen).
+// Froxel (i, j) takes the ray through pixel ((i + 0.5) pixelsPerFroxel,
+// (j + 0.5) pixelsPerFroxel); slice k its segment z in [z(k/N), z((k+1)/N)].
+// The integrated textures hold slices + 1 layers: layer k the light
+// in-scattered and the transmittance from the eye to z(k/N) (layer 0: none).
+#ifndef AERIAL_FROXEL_GLSL
+#define AERIAL_FROXEL_GLSL
+
+layout(std140, binding = 6) uniform FroxelBlock {
+    ivec3 gridSize;        // froxels x, y, slices
+    int volumeCount;       // fog volumes in the Volumes buffer (binding 3)
+    float pixelsPerFroxel;
+    float z0;              // [m] the exponential distribution's scale
+    float farM;            // [m] view depth where the grid ends
+    float logScale;        // ln(1 + farM / z0)
+    float castIsMoon;      // 1: the moon is the light the shadows dim (the brighter), 0: the sun
+    float sceneShadows;    // 1: the shadow maps dim it (ShadowBlock.castingLight > 0)
+    float cloudShadows;    // 1: the cloud shadow map dims it (CloudBlock.shadowActive)
+    float jitter;          // 0..1: where in each slice the light is sampled (0.5: its middle)
+    float globalFog;       // 1: the global height fog is part of it
+    float padFroxel0;
+    float padFroxel1;
+    float padFroxel2;
+} froxel;
+
+/// View depth [m] of slice coordinate s (0..1).
+float froxelDepthAt(float s) { return froxel.z0 * (exp(s * froxel.logScale) - 1.0); }
+
+/// Slice coordinate (0..1) of view depth z [m] (> 1 beyond the grid).
+float froxelSliceAt(float z) { return log(1.0 + max(z, 0.0) / froxel.z0) / froxel.logScale; }
+
+/// Ray from the eye to the far plane through the centre of froxel column (i, j).
+vec3 froxelFarRay(ivec2 ij) {
+    vec2 pixel = (vec2(ij) + 0.5) * froxel.pixelsPerFroxel;
+    return farRayAtNdc(pixel * frame.viewportTexel * 2.0 - 1.0);
+}
+
+/// The fog colour of direction v split into the part the shadows dim (the
+/// casting light's single scattering, phase applied) and the whole:
+/// x = shadowable part, y = all (skyFogColour, capped as fogInScatterTransmittance).
+void froxelFogColours(vec3 v, out vec3 shadowable, out vec3 all) {
+    vec3 sky = skyFogColour(v);
+    vec3 capped = min(sky, vec3(frame.radianceCap));
+    vec3 share = vec3(1.0);
+    for (int c = 0; c < 3; ++c) share[c] = sky[c] > 0.0 ? capped[c] / sky[c] : 0.0;
+    float g = frame.mieAnisotropy;
+    vec3 single;
+    if (froxel.castIsMoon > 0.5) {
+        float mu = dot(v, frame.moonDirection);
+        single = frame.moonIlluminanceSpace *
+                 (rayleighPhase(mu) * frame.moonHorizonRayleigh + miePhase(mu, g) * frame.moonHorizonMie);
+    } else {
+        float mu = dot(v, frame.sunDirection);
+        single = frame.sunIlluminanceSpace *
+                 (rayleighPhase(mu) * frame.sunHorizonRayleigh + miePhase(mu, g) * frame.sunHorizonMie);
+    }
+    shadowable = single * share;
+    all = capped;
+}
+
+#endif

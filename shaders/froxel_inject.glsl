@@ -1,0 +1,151 @@
+// froxel_inject.glsl — volumetric fog, stage 1 (compute): inject the
+// medium and light every froxel (common/froxel.glsl for the grid).
+//
+// Per froxel, along the ray through its centre over its slice's segment
+// o -> o + d (view depth z(k/N) .. z((k+1)/N)), everything in closed form so
+// that the slice count only decides where the light is sampled:
+//   tau          optical depth of the global height fog and every box or
+//                ellipsoid volume over the segment (the analytic integrals
+//                of DESIGN.md "Global height fog" / "Fog volumes")
+//   W_sky (rgb)  sum of tau_i x tint_i over the media coloured by the sky
+//                (colour mode sky: tint 1; tinted: the tint)
+//   W_own (rgb)  sum of tau_i x colour_i over the media of a custom colour,
+//                plus every emitter's exact in-scatter integral over the
+//                segment (emitters.glsl's closed form)
+//   V            visibility of the casting light (sun, or the moon when
+//                brighter) at the sample point z(k + jitter)/N: the cascaded
+//                shadow maps x the cloud shadow map (1 where they are off)
+// Output: image 0 = (W_sky, tau), image 1 = (W_own, V), RGBA32F, one texel
+// per froxel (x, y, slice).
+#include "common/frame.glsl"
+#include "common/atmosphere.glsl"
+#include "common/froxel.glsl"
+#include "common/emitters.glsl"
+#include "common/shadows.glsl"
+#include "common/clouds.glsl"
+
+layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
+
+layout(rgba32f, binding = 0) uniform writeonly image3D uMedium;  // (W_sky, tau)
+layout(rgba32f, binding = 1) uniform writeonly image3D uLight;   // (W_own, V)
+
+/// One fog volume as VolumeBlock (common/volume.glsl), packed in an array.
+struct FroxelVolume {
+    mat4 worldFromObject;
+    vec3 objectFromWorldRow0;
+    float shape;
+    vec3 objectFromWorldRow1;
+    float density;
+    vec3 objectFromWorldRow2;
+    float falloff;
+    vec3 position;
+    float gradientOffset;
+    vec3 gradientDirection;
+    float colourMode;
+    vec3 colour;
+    float padColour;
+};
+layout(std430, binding = 3) readonly buffer Volumes { FroxelVolume volumes[]; };
+
+/// Entry and exit parameters of o + t d against the unit cube (shape 0) or
+/// sphere (1) in object space; tNear > tFar when missed (volume.glsl).
+vec2 froxelUnitShape(float shape, vec3 o, vec3 d) {
+    if (shape < 0.5) {
+        float tNear = -3.0e38;
+        float tFar = 3.0e38;
+        for (int i = 0; i < 3; ++i) {
+            if (abs(d[i]) > 1e-30) {
+                float t1 = (-1.0 - o[i]) / d[i];
+                float t2 = (1.0 - o[i]) / d[i];
+                tNear = max(tNear, min(t1, t2));
+                tFar = min(tFar, max(t1, t2));
+            } else if (abs(o[i]) > 1.0) {
+                return vec2(1.0, 0.0);
+            }
+        }
+        return vec2(tNear, tFar);
+    }
+    float a = dot(d, d);
+    if (!(a > 0.0)) return vec2(1.0, 0.0);
+    float tMid = -dot(o, d) / a;
+    vec3 perp = o + tMid * d;
+    float h = 1.0 - dot(perp, perp);
+    if (!(h > 0.0)) return vec2(1.0, 0.0);
+    float halfChord = sqrt(h / a);
+    return vec2(tMid - halfChord, tMid + halfChord);
+}
+
+/// Adds a medium of optical depth tau and colour mode/colour to the sums.
+void addMedium(float tau, float mode, vec3 colour, inout vec3 wSky, inout vec3 wOwn) {
+    if (mode > 1.5) {
+        wOwn += tau * colour;
+    } else {
+        wSky += tau * (mode > 0.5 ? colour : vec3(1.0));
+    }
+}
+
+/// Integral of i / (1 + a |l - p|^2) along o -> o + d (emitters.glsl).
+float froxelEmitterIntegral(vec3 l, float i, float a, vec3 o, vec3 d) {
+    float len = length(d);
+    if (!(i > 0.0) || !(len > 0.0)) return 0.0;
+    a = max(a, 0.0);
+    vec3 n = d / len;
+    vec3 c = l - o;
+    vec3 e = c - d;
+    vec3 cr = cross(c, n);
+    float k = sqrt(a) * sqrt(1.0 + a * dot(cr, cr));
+    float x = 1.0 + a * dot(c, e);
+    float y = len * k;
+    const float kHalfPi = 1.57079632679490;
+    float z = y / x;
+    float atanOverX = z > 1e-4 ? atan(z) / z : 1.0 - z * z / 3.0;
+    return (y < x) ? i * len * atanOverX / x : i * (kHalfPi - atan(x / y)) / k;
+}
+
+void main() {
+    ivec3 id = ivec3(gl_GlobalInvocationID);
+    if (any(greaterThanEqual(id, froxel.gridSize))) return;
+    vec3 farRay = froxelFarRay(id.xy);
+    float za = froxelDepthAt(float(id.z) / float(froxel.gridSize.z));
+    float zb = froxelDepthAt(float(id.z + 1) / float(froxel.gridSize.z));
+    vec3 o = frame.eye + (za / frame.farDistance) * farRay;
+    vec3 d = ((zb - za) / frame.farDistance) * farRay;
+    float len = length(d);
+
+    vec3 wSky = vec3(0.0), wOwn = vec3(0.0);
+    float tau = exponentialOpticalDepth(froxel.globalFog * frame.fogDensity, frame.fogFalloff, o.y - frame.fogBaseHeight, d.y, len);
+    addMedium(tau, frame.fogColourMode, frame.fogColour, wSky, wOwn);
+
+    for (int v = 0; v < froxel.volumeCount; ++v) {
+        FroxelVolume fv = volumes[v];
+        vec3 rel = o - fv.position;
+        vec3 oo = vec3(dot(fv.objectFromWorldRow0, rel), dot(fv.objectFromWorldRow1, rel),
+                       dot(fv.objectFromWorldRow2, rel));
+        vec3 dd = vec3(dot(fv.objectFromWorldRow0, d), dot(fv.objectFromWorldRow1, d),
+                       dot(fv.objectFromWorldRow2, d));
+        vec2 hit = froxelUnitShape(fv.shape, oo, dd);
+        float tIn = max(hit.x, 0.0);
+        float tOut = min(hit.y, 1.0);
+        if (!(tIn < tOut)) continue;
+        float rate = dot(d, fv.gradientDirection);
+        float height = dot(rel, fv.gradientDirection) + tIn * rate - fv.gradientOffset;
+        float span = tOut - tIn;
+        float tv = exponentialOpticalDepth(fv.density, fv.falloff, height, span * rate, span * len);
+        addMedium(tv, fv.colourMode, fv.colour, wSky, wOwn);
+        tau += tv;
+    }
+
+    for (int k = 0; k < frame.emitterCount; ++k) {
+        EmitterGpu em = emitters[k];
+        wOwn += em.colour * froxelEmitterIntegral(em.position, em.intensity, em.attenuation, o, d);
+    }
+
+    float visibility = 1.0;
+    vec3 p = o + froxel.jitter * d;
+    if (froxel.sceneShadows > 0.5) visibility *= sceneShadowVisibility(p, vec3(0.0));
+    if (froxel.cloudShadows > 0.5) visibility *= cloudShadowVisibility(p);
+
+    tau = min(tau, kMaxOpticalDepth);
+    imageStore(uMedium, id, vec4(wSky, tau));
+    imageStore(uLight, id, vec4(min(wOwn, vec3(frame.radianceCap)), visibility));
+}
