@@ -22,6 +22,11 @@
 //     ratios (marched / analytic), and the largest
 //     per-pixel difference between the two frames relative to the pixel
 //     (max over channels |L_analytic - L_marched| / max(L_marched, 1e-3)).
+//   FogAnalyticVsVolumetric/slices/width: the frame's fog drawn analytically
+//     (global fog, volume and emitter passes) and volumetrically (the froxel
+//     inject, integrate and apply passes; FogMode::Volumetric with `slices`
+//     depth slices), shadows on, side by side in one run: each pass's wall
+//     time [ms] and the ratio volumetric / analytic.
 //   CloudsReferenceVsAmortised/W/H: the cloud layer's pass, the
 //     full-resolution reference against CloudQuality::Amortised (4 x 4
 //     blocks, still view, and its reset frame) side by side in one run, at
@@ -136,6 +141,9 @@ void DefaultScene720p(benchmark::State& state) {
         sum.cloudShadow += t.cloudShadow;
         sum.clouds += t.clouds;
         sum.shadowMap += t.shadowMap;
+        sum.froxelInject += t.froxelInject;
+        sum.froxelIntegrate += t.froxelIntegrate;
+        sum.froxelApply += t.froxelApply;
     };
     double wall = 0.0;
     for (auto _ : state) {
@@ -154,6 +162,7 @@ void DefaultScene720p(benchmark::State& state) {
         state.counters[p + "transp"] = t.transparent / n;
         state.counters[p + "particles"] = t.particles / n;
         state.counters[p + "shadowMap"] = t.shadowMap / n;
+        state.counters[p + "froxels"] = (t.froxelInject + t.froxelIntegrate + t.froxelApply) / n;
         state.counters[p + "total"] = t.total() / n;
     };
     report("q_", gpu);  // GL_TIME_ELAPSED queries [ms]
@@ -196,6 +205,54 @@ void ShadowMaps(benchmark::State& state) {
     state.counters["w_others"] = sum.sky / n;
     state.counters["frame_ms"] = wall / n;
 }
+void FogAnalyticVsVolumetric(benchmark::State& state) {
+    Setup& s = *setup();
+    if (!s.error.empty()) {
+        state.SkipWithError(s.error.c_str());
+        return;
+    }
+    FrameDesc frame;
+    frame.width = int(state.range(1));
+    frame.height = frame.width * 9 / 16;
+    frame.gpuTimers = true;
+    frame.froxels.slices = int(state.range(0));
+    double fog = 0.0, volumes = 0.0, emitters = 0.0, inject = 0.0, integrate = 0.0, apply = 0.0;
+    for (auto _ : state) {
+        frame.fogMode = aerial::renderer::FogMode::Analytic;
+        timedFrame(s, s.state, frame);
+        const aerial::renderer::PassTimes& a = s.renderer->stats().wallMilliseconds;
+        fog += a.globalFog;
+        volumes += a.volumes;
+        emitters += a.emitters;
+        frame.fogMode = aerial::renderer::FogMode::Volumetric;
+        timedFrame(s, s.state, frame);
+        const aerial::renderer::PassTimes& v = s.renderer->stats().wallMilliseconds;
+        inject += v.froxelInject;
+        integrate += v.froxelIntegrate;
+        apply += v.froxelApply;
+    }
+    const double n = double(state.iterations());
+    const double analytic = (fog + volumes + emitters) / n, volumetric = (inject + integrate + apply) / n;
+    state.counters["w_fog"] = fog / n;
+    state.counters["w_volumes"] = volumes / n;
+    state.counters["w_emitters"] = emitters / n;
+    state.counters["w_inject"] = inject / n;
+    state.counters["w_integrate"] = integrate / n;
+    state.counters["w_apply"] = apply / n;
+    state.counters["analytic_ms"] = analytic;
+    state.counters["volumetric_ms"] = volumetric;
+    state.counters["ratio"] = analytic > 0.0 ? volumetric / analytic : 0.0;
+    const aerial::renderer::FroxelStats& g = s.renderer->stats().froxels;
+    state.counters["froxels"] = double(g.width) * g.height * g.slices;
+}
+BENCHMARK(FogAnalyticVsVolumetric)
+    ->ArgNames({"slices", "width"})
+    ->Args({64, 1280})
+    ->Args({128, 1280})
+    ->Args({64, 320})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(4);
+
 BENCHMARK(ShadowMaps)
     ->ArgNames({"res", "width"})
     ->Args({0, 1280})

@@ -14,7 +14,8 @@
 //                segment (emitters.glsl's closed form)
 //   V            visibility of the casting light (sun, or the moon when
 //                brighter) at the sample point z(k + jitter)/N: the cascaded
-//                shadow maps x the cloud shadow map (1 where they are off)
+//                shadow maps (one filtered comparison) x the cloud shadow
+//                map (1 where they are off)
 // Output: image 0 = (W_sky, tau), image 1 = (W_own, V), RGBA32F, one texel
 // per froxel (x, y, slice).
 #include "common/frame.glsl"
@@ -102,6 +103,20 @@ float froxelEmitterIntegral(vec3 l, float i, float a, vec3 o, vec3 d) {
     return (y < x) ? i * len * atanOverX / x : i * (kHalfPi - atan(x / y)) / k;
 }
 
+/// Visibility of the casting light at p from the shadow maps: one
+/// hardware-filtered comparison (2 x 2 texels) in the cascade of p's view
+/// depth, none beyond the last (a froxel is wider than the 3 x 3 PCF kernel
+/// of sceneShadowVisibility, which costs nine).
+float froxelShadowVisibility(vec3 p) {
+    float depth = dot(p - frame.eye, frame.forward);
+    int last = shadow.cascadeCount - 1;
+    if (!(depth < shadow.splitM[last])) return 1.0;
+    int k = 0;
+    while (k < last && depth > shadow.splitM[k]) ++k;
+    vec3 s = (shadow.shadowFromWorld[k] * vec4(p, 1.0)).xyz;
+    return texture(uShadowMap, vec4(s.xy, float(k), clamp(s.z, 0.0, 1.0)));
+}
+
 void main() {
     ivec3 id = ivec3(gl_GlobalInvocationID);
     if (any(greaterThanEqual(id, froxel.gridSize))) return;
@@ -142,7 +157,7 @@ void main() {
 
     float visibility = 1.0;
     vec3 p = o + froxel.jitter * d;
-    if (froxel.sceneShadows > 0.5) visibility *= sceneShadowVisibility(p, vec3(0.0));
+    if (froxel.sceneShadows > 0.5) visibility *= froxelShadowVisibility(p);
     if (froxel.cloudShadows > 0.5) visibility *= cloudShadowVisibility(p);
 
     tau = min(tau, kMaxOpticalDepth);

@@ -39,7 +39,7 @@
 // the goldens hold): volumetric draws the global fog, the volumes and the
 // emitters' lit fog through the renderer's froxel grid, where the shadows
 // (scene and clouds) cut light shafts (FogMode::Volumetric);
-// --froxel-slices N (16..256, default 64) its depth slices.
+// --froxel-slices N (16..256, default 128) its depth slices.
 //
 // --scene FILE.gltf|.glb renders a glTF 2.0 scene (renderer/gltf.hpp)
 // instead of the built-in one; a bad or unsupported file is exit 1 with the
@@ -110,7 +110,7 @@ struct RenderOptions {
     bool floatTarget = false;
     std::string shadows = "on";  // on | off
     std::string fog = "analytic";  // analytic | volumetric
-    int froxelSlices = 64;
+    int froxelSlices = 128;
     bool json = false;
 };
 

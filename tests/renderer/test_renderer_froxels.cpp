@@ -131,7 +131,7 @@ protected:
 TEST_F(Froxels, ConvergesToTheAnalyticFlatFog) {
     PresetState s = baseState();
     s.environment.fog = {0.004, 0.0, 0.0};
-    const Errors e = convergence("flat fog", makeCamera({0, 12, 0}, {0, 10, -100}, 1500.0, 1.1), s, 64);
+    const Errors e = convergence("flat fog", makeCamera({0, 12, 0}, {0, 10, -100}, 1500.0, 1.1), s, 128);
     EXPECT_LT(e.mean, 0.01);
     EXPECT_LT(e.p99, 0.05);
 }
@@ -139,7 +139,8 @@ TEST_F(Froxels, ConvergesToTheAnalyticFlatFog) {
 TEST_F(Froxels, ConvergesToTheAnalyticDenseGroundFog) {
     PresetState s = baseState();
     s.environment.fog = {0.05, 0.15, 0.0};
-    const Errors e = convergence("dense ground fog", makeCamera({0, 6, 0}, {0, 4, -100}, 1500.0, 1.1), s, 64);
+    const Errors e =
+        convergence("dense ground fog", makeCamera({0, 6, 0}, {0, 4, -100}, 1500.0, 1.1), s, 128);
     EXPECT_LT(e.mean, 0.01);
     EXPECT_LT(e.p99, 0.05);
 }
@@ -155,7 +156,7 @@ TEST_F(Froxels, ConvergesToTheAnalyticInsideAVolume) {
     v.falloff = 0.05;
     s.volumes.push_back(v);
     const Errors e =
-        convergence("inside a volume", makeCamera({0, 10, -20}, {10, 6, -100}, 1500.0, 1.1), s, 64);
+        convergence("inside a volume", makeCamera({0, 10, -20}, {10, 6, -100}, 1500.0, 1.1), s, 128);
     EXPECT_LT(e.mean, 0.01);
     EXPECT_LT(e.p99, 0.05);
 }
@@ -208,7 +209,7 @@ TEST_F(FroxelShaft, FogUnderARoofLacksTheSunsSingleScattering) {
         return sum;
     };
     std::printf("[ froxels ] shaft: green (analytic - volumetric) per slice count:");
-    for (int slices : {256, 128, 32, 64}) {  // the default last: its image is checked below
+    for (int slices : {256, 64, 32, 128}) {  // the default last: its image is checked below
         frame.froxels.slices = slices;
         renderer_->render(camera, s, frame);
         volumetric = renderer_->readColour();
@@ -239,7 +240,7 @@ TEST_F(FroxelShaft, FogUnderARoofLacksTheSunsSingleScattering) {
         worst = std::max(worst, std::abs(got - expected) / expected);
         EXPECT_LT(off, 1e-3 * expected);  // shadows off: the analytic fog
     }
-    EXPECT_LT(worst, 0.08);
+    EXPECT_LT(worst, 0.03);  // measured 0.2 % at 128 slices (2.8 % at 64: the edge slice)
 }
 
 TEST_F(Froxels, ExtremeMediaGiveFinitePixels) {
