@@ -63,6 +63,7 @@ void main() {
 #include "common/emitters.glsl"
 #include "common/clouds.glsl"
 #include "common/shadows.glsl"
+#include "common/froxel.glsl"
 layout(binding = 4) uniform sampler2D uLinearDepth;
 
 in vec2 vCorner;
@@ -104,9 +105,15 @@ void main() {
     vec3 albedo = clamp(vAlbedoOpacity.rgb, 0.0, 1.0);
     vec3 radiance = albedo * irradiance / (4.0 * kPi) + albedo * frame.skyAmbient / (2.0 * kPi) +
                     max(vEmissionFade.rgb, vec3(0.0));
-    vec4 globalFog = globalFogTowards(vWorld - frame.eye, vGlobalTau);
-    vec3 fogged = radiance * globalFog.a + globalFog.rgb;
-    fogged = fogged * vLocalFog.a + vLocalFog.rgb;
+    vec3 fogged;
+    if (froxelsActive()) {  // the volumetric fog's grid at the fragment (common/froxel.glsl)
+        vec4 fog = froxelFog(gl_FragCoord.xy, vSpriteDepth, farRayAtFragment(gl_FragCoord.xy));
+        fogged = radiance * fog.a + fog.rgb;
+    } else {
+        vec4 globalFog = globalFogTowards(vWorld - frame.eye, vGlobalTau);
+        fogged = radiance * globalFog.a + globalFog.rgb;
+        fogged = fogged * vLocalFog.a + vLocalFog.rgb;
+    }
     outColour = vec4(min(alpha * fogged, vec3(frame.radianceCap)), alpha);
 }
 #endif

@@ -14,6 +14,9 @@
 //      (T', S') trilinearly at its position in the bounds (the corner
 //      refinement Wenzel suggests).
 //   Fogged: L' = (L T_g + S_g) T' + S'.
+//   With the volumetric fog (froxelsActive()) both are replaced by the
+//   froxel grid's answer at the fragment (froxelFog, common/froxel.glsl),
+//   the same lookup as the opaque pixels: L' = L T + S.
 // Shading as scene.glsl (common/shading.glsl). With coverage alpha (opacity
 // x texture alpha) the diffuse and emitted light are scaled by alpha, the
 // specular reflection is not (glass reflects where it is clear).
@@ -40,6 +43,7 @@ void main() {
 #else
 #include "common/sky_table.glsl"
 #include "common/shading.glsl"
+#include "common/froxel.glsl"
 
 in float vGlobalTau;
 layout(location = 0) out vec4 outColour;
@@ -65,6 +69,12 @@ void main() {
     vec3 surface = alpha * (object.emission + diffuse) + specular;
     // Global fog: the optical depth interpolated from the vertices, the
     // colour with the per-pixel phase functions (as global_fog.glsl).
+    if (froxelsActive()) {
+        vec4 fog = froxelFog(gl_FragCoord.xy, dot(vWorld - frame.eye, frame.forward),
+                             farRayAtFragment(gl_FragCoord.xy));
+        outColour = vec4(min(surface * fog.a + alpha * fog.rgb, vec3(frame.radianceCap)), alpha);
+        return;
+    }
     vec4 globalFog = globalFogTowards(vWorld - frame.eye, vGlobalTau);
     vec3 fogged = surface * globalFog.a + alpha * globalFog.rgb;
     vec4 local = cornerFogAt(vWorld);

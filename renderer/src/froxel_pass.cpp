@@ -50,10 +50,6 @@ GLuint makeGridTexture(int width, int height, int depth) {
 
 void prepareFroxelResources(RendererResources& gpu, int width, int height, int slices) {
     RendererResources::Froxels& g = gpu.froxels;
-    if (g.block == 0) {
-        glCreateBuffers(1, &g.block);
-        glNamedBufferData(g.block, sizeof(FroxelBlock), nullptr, GL_DYNAMIC_DRAW);
-    }
     if (g.width == width && g.height == height && g.slices == slices) return;
     GLuint textures[5] = {g.medium, g.light, g.litSky, g.sky, g.own};
     glDeleteTextures(5, textures);

@@ -148,6 +148,8 @@ Renderer::Renderer(const RendererDesc& desc) : impl_(std::make_unique<Impl>()) {
     glNamedBufferData(s.cloudBuffer, sizeof(detail::CloudBlock), nullptr, GL_DYNAMIC_DRAW);
     glCreateBuffers(1, &s.shadowBuffer);
     glNamedBufferData(s.shadowBuffer, sizeof(detail::ShadowBlock), nullptr, GL_DYNAMIC_DRAW);
+    glCreateBuffers(1, &s.froxels.block);
+    glNamedBufferData(s.froxels.block, sizeof(detail::FroxelBlock), nullptr, GL_DYNAMIC_DRAW);
     glCreateBuffers(1, &s.objectBuffer);
     glNamedBufferData(s.objectBuffer, sizeof(detail::ObjectBlock), nullptr, GL_DYNAMIC_DRAW);
     detail::uploadEmitters(s, {});
@@ -300,6 +302,10 @@ void Renderer::Impl::render(const Camera& camera, const PresetState& state, cons
         detail::prepareShadowResources(*this, stats.shadowMap.resolution, stats.shadowMap.cascades);
     }
     glNamedBufferSubData(shadowBuffer, 0, sizeof shadowBlock, &shadowBlock);
+    // No volumetric fog until its inject pass says otherwise (the transparent
+    // and particle shaders test froxel.gridSize).
+    const detail::FroxelBlock noFroxels{};
+    glNamedBufferSubData(froxels.block, 0, sizeof noFroxels, &noFroxels);
 
     // The frame's bindings and the baseline state of render_pass.hpp.
     glBindBufferBase(GL_UNIFORM_BUFFER, detail::kFrameBinding, frameBuffer);
@@ -308,6 +314,7 @@ void Renderer::Impl::render(const Camera& camera, const PresetState& state, cons
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, detail::kEmitterBinding, emitterBuffer);
     glBindBufferBase(GL_UNIFORM_BUFFER, detail::kCloudBinding, cloudBuffer);
     glBindBufferBase(GL_UNIFORM_BUFFER, detail::kShadowBinding, shadowBuffer);
+    glBindBufferBase(GL_UNIFORM_BUFFER, detail::kFroxelBinding, froxels.block);
     const GLuint unitTextures[detail::kTextureUnitCount] = {
         sunSky.rayleigh, sunSky.mie,   moonSky.rayleigh, moonSky.mie,
         linearDepth,     whiteTexture, sunSky.multiple,  moonSky.multiple};

@@ -67,4 +67,48 @@ void froxelFogColours(vec3 v, out vec3 shadowable, out vec3 all) {
     all = capped;
 }
 
+#ifdef AERIAL_FRAGMENT_SHADER
+layout(binding = 11) uniform sampler3D uFroxelLitSky;  // (sum T f W_sky V, T)
+layout(binding = 12) uniform sampler3D uFroxelSky;     // (sum T f W_sky, 0)
+layout(binding = 13) uniform sampler3D uFroxelOwn;     // (sum T f W_own, 0)
+
+/// True when this frame's fog is volumetric (the FroxelBlock is zero otherwise).
+bool froxelsActive() { return froxel.gridSize.x > 0; }
+
+/// The volumetric fog between the eye and the point at view depth z [m] on
+/// the ray eye + t farRay of the pixel at fragCoord, ready to composite as
+/// fogInScatterTransmittance's answer (rgb = S, a = T: L <- L T + S): the
+/// integrated grid at the pixel's screen position and depth (trilinear),
+/// with the fog colours of the pixel's own direction,
+///   S = LitSky x L_cast(v) + Sky x (L_fog(v) - L_cast(v)) + Own,
+/// and beyond the grid's far depth the global height fog in closed form
+/// (unshadowed), behind the grid. The opaque pixels (froxel_apply.glsl),
+/// transparent meshes and particles all fog through it.
+vec4 froxelFog(vec2 fragCoord, float z, vec3 farRay) {
+    vec3 v = normalize(farRay);
+    float s = froxelSliceAt(z);
+    float slices = float(froxel.gridSize.z);
+    vec3 uvw = vec3(fragCoord / (froxel.pixelsPerFroxel * vec2(froxel.gridSize.xy)),
+                    (min(s, 1.0) * slices + 0.5) / (slices + 1.0));
+    vec4 litSky = texture(uFroxelLitSky, uvw);
+    vec3 sky = texture(uFroxelSky, uvw).rgb;
+    vec3 own = texture(uFroxelOwn, uvw).rgb;
+    vec3 shadowable, all;
+    froxelFogColours(v, shadowable, all);
+    vec3 inScatter = litSky.rgb * shadowable + sky * max(all - shadowable, vec3(0.0)) + own;
+    float transmittance = clamp(litSky.a, 0.0, 1.0);
+    if (z > froxel.farM) {  // the global fog behind the grid, in closed form
+        float start = froxel.farM / frame.farDistance;
+        vec3 o = frame.eye + start * farRay;
+        vec3 d = (z / frame.farDistance - start) * farRay;
+        float tau = exponentialOpticalDepth(froxel.globalFog * frame.fogDensity, frame.fogFalloff,
+                                            o.y - frame.fogBaseHeight, d.y, length(d));
+        vec4 rest = fogInScatterTransmittance(frame.fogColourMode, frame.fogColour, v, tau);
+        inScatter += transmittance * rest.rgb;
+        transmittance *= rest.a;
+    }
+    return vec4(min(inScatter, vec3(frame.radianceCap)), transmittance);
+}
+#endif
+
 #endif

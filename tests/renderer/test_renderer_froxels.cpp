@@ -243,6 +243,51 @@ TEST_F(FroxelShaft, FogUnderARoofLacksTheSunsSingleScattering) {
     EXPECT_LT(worst, 0.03);  // measured 0.2 % at 128 slices (2.8 % at 64: the edge slice)
 }
 
+TEST_F(Froxels, TransparentMeshesAndParticlesFogThroughTheGrid) {
+    // A 40 %-opaque emissive pane and two fog particles in front of the wall,
+    // inside dense fog and a volume: with the shadows off the volumetric
+    // frame matches the analytic one (which fogs them per vertex and from the
+    // CPU per object), here on the pane's and the particles' pixels too.
+    const Camera camera = makeCamera({0, 8, 0}, {0, 7, -100}, 1500.0, 1.1);
+    renderer::SceneDesc scene = wallScene(camera, 300.0);
+    renderer::SceneMesh pane =
+        renderer::makeQuadMesh({-20.0, 0.0, -45.0}, {40.0, 0.0, 0.0}, {0.0, 20.0, 0.0}, glm::dvec3(0.0));
+    pane.alphaMode = renderer::AlphaMode::Blend;
+    pane.opacity = 0.4;
+    pane.emission = {0.2, 0.9, 0.4};
+    scene.meshes.push_back(pane);
+    for (double x : {-12.0, 10.0}) {
+        renderer::FogSprite sprite;
+        sprite.position = {x, 6.0, -30.0};
+        sprite.radius = 5.0;
+        sprite.opacity = 0.8;
+        sprite.emission = {0.4, 0.3, 0.9};
+        scene.sprites.push_back(sprite);
+    }
+    renderer_->setScene(scene);
+    PresetState s = baseState();
+    s.environment.fog = {0.01, 0.05, 0.0};
+    FogVolume v;
+    v.position = {0.0, 6.0, -40.0};
+    v.halfExtents = {30.0, 8.0, 20.0};
+    v.density = 0.02;
+    s.volumes.push_back(v);
+    const renderer::Image unfogged = render(camera, s, FogMode::Analytic, 128, false);
+    const renderer::Image analytic = render(camera, s, FogMode::Analytic, 128);
+    EXPECT_EQ(renderer_->stats().transparentDrawn, 1);
+    EXPECT_EQ(renderer_->stats().spritesDrawn, 2);
+    const renderer::Image volumetric = render(camera, s, FogMode::Volumetric, 128);
+    const Errors e = compare(volumetric, analytic, unfogged);
+    std::printf("[ froxels ] pane and particles in fog: mean %.5f, p99 %.5f, max %.4f\n", e.mean, e.p99,
+                e.max);
+    // Measured without the box volume: mean 0.0036, p99 0.017; with it the
+    // p99 is its silhouette, where a froxel column straddling the hard edge
+    // blends the fog inside and outside over 8 px (inherent to the grid), and
+    // the analytic pane's own approximation (the CPU fog at its 8 corners).
+    EXPECT_LT(e.mean, 0.01);
+    EXPECT_LT(e.p99, 0.1);
+}
+
 TEST_F(Froxels, ExtremeMediaGiveFinitePixels) {
     // Fog, volumes and emitters far beyond any preset's range (and zero):
     // every froxel's sums stay finite, so no NaN or Inf reaches a pixel.
