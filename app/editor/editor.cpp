@@ -440,6 +440,30 @@ void Editor::drawStatusBar() {
                 view_.exposure.ev100(), exposure.mode == ExposureMode::Manual ? "manual " : "auto ",
                 exposure.compensationEv + view_.exposureEv, frames_.workMs, view_.renderWidth,
                 view_.renderHeight, sky_.solveMs);
+    if (ImGui::IsItemHovered() && frames_.lastPassesTimed) {
+        // The viewport's passes, timed every 30th rendered frame (glFinish around each).
+        const renderer::PassTimes& t = frames_.lastPasses;
+        const std::pair<const char*, double> passes[] = {{"shadow maps", t.shadowMap},
+                                                         {"cloud shadow", t.cloudShadow},
+                                                         {"scene", t.scene},
+                                                         {"sky", t.sky},
+                                                         {"clouds", t.clouds},
+                                                         {"global fog", t.globalFog},
+                                                         {"fog volumes", t.volumes},
+                                                         {"emitters", t.emitters},
+                                                         {"froxel inject", t.froxelInject},
+                                                         {"froxel integrate", t.froxelIntegrate},
+                                                         {"froxel apply", t.froxelApply},
+                                                         {"transparent", t.transparent},
+                                                         {"particles", t.particles}};
+        ImGui::BeginTooltip();
+        ImGui::Text("Viewport passes [ms] (%s fog)",
+                    view_.fogMode == renderer::FogMode::Volumetric ? "volumetric" : "analytic");
+        for (const auto& [name, ms] : passes)
+            if (ms > 0.0) ImGui::Text("  %-17s %7.2f", name, ms);
+        ImGui::Text("  %-17s %7.2f", "total", t.total());
+        ImGui::EndTooltip();
+    }
     if (export_.running()) {
         ImGui::SameLine();
         ImGui::SetNextItemWidth(160.0f);
@@ -500,15 +524,20 @@ void Editor::printBench() const {
         frames_.benchSolveMs.size(), passMedian([](const renderer::PassTimes& t) { return t.total(); }),
         frames_.benchPasses.size());
     std::printf(
-        "    scene %.2f  sky %.2f  clouds %.2f  cloud shadow %.2f  global fog %.2f  volumes %.2f  emitters %.2f  "
-        "transparent %.2f  particles %.2f\n",
+        "    scene %.2f  sky %.2f  clouds %.2f  cloud shadow %.2f  shadow maps %.2f  global fog %.2f  "
+        "volumes %.2f  "
+        "emitters %.2f  froxel inject %.2f  integrate %.2f  apply %.2f  transparent %.2f  particles %.2f\n",
         passMedian([](const renderer::PassTimes& t) { return t.scene; }),
         passMedian([](const renderer::PassTimes& t) { return t.sky; }),
         passMedian([](const renderer::PassTimes& t) { return t.clouds; }),
         passMedian([](const renderer::PassTimes& t) { return t.cloudShadow; }),
+        passMedian([](const renderer::PassTimes& t) { return t.shadowMap; }),
         passMedian([](const renderer::PassTimes& t) { return t.globalFog; }),
         passMedian([](const renderer::PassTimes& t) { return t.volumes; }),
         passMedian([](const renderer::PassTimes& t) { return t.emitters; }),
+        passMedian([](const renderer::PassTimes& t) { return t.froxelInject; }),
+        passMedian([](const renderer::PassTimes& t) { return t.froxelIntegrate; }),
+        passMedian([](const renderer::PassTimes& t) { return t.froxelApply; }),
         passMedian([](const renderer::PassTimes& t) { return t.transparent; }),
         passMedian([](const renderer::PassTimes& t) { return t.particles; }));
     std::fflush(stdout);

@@ -186,6 +186,12 @@ void Editor::declareActions() {
     toggle("pass_particles", "Fog particles", view_.passes.particles);
     toggle("pass_clouds", "Clouds", view_.passes.clouds);
     toggle("pass_shadows", "Sun shadows", view_.passes.shadows);
+    t.add("fog_volumetric", "Volumetric fog (light shafts)", "View")
+        .checkedWhen([this] { return view_.fogMode == renderer::FogMode::Volumetric; })
+        .does([this] {
+            view_.fogMode = view_.fogMode == renderer::FogMode::Volumetric ? renderer::FogMode::Analytic
+                                                                           : renderer::FogMode::Volumetric;
+        });
     const auto gizmoMode = [&t, this](const char* name, const char* label, int key, GizmoMode mode,
                                       bool separated = false) {
         Action& a = t.add(name, label, "View");

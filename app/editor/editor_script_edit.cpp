@@ -145,8 +145,8 @@ void Editor::declareEditScriptCommands() {
                    return true;
                }});
 
-    table.add({"place", 1, kAnyArgs, "place CITY", "set latitude, longitude and UTC offset from the city list",
-               [this](W w, E error) {
+    table.add({"place", 1, kAnyArgs, "place CITY",
+               "set latitude, longitude and UTC offset from the city list", [this](W w, E error) {
                    std::string name = w[1];
                    for (std::size_t i = 2; i < w.size(); ++i) name += " " + w[i];
                    const Place* place = findPlace(name);
@@ -434,16 +434,21 @@ void Editor::declareEditScriptCommands() {
                    view_.gizmoSpace = w[1] == "local" ? GizmoSpace::Local : GizmoSpace::World;
                    return true;
                }});
-    table.add({"view", 1, 2, "view NAME | view clouds|shadows on|off",
+    table.add({"view", 1, 2, "view NAME | view clouds|shadows on|off | view fog analytic|volumetric",
                "the OCIO view; or switch the view's cloud layer or sun shadows (View > Clouds, View > Sun "
-               "shadows)",
+               "shadows), or its fog mode (View > Volumetric fog)",
                [this](W w, E error) {
                    if (w.size() == 3) {
+                       // In the frame's signature: the next frame shows it.
+                       if (w[1] == "fog" && (w[2] == "analytic" || w[2] == "volumetric")) {
+                           view_.fogMode = w[2] == "volumetric" ? renderer::FogMode::Volumetric
+                                                                : renderer::FogMode::Analytic;
+                           return true;
+                       }
                        if ((w[1] != "clouds" && w[1] != "shadows") || (w[2] != "on" && w[2] != "off")) {
-                           error = "view: view clouds|shadows on|off";
+                           error = "view: view clouds|shadows on|off, or view fog analytic|volumetric";
                            return false;
                        }
-                       // In the frame's signature: the next frame shows it.
                        (w[1] == "clouds" ? view_.passes.clouds : view_.passes.shadows) = w[2] == "on";
                        return true;
                    }

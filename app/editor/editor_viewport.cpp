@@ -75,13 +75,13 @@ void Editor::renderViewport() {
     const CameraState& c = view_.camera.state();
     std::snprintf(
         signature, sizeof signature,
-        "%d %d %.17g %llu %llu %.17g %.17g %.17g %.17g %.17g %.17g %d%d%d%d%d%d%d%d%d%d %s %s %.17g %p",
+        "%d %d %.17g %llu %llu %.17g %.17g %.17g %.17g %.17g %.17g %d%d%d%d%d%d%d%d%d%d%d %s %s %.17g %p",
         width, height, playback_.timeHours, static_cast<unsigned long long>(doc_.revision()),
         static_cast<unsigned long long>(sky_.generation), c.target.x, c.target.y, c.target.z, c.distance,
         c.yaw, c.pitch + 1000.0 * c.verticalFovDeg, view_.passes.sky, view_.passes.scene,
         view_.passes.globalFog, view_.passes.volumes, view_.passes.emitters, view_.passes.transparent,
-        view_.passes.particles, view_.passes.clouds, view_.passes.shadows, view_.showStars,
-        view_.displayName.c_str(), view_.viewName.c_str(), view_.exposureEv,
+        view_.passes.particles, view_.passes.clouds, view_.passes.shadows, int(view_.fogMode),
+        view_.showStars, view_.displayName.c_str(), view_.viewName.c_str(), view_.exposureEv,
         static_cast<const void*>(view_.display.get()));
     const auto now = std::chrono::steady_clock::now();
     const double dt = view_.lastExposureStep.time_since_epoch().count() == 0
@@ -107,6 +107,7 @@ void Editor::renderViewport() {
     frame.width = width;
     frame.height = height;
     frame.passes = view_.passes;
+    frame.fogMode = view_.fogMode;  // View > Volumetric fog
     // Interactive clouds: a sixteenth of the pixels traced per frame, the
     // rest reprojected; the renderer forgets the history by itself when the
     // time, the camera or the clouds jump (scrubbing never smears).
@@ -116,11 +117,17 @@ void Editor::renderViewport() {
     view_.resetCloudHistory = false;
     // --bench: every 10th frame also measures the passes (glFinish around each).
     const bool timed = options_.benchFrames > 0 && frames_.frameIndex >= 3 && frames_.frameIndex % 10 == 0;
-    frame.gpuTimers = timed;
+    // Every 30th rendered frame is timed pass by pass for the status bar.
+    const bool sampled = ++frames_.renderedFrames % 30 == 2;
+    frame.gpuTimers = timed || sampled;
     frame.stars = view_.showStars;  // View > Stars
     view_.renderer->render(view_.camera.camera(view_.size.x / view_.size.y), sky_.state, frame);
     if (timed && view_.renderer->stats().timed)
         frames_.benchPasses.push_back(view_.renderer->stats().wallMilliseconds);
+    if (view_.renderer->stats().timed) {
+        frames_.lastPasses = view_.renderer->stats().wallMilliseconds;
+        frames_.lastPassesTimed = true;
+    }
     meterViewport();
     view_.exposure.adapt(exposure, dt);
     showViewport(width, height);
@@ -418,6 +425,7 @@ bool Editor::screenshot(const std::string& path, std::string& error) {
     frame.width = width;
     frame.height = height;
     frame.passes = view_.passes;
+    frame.fogMode = view_.fogMode;
     frame.stars = view_.showStars;  // View > Stars
     view_.renderer->render(view_.camera.camera(double(width) / double(height)), sky_.state, frame);
     const renderer::Image image = view_.renderer->readColour();

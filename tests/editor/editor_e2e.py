@@ -491,6 +491,8 @@ view clouds off
 view clouds on
 view shadows off
 view shadows on
+view fog volumetric
+view fog analytic
 quit
 """.format(fixture=fixture, clear=clear, before=before, after=after)))
     added = re.search(r"added cloud volume 0 at (\S+) (\S+) (\S+)", p.stdout)
