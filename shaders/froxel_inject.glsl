@@ -16,8 +16,14 @@
 //                brighter) at the sample point z(k + jitter)/N: the cascaded
 //                shadow maps (one filtered comparison) x the cloud shadow
 //                map (1 where they are off)
+// Temporal (FroxelSettings::temporal): the sample point moves through the
+// slice from frame to frame (froxel.jitter) and V is blended with the
+// previous frame's V at the same world point (reprojected into the previous
+// grid: its clip transform, eye and forward axis), V = mix(V_prev, V,
+// historyWeight); the renderer sets the weight to 1 (no history) when the
+// time, the camera or the grid jumps (froxel_pass.cpp), so nothing ghosts.
 // Output: image 0 = (W_sky, tau), image 1 = (W_own, V), RGBA32F, one texel
-// per froxel (x, y, slice).
+// per froxel (x, y, slice); image 2 = V (R32F), the next frame's history.
 #include "common/frame.glsl"
 #include "common/atmosphere.glsl"
 #include "common/froxel.glsl"
@@ -29,6 +35,8 @@ layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
 layout(rgba32f, binding = 0) uniform writeonly image3D uMedium;  // (W_sky, tau)
 layout(rgba32f, binding = 1) uniform writeonly image3D uLight;   // (W_own, V)
+layout(r32f, binding = 2) uniform writeonly image3D uHistoryOut;  // V for the next frame
+layout(binding = 15) uniform sampler3D uHistory;                  // the previous frame's V
 
 /// One fog volume as VolumeBlock (common/volume.glsl), packed in an array.
 struct FroxelVolume {
@@ -159,6 +167,20 @@ void main() {
     vec3 p = o + froxel.jitter * d;
     if (froxel.sceneShadows > 0.5) visibility *= froxelShadowVisibility(p);
     if (froxel.cloudShadows > 0.5) visibility *= cloudShadowVisibility(p);
+
+    if (froxel.historyWeight < 1.0) {  // the previous frame's V at this world point
+        vec4 clip = froxel.previousClipFromWorld * vec4(p, 1.0);
+        if (clip.w > 0.0) {
+            vec2 pixel = (clip.xy / clip.w * 0.5 + 0.5) * frame.viewportSize;
+            vec3 uvw = vec3(pixel / (froxel.pixelsPerFroxel * vec2(froxel.gridSize.xy)),
+                            froxelSliceAt(dot(p - froxel.previousEye, froxel.previousForward)));
+            if (all(greaterThanEqual(uvw, vec3(0.0))) && all(lessThanEqual(uvw, vec3(1.0)))) {
+                float previous = texture(uHistory, uvw).r;
+                if (previous >= 0.0 && previous <= 1.0) visibility = mix(previous, visibility, froxel.historyWeight);
+            }
+        }
+    }
+    imageStore(uHistoryOut, id, vec4(visibility));
 
     tau = min(tau, kMaxOpticalDepth);
     imageStore(uMedium, id, vec4(wSky, tau));

@@ -156,6 +156,7 @@ struct ViewportState {
     /// The next frame forgets the amortised clouds' history (a preset was
     /// opened: nothing of the old one may show).
     bool resetCloudHistory = true;
+    unsigned long long froxelRevision = 0;  ///< document revision of the volumetric fog's history
     double renderMs = 0.0;
 
     CameraController camera;

@@ -94,8 +94,11 @@ void Editor::renderViewport() {
     constexpr int kCloudBlock = 4, kCloudConvergeFrames = kCloudBlock * kCloudBlock;
     const bool same = view_.displayTexture && view_.renderWidth == width && view_.renderHeight == height &&
                       view_.lastRenderSignature == signature;
+    // So does the volumetric fog's temporal visibility (~10 frames).
+    constexpr int kFroxelSettleFrames = 10;
     const bool converging =
-        view_.renderer->stats().cloudHistory.amortised && view_.stillFrames < kCloudConvergeFrames;
+        (view_.renderer->stats().cloudHistory.amortised && view_.stillFrames < kCloudConvergeFrames) ||
+        (view_.renderer->stats().froxels.drawn && view_.stillFrames < kFroxelSettleFrames);
     if (same && !converging && options_.benchFrames == 0) {
         // The same frame; only an adapting exposure shows it again.
         if (view_.exposure.adapt(exposure, dt)) showViewport(width, height);
@@ -114,6 +117,12 @@ void Editor::renderViewport() {
     frame.cloudQuality = renderer::CloudQuality::Amortised;
     frame.cloudAmortisedBlock = kCloudBlock;
     frame.cloudResetHistory = view_.resetCloudHistory;
+    // The volumetric fog accumulates its shafts' visibility over frames the
+    // same way (FroxelSettings::temporal), forgotten at the same moments.
+    // An edit (a new document revision) may move what casts into the fog.
+    frame.froxels.temporal = true;
+    frame.froxels.resetHistory = view_.resetCloudHistory || doc_.revision() != view_.froxelRevision;
+    view_.froxelRevision = doc_.revision();
     view_.resetCloudHistory = false;
     // --bench: every 10th frame also measures the passes (glFinish around each).
     const bool timed = options_.benchFrames > 0 && frames_.frameIndex >= 3 && frames_.frameIndex % 10 == 0;

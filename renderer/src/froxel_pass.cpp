@@ -27,6 +27,8 @@
 
 #include <aerial/evaluate.hpp>
 
+#include <glm/geometric.hpp>
+
 #include <algorithm>
 #include <cmath>
 
@@ -51,8 +53,17 @@ GLuint makeGridTexture(int width, int height, int depth) {
 void prepareFroxelResources(RendererResources& gpu, int width, int height, int slices) {
     RendererResources::Froxels& g = gpu.froxels;
     if (g.width == width && g.height == height && g.slices == slices) return;
-    GLuint textures[5] = {g.medium, g.light, g.litSky, g.sky, g.own};
-    glDeleteTextures(5, textures);
+    GLuint textures[7] = {g.medium, g.light, g.litSky, g.sky, g.own, g.history[0], g.history[1]};
+    glDeleteTextures(7, textures);
+    for (GLuint& h : g.history) {
+        glCreateTextures(GL_TEXTURE_3D, 1, &h);
+        glTextureStorage3D(h, 1, GL_R32F, width, height, slices);
+        glTextureParameteri(h, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTextureParameteri(h, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
+            glTextureParameteri(h, wrap, GL_CLAMP_TO_EDGE);
+    }
+    g.valid = false;
     g.medium = makeGridTexture(width, height, slices);
     g.light = makeGridTexture(width, height, slices);
     g.litSky = makeGridTexture(width, height, slices + 1);
@@ -96,8 +107,37 @@ void injectDraw(FrameContext& f) {
     FroxelBlock block =
         makeFroxelBlock(f.desc, int(f.block.viewportSize[0]), int(f.block.viewportSize[1]),
                         f.view.farDistance, f.state, f.shadowBlock, f.cloudBlock, int(blocks.size()));
-    f.froxelBlock = block;
     prepareFroxelResources(gpu, block.gridSize[0], block.gridSize[1], block.gridSize[2]);
+    RendererResources::Froxels& g = gpu.froxels;
+    FroxelStats& stats = f.stats.froxels;
+    const FroxelSettings& settings = f.desc.froxels;
+    if (settings.temporal) {
+        // Keep the history unless something jumped (renderer.hpp, FroxelSettings::temporal).
+        double timeStep = std::fabs(f.state.timeHours - g.timeHours);
+        timeStep = std::isfinite(timeStep) ? std::min(timeStep, std::fabs(24.0 - timeStep)) : 1e30;  // 24 h wrap
+        const double move = glm::length(f.view.eye - g.eye);
+        const double turn = std::acos(std::clamp(glm::dot(f.view.forward, g.forward), -1.0, 1.0));
+        const char* reason = "";
+        if (!g.valid)
+            reason = "first frame";
+        else if (settings.resetHistory)
+            reason = "requested";
+        else if (!(timeStep <= settings.historyMaxTimeStepHours))
+            reason = "time jump";
+        else if (!(move <= settings.historyMaxMoveM) || !(turn <= settings.historyMaxTurnRad))
+            reason = "camera jump";
+        g.framesSinceReset = *reason ? 0 : g.framesSinceReset + 1;
+        // A running mean over the frames since the reset, then an exponential
+        // one over the last ~10 (the jitter's golden-ratio steps fill the slice).
+        block.historyWeight = float(std::max(1.0 / double(g.framesSinceReset + 1), 0.1));
+        block.jitter = float(std::fmod(0.5 + 0.6180339887498949 * g.framesSinceReset, 1.0));
+        block.previousClipFromWorld = toMat4(g.clipFromWorld);
+        block.previousEye = toVec3(g.eye);
+        block.previousForward = toVec3(g.forward);
+        stats.historyUsed = !*reason;
+        stats.resetReason = reason;
+    }
+    f.froxelBlock = block;
     glNamedBufferSubData(gpu.froxels.block, 0, sizeof block, &block);
     uploadFroxelVolumes(gpu, blocks);
     glBindBufferBase(GL_UNIFORM_BUFFER, kFroxelBinding, gpu.froxels.block);
@@ -106,11 +146,22 @@ void injectDraw(FrameContext& f) {
     glUseProgram(gpu.shaders.program(Pass::FroxelInject));
     glBindImageTexture(0, gpu.froxels.medium, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glBindImageTexture(1, gpu.froxels.light, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    const int next = 1 - g.current;
+    glBindImageTexture(2, g.history[next], 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
+    glBindTextureUnit(kFroxelHistoryUnit, g.history[g.current]);
+    glBindSampler(kFroxelHistoryUnit, 0);
     glDispatchCompute(GLuint((block.gridSize[0] + 7) / 8), GLuint((block.gridSize[1] + 7) / 8),
                       GLuint(block.gridSize[2]));
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+    glBindTextureUnit(kFroxelHistoryUnit, 0);
+    // This frame's visibility is the next frame's history.
+    g.current = next;
+    g.valid = settings.temporal;
+    g.clipFromWorld = f.view.clipFromWorld;
+    g.eye = f.view.eye;
+    g.forward = f.view.forward;
+    g.timeHours = f.state.timeHours;
 
-    FroxelStats& stats = f.stats.froxels;
     stats.drawn = true;
     stats.width = block.gridSize[0];
     stats.height = block.gridSize[1];
@@ -187,8 +238,8 @@ FroxelBlock makeFroxelBlock(const FrameDesc& frame, int width, int height, doubl
 
 void destroyFroxelResources(RendererResources& gpu) {
     RendererResources::Froxels& g = gpu.froxels;
-    GLuint textures[5] = {g.medium, g.light, g.litSky, g.sky, g.own};
-    glDeleteTextures(5, textures);
+    GLuint textures[7] = {g.medium, g.light, g.litSky, g.sky, g.own, g.history[0], g.history[1]};
+    glDeleteTextures(7, textures);
     glDeleteBuffers(1, &g.block);
     glDeleteBuffers(1, &g.volumes);
     g = RendererResources::Froxels{};

@@ -321,7 +321,16 @@ struct FroxelBlock {
     float cloudShadows = 0.0f;
     float jitter = 0.5f;
     float globalFog = 0.0f;  ///< 1: the global height fog is part of it (RenderPasses::globalFog)
-    float padFroxel[3] = {};
+    /// Temporal: the weight of this frame's visibility against the history
+    /// (1: none read), and where the history's grid was: the previous
+    /// frame's clip transform, eye and forward axis.
+    float historyWeight = 1.0f;
+    float padFroxel[2] = {};
+    Mat4 previousClipFromWorld;
+    Vec3 previousEye;
+    float padPreviousEye = 0.0f;
+    Vec3 previousForward;
+    float padPreviousForward = 0.0f;
 };
 static_assert(offsetof(FroxelBlock, volumeCount) == 12);
 static_assert(offsetof(FroxelBlock, pixelsPerFroxel) == 16);
@@ -329,7 +338,11 @@ static_assert(offsetof(FroxelBlock, logScale) == 28);
 static_assert(offsetof(FroxelBlock, castIsMoon) == 32);
 static_assert(offsetof(FroxelBlock, jitter) == 44);
 static_assert(offsetof(FroxelBlock, globalFog) == 48);
-static_assert(sizeof(FroxelBlock) == 64);
+static_assert(offsetof(FroxelBlock, historyWeight) == 52);
+static_assert(offsetof(FroxelBlock, previousClipFromWorld) == 64);
+static_assert(offsetof(FroxelBlock, previousEye) == 128);
+static_assert(offsetof(FroxelBlock, previousForward) == 144);
+static_assert(sizeof(FroxelBlock) == 160);
 
 /// shaders/particles.glsl, per-instance vertex attributes (locations 0..3).
 struct SpriteInstance {
@@ -385,5 +398,7 @@ constexpr unsigned kShadowMapUnit = 14;
 constexpr unsigned kFroxelLitSkyUnit = 11;
 constexpr unsigned kFroxelSkyUnit = 12;
 constexpr unsigned kFroxelOwnUnit = 13;
+/// The previous frame's froxel visibility (froxel_inject.glsl, compute).
+constexpr unsigned kFroxelHistoryUnit = 15;
 
 }  // namespace aerial::renderer::detail

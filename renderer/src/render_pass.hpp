@@ -99,6 +99,15 @@ struct RendererResources {
         GLuint litSky = 0, sky = 0, own = 0;
         GLuint block = 0, volumes = 0;
         GLsizeiptr volumeCapacity = 0;  ///< [bytes]
+        /// Temporal: the visibility of the last two frames (R32F, ping-pong),
+        /// and what the last frame was.
+        GLuint history[2] = {};
+        int current = 0;      ///< history[current] holds the last frame's
+        bool valid = false;   ///< it holds a frame to reuse
+        int framesSinceReset = 0;
+        glm::dmat4 clipFromWorld{1.0};
+        glm::dvec3 eye{0.0}, forward{0.0, 0.0, -1.0};
+        double timeHours = 0.0;
     } froxels;
 };
 

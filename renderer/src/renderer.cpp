@@ -359,6 +359,7 @@ void Renderer::Impl::render(const Camera& camera, const PresetState& state, cons
     for (const detail::RenderPass* pass : kFramePasses) timer.run(*pass, frame);
     timer.endFrame(stats);
     if (!frame.cloudsDrawn()) detail::forgetCloudHistory(*this);  // the next amortised frame starts afresh
+    if (!stats.froxels.drawn) froxels.valid = false;              // likewise the volumetric fog's
 }
 
 ShaderReloadResult Renderer::reloadShaders() { return reloadShaders(impl_->desc.shaderDirectory); }

@@ -27,9 +27,14 @@ layout(std140, binding = 6) uniform FroxelBlock {
     float cloudShadows;    // 1: the cloud shadow map dims it (CloudBlock.shadowActive)
     float jitter;          // 0..1: where in each slice the light is sampled (0.5: its middle)
     float globalFog;       // 1: the global height fog is part of it
+    float historyWeight;   // temporal: weight of this frame's visibility (1: no history)
     float padFroxel0;
     float padFroxel1;
-    float padFroxel2;
+    mat4 previousClipFromWorld;  // the history's view
+    vec3 previousEye;
+    float padPreviousEye;
+    vec3 previousForward;
+    float padPreviousForward;
 } froxel;
 
 /// View depth [m] of slice coordinate s (0..1).

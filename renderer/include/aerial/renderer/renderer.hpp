@@ -215,8 +215,25 @@ struct FroxelSettings {
     /// ~(z + z0) ln(1 + farM / z0) / slices thick at view depth z. Default 4 m.
     double nearScaleM = 4.0;
     /// Where in each slice the casting light's visibility is sampled, 0..1
-    /// (0.5: the middle; the temporal jitter moves it).
+    /// (0.5: the middle). Unused with `temporal`, whose jitter moves it.
     double jitter = 0.5;
+    /// Temporal accumulation (the editor's viewport; off by default, so a
+    /// single frame is deterministic): the sample point steps through the
+    /// slice from frame to frame (golden-ratio sequence) and the visibility
+    /// is averaged with the previous frames' at the same world point
+    /// (reprojected), the last ~10 frames weighted, so shaft edges settle on
+    /// the slice's mean instead of shimmering. The history is forgotten (the
+    /// frame is exactly the non-temporal one with that frame's jitter) when
+    /// resetHistory is set, on the first frame, when the grid's size
+    /// changes, and when since the previous frame the time moved by more than
+    /// historyMaxTimeStepHours [h] (default 2 min), the eye by more than
+    /// historyMaxMoveM [m] (default 25) or the view turned by more than
+    /// historyMaxTurnRad (default 0.26, 15 deg).
+    bool temporal = false;
+    bool resetHistory = false;
+    double historyMaxTimeStepHours = 2.0 / 60.0;
+    double historyMaxMoveM = 25.0;
+    double historyMaxTurnRad = 0.26;
 };
 
 struct FrameDesc {
@@ -352,6 +369,11 @@ struct FroxelStats {
     int width = 0, height = 0, slices = 0;  ///< the grid [froxels]
     int volumes = 0;                        ///< fog volumes injected
     bool shadowed = false;                  ///< shadow maps or cloud shadows dimmed the light
+    bool historyUsed = false;  ///< FroxelSettings::temporal: the previous frames' visibility was blended in
+    /// Why the history was forgotten ("" when used or not temporal): "first
+    /// frame" (also after the grid's size changed), "requested", "time
+    /// jump", "camera jump".
+    const char* resetReason = "";
 };
 
 struct RenderStats {
