@@ -30,6 +30,7 @@
 #include "common/emitters.glsl"
 #include "common/shadows.glsl"
 #include "common/clouds.glsl"
+#include "common/unit_shape.glsl"
 
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
@@ -56,34 +57,6 @@ struct FroxelVolume {
 };
 layout(std430, binding = 3) readonly buffer Volumes { FroxelVolume volumes[]; };
 
-/// Entry and exit parameters of o + t d against the unit cube (shape 0) or
-/// sphere (1) in object space; tNear > tFar when missed (volume.glsl).
-vec2 froxelUnitShape(float shape, vec3 o, vec3 d) {
-    if (shape < 0.5) {
-        float tNear = -3.0e38;
-        float tFar = 3.0e38;
-        for (int i = 0; i < 3; ++i) {
-            if (abs(d[i]) > 1e-30) {
-                float t1 = (-1.0 - o[i]) / d[i];
-                float t2 = (1.0 - o[i]) / d[i];
-                tNear = max(tNear, min(t1, t2));
-                tFar = min(tFar, max(t1, t2));
-            } else if (abs(o[i]) > 1.0) {
-                return vec2(1.0, 0.0);
-            }
-        }
-        return vec2(tNear, tFar);
-    }
-    float a = dot(d, d);
-    if (!(a > 0.0)) return vec2(1.0, 0.0);
-    float tMid = -dot(o, d) / a;
-    vec3 perp = o + tMid * d;
-    float h = 1.0 - dot(perp, perp);
-    if (!(h > 0.0)) return vec2(1.0, 0.0);
-    float halfChord = sqrt(h / a);
-    return vec2(tMid - halfChord, tMid + halfChord);
-}
-
 /// Adds a medium of optical depth tau and colour mode/colour to the sums.
 void addMedium(float tau, float mode, vec3 colour, inout vec3 wSky, inout vec3 wOwn) {
     if (mode > 1.5) {
@@ -91,24 +64,6 @@ void addMedium(float tau, float mode, vec3 colour, inout vec3 wSky, inout vec3 w
     } else {
         wSky += tau * (mode > 0.5 ? colour : vec3(1.0));
     }
-}
-
-/// Integral of i / (1 + a |l - p|^2) along o -> o + d (emitters.glsl).
-float froxelEmitterIntegral(vec3 l, float i, float a, vec3 o, vec3 d) {
-    float len = length(d);
-    if (!(i > 0.0) || !(len > 0.0)) return 0.0;
-    a = max(a, 0.0);
-    vec3 n = d / len;
-    vec3 c = l - o;
-    vec3 e = c - d;
-    vec3 cr = cross(c, n);
-    float k = sqrt(a) * sqrt(1.0 + a * dot(cr, cr));
-    float x = 1.0 + a * dot(c, e);
-    float y = len * k;
-    const float kHalfPi = 1.57079632679490;
-    float z = y / x;
-    float atanOverX = z > 1e-4 ? atan(z) / z : 1.0 - z * z / 3.0;
-    return (y < x) ? i * len * atanOverX / x : i * (kHalfPi - atan(x / y)) / k;
 }
 
 /// Visibility of the casting light at p from the shadow maps: one
@@ -146,7 +101,7 @@ void main() {
                        dot(fv.objectFromWorldRow2, rel));
         vec3 dd = vec3(dot(fv.objectFromWorldRow0, d), dot(fv.objectFromWorldRow1, d),
                        dot(fv.objectFromWorldRow2, d));
-        vec2 hit = froxelUnitShape(fv.shape, oo, dd);
+        vec2 hit = unitShapeHit(fv.shape, oo, dd);
         float tIn = max(hit.x, 0.0);
         float tOut = min(hit.y, 1.0);
         if (!(tIn < tOut)) continue;
@@ -160,7 +115,7 @@ void main() {
 
     for (int k = 0; k < frame.emitterCount; ++k) {
         EmitterGpu em = emitters[k];
-        wOwn += em.colour * froxelEmitterIntegral(em.position, em.intensity, em.attenuation, o, d);
+        wOwn += em.colour * emitterIntegral(em.position, em.intensity, em.attenuation, o, d);
     }
 
     float visibility = 1.0;

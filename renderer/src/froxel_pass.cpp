@@ -39,10 +39,10 @@ double finiteClamp(double v, double lo, double hi, double fallback) {
     return std::isfinite(v) ? std::clamp(v, lo, hi) : fallback;
 }
 
-GLuint makeGridTexture(int width, int height, int depth) {
+GLuint makeGridTexture(int width, int height, int depth, GLenum format = GL_RGBA32F) {
     GLuint texture = 0;
     glCreateTextures(GL_TEXTURE_3D, 1, &texture);
-    glTextureStorage3D(texture, 1, GL_RGBA32F, width, height, depth);
+    glTextureStorage3D(texture, 1, format, width, height, depth);
     glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
@@ -55,14 +55,7 @@ void prepareFroxelResources(RendererResources& gpu, int width, int height, int s
     if (g.width == width && g.height == height && g.slices == slices) return;
     GLuint textures[7] = {g.medium, g.light, g.litSky, g.sky, g.own, g.history[0], g.history[1]};
     glDeleteTextures(7, textures);
-    for (GLuint& h : g.history) {
-        glCreateTextures(GL_TEXTURE_3D, 1, &h);
-        glTextureStorage3D(h, 1, GL_R32F, width, height, slices);
-        glTextureParameteri(h, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-        glTextureParameteri(h, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
-            glTextureParameteri(h, wrap, GL_CLAMP_TO_EDGE);
-    }
+    for (GLuint& h : g.history) h = makeGridTexture(width, height, slices, GL_R32F);
     g.valid = false;
     g.medium = makeGridTexture(width, height, slices);
     g.light = makeGridTexture(width, height, slices);
@@ -114,7 +107,8 @@ void injectDraw(FrameContext& f) {
     if (settings.temporal) {
         // Keep the history unless something jumped (renderer.hpp, FroxelSettings::temporal).
         double timeStep = std::fabs(f.state.timeHours - g.timeHours);
-        timeStep = std::isfinite(timeStep) ? std::min(timeStep, std::fabs(24.0 - timeStep)) : 1e30;  // 24 h wrap
+        timeStep =
+            std::isfinite(timeStep) ? std::min(timeStep, std::fabs(24.0 - timeStep)) : 1e30;  // 24 h wrap
         const double move = glm::length(f.view.eye - g.eye);
         const double turn = std::acos(std::clamp(glm::dot(f.view.forward, g.forward), -1.0, 1.0));
         const char* reason = "";

@@ -97,13 +97,15 @@ GLuint compileStage(GLenum stage, const std::string& source, std::string& log) {
     return shader;
 }
 
-GLuint linkProgram(GLuint vertexStage, GLuint fragmentStage, std::string& log) {
+namespace {
+
+/// Links the compiled stages into a program and deletes them; 0 with the
+/// link log appended to `log` on failure.
+GLuint linkStages(std::initializer_list<GLuint> stages, std::string& log) {
     const GLuint program = glCreateProgram();
-    glAttachShader(program, vertexStage);
-    glAttachShader(program, fragmentStage);
+    for (GLuint stage : stages) glAttachShader(program, stage);
     glLinkProgram(program);
-    glDeleteShader(vertexStage);
-    glDeleteShader(fragmentStage);
+    for (GLuint stage : stages) glDeleteShader(stage);
     GLint ok = GL_FALSE;
     glGetProgramiv(program, GL_LINK_STATUS, &ok);
     if (!ok) {
@@ -116,6 +118,12 @@ GLuint linkProgram(GLuint vertexStage, GLuint fragmentStage, std::string& log) {
         return 0;
     }
     return program;
+}
+
+}  // namespace
+
+GLuint linkProgram(GLuint vertexStage, GLuint fragmentStage, std::string& log) {
+    return linkStages({vertexStage, fragmentStage}, log);
 }
 
 ShaderReader embeddedShaderReader() {
@@ -189,27 +197,15 @@ GLuint buildComputeProgram(const std::string& path, const ShaderReader& reader, 
         return 0;
     }
     std::string stageLog;
-    const GLuint stage =
-        compileStage(GL_COMPUTE_SHADER, join({"#version 450 core\n#define AERIAL_COMPUTE_SHADER 1\n", body}), stageLog);
+    const GLuint stage = compileStage(
+        GL_COMPUTE_SHADER, join({"#version 450 core\n#define AERIAL_COMPUTE_SHADER 1\n", body}), stageLog);
     if (stage == 0) {
         log.append(join({path, " (compute stage): compile failed ", fileLegend(files), stageLog}));
         return 0;
     }
-    const GLuint program = glCreateProgram();
-    glAttachShader(program, stage);
-    glLinkProgram(program);
-    glDeleteShader(stage);
-    GLint ok = GL_FALSE;
-    glGetProgramiv(program, GL_LINK_STATUS, &ok);
-    if (!ok) {
-        GLint length = 0;
-        glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
-        std::string info(static_cast<std::size_t>(length > 0 ? length : 1), '\0');
-        glGetProgramInfoLog(program, length, nullptr, info.data());
-        log.append(join({path, ": link failed: ", info.c_str(), "\n"}));
-        glDeleteProgram(program);
-        return 0;
-    }
+    std::string linkLog;
+    const GLuint program = linkStages({stage}, linkLog);
+    if (program == 0) log.append(join({path, ": link failed: ", linkLog, "\n"}));
     return program;
 }
 

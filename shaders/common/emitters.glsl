@@ -13,4 +13,25 @@ struct EmitterGpu {
 };
 layout(std430, binding = 2) readonly buffer EmitterBlock { EmitterGpu emitters[]; };
 
+/// atan(z) / z for z >= 0, 1 at 0.
+float atanOverX(float z) { return z > 1e-4 ? atan(z) / z : 1.0 - z * z / 3.0; }
+
+/// Integral of i / (1 + a |l - p|^2) along o -> o + d, in the
+/// cancellation-free form of core/src/emitter.cpp (emitters.glsl, and the
+/// volumetric fog's slices in froxel_inject.glsl).
+float emitterIntegral(vec3 l, float i, float a, vec3 o, vec3 d) {
+    float len = length(d);
+    if (!(i > 0.0) || !(len > 0.0)) return 0.0;
+    a = max(a, 0.0);
+    vec3 n = d / len;
+    vec3 c = l - o;  // the emitter seen from the start
+    vec3 e = c - d;  // ... from the end
+    vec3 cr = cross(c, n);
+    float k = sqrt(a) * sqrt(1.0 + a * dot(cr, cr));
+    float x = 1.0 + a * dot(c, e);
+    float y = len * k;
+    const float kHalfPi = 1.57079632679490;
+    return (y < x) ? i * len * atanOverX(y / x) / x : i * (kHalfPi - atan(x / y)) / k;
+}
+
 #endif

@@ -7,6 +7,8 @@
 #ifndef AERIAL_VOLUME_GLSL
 #define AERIAL_VOLUME_GLSL
 
+#include "common/unit_shape.glsl"
+
 layout(std140, binding = 1) uniform VolumeBlock {
     mat4 worldFromObject;      // the hull: position + rotation * halfExtents
     vec3 objectFromWorldRow0;  // rows of objectFromWorld = S^-1 R^T
@@ -39,34 +41,8 @@ vec3 toObject(vec3 w) {
 }
 
 /// Entry and exit parameters of o + t d against the unit cube or unit
-/// sphere (object space); tNear > tFar when missed.
-vec2 intersectUnitShape(vec3 o, vec3 d) {
-    if (volume.shape < 0.5) {
-        // Slabs |o_i + t d_i| <= 1.
-        float tNear = -3.0e38;
-        float tFar = 3.0e38;
-        for (int i = 0; i < 3; ++i) {
-            if (abs(d[i]) > 1e-30) {
-                float t1 = (-1.0 - o[i]) / d[i];
-                float t2 = (1.0 - o[i]) / d[i];
-                tNear = max(tNear, min(t1, t2));
-                tFar = min(tFar, max(t1, t2));
-            } else if (abs(o[i]) > 1.0) {
-                return vec2(1.0, 0.0);
-            }
-        }
-        return vec2(tNear, tFar);
-    }
-    // Unit sphere from the closest approach (no B^2 - AC cancellation).
-    float a = dot(d, d);
-    if (!(a > 0.0)) return vec2(1.0, 0.0);
-    float tMid = -dot(o, d) / a;
-    vec3 perp = o + tMid * d;
-    float h = 1.0 - dot(perp, perp);
-    if (!(h > 0.0)) return vec2(1.0, 0.0);
-    float halfChord = sqrt(h / a);
-    return vec2(tMid - halfChord, tMid + halfChord);
-}
+/// sphere (object space) of this volume's shape; tNear > tFar when missed.
+vec2 intersectUnitShape(vec3 o, vec3 d) { return unitShapeHit(volume.shape, o, d); }
 
 /// The fragment's ray eye + t farRay (t in [0, 1] to the far plane) clipped
 /// to the hull and to the scene point at t = depth01 (uLinearDepth; the

@@ -1,7 +1,10 @@
 // gl_fixture.cpp — see gl_fixture.hpp.
 #include "gl_fixture.hpp"
 
+#include <aerial/renderer/scene.hpp>
+
 #include <glm/geometric.hpp>
+#include <glm/gtc/quaternion.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -170,6 +173,27 @@ FogComparison compareWithCpu(const renderer::Image& fogged, const renderer::Imag
     result.meanTransmittance = sumT / n;
     result.meanInScatter = sumS / n;
     return result;
+}
+
+renderer::SceneDesc emissiveTestScene(const renderer::Camera& camera, double wallDepth) {
+    const renderer::CameraFrame f = renderer::cameraFrame(camera);
+    renderer::SceneDesc scene;
+    const double half = wallDepth * 4.0;
+    renderer::SceneMesh wall =
+        renderer::makeQuadMesh(f.eye + f.forward * wallDepth - f.right * half - f.up * half,
+                               f.right * (2 * half), f.up * (2 * half), glm::dvec3(0.0));
+    wall.emission = {1.0, 0.8, 0.6};
+    scene.meshes.push_back(wall);
+    renderer::SceneMesh ground = renderer::makeQuadMesh({-4000.0, 0.0, 4000.0}, {8000.0, 0.0, 0.0},
+                                                        {0.0, 0.0, -8000.0}, glm::dvec3(0.0));
+    ground.emission = {0.3, 0.35, 0.25};
+    scene.meshes.push_back(ground);
+    renderer::SceneMesh box = renderer::makeBoxMesh(
+        {15.0, 6.0, -70.0}, {5.0, 6.0, 3.0}, glm::angleAxis(0.6, glm::normalize(glm::dvec3(0.2, 1.0, 0.1))),
+        glm::dvec3(0.0));
+    box.emission = {0.9, 0.2, 0.1};
+    scene.meshes.push_back(box);
+    return scene;
 }
 
 }  // namespace aerial::test

@@ -87,6 +87,11 @@ private:
     glm::dvec3 moonDirection_;
 };
 
+/// Test geometry with known radiance (emission only, albedo 0): a wall
+/// perpendicular to the view at `wallDepth` [m], the ground y = 0 and a
+/// rotated box (the fog tests' scene).
+renderer::SceneDesc emissiveTestScene(const renderer::Camera& camera, double wallDepth);
+
 /// Largest per-pixel error of a fogged GPU frame against the CPU query on
 /// the same inputs: for every pixel, the scene point is reconstructed from
 /// the GPU's linear depth (in double), FogScene::query(eye, point) gives

@@ -31,29 +31,6 @@ Camera fogCamera(const glm::dvec3& eye, const glm::dvec3& target) {
     return makeCamera(eye, target, 1500.0, 1.1);
 }
 
-/// Test geometry with known radiance (emission only): a wall perpendicular
-/// to the view at `wallDepth`, the ground y = 0 and a rotated box.
-renderer::SceneDesc testScene(const Camera& camera, double wallDepth) {
-    const renderer::CameraFrame f = renderer::cameraFrame(camera);
-    renderer::SceneDesc scene;
-    const double half = wallDepth * 4.0;
-    renderer::SceneMesh wall =
-        renderer::makeQuadMesh(f.eye + f.forward * wallDepth - f.right * half - f.up * half,
-                               f.right * (2 * half), f.up * (2 * half), glm::dvec3(0.0));
-    wall.emission = {1.0, 0.8, 0.6};
-    scene.meshes.push_back(wall);
-    renderer::SceneMesh ground = renderer::makeQuadMesh({-4000.0, 0.0, 4000.0}, {8000.0, 0.0, 0.0},
-                                                        {0.0, 0.0, -8000.0}, glm::dvec3(0.0));
-    ground.emission = {0.3, 0.35, 0.25};
-    scene.meshes.push_back(ground);
-    renderer::SceneMesh box = renderer::makeBoxMesh(
-        {15.0, 6.0, -70.0}, {5.0, 6.0, 3.0}, glm::angleAxis(0.6, glm::normalize(glm::dvec3(0.2, 1.0, 0.1))),
-        glm::dvec3(0.0));
-    box.emission = {0.9, 0.2, 0.1};
-    scene.meshes.push_back(box);
-    return scene;
-}
-
 class FogVsCpu : public SkyRendererTest {
 protected:
     FogVsCpu() : SkyRendererTest(sunDirection(), moonDirection()) {}
@@ -71,7 +48,7 @@ protected:
     /// Renders with and without fog and compares every pixel with the CPU.
     FogComparison run(const char* name, const Camera& camera, const PresetState& air,
                       double wallDepth = 400.0) {
-        renderer_->setScene(testScene(camera, wallDepth));
+        renderer_->setScene(emissiveTestScene(camera, wallDepth));
         FrameDesc frame = floatFrame();
         frame.passes.sky = false;
         frame.passes.globalFog = frame.passes.volumes = frame.passes.emitters = false;
@@ -239,7 +216,7 @@ TEST_F(FogVsCpu, TheComparisonSeesAMissingPass) {
     PresetState air = baseFrame();
     air.volumes.push_back(testVolume(FogVolumeShape::Box));
     const Camera camera = fogCamera({0, 15, 10}, {0, 8, -60});
-    renderer_->setScene(testScene(camera, 400.0));
+    renderer_->setScene(emissiveTestScene(camera, 400.0));
     FrameDesc frame = floatFrame();
     frame.passes.sky = frame.passes.globalFog = frame.passes.volumes = frame.passes.emitters = false;
     renderer_->render(camera, air, frame);

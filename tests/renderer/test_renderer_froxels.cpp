@@ -35,27 +35,6 @@ using renderer::Camera;
 using renderer::FogMode;
 using renderer::FrameDesc;
 
-/// Emissive test scene: a wall across the view, the ground, a box.
-renderer::SceneDesc wallScene(const Camera& camera, double wallDepth) {
-    const renderer::CameraFrame f = renderer::cameraFrame(camera);
-    renderer::SceneDesc scene;
-    const double half = wallDepth * 4.0;
-    renderer::SceneMesh wall =
-        renderer::makeQuadMesh(f.eye + f.forward * wallDepth - f.right * half - f.up * half,
-                               f.right * (2 * half), f.up * (2 * half), glm::dvec3(0.0));
-    wall.emission = {1.0, 0.8, 0.6};
-    scene.meshes.push_back(wall);
-    renderer::SceneMesh ground = renderer::makeQuadMesh({-4000.0, 0.0, 4000.0}, {8000.0, 0.0, 0.0},
-                                                        {0.0, 0.0, -8000.0}, glm::dvec3(0.0));
-    ground.emission = {0.3, 0.35, 0.25};
-    scene.meshes.push_back(ground);
-    renderer::SceneMesh box = renderer::makeBoxMesh({15.0, 6.0, -70.0}, {5.0, 6.0, 3.0},
-                                                    glm::dquat(1.0, 0.0, 0.0, 0.0), glm::dvec3(0.0));
-    box.emission = {0.9, 0.2, 0.1};
-    scene.meshes.push_back(box);
-    return scene;
-}
-
 struct Errors {
     double mean = 0.0, p99 = 0.0, max = 0.0;
 };
@@ -111,7 +90,7 @@ protected:
     /// Mean and 99th percentile error of the volumetric frame per slice
     /// count; returns the errors at `slicesChecked`.
     Errors convergence(const char* name, const Camera& camera, const PresetState& state, int slicesChecked) {
-        renderer_->setScene(wallScene(camera, 400.0));
+        renderer_->setScene(emissiveTestScene(camera, 400.0));
         const renderer::Image unfogged = render(camera, state, FogMode::Analytic, 64, false);
         const renderer::Image analytic = render(camera, state, FogMode::Analytic, 64);
         Errors checked;
@@ -249,7 +228,7 @@ TEST_F(Froxels, TransparentMeshesAndParticlesFogThroughTheGrid) {
     // frame matches the analytic one (which fogs them per vertex and from the
     // CPU per object), here on the pane's and the particles' pixels too.
     const Camera camera = makeCamera({0, 8, 0}, {0, 7, -100}, 1500.0, 1.1);
-    renderer::SceneDesc scene = wallScene(camera, 300.0);
+    renderer::SceneDesc scene = emissiveTestScene(camera, 300.0);
     renderer::SceneMesh pane =
         renderer::makeQuadMesh({-20.0, 0.0, -45.0}, {40.0, 0.0, 0.0}, {0.0, 20.0, 0.0}, glm::dvec3(0.0));
     pane.alphaMode = renderer::AlphaMode::Blend;
@@ -292,7 +271,7 @@ TEST_F(Froxels, ExtremeMediaGiveFinitePixels) {
     // Fog, volumes and emitters far beyond any preset's range (and zero):
     // every froxel's sums stay finite, so no NaN or Inf reaches a pixel.
     const Camera camera = makeCamera({0, 8, 0}, {0, 6, -100}, 1500.0, 1.1);
-    renderer_->setScene(wallScene(camera, 400.0));
+    renderer_->setScene(emissiveTestScene(camera, 400.0));
     for (double density : {0.0, 1e-12, 5.0, 1e6}) {
         PresetState s = baseState();
         s.environment.fog = {density, 0.0, -1e4};
@@ -378,9 +357,10 @@ TEST_F(FroxelShaft, TemporalHistoryConvergesAndIsForgottenOnATimeJump) {
     EXPECT_FALSE(renderer_->stats().froxels.historyUsed);
     EXPECT_STREQ(renderer_->stats().froxels.resetReason, "time jump");
     EXPECT_EQ(first.pixels, plainAfter.pixels) << "the frame after the jump is the non-temporal one";
-    std::printf("[ froxels ] temporal: still view after 12 frames vs non-temporal mean %.5f p99 %.5f; "
-                "after the time jump:",
-                still.mean, still.p99);
+    std::printf(
+        "[ froxels ] temporal: still view after 12 frames vs non-temporal mean %.5f p99 %.5f; "
+        "after the time jump:",
+        still.mean, still.p99);
     double worstP99 = 0.0;
     for (int i = 1; i <= 4; ++i) {
         const Errors e = compare(renderWith(camera, after, true), plainAfter, black);
