@@ -396,6 +396,15 @@ int runBake(const BakeOptions& options) {
            "scene-linear Rec.709 radiance of the sky (sun and moon, phase applied), ready to use as a "
            "sky texture; the tables beside it hold the phase-less integrals"}}},
         {"clouds", cloudsToJson(compiled.preset().environment.clouds.seed, cloudy)},
+        {"fog",
+         {{"render_mode", compiled.preset().environment.fogRenderMode == FogRenderMode::Volumetric
+                              ? "volumetric"
+                              : "analytic"},
+          {"how",
+           "how the preset's fog was authored to be drawn: analytic (closed-form integrals per pixel, "
+           "DESIGN.md) or volumetric (a froxel grid in which the sun's, moon's and clouds' shadows cut light "
+           "shafts, converging to the analytic fog without them); aerial::FogScene queries return the "
+           "analytic answer in both modes"}}},
         {"steps", steps}};
     writeText(dir / kManifestName, jsonText(manifest) + "\n");
     syncPath(dir, true);

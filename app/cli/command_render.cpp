@@ -1,6 +1,6 @@
 // command_render.cpp — `aerial render PRESET --out FILE.exr|png [--time T]
 // [--eye x,y,z --target x,y,z --fov deg] [--size WxH] [--exposure EV]
-// [--display NAME] [--view NAME] [--float] [--shadows on|off] [--fog analytic|volumetric]
+// [--display NAME] [--view NAME] [--float] [--shadows on|off] [--fog preset|analytic|volumetric]
 // [--froxel-slices N] [--json]`: one frame of the built-in scene
 // (renderer/scene.hpp: terrain with a valley, a lake, rocks, buildings, glass, a fence, steam) under the
 // preset at one time of day, rendered headless (EGL on Mesa's surfaceless platform, no window) by the same
@@ -35,10 +35,11 @@
 // cascaded shadow maps on the scene (RenderPasses::shadows, the renderer's
 // default ShadowMapSettings); off renders exactly as without them.
 //
-// --fog analytic|volumetric (default analytic: the exact closed forms, what
-// the goldens hold): volumetric draws the global fog, the volumes and the
-// emitters' lit fog through the renderer's froxel grid, where the shadows
-// (scene and clouds) cut light shafts (FogMode::Volumetric);
+// --fog preset|analytic|volumetric (default preset: the preset's
+// fog.render_mode): analytic is the exact closed forms; volumetric draws the
+// global fog, the volumes and the emitters' lit fog through the renderer's
+// froxel grid, where the shadows (scene and clouds) cut light shafts
+// (FogMode::Volumetric);
 // --froxel-slices N (16..256, default 128) its depth slices.
 //
 // --scene FILE.gltf|.glb renders a glTF 2.0 scene (renderer/gltf.hpp)
@@ -54,7 +55,7 @@
 //   {"file", "format" ("exr"/"png"), "width", "height",
 //    "preset": {"file", "name"}, "time_h", "time",
 //    "camera": {"eye", "target", "fov_deg"}, "precision" ("half"/"float"),
-//    "shadows" (true/false), "fog" ("analytic"/"volumetric"),
+//    "shadows" (true/false), "fog" ("analytic"/"volumetric": the mode drawn),
 //    "exposure": {"mode", "average_luminance" (metered, radiance units),
 //    "ev100" (what the preset's exposure chose), "compensation_ev",
 //    "exposure_ev" (--exposure), "display_ev" (the stops the display
@@ -109,7 +110,7 @@ struct RenderOptions {
     std::string view;      // "" = the display's default view
     bool floatTarget = false;
     std::string shadows = "on";  // on | off
-    std::string fog = "analytic";  // analytic | volumetric
+    std::string fog = "preset";  // preset | analytic | volumetric
     int froxelSlices = 128;
     bool json = false;
 };
@@ -302,7 +303,10 @@ int runRender(const RenderOptions& options) {
     frame.precision =
         options.floatTarget ? renderer::ColourPrecision::Float : renderer::ColourPrecision::Half;
     frame.passes.shadows = options.shadows == "on";
-    frame.fogMode = options.fog == "volumetric" ? renderer::FogMode::Volumetric : renderer::FogMode::Analytic;
+    const bool volumetric =
+        options.fog == "volumetric" ||
+        (options.fog == "preset" && state.environment.fogRenderMode == FogRenderMode::Volumetric);
+    frame.fogMode = volumetric ? renderer::FogMode::Volumetric : renderer::FogMode::Analytic;
     frame.froxels.slices = options.froxelSlices;
     renderer.render(camera, state, frame);
     const renderer::Image image = renderer.readColour();
@@ -345,7 +349,7 @@ int runRender(const RenderOptions& options) {
              {"camera", {{"eye", toJson(eye)}, {"target", toJson(target)}, {"fov_deg", options.fovDeg}}},
              {"precision", options.floatTarget ? "float" : "half"},
              {"shadows", options.shadows == "on"},
-             {"fog", options.fog},
+             {"fog", frame.fogMode == renderer::FogMode::Volumetric ? "volumetric" : "analytic"},
              {"exposure",
               {{"mode", exposure.mode == ExposureMode::Manual ? "manual" : "automatic"},
                {"average_luminance", averageLuminance},
@@ -417,10 +421,10 @@ Command addRenderCommand(CLI::App& parent) {
         ->check(CLI::IsMember({"on", "off"}))
         ->capture_default_str();
     app->add_option("--fog", options->fog,
-                    "Fog: analytic (exact closed forms) or volumetric (froxel grid: light shafts through the "
-                    "shadows)")
-        ->type_name("analytic|volumetric")
-        ->check(CLI::IsMember({"analytic", "volumetric"}))
+                    "Fog: preset (its fog.render_mode), analytic (exact closed forms) or volumetric (froxel "
+                    "grid: light shafts through the shadows)")
+        ->type_name("preset|analytic|volumetric")
+        ->check(CLI::IsMember({"preset", "analytic", "volumetric"}))
         ->capture_default_str();
     app->add_option("--froxel-slices", options->froxelSlices, "Volumetric fog: depth slices of the grid")
         ->type_name("N")

@@ -458,7 +458,8 @@ void Editor::drawStatusBar() {
                                                          {"particles", t.particles}};
         ImGui::BeginTooltip();
         ImGui::Text("Viewport passes [ms] (%s fog)",
-                    view_.fogMode == renderer::FogMode::Volumetric ? "volumetric" : "analytic");
+                    view_.fogModeFor(sky_.state.environment) == renderer::FogMode::Volumetric ? "volumetric"
+                                                                                              : "analytic");
         for (const auto& [name, ms] : passes)
             if (ms > 0.0) ImGui::Text("  %-17s %7.2f", name, ms);
         ImGui::Text("  %-17s %7.2f", "total", t.total());

@@ -186,12 +186,15 @@ void Editor::declareActions() {
     toggle("pass_particles", "Fog particles", view_.passes.particles);
     toggle("pass_clouds", "Clouds", view_.passes.clouds);
     toggle("pass_shadows", "Sun shadows", view_.passes.shadows);
-    t.add("fog_volumetric", "Volumetric fog (light shafts)", "View")
-        .checkedWhen([this] { return view_.fogMode == renderer::FogMode::Volumetric; })
-        .does([this] {
-            view_.fogMode = view_.fogMode == renderer::FogMode::Volumetric ? renderer::FogMode::Analytic
-                                                                           : renderer::FogMode::Volumetric;
-        });
+    const auto fogView = [&t, this](const char* name, const char* label, ViewportState::FogView v,
+                                    bool separated = false) {
+        Action& a = t.add(name, label, "View");
+        if (separated) a.separated();
+        a.checkedWhen([this, v] { return view_.fogView == v; }).does([this, v] { view_.fogView = v; });
+    };
+    fogView("fog_as_preset", "Fog as the preset says", ViewportState::FogView::Preset, true);
+    fogView("fog_analytic", "Fog analytic (exact, no shafts)", ViewportState::FogView::Analytic);
+    fogView("fog_volumetric", "Fog volumetric (light shafts)", ViewportState::FogView::Volumetric);
     const auto gizmoMode = [&t, this](const char* name, const char* label, int key, GizmoMode mode,
                                       bool separated = false) {
         Action& a = t.add(name, label, "View");

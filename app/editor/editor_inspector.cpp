@@ -287,7 +287,8 @@ void drawPlacePicker(Document& doc) {
         for (const Place& place : places()) {
             const std::string label = std::string(place.name);
             if (ImGui::Selectable(label.c_str()))
-                doc.apply("Place: " + label, "", [&](Preset& p) { applyPlace(p.environment.location, place); });
+                doc.apply("Place: " + label, "",
+                          [&](Preset& p) { applyPlace(p.environment.location, place); });
         }
         ImGui::EndCombo();
     }

@@ -134,10 +134,17 @@ struct ViewportState {
     bool showHelpers = true;
     bool showGrid = false;
     renderer::RenderPasses passes;
-    /// View > Volumetric fog: the froxel grid with light shafts (off: the
-    /// analytic fog, the exact and cheaper tier; ~+50 ms per frame at
-    /// 640 x 360 on llvmpipe).
-    renderer::FogMode fogMode = renderer::FogMode::Analytic;
+    /// View > Fog: as the preset says (its fog.render_mode, the default),
+    /// or analytic / volumetric whatever it says (the froxel grid with light
+    /// shafts costs ~+50 ms per frame at 640 x 360 on llvmpipe).
+    enum class FogView { Preset, Analytic, Volumetric } fogView = FogView::Preset;
+    /// The fog mode the viewport draws for a preset state.
+    renderer::FogMode fogModeFor(const Environment& environment) const {
+        if (fogView == FogView::Preset)
+            return environment.fogRenderMode == FogRenderMode::Volumetric ? renderer::FogMode::Volumetric
+                                                                          : renderer::FogMode::Analytic;
+        return fogView == FogView::Volumetric ? renderer::FogMode::Volumetric : renderer::FogMode::Analytic;
+    }
     bool showStars = true;  ///< View > Stars (the sky pass's stars at night)
     std::string scenePath;  ///< "" = the built-in scene
 

@@ -434,19 +434,21 @@ void Editor::declareEditScriptCommands() {
                    view_.gizmoSpace = w[1] == "local" ? GizmoSpace::Local : GizmoSpace::World;
                    return true;
                }});
-    table.add({"view", 1, 2, "view NAME | view clouds|shadows on|off | view fog analytic|volumetric",
+    table.add({"view", 1, 2, "view NAME | view clouds|shadows on|off | view fog preset|analytic|volumetric",
                "the OCIO view; or switch the view's cloud layer or sun shadows (View > Clouds, View > Sun "
-               "shadows), or its fog mode (View > Volumetric fog)",
+               "shadows), or how it draws the fog (View > Fog ...)",
                [this](W w, E error) {
                    if (w.size() == 3) {
                        // In the frame's signature: the next frame shows it.
-                       if (w[1] == "fog" && (w[2] == "analytic" || w[2] == "volumetric")) {
-                           view_.fogMode = w[2] == "volumetric" ? renderer::FogMode::Volumetric
-                                                                : renderer::FogMode::Analytic;
+                       if (w[1] == "fog" &&
+                           (w[2] == "preset" || w[2] == "analytic" || w[2] == "volumetric")) {
+                           view_.fogView = w[2] == "preset"     ? ViewportState::FogView::Preset
+                                           : w[2] == "analytic" ? ViewportState::FogView::Analytic
+                                                                : ViewportState::FogView::Volumetric;
                            return true;
                        }
                        if ((w[1] != "clouds" && w[1] != "shadows") || (w[2] != "on" && w[2] != "off")) {
-                           error = "view: view clouds|shadows on|off, or view fog analytic|volumetric";
+                           error = "view: view clouds|shadows on|off, or view fog preset|analytic|volumetric";
                            return false;
                        }
                        (w[1] == "clouds" ? view_.passes.clouds : view_.passes.shadows) = w[2] == "on";

@@ -80,9 +80,9 @@ void Editor::renderViewport() {
         static_cast<unsigned long long>(sky_.generation), c.target.x, c.target.y, c.target.z, c.distance,
         c.yaw, c.pitch + 1000.0 * c.verticalFovDeg, view_.passes.sky, view_.passes.scene,
         view_.passes.globalFog, view_.passes.volumes, view_.passes.emitters, view_.passes.transparent,
-        view_.passes.particles, view_.passes.clouds, view_.passes.shadows, int(view_.fogMode),
-        view_.showStars, view_.displayName.c_str(), view_.viewName.c_str(), view_.exposureEv,
-        static_cast<const void*>(view_.display.get()));
+        view_.passes.particles, view_.passes.clouds, view_.passes.shadows,
+        int(view_.fogModeFor(sky_.state.environment)), view_.showStars, view_.displayName.c_str(),
+        view_.viewName.c_str(), view_.exposureEv, static_cast<const void*>(view_.display.get()));
     const auto now = std::chrono::steady_clock::now();
     const double dt = view_.lastExposureStep.time_since_epoch().count() == 0
                           ? 0.0
@@ -110,7 +110,7 @@ void Editor::renderViewport() {
     frame.width = width;
     frame.height = height;
     frame.passes = view_.passes;
-    frame.fogMode = view_.fogMode;  // View > Volumetric fog
+    frame.fogMode = view_.fogModeFor(sky_.state.environment);  // View > Fog
     // Interactive clouds: a sixteenth of the pixels traced per frame, the
     // rest reprojected; the renderer forgets the history by itself when the
     // time, the camera or the clouds jump (scrubbing never smears).
@@ -434,7 +434,7 @@ bool Editor::screenshot(const std::string& path, std::string& error) {
     frame.width = width;
     frame.height = height;
     frame.passes = view_.passes;
-    frame.fogMode = view_.fogMode;
+    frame.fogMode = view_.fogModeFor(sky_.state.environment);
     frame.stars = view_.showStars;  // View > Stars
     view_.renderer->render(view_.camera.camera(double(width) / double(height)), sky_.state, frame);
     const renderer::Image image = view_.renderer->readColour();

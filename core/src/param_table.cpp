@@ -18,6 +18,7 @@ Emitter& emi(void* o) { return *static_cast<Emitter*>(o); }
 CloudVolume& cvol(void* o) { return *static_cast<CloudVolume*>(o); }
 
 constexpr std::array<sv, 3> kColourModeNames = {"sky", "tinted", "custom"};
+constexpr std::array<sv, 2> kFogRenderModeNames = {"analytic", "volumetric"};
 constexpr std::array<sv, 2> kShapeNames = {"box", "ellipsoid"};
 constexpr std::array<sv, 2> kEmitterKindNames = {"point", "lightning"};
 constexpr std::array<sv, 3> kInterpolationNames = {"step", "linear", "smooth"};
@@ -317,6 +318,13 @@ const std::vector<ParamDesc>& globalTable() {
             true, [](void* o) { return &env(o).fogColour; },
             "Fog tint (tinted) or in-scattered radiance (custom), scene-linear Rec.709, "
             "0..1e5 per channel. Default white."),
+        enumeration(
+            G, "fog.render_mode", "Fog render mode", kFogRenderModeNames, 0,
+            [](const void* o) { return std::int64_t(static_cast<const Environment*>(o)->fogRenderMode); },
+            [](void* o, std::int64_t v) { env(o).fogRenderMode = FogRenderMode(v); },
+            "How the fog is meant to be drawn: analytic (exact closed forms, no shadows in the "
+            "fog) or volumetric (a froxel grid: sun, moon and cloud shadows cut light shafts). "
+            "Games' fog queries are analytic either way. Default analytic."),
         // Exposure (exposure.hpp).
         enumeration(
             G, "exposure.mode", "Exposure mode", kExposureModeNames, 1,

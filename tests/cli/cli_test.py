@@ -534,7 +534,16 @@ class Clouds(unittest.TestCase):
                            clear, "--step", "12h", "--size", "16x8", "--quiet")
         self.assertEqual(code, 0, err)
         with open(os.path.join(clear, "manifest.json")) as f:
-            self.assertNotIn("noise_fnv1a64", json.load(f)["clouds"])
+            clear_manifest = json.load(f)
+        self.assertNotIn("noise_fnv1a64", clear_manifest["clouds"])
+        # The fog's authored render mode, for the game (analytic unless the preset says so).
+        self.assertEqual(clear_manifest["fog"]["render_mode"], "analytic")
+        shafts = os.path.join(WORK, "bake_volumetric")
+        code, _, err = run("bake", preset("foggy_valley_morning"), "--out", shafts, "--step", "12h", "--size",
+                           "16x8", "--quiet")
+        self.assertEqual(code, 0, err)
+        with open(os.path.join(shafts, "manifest.json")) as f:
+            self.assertEqual(json.load(f)["fog"]["render_mode"], "volumetric")
 
     def test_cloud_volumes_set_the_coverage_inside(self):
         volumes = os.path.join(ROOT, "tests", "data", "cli", "clouds_volumes.json")
@@ -815,6 +824,21 @@ class Render(unittest.TestCase):
         self.assertEqual(set(channels), {"R", "G", "B", "A"})
         self.assertEqual(set(channels.values()), {1}, "HALF pixels")
         self.assertNoTemporaries()
+
+    def test_the_fog_mode_follows_the_preset_unless_given(self):
+        out = os.path.join(self.dir, "mode.exr")
+        for name, authored in (("foggy_valley_morning", "volumetric"), ("clear_summer_day", "analytic")):
+            with open(preset(name)) as f:
+                self.assertEqual(json.load(f)["fog"]["render_mode"], authored)
+            r = run_json(self, "render", preset(name), "--time", "08:00", "--size", "32x18", "--out", out)
+            self.assertEqual(r["fog"], authored)
+            for given in ("analytic", "volumetric"):
+                r = run_json(self, "render", preset(name), "--time", "08:00", "--size", "32x18", "--fog", given,
+                             "--out", out)
+                self.assertEqual(r["fog"], given)
+        code, _, err = run("render", preset("foggy_valley_morning"), "--fog", "froxels", "--out", out)
+        self.assertEqual(code, 2)
+        self.assertIn("--fog", err)
 
     def test_png_has_the_requested_size_and_a_sky(self):
         out = os.path.join(self.dir, "morning.png")

@@ -493,6 +493,7 @@ view shadows off
 view shadows on
 view fog volumetric
 view fog analytic
+view fog preset
 quit
 """.format(fixture=fixture, clear=clear, before=before, after=after)))
     added = re.search(r"added cloud volume 0 at (\S+) (\S+) (\S+)", p.stdout)

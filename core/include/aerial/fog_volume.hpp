@@ -63,6 +63,13 @@ enum class FogColourMode {
     Custom,  ///< `colour` as in-scattered radiance, scene-linear Rec.709
 };
 
+/// How the preset's fog was authored to be drawn (the renderer's
+/// FogMode): the closed-form integrals, exact and cheap, or a froxel grid
+/// that the shadows cut into light shafts. The runtime library's fog
+/// queries are the analytic answer either way; games read the choice from
+/// the bake manifest.
+enum class FogRenderMode { Analytic, Volumetric };
+
 struct FogVolume {
     /// Stable identifier: timeline tracks refer to it; never shown.
     std::string id;

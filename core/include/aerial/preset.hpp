@@ -105,6 +105,8 @@ struct Environment {
     FogColourMode fogColourMode = FogColourMode::Sky;
     /// Global fog tint or radiance (see fogColourMode), scene-linear Rec.709.
     glm::dvec3 fogColour{1.0, 1.0, 1.0};
+    /// How the fog (global, volumes, emitters) is meant to be drawn.
+    FogRenderMode fogRenderMode = FogRenderMode::Analytic;
     /// How radiance becomes a picture: manual or automatic EV100 and a
     /// compensation keyed over the day (aerial/exposure.hpp).
     ExposureParams exposure;
