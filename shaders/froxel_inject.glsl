@@ -80,6 +80,34 @@ float froxelShadowVisibility(vec3 p) {
     return texture(uShadowMap, vec4(s.xy, float(k), clamp(s.z, 0.0, 1.0)));
 }
 
+/// A hash of an integer lattice point to 0..1 (PCG-style mixing; the
+/// lattice repeats every 256 cells, so the drift is reduced modulo 256
+/// cells on the CPU).
+float latticeValue(ivec3 c) {
+    uvec3 u = uvec3(c & 255);
+    uint h = u.x * 0x8da6b343u ^ u.y * 0xd8163841u ^ u.z * 0xcb1ab31fu;
+    h ^= h >> 16;
+    h *= 0x7feb352du;
+    h ^= h >> 15;
+    h *= 0x846ca68bu;
+    h ^= h >> 16;
+    return float(h) * (1.0 / 4294967295.0);
+}
+
+/// Smooth 3D value noise in 0..1 (quintic interpolation of the lattice).
+float detailNoise(vec3 x) {
+    vec3 cell = floor(x);
+    vec3 f = x - cell;
+    vec3 w = f * f * f * (f * (f * 6.0 - 15.0) + 10.0);
+    ivec3 c = ivec3(cell);
+    float n000 = latticeValue(c), n100 = latticeValue(c + ivec3(1, 0, 0));
+    float n010 = latticeValue(c + ivec3(0, 1, 0)), n110 = latticeValue(c + ivec3(1, 1, 0));
+    float n001 = latticeValue(c + ivec3(0, 0, 1)), n101 = latticeValue(c + ivec3(1, 0, 1));
+    float n011 = latticeValue(c + ivec3(0, 1, 1)), n111 = latticeValue(c + ivec3(1, 1, 1));
+    return mix(mix(mix(n000, n100, w.x), mix(n010, n110, w.x), w.y),
+               mix(mix(n001, n101, w.x), mix(n011, n111, w.x), w.y), w.z);
+}
+
 void main() {
     ivec3 id = ivec3(gl_GlobalInvocationID);
     if (any(greaterThanEqual(id, froxel.gridSize))) return;
@@ -90,8 +118,14 @@ void main() {
     vec3 d = ((zb - za) / frame.farDistance) * farRay;
     float len = length(d);
 
+    vec3 p = o + froxel.jitter * d;  // where this slice's light (and noise) is sampled
     vec3 wSky = vec3(0.0), wOwn = vec3(0.0);
-    float tau = exponentialOpticalDepth(froxel.globalFog * frame.fogDensity, frame.fogFalloff, o.y - frame.fogBaseHeight, d.y, len);
+    float tau = exponentialOpticalDepth(froxel.globalFog * frame.fogDensity, frame.fogFalloff,
+                                        o.y - frame.fogBaseHeight, d.y, len);
+    if (froxel.noiseAmount > 0.0) {  // the detail noise: the slice's density scaled at its sample point
+        float n = detailNoise((p - froxel.noiseOffset) / froxel.noiseScaleM);
+        tau *= max(1.0 + froxel.noiseAmount * (2.0 * n - 1.0), 0.0);
+    }
     addMedium(tau, frame.fogColourMode, frame.fogColour, wSky, wOwn);
 
     for (int v = 0; v < froxel.volumeCount; ++v) {
@@ -119,7 +153,6 @@ void main() {
     }
 
     float visibility = 1.0;
-    vec3 p = o + froxel.jitter * d;
     if (froxel.sceneShadows > 0.5) visibility *= froxelShadowVisibility(p);
     if (froxel.cloudShadows > 0.5) visibility *= cloudShadowVisibility(p);
 

@@ -19,6 +19,7 @@ CloudVolume& cvol(void* o) { return *static_cast<CloudVolume*>(o); }
 
 constexpr std::array<sv, 3> kColourModeNames = {"sky", "tinted", "custom"};
 constexpr std::array<sv, 2> kFogRenderModeNames = {"analytic", "volumetric"};
+constexpr std::array<sv, 2> kFogPhaseModeNames = {"sky", "custom"};
 constexpr std::array<sv, 2> kShapeNames = {"box", "ellipsoid"};
 constexpr std::array<sv, 2> kEmitterKindNames = {"point", "lightning"};
 constexpr std::array<sv, 3> kInterpolationNames = {"step", "linear", "smooth"};
@@ -325,6 +326,30 @@ const std::vector<ParamDesc>& globalTable() {
             "How the fog is meant to be drawn: analytic (exact closed forms, no shadows in the "
             "fog) or volumetric (a froxel grid: sun, moon and cloud shadows cut light shafts). "
             "Games' fog queries are analytic either way. Default analytic."),
+        enumeration(
+            G, "fog.volumetric.phase", "Volumetric phase", kFogPhaseModeNames, 0,
+            [](const void* o) {
+                return std::int64_t(static_cast<const Environment*>(o)->volumetricFog.phase);
+            },
+            [](void* o, std::int64_t v) { env(o).volumetricFog.phase = FogPhaseMode(v); },
+            "Volumetric mode only: the phase of the sunlight (moonlight) scattered by the fog: sky "
+            "(the sky's fog colour, as the analytic fog) or custom (the anisotropy below in place of "
+            "the atmosphere's Mie anisotropy). Default sky."),
+        scalar(
+            G, "fog.volumetric.anisotropy", "Volumetric anisotropy", "", {-0.95, 0.95, -0.95, 0.95}, 0.6,
+            false, true, [](void* o) { return &env(o).volumetricFog.anisotropy; },
+            "Volumetric mode, custom phase: the fog's Cornette-Shanks g, -0.95..0.95; larger is a "
+            "brighter glow towards the sun, 0 scatters evenly. Default 0.6."),
+        scalar(
+            G, "fog.volumetric.noise_amount", "Volumetric detail noise", "", {0, 1, 0, 1}, 0.0, false, true,
+            [](void* o) { return &env(o).volumetricFog.noiseAmount; },
+            "Volumetric mode only: the global fog's density varies by this share around its value "
+            "(a smooth 3D noise drifting with the clouds' wind), 0..1; 0 is the exact height fog. "
+            "Default 0."),
+        scalar(
+            G, "fog.volumetric.noise_scale_m", "Volumetric noise scale", "m", {1, 1000, 1, 200}, 25.0, true,
+            true, [](void* o) { return &env(o).volumetricFog.noiseScaleM; },
+            "Volumetric mode: the size of the detail noise's features [m], 1..1000. Default 25."),
         // Exposure (exposure.hpp).
         enumeration(
             G, "exposure.mode", "Exposure mode", kExposureModeNames, 1,

@@ -25,6 +25,7 @@
 #include "frame_block.hpp"
 #include "render_pass.hpp"
 
+#include <aerial/clouds.hpp>
 #include <aerial/evaluate.hpp>
 
 #include <glm/geometric.hpp>
@@ -227,6 +228,20 @@ FroxelBlock makeFroxelBlock(const FrameDesc& frame, int width, int height, doubl
     b.cloudShadows = clouds.shadowActive > 0.5f ? 1.0f : 0.0f;
     b.jitter = float(finiteClamp(s.jitter, 0.0, 1.0, 0.5));
     b.globalFog = frame.passes.globalFog ? 1.0f : 0.0f;
+    // The preset's volumetric settings (VolumetricFogParams).
+    const VolumetricFogParams& v = state.environment.volumetricFog;
+    b.customPhase = v.phase == FogPhaseMode::Custom ? 1.0f : 0.0f;
+    b.anisotropy = float(finiteClamp(v.anisotropy, -0.95, 0.95, 0.6));
+    b.noiseAmount = float(finiteClamp(v.noiseAmount, 0.0, 1.0, 0.0));
+    const double scale = finiteClamp(v.noiseScaleM, 1.0, 1000.0, 25.0);
+    b.noiseScaleM = float(scale);
+    // The noise drifts with the clouds' wind: offset = wind x seconds since
+    // 00:00, reduced modulo the lattice's period (256 cells) in double.
+    const glm::dvec2 wind = state.environment.clouds.windMPerS;
+    const double seconds = (std::isfinite(state.timeHours) ? state.timeHours : 0.0) * 3600.0;
+    const double period = 256.0 * scale;
+    auto reduce = [period](double x) { return std::isfinite(x) ? x - period * std::floor(x / period) : 0.0; };
+    b.noiseOffset = toVec3(glm::dvec3(reduce(wind.x * seconds), 0.0, reduce(wind.y * seconds)));
     return b;
 }
 

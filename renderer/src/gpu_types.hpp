@@ -331,6 +331,16 @@ struct FroxelBlock {
     float padPreviousEye = 0.0f;
     Vec3 previousForward;
     float padPreviousForward = 0.0f;
+    /// The preset's volumetric settings (VolumetricFogParams): 1 for the
+    /// custom phase, its anisotropy, the detail noise's amount and scale [m],
+    /// and the noise's drift (the clouds' wind x time, reduced modulo its
+    /// period) [m].
+    float customPhase = 0.0f;
+    float anisotropy = 0.0f;
+    float noiseAmount = 0.0f;
+    float noiseScaleM = 25.0f;
+    Vec3 noiseOffset;
+    float padNoise = 0.0f;
 };
 static_assert(offsetof(FroxelBlock, volumeCount) == 12);
 static_assert(offsetof(FroxelBlock, pixelsPerFroxel) == 16);
@@ -342,7 +352,9 @@ static_assert(offsetof(FroxelBlock, historyWeight) == 52);
 static_assert(offsetof(FroxelBlock, previousClipFromWorld) == 64);
 static_assert(offsetof(FroxelBlock, previousEye) == 128);
 static_assert(offsetof(FroxelBlock, previousForward) == 144);
-static_assert(sizeof(FroxelBlock) == 160);
+static_assert(offsetof(FroxelBlock, customPhase) == 160);
+static_assert(offsetof(FroxelBlock, noiseOffset) == 176);
+static_assert(sizeof(FroxelBlock) == 192);
 
 /// shaders/particles.glsl, per-instance vertex attributes (locations 0..3).
 struct SpriteInstance {

@@ -35,6 +35,12 @@ layout(std140, binding = 6) uniform FroxelBlock {
     float padPreviousEye;
     vec3 previousForward;
     float padPreviousForward;
+    float customPhase;     // 1: the fog's own anisotropy for the casting light's part
+    float anisotropy;      // its Cornette-Shanks g
+    float noiseAmount;     // detail noise: density x (1 + amount (2 n - 1))
+    float noiseScaleM;     // [m]
+    vec3 noiseOffset;      // [m] the noise's drift
+    float padNoise;
 } froxel;
 
 /// View depth [m] of slice coordinate s (0..1).
@@ -50,24 +56,34 @@ vec3 froxelFarRay(ivec2 ij) {
 }
 
 /// The fog colour of direction v split into the part the shadows dim (the
-/// casting light's single scattering, phase applied) and the whole:
-/// x = shadowable part, y = all (skyFogColour, capped as fogInScatterTransmittance).
+/// casting light's single scattering, phase applied) and the whole
+/// (skyFogColour, capped as fogInScatterTransmittance); with the custom
+/// phase the casting light's Mie part takes the fog's anisotropy.
 void froxelFogColours(vec3 v, out vec3 shadowable, out vec3 all) {
     vec3 sky = skyFogColour(v);
+    float g = frame.mieAnisotropy;
+    vec3 light, rayleigh, mie;
+    float mu;
+    if (froxel.castIsMoon > 0.5) {
+        mu = dot(v, frame.moonDirection);
+        light = frame.moonIlluminanceSpace;
+        rayleigh = frame.moonHorizonRayleigh;
+        mie = frame.moonHorizonMie;
+    } else {
+        mu = dot(v, frame.sunDirection);
+        light = frame.sunIlluminanceSpace;
+        rayleigh = frame.sunHorizonRayleigh;
+        mie = frame.sunHorizonMie;
+    }
+    vec3 single = light * (rayleighPhase(mu) * rayleigh + miePhase(mu, g) * mie);
+    if (froxel.customPhase > 0.5) {  // the fog's own anisotropy in place of the atmosphere's
+        vec3 custom = light * (rayleighPhase(mu) * rayleigh + miePhase(mu, froxel.anisotropy) * mie);
+        sky = max(sky - single, vec3(0.0)) + custom;
+        single = custom;
+    }
     vec3 capped = min(sky, vec3(frame.radianceCap));
     vec3 share = vec3(1.0);
     for (int c = 0; c < 3; ++c) share[c] = sky[c] > 0.0 ? capped[c] / sky[c] : 0.0;
-    float g = frame.mieAnisotropy;
-    vec3 single;
-    if (froxel.castIsMoon > 0.5) {
-        float mu = dot(v, frame.moonDirection);
-        single = frame.moonIlluminanceSpace *
-                 (rayleighPhase(mu) * frame.moonHorizonRayleigh + miePhase(mu, g) * frame.moonHorizonMie);
-    } else {
-        float mu = dot(v, frame.sunDirection);
-        single = frame.sunIlluminanceSpace *
-                 (rayleighPhase(mu) * frame.sunHorizonRayleigh + miePhase(mu, g) * frame.sunHorizonMie);
-    }
     shadowable = single * share;
     all = capped;
 }

@@ -267,6 +267,60 @@ TEST_F(Froxels, TransparentMeshesAndParticlesFogThroughTheGrid) {
     EXPECT_LT(e.p99, 0.1);
 }
 
+TEST_F(Froxels, TheFogsOwnPhaseAndDetailNoise) {
+    // Volumetric settings the analytic fog ignores. Custom phase: the casting
+    // light's Mie part takes the fog's g. With g = the atmosphere's it is the
+    // sky phase bit for bit; with g = 0 a pixel towards the sun loses
+    // E (P_M(mu, 0.8) - P_M(mu, 0)) I_M,horizon (1 - T) (uniform fog, T = exp(-sigma D)).
+    const double sigma = 0.004, depth = 400.0;
+    const Camera camera = makeCamera({0, 10, 0}, glm::dvec3(0, 10, 0) + sunDirection() * 100.0, 1500.0, 0.9);
+    renderer_->setScene(emissiveTestScene(camera, depth));
+    PresetState s = baseState();
+    s.environment.fog = {sigma, 0.0, 0.0};
+    const renderer::Image sky = render(camera, s, FogMode::Volumetric, 128);
+    s.environment.volumetricFog.phase = FogPhaseMode::Custom;
+    s.environment.volumetricFog.anisotropy = 0.8;  // = the atmosphere's
+    EXPECT_EQ(render(camera, s, FogMode::Volumetric, 128).pixels, sky.pixels);
+    s.environment.volumetricFog.anisotropy = 0.0;
+    const renderer::Image even = render(camera, s, FogMode::Volumetric, 128);
+    // The centre ray (four pixels around it) looks along the view axis, at the wall 400 m away.
+    const renderer::CameraFrame f = renderer::cameraFrame(camera);
+    const double mu = glm::dot(f.forward, sunDirection());
+    const double transmittance = std::exp(-sigma * depth);
+    for (int c = 0; c < 3; ++c) {
+        double got = 0.0;
+        for (int y : {kHeight / 2 - 1, kHeight / 2})
+            for (int x : {kWidth / 2 - 1, kWidth / 2}) {
+                const std::size_t at = (std::size_t(y) * kWidth + x) * 4 + c;
+                got += 0.25 * (sky.pixels[at] - even.pixels[at]);
+            }
+        const double expected =
+            20.0 * (miePhase(mu, 0.8) - miePhase(mu, 0.0)) * sky_->sun.horizonMie[c] * (1.0 - transmittance);
+        std::printf("[ froxels ] custom phase g 0 vs 0.8 towards the sun, channel %d: %.5g, expected %.5g\n",
+                    c, got, expected);
+        EXPECT_NEAR(got, expected, 0.01 * expected);  // measured 0.15 %
+    }
+
+    // Detail noise: 0 is the exact fog (above); 0.6 varies the fog around
+    // its value: the frame changes, stays finite, and its mean stays close.
+    s.environment.volumetricFog = {};
+    s.environment.volumetricFog.noiseAmount = 0.6;
+    s.environment.volumetricFog.noiseScaleM = 15.0;
+    const renderer::Image noisy = render(camera, s, FogMode::Volumetric, 128);
+    double meanSky = 0.0, meanNoisy = 0.0, changed = 0.0;
+    for (std::size_t i = 0; i < noisy.pixels.size(); i += 4) {
+        ASSERT_TRUE(std::isfinite(noisy.pixels[i]));
+        meanSky += sky.pixels[i + 1];
+        meanNoisy += noisy.pixels[i + 1];
+        changed = std::max(changed, double(std::abs(noisy.pixels[i + 1] - sky.pixels[i + 1]) /
+                                           std::max(sky.pixels[i + 1], 1e-3f)));
+    }
+    std::printf("[ froxels ] detail noise 0.6: mean green %.5g vs %.5g without, largest change %.3f\n",
+                meanNoisy, meanSky, changed);
+    EXPECT_GT(changed, 0.02);
+    EXPECT_NEAR(meanNoisy, meanSky, 0.1 * meanSky);
+}
+
 TEST_F(Froxels, ExtremeMediaGiveFinitePixels) {
     // Fog, volumes and emitters far beyond any preset's range (and zero):
     // every froxel's sums stay finite, so no NaN or Inf reaches a pixel.

@@ -70,6 +70,27 @@ enum class FogColourMode {
 /// the bake manifest.
 enum class FogRenderMode { Analytic, Volumetric };
 
+/// The phase of the volumetric fog's in-scattering from the light that
+/// casts the shadows: the sky's (its fog colour, as the analytic fog: the
+/// two converge) or Cornette-Shanks with the fog's own anisotropy in place
+/// of the atmosphere's Mie one (denser forward glow around the sun, or
+/// none). The analytic fog ignores it.
+enum class FogPhaseMode { Sky, Custom };
+
+/// What only the volumetric fog draws (the analytic mode ignores it; the
+/// CPU fog queries are analytic).
+struct VolumetricFogParams {
+    FogPhaseMode phase = FogPhaseMode::Sky;
+    /// Cornette-Shanks g of the fog with FogPhaseMode::Custom, -0.95..0.95. Default 0.6.
+    double anisotropy = 0.6;
+    /// Detail noise: the global fog's density times 1 + amount (2 n - 1),
+    /// n in 0..1 a smooth 3D noise of the world point (drifting with the
+    /// clouds' wind), 0..1. 0 (default) is the exact height fog.
+    double noiseAmount = 0.0;
+    /// Size of the noise's features [m], 1..1000. Default 25.
+    double noiseScaleM = 25.0;
+};
+
 struct FogVolume {
     /// Stable identifier: timeline tracks refer to it; never shown.
     std::string id;

@@ -107,6 +107,8 @@ struct Environment {
     glm::dvec3 fogColour{1.0, 1.0, 1.0};
     /// How the fog (global, volumes, emitters) is meant to be drawn.
     FogRenderMode fogRenderMode = FogRenderMode::Analytic;
+    /// The volumetric mode's own settings (ignored by the analytic fog).
+    VolumetricFogParams volumetricFog;
     /// How radiance becomes a picture: manual or automatic EV100 and a
     /// compensation keyed over the day (aerial/exposure.hpp).
     ExposureParams exposure;
