@@ -369,7 +369,7 @@ void Editor::captureWindow(int width, int height) {
 }
 
 void Editor::updateEvaluation() {
-    if (sky_.evaluate(doc_, playback_.timeHours)) edit_.validate(doc_.preset());
+    if (sky_.evaluate(doc_, edit_.pending, playback_.timeHours)) edit_.validate(doc_.preset());
 }
 
 void Editor::updateSky() {

@@ -137,7 +137,10 @@ bool Editor::savePresetTo(const std::string& path) {
         return false;
     }
     recent_.add(path);
-    setStatus("Saved " + path);
+    setStatus("Saved " + path +
+              (edit_.pending.empty() ? std::string()
+                                     : " (" + std::to_string(edit_.pending.size()) +
+                                           " unkeyed change(s) not in it: Key or Revert them)"));
     return true;
 }
 

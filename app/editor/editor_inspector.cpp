@@ -8,6 +8,7 @@
 // track sets a key at the current time (auto-key); editing one without a
 // track changes its constant value. A slider drag is one undo step.
 #include "panels.hpp"
+#include "pending_edits.hpp"
 #include "places.hpp"
 
 #include "viewport/picking.hpp"
@@ -94,14 +95,59 @@ bool editTextParam(Document& doc, const ParamRef& ref, const std::string& text, 
     return true;
 }
 
-void editParam(Document& doc, const ParamRef& ref, const double value[4], bool continuous, double timeHours) {
+std::string editParam(Document& doc, EditState& edit, const ParamRef& ref, const double value[4],
+                      bool continuous, double timeHours) {
+    const ParamDesc& p = *ref.desc;
+    // Out of the valid range: clamped, and said (setValueAt clamps the same way).
+    std::string clamped;
+    if (p.type == ParamType::Scalar || p.type == ParamType::Vec3 || p.type == ParamType::Vec2 ||
+        p.type == ParamType::Colour || p.type == ParamType::Int) {
+        const int n = p.type == ParamType::Vec3 || p.type == ParamType::Colour ? 3
+                      : p.type == ParamType::Vec2                              ? 2
+                                                                               : 1;
+        bool outside = false;
+        double shown[4] = {value[0], value[1], value[2], value[3]};
+        for (int i = 0; i < n; ++i) {
+            if (!(value[i] >= p.minValue && value[i] <= p.maxValue)) outside = true;
+            shown[i] = std::isfinite(value[i]) ? std::clamp(value[i], p.minValue, p.maxValue) : 0.0;
+        }
+        if (outside) {
+            char text[256];
+            std::string values;
+            for (int i = 0; i < n; ++i) {
+                std::snprintf(text, sizeof text, "%s%.6g", i ? " " : "", shown[i]);
+                values += text;
+            }
+            std::snprintf(text, sizeof text, "%s clamped to %s (valid %g..%g%s%s)",
+                          std::string(p.label).c_str(), values.c_str(), p.minValue, p.maxValue,
+                          p.unit.empty() ? "" : " ", std::string(p.unit).c_str());
+            clamped = text;
+        }
+    }
+    if (edit.pending.holds(doc.preset(), ref, timeHours)) {
+        edit.pending.set(ref, value, timeHours);  // auto-key off, away from a key: unkeyed
+        return clamped;
+    }
+    edit.pending.erase(ref);
     const std::string address = paramAddress(ref);
     const double time = timeHours;
     const bool animated = trackOf(doc.preset(), ref) != nullptr;
-    std::string label(ref.desc->label);
+    std::string label(p.label);
     if (animated) label += " (key)";
     doc.apply(label, continuous ? "param:" + address : std::string(),
-              [&](Preset& p) { setValueAt(p, ref, value, time); });
+              [&](Preset& preset) { setValueAt(preset, ref, value, time); });
+    return clamped;
+}
+
+void keyParamNow(Document& doc, EditState& edit, const ParamRef& ref, double timeHours) {
+    if (const PendingEdit* held = edit.pending.find(ref)) {
+        const PendingEdit e = *held;
+        doc.apply("Key " + std::string(ref.desc->label), "",
+                  [&](Preset& p) { setValueAt(p, e.ref, e.value, e.timeHours); });
+        edit.pending.erase(ref);
+        return;
+    }
+    doc.apply("Add key", "", [&](Preset& p) { keyParam(p, ref, timeHours); });
 }
 
 namespace {
@@ -135,7 +181,7 @@ bool keyButton(Document& doc, EditState& edit, const ParamRef& ref, double timeH
             const TrackTarget target = trackTargetOf(doc.preset(), ref);
             doc.apply("Remove key", "", [&](Preset& p) { removeKey(p, target, keyHere); });
         } else {
-            doc.apply("Add key", "", [&](Preset& p) { keyParam(p, ref, time); });
+            keyParamNow(doc, edit, ref, time);
         }
         edit.selectedParam = ref;
         const Track* after = trackOf(doc.preset(), ref);
@@ -144,7 +190,7 @@ bool keyButton(Document& doc, EditState& edit, const ParamRef& ref, double timeH
     return clicked;
 }
 
-void drawParam(Document& doc, EditState& edit, const ParamRef& ref, double timeHours) {
+void drawParam(Document& doc, EditState& edit, const ParamRef& ref, double timeHours, std::string& status) {
     const ParamDesc& p = *ref.desc;
     ImGui::PushID(paramAddress(ref).c_str());
     if (p.animatable)
@@ -154,21 +200,30 @@ void drawParam(Document& doc, EditState& edit, const ParamRef& ref, double timeH
     ImGui::SameLine(0.0f, 4.0f);
     const std::string label = labelOf(p);
     double v[4];
-    readValueAt(doc.preset(), ref, timeHours, v);
+    displayedValueAt(doc.preset(), edit.pending, ref, timeHours, v);
     const bool animated = trackOf(doc.preset(), ref) != nullptr;
+    const bool unkeyed = edit.pending.find(ref) != nullptr;
     const bool selected = edit.selectedParam && *edit.selectedParam == ref;
-    if (animated) ImGui::PushStyleColor(ImGuiCol_FrameBg, ImVec4(0.35f, 0.27f, 0.10f, 0.8f));
+    // Animated: amber; an unkeyed change (auto-key off): red, with Key and Revert after it.
+    if (animated)
+        ImGui::PushStyleColor(ImGuiCol_FrameBg, unkeyed ? ImVec4(0.55f, 0.16f, 0.14f, 0.9f)
+                                                        : ImVec4(0.35f, 0.27f, 0.10f, 0.8f));
     if (selected) ImGui::PushStyleColor(ImGuiCol_Border, ImVec4(0.95f, 0.75f, 0.25f, 1.0f));
     if (selected) ImGui::PushStyleVar(ImGuiStyleVar_FrameBorderSize, 1.0f);
     bool changed = false;
     bool continuous = true;
     switch (p.type) {
         case ParamType::Scalar: {
+            // A drag field: dragging changes the value relative to where it
+            // was (no jump to the click), double-click or Ctrl+click types
+            // one; typed values may leave the slider's range (up to the valid
+            // range, beyond it clamped with a message).
             double lo = p.uiMin, hi = p.uiMax;
             if (!(hi > lo)) lo = p.minValue, hi = p.maxValue;
             const ImGuiSliderFlags flags = p.logScale ? ImGuiSliderFlags_Logarithmic : 0;
+            const float speed = float((hi - lo) / 300.0);
             changed =
-                ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &v[0], &lo, &hi, "%.5g", flags);
+                ImGui::DragScalar(label.c_str(), ImGuiDataType_Double, &v[0], speed, &lo, &hi, "%.5g", flags);
             break;
         }
         case ParamType::Vec3: {
@@ -261,7 +316,10 @@ void drawParam(Document& doc, EditState& edit, const ParamRef& ref, double timeH
         if (!(edit.selectedParam && *edit.selectedParam == ref)) edit.selectedKey = -1;
         edit.selectedParam = ref;
     }
-    if (changed) editParam(doc, ref, v, continuous, timeHours);
+    if (changed) {
+        const std::string clamped = editParam(doc, edit, ref, v, continuous, timeHours);
+        if (!clamped.empty()) status = clamped;
+    }
     if (ImGui::IsItemDeactivated()) doc.closeMerge();
     if (ImGui::IsItemHovered()) {
         ImGui::BeginTooltip();
@@ -275,7 +333,18 @@ void drawParam(Document& doc, EditState& edit, const ParamRef& ref, double timeH
         if (const Track* track = trackOf(doc.preset(), ref))
             ImGui::TextDisabled("animated: %zu keys (%s)", track->keys.size(),
                                 std::string(interpolationName(track->interpolation)).c_str());
+        if (const PendingEdit* held = edit.pending.find(ref))
+            ImGui::TextColored(ImVec4(1.0f, 0.5f, 0.4f, 1.0f), "unkeyed change made at %s (auto-key off)",
+                               formatClock(held->timeHours, ClockResolution::Minutes).c_str());
         ImGui::EndTooltip();
+    }
+    if (edit.pending.find(ref)) {
+        ImGui::SameLine();
+        if (ImGui::SmallButton("Key")) keyParamNow(doc, edit, ref, timeHours);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("Key this change (auto-key is off)");
+        ImGui::SameLine();
+        if (ImGui::SmallButton("Revert")) edit.pending.erase(ref);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("Back to the animated value");
     }
     ImGui::PopID();
 }
@@ -350,7 +419,7 @@ void drawInspector(Document& doc, EditState& edit, double timeHours, const Prese
                     ImGui::TextDisabled("%s", section.c_str());
                     ImGui::Separator();
                 }
-                drawParam(doc, edit, {&p, -1}, timeHours);
+                drawParam(doc, edit, {&p, -1}, timeHours, status);
             }
             if (edit.selection.kind == Selection::Kind::Lights) {
                 drawPlacePicker(doc);
@@ -438,7 +507,7 @@ void drawInspector(Document& doc, EditState& edit, double timeHours, const Prese
             for (const ParamDesc& p : paramTable(scope)) {
                 if (p.type == ParamType::String) continue;  // id and name above
                 if (emitter && !lightning && lightningOnly(p.path)) continue;
-                drawParam(doc, edit, {&p, index}, timeHours);
+                drawParam(doc, edit, {&p, index}, timeHours, status);
             }
             if (scope == ParamScope::CloudVolume && i < state.cloudVolumes.size()) {
                 ImGui::Spacing();

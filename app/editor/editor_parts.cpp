@@ -34,6 +34,7 @@ Selection::Kind Selection::kindOf(ParamScope scope) {
 }
 
 void EditState::validate(const Preset& p) {
+    pending.validate(p);
     // An object past the end (deleted, undone): the last one of its kind, else the group above it.
     if (const ParamScope scope = selection.scope(); scope != ParamScope::Global) {
         const int count = int(objectCount(p, scope));
@@ -69,11 +70,14 @@ void Playback::advance(double dt) {
     timeHours = t;
 }
 
-bool SkyService::evaluate(const Document& doc, double timeHours) {
-    const bool recompile = !compiled || compiledRevision != doc.revision();
+bool SkyService::evaluate(const Document& doc, const PendingEdits& pending, double timeHours) {
+    const bool recompile =
+        !compiled || compiledRevision != doc.revision() || compiledPendingRevision != pending.revision();
     if (recompile) {
-        compiled = std::make_unique<CompiledPreset>(doc.preset());
+        compiled =
+            std::make_unique<CompiledPreset>(pending.empty() ? doc.preset() : pending.applied(doc.preset()));
         compiledRevision = doc.revision();
+        compiledPendingRevision = pending.revision();
     }
     compiled->evaluate(timeHours, state);
     return recompile;

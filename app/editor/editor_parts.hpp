@@ -20,6 +20,7 @@
 #include "autosave.hpp"
 #include "document.hpp"
 #include "file_dialog.hpp"
+#include "pending_edits.hpp"
 #include "preset_edit.hpp"
 #include "script.hpp"
 #include "view_exposure.hpp"
@@ -66,6 +67,8 @@ struct EditState {
     KeyClipboard keyClipboard;
     bool renaming = false;  ///< the outliner's inline rename
     std::string renameBuffer;
+    /// Auto-key and the changes not keyed yet (pending_edits.hpp).
+    PendingEdits pending;
 
     /// A volume, an emitter or a cloud volume is selected.
     bool objectSelected() const { return selection.scope() != ParamScope::Global; }
@@ -104,9 +107,11 @@ struct SkyService {
     double solveMs = 0.0;          ///< the last solve [ms]
     std::uint64_t generation = 0;  ///< counts solves (what the sky preview compares)
 
-    /// Evaluates the document's preset at `timeHours`, compiling it again
-    /// after a change. True when it was compiled again.
-    bool evaluate(const Document& doc, double timeHours);
+    std::uint64_t compiledPendingRevision = 0;
+    /// Evaluates the document's preset, with the unkeyed changes keyed
+    /// (what the artist sees), at `timeHours`, compiling it again after a
+    /// change of either. True when it was compiled again.
+    bool evaluate(const Document& doc, const PendingEdits& pending, double timeHours);
     /// Solves both tables again when the atmosphere or a light direction
     /// changed since the last solve. True when it solved.
     bool solve();

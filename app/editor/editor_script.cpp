@@ -244,6 +244,15 @@ void Editor::declareScriptCommands() {
         {"expect_dirty", 0, kAnyArgs, "expect_dirty", "the document has unsaved changes", dirtyCheck(true)});
     table.add({"expect_clean", 0, kAnyArgs, "expect_clean", "the document has no unsaved changes",
                dirtyCheck(false)});
+    table.add({"expect_status", 1, kAnyArgs, "expect_status TEXT", "TEXT is part of the status bar's message",
+               [this](W w, E error) {
+                   std::string text = w[1];
+                   for (std::size_t i = 2; i < w.size(); ++i) text += " " + w[i];
+                   if (status_.find(text) != std::string::npos) return true;
+                   error =
+                       "expect_status: the status is \"" + status_ + "\", not containing \"" + text + "\"";
+                   return false;
+               }});
     const auto promptCheck = [this](bool wantOpen) {
         return [this, wantOpen](W, E error) {
             const bool open = dialogs_.unsavedPromptShown();
@@ -280,7 +289,7 @@ void Editor::declareScriptCommands() {
                        error = "expect_param: \"" + w.back() + "\" is not a number";
                        return false;
                    }
-                   readValueAt(doc_.preset(), *ref, playback_.timeHours, have);
+                   displayedValueAt(doc_.preset(), edit_.pending, *ref, playback_.timeHours, have);
                    for (int i = 0; i < n; ++i)
                        if (!(std::abs(have[i] - want[i]) <= tol)) {
                            error = "expect_param " + w[1] + ": have " + formatValues(have, n) + ", want " +

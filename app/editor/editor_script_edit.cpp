@@ -194,8 +194,56 @@ void Editor::declareEditScriptCommands() {
                                return false;
                            }
                    }
-                   editParam(doc_, *ref, v, false, playback_.timeHours);
+                   const std::string clamped = editParam(doc_, edit_, *ref, v, false, playback_.timeHours);
+                   if (!clamped.empty()) setStatus(clamped);
                    edit_.selectedParam = ref;
+                   return true;
+               }});
+    // Auto-key and the unkeyed changes (pending_edits.hpp).
+    table.add({"autokey", 1, 1, "autokey on|off", "auto-key: every edit of an animated parameter keys it",
+               [this](W w, E error) {
+                   if (w[1] != "on" && w[1] != "off") {
+                       error = "autokey: autokey on|off";
+                       return false;
+                   }
+                   edit_.pending.autoKey = w[1] == "on";
+                   return true;
+               }});
+    const auto pendingCommand = [this, param](bool key) {
+        return [this, param, key](W w, E error) {
+            std::vector<ParamRef> refs;
+            if (w.size() > 1) {
+                const std::optional<ParamRef> ref = param(w[1], error);
+                if (!ref) return false;
+                if (!edit_.pending.find(*ref)) {
+                    error = w[0] + ": " + w[1] + " has no unkeyed change";
+                    return false;
+                }
+                refs.push_back(*ref);
+            } else {
+                for (const PendingEdit& e : edit_.pending.all()) refs.push_back(e.ref);
+            }
+            for (const ParamRef& ref : refs) {
+                if (key)
+                    keyParamNow(doc_, edit_, ref, playback_.timeHours);
+                else
+                    edit_.pending.erase(ref);
+            }
+            return true;
+        };
+    };
+    table.add({"key_pending", 0, 1, "key_pending [KEY]",
+               "key the unkeyed change of KEY (all when none is named)", pendingCommand(true)});
+    table.add({"revert_pending", 0, 1, "revert_pending [KEY]",
+               "forget the unkeyed change of KEY (all when none is named)", pendingCommand(false)});
+    table.add({"expect_pending", 1, 1, "expect_pending N", "how many unkeyed changes there are",
+               [this](W w, E error) {
+                   double n = -1;
+                   if (!toNumber(w[1], n) || double(edit_.pending.size()) != n) {
+                       error = "expect_pending: " + std::to_string(edit_.pending.size()) +
+                               " unkeyed changes, want " + w[1];
+                       return false;
+                   }
                    return true;
                }});
     const auto keyCommand = [this, param](bool add) {
@@ -208,7 +256,7 @@ void Editor::declareEditScriptCommands() {
             }
             const double t = playback_.timeHours;
             if (add) {
-                doc_.apply("Add key", "", [&](Preset& p) { keyParam(p, *ref, t); });
+                keyParamNow(doc_, edit_, *ref, t);
             } else {
                 const Track* track = trackOf(doc_.preset(), *ref);
                 const int index = track ? keyIndexAt(*track, t) : -1;

@@ -53,6 +53,27 @@ void drawTimeline(Document& doc, EditState& edit, Playback& playback, const Acti
     ImGui::SameLine();
     ImGui::Checkbox("Loop", &playback.loop);
     ImGui::SameLine();
+    // Auto-key (off by default): shown here and on the viewport; edits of an
+    // animated parameter away from its keys wait as unkeyed changes.
+    if (edit.pending.autoKey) ImGui::PushStyleColor(ImGuiCol_FrameBg, ImVec4(0.6f, 0.15f, 0.12f, 1.0f));
+    ImGui::Checkbox("Auto-key", &edit.pending.autoKey);
+    if (edit.pending.autoKey) ImGui::PopStyleColor();
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "On: editing an animated parameter writes a key at this time.\nOff: the change "
+            "waits, highlighted, until you Key or Revert it.");
+    if (!edit.pending.empty()) {
+        ImGui::SameLine();
+        ImGui::TextColored(ImVec4(1.0f, 0.5f, 0.4f, 1.0f), "%zu unkeyed", edit.pending.size());
+        ImGui::SameLine();
+        if (ImGui::SmallButton("Key all")) {
+            const std::vector<PendingEdit> all = edit.pending.all();
+            for (const PendingEdit& e : all) keyParamNow(doc, edit, e.ref, e.timeHours);
+        }
+        ImGui::SameLine();
+        if (ImGui::SmallButton("Revert all")) edit.pending.clear();
+    }
+    ImGui::SameLine();
     if (ImGui::Button("Sunrise")) playback.jumpTo(sunriseHours(where));
     ImGui::SameLine();
     if (ImGui::Button("Noon")) playback.jumpTo(solarNoonHours(where));
@@ -108,7 +129,7 @@ void drawTimeline(Document& doc, EditState& edit, Playback& playback, const Acti
         if (ImGui::Button("Key")) {
             const ParamRef ref = *edit.selectedParam;
             const double t = playback.timeHours;
-            doc.apply("Add key", "", [&](Preset& p) { keyParam(p, ref, t); });
+            keyParamNow(doc, edit, ref, t);
             if (const Track* after = trackOf(doc.preset(), ref)) edit.selectedKey = keyIndexAt(*after, t);
             track = trackOf(doc.preset(), ref);
         }

@@ -183,6 +183,14 @@ void Editor::drawViewport() {
         actions_.run("gizmo_local_axes");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Gizmo axes: world or the object's own (L)");
     ImGui::SameLine();
+    // Auto-key's state where the artist looks (and the changes it holds back).
+    if (edit_.pending.autoKey)
+        ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.3f, 1.0f), "AUTO-KEY");
+    else if (!edit_.pending.empty())
+        ImGui::TextColored(ImVec4(1.0f, 0.5f, 0.4f, 1.0f), "%zu unkeyed", edit_.pending.size());
+    else
+        ImGui::TextDisabled("auto-key off");
+    ImGui::SameLine();
     ImGui::TextDisabled("%dx%d (%d%%)  RMB orbit/fly (WASDQE), MMB pan, wheel zoom, F frame",
                         view_.renderWidth, view_.renderHeight, int(view_.resolutionScale * 100.0 + 0.5));
 

@@ -37,10 +37,19 @@ void drawInspector(Document& doc, EditState& edit, double timeHours, const Prese
 void drawTimeline(Document& doc, EditState& edit, Playback& playback, const ActionTable& actions,
                   std::string& status);
 
-/// Sets a parameter at `timeHours` as the inspector does: a key when it is
-/// animated, else its constant value. One undo step, or with `continuous`
-/// part of the step of a drag (until Document::closeMerge).
-void editParam(Document& doc, const ParamRef& ref, const double value[4], bool continuous, double timeHours);
+/// Sets a parameter at `timeHours` as the inspector does: with auto-key off
+/// an animated parameter away from its keys gets an unkeyed change
+/// (edit.pending); otherwise a key when it is animated, else its constant
+/// value, as one undo step (with `continuous` part of the step of a drag,
+/// until Document::closeMerge). Returns "" or, when a value lies outside
+/// the parameter's valid range, what it was clamped to:
+/// "<label> clamped to <value> (valid <lo>..<hi> <unit>)".
+std::string editParam(Document& doc, EditState& edit, const ParamRef& ref, const double value[4],
+                      bool continuous, double timeHours);
+/// Keys `ref` at `timeHours` (the key diamond, the script's key): its
+/// unkeyed change at the time it was made when it has one, else the value
+/// shown there. One undo step.
+void keyParamNow(Document& doc, EditState& edit, const ParamRef& ref, double timeHours);
 /// Sets a text parameter of the environment (location.date) as one undo
 /// step when the preset still validates; otherwise changes nothing and
 /// returns false with the loader's reason in `error`.

@@ -670,6 +670,56 @@ quit
     print("OK: session")
 
 
+def case_autokey(env):
+    """Auto-key off (the default): an edit of an animated parameter away from its
+    keys waits as an unkeyed change (shown, not saved) until key_pending or
+    revert_pending; with auto-key on it keys at once; a value outside the valid
+    range is clamped and the status bar says so."""
+    first, second, third = env.path("autokey_1.json"), env.path("autokey_2.json"), env.path("autokey_3.json")
+    env.run(env.script("autokey.txt", """
+new
+time 6
+set fog.density_per_m 0.01
+key fog.density_per_m
+time 12
+set fog.density_per_m 0.002
+key fog.density_per_m
+time 9
+set fog.density_per_m 0.02
+expect_pending 1
+expect_param fog.density_per_m 0.02 1e-12
+save {first}
+expect_status unkeyed
+key_pending fog.density_per_m
+expect_pending 0
+expect_param fog.density_per_m 0.02 1e-12
+time 15
+set fog.density_per_m 0.5
+expect_pending 1
+revert_pending
+expect_pending 0
+save {second}
+autokey on
+time 18
+set fog.density_per_m 0.004
+expect_pending 0
+set fog.falloff_per_m -0.05
+expect_status Fog height falloff clamped to 0 (valid 0..10 1/m)
+expect_param fog.falloff_per_m 0 0
+save {third}
+quit
+""".format(first=first, second=second, third=third)))
+    t1 = track(load_json(first), "fog.density_per_m")
+    check(key_at(t1, 9.0) is None, "the unkeyed change was saved as a key: %s" % t1["keys"])
+    t2 = track(load_json(second), "fog.density_per_m")
+    check(key_at(t2, 9.0) is not None and key_value(key_at(t2, 9.0)) == 0.02, "key_pending did not key 0.02 at 09:00")
+    check(key_at(t2, 15.0) is None, "the reverted change was keyed")
+    t3 = track(load_json(third), "fog.density_per_m")
+    check(key_at(t3, 18.0) is not None and key_value(key_at(t3, 18.0)) == 0.004, "auto-key on did not key at 18:00")
+    check(load_json(third)["fog"]["falloff_per_m"] == 0.0, "the typed -0.05 was not clamped to 0")
+    print("OK: autokey")
+
+
 CASES = {
     "session": case_session,
     "prompts": case_prompts,
@@ -680,6 +730,7 @@ CASES = {
     "exposure": case_exposure,
     "errors": case_errors,
     "cloud_volume": case_cloud_volume,
+    "autokey": case_autokey,
 }
 
 
