@@ -190,6 +190,48 @@ bool keyButton(Document& doc, EditState& edit, const ParamRef& ref, double timeH
     return clicked;
 }
 
+/// The numbers artists think in, beside the physical ones (editable): a
+/// density as the visibility distance it gives (the meteorological range
+/// 3.912 / extinction, where contrast falls to 2 %), a height falloff as the
+/// height over which the fog halves (ln 2 / falloff). Typing or dragging
+/// one sets the parameter through editParam (auto-key, clamping).
+void drawArtistReadout(Document& doc, EditState& edit, const ParamRef& ref, const double value[4],
+                       double timeHours, std::string& status) {
+    const std::string_view path = ref.desc->path;
+    const bool density =
+        path == "fog.density_per_m" || (ref.scope() == ParamScope::Volume && path == "density_per_m");
+    const bool falloff =
+        path == "fog.falloff_per_m" || (ref.scope() == ParamScope::Volume && path == "falloff_per_m");
+    if (!density && !falloff) return;
+    constexpr double kMeteorologicalRange = 3.912;  // -ln(0.02)
+    const double ln2 = std::log(2.0);
+    ImGui::Dummy(ImVec2(ImGui::GetFrameHeight() * 0.8f, ImGui::GetFrameHeight()));
+    ImGui::SameLine(0.0f, 4.0f);
+    const double physical = value[0];
+    double shown = physical > 0.0 ? (density ? kMeteorologicalRange : ln2) / physical : 0.0;
+    const char* label =
+        density ? (ref.scope() == ParamScope::Volume ? "  = visibility inside [m]" : "  = visibility [m]")
+                : "  = half-height [m]";
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.75f, 0.85f, 1.0f, 1.0f));
+    double lo = 1.0, hi = 100000.0;
+    const bool changed = ImGui::DragScalar(
+        label, ImGuiDataType_Double, &shown, float(std::max(shown, 1.0) * 0.01), &lo, &hi,
+        physical > 0.0 ? "%.0f" : (density ? "clear" : "uniform"), ImGuiSliderFlags_Logarithmic);
+    ImGui::PopStyleColor();
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "%s", density ? "How far you see through it: 3.912 / density (2 % contrast). Type or drag "
+                            "to set the density from it."
+                          : "Height over which the fog density halves: ln 2 / falloff. Type or drag "
+                            "to set the falloff from it.");
+    if (changed && shown > 0.0) {
+        double v[4] = {(density ? kMeteorologicalRange : ln2) / shown, 0, 0, 0};
+        const std::string clamped = editParam(doc, edit, ref, v, true, timeHours);
+        if (!clamped.empty()) status = clamped;
+    }
+    if (ImGui::IsItemDeactivated()) doc.closeMerge();
+}
+
 void drawParam(Document& doc, EditState& edit, const ParamRef& ref, double timeHours, std::string& status) {
     const ParamDesc& p = *ref.desc;
     ImGui::PushID(paramAddress(ref).c_str());
@@ -346,6 +388,7 @@ void drawParam(Document& doc, EditState& edit, const ParamRef& ref, double timeH
         if (ImGui::SmallButton("Revert")) edit.pending.erase(ref);
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("Back to the animated value");
     }
+    if (p.type == ParamType::Scalar) drawArtistReadout(doc, edit, ref, v, timeHours, status);
     ImGui::PopID();
 }
 
