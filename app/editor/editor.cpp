@@ -8,6 +8,7 @@
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
+#include <imgui_internal.h>  // the popup stack (closeMenusOnEscape)
 
 #include <aerial/clock.hpp>
 #include <aerial/renderer/image.hpp>
@@ -295,6 +296,7 @@ void Editor::frame() {
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
+    closeMenusOnEscape();
 
     {
         const ImGuiIO& io = ImGui::GetIO();
@@ -312,6 +314,7 @@ void Editor::frame() {
     updateSky();
 
     layout();
+    drawHelpSheet();
     drawModals();
     drawFileDialogs();
     handleShortcuts();
@@ -475,10 +478,31 @@ void Editor::drawStatusBar() {
             setStatus("Export cancelled");
         }
     }
+    // A message stays 10 s after it was last changed, then the bar clears.
+    const auto now = std::chrono::steady_clock::now();
+    if (status_ != statusShown_) {
+        statusShown_ = status_;
+        statusSince_ = now;
+    } else if (!status_.empty() && now - statusSince_ > std::chrono::seconds(10)) {
+        status_.clear();
+        statusShown_.clear();
+    }
     if (!status_.empty()) {
         ImGui::SameLine();
         ImGui::TextDisabled("|  %s", status_.c_str());
     }
+}
+
+void Editor::closeMenusOnEscape() {
+    // Escape closes open menus and popups (ImGui leaves that to keyboard
+    // navigation, which the editor keeps off); modal dialogs handle it themselves.
+    ImGuiContext& g = *GImGui;
+    if (g.OpenPopupStack.Size == 0 || !ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false)) return;
+    int keep = 0;
+    while (keep < g.OpenPopupStack.Size && g.OpenPopupStack[keep].Window &&
+           (g.OpenPopupStack[keep].Window->Flags & ImGuiWindowFlags_Modal))
+        ++keep;
+    if (keep < g.OpenPopupStack.Size) ImGui::ClosePopupToLevel(keep, true);
 }
 
 void Editor::setStatus(std::string text) { status_ = std::move(text); }

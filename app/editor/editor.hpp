@@ -131,6 +131,12 @@ private:
     void runPending();
     void askUnsaved(Pending action, std::string path);
     void resolveUnsaved(UnsavedChoice choice);
+    /// Shows why a preset cannot be opened (the loader's errors; nothing changes).
+    /// Help > Keys and workflow (F1).
+    void drawHelpSheet();
+    /// Escape closes open menus and popups (not modal dialogs).
+    void closeMenusOnEscape();
+    void reportLoadFailure(const std::string& path, const PresetLoadResult& result);
     bool openPreset(const std::string& path);    ///< error modal on failure
     bool savePresetTo(const std::string& path);  ///< error modal on failure
     void saveOrSaveAs(bool forceDialog);
@@ -176,6 +182,8 @@ private:
     std::string sessionFile_;
     GameExport export_;
     std::string status_;
+    std::string statusShown_;                              ///< status_ as last drawn
+    std::chrono::steady_clock::time_point statusSince_{};  ///< when it last changed
 
     // Every user action, and the script language.
     ActionTable actions_;

@@ -218,6 +218,11 @@ void Editor::declareActions() {
         .enabledWhen(objectSelected, needsObject("frame"))
         .does([this] { frameSelection(); });
 
+    // --- Help --------------------------------------------------------------------------
+    t.add("help_sheet", "Keys and workflow", "Help").key(GLFW_KEY_F1).scriptable().does([this] {
+        dialogs_.showHelp = !dialogs_.showHelp;
+    });
+
     // --- Keys only -----------------------------------------------------------------
     t.add("play_pause", "Play / pause").key(GLFW_KEY_SPACE).does([this] {
         playback_.playing = !playback_.playing;
@@ -236,7 +241,7 @@ void Editor::declareActions() {
 
 void Editor::drawMenuBar() {
     if (!ImGui::BeginMainMenuBar()) return;
-    for (const char* menu : {"File", "Edit", "Create", "View"}) {
+    for (const char* menu : {"File", "Edit", "Create", "View", "Help"}) {
         if (!ImGui::BeginMenu(menu)) continue;
         for (const Action& a : actions_.all()) {
             if (a.menu != menu) continue;
@@ -254,6 +259,60 @@ void Editor::drawMenuBar() {
         ImGui::EndMenu();
     }
     ImGui::EndMainMenuBar();
+}
+
+void Editor::drawHelpSheet() {
+    if (!dialogs_.showHelp) return;
+    ImGui::SetNextWindowSize(ImVec2(560, 520), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_FirstUseEver,
+                            ImVec2(0.5f, 0.5f));
+    if (!ImGui::Begin("Aerial: keys and workflow (F1)", &dialogs_.showHelp)) {
+        ImGui::End();
+        return;
+    }
+    ImGui::TextWrapped(
+        "1. Pick an hour on the timeline (drag the ruler, Sunrise / Noon / Sunset, or type HH:MM) and look.\n"
+        "2. Select what to change in the outliner (Atmosphere, Sun & moon, Global fog, Exposure, Clouds, "
+        "volumes, emitters) or click it in the viewport; add volumes and emitters with the + buttons or "
+        "Create.\n"
+        "3. Change it in the inspector: drag a field, or double-click / Ctrl+click it to type. Beside "
+        "density "
+        "and falloff you can set the visibility and the half-height instead.\n"
+        "4. Animate: the diamond keys a parameter at this hour. With Auto-key off (the default) a change of "
+        "an animated parameter between keys waits, red, until you Key or Revert it.\n"
+        "5. Play the day (Space), look at dawn, noon, dusk and night, then Save (Ctrl+S) and File > Export "
+        "for game.");
+    ImGui::Separator();
+    if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY)) {
+        ImGui::TableSetupColumn("Command");
+        ImGui::TableSetupColumn("Keys", ImGuiTableColumnFlags_WidthFixed, 150.0f);
+        ImGui::TableHeadersRow();
+        for (const Action& a : actions_.all()) {
+            if (a.keys.empty()) continue;
+            ImGui::TableNextRow();
+            ImGui::TableSetColumnIndex(0);
+            ImGui::TextUnformatted((a.menu.empty() ? a.label : a.menu + " > " + a.label).c_str());
+            ImGui::TableSetColumnIndex(1);
+            std::string keys;
+            for (const Shortcut& k : a.keys) keys += (keys.empty() ? "" : ", ") + shortcutText(k);
+            ImGui::TextUnformatted(keys.c_str());
+        }
+        const char* mouse[][2] = {{"Orbit / fly (with W A S D Q E)", "right drag"},
+                                  {"Orbit", "Alt + left drag"},
+                                  {"Pan", "middle drag"},
+                                  {"Zoom", "wheel"},
+                                  {"Select", "click in the viewport"},
+                                  {"Gizmo snapping", "Ctrl while dragging"}};
+        for (const auto& row : mouse) {
+            ImGui::TableNextRow();
+            ImGui::TableSetColumnIndex(0);
+            ImGui::TextUnformatted(row[0]);
+            ImGui::TableSetColumnIndex(1);
+            ImGui::TextUnformatted(row[1]);
+        }
+        ImGui::EndTable();
+    }
+    ImGui::End();
 }
 
 void Editor::handleShortcuts() {

@@ -72,7 +72,23 @@ void Editor::requestOpen(const std::string& path) {
             doc_.path().empty() ? std::string() : fs::path(doc_.path()).parent_path().string());
         return;
     }
+    // A file that cannot be loaded is said at once: no save-or-discard
+    // question about the current work first.
+    const PresetLoadResult probe = loadPreset(path);
+    if (!probe.ok()) {
+        reportLoadFailure(path, probe);
+        return;
+    }
     askUnsaved(Pending::Open, path);
+}
+
+void Editor::reportLoadFailure(const std::string& path, const PresetLoadResult& result) {
+    std::string text;
+    for (const PresetIssue& e : result.errors) text += issueText(e) + "\n";
+    if (result.errors.empty()) text = path + ": cannot be loaded\n";
+    showError("Cannot open " + path + " (nothing was changed):", text);
+    std::error_code ec;
+    if (!fs::exists(path, ec)) recent_.remove(fs::absolute(path, ec).lexically_normal().string());
 }
 
 void Editor::requestQuit() { askUnsaved(Pending::Quit, {}); }
@@ -104,12 +120,7 @@ void Editor::runPending() {
 bool Editor::openPreset(const std::string& path) {
     const PresetLoadResult result = doc_.open(path);
     if (!result.ok()) {
-        std::string text;
-        for (const PresetIssue& e : result.errors) text += issueText(e) + "\n";
-        if (result.errors.empty()) text = path + ": cannot be loaded\n";
-        showError("Cannot open " + path + " (nothing was changed):", text);
-        std::error_code ec;
-        if (!fs::exists(path, ec)) recent_.remove(fs::absolute(path, ec).lexically_normal().string());
+        reportLoadFailure(path, result);
         return false;
     }
     recent_.add(path);
@@ -206,7 +217,7 @@ void Editor::drawFileDialogs() {
         const std::string path = dialogs_.fileDialog.result();
         switch (dialogs_.purpose) {
             case DialogPurpose::Open:
-                askUnsaved(Pending::Open, path);
+                requestOpen(path);
                 break;
             case DialogPurpose::SaveAs:
                 if (savePresetTo(path) && dialogs_.continueAfterSave) runPending();

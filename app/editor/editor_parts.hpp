@@ -190,6 +190,7 @@ enum class DialogPurpose { None, Open, SaveAs, Scene, Screenshot, Export };
 
 /// Modals, prompts and the file dialog.
 struct Dialogs {
+    bool showHelp = false;  ///< Help > Keys and workflow (F1)
     std::string errorTitle, errorText;
     bool openErrorModal = false;
     Pending pending = Pending::None;

@@ -548,6 +548,19 @@ expect_param fog.falloff_per_m 0.07 0
 quit
 """.format(bad=bad)))
     check(re.search(r"out_of_range\.json:\d+:\d+: /", p.stdout), "the load errors lack file:line:col: /pointer")
+    # Dropping a broken preset over unsaved work says why at once, without
+    # asking to save or discard first.
+    p = env.run(env.script("drop_bad.txt", """
+set fog.falloff_per_m 0.07
+drop {bad}
+wait_frames 2
+expect_no_prompt
+expect_dirty
+expect_param fog.falloff_per_m 0.07 0
+quit
+""".format(bad=bad)))
+    check("Cannot open" in p.stderr and "out_of_range.json" in p.stderr,
+          "dropping a broken preset did not say why:\n" + p.stderr[-2000:])
 
     # The date: a real one is set and saved; an impossible one is refused with
     # the loader's reason and changes nothing.
