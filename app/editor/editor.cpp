@@ -193,6 +193,14 @@ std::optional<int> Editor::initialise() {
     view_.viewName = session_.view;
     view_.exposureEv = session_.exposureEv;
     view_.resolutionScale = session_.resolutionScale;
+    view_.showOutliner = session_.showOutliner;
+    view_.showInspector = session_.showInspector;
+    view_.showTimeline = session_.showTimeline;
+    view_.maximized = session_.maximized;
+    view_.gameView = session_.gameView;
+    view_.outlinerWidth = float(session_.outlinerWidth);
+    view_.inspectorWidth = float(session_.inspectorWidth);
+    view_.timelineHeight = float(session_.timelineHeight);
     playback_.timeHours = options_.script.empty() ? session_.timeHours : 9.0;  // scripts start at 09:00
     rebuildDisplay();
 
@@ -262,6 +270,14 @@ int Editor::run() {
         session_.exposureEv = view_.exposureEv;
         session_.resolutionScale = view_.resolutionScale;
         session_.timeHours = playback_.timeHours;
+        session_.showOutliner = view_.showOutliner;
+        session_.showInspector = view_.showInspector;
+        session_.showTimeline = view_.showTimeline;
+        session_.maximized = view_.maximized;
+        session_.gameView = view_.gameView;
+        session_.outlinerWidth = view_.outlinerWidth;
+        session_.inspectorWidth = view_.inspectorWidth;
+        session_.timelineHeight = view_.timelineHeight;
         session_.save(sessionFile_);
     }
     if (autosave_) autosave_->finish();
@@ -387,30 +403,48 @@ void Editor::layout() {
     drawMenuBar();
     const float menuH = ImGui::GetFrameHeight();
     const float statusH = ImGui::GetFrameHeight() + 4.0f;
-    const float timelineH = std::clamp(h * 0.28f, 110.0f, 280.0f);
-    const float leftW = std::clamp(w * 0.17f, 120.0f, 280.0f);
-    const float rightW = std::clamp(w * 0.28f, 180.0f, 440.0f);
+    // Panel sizes: the splitters' (remembered in the session), else a share
+    // of the window; hidden panels (View, or Maximize viewport) take none.
+    const bool outliner = view_.showOutliner && !view_.maximized;
+    const bool inspector = view_.showInspector && !view_.maximized;
+    const bool timeline = view_.showTimeline && !view_.maximized;
+    auto size = [](float chosen, float share, float lo, float hi) {
+        return std::clamp(chosen > 0.0f ? chosen : share, lo, std::max(lo, hi));
+    };
+    const float timelineH =
+        timeline ? size(view_.timelineHeight, std::clamp(h * 0.28f, 110.0f, 280.0f), 60.0f, h * 0.6f) : 0.0f;
+    const float leftW =
+        outliner ? size(view_.outlinerWidth, std::clamp(w * 0.17f, 120.0f, 280.0f), 100.0f, w * 0.35f) : 0.0f;
+    const float rightW =
+        inspector ? size(view_.inspectorWidth, std::clamp(w * 0.28f, 180.0f, 440.0f), 160.0f, w * 0.45f)
+                  : 0.0f;
     const float middleH = std::max(60.0f, h - menuH - statusH - timelineH);
     const ImGuiWindowFlags fixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
                                    ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
                                    ImGuiWindowFlags_NoBringToFrontOnFocus;
 
-    ImGui::SetNextWindowPos(ImVec2(0, menuH));
-    ImGui::SetNextWindowSize(ImVec2(leftW, middleH));
-    if (ImGui::Begin("Outliner", nullptr, fixed)) {
-        drawOutliner(doc_, edit_, actions_, [this](Selection s) { select(s); });
-        drawSkyPreview(skyPreview_, sky_, view_, frames_.frameIndex);
+    if (outliner) {
+        ImGui::SetNextWindowPos(ImVec2(0, menuH));
+        ImGui::SetNextWindowSize(ImVec2(leftW, middleH));
+        if (ImGui::Begin("Outliner", nullptr, fixed)) {
+            drawOutliner(doc_, edit_, actions_, [this](Selection s) { select(s); });
+            drawSkyPreview(skyPreview_, sky_, view_, frames_.frameIndex);
+        }
+        ImGui::End();
     }
-    ImGui::End();
 
-    ImGui::SetNextWindowPos(ImVec2(w - rightW, menuH));
-    ImGui::SetNextWindowSize(ImVec2(rightW, middleH));
-    if (ImGui::Begin("Inspector", nullptr, fixed))
-        drawInspector(doc_, edit_, playback_.timeHours, sky_.state, actions_, status_);
-    ImGui::End();
+    if (inspector) {
+        ImGui::SetNextWindowPos(ImVec2(w - rightW, menuH));
+        ImGui::SetNextWindowSize(ImVec2(rightW, middleH));
+        if (ImGui::Begin("Inspector", nullptr, fixed))
+            drawInspector(doc_, edit_, playback_.timeHours, sky_.state, actions_, status_);
+        ImGui::End();
+    }
 
+    view_.windowWidth = std::max(10.0f, w - leftW - rightW);
+    view_.windowHeight = middleH;
     ImGui::SetNextWindowPos(ImVec2(leftW, menuH));
-    ImGui::SetNextWindowSize(ImVec2(std::max(10.0f, w - leftW - rightW), middleH));
+    ImGui::SetNextWindowSize(ImVec2(view_.windowWidth, middleH));
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
     if (ImGui::Begin("Viewport", nullptr,
                      fixed | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse))
@@ -420,11 +454,43 @@ void Editor::layout() {
     ImGui::End();
     ImGui::PopStyleVar();
 
-    ImGui::SetNextWindowPos(ImVec2(0, menuH + middleH));
-    ImGui::SetNextWindowSize(ImVec2(w, timelineH));
-    if (ImGui::Begin("Timeline", nullptr, fixed | ImGuiWindowFlags_NoScrollbar))
-        drawTimeline(doc_, edit_, playback_, actions_, status_);
-    ImGui::End();
+    if (timeline) {
+        ImGui::SetNextWindowPos(ImVec2(0, menuH + middleH));
+        ImGui::SetNextWindowSize(ImVec2(w, timelineH));
+        if (ImGui::Begin("Timeline", nullptr, fixed | ImGuiWindowFlags_NoScrollbar))
+            drawTimeline(doc_, edit_, playback_, actions_, status_);
+        ImGui::End();
+    }
+
+    // Splitters: drag the borders between the panels (remembered).
+    auto splitter = [&](const char* id, ImVec2 pos, ImVec2 extent, bool vertical, float& value, float current,
+                        float sign) {
+        ImGui::SetNextWindowPos(pos);
+        ImGui::SetNextWindowSize(extent);
+        ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
+        ImGui::Begin(id, nullptr,
+                     fixed | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoBackground |
+                         ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoFocusOnAppearing);
+        ImGui::InvisibleButton("##drag", extent);
+        if (ImGui::IsItemHovered() || ImGui::IsItemActive())
+            ImGui::SetMouseCursor(vertical ? ImGuiMouseCursor_ResizeEW : ImGuiMouseCursor_ResizeNS);
+        if (ImGui::IsItemActive()) {
+            const float delta = vertical ? ImGui::GetIO().MouseDelta.x : ImGui::GetIO().MouseDelta.y;
+            value = current + sign * delta;
+        }
+        ImGui::End();
+        ImGui::PopStyleVar();
+    };
+    constexpr float kGrip = 6.0f;
+    if (outliner)
+        splitter("##split_left", ImVec2(leftW - kGrip * 0.5f, menuH), ImVec2(kGrip, middleH), true,
+                 view_.outlinerWidth, leftW, 1.0f);
+    if (inspector)
+        splitter("##split_right", ImVec2(w - rightW - kGrip * 0.5f, menuH), ImVec2(kGrip, middleH), true,
+                 view_.inspectorWidth, rightW, -1.0f);
+    if (timeline)
+        splitter("##split_bottom", ImVec2(0, menuH + middleH - kGrip * 0.5f), ImVec2(w, kGrip), false,
+                 view_.timelineHeight, timelineH, -1.0f);
 
     ImGui::SetNextWindowPos(ImVec2(0, h - statusH));
     ImGui::SetNextWindowSize(ImVec2(w, statusH));

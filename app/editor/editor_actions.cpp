@@ -174,6 +174,18 @@ void Editor::declareActions() {
         bool* f = &flag;
         a.checkedWhen([f] { return *f; }).does([f] { *f = !*f; });
     };
+    t.add("maximize_viewport", "Maximize viewport", "View")
+        .key(GLFW_KEY_F11)
+        .separated()
+        .checkedWhen([this] { return view_.maximized; })
+        .does([this] { view_.maximized = !view_.maximized; });
+    t.add("game_view", "Game view (no helpers)", "View")
+        .key(GLFW_KEY_G)
+        .checkedWhen([this] { return view_.gameView; })
+        .does([this] { view_.gameView = !view_.gameView; });
+    toggle("show_outliner", "Outliner", view_.showOutliner);
+    toggle("show_inspector", "Inspector", view_.showInspector);
+    toggle("show_timeline", "Timeline", view_.showTimeline);
     toggle("show_helpers", "Helpers (outlines, icons, gizmo)", view_.showHelpers, true);
     toggle("show_grid", "Ground grid", view_.showGrid);
     toggle("pass_sky", "Sky", view_.passes.sky, true);

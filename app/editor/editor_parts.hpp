@@ -137,6 +137,18 @@ struct ViewportState {
     std::chrono::steady_clock::time_point lastExposureStep{};
     double resolutionScale = 0.5;
     bool showHelpers = true;
+    /// View > Game view (G): the picture as the game shows it, no helpers.
+    bool gameView = false;
+    /// View > Maximize viewport: the side panels and the timeline hidden.
+    bool maximized = false;
+    /// Which panels show, and their sizes [px] (0: the default share of the
+    /// window); the splitters between them set the sizes.
+    bool showOutliner = true, showInspector = true, showTimeline = true;
+    float outlinerWidth = 0.0f, inspectorWidth = 0.0f, timelineHeight = 0.0f;
+    /// The outlines, icons, gizmo and grid are drawn.
+    bool helpersShown() const { return showHelpers && !gameView; }
+    /// Size of the viewport's window [px] (print_viewport).
+    float windowWidth = 0.0f, windowHeight = 0.0f;
     bool showGrid = false;
     renderer::RenderPasses passes;
     /// View > Fog: as the preset says (its fog.render_mode, the default),

@@ -199,6 +199,28 @@ void Editor::declareEditScriptCommands() {
                    edit_.selectedParam = ref;
                    return true;
                }});
+    // The window's layout.
+    const auto onOff = [this](const char* name, bool ViewportState::*flag) {
+        return [this, name, flag](W w, E error) {
+            if (w[1] != "on" && w[1] != "off") {
+                error = std::string(name) + ": " + name + " on|off";
+                return false;
+            }
+            view_.*flag = w[1] == "on";
+            return true;
+        };
+    };
+    table.add({"maximize_viewport", 1, 1, "maximize_viewport on|off", "hide the side panels and the timeline",
+               onOff("maximize_viewport", &ViewportState::maximized)});
+    table.add({"game_view", 1, 1, "game_view on|off", "the picture without helpers (G)",
+               onOff("game_view", &ViewportState::gameView)});
+    table.add({"print_viewport", 0, 0, "print_viewport", "prints \"viewport WxH\" (the viewport's window)",
+               [this](W, E) {
+                   std::printf("viewport %dx%d\n", int(std::lround(view_.windowWidth)),
+                               int(std::lround(view_.windowHeight)));
+                   std::fflush(stdout);
+                   return true;
+               }});
     // Auto-key and the unkeyed changes (pending_edits.hpp).
     table.add({"autokey", 1, 1, "autokey on|off", "auto-key: every edit of an animated parameter keys it",
                [this](W w, E error) {

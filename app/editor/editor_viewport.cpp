@@ -191,8 +191,16 @@ void Editor::drawViewport() {
     else
         ImGui::TextDisabled("auto-key off");
     ImGui::SameLine();
-    ImGui::TextDisabled("%dx%d (%d%%)  RMB orbit/fly (WASDQE), MMB pan, wheel zoom, F frame",
-                        view_.renderWidth, view_.renderHeight, int(view_.resolutionScale * 100.0 + 0.5));
+    // The badge: how the picture is made (display view, exposure, resolution).
+    ImGui::TextDisabled("%s | EV100 %.1f%+.1f | %dx%d (%d%%)%s",
+                        view_.display ? view_.display->view().c_str() : "-", view_.exposure.ev100(),
+                        sky_.state.environment.exposure.compensationEv + view_.exposureEv, view_.renderWidth,
+                        view_.renderHeight, int(view_.resolutionScale * 100.0 + 0.5),
+                        view_.gameView ? " | game view" : "");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "RMB orbit/fly (WASDQE), Alt+LMB orbit, MMB pan, wheel zoom, F frame the selection,\n"
+            "G game view, F11 maximize, F1 keys and workflow");
 
     const ImVec2 avail = ImGui::GetContentRegionAvail();
     const ImVec2 origin = ImGui::GetCursorScreenPos();
@@ -325,7 +333,7 @@ void Editor::viewportInteraction(bool hovered, glm::dvec2 mouse, glm::dvec2 orig
     const renderer::CameraFrame frame = viewportCameraFrame();
     bool gizmoOwnsMouse = false;
     GizmoTransform transform;
-    const bool haveTransform = view_.showHelpers && gizmoTransformOfSelection(transform);
+    const bool haveTransform = view_.helpersShown() && gizmoTransformOfSelection(transform);
     const GizmoMode mode =
         edit_.selection.kind == Selection::Kind::Emitter ? GizmoMode::Translate : view_.gizmoMode;
     if (haveTransform) {
@@ -359,7 +367,7 @@ void Editor::viewportInteraction(bool hovered, glm::dvec2 mouse, glm::dvec2 orig
     // The cloud volume under the mouse (outlined): cloud volumes fill the view, so
     // only the selected and the hovered one are drawn.
     int hoveredCloudVolume = -1;
-    if (view_.showHelpers && !sky_.state.cloudVolumes.empty() && in.hovered && !gizmoOwnsMouse &&
+    if (view_.helpersShown() && !sky_.state.cloudVolumes.empty() && in.hovered && !gizmoOwnsMouse &&
         !view_.gizmo.active() && !scripted) {
         const Ray ray = rayThroughPixel(frame, gi.mouse, view_.size);
         const double iconRadius = angularRadiusOfPixels(frame, view_.size.y, 10.0);
@@ -368,7 +376,7 @@ void Editor::viewportInteraction(bool hovered, glm::dvec2 mouse, glm::dvec2 orig
         if (hit.kind == PickHit::Kind::CloudVolume) hoveredCloudVolume = hit.index;
     }
 
-    if (!view_.showHelpers) return;
+    if (!view_.helpersShown()) return;
     ImDrawList* dl = ImGui::GetWindowDrawList();
     dl->PushClipRect(ImVec2(float(origin.x), float(origin.y)),
                      ImVec2(float(origin.x + view_.size.x), float(origin.y + view_.size.y)), true);

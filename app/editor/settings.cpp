@@ -98,6 +98,26 @@ void Session::load(const std::string& file) {
     number("exposure_ev", exposureEv, -30.0, 30.0);
     number("resolution_scale", resolutionScale, 0.125, 1.0);
     number("time_h", timeHours, 0.0, 23.999);
+    if (json.contains("layout") && json["layout"].is_object()) {
+        const nlohmann::json& layout = json["layout"];
+        auto flag = [&](const char* key, bool& out) {
+            if (layout.contains(key) && layout[key].is_boolean()) out = layout[key].get<bool>();
+        };
+        auto size = [&](const char* key, double& out) {
+            if (layout.contains(key) && layout[key].is_number()) {
+                const double v = layout[key].get<double>();
+                if (std::isfinite(v)) out = std::clamp(v, 0.0, 10000.0);
+            }
+        };
+        flag("outliner", showOutliner);
+        flag("inspector", showInspector);
+        flag("timeline", showTimeline);
+        flag("maximized", maximized);
+        flag("game_view", gameView);
+        size("outliner_width", outlinerWidth);
+        size("inspector_width", inspectorWidth);
+        size("timeline_height", timelineHeight);
+    }
 }
 
 bool Session::save(const std::string& file) const {
@@ -105,7 +125,16 @@ bool Session::save(const std::string& file) const {
                            {"view", view},
                            {"exposure_ev", exposureEv},
                            {"resolution_scale", resolutionScale},
-                           {"time_h", timeHours}};
+                           {"time_h", timeHours},
+                           {"layout",
+                            {{"outliner", showOutliner},
+                             {"inspector", showInspector},
+                             {"timeline", showTimeline},
+                             {"maximized", maximized},
+                             {"game_view", gameView},
+                             {"outliner_width", outlinerWidth},
+                             {"inspector_width", inspectorWidth},
+                             {"timeline_height", timelineHeight}}}};
     if (!cameraJson.empty()) {
         nlohmann::json camera = nlohmann::json::parse(cameraJson, nullptr, false);
         if (camera.is_object()) json["camera"] = camera;

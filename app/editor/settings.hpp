@@ -39,6 +39,11 @@ struct Session {
     double exposureEv = 0.0;
     double resolutionScale = 0.5;
     double timeHours = 9.0;
+    /// The window's layout: panels shown, their sizes [px] (0: default),
+    /// Maximize viewport and Game view.
+    bool showOutliner = true, showInspector = true, showTimeline = true;
+    double outlinerWidth = 0.0, inspectorWidth = 0.0, timelineHeight = 0.0;
+    bool maximized = false, gameView = false;
 
     /// Reads `file`; missing or malformed fields keep their values.
     void load(const std::string& file);

@@ -680,6 +680,25 @@ quit
     p = env.run(env.script("restore.txt", "print_camera\nquit\n"))
     restored = json.loads(re.findall(r"^camera (\{.*\})$", p.stdout, re.M)[0])
     check(restored == after, "the camera was not restored: %s, want %s" % (restored, after))
+    # Room for the picture: Maximize viewport gives it the window's width and
+    # the timeline's height, Game view hides the helpers; both are kept.
+    p = env.run(env.script("layout.txt", """
+wait_frames 2
+print_viewport
+maximize_viewport on
+game_view on
+wait_frames 2
+print_viewport
+quit
+"""))
+    sizes = [tuple(map(int, m)) for m in re.findall(r"^viewport (\d+)x(\d+)$", p.stdout, re.M)]
+    check(len(sizes) == 2, "print_viewport printed %s" % sizes)
+    check(sizes[1][0] == 640 and sizes[1][0] > sizes[0][0] and sizes[1][1] > sizes[0][1],
+          "maximizing did not give the viewport the window: %s -> %s" % (sizes[0], sizes[1]))
+    layout = load_json(os.path.join(env.config, "session.json"))["layout"]
+    check(layout["maximized"] and layout["game_view"], "the layout was not kept: %s" % layout)
+    p = env.run(env.script("layout_back.txt", "wait_frames 2\nprint_viewport\nmaximize_viewport off\ngame_view off\nquit\n"))
+    check(re.search(r"^viewport 640x", p.stdout, re.M), "the maximized layout was not restored:\n" + p.stdout)
     print("OK: session")
 
 
