@@ -40,6 +40,9 @@
 //     cuts (sun below the horizon) adds its lit part only (shadowEdgeLayers):
 //     the optical depth at the edge is that of the ray grazing the ground,
 //     falling log-linearly to the lit shell's, integrated in closed form.
+//  Rows are at the elevations of the table's row mapping for this light
+//  (setSkyTableMapping, <aerial/sky.hpp>): for a low or set sun they crowd
+//  towards the horizon and the edge of the earth's shadow opposite the sun.
 //
 // Threads: a persistent pool made in the constructor (worker_pool.hpp); one
 // dispatch per solve (table rows first, then sky rows, pulled from an atomic
@@ -169,8 +172,9 @@ struct SkySolver::Impl {
     // Light-dependent state.
     glm::dvec3 light{0.0, 1.0, 0.0};
     double lightAzimuth = 0.0, sinLight = 1.0, cosLight = 0.0;
-    std::vector<double> cosPhi;  // [columns]
-    std::vector<float> cosPhiF;  // [padded columns]
+    std::vector<double> cosPhi;        // [columns]
+    std::vector<double> rowElevation;  // [elevationCount] the rows' elevations (the table's mapping)
+    std::vector<float> cosPhiF;        // [padded columns]
 
     // Double-buffered output: tables[front] is published.
     SkyTable tables[2];
@@ -231,6 +235,7 @@ SkySolver::Impl::Impl(const SkySolverDesc& d) : desc(d) {
     angleScale.assign(std::size_t(layers) + 1, 0.0f);
     depth.assign(std::size_t(3) * (layers + 1) * angles, 0.0f);
     cosPhi.assign(std::size_t(columns), 1.0);
+    rowElevation.assign(std::size_t(elevationCount), 0.0);
     cosPhiF.assign(std::size_t(paddedColumns), 1.0f);  // padding: a harmless direction
     for (SkyTable& t : tables) {
         t.azimuthCount = azimuthCount;
@@ -347,8 +352,7 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
     const double rg = air.planetRadius;
     const double h0 = shellHeight[0];
     const double r0 = rg + h0;
-    const double v = elevationCount > 1 ? double(row) / (elevationCount - 1) : 0.0;
-    const double elevation = 0.5 * kPi * v * v;
+    const double elevation = rowElevation[std::size_t(row)];
     const double sinEl = row == elevationCount - 1 ? 1.0 : std::sin(elevation);
     const double cosEl = row == elevationCount - 1 ? 0.0 : std::cos(elevation);
 
@@ -679,6 +683,9 @@ void SkySolver::Impl::setLight(const glm::dvec3& direction) {
     SkyTable& back = tables[1 - front];
     back.lightDirection = light;
     back.lightAzimuth = lightAzimuth;
+    setSkyTableMapping(back, air, light);
+    for (int j = 0; j < elevationCount; ++j)
+        rowElevation[std::size_t(j)] = skyTableElevation(back, double(j));
 }
 
 // Horizon averages (row 0, all columns, equal weights) and the swap.
