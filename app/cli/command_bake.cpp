@@ -13,7 +13,9 @@
 //       pixel (x, y) = table texel (column i = x, row j = y): the first line
 //       (y = 0) is the horizon, the last the zenith. Header attributes:
 //       aerialLight ("sun"/"moon"), aerialTimeHours, aerialLightAzimuthRad,
-//       aerialLightDirection (V3d), aerialMapping (the mapping in words),
+//       aerialLightDirection (V3d), aerialMapping (the mapping in words) and
+//       the row mapping's parameters (aerialBandElevationRad, aerialBandShare,
+//       aerialShadowElevationRad, aerialShadowWidthRad, aerialShadowShare),
 //       aerialMieAnisotropy, aerialLightIlluminance (V3d, above the
 //       atmosphere) and aerialRadiance (how to turn a texel into radiance).
 //   sky_<NNN>_<HHMM>_radiance.exr
@@ -26,13 +28,14 @@
 //       format, preset, steps and table mapping, and for every step: the
 //       time, the full evaluated state (sun, moon, every parameter, volumes,
 //       emitters, cloud volumes: as `aerial eval --json`) and per light its EXR file name,
-//       light direction and azimuth, and horizon averages (the fog colour);
+//       light direction and azimuth, row mapping, and horizon averages (the fog colour);
 //       how to expose a frame as the preset says ("exposure"); the clouds'
 //       noise seed and, when the preset has clouds, the FNV-1a fingerprint
 //       of the texels aerial::cloudNoise(seed) gives ("clouds").
 //
 // Radiance in a world direction v (unit): for each light,
-//   el = asin(max(v.y, 0)), j = (H - 1) sqrt(el / (pi/2))   (quadratic rows)
+//   el = asin(max(v.y, 0)), j = (H - 1) v(el)   (v: the row mapping, kRowMapping;
+//                                                  (H - 1) sqrt(el / (pi/2)) above 1 deg)
 //   phi = (atan2(v.x, -v.z) - light_azimuth_rad) mod 2 pi,  i = W phi / (2 pi)
 //   I_R, I_M, I_ms = bilinear(i, j), the azimuth wrapping;  mu = dot(v, light)
 //   L += E (3/(16 pi) (1 + mu^2) I_R + P_CS(mu, g) I_M + I_ms),
@@ -107,8 +110,15 @@ constexpr const char* kChannelNames[kChannelCount] = {"rayleigh.R", "rayleigh.G"
                                                       "multiple.R", "multiple.G", "multiple.B"};
 
 constexpr const char* kRowMapping =
-    "row j = EXR line y (y = 0 first) holds elevation el_j = pi/2 * (j / (H - 1))^2 rad above the horizon "
-    "(quadratic: more rows near the horizon); directions below the horizon use row 0";
+    "row j = EXR line y (y = 0 first) holds the elevation el_j [rad] above the horizon where v(el_j) = "
+    "j / (H - 1), v(el) = (1 - a - b) sqrt(el / (pi/2)) + a atan(el / E) / atan(pi/2 / E) + "
+    "b (atan((el - c) / w) - atan(-c / w)) / (atan((pi/2 - c) / w) - atan(-c / w)), with E = "
+    "band_elevation_rad, a = band_share, c = shadow_elevation_rad, w = shadow_width_rad, b = shadow_share "
+    "(row_mapping per step and light; EXR header aerialBandElevationRad, aerialBandShare, "
+    "aerialShadowElevationRad, aerialShadowWidthRad, aerialShadowShare; a term is absent when its share "
+    "is 0). A light above 1 deg has a = b = 0: el_j = pi/2 * (j / (H - 1))^2 (quadratic: more rows near "
+    "the horizon); a low or set light crowds rows towards the horizon and the earth's shadow. Directions "
+    "below the horizon use row 0";
 constexpr const char* kColumnMapping =
     "column i = EXR pixel x holds the azimuth relative to the light phi_i = 2 pi i / W rad, measured from "
     "the "
@@ -172,6 +182,11 @@ void writeSkyExr(const fs::path& path, const SkyTable& table, const char* light,
                                                        table.lightDirection.z)));
             header.insert("aerialMapping",
                           Imf::StringAttribute(std::string(kRowMapping) + "; " + kColumnMapping));
+            header.insert("aerialBandElevationRad", Imf::DoubleAttribute(table.bandElevation));
+            header.insert("aerialBandShare", Imf::DoubleAttribute(table.bandShare));
+            header.insert("aerialShadowElevationRad", Imf::DoubleAttribute(table.shadowElevation));
+            header.insert("aerialShadowWidthRad", Imf::DoubleAttribute(table.shadowWidth));
+            header.insert("aerialShadowShare", Imf::DoubleAttribute(table.shadowShare));
             header.insert("aerialMieAnisotropy", Imf::DoubleAttribute(mieAnisotropy));
             header.insert(
                 "aerialLightIlluminance",
@@ -280,6 +295,12 @@ Json lightBakeToJson(const SkyTable& table, const std::string& file) {
     return {{"table_file", file},
             {"light_direction", toJson(table.lightDirection)},
             {"light_azimuth_rad", table.lightAzimuth},
+            {"row_mapping",
+             {{"band_elevation_rad", table.bandElevation},
+              {"band_share", table.bandShare},
+              {"shadow_elevation_rad", table.shadowElevation},
+              {"shadow_width_rad", table.shadowWidth},
+              {"shadow_share", table.shadowShare}}},
             {"horizon_rayleigh", toJson(table.horizonRayleigh)},
             {"horizon_mie", toJson(table.horizonMie)},
             {"horizon_multiple", toJson(table.horizonMultiple)}};

@@ -215,16 +215,19 @@ AERIAL_INLINE void skyLayer(
     const float* __restrict mA, const float* __restrict mB, const float* __restrict mC,
     const float* __restrict mD, float* __restrict acc0, float* __restrict acc1, float* __restrict acc2,
     float* __restrict acc3, float* __restrict acc4, float* __restrict acc5) {
-    const float s0 = k.start, s1 = k.end, invLen = k.invLength;
+    const float s0 = k.start, s1 = k.end;
     const float p0 = k.p[0], p1 = k.p[1], p2 = k.p[2], p3 = k.p[3], p4 = k.p[4], p5 = k.p[5];
     const float q0 = k.q[0], q1 = k.q[1], q2 = k.q[2], q3 = k.q[3], q4 = k.q[4], q5 = k.q[5];
     const float curv = k.curvature;
     const float wA = k.stencil[0], wB = k.stencil[1], wC = k.stencil[2], wD = k.stencil[3];
     for (int i = 0; i < nc; ++i) {
-        // Lit fraction: the layer [s0, s1] minus the shadow [sIn, sOut].
+        // Lit: 1 where the layer [s0, s1] and the shadow [sIn, sOut] do not
+        // overlap, else 0. A layer that the shadow's edge cuts is added by
+        // the solver afterwards, its lit part only (shadowEdgeLayers).
         const float lo = maxNonNegative(sIn[i], s0);
         const float hi = minNonNegative(sOut[i], s1);
-        const float lit = maxZero(1.0f - maxZero((hi - lo) * invLen));
+        const int overlap = std::bit_cast<int>(maxZero(hi - lo));  // > 0 where they overlap
+        const float lit = std::bit_cast<float>(overlap > 0 ? 0 : 0x3f800000);
         // Sign bit set where a stencil shell has the light below its horizon.
         // (Loaded into locals first: a bit_cast of the array element itself
         // makes GCC lose the restrict information and the loop stays scalar.)
@@ -291,6 +294,30 @@ AERIAL_INLINE void msLayer(int nc, const LayerConstants& k, const float* __restr
         acc0[i] += wa0 * a0[i] + wb0 * b0[i];
         acc1[i] += wa1 * a1[i] + wb1 * b1[i];
         acc2[i] += wa2 * a2[i] + wb2 * b2[i];
+    }
+}
+
+/// One channel of edgeKernel (a helper, as skyLayer, so that GCC vectorises
+/// it): two halves per piece, tau linear in each, through the geometric mean
+/// of the ends; half k covers t = t0 + dt (k/2 .. (k+1)/2) and adds
+/// dt/2 [(p + q t_k) F1 + q dt/2 F2].
+AERIAL_INLINE void edgeChannel(int n, const float* __restrict tauS, const float* __restrict tauE,
+                               const float* __restrict start, const float* __restrict length,
+                               const float* __restrict pR, const float* __restrict qR,
+                               const float* __restrict pM, const float* __restrict qM, float* __restrict outR,
+                               float* __restrict outM) {
+    for (int i = 0; i < n; ++i) {
+        const float ts = tauS[i], te = tauE[i];
+        const float tm = fastSqrt(ts * te + 1e-30f);  // geometric mean (~0 for an empty atmosphere)
+        const float es = expNeg(ts), em = expNeg(tm), ee = expNeg(te);
+        float f1a, f2a, f1b, f2b;
+        exponentialMoments(es, em, tm - ts, f1a, f2a);
+        exponentialMoments(em, ee, te - tm, f1b, f2b);
+        const float h = 0.5f * length[i];
+        const float ta = start[i], tb = start[i] + h;
+        const float pr = pR[i], qr = qR[i], pm = pM[i], qm = qM[i];
+        outR[i] = h * ((pr + qr * ta) * f1a + qr * h * f2a + (pr + qr * tb) * f1b + qr * h * f2b);
+        outM[i] = h * ((pm + qm * ta) * f1a + qm * h * f2a + (pm + qm * tb) * f1b + qm * h * f2b);
     }
 }
 
@@ -406,6 +433,16 @@ AERIAL_HOT_KERNEL void skyKernel(const SkyKernelArgs& a) {
             msLayer(nc, k, lo + 10 * nc, lo + 11 * nc, lo + 12 * nc, up + 10 * nc, up + 11 * nc, up + 12 * nc,
                     acc + 6 * nc, acc + 7 * nc, acc + 8 * nc);
     }
+}
+
+/// The lit pieces of the layers cut by an edge of the earth's shadow (see
+/// sky_kernels.hpp), channel by channel (edgeChannel).
+AERIAL_HOT_KERNEL void edgeKernel(const EdgeKernelArgs& a) {
+    const int n = a.count;
+    const std::size_t m = std::size_t(a.stride);
+    for (std::size_t c = 0; c < 3; ++c)
+        edgeChannel(n, a.tauStart + c * m, a.tauEnd + c * m, a.t0, a.dt, a.p + c * m, a.q + c * m,
+                    a.p + (3 + c) * m, a.q + (3 + c) * m, a.out + c * m, a.out + (3 + c) * m);
 }
 
 /// The sun seen from one crossing of a multiple-scattering ray, for every

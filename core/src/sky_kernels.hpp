@@ -91,7 +91,7 @@ void layerExpKernel(int n, const float* __restrict tau, float* __restrict layerT
 /// Per-layer constants of a sky row.
 struct LayerConstants {
     float alpha, beta, horizonCos, angleScale;  // upper shell: light cosine alpha + beta cos(phi), table row
-    float start, end, invLength;                // layer extent along the view ray
+    float start, end;                           // layer extent along the view ray
     float p[6], q[6];                           // weight p + q t: R rgb, M rgb
     float msA[3], msB[3];                       // multiple scattering: sigma_s T weights of Psi at a and b
     float curvature;                            // tanh(lambda / 4) / 3, see curvatureFactor
@@ -130,6 +130,25 @@ struct SkyKernelArgs {
 /// layer, msA Psi(a) + msB Psi(b) (multiple rgb). `columns` is a multiple of
 /// 16 (no scalar tail).
 void skyKernel(const SkyKernelArgs& a);
+
+struct EdgeKernelArgs {
+    int count;              // lit pieces, a multiple of 16 (those past the real ones: any finite values)
+    int stride;             // >= count: distance between the channels' arrays
+    const float* tauStart;  // [3][stride] optical depth to the light at the piece's start, rgb
+    const float* tauEnd;    // [3][stride] ... at its end
+    const float* t0;        // [count] start of the piece in its layer's t = (s - s0) / (s1 - s0)
+    const float* dt;        // [count] its length in t
+    const float* p;         // [6][stride] the layer's weight p + q t: R rgb, M rgb
+    const float* q;         // [6][stride]
+    float* out;             // [6][stride] the piece's integrals: R rgb, M rgb
+};
+
+/// The lit pieces of the layers that an edge of the earth's shadow cuts
+/// (sky_solver.cpp, shadowEdgeLayers): for each, the integral of
+/// (p + q t) e^(-tau(t)) over it, tau falling geometrically (log-linear) from
+/// its start to its end, as two halves with tau linear in each (closed form,
+/// exponentialMoments) meeting at the geometric mean sqrt(tau_start tau_end).
+void edgeKernel(const EdgeKernelArgs& a);
 
 struct MsCrossingArgs {
     int count;                                 // combinations of sun cosine and azimuth, a multiple of 16

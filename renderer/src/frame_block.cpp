@@ -164,6 +164,15 @@ FrameBlock makeFrameBlock(const Camera& camera, const CameraFrame& view, const P
     fb.emitterCount = in.emitterCount;
     fb.moonTableColumns = in.moon.columns;
     fb.moonTableRows = in.moon.rows;
+    auto band = [](const FrameSkyInput& sky) {
+        return Vec3{float(sky.bandElevation), float(sky.bandShare), float(sky.shadowElevation)};
+    };
+    fb.sunTableBand = band(in.sun);
+    fb.moonTableBand = band(in.moon);
+    fb.sunTableShadowWidth = float(in.sun.shadowWidth);
+    fb.moonTableShadowWidth = float(in.moon.shadowWidth);
+    fb.sunTableShadowShare = float(in.sun.shadowShare);
+    fb.moonTableShadowShare = float(in.moon.shadowShare);
 
     // Stars: the celestial frame, the brightest star's illuminance and the
     // Gaussian radius of a star, sigma = 0.6 pixel (vertical angle / rows).

@@ -90,6 +90,16 @@ struct FrameBlock {
     /// bright limb (the terminator lies across it).
     Vec3 moonBrightLimb;
     float padBrightLimb = 0.0f;
+    /// The tables' row mappings (aerial/sky.hpp, SkyTable): bandElevation
+    /// [rad], bandShare, shadowElevation [rad]; shadowWidth [rad]; shadowShare.
+    Vec3 sunTableBand;
+    float sunTableShadowWidth = 0.0f;
+    Vec3 moonTableBand;
+    float moonTableShadowWidth = 0.0f;
+    float sunTableShadowShare = 0.0f;
+    float moonTableShadowShare = 0.0f;
+    float padTableShadow0 = 0.0f;
+    float padTableShadow1 = 0.0f;
 };
 static_assert(offsetof(FrameBlock, clipFromWorld) == 0);
 static_assert(offsetof(FrameBlock, eye) == 64);
@@ -138,7 +148,13 @@ static_assert(offsetof(FrameBlock, sunDiscDirection) == 512);
 static_assert(offsetof(FrameBlock, moonLitFraction) == 524);
 static_assert(offsetof(FrameBlock, moonDiscDirection) == 528);
 static_assert(offsetof(FrameBlock, moonBrightLimb) == 544);
-static_assert(sizeof(FrameBlock) == 560);
+static_assert(offsetof(FrameBlock, sunTableBand) == 560);
+static_assert(offsetof(FrameBlock, sunTableShadowWidth) == 572);
+static_assert(offsetof(FrameBlock, moonTableBand) == 576);
+static_assert(offsetof(FrameBlock, moonTableShadowWidth) == 588);
+static_assert(offsetof(FrameBlock, sunTableShadowShare) == 592);
+static_assert(offsetof(FrameBlock, moonTableShadowShare) == 596);
+static_assert(sizeof(FrameBlock) == 608);
 
 /// shaders/common/volume.glsl, VolumeBlock (binding 1): one fog volume.
 struct VolumeBlock {

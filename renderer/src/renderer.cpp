@@ -271,6 +271,11 @@ void Renderer::Impl::render(const Camera& camera, const PresetState& state, cons
         in.lightAzimuth = sky.lightAzimuth;
         in.columns = sky.columns;
         in.rows = sky.rows;
+        in.bandElevation = sky.bandElevation;
+        in.bandShare = sky.bandShare;
+        in.shadowElevation = sky.shadowElevation;
+        in.shadowWidth = sky.shadowWidth;
+        in.shadowShare = sky.shadowShare;
         in.horizonRayleigh = sky.horizonRayleigh;
         in.horizonMie = sky.horizonMie;
         in.horizonMultiple = sky.horizonMultiple;

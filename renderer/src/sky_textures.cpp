@@ -57,6 +57,11 @@ void SkyTextures::upload(const SkyTable& table) {
     mie = makeTexture(columns, rows, m);
     multiple = makeTexture(columns, rows, x);
     lightAzimuth = valid ? table.lightAzimuth : 0.0;
+    bandElevation = valid ? table.bandElevation : 0.0;
+    bandShare = valid ? table.bandShare : 0.0;
+    shadowElevation = valid ? table.shadowElevation : 0.0;
+    shadowWidth = valid ? table.shadowWidth : 0.0;
+    shadowShare = valid ? table.shadowShare : 0.0;
     lightDirection = table.lightDirection;
     horizonRayleigh = valid ? table.horizonRayleigh : glm::dvec3(0.0);
     horizonMie = valid ? table.horizonMie : glm::dvec3(0.0);

@@ -18,6 +18,9 @@ struct SkyTextures {
     int columns = 1;
     int rows = 1;
     double lightAzimuth = 0.0;
+    /// The table's row mapping (SkyTable::bandElevation .. shadowShare; 0: quadratic).
+    double bandElevation = 0.0, bandShare = 0.0;
+    double shadowElevation = 0.0, shadowWidth = 0.0, shadowShare = 0.0;
     glm::dvec3 lightDirection{0.0, 1.0, 0.0};
     glm::dvec3 horizonRayleigh{0.0};
     glm::dvec3 horizonMie{0.0};

@@ -31,6 +31,10 @@
 //                       The fog passes only interpolate between the target and
 //                       capped colours, so they stay below the cap too.
 //   sunTableColumns, sunTableRows, moonTableColumns, moonTableRows  table sizes
+//   <light>TableBand, <light>TableShadowWidth, <light>TableShadowShare
+//                       the table's row mapping (aerial/sky.hpp, SkyTable):
+//                       band = (bandElevation [rad], bandShare,
+//                       shadowElevation [rad]), shadowWidth [rad], shadowShare
 //   emitterCount        emitters in the EmitterBlock (common/emitters.glsl)
 //   starAxisX, starAxisY, starPole   the celestial frame (world, unit)
 //   starIlluminance     the brightest star's illuminance (0 = no stars)
@@ -108,6 +112,14 @@ layout(std140, binding = 0) uniform FrameBlock {
     float padMoonDisc;
     vec3 moonBrightLimb;
     float padBrightLimb;
+    vec3 sunTableBand;
+    float sunTableShadowWidth;
+    vec3 moonTableBand;
+    float moonTableShadowWidth;
+    float sunTableShadowShare;
+    float moonTableShadowShare;
+    float padTableShadow0;
+    float padTableShadow1;
 } frame;
 
 // Ray from the eye to the far plane at normalised device coordinates ndc

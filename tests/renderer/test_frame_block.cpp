@@ -374,7 +374,13 @@ TEST(FrameBlock, Std140OffsetsMatchTheGlslBlocks) {
                   AERIAL_OFFSET(FrameBlock, sunDiscDirection),
                   AERIAL_OFFSET(FrameBlock, moonLitFraction),
                   AERIAL_OFFSET(FrameBlock, moonDiscDirection),
-                  AERIAL_OFFSET(FrameBlock, moonBrightLimb)},
+                  AERIAL_OFFSET(FrameBlock, moonBrightLimb),
+                  AERIAL_OFFSET(FrameBlock, sunTableBand),
+                  AERIAL_OFFSET(FrameBlock, sunTableShadowWidth),
+                  AERIAL_OFFSET(FrameBlock, moonTableBand),
+                  AERIAL_OFFSET(FrameBlock, moonTableShadowWidth),
+                  AERIAL_OFFSET(FrameBlock, sunTableShadowShare),
+                  AERIAL_OFFSET(FrameBlock, moonTableShadowShare)},
                  sizeof(FrameBlock));
     expectLayout(
         "common/volume.glsl", "VolumeBlock",

@@ -131,10 +131,36 @@ SkySample singleScattering(const AtmosphereParams& air, const glm::dvec3& view, 
 
 double azimuthOf(const glm::dvec3& direction) { return std::atan2(direction.x, -direction.z); }
 
-glm::dvec3 texelDirection(int i, int j, int azimuthCount, int elevationCount, double lightAzimuth) {
-    const double v = elevationCount > 1 ? double(j) / (elevationCount - 1) : 0.0;
-    const double elevation = 0.5 * kPi * v * v;
-    const double azimuth = lightAzimuth + 2.0 * kPi * i / azimuthCount;
+double texelElevation(int j, const SkyTable& table) {
+    const int h = table.elevationCount;
+    if (h <= 1) return 0.0;
+    const double target = double(j) / (h - 1);
+    // The mapping of <aerial/sky.hpp>, written out again: v(el) in 0..1.
+    const double a = table.bandElevation > 0.0 ? table.bandShare : 0.0;
+    const double b = table.shadowWidth > 0.0 ? table.shadowShare : 0.0;
+    auto mapped = [&](double el) {
+        double v = (1.0 - a - b) * std::sqrt(el / (0.5 * kPi));
+        if (a > 0.0)
+            v += a * std::atan(el / table.bandElevation) / std::atan(0.5 * kPi / table.bandElevation);
+        if (b > 0.0) {
+            const double c = table.shadowElevation, w = table.shadowWidth;
+            v += b * (std::atan((el - c) / w) - std::atan(-c / w)) /
+                 (std::atan((0.5 * kPi - c) / w) - std::atan(-c / w));
+        }
+        return v;
+    };
+    if (j == h - 1) return 0.5 * kPi;
+    double lo = 0.0, hi = 0.5 * kPi;  // bisection: v is increasing
+    for (int it = 0; it < 200 && hi - lo > 1e-15; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        (mapped(mid) < target ? lo : hi) = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+
+glm::dvec3 texelDirection(int i, int j, const SkyTable& table) {
+    const double elevation = texelElevation(j, table);
+    const double azimuth = table.lightAzimuth + 2.0 * kPi * i / table.azimuthCount;
     const double ce = std::cos(elevation);
     return glm::dvec3(std::sin(azimuth) * ce, std::sin(elevation), -std::cos(azimuth) * ce);
 }
@@ -148,10 +174,10 @@ void solveTable(const AtmosphereParams& air, const glm::dvec3& light, int azimut
     table.mie.assign(texels, 0.0f);
     table.lightDirection = light;
     table.lightAzimuth = azimuthOf(light);
+    setSkyTableMapping(table, air, light);  // the solver's row mapping for this light
     for (int j = std::max(rowBegin, 0); j < std::min(rowEnd, elevationCount); ++j) {
         for (int i = 0; i <= azimuthCount / 2; ++i) {
-            const SkySample s = singleScattering(
-                air, texelDirection(i, j, azimuthCount, elevationCount, table.lightAzimuth), light, options);
+            const SkySample s = singleScattering(air, texelDirection(i, j, table), light, options);
             for (int mirror : {i, (azimuthCount - i) % azimuthCount}) {
                 const std::size_t at = (std::size_t(j) * azimuthCount + mirror) * 3;
                 for (int c = 0; c < 3; ++c) {

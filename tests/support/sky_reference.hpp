@@ -36,11 +36,17 @@ glm::dvec3 opticalDepthToTop(const AtmosphereParams& air, double height, double 
 /// Azimuth [rad] of a direction, from north (-Z) towards east (+X).
 double azimuthOf(const glm::dvec3& direction);
 
-/// World direction of texel (i, j) of a table solved for a light at azimuth
-/// lightAzimuth, per the mapping in <aerial/sky.hpp> (re-implemented here).
-glm::dvec3 texelDirection(int i, int j, int azimuthCount, int elevationCount, double lightAzimuth);
+/// Elevation [rad] of row j of a table, per the row mapping in
+/// <aerial/sky.hpp> with the table's parameters (re-implemented here, and
+/// inverted by bisection).
+double texelElevation(int j, const SkyTable& table);
 
-/// Fills a whole SkyTable by brute force (same layout as SkySolver), solving
+/// World direction of texel (i, j) of a table (its size, light azimuth and
+/// row mapping), per the mapping in <aerial/sky.hpp> (re-implemented here).
+glm::dvec3 texelDirection(int i, int j, const SkyTable& table);
+
+/// Fills a whole SkyTable by brute force (same layout and row mapping as
+/// SkySolver, setSkyTableMapping), solving
 /// only the rows in [rowBegin, rowEnd) and columns 0..azimuthCount/2, then
 /// mirroring. Slow: seconds for a full table.
 void solveTable(const AtmosphereParams& air, const glm::dvec3& light, int azimuthCount, int elevationCount,
