@@ -210,8 +210,7 @@ std::optional<int> Editor::initialise() {
             if (automated) return kExitFailure;
         }
     } else {
-        view_.renderer->setScene(renderer::makeBuiltinScene());
-        view_.lastRenderSignature.clear();
+        setScene(renderer::makeBuiltinScene());
     }
     if (!options_.preset.empty()) {
         if (!openPreset(options_.preset)) {
@@ -645,7 +644,8 @@ void Editor::select(Selection s) {
 }
 
 void Editor::addVolumeInFront(FogVolumeShape shape) {
-    const glm::dvec3 where = placeForNewObject();
+    glm::dvec3 where = placeForNewObject();
+    where.y += FogVolume{}.halfExtents.y;  // resting on the surface
     int index = -1;
     doc_.apply(shape == FogVolumeShape::Box ? "Add box volume" : "Add ellipsoid volume", "",
                [&](Preset& p) { index = addVolume(p, shape, where); });
@@ -666,7 +666,7 @@ void Editor::addCloudVolumeAboveView(FogVolumeShape shape) {
 void Editor::addEmitterInFront(EmitterKind kind) {
     glm::dvec3 where = placeForNewObject();
     where.y +=
-        kind == EmitterKind::Lightning ? 200.0 : 3.0;  // a lamp above the ground, lightning in the clouds
+        kind == EmitterKind::Lightning ? 200.0 : 3.0;  // a lamp above the surface, lightning in the clouds
     int index = -1;
     doc_.apply(kind == EmitterKind::Lightning ? "Add lightning" : "Add emitter", "",
                [&](Preset& p) { index = addEmitter(p, kind, where); });

@@ -120,6 +120,13 @@ private:
     void applyGizmoTransform(const GizmoTransform& t);
     void frameSelection();
     glm::dvec3 placeForNewObject() const;
+    /// Uploads a scene to the renderer and keeps its triangles for placing
+    /// objects on it (view_.sceneHits).
+    void setScene(const renderer::SceneDesc& scene);
+    /// Edit > Drop to ground: the selected volume's bottom (or an emitter,
+    /// 0.5 m above) onto the scene's surface under it; false (with the status
+    /// saying why) when nothing is selected or nothing is below.
+    bool dropSelectionToGround();
     bool screenshot(const std::string& path, std::string& error);
     renderer::CameraFrame viewportCameraFrame() const;
     void rebuildDisplay();

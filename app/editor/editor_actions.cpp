@@ -48,8 +48,7 @@ void Editor::declareActions() {
     t.add("builtin_scene", "Built-in scene", "File")
         .enabledWhen([this] { return !view_.scenePath.empty(); })
         .does([this] {
-            view_.renderer->setScene(renderer::makeBuiltinScene());
-            view_.lastRenderSignature.clear();
+            setScene(renderer::makeBuiltinScene());
             view_.scenePath.clear();
             setStatus("Built-in scene");
         });
@@ -229,6 +228,16 @@ void Editor::declareActions() {
         .scriptable()
         .enabledWhen(objectSelected, needsObject("frame"))
         .does([this] { frameSelection(); });
+
+    t.add("drop_to_ground", "Drop to ground", "Edit")
+        .key(GLFW_KEY_END)
+        .separated()
+        .scriptable()
+        .enabledWhen([this] {
+            const ParamScope s = edit_.selection.scope();
+            return s == ParamScope::Volume || s == ParamScope::Emitter;
+        })
+        .does([this] { dropSelectionToGround(); });
 
     // --- Help --------------------------------------------------------------------------
     t.add("help_sheet", "Keys and workflow", "Help").key(GLFW_KEY_F1).scriptable().does([this] {

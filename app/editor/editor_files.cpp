@@ -172,8 +172,7 @@ bool Editor::loadScene(const std::string& path) {
         showError("Cannot load the scene " + path + ":", loaded.error);
         return false;
     }
-    view_.renderer->setScene(loaded.scene);
-    view_.lastRenderSignature.clear();
+    setScene(loaded.scene);
     view_.resetCloudHistory = true;
     view_.scenePath = path;
     // Frame the scene: the bounds of every vertex in world space.

@@ -26,6 +26,7 @@
 #include "view_exposure.hpp"
 #include "viewport/camera_controller.hpp"
 #include "viewport/gizmo.hpp"
+#include "viewport/scene_hits.hpp"
 
 #include <aerial/evaluate.hpp>
 #include <aerial/renderer/display.hpp>
@@ -162,8 +163,9 @@ struct ViewportState {
                                                                           : renderer::FogMode::Analytic;
         return fogView == FogView::Volumetric ? renderer::FogMode::Volumetric : renderer::FogMode::Analytic;
     }
-    bool showStars = true;  ///< View > Stars (the sky pass's stars at night)
-    std::string scenePath;  ///< "" = the built-in scene
+    bool showStars = true;                       ///< View > Stars (the sky pass's stars at night)
+    std::string scenePath;                       ///< "" = the built-in scene
+    std::shared_ptr<const SceneHits> sceneHits;  ///< the scene's triangles (placement, drop to ground)
 
     unsigned displayTexture = 0;
     int displayWidth = 0, displayHeight = 0;

@@ -425,15 +425,54 @@ void Editor::frameSelection() {
 }
 
 glm::dvec3 Editor::placeForNewObject() const {
+    // On the scene's surface under the viewport's centre (its real
+    // triangles, any scene), within twice the orbit distance; else where the
+    // view ray meets the ground plane, else the orbit pivot.
     const renderer::CameraFrame frame = viewportCameraFrame();
-    GroundHeightFunction ground;
-    if (view_.scenePath.empty())
-        ground = [](double x, double z) { return renderer::builtinTerrainHeight(x, z); };
-    // Where the view ray meets the ground before the orbit pivot, else at the pivot.
     const double pivot = view_.camera.state().distance;
-    glm::dvec3 where = placeInFront(frame, pivot, pivot, ground).value_or(frame.eye + pivot * frame.forward);
-    where.y += 4.0;  // sit on the ground rather than in it
-    return where;
+    if (view_.sceneHits)
+        if (const std::optional<double> t = view_.sceneHits->intersect(frame.eye, frame.forward, 2.0 * pivot))
+            return frame.eye + *t * frame.forward;
+    return placeInFront(frame, pivot, pivot).value_or(frame.eye + pivot * frame.forward);
+}
+
+void Editor::setScene(const renderer::SceneDesc& scene) {
+    view_.renderer->setScene(scene);
+    view_.sceneHits = std::make_shared<const SceneHits>(scene);
+    view_.lastRenderSignature.clear();
+}
+
+bool Editor::dropSelectionToGround() {
+    const ParamScope scope = edit_.selection.scope();
+    const int index = edit_.selection.index;
+    if (scope != ParamScope::Volume && scope != ParamScope::Emitter) {
+        setStatus("Drop to ground: select a fog volume or an emitter");
+        return false;
+    }
+    const Preset& preset = doc_.preset();
+    glm::dvec3 position = scope == ParamScope::Volume ? preset.volumes[std::size_t(index)].position
+                                                      : preset.emitters[std::size_t(index)].position;
+    const std::optional<double> ground =
+        view_.sceneHits ? view_.sceneHits->surfaceBelow(position) : std::nullopt;
+    if (!ground) {
+        setStatus("Drop to ground: no surface under it");
+        return false;
+    }
+    // A volume rests its lowest point (of its rotated hull) on the ground; an emitter floats 0.5 m above.
+    double lift = 0.5;
+    if (scope == ParamScope::Volume) {
+        const PreparedFogVolume p = prepareFogVolume(preset.volumes[std::size_t(index)]);
+        lift = p.valid ? position.y - p.boundsMin.y : 0.0;
+    }
+    position.y = *ground + lift;
+    doc_.apply("Drop to ground", "", [&](Preset& p) {
+        if (scope == ParamScope::Volume)
+            p.volumes[std::size_t(index)].position = position;
+        else
+            p.emitters[std::size_t(index)].position = position;
+    });
+    setStatus("Dropped to the ground at " + std::to_string(*ground).substr(0, 8) + " m");
+    return true;
 }
 
 bool Editor::screenshot(const std::string& path, std::string& error) {

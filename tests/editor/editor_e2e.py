@@ -752,6 +752,36 @@ quit
     print("OK: autokey")
 
 
+def case_placement(env):
+    """A new volume rests on the scene's surface under the viewport's centre;
+    Drop to ground puts a volume's bottom on the surface under it, from above
+    or from below the ground alike (undoable)."""
+    p = env.run(env.script("placement.txt", """
+new
+add_volume box
+print volume[1].position_m
+set volume[1].position_m 40 300 -120
+drop_to_ground
+print volume[1].position_m
+set volume[1].position_m 40 -50 -120
+drop_to_ground
+print volume[1].position_m
+undo
+print volume[1].position_m
+quit
+"""))
+    positions = [list(map(float, m)) for m in re.findall(r"volume\[1\]\.position_m = (\S+) (\S+) (\S+)", p.stdout)]
+    check(len(positions) == 4, "positions not printed:\n" + p.stdout)
+    added, dropped_from_above, dropped_from_below, undone = positions
+    check(abs(dropped_from_above[1] - dropped_from_below[1]) < 1e-9,
+          "dropping from above and below disagree: %s vs %s" % (dropped_from_above, dropped_from_below))
+    check(-50.0 < dropped_from_above[1] < 300.0 and dropped_from_above[0] == 40.0 and dropped_from_above[2] == -120.0,
+          "the drop moved it elsewhere: %s" % dropped_from_above)
+    check(undone[1] == -50.0, "undo did not restore the position: %s" % undone)
+    print("placement: added at %s, dropped to %s" % (added, dropped_from_above))
+    print("OK: placement")
+
+
 CASES = {
     "session": case_session,
     "prompts": case_prompts,
@@ -763,6 +793,7 @@ CASES = {
     "errors": case_errors,
     "cloud_volume": case_cloud_volume,
     "autokey": case_autokey,
+    "placement": case_placement,
 }
 
 
