@@ -64,6 +64,23 @@ void Editor::declareActions() {
             dialogs_.fileDialog.open("Export for game (aerial bake) into folder", FileDialog::Mode::Directory,
                                      {}, "");
         });
+    t.add("export_options_menu", "Export options", "File").drawsMenu([this](const char* label) {
+        if (!ImGui::BeginMenu(label)) return;
+        ExportOptions& o = dialogs_.exportOptions;
+        ImGui::TextDisabled("Step over the day");
+        for (const auto& [name, hours] : {std::pair{"15 min", 0.25}, std::pair{"30 min", 0.5},
+                                          std::pair{"1 h", 1.0}, std::pair{"2 h", 2.0}})
+            if (ImGui::MenuItem(name, nullptr, std::abs(o.stepHours - hours) < 1e-9)) o.stepHours = hours;
+        ImGui::Separator();
+        ImGui::TextDisabled("Sky table size");
+        for (const auto& [w, h] :
+             {std::pair{64, 32}, std::pair{128, 64}, std::pair{256, 128}, std::pair{512, 256}}) {
+            const std::string text = std::to_string(w) + " x " + std::to_string(h);
+            if (ImGui::MenuItem(text.c_str(), nullptr, o.azimuthCount == w && o.elevationCount == h))
+                o.azimuthCount = w, o.elevationCount = h;
+        }
+        ImGui::EndMenu();
+    });
     t.add("request_quit", "Quit", "File").separated().key(GLFW_KEY_Q, S::kCtrl).scriptable().does([this] {
         requestQuit();
     });

@@ -140,6 +140,12 @@ bool Editor::openPreset(const std::string& path) {
 }
 
 bool Editor::savePresetTo(const std::string& path) {
+    // Save As: a preset never named by the artist takes the new file's name.
+    std::string renamed;
+    if (path != doc_.path()) {
+        renamed = nameAfterSaveAs(doc_.preset().name, doc_.path(), path);
+        if (!renamed.empty()) doc_.apply("Rename preset", "", [&](Preset& p) { p.name = renamed; });
+    }
     const SaveResult result = doc_.save(path);
     if (!result.ok()) {
         std::string text;
@@ -148,7 +154,7 @@ bool Editor::savePresetTo(const std::string& path) {
         return false;
     }
     recent_.add(path);
-    setStatus("Saved " + path +
+    setStatus("Saved " + path + (renamed.empty() ? std::string() : " as \"" + renamed + "\"") +
               (edit_.pending.empty() ? std::string()
                                      : " (" + std::to_string(edit_.pending.size()) +
                                            " unkeyed change(s) not in it: Key or Revert them)"));
@@ -361,7 +367,7 @@ void Editor::recover(bool accept) {
 
 void Editor::startExport(const std::string& directory) {
     std::string error;
-    if (!export_.start(doc_.preset(), directory, 0.5, error)) {
+    if (!export_.start(doc_.preset(), directory, dialogs_.exportOptions, error)) {
         showError("Cannot export for game:", error);
         return;
     }

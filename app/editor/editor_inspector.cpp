@@ -544,8 +544,24 @@ void drawInspector(Document& doc, EditState& edit, double timeHours, const Prese
             if (ImGui::InputText("Name", &name))
                 doc.apply("Rename", "rename:" + id, [&](Preset& p) { renameObject(p, scope, index, name); });
             if (ImGui::IsItemDeactivated()) doc.closeMerge();
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("The name shown in the outliner");
+            // The id: what tracks and games refer to; typed, checked on Enter
+            // (unique, the loader's characters), the tracks follow it.
+            ImGui::Dummy(ImVec2(ImGui::GetFrameHeight() * 0.8f, 1.0f));
+            ImGui::SameLine(0.0f, 4.0f);
+            std::string newId = id;
+            if (ImGui::InputText("Id", &newId, ImGuiInputTextFlags_EnterReturnsTrue) && newId != id) {
+                std::string why;
+                Preset changed = preset;
+                if (setObjectId(changed, scope, index, newId, why))
+                    doc.apply("Change id", "", [&](Preset& p) { setObjectId(p, scope, index, newId, why); });
+                else
+                    status = "Id not changed: " + why;
+            }
             if (ImGui::IsItemHovered())
-                ImGui::SetTooltip("id \"%s\" (what tracks refer to; never changes)", id.c_str());
+                ImGui::SetTooltip(
+                    "What the timeline's tracks and games (the bake manifest) refer to; "
+                    "unique, A-Z a-z 0-9 _ - .");
             const bool lightning = emitter && preset.emitters[i].kind == EmitterKind::Lightning;
             for (const ParamDesc& p : paramTable(scope)) {
                 if (p.type == ParamType::String) continue;  // id and name above

@@ -20,6 +20,7 @@
 #include "autosave.hpp"
 #include "document.hpp"
 #include "file_dialog.hpp"
+#include "game_export.hpp"
 #include "pending_edits.hpp"
 #include "preset_edit.hpp"
 #include "script.hpp"
@@ -204,7 +205,8 @@ enum class DialogPurpose { None, Open, SaveAs, Scene, Screenshot, Export };
 
 /// Modals, prompts and the file dialog.
 struct Dialogs {
-    bool showHelp = false;  ///< Help > Keys and workflow (F1)
+    ExportOptions exportOptions;  ///< File > Export for game's step and table size
+    bool showHelp = false;        ///< Help > Keys and workflow (F1)
     std::string errorTitle, errorText;
     bool openErrorModal = false;
     Pending pending = Pending::None;

@@ -128,9 +128,20 @@ void Editor::declareScriptCommands() {
                    }
                    return true;
                }});
-    table.add({"export", 1, 1, "export DIR", "Export for game (aerial bake) into DIR and wait for it",
+    table.add({"export", 1, 3, "export DIR [STEP_H] [WxH]",
+               "Export for game (aerial bake) into DIR (step in hours, sky table size) and wait for it",
                [this](W w, E error) {
-                   if (!export_.start(doc_.preset(), w[1], 0.5, error)) return false;
+                   ExportOptions options;
+                   if (w.size() > 2 && !toNumber(w[2], options.stepHours)) {
+                       error = "export: \"" + w[2] + "\" is not a number of hours";
+                       return false;
+                   }
+                   if (w.size() > 3 && std::sscanf(w[3].c_str(), "%dx%d", &options.azimuthCount,
+                                                   &options.elevationCount) != 2) {
+                       error = "export: \"" + w[3] + "\" is not a table size WxH";
+                       return false;
+                   }
+                   if (!export_.start(doc_.preset(), w[1], options, error)) return false;
                    export_.wait();
                    export_.poll();
                    if (!export_.succeeded()) {

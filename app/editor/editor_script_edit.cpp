@@ -133,6 +133,28 @@ void Editor::declareEditScriptCommands() {
                    }
                    return true;
                }});
+    table.add({"set_id", 3, 3, "set_id volume|emitter|cloud_volume N ID",
+               "change an object's id (its tracks follow; duplicates and bad characters refused)",
+               [this](W w, E error) {
+                   const ParamScope scope = w[1] == "volume"         ? ParamScope::Volume
+                                            : w[1] == "emitter"      ? ParamScope::Emitter
+                                            : w[1] == "cloud_volume" ? ParamScope::CloudVolume
+                                                                     : ParamScope::Global;
+                   double index = -1;
+                   if (scope == ParamScope::Global || !toNumber(w[2], index)) {
+                       error = "set_id: set_id volume|emitter|cloud_volume N ID";
+                       return false;
+                   }
+                   std::string why;
+                   Preset trial = doc_.preset();
+                   if (!setObjectId(trial, scope, int(index), w[3], why)) {
+                       error = "set_id: " + why;
+                       return false;
+                   }
+                   doc_.apply("Change id", "",
+                              [&](Preset& p) { setObjectId(p, scope, int(index), w[3], why); });
+                   return true;
+               }});
     table.add({"rename", 1, 1, "rename NAME", "rename the selected volume, emitter or cloud volume",
                [this](W w, E error) {
                    if (!edit_.objectSelected()) {

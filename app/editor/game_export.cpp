@@ -7,11 +7,14 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <climits>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <system_error>
 #include <vector>
 
@@ -32,12 +35,29 @@ std::string aerialCliPath() {
 
 GameExport::~GameExport() { cancel(); }
 
-bool GameExport::start(const Preset& preset, const std::string& directory, double stepHours,
+bool exportDirectoryUsable(const std::string& directory, std::string& error) {
+    std::error_code ec;
+    if (!fs::exists(directory, ec)) return true;
+    if (!fs::is_directory(directory, ec)) {
+        error = directory + " is a file, not a folder";
+        return false;
+    }
+    if (fs::is_empty(directory, ec)) return true;
+    std::ifstream in(fs::path(directory) / "manifest.json");
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (text.find("\"aerial-bake\"") != std::string::npos) return true;
+    error = directory +
+            " holds other files and no earlier export: choose an empty folder (or one exported before)";
+    return false;
+}
+
+bool GameExport::start(const Preset& preset, const std::string& directory, const ExportOptions& options,
                        std::string& error) {
     if (running()) {
         error = "an export is already running";
         return false;
     }
+    if (!exportDirectoryUsable(directory, error)) return false;
     std::error_code ec;
     fs::create_directories(directory, ec);
     if (!fs::is_directory(directory, ec)) {
@@ -55,10 +75,13 @@ bool GameExport::start(const Preset& preset, const std::string& directory, doubl
         error = std::string("pipe: ") + std::strerror(errno);
         return false;
     }
-    char step[32];
-    std::snprintf(step, sizeof step, "%gh", stepHours);
+    char step[32], size[32];
+    std::snprintf(step, sizeof step, "%.9gh", std::clamp(options.stepHours, 1.0 / 60.0, 24.0));
+    std::snprintf(size, sizeof size, "%dx%d", options.azimuthCount, options.elevationCount);
     const std::string cli = aerialCliPath();
-    std::vector<std::string> args = {cli, "bake", presetFile, "--out", directory, "--step", step};
+    // Run inside the export: the manifest then names preset.json, not an absolute path.
+    std::vector<std::string> args = {cli,      "bake", "preset.json", "--out", ".",
+                                     "--step", step,   "--size",      size};
     std::vector<char*> argv;
     for (std::string& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
@@ -68,6 +91,8 @@ bool GameExport::start(const Preset& preset, const std::string& directory, doubl
     posix_spawn_file_actions_adddup2(&actions, fds[1], STDERR_FILENO);
     posix_spawn_file_actions_addclose(&actions, fds[0]);
     posix_spawn_file_actions_addclose(&actions, fds[1]);
+    const std::string absolute = fs::absolute(directory, ec).string();
+    posix_spawn_file_actions_addchdir_np(&actions, absolute.c_str());
     pid_t pid = -1;
     const int rc = posix_spawnp(&pid, cli.c_str(), &actions, nullptr, argv.data(), environ);
     posix_spawn_file_actions_destroy(&actions);

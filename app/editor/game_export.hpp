@@ -21,6 +21,19 @@ namespace aerial::editor {
 /// the install's bin/), else "aerial" from PATH.
 std::string aerialCliPath();
 
+/// What File > Export for game asks for (aerial bake's --step and --size).
+struct ExportOptions {
+    double stepHours = 0.5;   ///< 1/60..24
+    int azimuthCount = 128;   ///< sky table columns
+    int elevationCount = 64;  ///< sky table rows
+};
+
+/// Whether `directory` may receive an export: missing, empty, or an earlier
+/// export (it holds an aerial-bake manifest.json). False with the reason
+/// otherwise ("... holds other files and no earlier export: choose an empty
+/// folder"), so an export never mixes its files into someone else's.
+bool exportDirectoryUsable(const std::string& directory, std::string& error);
+
 class GameExport {
 public:
     GameExport() = default;
@@ -28,10 +41,12 @@ public:
     GameExport(const GameExport&) = delete;
     GameExport& operator=(const GameExport&) = delete;
 
-    /// Creates `directory`, saves `preset` as directory/preset.json and
-    /// starts `aerial bake directory/preset.json --out directory --step
-    /// <stepHours>h`. False with `error` when any of that fails.
-    bool start(const Preset& preset, const std::string& directory, double stepHours, std::string& error);
+    /// Checks the directory (exportDirectoryUsable), creates it, saves
+    /// `preset` as directory/preset.json and starts `aerial bake preset.json
+    /// --out . --step <step>h --size WxH` inside it (so the manifest's paths
+    /// are relative to the export). False with `error` when any of that fails.
+    bool start(const Preset& preset, const std::string& directory, const ExportOptions& options,
+               std::string& error);
     /// Reads the child's output and reaps it when it has ended.
     void poll();
     /// Blocks until the child has ended (scripts, quitting).

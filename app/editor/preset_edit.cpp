@@ -6,8 +6,10 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 
 namespace aerial::editor {
 namespace {
@@ -482,6 +484,62 @@ bool deleteObject(Preset& preset, ParamScope scope, int index) {
     if (scope == ParamScope::CloudVolume && index >= 0 && index < int(preset.cloudVolumes.size()))
         return removeObject(preset, scope, std::string(preset.cloudVolumes[std::size_t(index)].id));
     return false;
+}
+
+std::string presetNameFromFile(const std::string& path) {
+    std::string name = std::filesystem::path(path).stem().string();
+    for (char& c : name)
+        if (c == '_' || c == '-') c = ' ';
+    if (!name.empty()) name[0] = char(std::toupper(static_cast<unsigned char>(name[0])));
+    return name;
+}
+
+std::string nameAfterSaveAs(const std::string& currentName, const std::string& oldPath,
+                            const std::string& newPath) {
+    const std::string suggested = presetNameFromFile(newPath);
+    if (suggested.empty() || suggested == currentName) return {};
+    const bool unnamed = currentName.empty() || currentName == defaultPreset().name ||
+                         (!oldPath.empty() && currentName == presetNameFromFile(oldPath));
+    return unnamed ? suggested : std::string();
+}
+
+bool setObjectId(Preset& preset, ParamScope scope, int index, const std::string& id, std::string& error) {
+    std::string* current = nullptr;
+    std::vector<const std::string*> others;
+    auto collect = [&](auto& objects) {
+        for (std::size_t i = 0; i < objects.size(); ++i) {
+            if (int(i) == index)
+                current = &objects[i].id;
+            else
+                others.push_back(&objects[i].id);
+        }
+    };
+    if (scope == ParamScope::Volume) collect(preset.volumes);
+    if (scope == ParamScope::Emitter) collect(preset.emitters);
+    if (scope == ParamScope::CloudVolume) collect(preset.cloudVolumes);
+    if (!current) {
+        error = "no such object";
+        return false;
+    }
+    const bool characters = !id.empty() && id.size() <= 64 && std::all_of(id.begin(), id.end(), [](char c) {
+        return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' ||
+               c == '-' || c == '.';
+    });
+    if (!characters) {
+        error = "an id must be 1..64 characters of A-Z a-z 0-9 _ - . (got \"" + id + "\")";
+        return false;
+    }
+    for (const std::string* other : others) {
+        if (*other == id) {
+            error = "another " + std::string(addressPrefix(scope)) + " already has the id \"" + id + "\"";
+            return false;
+        }
+    }
+    const std::string old = *current;
+    for (Track& track : preset.tracks)
+        if (track.target.scope == scope && track.target.objectId == old) track.target.objectId = id;
+    *current = id;
+    return true;
 }
 
 bool renameObject(Preset& preset, ParamScope scope, int index, const std::string& name) {

@@ -138,5 +138,19 @@ int duplicateObject(Preset& preset, ParamScope scope, int index, const glm::dvec
 bool deleteObject(Preset& preset, ParamScope scope, int index);
 /// Renames (the shown name, not the id).
 bool renameObject(Preset& preset, ParamScope scope, int index, const std::string& name);
+/// The preset name a file suggests: its stem with '_' and '-' as spaces and
+/// the first letter capitalised ("misty_dawn.json" -> "Misty dawn").
+std::string presetNameFromFile(const std::string& path);
+/// Save As to `newPath`: the name to give the preset, or "" to keep its
+/// own. It follows the new file when it was the one the old file suggests
+/// (or the built-in default's), i.e. the artist never named it.
+std::string nameAfterSaveAs(const std::string& currentName, const std::string& oldPath,
+                            const std::string& newPath);
+
+/// Changes an object's id (what tracks and games refer to): 1..64
+/// characters of A-Z a-z 0-9 _ - . and unique among the objects of its
+/// kind; every track of the object follows it. False with `error` (the
+/// reason) otherwise, the preset unchanged.
+bool setObjectId(Preset& preset, ParamScope scope, int index, const std::string& id, std::string& error);
 
 }  // namespace aerial::editor

@@ -182,6 +182,7 @@ quit
     moved = [float(printed.group(i)) for i in (1, 2, 3)]
 
     preset = load_json(saved)
+    check(preset["name"] == "Workflow", "Save As did not give the unnamed preset the file's name: %r" % preset["name"])
     check(len(preset["volumes"]) == 2, "the saved preset has %d volumes" % len(preset["volumes"]))
     v = preset["volumes"][1]
     check(v["shape"] == "ellipsoid", "the new volume is a %s" % v["shape"])
@@ -286,6 +287,21 @@ quit
     manifest = load_json(os.path.join(bake, "manifest.json"))
     check(manifest["step_count"] == 48, "the export is not a 0.5 h bake")
     check(os.path.exists(os.path.join(bake, "preset.json")), "the export has no preset.json")
+    check(manifest["preset"]["file"] == "preset.json", "the manifest holds the path %r, not preset.json beside it"
+          % manifest["preset"]["file"])
+    # Export options (step, table size); an earlier export is replaced; a folder
+    # holding other files is refused with the reason and left alone.
+    other = env.path("not_an_export")
+    os.makedirs(other, exist_ok=True)
+    with open(os.path.join(other, "notes.txt"), "w") as f:
+        f.write("mine")
+    p = env.run(env.script("export_options.txt", "export {bake} 2 64x32\nquit\n".format(bake=bake)))
+    manifest = load_json(os.path.join(bake, "manifest.json"))
+    check(manifest["step_count"] == 12 and manifest["table"]["azimuth_count"] == 64,
+          "the export options were not used: %d steps, %d columns" % (manifest["step_count"], manifest["table"]["azimuth_count"]))
+    p = env.run(env.script("export_refused.txt", "export {other}\n".format(other=other)), expect_rc=1)
+    check("holds other files" in p.stderr, "exporting into a folder of other files was not refused:\n" + p.stderr[-1500:])
+    check(sorted(os.listdir(other)) == ["notes.txt"], "the refused export wrote into the folder: %s" % os.listdir(other))
     print("OK: undo_redo")
 
 
@@ -779,6 +795,24 @@ quit
           "the drop moved it elsewhere: %s" % dropped_from_above)
     check(undone[1] == -50.0, "undo did not restore the position: %s" % undone)
     print("placement: added at %s, dropped to %s" % (added, dropped_from_above))
+
+    # Ids: edited in place, the tracks follow; a duplicate is refused with the reason.
+    saved = env.path("ids.json")
+    env.run(env.script("ids.txt", """
+new
+add_volume box
+time 8
+key volume[1].density_per_m
+set_id volume 1 lake_mist
+save {saved}
+quit
+""".format(saved=saved)))
+    preset = load_json(saved)
+    check(preset["volumes"][1]["id"] == "lake_mist", "the id was not changed: %s" % preset["volumes"][1]["id"])
+    check(any(t.get("volume") == "lake_mist" for t in preset["tracks"]), "the track did not follow the id: %s" % preset["tracks"])
+    p = env.run(env.script("ids_bad.txt", "new\nadd_volume box\nset_id volume 1 %s\n" % preset["volumes"][0]["id"]),
+                expect_rc=1)
+    check("already has the id" in p.stderr, "a duplicate id was not refused with the reason:\n" + p.stderr[-1500:])
     print("OK: placement")
 
 

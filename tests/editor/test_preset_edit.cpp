@@ -304,5 +304,44 @@ TEST(PresetEdit, NewCloudVolumeSitsInTheLayerAboveTheLookAtPoint) {
     EXPECT_EQ(p.cloudVolumes[0].id, "cloud_ellipsoid_2");
 }
 
+TEST(PresetEdit, ObjectIdsAreEditedWithTheirTracks) {
+    Preset p;
+    addVolume(p, FogVolumeShape::Box, glm::dvec3(0.0));
+    addVolume(p, FogVolumeShape::Ellipsoid, glm::dvec3(0.0));
+    const ParamRef density{findParam(ParamScope::Volume, "density_per_m"), 1};
+    ASSERT_TRUE(keyParam(p, density, 6.0));
+    const std::string first = p.volumes[0].id;
+    std::string error;
+    EXPECT_TRUE(setObjectId(p, ParamScope::Volume, 1, "lake_mist", error)) << error;
+    EXPECT_EQ(p.volumes[1].id, "lake_mist");
+    ASSERT_NE(trackOf(p, density), nullptr);  // the track follows the id
+    EXPECT_EQ(trackOf(p, density)->target.objectId, "lake_mist");
+    // Refused, unchanged: a duplicate, an empty id, a bad character, too long.
+    const Preset before = p;
+    EXPECT_FALSE(setObjectId(p, ParamScope::Volume, 1, first, error));
+    EXPECT_EQ(error, "another volume already has the id \"" + first + "\"");
+    EXPECT_FALSE(setObjectId(p, ParamScope::Volume, 1, "", error));
+    EXPECT_FALSE(setObjectId(p, ParamScope::Volume, 1, "lake mist", error));
+    EXPECT_NE(error.find("A-Z a-z 0-9 _ - ."), std::string::npos);
+    EXPECT_FALSE(setObjectId(p, ParamScope::Volume, 1, std::string(65, 'a'), error));
+    EXPECT_FALSE(setObjectId(p, ParamScope::Volume, 7, "x", error));
+    EXPECT_TRUE(presetsIdentical(p, before));
+    // The same id as before is fine (unchanged).
+    EXPECT_TRUE(setObjectId(p, ParamScope::Volume, 1, "lake_mist", error));
+}
+
+TEST(PresetEdit, SaveAsOffersTheNewFilesNameToAnUnnamedPreset) {
+    EXPECT_EQ(presetNameFromFile("/a/b/misty_autumn-dawn.json"), "Misty autumn dawn");
+    // Opened from foggy_valley_morning.json, never renamed: follows the file.
+    EXPECT_EQ(
+        nameAfterSaveAs("Foggy valley morning", "presets/foggy_valley_morning.json", "/tmp/misty_dawn.json"),
+        "Misty dawn");
+    // The built-in default (no file yet) too.
+    EXPECT_EQ(nameAfterSaveAs(defaultPreset().name, "", "/tmp/lake.json"), "Lake");
+    // A name the artist chose stays.
+    EXPECT_EQ(nameAfterSaveAs("Lake at dawn, v2", "presets/foggy_valley_morning.json", "/tmp/lake.json"), "");
+    EXPECT_EQ(nameAfterSaveAs("Lake", "/tmp/old.json", "/tmp/lake.json"), "");  // already it
+}
+
 }  // namespace
 }  // namespace aerial::editor
