@@ -115,6 +115,12 @@ void drawOutliner(Document& doc, EditState& edit, const ActionTable& actions,
             } else {
                 std::string label = name.empty() ? id : name;
                 if (hasTracks(preset, scope, id)) label += "  ~";
+                const bool filterable = scope == ParamScope::Volume || scope == ParamScope::Emitter;
+                if (filterable && edit.viewFilter.soloed(scope, id)) label += "  [solo]";
+                if (filterable && edit.viewFilter.muted(scope, id)) label += "  [muted]";
+                const bool hidden = filterable && !edit.viewFilter.shows(scope, id);
+                if (hidden)
+                    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
                 if (ImGui::Selectable(label.c_str(), edit.selection == s,
                                       ImGuiSelectableFlags_AllowDoubleClick)) {
                     select(s);
@@ -123,6 +129,7 @@ void drawOutliner(Document& doc, EditState& edit, const ActionTable& actions,
                         edit.renameBuffer = name;
                     }
                 }
+                if (hidden) ImGui::PopStyleColor();
                 if (ImGui::IsItemHovered())
                     ImGui::SetTooltip("%s (id %s)%s. Double-click to rename, right-click for more.",
                                       name.c_str(), id.c_str(),
@@ -136,6 +143,14 @@ void drawOutliner(Document& doc, EditState& edit, const ActionTable& actions,
                     if (menuItem("Duplicate", "duplicate")) actions.run("duplicate");
                     if (menuItem("Delete", "delete")) actions.run("delete");
                     if (menuItem("Frame", "frame")) actions.run("frame");
+                    if (filterable) {
+                        ImGui::Separator();
+                        if (ImGui::MenuItem("Solo (view only)", nullptr, edit.viewFilter.soloed(scope, id)))
+                            edit.viewFilter.toggleSolo(scope, id);
+                        if (ImGui::MenuItem("Mute (view only)", nullptr, edit.viewFilter.muted(scope, id)))
+                            edit.viewFilter.toggleMute(scope, id);
+                        if (edit.viewFilter.active() && ImGui::MenuItem("Show all")) edit.viewFilter.clear();
+                    }
                     ImGui::EndPopup();
                 }
             }

@@ -25,6 +25,7 @@
 #include "preset_edit.hpp"
 #include "script.hpp"
 #include "view_exposure.hpp"
+#include "view_filter.hpp"
 #include "viewport/camera_controller.hpp"
 #include "viewport/gizmo.hpp"
 #include "viewport/scene_hits.hpp"
@@ -71,6 +72,8 @@ struct EditState {
     std::string renameBuffer;
     /// Auto-key and the changes not keyed yet (pending_edits.hpp).
     PendingEdits pending;
+    /// Solo and mute of volumes and emitters in the viewport (view only).
+    ViewFilter viewFilter;
 
     /// A volume, an emitter or a cloud volume is selected.
     bool objectSelected() const { return selection.scope() != ParamScope::Global; }

@@ -133,6 +133,41 @@ void Editor::declareEditScriptCommands() {
                    }
                    return true;
                }});
+    // Solo and mute (view only).
+    const auto filterCommand = [this](bool solo) {
+        return [this, solo](W w, E error) {
+            if (w.size() == 2 && w[1] == "off") {
+                edit_.viewFilter.clear();
+                return true;
+            }
+            const ParamScope scope = w[1] == "volume"    ? ParamScope::Volume
+                                     : w[1] == "emitter" ? ParamScope::Emitter
+                                                         : ParamScope::Global;
+            double index = -1;
+            const Preset& p = doc_.preset();
+            if (w.size() != 3 || scope == ParamScope::Global || !toNumber(w[2], index) || index < 0 ||
+                index >= double(objectCount(p, scope))) {
+                error = w[0] + ": " + w[0] + " volume|emitter N, or " + w[0] + " off";
+                return false;
+            }
+            const std::string& id = scope == ParamScope::Volume ? p.volumes[std::size_t(index)].id
+                                                                : p.emitters[std::size_t(index)].id;
+            solo ? edit_.viewFilter.toggleSolo(scope, id) : edit_.viewFilter.toggleMute(scope, id);
+            return true;
+        };
+    };
+    table.add({"solo", 1, 2, "solo volume|emitter N | solo off",
+               "show only that volume or emitter in the viewport (again: all); off ends solo and mute",
+               filterCommand(true)});
+    table.add({"mute", 1, 2, "mute volume|emitter N | mute off",
+               "hide (again: show) that object in the viewport", filterCommand(false)});
+    table.add({"print_drawn", 0, 0, "print_drawn",
+               "prints \"drawn V volumes E emitters\" of the last viewport frame", [this](W, E) {
+                   const renderer::RenderStats& s = view_.renderer->stats();
+                   std::printf("drawn %d volumes %d emitters\n", s.volumesDrawn, s.emitters);
+                   std::fflush(stdout);
+                   return true;
+               }});
     table.add({"set_id", 3, 3, "set_id volume|emitter|cloud_volume N ID",
                "change an object's id (its tracks follow; duplicates and bad characters refused)",
                [this](W w, E error) {

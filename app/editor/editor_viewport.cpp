@@ -73,16 +73,17 @@ void Editor::renderViewport() {
     // editor costs no rendering on a software rasteriser).
     char signature[512];
     const CameraState& c = view_.camera.state();
-    std::snprintf(
-        signature, sizeof signature,
-        "%d %d %.17g %llu %llu %.17g %.17g %.17g %.17g %.17g %.17g %d%d%d%d%d%d%d%d%d%d%d %s %s %.17g %p",
-        width, height, playback_.timeHours, static_cast<unsigned long long>(doc_.revision()),
-        static_cast<unsigned long long>(sky_.generation), c.target.x, c.target.y, c.target.z, c.distance,
-        c.yaw, c.pitch + 1000.0 * c.verticalFovDeg, view_.passes.sky, view_.passes.scene,
-        view_.passes.globalFog, view_.passes.volumes, view_.passes.emitters, view_.passes.transparent,
-        view_.passes.particles, view_.passes.clouds, view_.passes.shadows,
-        int(view_.fogModeFor(sky_.state.environment)), view_.showStars, view_.displayName.c_str(),
-        view_.viewName.c_str(), view_.exposureEv, static_cast<const void*>(view_.display.get()));
+    std::snprintf(signature, sizeof signature,
+                  "%d %d %.17g %llu %llu %llu %llu %.17g %.17g %.17g %.17g %.17g %.17g "
+                  "%d%d%d%d%d%d%d%d%d%d%d %s %s %.17g %p",
+                  width, height, playback_.timeHours, static_cast<unsigned long long>(doc_.revision()),
+                  static_cast<unsigned long long>(edit_.pending.revision()), edit_.viewFilter.revision(),
+                  static_cast<unsigned long long>(sky_.generation), c.target.x, c.target.y, c.target.z,
+                  c.distance, c.yaw, c.pitch + 1000.0 * c.verticalFovDeg, view_.passes.sky,
+                  view_.passes.scene, view_.passes.globalFog, view_.passes.volumes, view_.passes.emitters,
+                  view_.passes.transparent, view_.passes.particles, view_.passes.clouds, view_.passes.shadows,
+                  int(view_.fogModeFor(sky_.state.environment)), view_.showStars, view_.displayName.c_str(),
+                  view_.viewName.c_str(), view_.exposureEv, static_cast<const void*>(view_.display.get()));
     const auto now = std::chrono::steady_clock::now();
     const double dt = view_.lastExposureStep.time_since_epoch().count() == 0
                           ? 0.0
@@ -130,7 +131,10 @@ void Editor::renderViewport() {
     const bool sampled = ++frames_.renderedFrames % 30 == 2;
     frame.gpuTimers = timed || sampled;
     frame.stars = view_.showStars;  // View > Stars
-    view_.renderer->render(view_.camera.camera(view_.size.x / view_.size.y), sky_.state, frame);
+    // Solo / mute (view only): the frame without the objects left out.
+    const bool filtered = edit_.viewFilter.active();
+    view_.renderer->render(view_.camera.camera(view_.size.x / view_.size.y),
+                           filtered ? edit_.viewFilter.applied(sky_.state) : sky_.state, frame);
     if (timed && view_.renderer->stats().timed)
         frames_.benchPasses.push_back(view_.renderer->stats().wallMilliseconds);
     if (view_.renderer->stats().timed) {
@@ -491,7 +495,9 @@ bool Editor::screenshot(const std::string& path, std::string& error) {
     frame.passes = view_.passes;
     frame.fogMode = view_.fogModeFor(sky_.state.environment);
     frame.stars = view_.showStars;  // View > Stars
-    view_.renderer->render(view_.camera.camera(double(width) / double(height)), sky_.state, frame);
+    view_.renderer->render(view_.camera.camera(double(width) / double(height)),
+                           edit_.viewFilter.active() ? edit_.viewFilter.applied(sky_.state) : sky_.state,
+                           frame);
     const renderer::Image image = view_.renderer->readColour();
     view_.renderWidth = 0;  // the next frame renders the scaled view again
     // The settled exposure of this frame (what the viewport adapts to).

@@ -813,6 +813,35 @@ quit
     p = env.run(env.script("ids_bad.txt", "new\nadd_volume box\nset_id volume 1 %s\n" % preset["volumes"][0]["id"]),
                 expect_rc=1)
     check("already has the id" in p.stderr, "a duplicate id was not refused with the reason:\n" + p.stderr[-1500:])
+    # Solo and mute leave objects out of the viewport only (the preset keeps them).
+    saved = env.path("solo.json")
+    p = env.run(env.script("solo.txt", """
+new
+add_volume box
+add_emitter point
+wait_frames 2
+print_drawn
+mute volume 0
+wait_frames 2
+print_drawn
+solo emitter 1
+wait_frames 2
+print_drawn
+solo off
+wait_frames 2
+print_drawn
+expect_volumes 2
+save {saved}
+quit
+""".format(saved=saved)))
+    drawn = [tuple(map(int, m)) for m in re.findall(r"^drawn (\d+) volumes (\d+) emitters$", p.stdout, re.M)]
+    check(len(drawn) == 4, "print_drawn printed %s" % drawn)
+    everything, muted, solo, back = drawn
+    check(everything[0] == 2 and everything[1] >= 1, "not everything was drawn: %s" % (everything,))
+    check(muted == (1, everything[1]), "muting volume 0 drew %s" % (muted,))
+    check(solo == (0, 1), "soloing emitter 1 drew %s" % (solo,))
+    check(back == everything, "solo off did not bring everything back: %s" % (back,))
+    check(len(load_json(saved)["volumes"]) == 2, "mute changed the preset")
     print("OK: placement")
 
 
