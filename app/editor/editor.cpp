@@ -93,6 +93,8 @@ Editor::~Editor() {
     if (window_) {
         glfwMakeContextCurrent(window_);
         if (view_.displayTexture) glDeleteTextures(1, &view_.displayTexture);
+        if (!view_.retiredTextures.empty())
+            glDeleteTextures(GLsizei(view_.retiredTextures.size()), view_.retiredTextures.data());
         if (skyPreview_.texture) glDeleteTextures(1, &skyPreview_.texture);
         view_.display.reset();
         view_.renderer.reset();
@@ -312,6 +314,11 @@ void Editor::frame() {
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
     closeMenusOnEscape();
+    // The display textures replaced last frame: no draw list refers to them now.
+    if (!view_.retiredTextures.empty()) {
+        glDeleteTextures(GLsizei(view_.retiredTextures.size()), view_.retiredTextures.data());
+        view_.retiredTextures.clear();
+    }
 
     {
         const ImGuiIO& io = ImGui::GetIO();

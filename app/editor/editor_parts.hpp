@@ -172,6 +172,7 @@ struct ViewportState {
     std::shared_ptr<const SceneHits> sceneHits;  ///< the scene's triangles (placement, drop to ground)
 
     unsigned displayTexture = 0;
+    std::vector<unsigned> retiredTextures;  ///< replaced display textures, deleted next frame
     int displayWidth = 0, displayHeight = 0;
     int renderWidth = 0, renderHeight = 0;
     glm::dvec2 origin{0.0}, size{640.0, 360.0};  ///< [px] in the window

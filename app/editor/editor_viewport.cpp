@@ -53,7 +53,10 @@ void Editor::rebuildDisplay() {
 
 void Editor::ensureDisplayTexture(int width, int height) {
     if (view_.displayTexture && view_.displayWidth == width && view_.displayHeight == height) return;
-    if (view_.displayTexture) glDeleteTextures(1, &view_.displayTexture);
+    // This frame's ImGui draw list still shows the old texture (the viewport
+    // renders after ImGui::Render): it is deleted at the start of the next
+    // frame, never while a draw list can bind it.
+    if (view_.displayTexture) view_.retiredTextures.push_back(view_.displayTexture);
     glCreateTextures(GL_TEXTURE_2D, 1, &view_.displayTexture);
     glTextureStorage2D(view_.displayTexture, 1, GL_RGBA8, width, height);
     glTextureParameteri(view_.displayTexture, GL_TEXTURE_MIN_FILTER, GL_LINEAR);

@@ -134,6 +134,7 @@ GlStateGuard::GlStateGuard(const Logger* logger, bool routeDebugOutput, int* err
 namespace {
 void setEnabled(GLenum cap, GLboolean on) { on ? glEnable(cap) : glDisable(cap); }
 void restoreIndexed(GLenum target, GLuint index, GLint buffer, GLint64 start, GLint64 size) {
+    if (buffer != 0 && !glIsBuffer(static_cast<GLuint>(buffer))) buffer = 0;  // deleted meanwhile
     if (buffer != 0 && size > 0) {
         glBindBufferRange(target, index, static_cast<GLuint>(buffer), static_cast<GLintptr>(start),
                           static_cast<GLsizeiptr>(size));
@@ -144,12 +145,19 @@ void restoreIndexed(GLenum target, GLuint index, GLint buffer, GLint64 start, GL
 }  // namespace
 
 GlStateGuard::~GlStateGuard() {
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(drawFramebuffer_));
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(readFramebuffer_));
+    // An object the guarded call deleted (a target or texture made again at
+    // a new size that the caller still had bound, such as the frame it
+    // displayed) is not bound again: GL already unbound it, and binding a
+    // deleted name is GL_INVALID_OPERATION.
+    const auto live = [](GLboolean (*isObject)(GLuint), GLint name) {
+        return name != 0 && isObject(static_cast<GLuint>(name)) ? static_cast<GLuint>(name) : 0u;
+    };
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, live(glIsFramebuffer, drawFramebuffer_));
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, live(glIsFramebuffer, readFramebuffer_));
     glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
-    glUseProgram(static_cast<GLuint>(program_));
-    glBindVertexArray(static_cast<GLuint>(vertexArray_));
-    glBindBuffer(GL_ARRAY_BUFFER, static_cast<GLuint>(arrayBuffer_));
+    glUseProgram(live(glIsProgram, program_));
+    glBindVertexArray(live(glIsVertexArray, vertexArray_));
+    glBindBuffer(GL_ARRAY_BUFFER, live(glIsBuffer, arrayBuffer_));
     setEnabled(GL_BLEND, blend_);
     setEnabled(GL_DEPTH_TEST, depthTest_);
     setEnabled(GL_DEPTH_CLAMP, depthClamp_);
@@ -169,8 +177,8 @@ GlStateGuard::~GlStateGuard() {
     glPixelStorei(GL_PACK_ALIGNMENT, packAlignment_);
     for (unsigned unit = 0; unit < kSavedUnits; ++unit) {
         glActiveTexture(GL_TEXTURE0 + unit);
-        glBindTexture(savedTarget(unit), static_cast<GLuint>(textures_[unit]));
-        glBindSampler(unit, static_cast<GLuint>(samplers_[unit]));
+        glBindTexture(savedTarget(unit), live(glIsTexture, textures_[unit]));
+        glBindSampler(unit, live(glIsSampler, samplers_[unit]));
     }
     glActiveTexture(static_cast<GLenum>(activeTexture_));
     for (GLuint index : kUniformIndices) {
@@ -179,8 +187,8 @@ GlStateGuard::~GlStateGuard() {
     }
     restoreIndexed(GL_SHADER_STORAGE_BUFFER, kEmitterBinding, storageBinding_.buffer, storageBinding_.start,
                    storageBinding_.size);
-    glBindBuffer(GL_UNIFORM_BUFFER, static_cast<GLuint>(uniformBuffer_));
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, static_cast<GLuint>(storageBuffer_));
+    glBindBuffer(GL_UNIFORM_BUFFER, live(glIsBuffer, uniformBuffer_));
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, live(glIsBuffer, storageBuffer_));
     if (debugRouted_) {
         glDebugMessageCallback(debugCallback_, debugUserParam_);
         setEnabled(GL_DEBUG_OUTPUT, debugOutput_);

@@ -599,6 +599,11 @@ quit
     check("must be a calendar date" in p.stderr and "2026-02-30" in p.stderr,
           "an impossible date is not refused with the reason:\n" + p.stderr[-2000:])
 
+    # Changing the resolution scale re-creates the viewport's textures without a GL error.
+    p = env.run(env.script("resolution.txt", "wait_frames 2\nresolution_scale 0.75\nwait_frames 2\n"
+                                             "resolution_scale 1\nwait_frames 2\nresolution_scale 0.5\nwait_frames 2\nquit\n"))
+    check("GL error" not in p.stderr, "a resolution change raised a GL error:\n" + p.stderr[-1500:])
+
     script = env.script("broken.txt", "new\nset fog.density_per_m 0.01\nfrobnicate\n")
     p = env.run(script, expect_rc=1)
     check("broken.txt:3: unknown command" in p.stderr, "the script error does not name line 3")

@@ -21,6 +21,7 @@
 #include <aerial/preset.hpp>
 #include <aerial/renderer/scene.hpp>
 
+#include <epoxy/gl.h>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -481,6 +482,46 @@ TEST_F(GlTest, FroxelsMatchTheAnalyticFogOnTheShippedFoggyMorning) {
     EXPECT_EQ(r.stats().froxels.volumes, 3);
     EXPECT_LT(e.mean, 0.01);
     EXPECT_LT(e.p99, 0.15);  // 20 x 12 froxels at 160 x 90: the edges of the thin mist box
+}
+
+TEST_F(GlTest, ResizingTheFrameRaisesNoGlError) {
+    // The editor's viewport changes size (window, resolution scale) between
+    // frames with amortised clouds, shadows and the volumetric fog on: every
+    // target and grid is made again without a GL error (once seen as 0x0502).
+    PresetLoadResult loaded = loadPreset(std::string(AERIAL_SOURCE_DIR) + "/presets/hazy_sunset.json");
+    ASSERT_TRUE(loaded.ok());
+    const CompiledPreset compiled(std::move(*loaded.preset));
+    PresetState state;
+    compiled.evaluate(17.5, state);
+    const SkyPair sky = solveSky(state.environment.atmosphere, state.sunLight.body.direction,
+                                 state.moonLight.body.direction, 32, 16);
+    renderer::Renderer r(rendererDesc());
+    ASSERT_TRUE(r.valid()) << r.error();
+    r.setScene(renderer::makeBuiltinScene());
+    r.setSky(sky.sun, sky.moon);
+    renderer::Camera camera;
+    camera.eye = {0.0, renderer::builtinTerrainHeight(0.0, 120.0) + 30.0, 120.0};
+    camera.target = {0.0, renderer::builtinTerrainHeight(0.0, -200.0) + 10.0, -200.0};
+    for (const auto& [w, h] :
+         {std::pair{96, 54}, std::pair{160, 90}, std::pair{120, 68}, std::pair{96, 54}}) {
+        for (FogMode mode : {FogMode::Analytic, FogMode::Volumetric}) {
+            FrameDesc frame;
+            frame.width = w;
+            frame.height = h;
+            frame.fogMode = mode;
+            frame.froxels.temporal = true;
+            frame.cloudQuality = renderer::CloudQuality::Amortised;
+            camera.aspect = double(w) / h;
+            r.render(camera, state, frame);
+            EXPECT_EQ(r.stats().glErrors, 0)
+                << w << "x" << h << (mode == FogMode::Volumetric ? " volumetric" : "");
+            // As the editor does: the frame stays bound for display while the next one changes size.
+            glBindTexture(GL_TEXTURE_2D, r.colourTexture());
+        }
+    }
+    glBindTexture(GL_TEXTURE_2D, 0);
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+    EXPECT_TRUE(log.errors.empty()) << log.errors.front();
 }
 
 }  // namespace
