@@ -163,11 +163,17 @@ void drawOutliner(Document& doc, EditState& edit, const ActionTable& actions,
     objects(ParamScope::Emitter);
     objects(ParamScope::CloudVolume);
     ImGui::Spacing();
-    if (ImGui::SmallButton("+ Box")) actions.run("add_box_volume");
-    ImGui::SameLine();
-    if (ImGui::SmallButton("+ Ellipsoid")) actions.run("add_ellipsoid_volume");
-    ImGui::SameLine();
-    if (ImGui::SmallButton("+ Emitter")) actions.run("add_point_emitter");
+    // The add buttons flow onto a new line when the panel is narrow.
+    auto flowButton = [first = true](const char* label) mutable {
+        const ImGuiStyle& style = ImGui::GetStyle();
+        const float width = ImGui::CalcTextSize(label).x + style.FramePadding.x * 2.0f;
+        if (!first && ImGui::GetContentRegionAvail().x > width + style.ItemSpacing.x) ImGui::SameLine();
+        first = false;
+        return ImGui::SmallButton(label);
+    };
+    if (flowButton("+ Box")) actions.run("add_box_volume");
+    if (flowButton("+ Ellipsoid")) actions.run("add_ellipsoid_volume");
+    if (flowButton("+ Emitter")) actions.run("add_point_emitter");
     ImGui::EndChild();
 }
 
