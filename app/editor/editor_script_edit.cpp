@@ -420,6 +420,20 @@ void Editor::declareEditScriptCommands() {
                               [&](Preset& p) { findTrack(p, target)->interpolation = interpolation; });
                    return true;
                }});
+    table.add({"wrap", 2, 2, "wrap KEY on|off", "a track wraps through midnight (on) or holds its ends (off)",
+               [this, param](W w, E error) {
+                   const std::optional<ParamRef> ref = param(w[1], error);
+                   if (!ref) return false;
+                   const TrackTarget target = trackTargetOf(doc_.preset(), *ref);
+                   if (!findTrack(doc_.preset(), target) || (w[2] != "on" && w[2] != "off")) {
+                       error = "wrap: wrap KEY on|off, for a parameter with a track";
+                       return false;
+                   }
+                   const bool wrap = w[2] == "on";
+                   doc_.apply(wrap ? "Wrap at midnight" : "Hold the ends", "",
+                              [&](Preset& p) { findTrack(p, target)->wrap = wrap; });
+                   return true;
+               }});
     table.add({"key_all_changed", 0, kAnyArgs, "key_all_changed",
                "key every parameter that differs from the saved preset", [this](W, E) {
                    std::printf("keyed %d parameters\n", keyAllChangedAt(doc_, playback_.timeHours));

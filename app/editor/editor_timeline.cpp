@@ -165,6 +165,23 @@ void drawTimeline(Document& doc, EditState& edit, Playback& playback, const Acti
             }
             if (ImGui::IsItemHovered())
                 ImGui::SetTooltip("Interpolation of the track (smooth never overshoots)");
+            // Midnight: the day is cyclic (the curve runs from the last key to
+            // the next day's first), or the track holds its first and last values.
+            ImGui::SameLine();
+            int ends = track->wrap ? 0 : 1;
+            const char* endNames[] = {"wraps at midnight", "holds its ends"};
+            ImGui::SetNextItemWidth(150.0f);
+            if (ImGui::Combo("##ends", &ends, endNames, 2)) {
+                doc.apply(ends == 0 ? "Wrap at midnight" : "Hold the ends", "", [&](Preset& p) {
+                    if (Track* t = findTrack(p, target)) t->wrap = ends == 0;
+                });
+                track = trackOf(doc.preset(), *edit.selectedParam);
+            }
+            if (ImGui::IsItemHovered())
+                ImGui::SetTooltip(
+                    "Wraps: from the last key the curve runs on into the next day's first key "
+                    "(the night between them is interpolated).\nHolds: before the first key the "
+                    "first value, after the last key the last value.");
         }
     }
 

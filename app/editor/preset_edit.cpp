@@ -504,41 +504,34 @@ std::string nameAfterSaveAs(const std::string& currentName, const std::string& o
 }
 
 bool setObjectId(Preset& preset, ParamScope scope, int index, const std::string& id, std::string& error) {
-    std::string* current = nullptr;
-    std::vector<const std::string*> others;
-    auto collect = [&](auto& objects) {
+    const std::string* current = nullptr;
+    bool taken = false;
+    auto look = [&](const auto& objects) {
         for (std::size_t i = 0; i < objects.size(); ++i) {
             if (int(i) == index)
                 current = &objects[i].id;
             else
-                others.push_back(&objects[i].id);
+                taken = taken || objects[i].id == id;
         }
     };
-    if (scope == ParamScope::Volume) collect(preset.volumes);
-    if (scope == ParamScope::Emitter) collect(preset.emitters);
-    if (scope == ParamScope::CloudVolume) collect(preset.cloudVolumes);
+    if (scope == ParamScope::Volume) look(preset.volumes);
+    if (scope == ParamScope::Emitter) look(preset.emitters);
+    if (scope == ParamScope::CloudVolume) look(preset.cloudVolumes);
     if (!current) {
         error = "no such object";
         return false;
     }
-    const bool characters = !id.empty() && id.size() <= 64 && std::all_of(id.begin(), id.end(), [](char c) {
-        return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' ||
-               c == '-' || c == '.';
-    });
-    if (!characters) {
+    if (*current == id) return true;
+    if (taken) {
+        error = "another " + std::string(addressPrefix(scope)) + " already has the id \"" + id + "\"";
+        return false;
+    }
+    // core's changeObjectId checks the characters and retargets the tracks.
+    const std::string old = *current;  // a copy: the call changes the object's id first
+    if (!changeObjectId(preset, scope, old, id)) {
         error = "an id must be 1..64 characters of A-Z a-z 0-9 _ - . (got \"" + id + "\")";
         return false;
     }
-    for (const std::string* other : others) {
-        if (*other == id) {
-            error = "another " + std::string(addressPrefix(scope)) + " already has the id \"" + id + "\"";
-            return false;
-        }
-    }
-    const std::string old = *current;
-    for (Track& track : preset.tracks)
-        if (track.target.scope == scope && track.target.objectId == old) track.target.objectId = id;
-    *current = id;
     return true;
 }
 

@@ -52,7 +52,8 @@ bool presetsIdentical(const Preset& constA, const Preset& constB) {
     for (std::size_t i = 0; i < a.tracks.size(); ++i) {
         const Track& s = a.tracks[i];
         const Track& t = b.tracks[i];
-        if (!(s.target == t.target) || s.interpolation != t.interpolation || s.keys.size() != t.keys.size())
+        if (!(s.target == t.target) || s.interpolation != t.interpolation || s.wrap != t.wrap ||
+            s.keys.size() != t.keys.size())
             return false;
         for (std::size_t k = 0; k < s.keys.size(); ++k) {
             const double u[4] = {s.keys[k].timeHours, s.keys[k].value.x, s.keys[k].value.y,

@@ -379,6 +379,14 @@ public:
                       "unknown interpolation " + quoteString(nodes_[std::size_t(interp)].text) +
                           "; expected one of step, linear, smooth");
         }
+        if (const std::int32_t wrap = member(node, "wrap"); wrap >= 0) {
+            const std::string at = pointerJoin(pointer, "wrap");
+            if (nodes_[std::size_t(wrap)].kind == JNode::Bool)
+                track.wrap = nodes_[std::size_t(wrap)].boolean;
+            else
+                error(wrap, at,
+                      "wrap must be true (the day is cyclic) or false (hold the first and last keys)");
+        }
         const ParamDesc* p = findParam(track.target.scope, track.target.param);
         const std::int32_t keys = member(node, "keys");
         const std::string keysAt = pointerJoin(pointer, "keys");
@@ -425,7 +433,7 @@ public:
             const std::string& name = nodes_[std::size_t(m)].key;
             const bool objectKey = std::any_of(std::begin(kObjectScopes), std::end(kObjectScopes),
                                                [&](ParamScope s) { return trackObjectKey(s) == name; });
-            if (!objectKey && name != "param" && name != "interpolation" && name != "keys")
+            if (!objectKey && name != "param" && name != "interpolation" && name != "wrap" && name != "keys")
                 warnUnknown(m, pointerJoin(pointer, name));
         }
     }

@@ -213,6 +213,11 @@ std::string presetJsonSchema() {
         if (objectKey) tp[objectKey] = idSchema();
         tp["param"] = {{"enum", animatableNames(scope)}};
         tp["interpolation"] = {{"enum", {"step", "linear", "smooth"}}, {"default", "smooth"}};
+        tp["wrap"] = {{"type", "boolean"},
+                      {"default", true},
+                      {"description",
+                       "true: the day is cyclic (the last key runs into the next day's first); "
+                       "false: hold the first key's value before it and the last key's after it"}};
         tp["keys"] = {{"type", "array"},
                       {"minItems", 1},
                       {"maxItems", limits::kMaxKeysPerTrack},

@@ -195,6 +195,11 @@ public:
                                    ? interpolationName(t.interpolation)
                                    : sv("smooth"));
             out += ',';
+            if (!t.wrap) {  // written only when it differs from the cyclic default
+                newline(3);
+                key("wrap");
+                out += "false,";
+            }
             newline(3);
             key("keys");
             out += '[';

@@ -35,6 +35,7 @@ double wrapHours(double timeHours) {
 CompiledTrack compileTrack(const Track& track, int components) {
     CompiledTrack out;
     out.interpolation = track.interpolation;
+    out.wrap = track.wrap;
     out.components = components == 1 || components == 2 ? components : 3;
     const std::size_t n = track.keys.size();
     out.times.reserve(n);
@@ -48,7 +49,11 @@ CompiledTrack compileTrack(const Track& track, int components) {
     if (track.interpolation != Interpolation::Smooth || n < 2) return out;
 
     // Periodic Fritsch-Carlson: segment k runs from key k to key k+1, the
-    // last one from key n-1 to key 0 of the next day.
+    // last one from key n-1 to key 0 of the next day. A held track (no wrap)
+    // has no such segment: its end tangents are 0, so the curve meets the
+    // held values smoothly.
+    const bool wrap = track.wrap;
+    const std::size_t segments = wrap ? n : n - 1;
     std::vector<double> h(n);
     for (std::size_t k = 0; k < n; ++k) {
         const double next = k + 1 < n ? out.times[k + 1] : out.times[0] + kDayHours;
@@ -57,12 +62,17 @@ CompiledTrack compileTrack(const Track& track, int components) {
     out.tangents.assign(n, glm::dvec3(0.0));
     std::vector<double> secant(n), m(n);
     for (int c = 0; c < out.components; ++c) {
-        for (std::size_t k = 0; k < n; ++k) {
+        for (std::size_t k = 0; k < segments; ++k) {
             const std::size_t next = (k + 1) % n;
             secant[k] = (component(out.values[next], c) - component(out.values[k], c)) / h[k];
         }
-        // Steps 1-3: mean of the neighbouring secants, 0 at extrema and flats.
+        // Steps 1-3: mean of the neighbouring secants, 0 at extrema and flats
+        // (and at the ends of a held track).
         for (std::size_t k = 0; k < n; ++k) {
+            if (!wrap && (k == 0 || k + 1 == n)) {
+                m[k] = 0.0;
+                continue;
+            }
             const double before = secant[(k + n - 1) % n];
             const double after = secant[k];
             m[k] = (before * after > 0.0) ? 0.5 * (before + after) : 0.0;
@@ -70,7 +80,7 @@ CompiledTrack compileTrack(const Track& track, int components) {
         // Step 4: keep (alpha, beta) inside the circle of radius 3 on every
         // segment; scaling only shrinks tangents, so earlier segments stay
         // monotone.
-        for (std::size_t k = 0; k < n; ++k) {
+        for (std::size_t k = 0; k < segments; ++k) {
             const std::size_t next = (k + 1) % n;
             if (secant[k] == 0.0) {
                 m[k] = 0.0;
@@ -97,6 +107,10 @@ glm::dvec3 evaluateTrack(const CompiledTrack& track, double timeHours) {
     if (n == 1) return track.values[0];
     const double t = wrapHours(timeHours);
     int k = segmentBefore(track.times, t);
+    if (!track.wrap) {  // held: the first key's value before it, the last key's after it
+        if (k < 0) return track.values.front();
+        if (std::size_t(k) + 1 == n) return track.values.back();
+    }
     double t0, t1;
     if (k < 0) {  // before the first key: the segment from yesterday's last key
         k = int(n) - 1;

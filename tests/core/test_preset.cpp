@@ -705,6 +705,34 @@ TEST(Evaluate, ClampsAnimatedValuesAndKeepsExtinctionAboveScattering) {
     EXPECT_EQ(s.environment.atmosphere.mieExtinction, glm::dvec3(1e-4));
 }
 
+TEST(Preset, TracksThatHoldTheirEndsRoundTripAndBadWrapIsRefused) {
+    aerial::Preset p;
+    aerial::Track t;
+    t.target = aerial::TrackTarget::global("fog.density_per_m");
+    t.keys = {{6.0, glm::dvec3(0.02)}, {10.0, glm::dvec3(0.0)}};
+    t.wrap = false;
+    p.tracks = {t};
+    const std::string text = aerial::presetToJson(p);
+    EXPECT_NE(text.find("\"wrap\": false"), std::string::npos);
+    aerial::PresetLoadResult back = aerial::parsePreset(text);
+    ASSERT_TRUE(back.ok());
+    ASSERT_EQ(back.preset->tracks.size(), 1u);
+    EXPECT_FALSE(back.preset->tracks[0].wrap);
+    EXPECT_EQ(back.preset->tracks[0].keys.size(), 2u);
+    EXPECT_EQ(aerial::evaluate(*back.preset, 3.0).environment.fog.density, 0.02);  // held, not wrapped
+    // A cyclic track (the default) writes no "wrap" at all: old files stay as they are.
+    p.tracks[0].wrap = true;
+    EXPECT_EQ(aerial::presetToJson(p).find("\"wrap\""), std::string::npos);
+    // Not a boolean: refused with the pointer and the reason.
+    std::string bad = text;
+    const std::string wrapFalse = "\"wrap\": false";
+    bad.replace(bad.find(wrapFalse), wrapFalse.size(), "\"wrap\": \"no\"");
+    const aerial::PresetLoadResult refused = aerial::parsePreset(bad, "bad.json");
+    ASSERT_FALSE(refused.ok());
+    EXPECT_EQ(refused.errors[0].pointer, "/tracks/0/wrap");
+    EXPECT_NE(refused.errors[0].message.find("wrap must be true"), std::string::npos);
+}
+
 TEST(Evaluate, ReusesTheCallersStateWithoutReallocating) {
     const aerial::CompiledPreset compiled(aerial::defaultPreset());
     aerial::PresetState s;

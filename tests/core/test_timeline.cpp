@@ -256,4 +256,43 @@ TEST(Timeline, SetKeyKeepsKeysOrdered) {
     EXPECT_EQ(t.keys[2].value, glm::dvec3(4.0));
 }
 
+TEST(Timeline, HeldTracksKeepTheirEndValuesInsteadOfWrapping) {
+    // A morning mist keyed 06 / 08 / 10 h: cyclic, the night runs from the
+    // 10 h value back to the 06 h one (the mist returns before dawn); held,
+    // it is the 06 h value until 06 h and the 10 h value after 10 h.
+    Track t;
+    aerial::setKey(t, 6.0, glm::dvec3(0.02));
+    aerial::setKey(t, 8.0, glm::dvec3(0.01));
+    aerial::setKey(t, 10.0, glm::dvec3(0.0));
+    for (Interpolation interpolation : {Interpolation::Step, Interpolation::Linear, Interpolation::Smooth}) {
+        t.interpolation = interpolation;
+        t.wrap = true;
+        const CompiledTrack cyclic = aerial::compileTrack(t, 1);
+        if (interpolation != Interpolation::Step) {  // wraps back up towards the 06 h value
+            EXPECT_GT(aerial::evaluateTrack(cyclic, 4.0).x, 0.0) << int(interpolation);
+        }
+        t.wrap = false;
+        const CompiledTrack held = aerial::compileTrack(t, 1);
+        for (double time : {0.0, 3.0, 5.99})
+            EXPECT_EQ(aerial::evaluateTrack(held, time).x, 0.02) << time << " " << int(interpolation);
+        for (double time : {10.0, 15.0, 23.99})
+            EXPECT_EQ(aerial::evaluateTrack(held, time).x, 0.0) << time << " " << int(interpolation);
+        // Between the keys: exactly the keys at the keys, monotone between them.
+        EXPECT_EQ(aerial::evaluateTrack(held, 8.0).x, 0.01);
+        double previous = 1.0;
+        for (double time = 6.0; time <= 10.0; time += 0.05) {
+            const double v = aerial::evaluateTrack(held, time).x;
+            EXPECT_LE(v, previous + 1e-15) << time;
+            EXPECT_GE(v, 0.0);
+            previous = v;
+        }
+    }
+    // Smooth and held: flat where it meets the held values (zero end tangents).
+    t.interpolation = Interpolation::Smooth;
+    const CompiledTrack held = aerial::compileTrack(t, 1);
+    const double e = 1e-4;
+    EXPECT_NEAR((aerial::evaluateTrack(held, 6.0 + e).x - 0.02) / e, 0.0, 1e-3);
+    EXPECT_NEAR((aerial::evaluateTrack(held, 10.0 - e).x - 0.0) / e, 0.0, 1e-3);
+}
+
 }  // namespace

@@ -759,6 +759,16 @@ expect_pending 0
 set fog.falloff_per_m -0.05
 expect_status Fog height falloff clamped to 0 (valid 0..10 1/m)
 expect_param fog.falloff_per_m 0 0
+time 8
+set fog.falloff_per_m 0.05
+key fog.falloff_per_m
+time 10
+set fog.falloff_per_m 0.1
+wrap fog.falloff_per_m off
+time 3
+expect_param fog.falloff_per_m 0.05 1e-12
+time 23
+expect_param fog.falloff_per_m 0.1 1e-12
 save {third}
 quit
 """.format(first=first, second=second, third=third)))
@@ -769,7 +779,9 @@ quit
     check(key_at(t2, 15.0) is None, "the reverted change was keyed")
     t3 = track(load_json(third), "fog.density_per_m")
     check(key_at(t3, 18.0) is not None and key_value(key_at(t3, 18.0)) == 0.004, "auto-key on did not key at 18:00")
-    check(load_json(third)["fog"]["falloff_per_m"] == 0.0, "the typed -0.05 was not clamped to 0")
+    falloff = track(load_json(third), "fog.falloff_per_m")
+    check(falloff is not None and falloff.get("wrap") is False,
+          "the held track was not saved with \"wrap\": false: %s" % falloff)
     print("OK: autokey")
 
 

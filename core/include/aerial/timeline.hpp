@@ -84,12 +84,18 @@ struct Track {
     Interpolation interpolation = Interpolation::Smooth;
     /// At least one key; strictly increasing times in [0, 24).
     std::vector<TrackKey> keys;
+    /// True (default): the day is cyclic, the curve runs on from the last
+    /// key to the first key of the next day. False ("wrap": false in a
+    /// preset): before the first key the track holds its value, after the
+    /// last key its value (a morning mist keyed 06-10 h stays gone at night).
+    bool wrap = true;
 };
 
 /// A track ready to evaluate: keys sorted (as validated) plus the smooth
 /// tangents, computed once.
 struct CompiledTrack {
     Interpolation interpolation = Interpolation::Smooth;
+    bool wrap = true;  ///< Track::wrap
     int components = 1;         ///< 1 (scalar), 2 (vec2 in x, y) or 3 (vec3 / colour)
     std::vector<double> times;  ///< [h], strictly increasing in [0, 24)
     std::vector<glm::dvec3> values;
