@@ -114,9 +114,10 @@ double shadowKinkElevation(const AtmosphereParams& air, double depression) {
 // exact integral (tests/core/test_sky.cpp, SkyOffTexel, and a denser grid of
 // the anti-light quarter: 700 directions per sun): with them the worst error
 // of a 128 x 64 table is 0.8-1.6% for suns from -6 to 0 deg, against 3-49%
-// with the quadratic rows, except for suns 0.03-0.15 deg below the horizon
-// (up to 9% at -0.05 deg: the onset above the shadow's black sliver is
-// thinner than the rows; see sky.hpp).
+// with the quadratic rows, except for suns 0.01-0.3 deg below the horizon
+// (up to 93% at -0.01 deg, 16% at -0.05 deg in a dense sweep: the onset
+// above the shadow's black sliver is thinner than the rows and bends down
+// within a few columns; see sky.hpp and SkyShadowOnset).
 void setSkyTableMapping(SkyTable& table, const AtmosphereParams& air, const glm::dvec3& lightDirection) {
     constexpr double kDeg = kPi / 180.0;
     const glm::dvec3 l = normalizedOr(lightDirection, glm::dvec3(0.0, 1.0, 0.0));

@@ -428,6 +428,57 @@ INSTANTIATE_TEST_SUITE_P(SunElevations, SkyOffTexel,
                          ::testing::Values(-6.0, -5.0, -4.0, -3.0, -2.0, -1.5, -1.0, -0.5, 0.0, 0.5, 1.0, 2.0,
                                            3.0, 5.0, 10.0, 30.0, 60.0, 90.0));
 
+// The window the row mapping does not resolve (sky.hpp, "Table mapping"):
+// a light 0.01-0.3 deg below the horizon. Opposite it the lit sky above the
+// earth's shadow switches on within thousandths of a degree (the red channel
+// carries it: the blue is spent on the grazing path to the light), and that
+// onset drops towards the horizon within a few degrees of azimuth, so it
+// falls between both the rows and the columns. A dense sweep of the
+// anti-light quarter (8 azimuths x 101 elevations in 0..2.5 x the depression,
+// plus 0.5-2 deg), with the floor of SkyOffTexel. Skipped unless
+// AERIAL_SKY_SHADOW_ONSET is set: it fails (93% at -0.01 deg, 68% at -0.02,
+// 52% at -0.03, 16% at -0.05, 8.7% at -0.07, 7.4% at -0.1, 5.5% at -0.15,
+// 3.7% at -0.2, 2.2% at -0.3); set it to measure a fix (~16 s a sun).
+class SkyShadowOnset : public ::testing::TestWithParam<double> {};
+
+TEST_P(SkyShadowOnset, WithinTwoPercentOfTheExactIntegral) {
+    const double sun = GetParam();
+    if (std::getenv("AERIAL_SKY_SHADOW_ONSET") == nullptr)
+        GTEST_SKIP() << "the unresolved window (sky.hpp); set AERIAL_SKY_SHADOW_ONSET to measure it";
+    AtmosphereParams air;
+    const glm::dvec3 light = lightAtElevation(sun);
+    SkySolverDesc single;
+    single.singleScatteringOnly = true;
+    SkySolver solver(single);
+    solver.solve(air, light);
+    const SkyTable& t = solver.table();
+    double brightest = 0.0;
+    for (const OffTexelProbe& p : offTexelProbes(air, light, sun, t))
+        for (int c = 0; c < 3; ++c) brightest = std::max(brightest, p.exact[c]);
+    const double depression = std::max(-sun, 0.01);
+    const double lightAzimuth = reference::azimuthOf(light);
+    double worst = 0.0, worstEl = 0.0, worstAz = 0.0;
+    for (double az : {90.0, 150.0, 170.0, 176.0, 178.0, 179.0, 179.5, 180.0}) {
+        for (int k = 0; k <= 104; ++k) {
+            const double el = k <= 100 ? k * depression / 40.0 : (k - 100) * 0.5;
+            const glm::dvec3 v = directionFromLight(el, az, lightAzimuth);
+            const glm::dvec3 exact =
+                radiance(referenceSkyIntegrals(air, v, light), dot3(v, light), air.mieAnisotropy);
+            const glm::dvec3 got = skyRadiance(t, air.mieAnisotropy, v, glm::dvec3(1.0));
+            for (int c = 0; c < 3; ++c) {
+                const double err = std::abs(got[c] - exact[c]) / std::max(exact[c], 0.01 * brightest);
+                if (err > worst) worst = err, worstEl = el, worstAz = az;
+            }
+        }
+    }
+    std::printf("[ sky     ] sun %+6.3f deg: worst error %.4f at elevation %.5f, azimuth %.1f deg from the light\n",
+                sun, worst, worstEl, worstAz);
+    EXPECT_LT(worst, 0.02);
+}
+
+INSTANTIATE_TEST_SUITE_P(SmallDepressions, SkyShadowOnset,
+                         ::testing::Values(-0.3, -0.2, -0.15, -0.1, -0.07, -0.05, -0.03, -0.02, -0.01));
+
 // ---------------------------------------------------------------------------
 // Determinism, symmetry, amortised solves
 

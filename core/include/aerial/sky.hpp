@@ -73,11 +73,17 @@
 //     single-scattering integral relative to the pixel (floored at 1% of the
 //     brightest sky) in every direction tests/core/test_sky.cpp probes, off
 //     the texel centres too, for suns from -6 to 90 deg (SkyOffTexel). Not
-//     resolved: a light about 0.03-0.15 deg below the horizon, where the
-//     lit sky above the black sliver opposite it switches on within a few
-//     thousandths of a degree (e-folding ~0.003 deg at -0.05 deg), finer
-//     than even the crowded rows: up to 9% there (4.7% at -0.1 deg, 1.9% at
-//     -0.02 deg, 1.7% at -0.2 deg);
+//     resolved: a light about 0.01-0.3 deg below the horizon. Opposite it
+//     the lit sky above the black sliver switches on within thousandths of
+//     a degree (~0.005 deg at -0.05 deg, and narrower the nearer the light
+//     is to the horizon), and the onset's elevation drops towards the
+//     horizon within a few degrees of azimuth from the anti-light point, so
+//     it falls between the rows and between the columns. A dense sweep of
+//     that quarter (SkyShadowOnset) finds up to 93% at -0.01 deg,
+//     68% at -0.02, 52% at -0.03, 16% at -0.05, 8.7% at -0.07, 7.4% at -0.1,
+//     5.5% at -0.15, 3.7% at -0.2 and 2.2% at -0.3 deg (1.1% at -0.5 and
+//     1.0% at -1 deg); finer rows alone do not fix it (256 rows x 1024
+//     columns with rows crowded at the kink: 2.4% at -0.05 deg);
 //   * columns i = 0..azimuthCount-1 hold the azimuth relative to the light
 //       phi_i = 2 pi * i / azimuthCount,
 //     measured from the light's azimuth towards east (the same sense as the
