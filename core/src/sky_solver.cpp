@@ -52,11 +52,7 @@
 // hot loops work on contiguous float arrays (sky_kernels.hpp) and are
 // compiled for AVX-512, AVX2 and the baseline (target_clones, chosen at load
 // time): no global -march needed.
-#include "sky_depth.hpp"
-#include "sky_kernels.hpp"
-#include "sky_layers.hpp"
-#include "sky_multiple.hpp"
-#include "worker_pool.hpp"
+#include "sky_solver_impl.hpp"
 
 #include <aerial/limits.hpp>
 #include <aerial/sky.hpp>
@@ -129,82 +125,7 @@ void layerStencil(const double* crossing, int layers, int l, LayerConstants& lc)
 
 // ---------------------------------------------------------------------------
 
-struct SkySolver::Impl {
-    struct Scratch {
-        // view rows
-        std::vector<double> crossing;                           // [layers + 1]
-        std::vector<float> nodeS, nodeR, nodeM, nodeO;          // [4 layers]
-        std::vector<LayerConstants> layer;                      // [layers]
-        std::vector<double> mass;                               // [3 layers]: R, M, O column masses
-        std::vector<float> layerDepth, layerT, nodeT0, nodeT1;  // [3 layers]
-        std::vector<float> shells;                              // [kShellSlots][kShellRecord][padded columns]
-        std::vector<float> shadowIn, shadowOut;                 // [padded columns]
-        std::vector<float> acc;                                 // [9 padded columns]
-        // Lit pieces of the layers cut by a shadow edge (shadowEdgeLayers), at most 2 per column.
-        std::vector<float> edgeCrossing;              // [layers + 1]
-        std::vector<float> edgeTauStart, edgeTauEnd;  // [3][2 padded columns]
-        std::vector<float> edgeT0, edgeDt;            // [2 padded columns]
-        std::vector<float> edgeP, edgeQ, edgeOut;     // [6][2 padded columns]
-        std::vector<int> edgeColumn;                  // [2 padded columns]
-        DepthRowScratch depthRow;                     // optical-depth rows
-    };
-
-    SkySolverDesc desc;
-    int azimuthCount = 0, elevationCount = 0, layers = 0, angles = 0, columns = 0;
-    int paddedColumns = 0;  // columns rounded up to 16: the kernels run no scalar tail
-
-    // Atmosphere-dependent state (the optical-depth table and the layers).
-    bool cacheValid = false;
-    AtmosphereParams cachedAir;
-    AtmosphereParams rawAir;                    // parameters of the solve in progress, as given
-    AtmosphereParams air;                       // the same, sanitized
-    std::vector<double> shellHeight;            // [layers + 1], shellHeight[0] = viewer height
-    std::vector<float> horizonCos, angleScale;  // [layers + 1]
-    std::vector<double> horizonCosD;            // [layers + 1]
-    std::vector<float> layerCurvature;          // [layers] tanh(lambda / 4) / 3, see curvatureFactor
-    std::vector<float> depth;                   // [3][layers + 1][angles]
-    DensityConstants density;
-    // Multiple scattering (sky_multiple.hpp): the LUT and Psi_ms at the shells.
-    bool multiple = true;
-    MultipleScatteringLut ms;
-    std::vector<float> psiShell;  // [3][layers + 1][kMsCosines]
-
-    // Light-dependent state.
-    glm::dvec3 light{0.0, 1.0, 0.0};
-    double lightAzimuth = 0.0, sinLight = 1.0, cosLight = 0.0;
-    std::vector<double> cosPhi;        // [columns]
-    std::vector<double> rowElevation;  // [elevationCount] the rows' elevations (the table's mapping)
-    std::vector<float> cosPhiF;        // [padded columns]
-
-    // Double-buffered output: tables[front] is published.
-    SkyTable tables[2];
-    int front = 0;
-
-    // Amortised solve.
-    bool amortised = false;
-    bool depthPending = false;
-    int nextRow = 0;
-
-    // Threads: per-worker scratch and the pool (last: its threads stop first).
-    std::vector<Scratch> scratch;       // [threads], 0 = the caller
-    std::vector<MsScratch> msScratch;   // [threads]
-    std::atomic<int> depthRowsDone{0};  // optical-depth rows finished in the running dispatch
-    std::atomic<int> msDepthRowsDone{0};
-    std::atomic<int> psiRowsDone{0};
-    std::atomic<bool> psiReady{false};  // psiShell resampled in the running dispatch
-    std::optional<WorkerPool> pool;
-
-    explicit Impl(const SkySolverDesc& d);
-
-    void setAtmosphere(const AtmosphereParams& params);
-    void setLight(const glm::dvec3& direction);
-    void buildLayers();
-    void buildDepthRow(int row, Scratch& s);
-    void solveRow(int row, Scratch& s);
-    void shadowEdgeLayers(Scratch& s, double r0, double sinEl);
-    void run(bool rebuild, int rowBegin, int rowEnd);
-    void publish();
-};
+// SkySolver::Impl: sky_solver_impl.hpp.
 
 SkySolver::Impl::Impl(const SkySolverDesc& d) : desc(d) {
     // Sizes over the caps of aerial/limits.hpp are clamped (desc() reports them).
