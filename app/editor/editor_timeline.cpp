@@ -284,7 +284,10 @@ void drawTimeline(Document& doc, EditState& edit, Playback& playback, const Acti
         }
         if (edit.draggingKey && trackActive && edit.selectedKey >= 0 && ImGui::GetIO().MouseDelta.x != 0.0f) {
             const int key = edit.selectedKey;
-            const double t = tOf(mouseX);
+            // Snapped to another key (6 px) or the quarter hour; Shift moves freely.
+            double t = tOf(mouseX);
+            if (!ImGui::GetIO().KeyShift)
+                t = snapKeyTime(doc.preset(), target, key, t, 6.0 * 24.0 / double(std::max(x1 - x0, 1.0f)));
             doc.apply("Move key", "move-key:" + paramAddress(*edit.selectedParam), [&](Preset& p) {
                 if (Track* tr = findTrack(p, target)) moveKey(*tr, key, t);
             });

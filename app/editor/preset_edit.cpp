@@ -503,6 +503,22 @@ std::string nameAfterSaveAs(const std::string& currentName, const std::string& o
     return unnamed ? suggested : std::string();
 }
 
+double snapKeyTime(const Preset& preset, const TrackTarget& track, int index, double timeHours,
+                   double snapHours) {
+    const double t = wrapHours(timeHours);
+    double best = -1.0, bestGap = std::max(snapHours, 0.0);
+    for (const Track& other : preset.tracks) {
+        for (std::size_t k = 0; k < other.keys.size(); ++k) {
+            if (other.target == track && int(k) == index) continue;
+            double gap = std::abs(other.keys[k].timeHours - t);
+            gap = std::min(gap, 24.0 - gap);
+            if (gap <= bestGap) best = other.keys[k].timeHours, bestGap = gap;
+        }
+    }
+    if (best >= 0.0) return best;
+    return wrapHours(std::round(t * 4.0) / 4.0);  // the quarter hour
+}
+
 bool setObjectId(Preset& preset, ParamScope scope, int index, const std::string& id, std::string& error) {
     const std::string* current = nullptr;
     bool taken = false;

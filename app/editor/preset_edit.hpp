@@ -88,6 +88,13 @@ bool removeKey(Preset& preset, const TrackTarget& target, int index);
 /// kMinKeyGap away) and into [0, 24 - kMinKeyGap]. Returns the key's time.
 double moveKey(Track& track, int index, double timeHours);
 
+/// Where a key dragged to `timeHours` lands: on another key of any track
+/// (the dragged key itself excluded: `track`, `index`) within
+/// `snapHours` [h] (the drag's few pixels), else on the nearest quarter
+/// hour. The timeline snaps unless Shift is held.
+double snapKeyTime(const Preset& preset, const TrackTarget& track, int index, double timeHours,
+                   double snapHours);
+
 /// Every animatable parameter (globals, volumes, emitters, cloud volumes) whose value
 /// shown at `timeHours` differs from `baseline`'s (matched by object id) gets
 /// a key there. Returns how many keys were set.

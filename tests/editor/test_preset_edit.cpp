@@ -343,5 +343,23 @@ TEST(PresetEdit, SaveAsOffersTheNewFilesNameToAnUnnamedPreset) {
     EXPECT_EQ(nameAfterSaveAs("Lake", "/tmp/old.json", "/tmp/lake.json"), "");  // already it
 }
 
+TEST(PresetEdit, DraggedKeysSnapToOtherKeysElseToTheQuarterHour) {
+    Preset p;
+    Track fog;
+    fog.target = TrackTarget::global("fog.density_per_m");
+    fog.keys = {{8.0, glm::dvec3(0.01)}, {12.0, glm::dvec3(0.0)}};
+    Track mist;
+    mist.target = TrackTarget::global("fog.falloff_per_m");
+    mist.keys = {{9.6, glm::dvec3(0.02)}};
+    p.tracks = {fog, mist};
+    const double near = 0.05;  // [h], a few pixels
+    // Dragging fog's 08:00 key: 08:28 lands on 08:30, 09:57 on the other track's 09:36 when within reach.
+    EXPECT_DOUBLE_EQ(snapKeyTime(p, fog.target, 0, 8.0 + 28.0 / 60.0, near), 8.5);
+    EXPECT_DOUBLE_EQ(snapKeyTime(p, fog.target, 0, 9.62, near), 9.6);
+    EXPECT_DOUBLE_EQ(snapKeyTime(p, fog.target, 0, 11.97, near), 12.0);  // its own track's other key
+    EXPECT_DOUBLE_EQ(snapKeyTime(p, fog.target, 0, 8.02, near), 8.0);    // itself excluded: the grid
+    EXPECT_DOUBLE_EQ(snapKeyTime(p, fog.target, 0, 23.9, near), 0.0);    // the quarter hour wraps
+}
+
 }  // namespace
 }  // namespace aerial::editor
