@@ -18,13 +18,7 @@
 #include <random>
 #include <vector>
 
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_UNDEFINED__)
-#define AERIAL_SANITIZED 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(undefined_behavior_sanitizer)
-#define AERIAL_SANITIZED 1
-#endif
-#endif
+#include "quick_run.hpp"
 
 namespace aerial {
 namespace {
@@ -40,13 +34,7 @@ double dot3(const glm::dvec3& a, const glm::dvec3& b) { return a.x * b.x + a.y *
 
 /// Reduced probe sets under AddressSanitizer / UndefinedBehaviorSanitizer
 /// builds or with AERIAL_TEST_QUICK set (as test_sky_multiple.cpp).
-bool quick() {
-#ifdef AERIAL_SANITIZED
-    return true;
-#else
-    return std::getenv("AERIAL_TEST_QUICK") != nullptr;
-#endif
-}
+bool quick() { return test::quickRun(); }
 
 bool allFinite(const std::vector<float>& v) {
     return std::all_of(v.begin(), v.end(), [](float x) { return std::isfinite(x); });

@@ -25,13 +25,7 @@
 #include <cstdlib>
 #include <vector>
 
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_UNDEFINED__)
-#define AERIAL_SANITIZED 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(undefined_behavior_sanitizer)
-#define AERIAL_SANITIZED 1
-#endif
-#endif
+#include "quick_run.hpp"
 
 namespace aerial {
 namespace {
@@ -43,13 +37,7 @@ glm::dvec3 direction(double elevationDeg, double azimuthDeg) {
     return {std::sin(a) * std::cos(e), std::sin(e), -std::cos(a) * std::cos(e)};
 }
 
-bool quick() {
-#ifdef AERIAL_SANITIZED
-    return true;
-#else
-    return std::getenv("AERIAL_TEST_QUICK") != nullptr;
-#endif
-}
+bool quick() { return test::quickRun(); }
 
 struct SunCase {
     double elevation;
