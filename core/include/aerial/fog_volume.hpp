@@ -1,4 +1,5 @@
-// aerial/fog_volume.hpp — box and ellipsoid fog volumes placed in the world.
+// aerial/fog_volume.hpp — box, ellipsoid and mesh fog volumes placed in the
+// world, adding fog or (blend subtract) removing it.
 //
 // Usage:
 //   aerial::FogVolume v;
@@ -13,9 +14,14 @@
 //   aerial::PreparedFogVolume p = aerial::prepareFogVolume(v);
 //   aerial::VolumeInterval line = aerial::intersectFogVolumeLine(p, eye, dir);  // unclipped
 //
-// Geometry (../shared/DESIGN.md, "Fog volumes"): a box is the unit cube
-// [-1,1]^3 in object space, an ellipsoid the unit sphere; world = position +
-// rotation * (halfExtents * object). Rays are intersected in object space and
+// Geometry (../shared/DESIGN.md, "Fog volumes", "Mesh and subtract volumes"):
+// a box is the unit cube [-1,1]^3 in object space, an ellipsoid the unit
+// sphere, a mesh volume its closed triangle mesh (aerial/fog_mesh.hpp) in
+// its own coordinates; world = position + rotation * (halfExtents * object)
+// (for a mesh the half extents are its scale: a mesh of the cube [-1,1]^3 is
+// the box). A mesh may be concave: the ray meets it in several chords, and
+// its fog is the sum over them (the sum over the exits minus the sum over
+// the entries of the density's antiderivative along the ray). Rays are intersected in object space and
 // the hit distances used in world space; the segment is clipped to
 // [max(t_in, 0), min(t_out, t_scene)], so a viewer may stand inside and
 // scene geometry inside the volume ends it.
@@ -50,11 +56,24 @@
 #include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
 
+#include <cstddef>
+#include <memory>
 #include <string>
+#include <vector>
 
 namespace aerial {
 
-enum class FogVolumeShape { Box, Ellipsoid };
+class FogMesh;
+
+enum class FogVolumeShape { Box, Ellipsoid, Mesh };
+
+/// What a volume does to the fog around it. A subtract volume removes,
+/// inside it, the global fog and the fog of every volume that adds (all of
+/// them, whatever their order in the preset): a fog-free interior. Where
+/// subtract volumes overlap, the fog is removed once. Emitters (light
+/// glows, not fog) are not removed. A subtract volume's density, gradient
+/// and colour are unused.
+enum class FogVolumeBlend { Add, Subtract };
 
 /// Where a fog volume's in-scattered colour comes from.
 enum class FogColourMode {
@@ -114,6 +133,12 @@ struct FogVolume {
     FogColourMode colourMode = FogColourMode::Sky;
     /// Tint or radiance (see colourMode), scene-linear Rec.709. Default 1.
     glm::dvec3 colour{1.0, 1.0, 1.0};
+    FogVolumeBlend blend = FogVolumeBlend::Add;
+    /// Shape Mesh: the glTF file as written in the preset (relative to the
+    /// preset's folder), and the mesh loaded from it (loadPreset and
+    /// resolveFogMeshes fill it; a mesh volume without one is degenerate).
+    std::string mesh;
+    std::shared_ptr<const FogMesh> meshData;
 };
 
 /// The part of a ray o + t d (|d| = 1 not required) inside a volume, after
@@ -164,6 +189,9 @@ struct PreparedFogVolume {
     glm::dvec3 boundsMax{0.0};
     FogColourMode colourMode = FogColourMode::Sky;
     glm::dvec3 colour{1.0};
+    FogVolumeBlend blend = FogVolumeBlend::Add;
+    /// Shape Mesh: the mesh (object space), non-null when valid.
+    std::shared_ptr<const FogMesh> mesh;
 
     /// A world vector (a difference of points, a direction) in object space.
     glm::dvec3 toObject(const glm::dvec3& worldVector) const {
@@ -184,10 +212,19 @@ struct VolumeInterval {
 
 /// The line against the prepared volume's shape in object space (slabs for
 /// the box; for the ellipsoid the roots around the closest approach, free of
-/// cancellation for far or grazing rays). No hit for an invalid volume or an
+/// cancellation for far or grazing rays; for a mesh its first entry and last
+/// exit — the hull of its chords, what picking needs; fogVolumeChords gives
+/// the chords themselves). No hit for an invalid volume or an
 /// origin or direction that is not finite or beyond kMaxCoordinate.
 VolumeInterval intersectFogVolumeLine(const PreparedFogVolume& volume, const glm::dvec3& origin,
                                       const glm::dvec3& direction);
+
+/// The chords of the line origin + t * direction inside the volume, clipped
+/// to [0, tMax] (tMax >= 0, may be +Inf), sorted and disjoint, appended to
+/// `chords` (cleared first): one for a box or ellipsoid, any number for a
+/// concave mesh. Returns how many.
+std::size_t fogVolumeChords(const PreparedFogVolume& volume, const glm::dvec3& origin,
+                            const glm::dvec3& direction, double tMax, std::vector<VolumeSegment>& chords);
 
 /// intersectFogVolume for a prepared volume: the line clipped to
 /// [max(tNear, 0), min(tFar, tMax)]; tMax must be >= 0 and may be +Inf.
@@ -195,7 +232,8 @@ VolumeSegment intersectFogVolume(const PreparedFogVolume& volume, const glm::dve
                                  const glm::dvec3& direction, double tMax);
 
 /// fogVolumeOpticalDepth for a prepared volume (origin and direction within
-/// kMaxCoordinate, the segment from intersectFogVolume).
+/// kMaxCoordinate, the segment from intersectFogVolume). For a mesh, the
+/// optical depth of its chords inside the segment.
 double fogVolumeOpticalDepth(const PreparedFogVolume& volume, const glm::dvec3& origin,
                              const glm::dvec3& direction, const VolumeSegment& segment);
 
