@@ -150,6 +150,10 @@ struct ViewportState {
     /// window); the splitters between them set the sizes.
     bool showOutliner = true, showInspector = true, showTimeline = true;
     float outlinerWidth = 0.0f, inspectorWidth = 0.0f, timelineHeight = 0.0f;
+    /// Panels collapsed in place (the arrow of their title bar, or a
+    /// double-click on it): a side panel shrinks to its title's arrow, the
+    /// timeline to its title bar, and the viewport takes the room.
+    bool outlinerCollapsed = false, inspectorCollapsed = false, timelineCollapsed = false;
     /// The outlines, icons, gizmo and grid are drawn.
     bool helpersShown() const { return showHelpers && !gameView; }
     /// Size of the viewport's window [px] (print_viewport).

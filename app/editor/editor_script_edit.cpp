@@ -298,6 +298,19 @@ void Editor::declareEditScriptCommands() {
     };
     table.add({"maximize_viewport", 1, 1, "maximize_viewport on|off", "hide the side panels and the timeline",
                onOff("maximize_viewport", &ViewportState::maximized)});
+    table.add({"collapse", 2, 2, "collapse outliner|inspector|timeline on|off",
+               "collapse a panel in place (its title bar stays) or expand it", [this](W w, E error) {
+                   bool* flag = w[1] == "outliner"    ? &view_.outlinerCollapsed
+                                : w[1] == "inspector" ? &view_.inspectorCollapsed
+                                : w[1] == "timeline"  ? &view_.timelineCollapsed
+                                                      : nullptr;
+                   if (!flag || (w[2] != "on" && w[2] != "off")) {
+                       error = "collapse: outliner, inspector or timeline, then on or off";
+                       return false;
+                   }
+                   *flag = w[2] == "on";
+                   return true;
+               }});
     table.add({"game_view", 1, 1, "game_view on|off", "the picture without helpers (G)",
                onOff("game_view", &ViewportState::gameView)});
     table.add({"print_viewport", 0, 0, "print_viewport", "prints \"viewport WxH\" (the viewport's window)",

@@ -720,6 +720,28 @@ quit
     check(layout["maximized"] and layout["game_view"], "the layout was not kept: %s" % layout)
     p = env.run(env.script("layout_back.txt", "wait_frames 2\nprint_viewport\nmaximize_viewport off\ngame_view off\nquit\n"))
     check(re.search(r"^viewport 640x", p.stdout, re.M), "the maximized layout was not restored:\n" + p.stdout)
+    # Panels collapse in place: the viewport takes their room, and the
+    # collapsed layout is kept for the next start.
+    p = env.run(env.script("collapse.txt", """
+wait_frames 2
+print_viewport
+collapse outliner on
+collapse inspector on
+collapse timeline on
+wait_frames 3
+print_viewport
+quit
+"""))
+    sizes = [tuple(map(int, m)) for m in re.findall(r"^viewport (\d+)x(\d+)$", p.stdout, re.M)]
+    check(len(sizes) == 2, "print_viewport printed %s" % sizes)
+    check(560 <= sizes[1][0] < 640 and sizes[1][0] > sizes[0][0] + 100 and sizes[1][1] > sizes[0][1] + 40,
+          "collapsing did not give the viewport the room: %s -> %s" % (sizes[0], sizes[1]))
+    layout = load_json(os.path.join(env.config, "session.json"))["layout"]
+    check(layout["outliner_collapsed"] and layout["inspector_collapsed"] and layout["timeline_collapsed"],
+          "the collapsed layout was not kept: %s" % layout)
+    check(layout["help_seen"] is False, "a scripted run marked the getting-started sheet as seen")
+    p = env.run(env.script("collapse_back.txt", "wait_frames 2\nprint_viewport\nquit\n"))
+    check(re.search(r"^viewport %dx%d$" % sizes[1], p.stdout, re.M), "the collapsed layout was not restored:\n" + p.stdout)
     print("OK: session")
 
 

@@ -49,10 +49,12 @@ const std::vector<std::pair<std::uint32_t, std::uint32_t>>& meshOutlineEdges(
             if (!inserted) it->second.second = n;
         }
     }
+    // A small mesh: every edge but those inside a flat face (the diagonal
+    // of a quad); a large one: its creases.
     const bool all = faces.size() <= kMeshOutlineAllEdges;
-    const double creaseCos = std::cos(25.0 * std::numbers::pi / 180.0);
+    const double creaseCos = std::cos((all ? 0.5 : 25.0) * std::numbers::pi / 180.0);
     for (const auto& [edge, normals] : faces) {
-        if (all || glm::dot(normals.first, normals.second) < creaseCos) entry.edges.push_back(edge);
+        if (glm::dot(normals.first, normals.second) < creaseCos) entry.edges.push_back(edge);
     }
     return entry.edges;
 }
