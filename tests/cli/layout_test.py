@@ -81,6 +81,12 @@ def read_accessor(gltf, data, index):
     return [tuple(values[i:i + n]) for i in range(0, len(values), n)]
 
 
+def rotate_smallest_first(triangle):
+    """The same triangle (same winding) starting at its smallest index."""
+    k = triangle.index(min(triangle))
+    return tuple(triangle[k:]) + tuple(triangle[:k])
+
+
 def cross(a, b):
     return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
 
@@ -91,6 +97,66 @@ def sub(a, b):
 
 def dot(a, b):
     return sum(x * y for x, y in zip(a, b))
+
+
+# An octahedron stretched to 1 x 2 x 0.5: closed, outward, counter-clockwise.
+OCTAHEDRON = [(1.0, 0.0, 0.0), (-1.0, 0.0, 0.0), (0.0, 2.0, 0.0), (0.0, -2.0, 0.0), (0.0, 0.0, 0.5),
+              (0.0, 0.0, -0.5)]
+
+
+def octahedron_triangles():
+    """One triangle per octant (a +-X, a +-Y and a +-Z vertex), turned to face outwards."""
+    triangles = []
+    for a in (0, 1):
+        for b in (2, 3):
+            for c in (4, 5):
+                pa, pb, pc = OCTAHEDRON[a], OCTAHEDRON[b], OCTAHEDRON[c]
+                outward = (pa[0], pb[1], pc[2])
+                normal = cross(sub(pb, pa), sub(pc, pa))
+                triangles.append((a, b, c) if dot(normal, outward) > 0 else (a, c, b))
+    return triangles
+
+
+def write_mesh_preset(directory):
+    """A preset with two mesh volumes (add and subtract) over meshes/octahedron.gltf, and a
+    subtract box; returns its path."""
+    os.makedirs(os.path.join(directory, "meshes"), exist_ok=True)
+    indices = [i for t in octahedron_triangles() for i in t]
+    data = struct.pack("<%df" % (3 * len(OCTAHEDRON)), *[c for p in OCTAHEDRON for c in p])
+    data += struct.pack("<%dI" % len(indices), *indices)
+    mesh = {
+        "asset": {"version": "2.0"},
+        "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+        "accessors": [
+            {"bufferView": 0, "componentType": FLOAT, "count": len(OCTAHEDRON), "type": "VEC3",
+             "min": [min(p[c] for p in OCTAHEDRON) for c in range(3)],
+             "max": [max(p[c] for p in OCTAHEDRON) for c in range(3)]},
+            {"bufferView": 1, "componentType": UNSIGNED_INT, "count": len(indices), "type": "SCALAR"}],
+        "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 12 * len(OCTAHEDRON)},
+                        {"buffer": 0, "byteOffset": 12 * len(OCTAHEDRON), "byteLength": 4 * len(indices)}],
+        "buffers": [{"byteLength": len(data),
+                     "uri": "data:application/octet-stream;base64," + base64.b64encode(data).decode()}],
+    }
+    with open(os.path.join(directory, "meshes", "octahedron.gltf"), "w") as f:
+        json.dump(mesh, f)
+    preset = {
+        "version": 1,
+        "name": "Mesh layout (test)",
+        "volumes": [
+            {"id": "cave", "name": "Cave fog", "shape": "mesh", "mesh": "meshes/octahedron.gltf",
+             "position_m": [10, 2, -30], "rotation_xyzw": [0, 0.6, 0, 0.8], "half_extents_m": [20, 5, 8],
+             "density_per_m": 0.04},
+            {"id": "hall", "name": "Dry hall", "shape": "mesh", "mesh": "meshes/octahedron.gltf", "blend": "subtract",
+             "position_m": [12, 2, -30], "half_extents_m": [4, 2, 4]},
+            {"id": "room", "name": "Dry room", "shape": "box", "blend": "subtract", "position_m": [0, 1, 0],
+             "half_extents_m": [3, 1.5, 3]},
+        ],
+    }
+    path = os.path.join(directory, "mesh_layout.json")
+    with open(path, "w") as f:
+        json.dump(preset, f, indent=1)
+    return path
 
 
 class Layout(unittest.TestCase):
@@ -179,6 +245,37 @@ class Layout(unittest.TestCase):
         self.assertClose(light["color"], [1.0, 0.7, 0.38], "lamp colour over its largest component")
         self.assertClose([light["intensity"]], [0.01], "lamp intensity x 2")
 
+    def checkedMesh(self, gltf, data, mesh):
+        """The positions and indices of a glTF mesh, checked: one triangle primitive, float VEC3
+        positions whose min/max are exactly the data's (the validator requires them), UNSIGNED_INT
+        indices in range; closed (every edge run once each way) and counter-clockwise seen from
+        outside (the shapes here are convex around the origin)."""
+        (primitive,) = gltf["meshes"][mesh]["primitives"]
+        self.assertEqual(primitive.get("mode", 4), 4)
+        positions_index = primitive["attributes"]["POSITION"]
+        accessor = gltf["accessors"][positions_index]
+        self.assertEqual((accessor["componentType"], accessor["type"]), (FLOAT, "VEC3"))
+        positions = read_accessor(gltf, data, positions_index)
+        self.assertEqual(accessor["min"], [min(p[c] for p in positions) for c in range(3)])
+        self.assertEqual(accessor["max"], [max(p[c] for p in positions) for c in range(3)])
+        indices_accessor = gltf["accessors"][primitive["indices"]]
+        self.assertEqual((indices_accessor["componentType"], indices_accessor["type"]), (UNSIGNED_INT, "SCALAR"))
+        indices = [i for (i,) in read_accessor(gltf, data, primitive["indices"])]
+        self.assertEqual(len(indices) % 3, 0)
+        self.assertTrue(all(i < len(positions) for i in indices))
+        edges = set()
+        for t in range(0, len(indices), 3):
+            a, b, c = (positions[i] for i in indices[t:t + 3])
+            normal = cross(sub(b, a), sub(c, a))
+            centroid = tuple((x + y + z) / 3 for x, y, z in zip(a, b, c))
+            self.assertGreater(dot(normal, centroid), 0.0, "triangle %d of mesh %d faces inwards" % (t // 3, mesh))
+            for u, v in ((0, 1), (1, 2), (2, 0)):
+                edge = (indices[t + u], indices[t + v])
+                self.assertNotIn(edge, edges)
+                edges.add(edge)
+        self.assertTrue(all((b, a) in edges for a, b in edges), "open edge in mesh %d" % mesh)
+        return positions, indices, primitive["material"]
+
     def test_buffer_accessors_and_meshes(self):
         buffer, data = buffer_bytes(self.gltf)
         self.assertEqual(buffer["byteLength"], len(data))
@@ -190,20 +287,7 @@ class Layout(unittest.TestCase):
         shapes = {n["extras"]["shape"]: n["mesh"] for n in self.gltf["nodes"] if "mesh" in n}
         self.assertEqual(set(shapes), {"box", "ellipsoid"})
         for shape, mesh in shapes.items():
-            (primitive,) = self.gltf["meshes"][mesh]["primitives"]
-            self.assertEqual(primitive.get("mode", 4), 4)
-            positions_index = primitive["attributes"]["POSITION"]
-            accessor = self.gltf["accessors"][positions_index]
-            self.assertEqual((accessor["componentType"], accessor["type"]), (FLOAT, "VEC3"))
-            positions = read_accessor(self.gltf, data, positions_index)
-            # min/max exactly the data's (the validator requires them).
-            self.assertEqual(accessor["min"], [min(p[c] for p in positions) for c in range(3)])
-            self.assertEqual(accessor["max"], [max(p[c] for p in positions) for c in range(3)])
-            indices_accessor = self.gltf["accessors"][primitive["indices"]]
-            self.assertEqual((indices_accessor["componentType"], indices_accessor["type"]), (UNSIGNED_INT, "SCALAR"))
-            indices = [i for (i,) in read_accessor(self.gltf, data, primitive["indices"])]
-            self.assertEqual(len(indices) % 3, 0)
-            self.assertTrue(all(i < len(positions) for i in indices))
+            positions, indices, _ = self.checkedMesh(self.gltf, data, mesh)
             if shape == "box":
                 self.assertEqual(sorted(positions),
                                  sorted((x, y, z) for x in (-1.0, 1.0) for y in (-1.0, 1.0) for z in (-1.0, 1.0)))
@@ -211,19 +295,34 @@ class Layout(unittest.TestCase):
             else:
                 for p in positions:
                     self.assertAlmostEqual(math.sqrt(dot(p, p)), 1.0, delta=1e-6)
-            # Closed (every edge run once each way) and counter-clockwise seen
-            # from outside (these shapes are convex around the origin).
-            edges = set()
-            for t in range(0, len(indices), 3):
-                a, b, c = (positions[i] for i in indices[t:t + 3])
-                normal = cross(sub(b, a), sub(c, a))
-                centroid = tuple((x + y + z) / 3 for x, y, z in zip(a, b, c))
-                self.assertGreater(dot(normal, centroid), 0.0, "triangle %d of the %s faces inwards" % (t // 3, shape))
-                for u, v in ((0, 1), (1, 2), (2, 0)):
-                    edge = (indices[t + u], indices[t + v])
-                    self.assertNotIn(edge, edges)
-                    edges.add(edge)
-            self.assertTrue(all((b, a) in edges for a, b in edges), "open edge in the %s" % shape)
+
+    def test_mesh_volumes_carry_their_mesh(self):
+        work = os.path.join(WORK, "mesh_preset")
+        preset_path = write_mesh_preset(work)
+        gltf = load(os.path.join(bake(preset_path, "layout_mesh"), "layout.gltf"))
+        _, data = buffer_bytes(gltf)
+        preset = load(preset_path)
+        materials = [m["name"] for m in gltf["materials"]]
+        want_triangles = sorted(tuple(OCTAHEDRON[i] for i in rotate_smallest_first(t)) for t in octahedron_triangles())
+        for v in preset["volumes"]:
+            with self.subTest(id=v["id"]):
+                (node,) = [n for n in gltf["nodes"] if n["name"] == v["id"]]
+                extras = node["extras"]
+                self.assertEqual((extras["shape"], extras["blend"]), (v["shape"], v.get("blend", "add")))
+                self.assertClose(node["translation"], v["position_m"], "translation")
+                self.assertClose(node["scale"], v["half_extents_m"], "scale")
+                self.assertClose(node["rotation"], v.get("rotation_xyzw", [0, 0, 0, 1]), "rotation")
+                positions, indices, material = self.checkedMesh(gltf, data, node["mesh"])
+                self.assertEqual(materials[material], "fog_volume_" + extras["blend"])
+                if v["shape"] != "mesh":
+                    self.assertNotIn("mesh", extras)
+                    continue
+                self.assertEqual(extras["mesh"], v["mesh"])
+                # The mesh's own triangles in its own coordinates (the node scales them).
+                self.assertEqual(sorted(positions), sorted(OCTAHEDRON))
+                triangles = sorted(tuple(positions[i] for i in rotate_smallest_first(indices[t:t + 3]))
+                                   for t in range(0, len(indices), 3))
+                self.assertEqual(triangles, want_triangles)
 
     def test_a_preset_without_objects_gives_an_empty_scene(self):
         out = bake(os.path.join(ROOT, "tests", "data", "cli", "global_fog_only.json"), "layout_empty")
@@ -251,7 +350,8 @@ class KhronosValidator(ValidatorCase):
     def test_baked_layouts_have_no_errors(self):
         presets = [os.path.join(ROOT, FIXTURE), os.path.join(ROOT, "tests", "data", "cli", "global_fog_only.json"),
                    os.path.join(ROOT, "presets", "stormy_night.json"),
-                   os.path.join(ROOT, "presets", "foggy_valley_morning.json")]
+                   os.path.join(ROOT, "presets", "foggy_valley_morning.json"),
+                   write_mesh_preset(os.path.join(WORK, "mesh_preset"))]
         for preset_path in presets:
             with self.subTest(preset=os.path.basename(preset_path)):
                 out = bake(preset_path, "validated_" + os.path.splitext(os.path.basename(preset_path))[0])
