@@ -133,6 +133,13 @@ void Editor::declareActions() {
         .key(GLFW_KEY_E, S::kShift)
         .oneUndoStep()
         .does([this] { addVolumeInFront(FogVolumeShape::Ellipsoid); });
+    t.add("add_mesh_volume", "Mesh volume (glTF)...", "Create").does([this] { requestMeshFile(-1); });
+    t.add("choose_volume_mesh", "Choose mesh of the volume...", "Edit").does([this] {
+        if (edit_.selection.kind == Selection::Kind::Volume)
+            requestMeshFile(edit_.selection.index);
+        else
+            setStatus("Select a fog volume to give it a mesh");
+    });
     t.add("add_point_emitter", "Emitter", "Create").key(GLFW_KEY_P, S::kShift).oneUndoStep().does([this] {
         addEmitterInFront(EmitterKind::Point);
     });

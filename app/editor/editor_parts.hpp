@@ -205,7 +205,7 @@ enum class Pending { None, New, Open, Quit, OpenRecovery };
 /// The unsaved-changes prompt's buttons (and the script's `answer`).
 enum class UnsavedChoice { Save, Discard, Cancel };
 /// What the file dialog's result is for.
-enum class DialogPurpose { None, Open, SaveAs, Scene, Screenshot, Export };
+enum class DialogPurpose { None, Open, SaveAs, Scene, Screenshot, Export, Mesh };
 
 /// Modals, prompts and the file dialog.
 struct Dialogs {
@@ -222,6 +222,7 @@ struct Dialogs {
     bool openRecoveryModal = false;
     FileDialog fileDialog;
     DialogPurpose purpose = DialogPurpose::None;
+    int meshVolumeIndex = -1;  ///< DialogPurpose::Mesh: the volume to give the mesh, -1 a new volume
     std::vector<std::string> drops;  ///< dropped files, handled at the next frame
 
     /// The unsaved-changes prompt is open or about to open.

@@ -862,6 +862,60 @@ quit
     print("OK: placement")
 
 
+def case_mesh_volume(env):
+    """A mesh volume from a glTF file: added on the surface, made a subtract
+    volume, saved with its path relative to the preset, kept right by Save As
+    into another folder (crash recovery: test_autosave.cpp); a bad mesh is
+    refused with the reason and changes nothing; undo removes it."""
+    cube = os.path.join(env.source, "tests", "data", "bad_inputs", "meshes", "cube.gltf")
+    bad = os.path.join(env.source, "tests", "data", "bad_inputs", "meshes", "open_edge.gltf")
+    first = env.path("first.json")
+    os.makedirs(env.path("elsewhere"), exist_ok=True)
+    second = env.path(os.path.join("elsewhere", "second.json"))
+    p = env.run(env.script("mesh.txt", """
+new
+save {first}
+add_mesh_volume {cube}
+set volume[1].blend subtract
+set volume[1].half_extents_m 4 3 5
+expect_volumes 2
+wait_frames 2
+print_drawn
+save {first}
+save {second}
+quit
+""".format(first=first, second=second, cube=cube)))
+    m = re.search(r'added mesh volume 1 "([^"]+)" at (\S+) (\S+) (\S+)', p.stdout)
+    check(m is not None, "add_mesh_volume printed nothing:\n" + p.stdout)
+    saved = load_json(first)
+    v = saved["volumes"][1]
+    check(v["shape"] == "mesh" and v["blend"] == "subtract", "the volume was not saved as a subtract mesh: %s" % v)
+    check(not os.path.isabs(v["mesh"]), "the mesh path is not relative to the preset: %s" % v["mesh"])
+    check(os.path.samefile(os.path.join(env.work, v["mesh"]), cube), "the saved path names another file: %s" % v["mesh"])
+    moved = load_json(second)["volumes"][1]["mesh"]
+    check(os.path.samefile(os.path.join(env.work, "elsewhere", moved), cube),
+          "Save As into another folder broke the mesh path: %s" % moved)
+    # Both files open again with their meshes (the loader resolves the paths).
+    for path in (first, second):
+        env.run(env.script("reopen.txt", "open %s\nexpect_volumes 2\nquit\n" % path))
+    # A bad mesh: refused, named, nothing added.
+    p = env.run(env.script("bad_mesh.txt", "new\nadd_mesh_volume %s\n" % bad), expect_rc=1)
+    check("open edge" in p.stderr and "open_edge.gltf" in p.stderr,
+          "the bad mesh was not refused with its reason:\n" + p.stderr[-1500:])
+    # Undo removes the volume in one step.
+    env.run(env.script("mesh_undo.txt", """
+new
+add_mesh_volume {cube}
+expect_volumes 2
+expect_undo 1
+undo
+expect_volumes 1
+expect_undo 0
+quit
+""".format(cube=cube)))
+    print("OK: mesh_volume")
+
+
 CASES = {
     "session": case_session,
     "prompts": case_prompts,
@@ -874,6 +928,7 @@ CASES = {
     "cloud_volume": case_cloud_volume,
     "autokey": case_autokey,
     "placement": case_placement,
+    "mesh_volume": case_mesh_volume,
 }
 
 
