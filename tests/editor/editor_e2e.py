@@ -917,6 +917,15 @@ quit
     moved = load_json(second)["volumes"][1]["mesh"]
     check(os.path.samefile(os.path.join(env.work, "elsewhere", moved), cube),
           "Save As into another folder broke the mesh path: %s" % moved)
+    # Export for game travels with its meshes: meshes/<id>.gltf beside
+    # preset.json, which names it, and the bake's layout.gltf lists the volume.
+    out = env.path("export")
+    env.run(env.script("mesh_export.txt", "open %s\nexport %s 6 32x16\nquit\n" % (first, out)))
+    exported = load_json(os.path.join(out, "preset.json"))["volumes"][1]
+    check(exported["mesh"] == "meshes/%s.gltf" % exported["id"] and os.path.isfile(os.path.join(out, exported["mesh"])),
+          "the export does not carry the mesh: %s" % exported)
+    layout = load_json(os.path.join(out, "layout.gltf"))
+    check(any(n.get("name") == exported["id"] for n in layout["nodes"]), "layout.gltf lacks the mesh volume")
     # Both files open again with their meshes (the loader resolves the paths).
     for path in (first, second):
         env.run(env.script("reopen.txt", "open %s\nexpect_volumes 2\nquit\n" % path))
