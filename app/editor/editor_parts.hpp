@@ -5,7 +5,8 @@
 //
 //   Document (document.hpp)  the preset being edited, its file, dirty, undo
 //   EditState                what is selected (object, parameter, key), the
-//                            key clipboard, the outliner's inline rename
+//                            key clipboard, the outliner's inline rename,
+//                            the curve view's state
 //   Playback                 the time of day; play, loop, speed
 //   SkyService               the preset evaluated at that time and the sun's
 //                            and moon's sky tables solved for it
@@ -18,6 +19,7 @@
 #pragma once
 
 #include "autosave.hpp"
+#include "curve_view.hpp"
 #include "document.hpp"
 #include "file_dialog.hpp"
 #include "game_export.hpp"
@@ -66,6 +68,8 @@ struct EditState {
     std::optional<ParamRef> selectedParam;  ///< the inspector's parameter (the timeline's track)
     int selectedKey = -1;                   ///< a key of that parameter's track
     bool draggingKey = false;
+    /// The timeline's curve view: time span, curves shown, selected key points.
+    CurveViewState curves;
     bool timelineHovered = false;  ///< Delete then deletes keys, not the object
     KeyClipboard keyClipboard;
     bool renaming = false;  ///< the outliner's inline rename
