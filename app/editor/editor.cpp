@@ -455,7 +455,7 @@ void Editor::layout() {
     if (timeline) {
         ImGui::SetNextWindowPos(ImVec2(0, menuH + middleH));
         ImGui::SetNextWindowSize(ImVec2(w, timelineH));
-        if (ImGui::Begin("Timeline", nullptr, fixed | ImGuiWindowFlags_NoScrollbar))
+        if (ImGui::Begin("Timeline", nullptr, fixed | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse))
             drawTimeline(doc_, edit_, playback_, actions_, status_);
         ImGui::End();
     }

@@ -366,6 +366,7 @@ void Editor::declareScriptCommands() {
                }});
 
     declareEditScriptCommands();
+    declareCurveScriptCommands();
 
     // --- the action table's scriptable actions (the menus' and shortcuts' own code) --------
     for (const Action& a : actions_.all()) {

@@ -6,7 +6,7 @@ file code paths. Python standard library only.
     editor_e2e.py --editor PATH --source-dir DIR --work-dir DIR CASE
 
 CASE: workflow | undo_redo | crash_recovery | screenshot | exposure | errors | prompts | session |
-      cloud_volume
+      cloud_volume | autokey | placement | curves
 
 Every case FAILS (never skips) when the editor cannot start under Xvfb.
 """
@@ -785,6 +785,87 @@ quit
     print("OK: autokey")
 
 
+def case_curves(env):
+    """The timeline's curve view: two curves shown, a box selection of two keys
+    moved in time and value (snapped, one undo step "Move 2 keys"), one key
+    moved in time alone (snapped to the quarter hour) and made flat, zoom,
+    pan and fit; the saved keys are what the moves made, and undo brings
+    back the keys as they were."""
+    before, after, undone = env.path("curves_before.json"), env.path("curves_after.json"), env.path("curves_undone.json")
+    shot = env.path("curves_window.png")
+    p = env.run(env.script("curves.txt", """
+new
+time 6
+set fog.density_per_m 0.01
+key fog.density_per_m
+time 8
+set fog.density_per_m 0.02
+key fog.density_per_m
+time 10
+set fog.density_per_m 0
+key fog.density_per_m
+time 12
+set fog.falloff_per_m 0.05
+key fog.falloff_per_m
+time 18
+set fog.falloff_per_m 0.1
+key fog.falloff_per_m
+curve fog.density_per_m on
+curve fog.falloff_per_m on
+print_curves
+save {before}
+curve_box 5.5 8.5
+curve_move 1 0.0833333333333333
+curve_select none
+curve_select fog.falloff_per_m 12
+curve_move 0.3 0
+curve_flat on
+curve_zoom 2 6
+print_curves
+curve_pan 100
+print_curves
+timeline_fit
+print_curves
+window_screenshot {shot}
+save {after}
+undo
+undo
+undo
+undo
+save {undone}
+quit
+""".format(before=before, after=after, undone=undone, shot=shot)))
+    out = p.stdout
+    check("curves view 0 24 shown 2 selected 0" in out, "two curves were not shown on the whole day")
+    check("curve_box: 2 points, 2 keys" in out, "the box did not select the 06:00 and 08:00 keys")
+    check("curve_move: Move 2 keys by 1 h" in out, "the two keys did not move by an hour")
+    check("curve_move: Move key by 0.25 h" in out, "12:18 did not snap to 12:15")
+    check("curves view 3 15 " in out, "zooming in twice around 06:00 did not show 03:00-15:00")
+    check("curves view 24 36 " in out, "panning did not stop at the view's margin")
+    check(out.rstrip().count("curves view 0 24 ") >= 2, "timeline_fit did not show the whole day again")
+    # The built-in preset has density keys of its own; the 06:00 and 08:00 keys moved by an
+    # hour and up by a twelfth of the curve's height (its keys' range, 10 % padded each side).
+    was = track(load_json(before), "fog.density_per_m")["keys"]
+    span = 1.2 * (max(key_value(k) for k in was) - min(key_value(k) for k in was))
+    want = [(k["time_h"] + 1.0, key_value(k) + span / 12.0) if k["time_h"] in (6.0, 8.0)
+            else (k["time_h"], key_value(k)) for k in was]
+    density = track(load_json(after), "fog.density_per_m")["keys"]
+    got = [(k["time_h"], key_value(k)) for k in density]
+    check(len(got) == len(want) and all(g[0] == w[0] and abs(g[1] - w[1]) < 1e-12 for g, w in zip(got, want)),
+          "density keys %s, want %s" % (got, want))
+    falloff = track(load_json(after), "fog.falloff_per_m")["keys"]
+    moved = [k for k in falloff if k["time_h"] == 12.25]
+    check(len(moved) == 1 and moved[0].get("flat") is True, "no flat key at 12:15: %s" % falloff)
+    check(all("flat" not in k for k in falloff if k["time_h"] != 12.25), "other keys flat: %s" % falloff)
+    check(not any(k["time_h"] == 12.0 for k in falloff), "the 12:00 key stayed: %s" % falloff)
+    # Four undos: Save As renamed the preset after curves_after.json (a step), then the flat
+    # tangent, the falloff key's move and the two density keys' move, one step each.
+    check(load_json(undone)["tracks"] == load_json(before)["tracks"], "undo did not restore the keys")
+    width, height, _, _ = read_png(shot)
+    check(width > 0 and height > 0, "no window screenshot")
+    print("OK: curves")
+
+
 def case_placement(env):
     """A new volume rests on the scene's surface under the viewport's centre;
     Drop to ground puts a volume's bottom on the surface under it, from above
@@ -874,6 +955,7 @@ CASES = {
     "cloud_volume": case_cloud_volume,
     "autokey": case_autokey,
     "placement": case_placement,
+    "curves": case_curves,
 }
 
 

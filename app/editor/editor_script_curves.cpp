@@ -1,0 +1,168 @@
+// editor/editor_script_curves.cpp — the script commands of the timeline's
+// curve view: show a curve, select key points (one, or a box in time and
+// normalised value), move them as a drag does (one undo step, snapped unless
+// told not to), flat tangents, zoom and pan. Entries of the script command
+// table (see editor_script.cpp) over the functions the curve view uses
+// (curve_view.hpp).
+#include "editor.hpp"
+#include "script_args.hpp"
+
+#include <cstdio>
+
+namespace aerial::editor {
+
+void Editor::declareCurveScriptCommands() {
+    ScriptCommandTable& table = scriptCommands_;
+    using W = const ScriptWords&;
+    using E = std::string&;
+    // The target of an animated parameter, or nullopt with `error` set.
+    const auto animated = [this](const std::string& address,
+                                 std::string& error) -> std::optional<TrackTarget> {
+        const std::optional<ParamRef> ref = parseParamAddress(doc_.preset(), address, &error);
+        if (!ref) return std::nullopt;
+        const TrackTarget target = trackTargetOf(doc_.preset(), *ref);
+        if (!findTrack(doc_.preset(), target)) {
+            error = address + " has no track";
+            return std::nullopt;
+        }
+        return target;
+    };
+
+    table.add({"curve", 2, 2, "curve KEY on|off",
+               "show or hide KEY's curve in the timeline (the inspector's curve button)",
+               [this, animated](W w, E error) {
+                   const std::optional<TrackTarget> target = animated(w[1], error);
+                   if (!target) return false;
+                   if (w[2] != "on" && w[2] != "off") {
+                       error = "curve: curve KEY on|off";
+                       return false;
+                   }
+                   edit_.curves.setShown(*target, w[2] == "on");
+                   return true;
+               }});
+    table.add(
+        {"curve_select", 1, 3, "curve_select KEY T [COMPONENT] | curve_select none",
+         "add the key of KEY at time T (component 0, 1, 2) to the curve selection, as Ctrl+click does",
+         [this, animated](W w, E error) {
+             if (w[1] == "none") {
+                 edit_.curves.selected.clear();
+                 return true;
+             }
+             const std::optional<TrackTarget> target = animated(w[1], error);
+             double t = 0.0, component = 0.0;
+             if (!target || w.size() < 3 || !toTime(w[2], t) ||
+                 (w.size() == 4 && (!toNumber(w[3], component) || component < 0.0 || component > 2.0))) {
+                 if (error.empty()) error = "curve_select: curve_select KEY T [COMPONENT]";
+                 return false;
+             }
+             const int key = keyIndexAt(*findTrack(doc_.preset(), *target), t);
+             if (key < 0) {
+                 error = "curve_select: no key of " + w[1] + " at " + w[2];
+                 return false;
+             }
+             const CurvePoint point{*target, key, int(component)};
+             if (!edit_.curves.isSelected(point)) edit_.curves.selected.push_back(point);
+             return true;
+         }});
+    table.add({"curve_box", 2, 4, "curve_box FROM TO [LO HI]",
+               "select the keys of the shown curves from time FROM to TO and, optionally, from LO to HI of "
+               "each curve's height (0 bottom, 1 top), as a drag on empty curve area does",
+               [this](W w, E error) {
+                   double from, to, lo = -1.0, hi = 2.0;
+                   if (!toTime(w[1], from) || !toTime(w[2], to) || w.size() == 4 ||
+                       (w.size() == 5 && (!toNumber(w[3], lo) || !toNumber(w[4], hi)))) {
+                       error = "curve_box: curve_box FROM TO [LO HI]";
+                       return false;
+                   }
+                   std::vector<TrackTarget> targets = edit_.curves.shown;
+                   if (edit_.selectedParam) {
+                       const TrackTarget primary = trackTargetOf(doc_.preset(), *edit_.selectedParam);
+                       if (!edit_.curves.isShown(primary)) targets.push_back(primary);
+                   }
+                   const CurveKeyPoints points = keyPointsOf(doc_.preset(), targets);
+                   edit_.curves.selected.clear();
+                   for (int i : pointsInBox(points.timeValue, {from, lo}, {to, hi}))
+                       edit_.curves.selected.push_back(points.ids[std::size_t(i)]);
+                   std::printf("curve_box: %zu points, %d keys\n", edit_.curves.selected.size(),
+                               keyCountOf(edit_.curves.selected));
+                   return true;
+               }});
+    table.add({"curve_move", 2, 3, "curve_move DT DV [free]",
+               "move the selected keys as a drag on the curves does: DT hours (the first selected key "
+               "snaps to keys and quarter hours unless free) and DV of each curve's height; one undo step",
+               [this](W w, E error) {
+                   double dt, dv;
+                   if (!toNumber(w[1], dt) || !toNumber(w[2], dv) || (w.size() == 4 && w[3] != "free")) {
+                       error = "curve_move: curve_move DT DV [free]";
+                       return false;
+                   }
+                   const std::vector<CurveDragItem> items = dragItemsOf(doc_.preset(), edit_.curves.selected);
+                   if (items.empty()) {
+                       error = "curve_move: no keys selected";
+                       return false;
+                   }
+                   const CurveDragItem& lead = items.front();
+                   double shift = dt;
+                   if (w.size() == 3) {  // 6 px at the whole day on a 1000 px strip
+                       const double t = snapKeyTime(doc_.preset(), lead.point.target, lead.point.key,
+                                                    lead.timeHours + dt, 6.0 * 24.0 / 1000.0);
+                       shift = t - lead.timeHours;
+                       if (shift - dt > 12.0) shift -= 24.0;
+                   }
+                   std::vector<CurvePoint> moved;
+                   for (const CurveDragItem& item : items) moved.push_back(item.point);
+                   double applied = 0.0;
+                   for (int step = 1; step <= 4; ++step)  // a drag: several moves, one step
+                       doc_.apply(moveLabel(moved), "curve-move", [&](Preset& p) {
+                           applied = moveCurvePoints(p, items, shift * step / 4.0, dv * step / 4.0);
+                       });
+                   doc_.closeMerge();
+                   std::printf("curve_move: %s by %.6g h\n", moveLabel(moved).c_str(), applied);
+                   return true;
+               }});
+    table.add({"curve_flat", 1, 1, "curve_flat on|off",
+               "flat (on) or automatic (off) tangents at the selected keys, as the key menu does",
+               [this](W w, E error) {
+                   if (w[1] != "on" && w[1] != "off") {
+                       error = "curve_flat: curve_flat on|off";
+                       return false;
+                   }
+                   const bool flat = w[1] == "on";
+                   const std::vector<CurvePoint> picked = edit_.curves.selected;
+                   const bool one = keyCountOf(picked) == 1;
+                   doc_.apply(flat ? (one ? "Flat tangent" : "Flat tangents")
+                                   : (one ? "Automatic tangent" : "Automatic tangents"),
+                              "", [&](Preset& p) { setFlatTangents(p, picked, flat); });
+                   return true;
+               }});
+    table.add({"curve_zoom", 2, 2, "curve_zoom FACTOR T",
+               "zoom the timeline by FACTOR (> 1 in) around time T [h], as the wheel does",
+               [this](W w, E error) {
+                   double factor, t;
+                   if (!toNumber(w[1], factor) || !(factor > 0.0) || !toNumber(w[2], t)) {
+                       error = "curve_zoom: curve_zoom FACTOR T";
+                       return false;
+                   }
+                   edit_.curves.time = zoomView(edit_.curves.time, t, factor);
+                   return true;
+               }});
+    table.add({"curve_pan", 1, 1, "curve_pan HOURS", "pan the timeline by HOURS (a middle drag)",
+               [this](W w, E error) {
+                   double hours;
+                   if (!toNumber(w[1], hours)) {
+                       error = "curve_pan: curve_pan HOURS";
+                       return false;
+                   }
+                   edit_.curves.time = panView(edit_.curves.time, hours);
+                   return true;
+               }});
+    table.add({"print_curves", 0, 0, "print_curves", "prints \"curves view START END shown N selected M\"",
+               [this](W, E) {
+                   std::printf("curves view %.6g %.6g shown %zu selected %zu\n", edit_.curves.time.startHours,
+                               edit_.curves.time.endHours, edit_.curves.shown.size(),
+                               edit_.curves.selected.size());
+                   return true;
+               }});
+}
+
+}  // namespace aerial::editor
