@@ -161,6 +161,10 @@ struct CurveViewState {
     std::vector<TrackTarget> shown;
     /// The selected key points.
     std::vector<CurvePoint> selected;
+    /// Where the curves were drawn last frame [px in the window]: x of
+    /// time.startHours and time.endHours, y of the bottom (0) and top (1)
+    /// of every curve's range (what a script's mouse drag aims at).
+    double drawnX0 = 0.0, drawnX1 = 0.0, drawnBottom = 0.0, drawnTop = 0.0;
 
     bool isShown(const TrackTarget& target) const;
     /// Shows or hides a curve.

@@ -304,6 +304,15 @@ void Editor::frame() {
 
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
+    if (!runner_.guiMouse.empty()) {  // a script's drag on the timeline, in place of the real mouse
+        const ScriptRunner::GuiMouse m = runner_.guiMouse.front();
+        runner_.guiMouse.pop_front();
+        ImGuiIO& io = ImGui::GetIO();
+        io.MousePos = ImVec2(float(m.position.x), float(m.position.y));
+        io.MouseDown[0] = m.down;
+        io.KeyCtrl = m.ctrl;
+        io.KeyShift = m.shift;
+    }
     ImGui::NewFrame();
     closeMenusOnEscape();
     // The display textures replaced last frame: no draw list refers to them now.
@@ -455,7 +464,8 @@ void Editor::layout() {
     if (timeline) {
         ImGui::SetNextWindowPos(ImVec2(0, menuH + middleH));
         ImGui::SetNextWindowSize(ImVec2(w, timelineH));
-        if (ImGui::Begin("Timeline", nullptr, fixed | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse))
+        if (ImGui::Begin("Timeline", nullptr,
+                         fixed | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse))
             drawTimeline(doc_, edit_, playback_, actions_, status_);
         ImGui::End();
     }

@@ -85,6 +85,10 @@ void drawCurveView(Document& doc, EditState& edit, Playback& playback, float lab
     const float yTop = top + 6.0f, yBottom = bottom - 6.0f;
     auto xOf = [&](double t) { return float(view.time.xOf(t, x0, x1)); };
     auto yOf = [&](double n) { return yBottom - float(n) * (yBottom - yTop); };
+    view.drawnX0 = x0;
+    view.drawnX1 = x1;
+    view.drawnBottom = yBottom;
+    view.drawnTop = yTop;
 
     // --- the curves: those toggled on, then the inspector's parameter ---------------------------
     std::vector<Drawn> curves;

@@ -33,6 +33,7 @@ void Editor::stepScript() {
         --runner_.waitFrames;
         return;
     }
+    if (!runner_.guiMouse.empty()) return;
     if (runner_.waitsForMouse) {
         if (!view_.scriptedMouse.empty() || view_.scriptedMouseActive) return;
         runner_.waitsForMouse = false;

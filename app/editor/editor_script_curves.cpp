@@ -1,7 +1,8 @@
 // editor/editor_script_curves.cpp — the script commands of the timeline's
 // curve view: show a curve, select key points (one, or a box in time and
 // normalised value), move them as a drag does (one undo step, snapped unless
-// told not to), flat tangents, zoom and pan. Entries of the script command
+// told not to), flat tangents, zoom and pan; and real mouse drags over the
+// curve area (curve_drag, curve_drag_box: ImGui's mouse, frame by frame). Entries of the script command
 // table (see editor_script.cpp) over the functions the curve view uses
 // (curve_view.hpp).
 #include "editor.hpp"
@@ -26,6 +27,23 @@ void Editor::declareCurveScriptCommands() {
             return std::nullopt;
         }
         return target;
+    };
+
+    // A left drag over the timeline's real widgets (ImGui's mouse, one
+    // frame each): hover, press, `frames` moves, release.
+    const auto queueDrag = [this](glm::dvec2 from, glm::dvec2 to, bool ctrl, bool shift, int frames) {
+        runner_.guiMouse.push_back({from, false, ctrl, shift});
+        runner_.guiMouse.push_back({from, true, ctrl, shift});
+        for (int k = 1; k <= frames; ++k)
+            runner_.guiMouse.push_back({from + (to - from) * (double(k) / frames), true, ctrl, shift});
+        runner_.guiMouse.push_back({to, false, ctrl, shift});
+        runner_.guiMouse.push_back({to, false, false, false});
+    };
+    // Window pixels of time `t` [h] and height `n` (0 bottom, 1 top of a curve).
+    const auto pixelOf = [this](double t, double n) {
+        const CurveViewState& v = edit_.curves;
+        return glm::dvec2(v.time.xOf(t, v.drawnX0, v.drawnX1),
+                          v.drawnBottom + n * (v.drawnTop - v.drawnBottom));
     };
 
     table.add({"curve", 2, 2, "curve KEY on|off",
@@ -120,6 +138,58 @@ void Editor::declareCurveScriptCommands() {
                    std::printf("curve_move: %s by %.6g h\n", moveLabel(moved).c_str(), applied);
                    return true;
                }});
+    table.add({"curve_drag", 4, 5, "curve_drag KEY T DX DY [shift|ctrl]",
+               "drag the key of KEY at time T (its first component) on the curves by DX DY pixels with the "
+               "mouse, holding Shift (no snapping) or Ctrl (add to the selection)",
+               [this, animated, queueDrag, pixelOf](W w, E error) {
+                   const std::optional<TrackTarget> target = animated(w[1], error);
+                   double t, dx, dy;
+                   if (!target || !toTime(w[2], t) || !toNumber(w[3], dx) || !toNumber(w[4], dy) ||
+                       (w.size() == 6 && w[5] != "shift" && w[5] != "ctrl")) {
+                       if (error.empty()) error = "curve_drag: curve_drag KEY T DX DY [shift|ctrl]";
+                       return false;
+                   }
+                   const bool primary =
+                       edit_.selectedParam && trackTargetOf(doc_.preset(), *edit_.selectedParam) == *target;
+                   if (!edit_.curves.isShown(*target) && !primary) {
+                       error = "curve_drag: the curve of " + w[1] + " is not shown (curve KEY on)";
+                       return false;
+                   }
+                   if (!(edit_.curves.drawnX1 > edit_.curves.drawnX0) ||
+                       !(edit_.curves.drawnBottom > edit_.curves.drawnTop)) {
+                       error = "curve_drag: the timeline's curve area is not shown";
+                       return false;
+                   }
+                   const Track& track = *findTrack(doc_.preset(), *target);
+                   const int key = keyIndexAt(track, t);
+                   if (key < 0) {
+                       error = "curve_drag: no key of " + w[1] + " at " + w[2];
+                       return false;
+                   }
+                   const ParamDesc& desc = *findParam(target->scope, target->param);
+                   const TrackKey& k = track.keys[std::size_t(key)];
+                   const glm::dvec2 at =
+                       pixelOf(k.timeHours, curveRangeOf(track, desc).normalised(k.value.x));
+                   const bool shift = w.size() == 6 && w[5] == "shift",
+                              ctrl = w.size() == 6 && w[5] == "ctrl";
+                   queueDrag(at, at + glm::dvec2(dx, dy), ctrl, shift, 8);
+                   std::printf("curve_drag: press at %.1f %.1f\n", at.x, at.y);
+                   return true;
+               }});
+    table.add({"curve_drag_box", 4, 5, "curve_drag_box T0 N0 T1 N1 [ctrl]",
+               "a mouse drag on the curve area from time T0, height N0 (0 bottom, 1 top) to T1, N1: on "
+               "empty area it selects the keys in the box (Ctrl adds); where it does not move, a click "
+               "that sets the time",
+               [queueDrag, pixelOf](W w, E error) {
+                   double t0, n0, t1, n1;
+                   if (!toTime(w[1], t0) || !toNumber(w[2], n0) || !toTime(w[3], t1) || !toNumber(w[4], n1) ||
+                       (w.size() == 6 && w[5] != "ctrl")) {
+                       error = "curve_drag_box: curve_drag_box T0 N0 T1 N1 [ctrl]";
+                       return false;
+                   }
+                   queueDrag(pixelOf(t0, n0), pixelOf(t1, n1), w.size() == 6, false, 6);
+                   return true;
+               }});
     table.add({"curve_flat", 1, 1, "curve_flat on|off",
                "flat (on) or automatic (off) tangents at the selected keys, as the key menu does",
                [this](W w, E error) {
@@ -156,11 +226,11 @@ void Editor::declareCurveScriptCommands() {
                    edit_.curves.time = panView(edit_.curves.time, hours);
                    return true;
                }});
-    table.add({"print_curves", 0, 0, "print_curves", "prints \"curves view START END shown N selected M\"",
-               [this](W, E) {
-                   std::printf("curves view %.6g %.6g shown %zu selected %zu\n", edit_.curves.time.startHours,
-                               edit_.curves.time.endHours, edit_.curves.shown.size(),
-                               edit_.curves.selected.size());
+    table.add({"print_curves", 0, 0, "print_curves",
+               "prints \"curves view START END shown N selected M time T\"", [this](W, E) {
+                   std::printf("curves view %.6g %.6g shown %zu selected %zu time %.6g\n",
+                               edit_.curves.time.startHours, edit_.curves.time.endHours,
+                               edit_.curves.shown.size(), edit_.curves.selected.size(), playback_.timeHours);
                    return true;
                }});
 }

@@ -6,7 +6,7 @@ file code paths. Python standard library only.
     editor_e2e.py --editor PATH --source-dir DIR --work-dir DIR CASE
 
 CASE: workflow | undo_redo | crash_recovery | screenshot | exposure | errors | prompts | session |
-      cloud_volume | autokey | placement | curves
+      cloud_volume | autokey | placement | curves | curves_mouse
 
 Every case FAILS (never skips) when the editor cannot start under Xvfb.
 """
@@ -63,7 +63,7 @@ class Env:
             f.write(text)
         return p
 
-    def command(self, script, extra=()):
+    def command(self, script, extra=(), window=WINDOW):
         # -a picks a free display; starting the search at a per-process number keeps
         # tests run in parallel (ctest -j) from racing for the same one.
         first = str(100 + (os.getpid() * 7 + len(script)) % 800)
@@ -73,10 +73,10 @@ class Env:
         auth = self.path("Xauthority")
         open(auth, "a").close()
         return ["xvfb-run", "-a", "-n", first, "-f", auth, "-s", "-screen 0 1024x768x24", self.editor, "--size",
-                WINDOW, "--script", script] + list(extra)
+                window, "--script", script] + list(extra)
 
-    def run(self, script, extra=(), expect_rc=0, timeout=240):
-        cmd = self.command(script, extra)
+    def run(self, script, extra=(), expect_rc=0, timeout=240, window=WINDOW):
+        cmd = self.command(script, extra, window)
         start = time.time()
         p = subprocess.run(cmd, env=self.env(), stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
                            timeout=timeout)
@@ -866,6 +866,74 @@ quit
     print("OK: curves")
 
 
+def case_curves_mouse(env):
+    """The curve view under ImGui's mouse (1280x720, where the curves have room):
+    a vertical drag on a key changes its value and not its time; a horizontal
+    drag moves it in time, snapped; a box drag on empty curve area selects the
+    keys inside it and a drag on one of them moves them all (Shift: unsnapped),
+    each drag one undo step; a click on empty curve area sets the time."""
+    names = ["mouse_%d.json" % i for i in range(5)]
+    paths = [env.path(n) for n in names]
+    p = env.run(env.script("curves_mouse.txt", """
+new
+time 6
+set fog.density_per_m 0.01
+key fog.density_per_m
+time 8
+set fog.density_per_m 0.02
+key fog.density_per_m
+time 10
+set fog.density_per_m 0.005
+key fog.density_per_m
+curve fog.density_per_m on
+wait_frames 2
+save {p0}
+curve_drag fog.density_per_m 8 0 -20
+save {p1}
+curve_drag fog.density_per_m 6 40 0
+save {p2}
+curve_drag_box 5.5 -0.05 11 1.05
+print_curves
+curve_drag fog.density_per_m 10 30 0 shift
+save {p3}
+undo
+undo
+save {p4}
+curve_drag_box 15 0.5 15 0.5
+print_curves
+quit
+""".format(p0=paths[0], p1=paths[1], p2=paths[2], p3=paths[3], p4=paths[4])), window="1280x720")
+    keys = [{k["time_h"]: key_value(k) for k in track(load_json(path), "fog.density_per_m")["keys"]} for path in paths]
+    before, vertical, horizontal, boxed, undone = keys
+    # Vertical: the 08:00 key went up, no key changed its time.
+    check(sorted(vertical) == sorted(before), "a vertical drag moved keys in time: %s -> %s" % (before, vertical))
+    check(vertical[8.0] > before[8.0], "a vertical drag up did not raise the 08:00 key: %s" % vertical)
+    check(all(vertical[t] == before[t] for t in before if t != 8.0), "other keys changed: %s" % vertical)
+    # Horizontal: the 06:00 key moved later onto a quarter hour (or another key's time), value kept.
+    moved = sorted(set(horizontal) - set(vertical))
+    check(len(moved) == 1 and 6.0 not in horizontal, "the 06:00 key did not move in time: %s" % horizontal)
+    check(6.0 < moved[0] < 8.0 and horizontal[moved[0]] == vertical[6.0], "06:00 key now %s" % moved)
+    all_keys = set()
+    for t in load_json(paths[1])["tracks"]:
+        all_keys.update(k["time_h"] for k in t["keys"])
+    check(moved[0] * 4 == round(moved[0] * 4) or moved[0] in all_keys, "%s is not snapped" % moved[0])
+    check("curves view 0 24 shown 1 selected 3" in p.stdout, "the box did not select the three keys")
+    # The three boxed keys moved together, unsnapped (Shift), by the same time.
+    shifted = sorted(set(boxed) - set(horizontal))
+    check(len(shifted) == 3, "the box's keys did not all move: %s -> %s" % (horizontal, boxed))
+    old = sorted(t for t in horizontal if 5.5 <= t <= 11.0)
+    deltas = [b - a for a, b in zip(old, shifted)]
+    check(max(deltas) - min(deltas) < 1e-9 and deltas[0] > 0.3, "uneven or no shift: %s" % deltas)
+    # Two undos: the preset's name (it follows Save As to the next file, a step of its own),
+    # then the whole box drag, one step: the keys are as the horizontal drag left them.
+    check(undone == horizontal, "undo did not bring back the keys before the box drag: %s" % undone)
+    last = p.stdout.split("curves view")[-1]
+    check(" selected 0 " in last, "a click on empty curve area kept the selection: %s" % last)
+    clicked = float(last.split(" time ")[1].split()[0])
+    check(abs(clicked - 15.0) < 0.05, "a click on empty curve area at 15:00 set the time to %s" % clicked)
+    print("OK: curves_mouse")
+
+
 def case_placement(env):
     """A new volume rests on the scene's surface under the viewport's centre;
     Drop to ground puts a volume's bottom on the surface under it, from above
@@ -956,6 +1024,7 @@ CASES = {
     "autokey": case_autokey,
     "placement": case_placement,
     "curves": case_curves,
+    "curves_mouse": case_curves_mouse,
 }
 
 
