@@ -73,6 +73,27 @@ std::optional<ParamRef> paramRefOf(const Preset& preset, const TrackTarget& targ
     return std::nullopt;
 }
 
+std::string curveKey(const TrackTarget& target) {
+    if (target.scope == ParamScope::Global) return target.param;
+    return std::string(scopeKey(target.scope)) + ":" + target.objectId + ":" + target.param;
+}
+
+std::optional<TrackTarget> curveTargetOf(std::string_view key) {
+    const std::size_t first = key.find(':');
+    if (first == std::string_view::npos) {
+        if (!findParam(ParamScope::Global, key)) return std::nullopt;
+        return TrackTarget::global(std::string(key));
+    }
+    const std::size_t second = key.find(':', first + 1);
+    if (second == std::string_view::npos) return std::nullopt;
+    const std::string_view scope = key.substr(0, first), id = key.substr(first + 1, second - first - 1),
+                           param = key.substr(second + 1);
+    for (ParamScope s : {ParamScope::Volume, ParamScope::Emitter, ParamScope::CloudVolume})
+        if (scopeKey(s) == scope && !id.empty() && findParam(s, param))
+            return TrackTarget{s, std::string(id), std::string(param)};
+    return std::nullopt;
+}
+
 int hitTestPoints(const std::vector<glm::dvec2>& points, glm::dvec2 mouse, double radiusPx) {
     int best = -1;
     double bestD2 = radiusPx * radiusPx;

@@ -22,6 +22,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace aerial::editor {
@@ -82,6 +83,13 @@ CurveRange curveRangeOf(const Track& track, const ParamDesc& desc);
 /// The parameter a track target names (its object found by id); nullopt
 /// when the preset has no such parameter or object.
 std::optional<ParamRef> paramRefOf(const Preset& preset, const TrackTarget& target);
+
+/// A curve as the session remembers it: the global parameter's path
+/// ("fog.density_per_m"), or scope, object id and parameter key
+/// ("volume:valley_fog:density_per_m").
+std::string curveKey(const TrackTarget& target);
+/// The inverse; nullopt for text that names no parameter.
+std::optional<TrackTarget> curveTargetOf(std::string_view key);
 
 /// One component of one key of one track: what the curve view selects and drags.
 struct CurvePoint {
@@ -153,7 +161,8 @@ struct CurveDrag {
     TimeView viewFrom;      ///< Pan: the view when it began
 };
 
-/// The curve view's state (view state: never saved in the preset).
+/// The curve view's state (view state: never saved in the preset; the
+/// curves shown are remembered in the session, settings.hpp).
 struct CurveViewState {
     TimeView time;
     CurveDrag drag;

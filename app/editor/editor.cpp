@@ -195,6 +195,9 @@ std::optional<int> Editor::initialise() {
     view_.outlinerWidth = float(session_.outlinerWidth);
     view_.inspectorWidth = float(session_.inspectorWidth);
     view_.timelineHeight = float(session_.timelineHeight);
+    for (const std::string& key : session_.curves)
+        if (const std::optional<TrackTarget> target = curveTargetOf(key))
+            edit_.curves.setShown(*target, true);
     playback_.timeHours = options_.script.empty() ? session_.timeHours : 9.0;  // scripts start at 09:00
     rebuildDisplay();
 
@@ -271,6 +274,8 @@ int Editor::run() {
         session_.outlinerWidth = view_.outlinerWidth;
         session_.inspectorWidth = view_.inspectorWidth;
         session_.timelineHeight = view_.timelineHeight;
+        session_.curves.clear();
+        for (const TrackTarget& target : edit_.curves.shown) session_.curves.push_back(curveKey(target));
         session_.save(sessionFile_);
     }
     if (autosave_) autosave_->finish();

@@ -44,6 +44,8 @@ struct Session {
     bool showOutliner = true, showInspector = true, showTimeline = true;
     double outlinerWidth = 0.0, inspectorWidth = 0.0, timelineHeight = 0.0;
     bool maximized = false, gameView = false;
+    /// The curves shown in the timeline's curve view (curve_view.hpp's curveKey).
+    std::vector<std::string> curves;
 
     /// Reads `file`; missing or malformed fields keep their values.
     void load(const std::string& file);

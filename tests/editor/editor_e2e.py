@@ -863,6 +863,11 @@ quit
     check(load_json(undone)["tracks"] == load_json(before)["tracks"], "undo did not restore the keys")
     width, height, _, _ = read_png(shot)
     check(width > 0 and height > 0, "no window screenshot")
+    # The curves shown are view state: not in the preset, remembered in the session.
+    check("curves" not in json.dumps(load_json(after)), "the preset holds view state")
+    session = load_json(os.path.join(env.config, "session.json"))
+    check(session.get("curves") == ["fog.density_per_m", "fog.falloff_per_m"],
+          "the session did not remember the curves shown: %s" % session.get("curves"))
     print("OK: curves")
 
 

@@ -91,6 +91,22 @@ TEST(CurveView, CurvesAreNormalisedToTheirKeysRange) {
     EXPECT_NEAR(one.normalised(0.01), 0.5, 1e-12);
 }
 
+TEST(CurveView, SessionKeysNameCurvesBothWays) {
+    const TrackTarget targets[] = {
+        TrackTarget::global("fog.density_per_m"), TrackTarget::volume("valley_fog", "density_per_m"),
+        TrackTarget::emitter("lamp.2", "intensity_per_m"), TrackTarget::cloudVolume("cell-1", "coverage")};
+    EXPECT_EQ(curveKey(targets[0]), "fog.density_per_m");
+    EXPECT_EQ(curveKey(targets[1]), "volume:valley_fog:density_per_m");
+    for (const TrackTarget& t : targets) {
+        const std::optional<TrackTarget> back = curveTargetOf(curveKey(t));
+        ASSERT_TRUE(back) << curveKey(t);
+        EXPECT_EQ(*back, t);
+    }
+    for (const char* bad : {"", "fog.nothing", "volume:x", "volume::density_per_m", "planet:x:density_per_m",
+                            "volume:x:no_such_param"})
+        EXPECT_FALSE(curveTargetOf(bad)) << bad;
+}
+
 TEST(CurveView, HitTestPicksTheNearestPointWithinReach) {
     const std::vector<glm::dvec2> points = {{10, 10}, {14, 10}, {100, 50}};
     EXPECT_EQ(hitTestPoints(points, {13, 11}, 6.0), 1);
