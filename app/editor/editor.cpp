@@ -315,6 +315,8 @@ void Editor::frame() {
         ImGuiIO& io = ImGui::GetIO();
         io.MousePos = ImVec2(float(m.position.x), float(m.position.y));
         io.MouseDown[0] = m.down;
+        io.MouseDown[2] = m.middle;
+        io.MouseWheel = m.wheel;
         io.KeyCtrl = m.ctrl;
         io.KeyShift = m.shift;
     }

@@ -242,12 +242,14 @@ struct ScriptRunner {
     bool waitsForAutosave = false;
     int autosaveWrites = 0;
     std::string windowShotPath;  ///< window_screenshot: captured after the next frame is drawn
-    /// curve_drag, curve_drag_box: ImGui's mouse (and Ctrl, Shift) one
-    /// frame each, over the real timeline widgets.
+    /// curve_drag, curve_drag_box, curve_wheel, curve_pan_drag: ImGui's
+    /// mouse (and Ctrl, Shift) one frame each, over the real timeline widgets.
     struct GuiMouse {
         glm::dvec2 position{0.0};  ///< [px] in the window
         bool down = false;
         bool ctrl = false, shift = false;
+        bool middle = false;  ///< the middle button is down
+        float wheel = 0.0f;   ///< wheel steps this frame
     };
     std::deque<GuiMouse> guiMouse;
 };

@@ -190,6 +190,36 @@ void Editor::declareCurveScriptCommands() {
                    queueDrag(pixelOf(t0, n0), pixelOf(t1, n1), w.size() == 6, false, 6);
                    return true;
                }});
+    table.add({"curve_wheel", 2, 2, "curve_wheel T STEPS",
+               "turn the mouse wheel STEPS steps (up: zoom in) over the curve area at time T",
+               [this, pixelOf](W w, E error) {
+                   double t, steps;
+                   if (!toNumber(w[1], t) || !toNumber(w[2], steps)) {
+                       error = "curve_wheel: curve_wheel T STEPS";
+                       return false;
+                   }
+                   const glm::dvec2 at = pixelOf(t, 0.5);
+                   runner_.guiMouse.push_back({at, false, false, false, false, 0.0f});
+                   runner_.guiMouse.push_back({at, false, false, false, false, float(steps)});
+                   runner_.guiMouse.push_back({at, false, false, false, false, 0.0f});
+                   return true;
+               }});
+    table.add({"curve_pan_drag", 2, 2, "curve_pan_drag T DX",
+               "a middle drag over the curve area from time T by DX pixels: pans the time",
+               [this, pixelOf](W w, E error) {
+                   double t, dx;
+                   if (!toNumber(w[1], t) || !toNumber(w[2], dx)) {
+                       error = "curve_pan_drag: curve_pan_drag T DX";
+                       return false;
+                   }
+                   const glm::dvec2 from = pixelOf(t, 0.5);
+                   runner_.guiMouse.push_back({from, false, false, false, false, 0.0f});
+                   for (int k = 0; k <= 6; ++k)
+                       runner_.guiMouse.push_back(
+                           {from + glm::dvec2(dx * k / 6.0, 0.0), false, false, false, true, 0.0f});
+                   runner_.guiMouse.push_back({from + glm::dvec2(dx, 0.0), false, false, false, false, 0.0f});
+                   return true;
+               }});
     table.add({"curve_flat", 1, 1, "curve_flat on|off",
                "flat (on) or automatic (off) tangents at the selected keys, as the key menu does",
                [this](W w, E error) {

@@ -2,8 +2,8 @@
 // (play/pause, speed in game hours per real second, loop, jump to sunrise,
 // noon, sunset, the time as HH:MM), a 00:00-24:00 ruler to scrub on, a
 // summary row of every key in the preset, the selected parameter's track
-// (select, drag in time, double-click to add, right-click to delete or set
-// the interpolation; Delete, Ctrl+C / Ctrl+V while the mouse is over the
+// (select, drag in time, double-click to add, right-click to delete, flatten
+// its tangent or set the interpolation; Delete, Ctrl+C / Ctrl+V while the mouse is over the
 // timeline) and the curve area (editor_curves.cpp). The time axis zooms
 // with the wheel around the mouse and pans with a middle or Alt drag; F or
 // a double-click on the ruler fits it to the day again.
@@ -354,6 +354,15 @@ void drawTimeline(Document& doc, EditState& edit, Playback& playback, const Acti
     }
     if (ImGui::BeginPopup("##keymenu")) {
         if (ImGui::MenuItem("Delete key", "Del") && edit.selectedKey >= 0) deleteSelectedKey();
+        // Flat: the smooth curve levels out at the key (TrackKey::flat).
+        if (const Track* t = edit.selectedParam ? trackOf(doc.preset(), *edit.selectedParam) : nullptr;
+            t && edit.selectedKey >= 0 && edit.selectedKey < int(t->keys.size())) {
+            const bool flat = t->keys[std::size_t(edit.selectedKey)].flat;
+            const std::vector<CurvePoint> key = {{target, edit.selectedKey, 0}};
+            if (ImGui::MenuItem("Flat tangent", nullptr, flat))
+                doc.apply(flat ? "Automatic tangent" : "Flat tangent", "",
+                          [&](Preset& p) { setFlatTangents(p, key, !flat); });
+        }
         if (ImGui::MenuItem("Copy", "Ctrl+C")) copySelectedKey();
         if (ImGui::MenuItem("Jump to key") && edit.selectedParam) {
             if (const Track* t = trackOf(doc.preset(), *edit.selectedParam);

@@ -906,6 +906,10 @@ undo
 save {p4}
 curve_drag_box 15 0.5 15 0.5
 print_curves
+curve_wheel 6 2
+print_curves
+curve_pan_drag 12 100
+print_curves
 quit
 """.format(p0=paths[0], p1=paths[1], p2=paths[2], p3=paths[3], p4=paths[4])), window="1280x720")
     keys = [{k["time_h"]: key_value(k) for k in track(load_json(path), "fog.density_per_m")["keys"]} for path in paths]
@@ -932,7 +936,15 @@ quit
     # Two undos: the preset's name (it follows Save As to the next file, a step of its own),
     # then the whole box drag, one step: the keys are as the horizontal drag left them.
     check(undone == horizontal, "undo did not bring back the keys before the box drag: %s" % undone)
-    last = p.stdout.split("curves view")[-1]
+    views = [line.split() for line in p.stdout.splitlines() if line.startswith("curves view")]
+    # Two wheel steps up at 06:00: 1.25^2 times in, 06:00 where it was (a quarter across).
+    start, end = float(views[-2][2]), float(views[-2][3])
+    check(abs((end - start) - 24.0 / 1.5625) < 0.01 and abs((6.0 - start) / (end - start) - 0.25) < 0.01,
+          "the wheel did not zoom in around 06:00: %s" % views[-2])
+    # A middle drag 100 px to the right shows earlier hours.
+    check(float(views[-1][2]) < start - 0.5 and abs(float(views[-1][3]) - float(views[-1][2]) - (end - start)) < 1e-3,
+          "the middle drag did not pan: %s" % views[-1])
+    last = p.stdout.split("curves view")[-3]
     check(" selected 0 " in last, "a click on empty curve area kept the selection: %s" % last)
     clicked = float(last.split(" time ")[1].split()[0])
     check(abs(clicked - 15.0) < 0.05, "a click on empty curve area at 15:00 set the time to %s" % clicked)
