@@ -204,6 +204,9 @@ std::optional<int> Editor::initialise() {
     view_.outlinerWidth = float(session_.outlinerWidth);
     view_.inspectorWidth = float(session_.inspectorWidth);
     view_.timelineHeight = float(session_.timelineHeight);
+    for (const std::string& key : session_.curves)
+        if (const std::optional<TrackTarget> target = curveTargetOf(key))
+            edit_.curves.setShown(*target, true);
     playback_.timeHours = options_.script.empty() ? session_.timeHours : 9.0;  // scripts start at 09:00
     rebuildDisplay();
 
@@ -283,6 +286,8 @@ int Editor::run() {
         session_.outlinerWidth = view_.outlinerWidth;
         session_.inspectorWidth = view_.inspectorWidth;
         session_.timelineHeight = view_.timelineHeight;
+        session_.curves.clear();
+        for (const TrackTarget& target : edit_.curves.shown) session_.curves.push_back(curveKey(target));
         session_.save(sessionFile_);
     }
     if (autosave_) autosave_->finish();
@@ -316,6 +321,17 @@ void Editor::frame() {
 
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
+    if (!runner_.guiMouse.empty()) {  // a script's drag on the timeline, in place of the real mouse
+        const ScriptRunner::GuiMouse m = runner_.guiMouse.front();
+        runner_.guiMouse.pop_front();
+        ImGuiIO& io = ImGui::GetIO();
+        io.MousePos = ImVec2(float(m.position.x), float(m.position.y));
+        io.MouseDown[0] = m.down;
+        io.MouseDown[2] = m.middle;
+        io.MouseWheel = m.wheel;
+        io.KeyCtrl = m.ctrl;
+        io.KeyShift = m.shift;
+    }
     ImGui::NewFrame();
     closeMenusOnEscape();
     // The display textures replaced last frame: no draw list refers to them now.
@@ -490,7 +506,8 @@ void Editor::layout() {
         ImGui::SetNextWindowPos(ImVec2(0, menuH + middleH));
         ImGui::SetNextWindowSize(ImVec2(w, timelineH));
         ImGui::SetNextWindowCollapsed(view_.timelineCollapsed, ImGuiCond_Always);
-        const bool timelineOpen = ImGui::Begin("Timeline", nullptr, panel | ImGuiWindowFlags_NoScrollbar);
+        const bool timelineOpen = ImGui::Begin(
+            "Timeline", nullptr, panel | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
         view_.timelineCollapsed = ImGui::IsWindowCollapsed();
         if (timelineOpen && !view_.timelineCollapsed)
             drawTimeline(doc_, edit_, playback_, actions_, status_);

@@ -14,13 +14,16 @@
 //                         gizmo, overlays, screenshots
 //   editor_inspector.cpp  the inspector, generated from the parameter table
 //   editor_outliner.cpp   the outliner and the sky preview
-//   editor_timeline.cpp   ruler, scrubbing, play, keys, curve view
-//                         (these three are free functions, panels.hpp, that
+//   editor_timeline.cpp   ruler, zoom and pan, scrubbing, play, keys
+//   editor_curves.cpp     the curve view (curves overlaid, key drags, box
+//                         selection, tangents)
+//                         (these four are free functions, panels.hpp, that
 //                         take the parts they edit)
 //   editor_files.cpp      new/open/save/recent/drop/scene, unsaved-changes
 //                         prompt, load-error modal, recovery
 //   editor_script.cpp     the automation (--script): runner, commands for
 //                         files, prompts and checks
+//   editor_script_curves.cpp  script commands of the timeline's curve view
 //   editor_script_edit.cpp  script commands that edit objects, parameters,
 //                         keys, the time and the view
 //
@@ -167,9 +170,10 @@ private:
     void recover(bool accept);
     void startExport(const std::string& directory);
 
-    // --- editor_script.cpp, editor_script_edit.cpp -------------------------
+    // --- editor_script.cpp, editor_script_edit.cpp, editor_script_curves.cpp
     void declareScriptCommands();
     void declareEditScriptCommands();
+    void declareCurveScriptCommands();
     void stepScript();
     /// Runs one command; returns false with `error` set on failure. May ask
     /// to wait: ScriptRunner::waitFrames frames, or until the synthetic

@@ -252,9 +252,16 @@ void Editor::declareActions() {
         });
     t.add("frame", "Frame selection", "View")
         .key(GLFW_KEY_F)
+        .keyOnlyWhen([this] { return !edit_.timelineHovered; })  // over the timeline F fits its view
         .scriptable()
         .enabledWhen(objectSelected, needsObject("frame"))
         .does([this] { frameSelection(); });
+
+    t.add("timeline_fit", "Timeline: whole day", "View")
+        .key(GLFW_KEY_F)
+        .keyOnlyWhen([this] { return edit_.timelineHovered; })
+        .scriptable()
+        .does([this] { edit_.curves.time = fitView(); });
 
     t.add("drop_to_ground", "Drop to ground", "Edit")
         .key(GLFW_KEY_END)
@@ -353,7 +360,16 @@ void Editor::drawHelpSheet() {
                                   {"Pan", "middle drag"},
                                   {"Zoom", "wheel"},
                                   {"Select", "click in the viewport"},
-                                  {"Gizmo snapping", "Ctrl while dragging"}};
+                                  {"Gizmo snapping", "Ctrl while dragging"},
+                                  {"Timeline: zoom / pan the time", "wheel / middle or Alt drag"},
+                                  {"Timeline: the whole day", "F, double-click the ruler"},
+                                  {"Curves: move keys (time and value)", "drag a key"},
+                                  {"Curves: no snapping while moving", "Shift"},
+                                  {"Curves: select keys in a box", "drag on empty curve area"},
+                                  {"Curves: add to the selection", "Ctrl + click / drag"},
+                                  {"Curves: go to a time", "click empty curve area"},
+                                  {"Curves: flat / automatic tangent", "right-click a key"},
+                                  {"Curves: show a parameter's curve", "curve button in the inspector"}};
         for (const auto& row : mouse) {
             ImGui::TableNextRow();
             ImGui::TableSetColumnIndex(0);

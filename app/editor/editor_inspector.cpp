@@ -4,7 +4,8 @@
 // table says so), tooltips are the table's doc with the valid range, colours
 // are linear-RGB pickers (float, HDR). Animatable parameters have a key
 // button (a diamond: filled = a key at the current time, outlined = the
-// parameter has a track, grey = constant). Editing a parameter that has a
+// parameter has a track, grey = constant) and, when animated, a curve
+// button that overlays its curve in the timeline (coloured while shown). Editing a parameter that has a
 // track sets a key at the current time (auto-key); editing one without a
 // track changes its constant value. A slider drag is one undo step.
 #include "panels.hpp"
@@ -191,6 +192,33 @@ bool keyButton(Document& doc, EditState& edit, const ParamRef& ref, double timeH
     return clicked;
 }
 
+/// The curve button beside an animated parameter: shows (coloured) or
+/// hides its curve in the timeline's curve view, beside the selected one.
+void curveButton(const Document& doc, EditState& edit, const ParamRef& ref) {
+    const float size = ImGui::GetFrameHeight();
+    const bool animated = trackOf(doc.preset(), ref) != nullptr;
+    if (!animated) {
+        ImGui::Dummy(ImVec2(size * 0.8f, size));
+        return;
+    }
+    const TrackTarget target = trackTargetOf(doc.preset(), ref);
+    const bool shown = edit.curves.isShown(target);
+    if (ImGui::InvisibleButton("##curve", ImVec2(size * 0.8f, size))) edit.curves.setShown(target, !shown);
+    const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+    const ImU32 colour =
+        shown ? ImU32(curveColour(edit, target))
+              : (ImGui::IsItemHovered() ? IM_COL32(200, 200, 200, 255) : IM_COL32(100, 100, 100, 255));
+    // A little S-curve: the icon of a curve editor.
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    const float w = hi.x - lo.x, h = hi.y - lo.y;
+    const ImVec2 a(lo.x + w * 0.12f, lo.y + h * 0.72f), b(hi.x - w * 0.12f, lo.y + h * 0.28f);
+    dl->AddBezierCubic(a, ImVec2(lo.x + w * 0.55f, a.y), ImVec2(lo.x + w * 0.45f, b.y), b, colour,
+                       shown ? 2.0f : 1.2f);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("%s",
+                          shown ? "Hide this curve in the timeline" : "Show this curve in the timeline");
+}
+
 /// The numbers artists think in, beside the physical ones (editable): a
 /// density as the visibility distance it gives (the meteorological range
 /// 3.912 / extinction, where contrast falls to 2 %), a height falloff as the
@@ -240,6 +268,8 @@ void drawParam(Document& doc, EditState& edit, const ParamRef& ref, double timeH
         keyButton(doc, edit, ref, timeHours);
     else
         ImGui::Dummy(ImVec2(ImGui::GetFrameHeight() * 0.8f, ImGui::GetFrameHeight()));
+    ImGui::SameLine(0.0f, 0.0f);
+    curveButton(doc, edit, ref);
     ImGui::SameLine(0.0f, 4.0f);
     const std::string label = labelOf(p);
     double v[4];

@@ -35,6 +35,7 @@ Selection::Kind Selection::kindOf(ParamScope scope) {
 
 void EditState::validate(const Preset& p) {
     pending.validate(p);
+    curves.validate(p);
     // An object past the end (deleted, undone): the last one of its kind, else the group above it.
     if (const ParamScope scope = selection.scope(); scope != ParamScope::Global) {
         const int count = int(objectCount(p, scope));

@@ -5,7 +5,8 @@
 //
 //   Document (document.hpp)  the preset being edited, its file, dirty, undo
 //   EditState                what is selected (object, parameter, key), the
-//                            key clipboard, the outliner's inline rename
+//                            key clipboard, the outliner's inline rename,
+//                            the curve view's state
 //   Playback                 the time of day; play, loop, speed
 //   SkyService               the preset evaluated at that time and the sun's
 //                            and moon's sky tables solved for it
@@ -18,6 +19,7 @@
 #pragma once
 
 #include "autosave.hpp"
+#include "curve_view.hpp"
 #include "document.hpp"
 #include "file_dialog.hpp"
 #include "game_export.hpp"
@@ -66,6 +68,8 @@ struct EditState {
     std::optional<ParamRef> selectedParam;  ///< the inspector's parameter (the timeline's track)
     int selectedKey = -1;                   ///< a key of that parameter's track
     bool draggingKey = false;
+    /// The timeline's curve view: time span, curves shown, selected key points.
+    CurveViewState curves;
     bool timelineHovered = false;  ///< Delete then deletes keys, not the object
     KeyClipboard keyClipboard;
     bool renaming = false;  ///< the outliner's inline rename
@@ -243,6 +247,16 @@ struct ScriptRunner {
     bool waitsForAutosave = false;
     int autosaveWrites = 0;
     std::string windowShotPath;  ///< window_screenshot: captured after the next frame is drawn
+    /// curve_drag, curve_drag_box, curve_wheel, curve_pan_drag: ImGui's
+    /// mouse (and Ctrl, Shift) one frame each, over the real timeline widgets.
+    struct GuiMouse {
+        glm::dvec2 position{0.0};  ///< [px] in the window
+        bool down = false;
+        bool ctrl = false, shift = false;
+        bool middle = false;  ///< the middle button is down
+        float wheel = 0.0f;   ///< wheel steps this frame
+    };
+    std::deque<GuiMouse> guiMouse;
 };
 
 /// Frame timing, --bench samples and idle detection.

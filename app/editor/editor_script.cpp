@@ -33,6 +33,7 @@ void Editor::stepScript() {
         --runner_.waitFrames;
         return;
     }
+    if (!runner_.guiMouse.empty()) return;
     if (runner_.waitsForMouse) {
         if (!view_.scriptedMouse.empty() || view_.scriptedMouseActive) return;
         runner_.waitsForMouse = false;
@@ -366,6 +367,7 @@ void Editor::declareScriptCommands() {
                }});
 
     declareEditScriptCommands();
+    declareCurveScriptCommands();
 
     // --- the action table's scriptable actions (the menus' and shortcuts' own code) --------
     for (const Action& a : actions_.all()) {

@@ -2,9 +2,11 @@
 // (play/pause, speed in game hours per real second, loop, jump to sunrise,
 // noon, sunset, the time as HH:MM), a 00:00-24:00 ruler to scrub on, a
 // summary row of every key in the preset, the selected parameter's track
-// (select, drag in time, double-click to add, right-click to delete or set
-// the interpolation; Delete, Ctrl+C / Ctrl+V while the mouse is over the
-// timeline) and the curve of its values over the day.
+// (select, drag in time, double-click to add, right-click to delete, flatten
+// its tangent or set the interpolation; Delete, Ctrl+C / Ctrl+V while the mouse is over the
+// timeline) and the curve area (editor_curves.cpp). The time axis zooms
+// with the wheel around the mouse and pans with a middle or Alt drag; F or
+// a double-click on the ruler fits it to the day again.
 #include "panels.hpp"
 
 #include <aerial/clock.hpp>
@@ -196,28 +198,61 @@ void drawTimeline(Document& doc, EditState& edit, Playback& playback, const Acti
     const float yRuler = canvasPos.y, ySummary = yRuler + rulerH, yTrack = ySummary + rowH,
                 yCurve = yTrack + rowH;
     const float yEnd = canvasPos.y + avail.y;
-    auto xOf = [&](double t) { return x0 + float(t / 24.0) * (x1 - x0); };
-    auto tOf = [&](float x) { return std::clamp(double(x - x0) / double(x1 - x0) * 24.0, 0.0, 24.0 - 1e-6); };
+    TimeView& view = edit.curves.time;
+    const ImGuiIO& io = ImGui::GetIO();
+    // Zoom around the mouse (wheel), pan (middle drag, or Alt + left drag).
+    const bool overCanvas =
+        ImGui::IsWindowHovered() && ImGui::IsMouseHoveringRect(ImVec2(x0, yRuler), ImVec2(x1, yEnd));
+    if (overCanvas && io.MouseWheel != 0.0f)
+        view = zoomView(view, view.tOf(io.MousePos.x, x0, x1), std::pow(1.25, double(io.MouseWheel)));
+    CurveDrag& drag = edit.curves.drag;
+    if (overCanvas && (ImGui::IsMouseClicked(ImGuiMouseButton_Middle) ||
+                       (io.KeyAlt && ImGui::IsMouseClicked(ImGuiMouseButton_Left)))) {
+        drag = CurveDrag{};
+        drag.kind = CurveDrag::Kind::Pan;
+        drag.from = glm::dvec2(io.MousePos.x, io.MousePos.y);
+        drag.viewFrom = view;
+    }
+    if (drag.kind == CurveDrag::Kind::Pan) {
+        if (ImGui::IsMouseDown(ImGuiMouseButton_Middle) || ImGui::IsMouseDown(ImGuiMouseButton_Left))
+            view = panView(drag.viewFrom, -(io.MousePos.x - drag.from.x) * drag.viewFrom.span() /
+                                              double(std::max(x1 - x0, 1.0f)));
+        else
+            drag = CurveDrag{};
+    }
+    const bool panning = drag.kind == CurveDrag::Kind::Pan;
+    auto xOf = [&](double t) { return float(view.xOf(t, x0, x1)); };
+    // The time of day at x: wrapped into [0, 24) (the view may show yesterday or tomorrow).
+    auto tOf = [&](float x) { return wrapHours(view.tOf(x, x0, x1)); };
 
     dl->AddRectFilled(ImVec2(x0, yRuler), ImVec2(x1, yEnd), IM_COL32(30, 30, 34, 255));
-    // Night shading: where the sun is below the horizon.
+    // Night shading: where the sun is below the horizon (every day the view shows).
     const double rise = sunriseHours(where), set = sunsetHours(where);
-    if (rise > 0.0 && rise < set) {
-        dl->AddRectFilled(ImVec2(x0, ySummary), ImVec2(xOf(rise), yEnd), IM_COL32(20, 22, 40, 255));
-        dl->AddRectFilled(ImVec2(xOf(set), ySummary), ImVec2(x1, yEnd), IM_COL32(20, 22, 40, 255));
-    }
-    for (int h = 0; h <= 24; ++h) {
-        const float x = xOf(h);
-        const bool major = h % 3 == 0;
+    dl->PushClipRect(ImVec2(x0, yRuler), ImVec2(x1, yEnd), true);
+    if (rise > 0.0 && rise < set)
+        for (double day = std::floor(view.startHours / 24.0) * 24.0; day < view.endHours; day += 24.0) {
+            dl->AddRectFilled(ImVec2(xOf(day), ySummary), ImVec2(xOf(day + rise), yEnd),
+                              IM_COL32(20, 22, 40, 255));
+            dl->AddRectFilled(ImVec2(xOf(day + set), ySummary), ImVec2(xOf(day + 24.0), yEnd),
+                              IM_COL32(20, 22, 40, 255));
+        }
+    // Ticks at least 28 px apart; labels at every third hour, or every tick when zoomed in.
+    const double step = tickStepHours(view, x1 - x0, 28.0);
+    const double labelStep = step >= 1.0 ? std::max(3.0, step) : step * 2.0;
+    for (double t = std::ceil(view.startHours / step - 1e-9) * step; t <= view.endHours + 1e-9; t += step) {
+        const float x = xOf(t);
+        const bool major = std::abs(std::remainder(t, labelStep)) < 1e-6;
+        const bool midnight = std::abs(std::remainder(t, 24.0)) < 1e-6;
         dl->AddLine(ImVec2(x, yRuler + (major ? 0.0f : rulerH * 0.55f)), ImVec2(x, yRuler + rulerH),
                     IM_COL32(150, 150, 150, 255));
-        dl->AddLine(ImVec2(x, ySummary), ImVec2(x, yEnd), IM_COL32(255, 255, 255, major ? 22 : 10));
-        if (major && h < 24 && x1 - x0 > 200.0f) {
-            char label[16];
-            std::snprintf(label, sizeof label, "%02d:00", h);
-            dl->AddText(ImVec2(x + 3.0f, yRuler), IM_COL32(190, 190, 190, 255), label);
+        dl->AddLine(ImVec2(x, ySummary), ImVec2(x, yEnd),
+                    midnight ? IM_COL32(200, 200, 255, 90) : IM_COL32(255, 255, 255, major ? 22 : 10));
+        if (major && x1 - x0 > 200.0f) {
+            const std::string label = formatClock(wrapHours(t), ClockResolution::Minutes);
+            dl->AddText(ImVec2(x + 3.0f, yRuler), IM_COL32(190, 190, 190, 255), label.c_str());
         }
     }
+    dl->PopClipRect();
     dl->AddText(ImVec2(canvasPos.x + 4.0f, ySummary + 2.0f), IM_COL32(170, 170, 170, 255), "All keys");
     std::string rowLabel =
         edit.selectedParam ? std::string(edit.selectedParam->desc->label) : std::string("(no parameter)");
@@ -230,13 +265,19 @@ void drawTimeline(Document& doc, EditState& edit, Playback& playback, const Acti
     // Ruler: scrub.
     ImGui::SetCursorScreenPos(ImVec2(x0, yRuler));
     ImGui::InvisibleButton("##ruler", ImVec2(x1 - x0, rulerH));
-    if (ImGui::IsItemActive()) {
+    if (ImGui::IsItemHovered() && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) view = fitView();
+    if (ImGui::IsItemActive() && !panning) {
         playback.timeHours = tOf(ImGui::GetIO().MousePos.x);
         playback.playing = false;
     }
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Drag to scrub the time of day");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "Drag to scrub the time of day\nWheel: zoom; middle or Alt drag: pan; F or double-click: the "
+            "whole day");
 
-    // Summary row: every key of every track; click jumps to its time.
+    // Summary row: every key of every track; click jumps to its time. (The
+    // rows draw only inside the strip: a zoomed view hides the keys outside it.)
+    dl->PushClipRect(ImVec2(x0 - 7.0f, ySummary), ImVec2(x1 + 7.0f, yCurve), true);
     std::set<double> times;
     for (const Track& t : preset.tracks)
         for (const TrackKey& k : t.keys) times.insert(k.timeHours);
@@ -267,7 +308,7 @@ void drawTimeline(Document& doc, EditState& edit, Playback& playback, const Acti
                     selected ? IM_COL32(255, 230, 120, 255) : IM_COL32(240, 190, 60, 255), true);
             if (std::abs(x - mouseX) < 6.0f) hoveredKey = int(i);
         }
-        if (ImGui::IsItemClicked(0)) {
+        if (ImGui::IsItemClicked(0) && !io.KeyAlt) {
             edit.selectedKey = hoveredKey;
             edit.draggingKey = hoveredKey >= 0;
         }
@@ -285,9 +326,10 @@ void drawTimeline(Document& doc, EditState& edit, Playback& playback, const Acti
         if (edit.draggingKey && trackActive && edit.selectedKey >= 0 && ImGui::GetIO().MouseDelta.x != 0.0f) {
             const int key = edit.selectedKey;
             // Snapped to another key (6 px) or the quarter hour; Shift moves freely.
-            double t = tOf(mouseX);
+            double t = std::clamp(view.tOf(mouseX, x0, x1), 0.0, 24.0 - 1e-6);
             if (!ImGui::GetIO().KeyShift)
-                t = snapKeyTime(doc.preset(), target, key, t, 6.0 * 24.0 / double(std::max(x1 - x0, 1.0f)));
+                t = snapKeyTime(doc.preset(), target, key, t,
+                                6.0 * view.span() / double(std::max(x1 - x0, 1.0f)));
             doc.apply("Move key", "move-key:" + paramAddress(*edit.selectedParam), [&](Preset& p) {
                 if (Track* tr = findTrack(p, target)) moveKey(*tr, key, t);
             });
@@ -312,6 +354,15 @@ void drawTimeline(Document& doc, EditState& edit, Playback& playback, const Acti
     }
     if (ImGui::BeginPopup("##keymenu")) {
         if (ImGui::MenuItem("Delete key", "Del") && edit.selectedKey >= 0) deleteSelectedKey();
+        // Flat: the smooth curve levels out at the key (TrackKey::flat).
+        if (const Track* t = edit.selectedParam ? trackOf(doc.preset(), *edit.selectedParam) : nullptr;
+            t && edit.selectedKey >= 0 && edit.selectedKey < int(t->keys.size())) {
+            const bool flat = t->keys[std::size_t(edit.selectedKey)].flat;
+            const std::vector<CurvePoint> key = {{target, edit.selectedKey, 0}};
+            if (ImGui::MenuItem("Flat tangent", nullptr, flat))
+                doc.apply(flat ? "Automatic tangent" : "Flat tangent", "",
+                          [&](Preset& p) { setFlatTangents(p, key, !flat); });
+        }
         if (ImGui::MenuItem("Copy", "Ctrl+C")) copySelectedKey();
         if (ImGui::MenuItem("Jump to key") && edit.selectedParam) {
             if (const Track* t = trackOf(doc.preset(), *edit.selectedParam);
@@ -332,89 +383,35 @@ void drawTimeline(Document& doc, EditState& edit, Playback& playback, const Acti
     if (ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows) && !ImGui::GetIO().WantTextInput &&
         edit.selectedParam) {
         const Track* t = trackOf(doc.preset(), *edit.selectedParam);
-        if (ImGui::IsKeyPressed(GLFW_KEY_DELETE, false) && t && edit.selectedKey >= 0) deleteSelectedKey();
+        if (ImGui::IsKeyPressed(GLFW_KEY_DELETE, false)) {
+            // The keys selected on the curves, else the track row's key.
+            if (const std::vector<CurvePoint> picked = edit.curves.selected; !picked.empty()) {
+                doc.apply(deleteLabel(picked), "", [&](Preset& p) { removeCurvePoints(p, picked); });
+                edit.curves.selected.clear();
+                edit.selectedKey = -1;
+            } else if (t && edit.selectedKey >= 0) {
+                deleteSelectedKey();
+            }
+        }
         if (ImGui::GetIO().KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_C, false)) copySelectedKey();
         if (ImGui::GetIO().KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_V, false) && edit.keyClipboard.valid)
             pasteKeyNow();
     }
     edit.timelineHovered = ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows);
 
-    // Curve view: the selected parameter's value over the day.
-    track = edit.selectedParam ? trackOf(doc.preset(), *edit.selectedParam) : nullptr;
-    if (yEnd - yCurve > 24.0f && edit.selectedParam) {
-        const ParamRef ref = *edit.selectedParam;
-        const int components = std::min(ref.desc->components(), 3);  // animatable: 1, 2 or 3
-        constexpr int kSamples = 192;
-        double values[kSamples + 1][3];
-        double lo = 1e300, hi = -1e300;
-        for (int s = 0; s <= kSamples; ++s) {
-            double v[4];
-            readValueAt(doc.preset(), ref, 24.0 * s / kSamples * (1.0 - 1e-9), v);
-            for (int c = 0; c < components; ++c) {
-                values[s][c] = v[c];
-                lo = std::min(lo, v[c]);
-                hi = std::max(hi, v[c]);
-            }
-        }
-        if (!(hi > lo)) {
-            const double pad = std::max(std::abs(hi) * 0.1, 1e-6);
-            lo -= pad;
-            hi += pad;
-        }
-        const float top = yCurve + 6.0f, bottom = yEnd - 6.0f;
-        auto yOf = [&](double v) { return bottom - float((v - lo) / (hi - lo)) * (bottom - top); };
-        // x red, y green, z blue (a Vec2's second component is world Z).
-        const ImU32 colours[3] = {components == 1 ? IM_COL32(240, 190, 60, 255) : IM_COL32(230, 80, 80, 255),
-                                  components == 2 ? IM_COL32(90, 140, 240, 255) : IM_COL32(90, 200, 90, 255),
-                                  IM_COL32(90, 140, 240, 255)};
-        for (int c = 0; c < components; ++c)
-            for (int s = 0; s < kSamples; ++s)
-                dl->AddLine(ImVec2(xOf(24.0 * s / kSamples), yOf(values[s][c])),
-                            ImVec2(xOf(24.0 * (s + 1) / kSamples), yOf(values[s + 1][c])), colours[c], 1.5f);
-        if (track)
-            for (std::size_t i = 0; i < track->keys.size(); ++i)
-                for (int c = 0; c < components; ++c)
-                    dl->AddCircleFilled(ImVec2(xOf(track->keys[i].timeHours), yOf(track->keys[i].value[c])),
-                                        int(i) == edit.selectedKey ? 4.5f : 3.0f, colours[c]);
-        char range[64];
-        std::snprintf(range, sizeof range, "%.4g", hi);
-        dl->AddText(ImVec2(canvasPos.x + 4.0f, top - 4.0f), IM_COL32(150, 150, 150, 255), range);
-        std::snprintf(range, sizeof range, "%.4g", lo);
-        dl->AddText(ImVec2(canvasPos.x + 4.0f, bottom - 12.0f), IM_COL32(150, 150, 150, 255), range);
-        if (!ref.desc->unit.empty()) {
-            std::string unit = "[";
-            unit += ref.desc->unit;
-            unit += ']';
-            dl->AddText(ImVec2(canvasPos.x + 4.0f, (top + bottom) * 0.5f - 6.0f),
-                        IM_COL32(150, 150, 150, 255), unit.c_str());
-        }
-    }
-    // Scrub on the curve area too.
-    if (yEnd - yCurve > 4.0f) {
-        ImGui::SetCursorScreenPos(ImVec2(x0, yCurve));
-        ImGui::InvisibleButton("##curve", ImVec2(x1 - x0, yEnd - yCurve));
-        if (ImGui::IsItemActive()) {
-            playback.timeHours = tOf(ImGui::GetIO().MousePos.x);
-            playback.playing = false;
-        }
-        if (ImGui::IsItemHovered() && edit.selectedParam) {
-            double v[4];
-            const double t = tOf(mouseX);
-            readValueAt(doc.preset(), *edit.selectedParam, t, v);
-            const int components = edit.selectedParam->desc->components();
-            if (components == 1)
-                ImGui::SetTooltip("%s  %.6g", clock(t).c_str(), v[0]);
-            else if (components == 2)
-                ImGui::SetTooltip("%s  (%.4g, %.4g)", clock(t).c_str(), v[0], v[1]);
-            else
-                ImGui::SetTooltip("%s  (%.4g, %.4g, %.4g)", clock(t).c_str(), v[0], v[1], v[2]);
-        }
-    }
-    // Playhead.
+    dl->PopClipRect();
+    // Curve area: the inspector's parameter and the curves toggled on beside it.
+    drawCurveView(doc, edit, playback, canvasPos.x, x0, x1, yCurve, yEnd);
+    // Playhead (today's; yesterday's and tomorrow's when the view shows them).
+    dl->PushClipRect(ImVec2(x0 - 6.0f, yRuler), ImVec2(x1 + 6.0f, yEnd), true);
+    for (double day : {-24.0, 24.0})
+        if (const float xd = xOf(playback.timeHours + day); xd >= x0 && xd <= x1)
+            dl->AddLine(ImVec2(xd, yRuler), ImVec2(xd, yEnd), IM_COL32(255, 90, 70, 90), 1.0f);
     const float xt = xOf(playback.timeHours);
     dl->AddLine(ImVec2(xt, yRuler), ImVec2(xt, yEnd), IM_COL32(255, 90, 70, 255), 2.0f);
     dl->AddTriangleFilled(ImVec2(xt - 5.0f, yRuler), ImVec2(xt + 5.0f, yRuler), ImVec2(xt, yRuler + 7.0f),
                           IM_COL32(255, 90, 70, 255));
+    dl->PopClipRect();
 }
 
 }  // namespace aerial::editor

@@ -7,6 +7,7 @@
 //   editor_outliner.cpp   drawOutliner, drawSkyPreview
 //   editor_inspector.cpp  drawInspector, editParam, keyAllChangedAt
 //   editor_timeline.cpp   drawTimeline
+//   editor_curves.cpp     drawCurveView, curveColour (the timeline's curve area)
 #pragma once
 
 #include "actions.hpp"
@@ -36,6 +37,16 @@ void drawInspector(Document& doc, EditState& edit, double timeHours, const Prese
 /// The timeline: playback controls, ruler, keys and the selected parameter's curve.
 void drawTimeline(Document& doc, EditState& edit, Playback& playback, const ActionTable& actions,
                   std::string& status);
+
+/// The timeline's curve area (editor_curves.cpp): the curves shown
+/// (edit.curves.shown and the inspector's parameter) between `top` and
+/// `bottom` [px], from x0 to x1 [px] in edit.curves.time, a legend from
+/// `labelX` to x0; picks, drags and box-selects keys, sets the time on a click.
+void drawCurveView(Document& doc, EditState& edit, Playback& playback, float labelX, float x0, float x1,
+                   float top, float bottom);
+/// The colour (ImU32) a curve is drawn in: by its place among the shown
+/// curves, amber for the inspector's parameter when it is not among them.
+unsigned curveColour(const EditState& edit, const TrackTarget& target);
 
 /// Sets a parameter at `timeHours` as the inspector does: with auto-key off
 /// an animated parameter away from its keys gets an unkeyed change

@@ -98,6 +98,11 @@ void Session::load(const std::string& file) {
     number("exposure_ev", exposureEv, -30.0, 30.0);
     number("resolution_scale", resolutionScale, 0.125, 1.0);
     number("time_h", timeHours, 0.0, 23.999);
+    if (json.contains("curves") && json["curves"].is_array()) {
+        curves.clear();
+        for (const nlohmann::json& c : json["curves"])
+            if (c.is_string()) curves.push_back(c.get<std::string>());
+    }
     if (json.contains("layout") && json["layout"].is_object()) {
         const nlohmann::json& layout = json["layout"];
         auto flag = [&](const char* key, bool& out) {
@@ -130,6 +135,7 @@ bool Session::save(const std::string& file) const {
                            {"exposure_ev", exposureEv},
                            {"resolution_scale", resolutionScale},
                            {"time_h", timeHours},
+                           {"curves", curves},
                            {"layout",
                             {{"outliner", showOutliner},
                              {"inspector", showInspector},

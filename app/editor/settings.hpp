@@ -48,6 +48,8 @@ struct Session {
     /// The getting-started sheet (F1) has been shown once: the first start
     /// opens it by itself, later ones do not.
     bool helpSeen = false;
+    /// The curves shown in the timeline's curve view (curve_view.hpp's curveKey).
+    std::vector<std::string> curves;
 
     /// Reads `file`; missing or malformed fields keep their values.
     void load(const std::string& file);

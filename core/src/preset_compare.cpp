@@ -60,7 +60,7 @@ bool presetsIdentical(const Preset& constA, const Preset& constB) {
                                  s.keys[k].value.z};
             const double v[4] = {t.keys[k].timeHours, t.keys[k].value.x, t.keys[k].value.y,
                                  t.keys[k].value.z};
-            if (std::memcmp(u, v, sizeof u) != 0) return false;
+            if (std::memcmp(u, v, sizeof u) != 0 || s.keys[k].flat != t.keys[k].flat) return false;
         }
     }
     return true;

@@ -420,10 +420,18 @@ public:
                         if (readNumbers(value, pointerJoin(at, "value"), v, count))
                             key.value = glm::dvec3(v[0], v[1], v[2]);
                     }
+                    if (const std::int32_t flat = member(c, "flat"); flat >= 0) {
+                        if (nodes_[std::size_t(flat)].kind == JNode::Bool)
+                            key.flat = nodes_[std::size_t(flat)].boolean;
+                        else
+                            error(flat, pointerJoin(at, "flat"),
+                                  "flat must be true (a level tangent at the key) or false");
+                    }
                     for (std::int32_t m = nodes_[std::size_t(c)].firstChild; m >= 0;
                          m = nodes_[std::size_t(m)].nextSibling) {
                         const std::string& name = nodes_[std::size_t(m)].key;
-                        if (name != "time_h" && name != "value") warnUnknown(m, pointerJoin(at, name));
+                        if (name != "time_h" && name != "value" && name != "flat")
+                            warnUnknown(m, pointerJoin(at, name));
                     }
                 }
                 track.keys.push_back(key);

@@ -202,7 +202,13 @@ std::string presetJsonSchema() {
                              {{"type", "array"},
                               {"items", {{"type", "number"}}},
                               {"minItems", fewest},
-                              {"maxItems", most}}}}}}};
+                              {"maxItems", most}}}}}},
+                         {"flat",
+                          {{"type", "boolean"},
+                           {"default", false},
+                           {"description",
+                            "smooth tracks: the curve is level at this key (tangent 0) instead of "
+                            "following its neighbours"}}}};
     key["required"] = {"time_h", "value"};
     key["additionalProperties"] = false;
     defs["key"] = key;

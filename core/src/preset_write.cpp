@@ -218,6 +218,7 @@ public:
                     const double c[3] = {t.keys[k].value.x, t.keys[k].value.y, t.keys[k].value.z};
                     numbers(c, valueCount);
                 }
+                if (t.keys[k].flat) out += ", \"flat\": true";  // only when set: old files stay as they were
                 out += '}';
             }
             if (!t.keys.empty()) newline(3);

@@ -67,9 +67,9 @@ CompiledTrack compileTrack(const Track& track, int components) {
             secant[k] = (component(out.values[next], c) - component(out.values[k], c)) / h[k];
         }
         // Steps 1-3: mean of the neighbouring secants, 0 at extrema and flats
-        // (and at the ends of a held track).
+        // (and at the ends of a held track, and at keys marked flat).
         for (std::size_t k = 0; k < n; ++k) {
-            if (!wrap && (k == 0 || k + 1 == n)) {
+            if ((!wrap && (k == 0 || k + 1 == n)) || track.keys[k].flat) {
                 m[k] = 0.0;
                 continue;
             }
@@ -152,7 +152,7 @@ void setKey(Track& track, double timeHours, const glm::dvec3& value) {
     if (it != track.keys.end() && it->timeHours == t)
         it->value = value;
     else
-        track.keys.insert(it, TrackKey{t, value});
+        track.keys.insert(it, TrackKey{t, value, false});
 }
 
 glm::dvec3 evaluateTrack(const Track& track, double timeHours, int components) {

@@ -734,6 +734,34 @@ TEST(Preset, TracksThatHoldTheirEndsRoundTripAndBadWrapIsRefused) {
     EXPECT_NE(refused.errors[0].message.find("wrap must be true"), std::string::npos);
 }
 
+TEST(Preset, FlatKeysRoundTripAndBadFlatIsRefused) {
+    aerial::Preset p;
+    aerial::Track t;
+    t.target = aerial::TrackTarget::global("fog.density_per_m");
+    t.keys = {{6.0, glm::dvec3(0.0)}, {12.0, glm::dvec3(0.02), true}, {18.0, glm::dvec3(0.01)}};
+    p.tracks = {t};
+    const std::string text = aerial::presetToJson(p);
+    EXPECT_NE(text.find("\"flat\": true"), std::string::npos);
+    aerial::PresetLoadResult back = aerial::parsePreset(text);
+    ASSERT_TRUE(back.ok());
+    ASSERT_EQ(back.preset->tracks[0].keys.size(), 3u);
+    EXPECT_FALSE(back.preset->tracks[0].keys[0].flat);
+    EXPECT_TRUE(back.preset->tracks[0].keys[1].flat);
+    // The flag is part of a preset's identity (undo records it).
+    aerial::Preset level = *back.preset;
+    EXPECT_TRUE(aerial::presetsIdentical(level, *back.preset));
+    level.tracks[0].keys[1].flat = false;
+    EXPECT_FALSE(aerial::presetsIdentical(level, *back.preset));
+    // No flat key: no "flat" in the file.
+    EXPECT_EQ(aerial::presetToJson(level).find("\"flat\""), std::string::npos);
+    std::string bad = text;
+    const std::string flatTrue = "\"flat\": true";
+    bad.replace(bad.find(flatTrue), flatTrue.size(), "\"flat\": 1");
+    const aerial::PresetLoadResult refused = aerial::parsePreset(bad, "bad.json");
+    ASSERT_FALSE(refused.ok());
+    EXPECT_EQ(refused.errors[0].pointer, "/tracks/0/keys/1/flat");
+}
+
 TEST(Evaluate, ReusesTheCallersStateWithoutReallocating) {
     const aerial::CompiledPreset compiled(aerial::defaultPreset());
     aerial::PresetState s;

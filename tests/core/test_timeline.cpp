@@ -295,4 +295,59 @@ TEST(Timeline, HeldTracksKeepTheirEndValuesInsteadOfWrapping) {
     EXPECT_NEAR((aerial::evaluateTrack(held, 10.0 - e).x - 0.0) / e, 0.0, 1e-3);
 }
 
+TEST(Timeline, FlatKeysHaveLevelTangentsClosedForm) {
+    // Keys 0 / 8 / 16 h at 0 / 1 / 2, cyclic. On the segment 0..8 h
+    // (s = t / 8): the 0 h key is an extremum (secants -2/8 and 1/8), so its
+    // tangent is 0; the 8 h key's is the mean of its secants, 1/8 per h. The
+    // Hermite form with h = 8 is then v = h01(s) + h11(s) * 8 * (1/8)
+    // = 3s^2 - 2s^3 + s^3 - s^2 = 2s^2 - s^3. Flat at 8 h, the tangent is 0
+    // and the segment is the smoothstep 3s^2 - 2s^3.
+    Track t = scalarTrack(Interpolation::Smooth, {{0.0, 0.0}, {8.0, 1.0}, {16.0, 2.0}});
+    for (double s = 0.0; s <= 1.0; s += 1.0 / 64.0)
+        EXPECT_NEAR(at(t, 8.0 * s), 2.0 * s * s - s * s * s, 1e-12) << s;
+    t.keys[1].flat = true;
+    for (double s = 0.0; s <= 1.0; s += 1.0 / 64.0) {
+        EXPECT_NEAR(at(t, 8.0 * s), 3.0 * s * s - 2.0 * s * s * s, 1e-12) << s;
+        // The next segment (8..16 h) starts level too: 1 + smoothstep.
+        EXPECT_NEAR(at(t, 8.0 + 8.0 * s), 1.0 + 3.0 * s * s - 2.0 * s * s * s, 1e-12) << s;
+    }
+    const double e = 1e-6;
+    EXPECT_NEAR((at(t, 8.0 + e) - at(t, 8.0 - e)) / (2.0 * e), 0.0, 1e-6);
+    // Every component of a vector key levels out.
+    Track v;
+    v.interpolation = Interpolation::Smooth;
+    v.keys = {{0.0, glm::dvec3(0.0, 0.0, 0.0)}, {8.0, glm::dvec3(1.0, 2.0, 3.0), true},
+              {16.0, glm::dvec3(2.0, 4.0, 6.0)}};
+    const aerial::CompiledTrack cv = aerial::compileTrack(v, 3);
+    EXPECT_EQ(cv.tangents[1], glm::dvec3(0.0));
+    for (double s = 0.0; s <= 1.0; s += 1.0 / 16.0)
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(aerial::evaluateTrack(cv, 8.0 * s)[c], (c + 1.0) * (3.0 * s * s - 2.0 * s * s * s), 1e-12);
+    // Step and linear ignore it.
+    for (Interpolation interpolation : {Interpolation::Step, Interpolation::Linear}) {
+        Track a = scalarTrack(interpolation, {{0.0, 0.0}, {8.0, 1.0}, {16.0, 2.0}});
+        Track b = a;
+        b.keys[1].flat = true;
+        for (double time = 0.0; time < 24.0; time += 0.25) EXPECT_EQ(at(a, time), at(b, time)) << time;
+    }
+}
+
+TEST(Timeline, FlatKeysOnHeldTracksClosedForm) {
+    // Held keys 6 / 12 / 18 h at 0 / 1 / 2: the ends have tangent 0, the
+    // 12 h key 1/6 per h, so on 6..12 h (s = (t - 6) / 6) v = 2s^2 - s^3;
+    // flat at 12 h it is 3s^2 - 2s^3, and the held values do not change.
+    Track t = scalarTrack(Interpolation::Smooth, {{6.0, 0.0}, {12.0, 1.0}, {18.0, 2.0}});
+    t.wrap = false;
+    for (double s = 0.0; s <= 1.0; s += 1.0 / 64.0)
+        EXPECT_NEAR(at(t, 6.0 + 6.0 * s), 2.0 * s * s - s * s * s, 1e-12) << s;
+    t.keys[1].flat = true;
+    for (double s = 0.0; s <= 1.0; s += 1.0 / 64.0)
+        EXPECT_NEAR(at(t, 6.0 + 6.0 * s), 3.0 * s * s - 2.0 * s * s * s, 1e-12) << s;
+    EXPECT_EQ(at(t, 3.0), 0.0);
+    EXPECT_EQ(at(t, 21.0), 2.0);
+    // setKey keeps a key's flag when it replaces the value.
+    aerial::setKey(t, 12.0, glm::dvec3(1.5));
+    EXPECT_TRUE(t.keys[1].flat);
+}
+
 }  // namespace

@@ -6,7 +6,7 @@ file code paths. Python standard library only.
     editor_e2e.py --editor PATH --source-dir DIR --work-dir DIR CASE
 
 CASE: workflow | undo_redo | crash_recovery | screenshot | exposure | errors | prompts | session |
-      cloud_volume
+      cloud_volume | autokey | placement | curves | curves_mouse
 
 Every case FAILS (never skips) when the editor cannot start under Xvfb.
 """
@@ -63,7 +63,7 @@ class Env:
             f.write(text)
         return p
 
-    def command(self, script, extra=()):
+    def command(self, script, extra=(), window=WINDOW):
         # -a picks a free display; starting the search at a per-process number keeps
         # tests run in parallel (ctest -j) from racing for the same one.
         first = str(100 + (os.getpid() * 7 + len(script)) % 800)
@@ -73,10 +73,10 @@ class Env:
         auth = self.path("Xauthority")
         open(auth, "a").close()
         return ["xvfb-run", "-a", "-n", first, "-f", auth, "-s", "-screen 0 1024x768x24", self.editor, "--size",
-                WINDOW, "--script", script] + list(extra)
+                window, "--script", script] + list(extra)
 
-    def run(self, script, extra=(), expect_rc=0, timeout=240):
-        cmd = self.command(script, extra)
+    def run(self, script, extra=(), expect_rc=0, timeout=240, window=WINDOW):
+        cmd = self.command(script, extra, window)
         start = time.time()
         p = subprocess.run(cmd, env=self.env(), stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
                            timeout=timeout)
@@ -807,6 +807,172 @@ quit
     print("OK: autokey")
 
 
+def case_curves(env):
+    """The timeline's curve view: two curves shown, a box selection of two keys
+    moved in time and value (snapped, one undo step "Move 2 keys"), one key
+    moved in time alone (snapped to the quarter hour) and made flat, zoom,
+    pan and fit; the saved keys are what the moves made, and undo brings
+    back the keys as they were."""
+    before, after, undone = env.path("curves_before.json"), env.path("curves_after.json"), env.path("curves_undone.json")
+    shot = env.path("curves_window.png")
+    p = env.run(env.script("curves.txt", """
+new
+time 6
+set fog.density_per_m 0.01
+key fog.density_per_m
+time 8
+set fog.density_per_m 0.02
+key fog.density_per_m
+time 10
+set fog.density_per_m 0
+key fog.density_per_m
+time 12
+set fog.falloff_per_m 0.05
+key fog.falloff_per_m
+time 18
+set fog.falloff_per_m 0.1
+key fog.falloff_per_m
+curve fog.density_per_m on
+curve fog.falloff_per_m on
+print_curves
+save {before}
+curve_box 5.5 8.5
+curve_move 1 0.0833333333333333
+curve_select none
+curve_select fog.falloff_per_m 12
+curve_move 0.3 0
+curve_flat on
+curve_zoom 2 6
+print_curves
+curve_pan 100
+print_curves
+timeline_fit
+print_curves
+window_screenshot {shot}
+save {after}
+undo
+undo
+undo
+undo
+save {undone}
+quit
+""".format(before=before, after=after, undone=undone, shot=shot)))
+    out = p.stdout
+    check("curves view 0 24 shown 2 selected 0" in out, "two curves were not shown on the whole day")
+    check("curve_box: 2 points, 2 keys" in out, "the box did not select the 06:00 and 08:00 keys")
+    check("curve_move: Move 2 keys by 1 h" in out, "the two keys did not move by an hour")
+    check("curve_move: Move key by 0.25 h" in out, "12:18 did not snap to 12:15")
+    check("curves view 3 15 " in out, "zooming in twice around 06:00 did not show 03:00-15:00")
+    check("curves view 24 36 " in out, "panning did not stop at the view's margin")
+    check(out.rstrip().count("curves view 0 24 ") >= 2, "timeline_fit did not show the whole day again")
+    # The built-in preset has density keys of its own; the 06:00 and 08:00 keys moved by an
+    # hour and up by a twelfth of the curve's height (its keys' range, 10 % padded each side).
+    was = track(load_json(before), "fog.density_per_m")["keys"]
+    span = 1.2 * (max(key_value(k) for k in was) - min(key_value(k) for k in was))
+    want = [(k["time_h"] + 1.0, key_value(k) + span / 12.0) if k["time_h"] in (6.0, 8.0)
+            else (k["time_h"], key_value(k)) for k in was]
+    density = track(load_json(after), "fog.density_per_m")["keys"]
+    got = [(k["time_h"], key_value(k)) for k in density]
+    check(len(got) == len(want) and all(g[0] == w[0] and abs(g[1] - w[1]) < 1e-12 for g, w in zip(got, want)),
+          "density keys %s, want %s" % (got, want))
+    falloff = track(load_json(after), "fog.falloff_per_m")["keys"]
+    moved = [k for k in falloff if k["time_h"] == 12.25]
+    check(len(moved) == 1 and moved[0].get("flat") is True, "no flat key at 12:15: %s" % falloff)
+    check(all("flat" not in k for k in falloff if k["time_h"] != 12.25), "other keys flat: %s" % falloff)
+    check(not any(k["time_h"] == 12.0 for k in falloff), "the 12:00 key stayed: %s" % falloff)
+    # Four undos: Save As renamed the preset after curves_after.json (a step), then the flat
+    # tangent, the falloff key's move and the two density keys' move, one step each.
+    check(load_json(undone)["tracks"] == load_json(before)["tracks"], "undo did not restore the keys")
+    width, height, _, _ = read_png(shot)
+    check(width > 0 and height > 0, "no window screenshot")
+    # The curves shown are view state: not in the preset, remembered in the session.
+    check("curves" not in json.dumps(load_json(after)), "the preset holds view state")
+    session = load_json(os.path.join(env.config, "session.json"))
+    check(session.get("curves") == ["fog.density_per_m", "fog.falloff_per_m"],
+          "the session did not remember the curves shown: %s" % session.get("curves"))
+    print("OK: curves")
+
+
+def case_curves_mouse(env):
+    """The curve view under ImGui's mouse (1280x720, where the curves have room):
+    a vertical drag on a key changes its value and not its time; a horizontal
+    drag moves it in time, snapped; a box drag on empty curve area selects the
+    keys inside it and a drag on one of them moves them all (Shift: unsnapped),
+    each drag one undo step; a click on empty curve area sets the time."""
+    names = ["mouse_%d.json" % i for i in range(5)]
+    paths = [env.path(n) for n in names]
+    p = env.run(env.script("curves_mouse.txt", """
+new
+time 6
+set fog.density_per_m 0.01
+key fog.density_per_m
+time 8
+set fog.density_per_m 0.02
+key fog.density_per_m
+time 10
+set fog.density_per_m 0.005
+key fog.density_per_m
+curve fog.density_per_m on
+wait_frames 2
+save {p0}
+curve_drag fog.density_per_m 8 0 -20
+save {p1}
+curve_drag fog.density_per_m 6 40 0
+save {p2}
+curve_drag_box 5.5 -0.05 11 1.05
+print_curves
+curve_drag fog.density_per_m 10 30 0 shift
+save {p3}
+undo
+undo
+save {p4}
+curve_drag_box 15 0.5 15 0.5
+print_curves
+curve_wheel 6 2
+print_curves
+curve_pan_drag 12 100
+print_curves
+quit
+""".format(p0=paths[0], p1=paths[1], p2=paths[2], p3=paths[3], p4=paths[4])), window="1280x720")
+    keys = [{k["time_h"]: key_value(k) for k in track(load_json(path), "fog.density_per_m")["keys"]} for path in paths]
+    before, vertical, horizontal, boxed, undone = keys
+    # Vertical: the 08:00 key went up, no key changed its time.
+    check(sorted(vertical) == sorted(before), "a vertical drag moved keys in time: %s -> %s" % (before, vertical))
+    check(vertical[8.0] > before[8.0], "a vertical drag up did not raise the 08:00 key: %s" % vertical)
+    check(all(vertical[t] == before[t] for t in before if t != 8.0), "other keys changed: %s" % vertical)
+    # Horizontal: the 06:00 key moved later onto a quarter hour (or another key's time), value kept.
+    moved = sorted(set(horizontal) - set(vertical))
+    check(len(moved) == 1 and 6.0 not in horizontal, "the 06:00 key did not move in time: %s" % horizontal)
+    check(6.0 < moved[0] < 8.0 and horizontal[moved[0]] == vertical[6.0], "06:00 key now %s" % moved)
+    all_keys = set()
+    for t in load_json(paths[1])["tracks"]:
+        all_keys.update(k["time_h"] for k in t["keys"])
+    check(moved[0] * 4 == round(moved[0] * 4) or moved[0] in all_keys, "%s is not snapped" % moved[0])
+    check("curves view 0 24 shown 1 selected 3" in p.stdout, "the box did not select the three keys")
+    # The three boxed keys moved together, unsnapped (Shift), by the same time.
+    shifted = sorted(set(boxed) - set(horizontal))
+    check(len(shifted) == 3, "the box's keys did not all move: %s -> %s" % (horizontal, boxed))
+    old = sorted(t for t in horizontal if 5.5 <= t <= 11.0)
+    deltas = [b - a for a, b in zip(old, shifted)]
+    check(max(deltas) - min(deltas) < 1e-9 and deltas[0] > 0.3, "uneven or no shift: %s" % deltas)
+    # Two undos: the preset's name (it follows Save As to the next file, a step of its own),
+    # then the whole box drag, one step: the keys are as the horizontal drag left them.
+    check(undone == horizontal, "undo did not bring back the keys before the box drag: %s" % undone)
+    views = [line.split() for line in p.stdout.splitlines() if line.startswith("curves view")]
+    # Two wheel steps up at 06:00: 1.25^2 times in, 06:00 where it was (a quarter across).
+    start, end = float(views[-2][2]), float(views[-2][3])
+    check(abs((end - start) - 24.0 / 1.5625) < 0.01 and abs((6.0 - start) / (end - start) - 0.25) < 0.01,
+          "the wheel did not zoom in around 06:00: %s" % views[-2])
+    # A middle drag 100 px to the right shows earlier hours.
+    check(float(views[-1][2]) < start - 0.5 and abs(float(views[-1][3]) - float(views[-1][2]) - (end - start)) < 1e-3,
+          "the middle drag did not pan: %s" % views[-1])
+    last = p.stdout.split("curves view")[-3]
+    check(" selected 0 " in last, "a click on empty curve area kept the selection: %s" % last)
+    clicked = float(last.split(" time ")[1].split()[0])
+    check(abs(clicked - 15.0) < 0.05, "a click on empty curve area at 15:00 set the time to %s" % clicked)
+    print("OK: curves_mouse")
+
+
 def case_placement(env):
     """A new volume rests on the scene's surface under the viewport's centre;
     Drop to ground puts a volume's bottom on the surface under it, from above
@@ -960,6 +1126,8 @@ CASES = {
     "autokey": case_autokey,
     "placement": case_placement,
     "mesh_volume": case_mesh_volume,
+    "curves": case_curves,
+    "curves_mouse": case_curves_mouse,
 }
 
 

@@ -194,6 +194,7 @@ TEST(Settings, SessionRoundTrip) {
     s.exposureEv = 1.5;
     s.resolutionScale = 0.75;
     s.timeHours = 18.25;
+    s.curves = {"fog.density_per_m", "volume:ground:density_per_m"};
     ASSERT_TRUE(s.save((dir / "session.json").string()));
     Session t;
     t.load((dir / "session.json").string());
@@ -202,6 +203,7 @@ TEST(Settings, SessionRoundTrip) {
     EXPECT_EQ(t.resolutionScale, 0.75);
     EXPECT_EQ(t.timeHours, 18.25);
     EXPECT_NE(t.cameraJson.find("42"), std::string::npos);
+    EXPECT_EQ(t.curves, s.curves);
     fs::remove_all(dir);
 }
 

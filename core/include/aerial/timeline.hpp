@@ -21,7 +21,10 @@
 //     (m_k, m_k+1) / d_k scaled onto the circle of radius 3 where they leave
 //     it. Each segment is then monotone, so the curve never leaves the range
 //     of its two keys (a density keyed 0 -> 0.01 -> 0 never goes negative);
-//     evaluation also clamps to that range against rounding.
+//     evaluation also clamps to that range against rounding. A key marked
+//     flat (TrackKey::flat, "flat": true in a preset) has tangent 0 in every
+//     component whatever its neighbours: the curve levels out there (an
+//     ease in and out), and stays monotone, since step 4 only shrinks.
 //   * Colours interpolate per channel in scene-linear RGB; vectors (3 or
 //     2 components) per component.
 //   * Targets are stable: a global parameter by its path
@@ -77,6 +80,10 @@ struct TrackKey {
     /// The value in the parameter's unit; scalars use .x only (y, z are 0),
     /// horizontal 2-vectors [x, z] use .x and .y (z is 0).
     glm::dvec3 value{0.0};
+    /// Smooth tracks: the curve is level at this key (tangent 0) instead of
+    /// following its neighbours. Ignored by step and linear. Default false;
+    /// written to a preset only when true ("flat": true).
+    bool flat = false;
 };
 
 struct Track {

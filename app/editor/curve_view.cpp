@@ -1,0 +1,265 @@
+// editor/curve_view.cpp — see curve_view.hpp.
+#include "curve_view.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <utility>
+
+namespace aerial::editor {
+namespace {
+
+constexpr double kViewLo = -kViewMarginHours, kViewHi = 24.0 + kViewMarginHours;
+
+TimeView keptInside(double start, double span) {
+    span = std::clamp(span, kMinViewSpanHours, kMaxViewSpanHours);
+    start = std::clamp(start, kViewLo, kViewHi - span);
+    return {start, start + span};
+}
+
+}  // namespace
+
+TimeView zoomView(const TimeView& view, double anchorHours, double factor) {
+    if (!(factor > 0.0) || !std::isfinite(factor) || !std::isfinite(anchorHours)) return view;
+    const double span = std::clamp(view.span() / factor, kMinViewSpanHours, kMaxViewSpanHours);
+    // The anchor keeps its place: its fraction of the span is the same before and after.
+    const double f = (anchorHours - view.startHours) / view.span();
+    return keptInside(anchorHours - f * span, span);
+}
+
+TimeView panView(const TimeView& view, double deltaHours) {
+    if (!std::isfinite(deltaHours)) return view;
+    return keptInside(view.startHours + deltaHours, view.span());
+}
+
+double tickStepHours(const TimeView& view, double widthPx, double minSpacingPx) {
+    constexpr double kSteps[] = {5.0 / 60.0, 0.25, 0.5, 1.0, 3.0, 6.0};
+    const double pxPerHour = widthPx / view.span();
+    for (double step : kSteps)
+        if (step * pxPerHour >= minSpacingPx) return step;
+    return kSteps[std::size(kSteps) - 1];
+}
+
+CurveRange paddedRange(double lo, double hi, const ParamDesc& desc) {
+    if (!(hi > lo)) {
+        const double pad = std::max({std::abs(hi) * 0.1, (desc.uiMax - desc.uiMin) * 0.05, 1e-6});
+        return {lo - pad, hi + pad};
+    }
+    const double pad = (hi - lo) * kCurveRangePad;
+    return {lo - pad, hi + pad};
+}
+
+CurveRange curveRangeOf(const Track& track, const ParamDesc& desc) {
+    const int components = std::clamp(desc.components(), 1, 3);
+    double lo = 1e300, hi = -1e300;
+    for (const TrackKey& k : track.keys)
+        for (int c = 0; c < components; ++c) {
+            lo = std::min(lo, k.value[c]);
+            hi = std::max(hi, k.value[c]);
+        }
+    if (track.keys.empty()) lo = hi = 0.0;
+    return paddedRange(lo, hi, desc);
+}
+
+std::optional<ParamRef> paramRefOf(const Preset& preset, const TrackTarget& target) {
+    const ParamDesc* desc = findParam(target.scope, target.param);
+    if (!desc) return std::nullopt;
+    if (target.scope == ParamScope::Global) return ParamRef{desc, -1};
+    for (std::size_t i = 0; i < objectCount(preset, target.scope); ++i) {
+        const ParamRef ref{desc, int(i)};
+        if (trackTargetOf(preset, ref) == target) return ref;
+    }
+    return std::nullopt;
+}
+
+std::string curveKey(const TrackTarget& target) {
+    if (target.scope == ParamScope::Global) return target.param;
+    return std::string(scopeKey(target.scope)) + ":" + target.objectId + ":" + target.param;
+}
+
+std::optional<TrackTarget> curveTargetOf(std::string_view key) {
+    const std::size_t first = key.find(':');
+    if (first == std::string_view::npos) {
+        if (!findParam(ParamScope::Global, key)) return std::nullopt;
+        return TrackTarget::global(std::string(key));
+    }
+    const std::size_t second = key.find(':', first + 1);
+    if (second == std::string_view::npos) return std::nullopt;
+    const std::string_view scope = key.substr(0, first), id = key.substr(first + 1, second - first - 1),
+                           param = key.substr(second + 1);
+    for (ParamScope s : {ParamScope::Volume, ParamScope::Emitter, ParamScope::CloudVolume})
+        if (scopeKey(s) == scope && !id.empty() && findParam(s, param))
+            return TrackTarget{s, std::string(id), std::string(param)};
+    return std::nullopt;
+}
+
+int hitTestPoints(const std::vector<glm::dvec2>& points, glm::dvec2 mouse, double radiusPx) {
+    int best = -1;
+    double bestD2 = radiusPx * radiusPx;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const glm::dvec2 d = points[i] - mouse;
+        const double d2 = d.x * d.x + d.y * d.y;
+        if (d2 <= bestD2) {
+            bestD2 = d2;
+            best = int(i);
+        }
+    }
+    return best;
+}
+
+std::vector<int> pointsInBox(const std::vector<glm::dvec2>& points, glm::dvec2 a, glm::dvec2 b) {
+    const glm::dvec2 lo(std::min(a.x, b.x), std::min(a.y, b.y)), hi(std::max(a.x, b.x), std::max(a.y, b.y));
+    std::vector<int> inside;
+    for (std::size_t i = 0; i < points.size(); ++i)
+        if (points[i].x >= lo.x && points[i].x <= hi.x && points[i].y >= lo.y && points[i].y <= hi.y)
+            inside.push_back(int(i));
+    return inside;
+}
+
+CurveKeyPoints keyPointsOf(const Preset& preset, const std::vector<TrackTarget>& targets) {
+    CurveKeyPoints out;
+    for (const TrackTarget& target : targets) {
+        const Track* track = findTrack(preset, target);
+        const ParamDesc* desc = findParam(target.scope, target.param);
+        if (!track || !desc) continue;
+        const CurveRange range = curveRangeOf(*track, *desc);
+        for (std::size_t k = 0; k < track->keys.size(); ++k)
+            for (int c = 0; c < std::clamp(desc->components(), 1, 3); ++c) {
+                out.timeValue.push_back(
+                    {track->keys[k].timeHours, range.normalised(track->keys[k].value[c])});
+                out.ids.push_back({target, int(k), c});
+            }
+    }
+    return out;
+}
+
+std::vector<CurveDragItem> dragItemsOf(const Preset& preset, const std::vector<CurvePoint>& points) {
+    std::vector<CurveDragItem> items;
+    for (const CurvePoint& p : points) {
+        const Track* track = findTrack(preset, p.target);
+        const ParamDesc* desc = findParam(p.target.scope, p.target.param);
+        if (!track || !desc || p.key < 0 || p.key >= int(track->keys.size()) || p.component < 0 ||
+            p.component >= std::clamp(desc->components(), 1, 3))
+            continue;
+        const TrackKey& k = track->keys[std::size_t(p.key)];
+        items.push_back({p, k.timeHours, k.value[p.component], curveRangeOf(*track, *desc)});
+    }
+    return items;
+}
+
+double moveCurvePoints(Preset& preset, const std::vector<CurveDragItem>& items, double dtHours,
+                       double dNormalised) {
+    if (!std::isfinite(dtHours)) dtHours = 0.0;
+    if (!std::isfinite(dNormalised)) dNormalised = 0.0;
+    // The keys that move, per track, with their starting times.
+    std::map<std::size_t, std::map<int, double>> moving;  // track index -> key -> start time
+    for (const CurveDragItem& item : items) {
+        const Track* track = findTrack(preset, item.point.target);
+        if (!track) continue;
+        const std::size_t t = std::size_t(track - preset.tracks.data());
+        if (item.point.key >= 0 && item.point.key < int(track->keys.size()))
+            moving[t][item.point.key] = item.timeHours;
+    }
+    // One shift for all: each moving key stays a gap away from the nearest
+    // key that does not move on either side, and inside the day.
+    double lo = -1e300, hi = 1e300;
+    for (const auto& [t, keys] : moving) {
+        const Track& track = preset.tracks[t];
+        for (const auto& [k, start] : keys) {
+            int before = k - 1, after = k + 1;
+            while (before >= 0 && keys.count(before)) --before;
+            while (after < int(track.keys.size()) && keys.count(after)) ++after;
+            const double floor = before >= 0 ? track.keys[std::size_t(before)].timeHours + kMinKeyGap : 0.0;
+            const double ceiling = after < int(track.keys.size())
+                                       ? track.keys[std::size_t(after)].timeHours - kMinKeyGap
+                                       : 24.0 - kMinKeyGap;
+            lo = std::max(lo, floor - start);
+            hi = std::min(hi, ceiling - start);
+        }
+    }
+    // Keys closer than the gap to start with: they may stay where they are.
+    lo = std::min(lo, 0.0);
+    hi = std::max(hi, 0.0);
+    const double dt = moving.empty() ? 0.0 : std::clamp(dtHours, lo, hi);
+    for (const auto& [t, keys] : moving)
+        for (const auto& [k, start] : keys) preset.tracks[t].keys[std::size_t(k)].timeHours = start + dt;
+    for (const CurveDragItem& item : items) {
+        Track* track = findTrack(preset, item.point.target);
+        const ParamDesc* desc = findParam(item.point.target.scope, item.point.target.param);
+        if (!track || !desc || item.point.key < 0 || item.point.key >= int(track->keys.size())) continue;
+        const double v = item.value + dNormalised * (item.range.hi - item.range.lo);
+        track->keys[std::size_t(item.point.key)].value[item.point.component] =
+            std::clamp(v, desc->minValue, desc->maxValue);
+    }
+    return dt;
+}
+
+int keyCountOf(const std::vector<CurvePoint>& points) {
+    std::set<std::pair<std::string, int>> keys;
+    for (const CurvePoint& p : points)
+        keys.insert(
+            {std::to_string(int(p.target.scope)) + ":" + p.target.objectId + ":" + p.target.param, p.key});
+    return int(keys.size());
+}
+
+std::string moveLabel(const std::vector<CurvePoint>& points) {
+    const int n = keyCountOf(points);
+    return n == 1 ? std::string("Move key") : "Move " + std::to_string(n) + " keys";
+}
+
+int removeCurvePoints(Preset& preset, const std::vector<CurvePoint>& points) {
+    // Highest index first within a track, so the indices still to go stay valid.
+    std::vector<CurvePoint> order = points;
+    std::sort(order.begin(), order.end(),
+              [](const CurvePoint& a, const CurvePoint& b) { return a.key > b.key; });
+    std::vector<std::pair<TrackTarget, int>> done;
+    for (const CurvePoint& p : order) {
+        if (std::find(done.begin(), done.end(), std::make_pair(p.target, p.key)) != done.end()) continue;
+        done.emplace_back(p.target, p.key);
+        removeKey(preset, p.target, p.key);
+    }
+    return int(done.size());
+}
+
+std::string deleteLabel(const std::vector<CurvePoint>& points) {
+    const int n = keyCountOf(points);
+    return n == 1 ? std::string("Delete key") : "Delete " + std::to_string(n) + " keys";
+}
+
+int setFlatTangents(Preset& preset, const std::vector<CurvePoint>& points, bool flat) {
+    int changed = 0;
+    for (const CurvePoint& p : points) {
+        Track* track = findTrack(preset, p.target);
+        if (!track || p.key < 0 || p.key >= int(track->keys.size())) continue;
+        TrackKey& k = track->keys[std::size_t(p.key)];
+        if (k.flat != flat) {
+            k.flat = flat;
+            ++changed;
+        }
+    }
+    return changed;
+}
+
+bool CurveViewState::isShown(const TrackTarget& target) const {
+    return std::find(shown.begin(), shown.end(), target) != shown.end();
+}
+
+void CurveViewState::setShown(const TrackTarget& target, bool show) {
+    const auto it = std::find(shown.begin(), shown.end(), target);
+    if (show && it == shown.end()) shown.push_back(target);
+    if (!show && it != shown.end()) shown.erase(it);
+}
+
+bool CurveViewState::isSelected(const CurvePoint& point) const {
+    return std::find(selected.begin(), selected.end(), point) != selected.end();
+}
+
+void CurveViewState::validate(const Preset& preset) {
+    std::erase_if(selected, [&](const CurvePoint& p) {
+        const Track* track = findTrack(preset, p.target);
+        return !track || p.key < 0 || p.key >= int(track->keys.size());
+    });
+}
+
+}  // namespace aerial::editor

@@ -1,0 +1,186 @@
+// editor/curve_view.hpp — the timeline's curve view without a window: the
+// visible time span (zoom and pan around the mouse, fit to the day, ruler
+// ticks), the curves shown (toggled from the inspector, view state only,
+// never in the preset), each normalised to its keys' range, hit-testing and
+// box selection of key points, and moving many keys at once in time and
+// value as one edit. editor_curves.cpp draws it with Dear ImGui; scripts and
+// tests call the same functions.
+//
+// Normalisation: a curve is drawn from its keys' smallest to largest value
+// (over all its components) padded by kCurveRangePad of that span at both
+// ends, so every curve uses the height of the view whatever its unit or
+// slider range (a density of 1e-4..3e-3 /m and a colour of 0..1 overlay
+// readably). A drag keeps the range it started with, so a key follows the
+// mouse.
+#pragma once
+
+#include "preset_edit.hpp"
+
+#include <aerial/preset.hpp>
+
+#include <glm/vec2.hpp>
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace aerial::editor {
+
+/// The shortest and longest time span the view shows [h] (15 minutes, two days).
+inline constexpr double kMinViewSpanHours = 0.25;
+inline constexpr double kMaxViewSpanHours = 48.0;
+/// How far the view may pan past the day [h]: the day is cyclic, so
+/// yesterday evening and tomorrow morning show the wrap through midnight.
+inline constexpr double kViewMarginHours = 12.0;
+
+/// The timeline's visible time span [h].
+struct TimeView {
+    double startHours = 0.0;
+    double endHours = 24.0;
+
+    double span() const { return endHours - startHours; }
+    /// x [px] of time `t` [h] on a strip from `x0` to `x1` [px].
+    double xOf(double t, double x0, double x1) const { return x0 + (t - startHours) / span() * (x1 - x0); }
+    /// Time [h] (not wrapped) at x [px] on that strip.
+    double tOf(double x, double x0, double x1) const {
+        return startHours + (x - x0) / (x1 - x0 > 0.0 ? x1 - x0 : 1.0) * span();
+    }
+    bool operator==(const TimeView&) const = default;
+};
+
+/// The view zoomed by `factor` (> 1 zooms in) keeping `anchorHours` (the
+/// time under the mouse) where it is; the span stays within
+/// [kMinViewSpanHours, kMaxViewSpanHours] and the view within the day plus
+/// kViewMarginHours either side.
+TimeView zoomView(const TimeView& view, double anchorHours, double factor);
+/// The view moved by `deltaHours`, kept within the day plus the margins.
+TimeView panView(const TimeView& view, double deltaHours);
+/// The whole day, 00:00 to 24:00 (F, double-click on the ruler).
+inline TimeView fitView() { return {}; }
+/// The ruler's tick step [h]: the finest of 5 min, 15 min, 30 min, 1 h,
+/// 3 h, 6 h whose ticks lie at least `minSpacingPx` apart on `widthPx`.
+double tickStepHours(const TimeView& view, double widthPx, double minSpacingPx);
+
+/// Padding of a curve's value range, as a fraction of its span.
+inline constexpr double kCurveRangePad = 0.1;
+
+/// The value range a curve is drawn in: lo at the bottom, hi at the top.
+struct CurveRange {
+    double lo = 0.0;
+    double hi = 1.0;
+    /// 0 at lo, 1 at hi.
+    double normalised(double value) const { return (value - lo) / (hi - lo); }
+    double valueOf(double normalised) const { return lo + normalised * (hi - lo); }
+};
+/// The range of values from `lo` to `hi` padded by kCurveRangePad; a single
+/// value (lo == hi) gets +-10 % of its magnitude, at least 5 % of the
+/// parameter's slider range (so a flat curve sits in the middle).
+CurveRange paddedRange(double lo, double hi, const ParamDesc& desc);
+/// The range of a track's keys over the components the parameter has.
+CurveRange curveRangeOf(const Track& track, const ParamDesc& desc);
+
+/// The parameter a track target names (its object found by id); nullopt
+/// when the preset has no such parameter or object.
+std::optional<ParamRef> paramRefOf(const Preset& preset, const TrackTarget& target);
+
+/// A curve as the session remembers it: the global parameter's path
+/// ("fog.density_per_m"), or scope, object id and parameter key
+/// ("volume:valley_fog:density_per_m").
+std::string curveKey(const TrackTarget& target);
+/// The inverse; nullopt for text that names no parameter.
+std::optional<TrackTarget> curveTargetOf(std::string_view key);
+
+/// One component of one key of one track: what the curve view selects and drags.
+struct CurvePoint {
+    TrackTarget target;
+    int key = -1;
+    int component = 0;
+    bool operator==(const CurvePoint&) const = default;
+};
+
+/// Index of the point nearest `mouse` within `radiusPx`, or -1.
+int hitTestPoints(const std::vector<glm::dvec2>& points, glm::dvec2 mouse, double radiusPx);
+/// Indices of the points inside the box with corners `a` and `b` (any two
+/// opposite corners), in order.
+std::vector<int> pointsInBox(const std::vector<glm::dvec2>& points, glm::dvec2 a, glm::dvec2 b);
+
+/// The key points of the curves of `targets` in time and value: x the
+/// key's time [h], y its component normalised to the curve's range (0
+/// bottom, 1 top); what a script's box selection tests.
+struct CurveKeyPoints {
+    std::vector<glm::dvec2> timeValue;
+    std::vector<CurvePoint> ids;
+};
+CurveKeyPoints keyPointsOf(const Preset& preset, const std::vector<TrackTarget>& targets);
+
+/// A point as a drag found it: where it started and the range it is drawn in.
+struct CurveDragItem {
+    CurvePoint point;
+    double timeHours = 0.0;  ///< the key's time when the drag began [h]
+    double value = 0.0;      ///< the component's value when the drag began
+    CurveRange range;        ///< the curve's range when the drag began
+};
+/// The drag items of `points` (those the preset has; others are left out).
+std::vector<CurveDragItem> dragItemsOf(const Preset& preset, const std::vector<CurvePoint>& points);
+
+/// Moves the items' keys together: every key by the same time `dtHours`,
+/// limited so that no moved key comes within kMinKeyGap of a key that does
+/// not move or leaves [0, 24 - kMinKeyGap] (the keys keep their order, so
+/// their indices stay valid); every component by `dNormalised` of its
+/// curve's range, clamped into the parameter's valid range. Absolute: the
+/// keys are set from the items' starting values, so a drag calls it every
+/// frame with its whole offset. Returns the time shift applied [h].
+double moveCurvePoints(Preset& preset, const std::vector<CurveDragItem>& items, double dtHours,
+                       double dNormalised);
+/// How many distinct keys the points belong to.
+int keyCountOf(const std::vector<CurvePoint>& points);
+/// The undo step's name for moving them: "Move key", "Move 3 keys".
+std::string moveLabel(const std::vector<CurvePoint>& points);
+/// Removes the points' keys (a track goes with its last key); returns how
+/// many keys went.
+int removeCurvePoints(Preset& preset, const std::vector<CurvePoint>& points);
+/// The undo step's name for that: "Delete key", "Delete 3 keys".
+std::string deleteLabel(const std::vector<CurvePoint>& points);
+/// Sets (or clears) the flat tangent of the points' keys; returns how many
+/// keys changed.
+int setFlatTangents(Preset& preset, const std::vector<CurvePoint>& points, bool flat);
+
+/// A mouse drag on the timeline's canvas, from press to release.
+struct CurveDrag {
+    enum class Kind { None, Keys, Box, Pan } kind = Kind::None;
+    glm::dvec2 from{0.0};  ///< where the button went down [px]
+    /// Keys: the points dragged as they began, the one under the mouse
+    /// (its time snaps), whether time and value have moved past the dead
+    /// zone yet, and the offset applied last (time [h], normalised value).
+    std::vector<CurveDragItem> items;
+    int lead = -1;
+    bool timeMoved = false, valueMoved = false;
+    double appliedHours = 0.0, appliedNormalised = 0.0;
+    bool additive = false;  ///< Box: Ctrl adds to the selection
+    TimeView viewFrom;      ///< Pan: the view when it began
+};
+
+/// The curve view's state (view state: never saved in the preset; the
+/// curves shown are remembered in the session, settings.hpp).
+struct CurveViewState {
+    TimeView time;
+    CurveDrag drag;
+    /// The curves overlaid besides the inspector's parameter, in the order shown.
+    std::vector<TrackTarget> shown;
+    /// The selected key points.
+    std::vector<CurvePoint> selected;
+    /// Where the curves were drawn last frame [px in the window]: x of
+    /// time.startHours and time.endHours, y of the bottom (0) and top (1)
+    /// of every curve's range (what a script's mouse drag aims at).
+    double drawnX0 = 0.0, drawnX1 = 0.0, drawnBottom = 0.0, drawnTop = 0.0;
+
+    bool isShown(const TrackTarget& target) const;
+    /// Shows or hides a curve.
+    void setShown(const TrackTarget& target, bool show);
+    bool isSelected(const CurvePoint& point) const;
+    /// Forgets selected points whose key the preset no longer has.
+    void validate(const Preset& preset);
+};
+
+}  // namespace aerial::editor

@@ -1,0 +1,384 @@
+// editor/editor_curves.cpp — the timeline's curve area: the inspector's
+// parameter and the curves toggled on beside it (the curve button in the
+// inspector), each normalised to its keys' range and colour-coded, with a
+// legend in the label column. Keys drag in time and value (one undo step
+// per drag, "Move 3 keys"; time snaps to other keys and the quarter hour
+// unless Shift is held; a few pixels of dead zone per axis keep a vertical
+// drag at its time); Ctrl+click adds a key to the selection; a drag on
+// empty curve area selects the keys in its box (Ctrl adds), a click there
+// sets the time; right-click a key for flat / automatic tangents and
+// delete. The wrap through midnight (after the last key and before the
+// first) is dashed; a track that holds its ends is drawn flat there, dimmed.
+// The pure parts (zoom, normalisation, hit-testing, moves) are in
+// curve_view.hpp.
+#include "panels.hpp"
+
+#include <aerial/clock.hpp>
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace aerial::editor {
+namespace {
+
+constexpr ImU32 kPalette[] = {IM_COL32(240, 190, 60, 255),  IM_COL32(80, 200, 235, 255),
+                              IM_COL32(235, 105, 200, 255), IM_COL32(125, 215, 95, 255),
+                              IM_COL32(245, 115, 70, 255),  IM_COL32(165, 135, 250, 255),
+                              IM_COL32(230, 230, 140, 255), IM_COL32(70, 190, 165, 255)};
+constexpr int kPaletteSize = int(sizeof kPalette / sizeof kPalette[0]);
+constexpr float kPickRadiusPx = 6.0f;
+constexpr float kDeadZonePx = 3.0f;  ///< a drag moves a key along an axis once it leaves this
+
+/// A colour scaled in brightness and alpha (the components of a vector
+/// curve get darker: x, y, z).
+ImU32 shade(ImU32 colour, float brightness, float alpha) {
+    ImVec4 c = ImGui::ColorConvertU32ToFloat4(colour);
+    return ImGui::ColorConvertFloat4ToU32(
+        ImVec4(c.x * brightness, c.y * brightness, c.z * brightness, c.w * alpha));
+}
+
+/// One curve in the view.
+struct Drawn {
+    TrackTarget target;
+    ParamRef ref;
+    const Track* track = nullptr;
+    CompiledTrack compiled;
+    CurveRange range;
+    ImU32 colour = 0;
+    bool primary = false;  ///< the inspector's parameter
+    int components = 1;
+};
+
+std::string valueText(const glm::dvec3& v, int components) {
+    char text[96];
+    if (components == 1)
+        std::snprintf(text, sizeof text, "%.6g", v.x);
+    else if (components == 2)
+        std::snprintf(text, sizeof text, "(%.4g, %.4g)", v.x, v.y);
+    else
+        std::snprintf(text, sizeof text, "(%.4g, %.4g, %.4g)", v.x, v.y, v.z);
+    return text;
+}
+
+}  // namespace
+
+unsigned curveColour(const EditState& edit, const TrackTarget& target) {
+    const auto& shown = edit.curves.shown;
+    const auto it = std::find(shown.begin(), shown.end(), target);
+    if (it == shown.end()) return kPalette[0];
+    return kPalette[(int(it - shown.begin()) + 1) % kPaletteSize];
+}
+
+void drawCurveView(Document& doc, EditState& edit, Playback& playback, float labelX, float x0, float x1,
+                   float top, float bottom) {
+    CurveViewState& view = edit.curves;
+    CurveDrag& drag = view.drag;
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    const ImGuiIO& io = ImGui::GetIO();
+    const Preset& preset = doc.preset();
+    const float yTop = top + 6.0f, yBottom = bottom - 6.0f;
+    auto xOf = [&](double t) { return float(view.time.xOf(t, x0, x1)); };
+    auto yOf = [&](double n) { return yBottom - float(n) * (yBottom - yTop); };
+    view.drawnX0 = x0;
+    view.drawnX1 = x1;
+    view.drawnBottom = yBottom;
+    view.drawnTop = yTop;
+
+    // --- the curves: those toggled on, then the inspector's parameter ---------------------------
+    std::vector<Drawn> curves;
+    const std::optional<TrackTarget> primary =
+        edit.selectedParam ? std::optional<TrackTarget>(trackTargetOf(preset, *edit.selectedParam))
+                           : std::nullopt;
+    auto addCurve = [&](const TrackTarget& target) {
+        const std::optional<ParamRef> ref = paramRefOf(preset, target);
+        if (!ref) return;
+        Drawn d;
+        d.target = target;
+        d.ref = *ref;
+        d.track = findTrack(preset, target);
+        d.components = std::clamp(ref->desc->components(), 1, 3);
+        d.primary = primary && *primary == target;
+        d.colour = curveColour(edit, target);
+        if (d.track) {
+            d.compiled = compileTrack(*d.track, d.components);
+            d.range = curveRangeOf(*d.track, *ref->desc);
+        } else {
+            double base[4];
+            readBaseValue(preset, *ref, base);
+            double lo = base[0], hi = base[0];
+            for (int c = 1; c < d.components; ++c) lo = std::min(lo, base[c]), hi = std::max(hi, base[c]);
+            d.range = paddedRange(lo, hi, *ref->desc);
+        }
+        // A drag keeps the range it began with, so the key stays under the mouse.
+        for (const CurveDragItem& item : drag.items)
+            if (drag.kind == CurveDrag::Kind::Keys && item.point.target == target) d.range = item.range;
+        curves.push_back(std::move(d));
+    };
+    for (const TrackTarget& t : view.shown) addCurve(t);
+    if (primary && !view.isShown(*primary)) addCurve(*primary);
+
+    // Day boundaries and what lies outside the day (yesterday, tomorrow).
+    if (view.time.startHours < 0.0)
+        dl->AddRectFilled(ImVec2(x0, top), ImVec2(std::min(xOf(0.0), x1), bottom), IM_COL32(0, 0, 0, 70));
+    if (view.time.endHours > 24.0)
+        dl->AddRectFilled(ImVec2(std::max(xOf(24.0), x0), top), ImVec2(x1, bottom), IM_COL32(0, 0, 0, 70));
+
+    // Samples every few pixels; the part of a curve outside its first..last
+    // key (the night between them) is dashed when it wraps, dimmed and flat
+    // when the track holds its ends.
+    const int samples = std::clamp(int((x1 - x0) / 3.0f), 32, 640);
+    for (const Drawn& d : curves) {
+        for (int c = 0; c < d.components; ++c) {
+            const float brightness = c == 0 ? 1.0f : (c == 1 ? 0.72f : 0.5f);
+            const float thickness = d.primary ? 2.0f : 1.5f;
+            ImVec2 previous;
+            for (int s = 0; s <= samples; ++s) {
+                const double t = view.time.startHours + view.time.span() * s / samples;
+                double v;
+                if (d.track) {
+                    // The last sample just inside the view: at exactly 24:00 it would read the
+                    // next day's 00:00 (a held track jumps there).
+                    v = evaluateTrack(d.compiled, s == samples ? t - 1e-7 : t)[c];
+                } else {
+                    double base[4];
+                    readBaseValue(preset, d.ref, base);
+                    v = base[c];
+                }
+                const ImVec2 p(xOf(t), yOf(d.range.normalised(v)));
+                if (s > 0) {
+                    bool outside = false;
+                    if (d.track && !d.track->keys.empty()) {
+                        const double mid = wrapHours(t - 0.5 * view.time.span() / samples);
+                        outside =
+                            mid < d.track->keys.front().timeHours || mid > d.track->keys.back().timeHours;
+                    }
+                    if (!outside)
+                        dl->AddLine(previous, p, shade(d.colour, brightness, 1.0f), thickness);
+                    else if (!d.track->wrap)
+                        dl->AddLine(previous, p, shade(d.colour, brightness, 0.45f), thickness);
+                    else if ((s / 2) % 2 == 0)  // dashes of two samples
+                        dl->AddLine(previous, p, shade(d.colour, brightness, 0.6f), thickness);
+                }
+                previous = p;
+            }
+        }
+    }
+
+    // --- key points: this day's are picked; yesterday's and tomorrow's copies are dimmed ---------
+    std::vector<glm::dvec2> points;
+    std::vector<CurvePoint> ids;
+    for (const Drawn& d : curves) {
+        if (!d.track) continue;
+        for (std::size_t k = 0; k < d.track->keys.size(); ++k) {
+            const TrackKey& key = d.track->keys[k];
+            for (int c = 0; c < d.components; ++c) {
+                const float brightness = c == 0 ? 1.0f : (c == 1 ? 0.72f : 0.5f);
+                const float y = yOf(d.range.normalised(key.value[c]));
+                for (double day : {-24.0, 24.0}) {
+                    const float xg = xOf(key.timeHours + day);
+                    if (xg >= x0 && xg <= x1)
+                        dl->AddCircleFilled(ImVec2(xg, y), 2.5f, shade(d.colour, brightness, 0.4f));
+                }
+                const float x = xOf(key.timeHours);
+                if (x < x0 - kPickRadiusPx || x > x1 + kPickRadiusPx) continue;
+                const CurvePoint id{d.target, int(k), c};
+                const bool selected = view.isSelected(id);
+                if (key.flat && d.track->interpolation == Interpolation::Smooth) {  // the level tangent
+                    dl->AddLine(ImVec2(x - 14.0f, y), ImVec2(x + 14.0f, y), IM_COL32(235, 235, 235, 220),
+                                1.5f);
+                    dl->AddRectFilled(ImVec2(x - 15.5f, y - 1.5f), ImVec2(x - 12.5f, y + 1.5f),
+                                      IM_COL32(235, 235, 235, 255));
+                    dl->AddRectFilled(ImVec2(x + 12.5f, y - 1.5f), ImVec2(x + 15.5f, y + 1.5f),
+                                      IM_COL32(235, 235, 235, 255));
+                }
+                dl->AddCircleFilled(ImVec2(x, y), selected ? 4.5f : 3.5f, shade(d.colour, brightness, 1.0f));
+                if (selected) dl->AddCircle(ImVec2(x, y), 6.5f, IM_COL32(255, 255, 255, 230), 0, 1.5f);
+                points.push_back({x, y});
+                ids.push_back(id);
+            }
+        }
+    }
+
+    // --- legend: the label column, one line a curve --------------------------------------------
+    float yLegend = top + 2.0f;
+    int hoveredLegend = -1;
+    for (std::size_t i = 0; i < curves.size() && yLegend + 13.0f <= bottom; ++i, yLegend += 14.0f) {
+        const Drawn& d = curves[i];
+        std::string label(d.ref.desc->label);
+        if (d.ref.object >= 0)
+            label = std::string(addressPrefix(d.ref.scope())).substr(0, 3) + std::to_string(d.ref.object) +
+                    " " + label;
+        if (label.size() > 15) label = label.substr(0, 14) + "~";
+        dl->AddRectFilled(ImVec2(labelX + 4.0f, yLegend + 3.0f), ImVec2(labelX + 12.0f, yLegend + 11.0f),
+                          d.colour);
+        dl->AddText(ImVec2(labelX + 16.0f, yLegend),
+                    d.primary ? IM_COL32(235, 235, 235, 255) : IM_COL32(170, 170, 170, 255), label.c_str());
+        if (ImGui::IsMouseHoveringRect(ImVec2(labelX, yLegend), ImVec2(x0, yLegend + 14.0f)))
+            hoveredLegend = int(i);
+    }
+    if (hoveredLegend >= 0 && ImGui::IsWindowHovered()) {
+        const Drawn& d = curves[std::size_t(hoveredLegend)];
+        ImGui::SetTooltip("%s\ndrawn from %.4g (bottom) to %.4g (top) %s%s%s", paramAddress(d.ref).c_str(),
+                          d.range.lo, d.range.hi, std::string(d.ref.desc->unit).c_str(),
+                          d.components > 1 ? "\ncomponents x, y, z from bright to dark" : "",
+                          d.track && !d.track->wrap ? "\nholds its first and last values" : "");
+    }
+
+    // --- mouse -----------------------------------------------------------------------------------
+    if (!(bottom - top > 4.0f)) return;
+    ImGui::SetCursorScreenPos(ImVec2(x0, top));
+    ImGui::InvisibleButton("##curve", ImVec2(x1 - x0, bottom - top),
+                           ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight);
+    const bool hovered = ImGui::IsItemHovered();
+    const glm::dvec2 mouse(io.MousePos.x, io.MousePos.y);
+    const int hit = hovered ? hitTestPoints(points, mouse, kPickRadiusPx) : -1;
+    auto selectPrimaryKey = [&](const CurvePoint& p) {  // the track row and Delete / Copy follow the curve
+        if (primary && p.target == *primary) edit.selectedKey = p.key;
+    };
+    if (ImGui::IsItemClicked(ImGuiMouseButton_Left) && !io.KeyAlt) {
+        drag = CurveDrag{};
+        drag.from = mouse;
+        if (hit >= 0) {
+            const CurvePoint& p = ids[std::size_t(hit)];
+            if (io.KeyCtrl) {
+                if (view.isSelected(p))
+                    std::erase(view.selected, p);
+                else
+                    view.selected.push_back(p);
+            } else if (!view.isSelected(p)) {
+                view.selected = {p};
+            }
+            selectPrimaryKey(p);
+            if (view.isSelected(p)) {
+                drag.kind = CurveDrag::Kind::Keys;
+                drag.items = dragItemsOf(preset, view.selected);
+                for (std::size_t i = 0; i < drag.items.size(); ++i)
+                    if (drag.items[i].point == p) drag.lead = int(i);
+            }
+        } else {
+            drag.kind = CurveDrag::Kind::Box;
+            drag.additive = io.KeyCtrl;
+        }
+    }
+    if (ImGui::IsItemClicked(ImGuiMouseButton_Right) && hit >= 0) {
+        const CurvePoint& p = ids[std::size_t(hit)];
+        if (!view.isSelected(p)) view.selected = {p};
+        selectPrimaryKey(p);
+        ImGui::OpenPopup("##curvemenu");
+    }
+    const bool leftDown = ImGui::IsMouseDown(ImGuiMouseButton_Left);
+    if (drag.kind == CurveDrag::Kind::Keys && drag.lead >= 0) {
+        const glm::dvec2 delta = mouse - drag.from;
+        drag.timeMoved = drag.timeMoved || std::abs(delta.x) > kDeadZonePx;
+        drag.valueMoved = drag.valueMoved || std::abs(delta.y) > kDeadZonePx;
+        if (leftDown) {
+            const CurveDragItem& lead = drag.items[std::size_t(drag.lead)];
+            double dt = 0.0;
+            if (drag.timeMoved) {
+                const double hoursPerPx = view.time.span() / double(std::max(x1 - x0, 1.0f));
+                const double wanted = lead.timeHours + delta.x * hoursPerPx;
+                double t = wanted;
+                // Snapped to another key (6 px) or the quarter hour; Shift moves freely.
+                if (!io.KeyShift) {
+                    t = snapKeyTime(preset, lead.point.target, lead.point.key, wanted, 6.0 * hoursPerPx);
+                    if (t - wanted > 12.0) t -= 24.0;  // the quarter hour after 23:52 is 00:00
+                }
+                dt = t - lead.timeHours;
+            }
+            const double dn = drag.valueMoved ? -delta.y / double(std::max(yBottom - yTop, 1.0f)) : 0.0;
+            if (dt != drag.appliedHours || dn != drag.appliedNormalised) {
+                std::vector<CurvePoint> moved;
+                for (const CurveDragItem& item : drag.items) moved.push_back(item.point);
+                const std::vector<CurveDragItem> items = drag.items;
+                doc.apply(moveLabel(moved), "curve-move",
+                          [&](Preset& p) { moveCurvePoints(p, items, dt, dn); });
+                drag.appliedHours = dt;
+                drag.appliedNormalised = dn;
+            }
+        } else {
+            doc.closeMerge();
+            drag = CurveDrag{};
+        }
+    } else if (drag.kind == CurveDrag::Kind::Box) {
+        const glm::dvec2 delta = mouse - drag.from;
+        const bool boxed = std::abs(delta.x) > kDeadZonePx || std::abs(delta.y) > kDeadZonePx;
+        if (leftDown && boxed) {
+            dl->AddRectFilled(ImVec2(float(drag.from.x), float(drag.from.y)), io.MousePos,
+                              IM_COL32(120, 160, 255, 40));
+            dl->AddRect(ImVec2(float(drag.from.x), float(drag.from.y)), io.MousePos,
+                        IM_COL32(120, 160, 255, 200));
+        } else if (!leftDown) {
+            if (boxed) {
+                if (!drag.additive) view.selected.clear();
+                for (int i : pointsInBox(points, drag.from, mouse))
+                    if (!view.isSelected(ids[std::size_t(i)])) view.selected.push_back(ids[std::size_t(i)]);
+            } else {  // a click on empty curve area: the time there
+                if (!drag.additive) view.selected.clear();
+                playback.jumpTo(view.time.tOf(drag.from.x, x0, x1));
+                playback.playing = false;
+            }
+            drag = CurveDrag{};
+        }
+    } else if (drag.kind != CurveDrag::Kind::Pan && !leftDown) {
+        drag = CurveDrag{};
+    }
+
+    const std::uint64_t revision = doc.revision();
+    if (ImGui::BeginPopup("##curvemenu")) {
+        const int keys = keyCountOf(view.selected);
+        const std::string suffix =
+            keys == 1 ? std::string(" (1 key)") : " (" + std::to_string(keys) + " keys)";
+        const std::vector<CurvePoint> picked = view.selected;
+        if (ImGui::MenuItem(("Flat tangent" + suffix).c_str()))
+            doc.apply(keys == 1 ? "Flat tangent" : "Flat tangents", "",
+                      [&](Preset& p) { setFlatTangents(p, picked, true); });
+        if (ImGui::MenuItem(("Automatic tangent" + suffix).c_str()))
+            doc.apply(keys == 1 ? "Automatic tangent" : "Automatic tangents", "",
+                      [&](Preset& p) { setFlatTangents(p, picked, false); });
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip(
+                "Smooth tracks: flat levels the curve at the key; automatic follows its neighbours");
+        ImGui::Separator();
+        if (ImGui::MenuItem(deleteLabel(picked).c_str(), "Del")) {
+            doc.apply(deleteLabel(picked), "", [&](Preset& p) { removeCurvePoints(p, picked); });
+            view.selected.clear();
+            edit.selectedKey = -1;
+        }
+        ImGui::EndPopup();
+    }
+
+    // Tooltips: a key's time and value; elsewhere the inspector's parameter there.
+    // (Not after the menu changed the preset: `curves` may point at tracks it removed.)
+    if (hovered && drag.kind == CurveDrag::Kind::None && !ImGui::IsPopupOpen("##curvemenu") &&
+        doc.revision() == revision) {
+        if (hit >= 0) {
+            const CurvePoint& p = ids[std::size_t(hit)];
+            for (const Drawn& d : curves)
+                if (d.target == p.target && d.track && p.key < int(d.track->keys.size())) {
+                    const TrackKey& k = d.track->keys[std::size_t(p.key)];
+                    ImGui::SetTooltip(
+                        "%s\n%s  %s%s\nDrag: time and value (Shift: no snapping); Ctrl+click: "
+                        "add to the selection; right-click: tangent, delete",
+                        std::string(d.ref.desc->label).c_str(),
+                        formatClock(k.timeHours, ClockResolution::Minutes).c_str(),
+                        valueText(k.value, d.components).c_str(), k.flat ? "  (flat)" : "");
+                }
+        } else if (edit.selectedParam) {
+            double v[4];
+            const double t = wrapHours(view.time.tOf(mouse.x, x0, x1));
+            readValueAt(preset, *edit.selectedParam, t, v);
+            ImGui::SetTooltip(
+                "%s  %s\nClick: go to this time; drag: select the keys in a box (Ctrl adds)",
+                formatClock(t, ClockResolution::Minutes).c_str(),
+                valueText(glm::dvec3(v[0], v[1], v[2]), edit.selectedParam->desc->components()).c_str());
+        }
+    }
+}
+
+}  // namespace aerial::editor

@@ -1,0 +1,268 @@
+// editor/editor_script_curves.cpp — the script commands of the timeline's
+// curve view: show a curve, select key points (one, or a box in time and
+// normalised value), move them as a drag does (one undo step, snapped unless
+// told not to), flat tangents, zoom and pan; and real mouse drags over the
+// curve area (curve_drag, curve_drag_box: ImGui's mouse, frame by frame). Entries of the script command
+// table (see editor_script.cpp) over the functions the curve view uses
+// (curve_view.hpp).
+#include "editor.hpp"
+#include "script_args.hpp"
+
+#include <cstdio>
+
+namespace aerial::editor {
+
+void Editor::declareCurveScriptCommands() {
+    ScriptCommandTable& table = scriptCommands_;
+    using W = const ScriptWords&;
+    using E = std::string&;
+    // The target of an animated parameter, or nullopt with `error` set.
+    const auto animated = [this](const std::string& address,
+                                 std::string& error) -> std::optional<TrackTarget> {
+        const std::optional<ParamRef> ref = parseParamAddress(doc_.preset(), address, &error);
+        if (!ref) return std::nullopt;
+        const TrackTarget target = trackTargetOf(doc_.preset(), *ref);
+        if (!findTrack(doc_.preset(), target)) {
+            error = address + " has no track";
+            return std::nullopt;
+        }
+        return target;
+    };
+
+    // A left drag over the timeline's real widgets (ImGui's mouse, one
+    // frame each): hover, press, `frames` moves, release.
+    const auto queueDrag = [this](glm::dvec2 from, glm::dvec2 to, bool ctrl, bool shift, int frames) {
+        runner_.guiMouse.push_back({from, false, ctrl, shift});
+        runner_.guiMouse.push_back({from, true, ctrl, shift});
+        for (int k = 1; k <= frames; ++k)
+            runner_.guiMouse.push_back({from + (to - from) * (double(k) / frames), true, ctrl, shift});
+        runner_.guiMouse.push_back({to, false, ctrl, shift});
+        runner_.guiMouse.push_back({to, false, false, false});
+    };
+    // Window pixels of time `t` [h] and height `n` (0 bottom, 1 top of a curve).
+    const auto pixelOf = [this](double t, double n) {
+        const CurveViewState& v = edit_.curves;
+        return glm::dvec2(v.time.xOf(t, v.drawnX0, v.drawnX1),
+                          v.drawnBottom + n * (v.drawnTop - v.drawnBottom));
+    };
+
+    table.add({"curve", 2, 2, "curve KEY on|off",
+               "show or hide KEY's curve in the timeline (the inspector's curve button)",
+               [this, animated](W w, E error) {
+                   const std::optional<TrackTarget> target = animated(w[1], error);
+                   if (!target) return false;
+                   if (w[2] != "on" && w[2] != "off") {
+                       error = "curve: curve KEY on|off";
+                       return false;
+                   }
+                   edit_.curves.setShown(*target, w[2] == "on");
+                   return true;
+               }});
+    table.add(
+        {"curve_select", 1, 3, "curve_select KEY T [COMPONENT] | curve_select none",
+         "add the key of KEY at time T (component 0, 1, 2) to the curve selection, as Ctrl+click does",
+         [this, animated](W w, E error) {
+             if (w[1] == "none") {
+                 edit_.curves.selected.clear();
+                 return true;
+             }
+             const std::optional<TrackTarget> target = animated(w[1], error);
+             double t = 0.0, component = 0.0;
+             if (!target || w.size() < 3 || !toTime(w[2], t) ||
+                 (w.size() == 4 && (!toNumber(w[3], component) || component < 0.0 || component > 2.0))) {
+                 if (error.empty()) error = "curve_select: curve_select KEY T [COMPONENT]";
+                 return false;
+             }
+             const int key = keyIndexAt(*findTrack(doc_.preset(), *target), t);
+             if (key < 0) {
+                 error = "curve_select: no key of " + w[1] + " at " + w[2];
+                 return false;
+             }
+             const CurvePoint point{*target, key, int(component)};
+             if (!edit_.curves.isSelected(point)) edit_.curves.selected.push_back(point);
+             return true;
+         }});
+    table.add({"curve_box", 2, 4, "curve_box FROM TO [LO HI]",
+               "select the keys of the shown curves from time FROM to TO and, optionally, from LO to HI of "
+               "each curve's height (0 bottom, 1 top), as a drag on empty curve area does",
+               [this](W w, E error) {
+                   double from, to, lo = -1.0, hi = 2.0;
+                   if (!toTime(w[1], from) || !toTime(w[2], to) || w.size() == 4 ||
+                       (w.size() == 5 && (!toNumber(w[3], lo) || !toNumber(w[4], hi)))) {
+                       error = "curve_box: curve_box FROM TO [LO HI]";
+                       return false;
+                   }
+                   std::vector<TrackTarget> targets = edit_.curves.shown;
+                   if (edit_.selectedParam) {
+                       const TrackTarget primary = trackTargetOf(doc_.preset(), *edit_.selectedParam);
+                       if (!edit_.curves.isShown(primary)) targets.push_back(primary);
+                   }
+                   const CurveKeyPoints points = keyPointsOf(doc_.preset(), targets);
+                   edit_.curves.selected.clear();
+                   for (int i : pointsInBox(points.timeValue, {from, lo}, {to, hi}))
+                       edit_.curves.selected.push_back(points.ids[std::size_t(i)]);
+                   std::printf("curve_box: %zu points, %d keys\n", edit_.curves.selected.size(),
+                               keyCountOf(edit_.curves.selected));
+                   return true;
+               }});
+    table.add({"curve_move", 2, 3, "curve_move DT DV [free]",
+               "move the selected keys as a drag on the curves does: DT hours (the first selected key "
+               "snaps to keys and quarter hours unless free) and DV of each curve's height; one undo step",
+               [this](W w, E error) {
+                   double dt, dv;
+                   if (!toNumber(w[1], dt) || !toNumber(w[2], dv) || (w.size() == 4 && w[3] != "free")) {
+                       error = "curve_move: curve_move DT DV [free]";
+                       return false;
+                   }
+                   const std::vector<CurveDragItem> items = dragItemsOf(doc_.preset(), edit_.curves.selected);
+                   if (items.empty()) {
+                       error = "curve_move: no keys selected";
+                       return false;
+                   }
+                   const CurveDragItem& lead = items.front();
+                   double shift = dt;
+                   if (w.size() == 3) {  // 6 px at the whole day on a 1000 px strip
+                       const double t = snapKeyTime(doc_.preset(), lead.point.target, lead.point.key,
+                                                    lead.timeHours + dt, 6.0 * 24.0 / 1000.0);
+                       shift = t - lead.timeHours;
+                       if (shift - dt > 12.0) shift -= 24.0;
+                   }
+                   std::vector<CurvePoint> moved;
+                   for (const CurveDragItem& item : items) moved.push_back(item.point);
+                   double applied = 0.0;
+                   for (int step = 1; step <= 4; ++step)  // a drag: several moves, one step
+                       doc_.apply(moveLabel(moved), "curve-move", [&](Preset& p) {
+                           applied = moveCurvePoints(p, items, shift * step / 4.0, dv * step / 4.0);
+                       });
+                   doc_.closeMerge();
+                   std::printf("curve_move: %s by %.6g h\n", moveLabel(moved).c_str(), applied);
+                   return true;
+               }});
+    table.add({"curve_drag", 4, 5, "curve_drag KEY T DX DY [shift|ctrl]",
+               "drag the key of KEY at time T (its first component) on the curves by DX DY pixels with the "
+               "mouse, holding Shift (no snapping) or Ctrl (add to the selection)",
+               [this, animated, queueDrag, pixelOf](W w, E error) {
+                   const std::optional<TrackTarget> target = animated(w[1], error);
+                   double t, dx, dy;
+                   if (!target || !toTime(w[2], t) || !toNumber(w[3], dx) || !toNumber(w[4], dy) ||
+                       (w.size() == 6 && w[5] != "shift" && w[5] != "ctrl")) {
+                       if (error.empty()) error = "curve_drag: curve_drag KEY T DX DY [shift|ctrl]";
+                       return false;
+                   }
+                   const bool primary =
+                       edit_.selectedParam && trackTargetOf(doc_.preset(), *edit_.selectedParam) == *target;
+                   if (!edit_.curves.isShown(*target) && !primary) {
+                       error = "curve_drag: the curve of " + w[1] + " is not shown (curve KEY on)";
+                       return false;
+                   }
+                   if (!(edit_.curves.drawnX1 > edit_.curves.drawnX0) ||
+                       !(edit_.curves.drawnBottom > edit_.curves.drawnTop)) {
+                       error = "curve_drag: the timeline's curve area is not shown";
+                       return false;
+                   }
+                   const Track& track = *findTrack(doc_.preset(), *target);
+                   const int key = keyIndexAt(track, t);
+                   if (key < 0) {
+                       error = "curve_drag: no key of " + w[1] + " at " + w[2];
+                       return false;
+                   }
+                   const ParamDesc& desc = *findParam(target->scope, target->param);
+                   const TrackKey& k = track.keys[std::size_t(key)];
+                   const glm::dvec2 at =
+                       pixelOf(k.timeHours, curveRangeOf(track, desc).normalised(k.value.x));
+                   const bool shift = w.size() == 6 && w[5] == "shift",
+                              ctrl = w.size() == 6 && w[5] == "ctrl";
+                   queueDrag(at, at + glm::dvec2(dx, dy), ctrl, shift, 8);
+                   std::printf("curve_drag: press at %.1f %.1f\n", at.x, at.y);
+                   return true;
+               }});
+    table.add({"curve_drag_box", 4, 5, "curve_drag_box T0 N0 T1 N1 [ctrl]",
+               "a mouse drag on the curve area from time T0, height N0 (0 bottom, 1 top) to T1, N1: on "
+               "empty area it selects the keys in the box (Ctrl adds); where it does not move, a click "
+               "that sets the time",
+               [queueDrag, pixelOf](W w, E error) {
+                   double t0, n0, t1, n1;
+                   if (!toTime(w[1], t0) || !toNumber(w[2], n0) || !toTime(w[3], t1) || !toNumber(w[4], n1) ||
+                       (w.size() == 6 && w[5] != "ctrl")) {
+                       error = "curve_drag_box: curve_drag_box T0 N0 T1 N1 [ctrl]";
+                       return false;
+                   }
+                   queueDrag(pixelOf(t0, n0), pixelOf(t1, n1), w.size() == 6, false, 6);
+                   return true;
+               }});
+    table.add({"curve_wheel", 2, 2, "curve_wheel T STEPS",
+               "turn the mouse wheel STEPS steps (up: zoom in) over the curve area at time T",
+               [this, pixelOf](W w, E error) {
+                   double t, steps;
+                   if (!toNumber(w[1], t) || !toNumber(w[2], steps)) {
+                       error = "curve_wheel: curve_wheel T STEPS";
+                       return false;
+                   }
+                   const glm::dvec2 at = pixelOf(t, 0.5);
+                   runner_.guiMouse.push_back({at, false, false, false, false, 0.0f});
+                   runner_.guiMouse.push_back({at, false, false, false, false, float(steps)});
+                   runner_.guiMouse.push_back({at, false, false, false, false, 0.0f});
+                   return true;
+               }});
+    table.add({"curve_pan_drag", 2, 2, "curve_pan_drag T DX",
+               "a middle drag over the curve area from time T by DX pixels: pans the time",
+               [this, pixelOf](W w, E error) {
+                   double t, dx;
+                   if (!toNumber(w[1], t) || !toNumber(w[2], dx)) {
+                       error = "curve_pan_drag: curve_pan_drag T DX";
+                       return false;
+                   }
+                   const glm::dvec2 from = pixelOf(t, 0.5);
+                   runner_.guiMouse.push_back({from, false, false, false, false, 0.0f});
+                   for (int k = 0; k <= 6; ++k)
+                       runner_.guiMouse.push_back(
+                           {from + glm::dvec2(dx * k / 6.0, 0.0), false, false, false, true, 0.0f});
+                   runner_.guiMouse.push_back({from + glm::dvec2(dx, 0.0), false, false, false, false, 0.0f});
+                   return true;
+               }});
+    table.add({"curve_flat", 1, 1, "curve_flat on|off",
+               "flat (on) or automatic (off) tangents at the selected keys, as the key menu does",
+               [this](W w, E error) {
+                   if (w[1] != "on" && w[1] != "off") {
+                       error = "curve_flat: curve_flat on|off";
+                       return false;
+                   }
+                   const bool flat = w[1] == "on";
+                   const std::vector<CurvePoint> picked = edit_.curves.selected;
+                   const bool one = keyCountOf(picked) == 1;
+                   doc_.apply(flat ? (one ? "Flat tangent" : "Flat tangents")
+                                   : (one ? "Automatic tangent" : "Automatic tangents"),
+                              "", [&](Preset& p) { setFlatTangents(p, picked, flat); });
+                   return true;
+               }});
+    table.add({"curve_zoom", 2, 2, "curve_zoom FACTOR T",
+               "zoom the timeline by FACTOR (> 1 in) around time T [h], as the wheel does",
+               [this](W w, E error) {
+                   double factor, t;
+                   if (!toNumber(w[1], factor) || !(factor > 0.0) || !toNumber(w[2], t)) {
+                       error = "curve_zoom: curve_zoom FACTOR T";
+                       return false;
+                   }
+                   edit_.curves.time = zoomView(edit_.curves.time, t, factor);
+                   return true;
+               }});
+    table.add({"curve_pan", 1, 1, "curve_pan HOURS", "pan the timeline by HOURS (a middle drag)",
+               [this](W w, E error) {
+                   double hours;
+                   if (!toNumber(w[1], hours)) {
+                       error = "curve_pan: curve_pan HOURS";
+                       return false;
+                   }
+                   edit_.curves.time = panView(edit_.curves.time, hours);
+                   return true;
+               }});
+    table.add({"print_curves", 0, 0, "print_curves",
+               "prints \"curves view START END shown N selected M time T\"", [this](W, E) {
+                   std::printf("curves view %.6g %.6g shown %zu selected %zu time %.6g\n",
+                               edit_.curves.time.startHours, edit_.curves.time.endHours,
+                               edit_.curves.shown.size(), edit_.curves.selected.size(), playback_.timeHours);
+                   return true;
+               }});
+}
+
+}  // namespace aerial::editor
