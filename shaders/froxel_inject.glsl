@@ -22,6 +22,11 @@
 // grid: its clip transform, eye and forward axis), V = mix(V_prev, V,
 // historyWeight); the renderer sets the weight to 1 (no history) when the
 // time, the camera or the grid jumps (froxel_pass.cpp), so nothing ghosts.
+// Subtract volumes (box and ellipsoid; blend 1 in the volume array): a
+// froxel whose sample point p lies inside one holds neither the global fog
+// nor any added volume (the whole slice segment, a froxel's resolution of
+// the cut). Mesh volumes are not in the volumetric fog (the renderer does
+// not pass them).
 // Output: image 0 = (W_sky, tau), image 1 = (W_own, V), RGBA32F, one texel
 // per froxel (x, y, slice); image 2 = V (R32F), the next frame's history.
 #include "common/frame.glsl"
@@ -53,7 +58,7 @@ struct FroxelVolume {
     vec3 gradientDirection;
     float colourMode;
     vec3 colour;
-    float padColour;
+    float blend;                // 0 add, 1 subtract
 };
 layout(std430, binding = 3) readonly buffer Volumes { FroxelVolume volumes[]; };
 
@@ -120,7 +125,16 @@ void main() {
 
     vec3 p = o + froxel.jitter * d;  // where this slice's light (and noise) is sampled
     vec3 wSky = vec3(0.0), wOwn = vec3(0.0);
-    float tau = exponentialOpticalDepth(froxel.globalFog * frame.fogDensity, frame.fogFalloff,
+    bool cut = false;  // p inside a subtract volume
+    for (int v = 0; v < froxel.volumeCount && !cut; ++v) {
+        FroxelVolume fv = volumes[v];
+        if (fv.blend < 0.5) continue;
+        vec3 rel = p - fv.position;
+        vec3 q = vec3(dot(fv.objectFromWorldRow0, rel), dot(fv.objectFromWorldRow1, rel),
+                      dot(fv.objectFromWorldRow2, rel));
+        cut = fv.shape < 0.5 ? all(lessThanEqual(abs(q), vec3(1.0))) : dot(q, q) <= 1.0;
+    }
+    float tau = cut ? 0.0 : exponentialOpticalDepth(froxel.globalFog * frame.fogDensity, frame.fogFalloff,
                                         o.y - frame.fogBaseHeight, d.y, len);
     if (froxel.noiseAmount > 0.0) {  // the detail noise: the slice's density scaled at its sample point
         float n = detailNoise((p - froxel.noiseOffset) / froxel.noiseScaleM);
@@ -128,8 +142,9 @@ void main() {
     }
     addMedium(tau, frame.fogColourMode, frame.fogColour, wSky, wOwn);
 
-    for (int v = 0; v < froxel.volumeCount; ++v) {
+    for (int v = 0; v < froxel.volumeCount && !cut; ++v) {
         FroxelVolume fv = volumes[v];
+        if (fv.blend > 0.5) continue;  // subtract volumes add nothing
         vec3 rel = o - fv.position;
         vec3 oo = vec3(dot(fv.objectFromWorldRow0, rel), dot(fv.objectFromWorldRow1, rel),
                        dot(fv.objectFromWorldRow2, rel));

@@ -2,7 +2,8 @@
 // over a grid fitted to the view (common/froxel.glsl; Wronski 2014,
 // Hillaire 2015):
 //  inject    (froxel_inject.glsl, compute) density of the global height fog,
-//            every box/ellipsoid volume and the emitters' in-scatter per
+//            every box/ellipsoid volume (subtract ones cutting the froxels
+//            whose sample lies inside; mesh volumes left out) and the emitters' in-scatter per
 //            froxel in closed form over its slice, and the casting light's
 //            visibility (shadow maps x cloud shadows) at its sample point;
 //  integrate (froxel_integrate.glsl, compute) front to back per column,
@@ -95,7 +96,8 @@ void injectDraw(FrameContext& f) {
         blocks.reserve(f.state.volumes.size());
         for (const FogVolume& v : f.state.volumes) {
             VolumeBlock b;
-            if (packVolumeBlock(prepareFogVolume(v), b)) blocks.push_back(b);
+            // Mesh volumes (add or subtract) are not in the volumetric fog.
+            if (v.shape != FogVolumeShape::Mesh && packVolumeBlock(prepareFogVolume(v), b)) blocks.push_back(b);
         }
     }
     FroxelBlock block =

@@ -59,6 +59,10 @@ enum class Pass {
     FroxelInject,     ///< compute
     FroxelIntegrate,  ///< compute
     FroxelApply,
+    SubtractCrossings,
+    SubtractResolve,  ///< compute
+    MeshVolumeAccumulate,
+    MeshVolumeComposite,
     Count
 };
 

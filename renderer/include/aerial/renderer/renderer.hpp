@@ -305,6 +305,7 @@ struct PassTimes {
     double scene = 0.0;
     double sky = 0.0;
     double globalFog = 0.0;
+    double subtract = 0.0;  ///< the subtract volumes' per-pixel intervals
     double volumes = 0.0;
     double emitters = 0.0;
     double transparent = 0.0;
@@ -316,7 +317,7 @@ struct PassTimes {
     double froxelIntegrate = 0.0;  ///< volumetric fog: front-to-back integration
     double froxelApply = 0.0;      ///< volumetric fog: composited over the frame
     double total() const {
-        return scene + sky + globalFog + volumes + emitters + transparent + particles + cloudShadow + clouds +
+        return scene + sky + globalFog + subtract + volumes + emitters + transparent + particles + cloudShadow + clouds +
                shadowMap + froxelInject + froxelIntegrate + froxelApply;
     }
 };
@@ -383,6 +384,17 @@ struct RenderStats {
     ShadowMapStats shadowMap;
     int volumesDrawn = 0;
     int volumesDrawnInside = 0;  ///< hulls drawn as back faces without depth test
+    int meshVolumesDrawn = 0;    ///< mesh add volumes (also counted in volumesDrawn)
+    /// Subtract volumes that cut the fog this frame (analytic fog; the
+    /// volumetric fog's box/ellipsoid ones are in froxels).
+    int subtractVolumes = 0;
+    /// Pixels whose ray met more than kSubtractCrossings (16) faces of mesh
+    /// subtract volumes (the rest are dropped: that pixel's union is wrong).
+    int subtractCrossingOverflowPixels = 0;
+    /// Pixels whose subtract union has more than 4 disjoint stretches (the
+    /// 4th is extended over the rest, removing the fog between them too) or
+    /// more than 48 interval ends.
+    int subtractIntervalOverflowPixels = 0;
     int emitters = 0;
     int glErrors = 0;           ///< GL errors seen (each also logged)
     int transparentDrawn = 0;   ///< alpha-blended meshes drawn
