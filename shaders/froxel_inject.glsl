@@ -22,11 +22,14 @@
 // grid: its clip transform, eye and forward axis), V = mix(V_prev, V,
 // historyWeight); the renderer sets the weight to 1 (no history) when the
 // time, the camera or the grid jumps (froxel_pass.cpp), so nothing ghosts.
-// Subtract volumes (box and ellipsoid; blend 1 in the volume array): a
-// froxel whose sample point p lies inside one holds neither the global fog
-// nor any added volume (the whole slice segment, a froxel's resolution of
-// the cut). Mesh volumes are not in the volumetric fog (the renderer does
-// not pass them).
+// Subtract volumes: a froxel whose sample point p lies inside one holds
+// neither the global fog nor any added volume (the whole slice segment, a
+// froxel's resolution of the cut). Box and ellipsoid ones (blend 1 in the
+// volume array) test p itself; mesh ones (frame.subtractActive) through
+// the subtract union of the pixel at the froxel's centre
+// (common/subtract.glsl, written by subtract_pass.cpp; clipped at that
+// pixel's scene depth). Mesh add volumes are not in the volumetric fog (the
+// renderer does not pass them).
 // Output: image 0 = (W_sky, tau), image 1 = (W_own, V), RGBA32F, one texel
 // per froxel (x, y, slice); image 2 = V (R32F), the next frame's history.
 #include "common/frame.glsl"
@@ -36,6 +39,7 @@
 #include "common/shadows.glsl"
 #include "common/clouds.glsl"
 #include "common/unit_shape.glsl"
+#include "common/subtract.glsl"
 
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
@@ -133,6 +137,14 @@ void main() {
         vec3 q = vec3(dot(fv.objectFromWorldRow0, rel), dot(fv.objectFromWorldRow1, rel),
                       dot(fv.objectFromWorldRow2, rel));
         cut = fv.shape < 0.5 ? all(lessThanEqual(abs(q), vec3(1.0))) : dot(q, q) <= 1.0;
+    }
+    if (frame.subtractActive != 0 && !cut) {  // the mesh subtract volumes, per pixel
+        ivec2 pixel = min(ivec2((vec2(id.xy) + 0.5) * froxel.pixelsPerFroxel), ivec2(frame.viewportSize) - 1);
+        vec4 first, second;
+        pixelSubtractIntervals(pixel, first, second);
+        float t = dot(p - frame.eye, frame.forward) / frame.farDistance;
+        cut = (t >= first.x && t <= first.y) || (t >= first.z && t <= first.w) ||
+              (t >= second.x && t <= second.y) || (t >= second.z && t <= second.w);
     }
     float tau = cut ? 0.0 : exponentialOpticalDepth(froxel.globalFog * frame.fogDensity, frame.fogFalloff,
                                         o.y - frame.fogBaseHeight, d.y, len);

@@ -9,9 +9,9 @@
 //     G += s (s = +1 back face / exit, -1 front face / entry);
 //  2. composite (mesh_volume_composite.glsl), full screen:
 //     tau = R + G integral(0, tRef), L <- L T + C (1 - T).
-// Both are scissored to the volume's screen rectangle (its world bounds'
-// corners projected; the whole frame when a corner is not in front of the
-// eye's plane).
+// Both are scissored to the volume's screen rectangle (the corners of the
+// mesh's object bounds placed in the world, projected; the whole frame when
+// a corner is not in front of the eye's plane).
 //
 // Reads:  the volume's FogMesh, FrameBlock, linear depth (unit 4), the
 //         subtract intervals (storage 4, when active).
@@ -54,14 +54,18 @@ void prepareAccumulation(RendererResources& gpu, int width, int height) {
     gpu.meshAccumulationHeight = height;
 }
 
-/// The pixel rectangle [x0, x1) x [y0, y1) covering the world box seen by
-/// clipFromWorld; the whole frame when a corner is not in front of the eye.
-void screenRectangle(const glm::dmat4& clipFromWorld, const glm::dvec3& lo, const glm::dvec3& hi, int width,
-                     int height, int rect[4]) {
+/// The pixel rectangle [x0, x1) x [y0, y1) covering the mesh's object
+/// bounds placed in the world, seen by clipFromWorld (a pixel of margin);
+/// the whole frame when a corner is not in front of the eye.
+void screenRectangle(const glm::dmat4& clipFromWorld, const PreparedFogVolume& volume, int width, int height,
+                     int rect[4]) {
+    const glm::dvec3 lo = volume.mesh->boundsMin();
+    const glm::dvec3 hi = volume.mesh->boundsMax();
     double minX = 1e30, minY = 1e30, maxX = -1e30, maxY = -1e30;
     for (int i = 0; i < 8; ++i) {
-        const glm::dvec3 c((i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z);
-        const glm::dvec4 clip = clipFromWorld * glm::dvec4(c, 1.0);
+        const glm::dvec3 corner((i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z);
+        const glm::dvec3 world = volume.position + volume.worldFromObject * corner;
+        const glm::dvec4 clip = clipFromWorld * glm::dvec4(world, 1.0);
         if (!(clip.w > 1e-6)) {
             rect[0] = rect[1] = 0;
             rect[2] = width;
@@ -138,7 +142,7 @@ void drawMeshVolume(FrameContext& f, const PreparedFogVolume& volume, const Volu
     const int height = int(f.block.viewportSize[1]);
     prepareAccumulation(gpu, width, height);
     int rect[4];
-    screenRectangle(f.view.clipFromWorld, volume.boundsMin, volume.boundsMax, width, height, rect);
+    screenRectangle(f.view.clipFromWorld, volume, width, height, rect);
     if (rect[2] <= rect[0] || rect[3] <= rect[1]) return;
     glNamedBufferSubData(gpu.volumeBuffer, 0, sizeof block, &block);
     glEnable(GL_SCISSOR_TEST);

@@ -2,9 +2,11 @@
 // pixel's ray (fog_volume.hpp FogVolumeBlend::Subtract; DESIGN.md "Mesh and
 // subtract volumes"), before the fog passes that cut it out of their
 // integrals (global_fog.glsl, fog_volume.glsl, the mesh volumes through
-// common/subtract.glsl). Runs only in analytic fog frames with a valid
-// subtract volume and the volume pass on (frame.subtractActive, set by the
-// renderer before the frame block is uploaded); otherwise costs nothing.
+// common/subtract.glsl; the volumetric fog's injection for mesh subtract
+// volumes). Runs only with the volume pass on and a valid subtract volume
+// (analytic fog) or mesh subtract volume (volumetric fog): frame.subtractActive,
+// set by the renderer before the frame block is uploaded; otherwise it
+// costs nothing.
 //
 //  1. (mesh subtract volumes only) subtract_crossings.glsl rasterises their
 //     triangles, every face of each pixel's ray appended to a per-pixel list
@@ -130,9 +132,13 @@ void draw(FrameContext& f) {
 }  // namespace
 
 bool frameHasSubtractVolumes(const PresetState& state, const FrameDesc& frame) {
-    if (frame.fogMode != FogMode::Analytic || !frame.passes.volumes) return false;
-    return std::any_of(state.volumes.begin(), state.volumes.end(), [](const FogVolume& v) {
-        return v.blend == FogVolumeBlend::Subtract && prepareFogVolume(v).valid;
+    if (!frame.passes.volumes) return false;
+    // The volumetric fog tests box and ellipsoid subtract volumes itself
+    // (froxel_inject.glsl); it reads the union only for mesh ones.
+    const bool analytic = frame.fogMode == FogMode::Analytic;
+    return std::any_of(state.volumes.begin(), state.volumes.end(), [analytic](const FogVolume& v) {
+        return v.blend == FogVolumeBlend::Subtract && (analytic || v.shape == FogVolumeShape::Mesh) &&
+               prepareFogVolume(v).valid;
     });
 }
 
