@@ -27,8 +27,9 @@
 // froxel's resolution of the cut). Box and ellipsoid ones (blend 1 in the
 // volume array) test p itself; mesh ones (frame.subtractActive) through
 // the subtract union of the pixel at the froxel's centre
-// (common/subtract.glsl, written by subtract_pass.cpp; clipped at that
-// pixel's scene depth). Mesh add volumes are not in the volumetric fog (the
+// (common/subtract.glsl, written by subtract_pass.cpp; they end at that
+// pixel's scene depth, and a sample beyond it takes the scene point's
+// answer). Mesh add volumes are not in the volumetric fog (the
 // renderer does not pass them).
 // Output: image 0 = (W_sky, tau), image 1 = (W_own, V), RGBA32F, one texel
 // per froxel (x, y, slice); image 2 = V (R32F), the next frame's history.
@@ -47,6 +48,7 @@ layout(rgba32f, binding = 0) uniform writeonly image3D uMedium;  // (W_sky, tau)
 layout(rgba32f, binding = 1) uniform writeonly image3D uLight;   // (W_own, V)
 layout(r32f, binding = 2) uniform writeonly image3D uHistoryOut;  // V for the next frame
 layout(binding = 15) uniform sampler3D uHistory;                  // the previous frame's V
+layout(binding = 4) uniform sampler2D uLinearDepth;               // normalised linear depth z/far
 
 /// One fog volume as VolumeBlock (common/volume.glsl), packed in an array.
 struct FroxelVolume {
@@ -142,7 +144,11 @@ void main() {
         ivec2 pixel = min(ivec2((vec2(id.xy) + 0.5) * froxel.pixelsPerFroxel), ivec2(frame.viewportSize) - 1);
         vec4 first, second;
         pixelSubtractIntervals(pixel, first, second);
-        float t = dot(p - frame.eye, frame.forward) / frame.farDistance;
+        // Beyond the pixel's scene point (the intervals end there) p counts
+        // as inside when the scene point is: the slice the pixel's depth
+        // falls in is interpolated from both sides of it.
+        float depth01 = texelFetch(uLinearDepth, pixel, 0).r;
+        float t = min(dot(p - frame.eye, frame.forward) / frame.farDistance, depth01);
         cut = (t >= first.x && t <= first.y) || (t >= first.z && t <= first.w) ||
               (t >= second.x && t <= second.y) || (t >= second.z && t <= second.w);
     }
