@@ -3,10 +3,12 @@
 // front of an object are found through a hierarchy and weighted back to
 // front, farthest first).
 //
-// A query: global fog over the whole segment, then every volume the BVH
-// reports and the exact object-space test confirms, sorted back to front,
-// then the emitters. No heap allocation unless a segment crosses more than
-// kInlineHits volumes.
+// A query: the union of the subtract volumes' chords along the segment,
+// then global fog over the rest of the segment, then every add volume the
+// BVH reports and the exact object-space test confirms (its chords outside
+// the union), sorted back to front, then the emitters. No heap allocation
+// unless a segment crosses more than kInlineHits volumes (the chord lists
+// are per-thread buffers that keep their capacity).
 #include "bvh.hpp"
 #include "sanitise.hpp"
 #include "volume_geometry.hpp"
@@ -61,6 +63,16 @@ public:
     Hit* begin() { return size_ <= kInlineHits ? inline_.data() : spill_.data(); }
     Hit* end() { return begin() + size_; }
     std::size_t size() const { return size_; }
+    /// Shrinks to the first `size` hits.
+    void resize(std::size_t size) {
+        size_ = std::min(size, size_);
+        if (size_ > kInlineHits) {
+            spill_.resize(size_);
+        } else if (!spill_.empty()) {
+            std::copy(spill_.begin(), spill_.begin() + std::ptrdiff_t(size_), inline_.begin());
+            spill_.clear();
+        }
+    }
 
 private:
     std::array<Hit, kInlineHits> inline_;
@@ -140,16 +152,95 @@ struct FogScene::Impl {
         return colour;
     }
 
-    /// Collects the crossed volumes of from + t delta, t in [0, 1].
-    void collect(const glm::dvec3& from, const glm::dvec3& delta, HitBuffer& hits) const {
+    /// Collects the crossed volumes of from + t delta, t in [0, 1]: the add
+    /// volumes' hits (their chords outside the subtract union, back to
+    /// front) and the union of the subtract volumes' chords (`removed`,
+    /// sorted, disjoint).
+    void collect(const glm::dvec3& from, const glm::dvec3& delta, HitBuffer& hits,
+                 std::vector<VolumeSegment>& removed) const {
+        // Box and ellipsoid add volumes go straight to `hits`; the chord
+        // buffers are touched only by mesh and subtract volumes, so a scene
+        // without them never allocates.
+        thread_local std::vector<std::uint32_t> meshAdds;
+        meshAdds.clear();
+        removed.clear();
         bvh.traverse(from, delta, 1.0, [&](std::uint32_t index) {
             const PreparedFogVolume& v = volumes[index];
-            const VolumeSegment seg = detail::clippedSegment(v, from, delta, 1.0);
-            if (seg.hit) {
-                hits.push({index, seg.tIn, seg.tOut, detail::segmentOpticalDepth(v, from, delta, seg)});
+            if (v.blend == FogVolumeBlend::Subtract) {
+                detail::clippedChords(v, from, delta, 0.0, 1.0, removed);
+            } else if (v.shape == FogVolumeShape::Mesh) {
+                meshAdds.push_back(index);
+            } else {
+                const VolumeSegment seg = detail::clippedSegment(v, from, delta, 1.0);
+                if (seg.hit) {
+                    hits.push({index, seg.tIn, seg.tOut, detail::segmentOpticalDepth(v, from, delta, seg)});
+                }
             }
         });
+        if (removed.empty() && meshAdds.empty()) {
+            std::sort(hits.begin(), hits.end(), backToFront);
+            return;
+        }
+        // The union of the subtract chords: sorted, overlaps merged once.
+        std::sort(removed.begin(), removed.end(),
+                  [](const VolumeSegment& a, const VolumeSegment& b) { return a.tIn < b.tIn; });
+        std::size_t merged = 0;
+        for (const VolumeSegment& c : removed) {
+            if (merged > 0 && c.tIn <= removed[merged - 1].tOut) {
+                removed[merged - 1].tOut = std::max(removed[merged - 1].tOut, c.tOut);
+            } else {
+                removed[merged++] = c;
+            }
+        }
+        removed.resize(merged);
+        // Every add volume's chords outside the union.
+        thread_local std::vector<VolumeSegment> chords;
+        thread_local std::vector<VolumeSegment> pieces;
+        auto cut = [&](std::uint32_t index, Hit& hit) {
+            const PreparedFogVolume& v = volumes[index];
+            chords.clear();
+            detail::clippedChords(v, from, delta, 0.0, 1.0, chords);
+            pieces.clear();
+            subtractUnion(chords, removed, pieces);
+            if (pieces.empty()) {
+                return false;
+            }
+            double tau = 0.0;
+            for (const VolumeSegment& piece : pieces) {
+                tau += detail::stretchOpticalDepth(v, from, delta, piece);
+            }
+            hit = {index, pieces.front().tIn, pieces.back().tOut, std::min(tau, kMaxOpticalDepth)};
+            return true;
+        };
+        if (!removed.empty()) {
+            Hit* kept = hits.begin();
+            for (Hit* h = hits.begin(); h != hits.end(); ++h) {
+                Hit cutHit;
+                if (cut(h->index, cutHit)) *kept++ = cutHit;
+            }
+            hits.resize(std::size_t(kept - hits.begin()));
+        }
+        for (const std::uint32_t index : meshAdds) {
+            Hit hit;
+            if (cut(index, hit)) hits.push(hit);
+        }
         std::sort(hits.begin(), hits.end(), backToFront);
+    }
+
+    /// The parts of sorted disjoint `chords` outside the sorted disjoint
+    /// `removed`, appended to `out`.
+    static void subtractUnion(const std::vector<VolumeSegment>& chords, const std::vector<VolumeSegment>& removed,
+                              std::vector<VolumeSegment>& out) {
+        std::size_t r = 0;
+        for (const VolumeSegment& c : chords) {
+            double start = c.tIn;
+            while (r < removed.size() && removed[r].tOut <= start) ++r;
+            for (std::size_t k = r; k < removed.size() && removed[k].tIn < c.tOut; ++k) {
+                if (removed[k].tIn > start) out.push_back({true, start, removed[k].tIn});
+                start = std::max(start, removed[k].tOut);
+            }
+            if (start < c.tOut) out.push_back({true, start, c.tOut});
+        }
     }
 
     FogQueryResult run(const glm::dvec3& from, const glm::dvec3& to,
@@ -165,10 +256,26 @@ struct FogScene::Impl {
         const double length = glm::length(delta);
 
         HitBuffer hits;
-        collect(from, delta, hits);
+        thread_local std::vector<VolumeSegment> removed;
+        collect(from, delta, hits, removed);
 
-        // 1. Global fog over the whole segment.
-        const double tauGlobal = heightFogOpticalDepth(desc.heightFog, from, delta);
+        // 1. Global fog over the segment outside the subtract volumes: the
+        //    integral over each remaining piece (no difference of large
+        //    numbers, never negative).
+        double tauGlobal = 0.0;
+        if (removed.empty()) {
+            tauGlobal = heightFogOpticalDepth(desc.heightFog, from, delta);
+        } else {
+            thread_local const std::vector<VolumeSegment> whole{VolumeSegment{true, 0.0, 1.0}};
+            thread_local std::vector<VolumeSegment> open;
+            open.clear();
+            subtractUnion(whole, removed, open);
+            for (const VolumeSegment& piece : open) {
+                tauGlobal += heightFogOpticalDepth(desc.heightFog, from + piece.tIn * delta,
+                                                   (piece.tOut - piece.tIn) * delta);
+            }
+            tauGlobal = std::min(tauGlobal, kMaxOpticalDepth);
+        }
         result.globalOpticalDepth = tauGlobal;
 
         // The sky's fog colour is needed only where some fog uses it.

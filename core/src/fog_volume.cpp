@@ -1,6 +1,7 @@
-// fog_volume.cpp — box and ellipsoid fog volumes (../shared/DESIGN.md, "Fog
-// volumes"; Wenzel 2006, section 6.6: rays traced in object space against
-// the unit cube / unit sphere, results used in world space).
+// fog_volume.cpp — box, ellipsoid and mesh fog volumes (../shared/DESIGN.md,
+// "Fog volumes", "Mesh and subtract volumes"; Wenzel 2006, section 6.6: rays
+// traced in object space against the unit cube / unit sphere / the mesh,
+// results used in world space).
 //
 // The one geometry of a volume: FogScene (fog_query.cpp, through its BVH),
 // the renderer's packing and the editor's picking all call prepareFogVolume
@@ -9,6 +10,7 @@
 #include "volume_geometry.hpp"
 
 #include <aerial/finite.hpp>
+#include <aerial/fog_mesh.hpp>
 #include <aerial/fog_volume.hpp>
 #include <aerial/height_fog.hpp>
 
@@ -29,6 +31,8 @@ PreparedFogVolume prepareFogVolume(const FogVolume& v) {
     p.falloff = detail::sanitiseNonNegative(v.falloff);
     p.gradient = detail::safeDirection(v.gradientDirection);
     p.gradientOffset = detail::sanitiseSigned(v.gradientOffset);
+    p.blend = v.blend == FogVolumeBlend::Subtract ? FogVolumeBlend::Subtract : FogVolumeBlend::Add;
+    if (v.shape == FogVolumeShape::Mesh) p.mesh = v.meshData;
 
     const glm::dvec3 s = v.halfExtents;
     const bool extentsOk = s.x >= kMinHalfExtent && s.y >= kMinHalfExtent && s.z >= kMinHalfExtent &&
@@ -40,7 +44,9 @@ PreparedFogVolume prepareFogVolume(const FogVolume& v) {
     p.position = positionOk ? v.position : glm::dvec3(0.0);
     p.boundsMin = p.position;
     p.boundsMax = p.position;
-    if (!(extentsOk && rotationOk && positionOk)) {
+    const bool shapeOk = v.shape != FogVolumeShape::Mesh || p.mesh != nullptr;
+    if (!(extentsOk && rotationOk && positionOk && shapeOk)) {
+        p.mesh.reset();
         return p;  // degenerate: never hit, density 0 everywhere
     }
     p.valid = true;
@@ -55,6 +61,17 @@ PreparedFogVolume prepareFogVolume(const FogVolume& v) {
         p.worldFromObject[c] = r[c] * s[c];
     }
 
+    if (v.shape == FogVolumeShape::Mesh) {
+        // World AABB of the placed vertices (tight).
+        p.boundsMin = glm::dvec3(std::numeric_limits<double>::infinity());
+        p.boundsMax = -p.boundsMin;
+        for (const glm::dvec3& vertex : p.mesh->positions()) {
+            const glm::dvec3 w = p.position + p.worldFromObject * vertex;
+            p.boundsMin = glm::min(p.boundsMin, w);
+            p.boundsMax = glm::max(p.boundsMax, w);
+        }
+        return p;
+    }
     // World AABB: half width along world axis i of the image of the unit
     // cube is sum_j |R_ij| s_j; of the unit sphere sqrt(sum_j (R_ij s_j)^2).
     glm::dvec3 half;
@@ -94,11 +111,24 @@ double fogVolumeOpticalDepth(const PreparedFogVolume& volume, const glm::dvec3& 
     return detail::segmentOpticalDepth(volume, origin, direction, segment);
 }
 
+std::size_t fogVolumeChords(const PreparedFogVolume& volume, const glm::dvec3& origin,
+                            const glm::dvec3& direction, double tMax, std::vector<VolumeSegment>& chords) {
+    chords.clear();
+    if (!withinCoordinateRange(origin) || !withinCoordinateRange(direction) || !(tMax >= 0.0)) {
+        return 0;
+    }
+    detail::clippedChords(volume, origin, direction, 0.0, tMax, chords);
+    return chords.size();
+}
+
 bool fogVolumeContains(const PreparedFogVolume& p, const glm::dvec3& point) {
     if (!p.valid || !withinCoordinateRange(point)) {
         return false;
     }
     const glm::dvec3 q = p.toObject(point - p.position);
+    if (p.shape == FogVolumeShape::Mesh) {
+        return p.mesh->contains(q);
+    }
     return (p.shape == FogVolumeShape::Box)
                ? std::max({std::fabs(q.x), std::fabs(q.y), std::fabs(q.z)}) <= 1.0
                : glm::dot(q, q) <= 1.0;

@@ -21,6 +21,8 @@ constexpr std::array<sv, 3> kColourModeNames = {"sky", "tinted", "custom"};
 constexpr std::array<sv, 2> kFogRenderModeNames = {"analytic", "volumetric"};
 constexpr std::array<sv, 2> kFogPhaseModeNames = {"sky", "custom"};
 constexpr std::array<sv, 2> kShapeNames = {"box", "ellipsoid"};
+constexpr std::array<sv, 3> kVolumeShapeNames = {"box", "ellipsoid", "mesh"};
+constexpr std::array<sv, 2> kBlendNames = {"add", "subtract"};
 constexpr std::array<sv, 2> kEmitterKindNames = {"point", "lightning"};
 constexpr std::array<sv, 3> kInterpolationNames = {"step", "linear", "smooth"};
 constexpr std::array<sv, 2> kExposureModeNames = {"manual", "automatic"};
@@ -455,11 +457,30 @@ const std::vector<ParamDesc>& volumeTable() {
         t.insert(t.end(),
                  {
                      enumeration(
-                         V, "shape", "Shape", kShapeNames, 0,
+                         V, "shape", "Shape", kVolumeShapeNames, 0,
                          [](const void* o) { return std::int64_t(static_cast<const FogVolume*>(o)->shape); },
                          [](void* o, std::int64_t v) { vol(o).shape = FogVolumeShape(v); },
-                         "box (unit cube [-1,1]^3) or ellipsoid (unit sphere) in object space. "
-                         "Default box."),
+                         "box (unit cube [-1,1]^3), ellipsoid (unit sphere) or mesh (the closed glTF mesh "
+                         "of \"mesh\", in its own coordinates) in object space, scaled by the half "
+                         "extents. Default box."),
+                     [] {
+                         ParamDesc p = text(
+                             V, "mesh", "Mesh", false, [](void* o) { return &vol(o).mesh; },
+                             "Shape mesh: the glTF file (.gltf or .glb) of the closed, outward-facing "
+                             "triangle mesh, relative to the preset's folder. Default none.");
+                         p.omitWhenDefault = true;
+                         return p;
+                     }(),
+                     [] {
+                         ParamDesc p = enumeration(
+                             V, "blend", "Blend", kBlendNames, 0,
+                             [](const void* o) { return std::int64_t(static_cast<const FogVolume*>(o)->blend); },
+                             [](void* o, std::int64_t v) { vol(o).blend = FogVolumeBlend(v); },
+                             "add (fog inside) or subtract (no fog inside: removes the global fog and every "
+                             "add volume there, for fog-free interiors; overlaps count once). Default add.");
+                         p.omitWhenDefault = true;
+                         return p;
+                     }(),
                      triple(
                          V, ParamType::Vec3, "position_m", "Position", "m", {-1e7, 1e7, -1000, 1000},
                          glm::dvec3(0.0), false, true, [](void* o) { return &vol(o).position; },

@@ -13,6 +13,7 @@
 #include <aerial/param_table.hpp>
 
 #include <algorithm>
+#include <filesystem>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -555,7 +556,14 @@ void detail::readPresetTree(sv text, const std::string& file, const std::vector<
     reader.checkDuplicateKeys();
     reader.readPreset(preset);
     const bool versionRefused = !reader.errors.empty() && reader.errors.front().pointer == "/version";
-    if (!versionRefused && nodes[0].kind == JNode::Object) reader.addValidation(validatePreset(preset));
+    if (!versionRefused && nodes[0].kind == JNode::Object) {
+        reader.addValidation(validatePreset(preset));
+        if (reader.errors.empty()) {
+            // Mesh volumes: their files, relative to the preset's folder.
+            const std::filesystem::path folder = std::filesystem::path(file).parent_path();
+            reader.addValidation(resolveFogMeshes(preset, file.empty() || file[0] == '<' ? "" : folder.string()));
+        }
+    }
     reader.finish();
     warnings = std::move(reader.warnings);
     errors = std::move(reader.errors);

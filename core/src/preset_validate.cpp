@@ -213,6 +213,11 @@ void validateInto(const Preset& constPreset, Issues& issues) {
                                                 " must be <= maximum EV100 " +
                                                 formatDouble(exposure.maxEv100));
     checkObjects(preset.volumes, ParamScope::Volume, "volumes", issues);
+    for (std::size_t i = 0; i < preset.volumes.size(); ++i) {
+        if (preset.volumes[i].shape == FogVolumeShape::Mesh && preset.volumes[i].mesh.empty())
+            issues.error(pointerJoin("/volumes", i) + "/mesh",
+                         "a mesh volume needs \"mesh\": the glTF file of its closed mesh");
+    }
     checkObjects(preset.emitters, ParamScope::Emitter, "emitters", issues);
     checkObjects(preset.cloudVolumes, ParamScope::CloudVolume, "cloud_volumes", issues);
 

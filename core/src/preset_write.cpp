@@ -88,6 +88,11 @@ public:
     void objectMembers(ParamScope scope, void* object, int depth) {
         bool first = true;
         for (const ParamDesc& p : paramTable(scope)) {
+            if (p.omitWhenDefault &&
+                ((p.type == ParamType::String && p.string(object)->empty()) ||
+                 (p.type == ParamType::Enum && double(p.getInt(object)) == p.defaultValue[0]))) {
+                continue;
+            }
             if (!first) out += ',';
             first = false;
             newline(depth);

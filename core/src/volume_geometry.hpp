@@ -5,6 +5,7 @@
 // limits::kMaxCoordinate (the public wrappers check).
 #pragma once
 
+#include <aerial/fog_mesh.hpp>
 #include <aerial/fog_volume.hpp>
 #include <aerial/height_fog.hpp>
 
@@ -13,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace aerial::detail {
 
@@ -26,7 +28,16 @@ inline VolumeInterval lineInterval(const PreparedFogVolume& p, const glm::dvec3&
     const glm::dvec3 d = p.toObject(direction);
     double tNear = -std::numeric_limits<double>::infinity();
     double tFar = std::numeric_limits<double>::infinity();
-    if (p.shape == FogVolumeShape::Box) {
+    if (p.shape == FogVolumeShape::Mesh) {
+        // The hull of the chords: first entry to last exit.
+        thread_local std::vector<VolumeSegment> chords;
+        chords.clear();
+        if (p.mesh->lineChords(o, d, chords) == 0) {
+            return line;
+        }
+        tNear = chords.front().tIn;
+        tFar = chords.back().tOut;
+    } else if (p.shape == FogVolumeShape::Box) {
         // Slabs |o_i + t d_i| <= 1. Divisions (not reciprocals) so that a
         // tiny d_i gives +-Inf, never NaN: (+-1 - o_i) is finite and d_i != 0.
         for (int i = 0; i < 3; ++i) {
@@ -82,15 +93,63 @@ inline VolumeSegment clippedSegment(const PreparedFogVolume& p, const glm::dvec3
     return seg;
 }
 
+/// The chords of the line inside the volume clipped to [tMin, tMax],
+/// appended to `out` (sorted, disjoint): one for a box or ellipsoid, any
+/// number for a mesh.
+inline void clippedChords(const PreparedFogVolume& p, const glm::dvec3& origin, const glm::dvec3& direction,
+                          double tMin, double tMax, std::vector<VolumeSegment>& out) {
+    if (!p.valid) {
+        return;
+    }
+    if (p.shape != FogVolumeShape::Mesh) {
+        const VolumeInterval line = lineInterval(p, origin, direction);
+        const double tIn = std::max(line.tNear, tMin);
+        const double tOut = std::min(line.tFar, tMax);
+        if (line.hit && tIn < tOut) {
+            out.push_back({true, tIn, tOut});
+        }
+        return;
+    }
+    const std::size_t first = out.size();
+    p.mesh->lineChords(p.toObject(origin - p.position), p.toObject(direction), out);
+    std::size_t kept = first;
+    for (std::size_t i = first; i < out.size(); ++i) {
+        const double tIn = std::max(out[i].tIn, tMin);
+        const double tOut = std::min(out[i].tOut, tMax);
+        if (tIn < tOut) {
+            out[kept++] = {true, tIn, tOut};
+        }
+    }
+    out.resize(kept);
+}
+
+/// Optical depth of one stretch [seg.tIn, seg.tOut] of the line under the
+/// volume's density law, ignoring its shape (the caller knows the stretch
+/// is inside).
+inline double stretchOpticalDepth(const PreparedFogVolume& p, const glm::dvec3& origin,
+                                  const glm::dvec3& direction, const VolumeSegment& seg) {
+    const double span = seg.tOut - seg.tIn;
+    const double rate = glm::dot(direction, p.gradient);  // height change per unit t
+    const double height = glm::dot(origin - p.position, p.gradient) + seg.tIn * rate - p.gradientOffset;
+    return exponentialOpticalDepth(p.density, p.falloff, height, span * rate, span * glm::length(direction));
+}
+
 inline double segmentOpticalDepth(const PreparedFogVolume& p, const glm::dvec3& origin,
                                   const glm::dvec3& direction, const VolumeSegment& seg) {
     if (!p.valid || !seg.hit) {
         return 0.0;
     }
-    const double span = seg.tOut - seg.tIn;
-    const double rate = glm::dot(direction, p.gradient);  // height change per unit t
-    const double height = glm::dot(origin - p.position, p.gradient) + seg.tIn * rate - p.gradientOffset;
-    return exponentialOpticalDepth(p.density, p.falloff, height, span * rate, span * glm::length(direction));
+    if (p.shape == FogVolumeShape::Mesh) {
+        thread_local std::vector<VolumeSegment> chords;
+        chords.clear();
+        clippedChords(p, origin, direction, seg.tIn, seg.tOut, chords);
+        double tau = 0.0;
+        for (const VolumeSegment& c : chords) {
+            tau += stretchOpticalDepth(p, origin, direction, c);
+        }
+        return std::min(tau, kMaxOpticalDepth);
+    }
+    return stretchOpticalDepth(p, origin, direction, seg);
 }
 
 }  // namespace aerial::detail

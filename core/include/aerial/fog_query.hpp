@@ -10,9 +10,13 @@
 //   // shade the pane: L = L_pane * r.transmittance + r.inScatter
 //
 // Compositing (the contract the renderer follows too):
-//   1. global fog over the whole segment:
+//   0. subtract volumes (FogVolumeBlend::Subtract) remove, along the
+//      segment, the global fog and every add volume inside the union of
+//      their chords (overlaps removed once); they add nothing themselves;
+//   1. global fog over the whole segment (less the subtracted parts):
 //        L <- L T_g + L_fog(v) (1 - T_g)
-//   2. every fog volume the segment crosses, back to front (by the entry
+//   2. every add volume the segment crosses (a concave mesh volume once,
+//      its chords' optical depths summed), back to front (by the entry
 //      distance of its clipped segment, farthest first; equal entries by
 //      ascending index, i.e. the lower index is composited first, behind):
 //        L <- L T_v + C_v(v) (1 - T_v)
@@ -28,9 +32,10 @@
 // fogVolumeOpticalDepth(...) would: a query equals that brute-force loop over
 // all volumes, composited as above.
 //
-// Queries are const and allocation-free (thread-safe on a shared FogScene);
-// only a segment that crosses more than 64 volumes spills its hit list to the
-// heap. Inputs are sanitised as in height_fog.hpp, fog_volume.hpp and
+// Queries are const and thread-safe on a shared FogScene; they allocate only
+// while a thread's chord buffers grow to the most chords a segment has met,
+// or when a segment crosses more than 64 volumes (the hit list spills to the
+// heap). Inputs are sanitised as in height_fog.hpp, fog_volume.hpp and
 // emitter.hpp: a segment with a non-finite end gives T = 1, S = 0, and no
 // query returns NaN or Inf.
 #pragma once

@@ -99,6 +99,11 @@ inline constexpr std::uint64_t kMaxGltfVertices = std::uint64_t(16) << 20;
 inline constexpr std::uint64_t kMaxGltfTriangles = std::uint64_t(16) << 20;
 /// Deepest node hierarchy.
 inline constexpr int kMaxGltfNodeDepth = 256;
+/// Triangles of one fog volume mesh (aerial/fog_mesh.hpp), over all the
+/// file's primitives: a fog hull is a simple shape (a room, a cave, a
+/// valley), and every mesh volume is rasterised twice a frame and kept in
+/// memory as a BVH by every FogScene.
+inline constexpr std::size_t kMaxFogMeshTriangles = 65536;
 /// Largest texture side [pixels] and pixel count, checked from the image
 /// header before decoding.
 inline constexpr int kMaxTextureSide = 16384;

@@ -188,10 +188,23 @@ bool removeObject(Preset& preset, ParamScope scope, const std::string& id);
 /// by noon and a lamp that is lit at night, keyed over the day.
 Preset defaultPreset();
 
+/// Reads the glTF mesh of every mesh fog volume (FogVolume::meshData) from
+/// its "mesh" file, a relative path taken from `baseFolder` (the preset
+/// file's folder; "" for the working directory); other volumes' meshData is
+/// cleared. A file read before and unchanged since is shared, not read
+/// again. Returns one error per volume that has no usable mesh (pointer
+/// /volumes/<i>/mesh, the file and the reason: missing, not glTF, open or
+/// non-manifold edge, flipped triangles, too many triangles); those
+/// volumes are left without a mesh (drawn as nothing). loadPreset and
+/// parsePreset call it; an editor calls it after changing a "mesh" field.
+std::vector<PresetIssue> resolveFogMeshes(Preset& preset, const std::string& baseFolder);
+
 /// Reads a preset file. Never throws.
 PresetLoadResult loadPreset(const std::string& path);
 
-/// Parses preset JSON text; `fileName` only names the source in issues.
+/// Parses preset JSON text; `fileName` names the source in issues and its
+/// folder is where mesh volumes' relative "mesh" paths start (the working
+/// directory for "<memory>").
 /// Never throws.
 PresetLoadResult parsePreset(std::string_view jsonText, std::string_view fileName = "<memory>");
 

@@ -43,6 +43,12 @@ def track(keys, **target):
     return t
 
 
+def mesh_volume(mesh, **changes):
+    v = vol(id="room", shape="mesh", mesh=mesh)
+    v.update(changes)
+    return v
+
+
 PRESETS = {
     "empty.json": b"",
     "whitespace_only.json": b"  \n\t\n",
@@ -71,6 +77,16 @@ PRESETS = {
     "fractional_seed.json": dump(preset(emitters=[dict(EMITTER, seed=1.5)])),
     "deep_nesting.json": b'{"version": 1, "description": ' + b"[" * 100 + b"]" * 100 + b"}\n",
     "negative_density.json": dump(preset(volumes=[vol(density_per_m=-0.5)])),
+    "mesh_missing_file.json": dump(preset(volumes=[mesh_volume("../meshes/no_such_mesh.gltf")])),
+    "mesh_without_file.json": dump(preset(volumes=[mesh_volume("")])),
+    "mesh_open_edge.json": dump(preset(volumes=[mesh_volume("../meshes/open_edge.gltf")])),
+    "mesh_flipped_triangle.json": dump(preset(volumes=[mesh_volume("../meshes/flipped_triangle.gltf")])),
+    "mesh_inside_out.json": dump(preset(volumes=[mesh_volume("../meshes/inside_out.gltf")])),
+    "mesh_non_manifold.json": dump(preset(volumes=[mesh_volume("../meshes/non_manifold.gltf")])),
+    "mesh_degenerate_triangle.json": dump(preset(volumes=[mesh_volume("../meshes/degenerate_triangle.gltf")])),
+    "mesh_lines.json": dump(preset(volumes=[mesh_volume("../meshes/lines.gltf")])),
+    "mesh_not_gltf.json": dump(preset(volumes=[mesh_volume("../meshes/not_gltf.gltf")])),
+    "mesh_unknown_blend.json": dump(preset(volumes=[vol(blend="multiply")])),
     "zero_half_extent.json": dump(preset(volumes=[vol(half_extents_m=[10, 0, 10])])),
     "negative_half_extent.json": dump(preset(volumes=[vol(half_extents_m=[10, 5, -3])])),
     "zero_quaternion.json": dump(preset(volumes=[vol(rotation_xyzw=[0, 0, 0, 0])])),
@@ -111,6 +127,53 @@ def write_glb(doc, length_delta=0, magic=b"glTF", version=2, truncate=None):
     data = doc.finish_glb()
     data = magic + struct.pack("<II", version, len(data) + length_delta) + data[12:]
     return data[:truncate] if truncate is not None else data
+
+
+def mesh_gltf(positions, indices, mode=None):
+    """A .gltf of one triangle mesh (a fog volume mesh), embedded buffer."""
+    d = g.Doc()
+    flat = [c for p in positions for c in p]
+    lo = [min(p[i] for p in positions) for i in range(3)]
+    hi = [max(p[i] for p in positions) for i in range(3)]
+    pos = d.accessor("f", flat, 5126, "VEC3", len(positions), (lo, hi))
+    idx = d.accessor("H", indices, 5123, "SCALAR", len(indices))
+    prim = {"attributes": {"POSITION": pos}, "indices": idx}
+    if mode is not None:
+        prim["mode"] = mode
+    d.json["meshes"] = [{"primitives": [prim]}]
+    d.json["nodes"] = [{"mesh": 0}]
+    d.json["scenes"] = [{"nodes": [0]}]
+    return d.finish_embedded()
+
+
+def cube():
+    """The cube [-1, 1]^3: 8 vertices, 12 outward counter-clockwise triangles."""
+    positions = [[1 if i & 1 else -1, 1 if i & 2 else -1, 1 if i & 4 else -1] for i in range(8)]
+    quads = [[1, 3, 7, 5], [0, 4, 6, 2], [2, 6, 7, 3], [0, 1, 5, 4], [4, 5, 7, 6], [0, 2, 3, 1]]
+    indices = []
+    for q in quads:
+        indices += [q[0], q[1], q[2], q[0], q[2], q[3]]
+    return positions, indices
+
+
+def mesh_variants():
+    """Fog volume meshes (meshes/), each with one defect, and a good cube."""
+    positions, indices = cube()
+    out = {"cube.gltf": mesh_gltf(positions, indices)}
+    out["open_edge.gltf"] = mesh_gltf(positions, indices[:-3])
+    flipped = list(indices)
+    flipped[0], flipped[1] = flipped[1], flipped[0]
+    out["flipped_triangle.gltf"] = mesh_gltf(positions, flipped)
+    inward = [indices[i + k] for i in range(0, len(indices), 3) for k in (0, 2, 1)]
+    out["inside_out.gltf"] = mesh_gltf(positions, inward)
+    # A fin: a third triangle on the cube's edge 1-3 (and its back face).
+    fin_positions = positions + [[2, 0, -1]]
+    out["non_manifold.gltf"] = mesh_gltf(fin_positions, indices + [1, 3, 8, 3, 1, 8])
+    degenerate = indices + [0, 1, 1]
+    out["degenerate_triangle.gltf"] = mesh_gltf(positions, degenerate)
+    out["lines.gltf"] = mesh_gltf(positions, indices, mode=1)
+    out["not_gltf.gltf"] = b"this is not JSON\n"
+    return out
 
 
 def gltf_variants():
@@ -205,7 +268,7 @@ def gltf_variants():
 
 
 def main():
-    for sub, files in (("presets", PRESETS), ("gltf", gltf_variants())):
+    for sub, files in (("presets", PRESETS), ("gltf", gltf_variants()), ("meshes", mesh_variants())):
         folder = os.path.join(HERE, sub)
         os.makedirs(folder, exist_ok=True)
         for name, data in files.items():

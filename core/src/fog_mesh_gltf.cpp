@@ -1,0 +1,282 @@
+// fog_mesh_gltf.cpp — loadFogMesh: the triangles of a glTF file (.gltf or
+// .glb) through Debian's prebuilt tinygltf (TINYGLTF_IMPLEMENTATION is never
+// defined here), checked by FogMesh::build (aerial/fog_mesh.hpp).
+//
+// Reads: the file and its external buffers, each under
+// limits::kMaxGltfFileBytes; images are never decoded (a fog mesh has no
+// material). Every accessor is bounds-checked against its buffer view and
+// buffer before a byte is read. The triangles of every primitive of the
+// default scene's nodes (placed by the node transforms; without scenes,
+// every mesh untransformed) make up the mesh.
+#include <aerial/fog_mesh.hpp>
+#include <aerial/limits.hpp>
+
+#include <tiny_gltf.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/mat4x4.hpp>
+
+#include <cctype>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <system_error>
+
+namespace aerial {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct LoadError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+bool readCapped(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
+    std::error_code ec;
+    const std::uintmax_t size = fs::file_size(path, ec);
+    if (ec) {
+        if (err) *err += "cannot read '" + path + "': " + ec.message() + "\n";
+        return false;
+    }
+    if (size > limits::kMaxGltfFileBytes) {
+        if (err)
+            *err += "'" + path + "' is " + std::to_string(size) + " bytes, over the limit of " +
+                    std::to_string(limits::kMaxGltfFileBytes) + "\n";
+        return false;
+    }
+    std::ifstream in(path, std::ios::binary);
+    out->resize(size);
+    if (size > 0 && !in.read(reinterpret_cast<char*>(out->data()), std::streamsize(size))) {
+        if (err) *err += "cannot read '" + path + "'\n";
+        return false;
+    }
+    return true;
+}
+bool fileExists(const std::string& path, void*) {
+    std::error_code ec;
+    return fs::is_regular_file(path, ec);
+}
+std::string expandNothing(const std::string& path, void*) { return path; }
+bool refuseWrite(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+    if (err) *err += "writing is not supported\n";
+    return false;
+}
+bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int,
+               void*) {
+    return true;  // a fog mesh has no material: images are not decoded
+}
+
+std::string oneLine(std::string s) {
+    while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
+    for (char& c : s) {
+        if (c == '\n') c = ';';
+    }
+    return s;
+}
+
+/// The bytes of element i of an accessor, bounds-checked.
+class AccessorView {
+public:
+    AccessorView(const tinygltf::Model& model, int index, const std::string& what) {
+        if (index < 0 || std::size_t(index) >= model.accessors.size())
+            throw LoadError(what + ": accessor " + std::to_string(index) + " does not exist");
+        const tinygltf::Accessor& a = model.accessors[std::size_t(index)];
+        if (a.sparse.isSparse) throw LoadError(what + ": sparse accessors are not supported");
+        if (a.bufferView < 0 || std::size_t(a.bufferView) >= model.bufferViews.size())
+            throw LoadError(what + ": accessor " + std::to_string(index) + " has no buffer view");
+        const tinygltf::BufferView& view = model.bufferViews[std::size_t(a.bufferView)];
+        if (view.buffer < 0 || std::size_t(view.buffer) >= model.buffers.size())
+            throw LoadError(what + ": buffer view " + std::to_string(a.bufferView) + " has no buffer");
+        const std::vector<unsigned char>& data = model.buffers[std::size_t(view.buffer)].data;
+        componentType_ = a.componentType;
+        const int componentSize = tinygltf::GetComponentSizeInBytes(std::uint32_t(a.componentType));
+        const int components = tinygltf::GetNumComponentsInType(std::uint32_t(a.type));
+        if (componentSize <= 0 || components <= 0)
+            throw LoadError(what + ": accessor " + std::to_string(index) + " has an unknown type");
+        elementSize_ = std::size_t(componentSize) * std::size_t(components);
+        stride_ = view.byteStride != 0 ? view.byteStride : elementSize_;
+        count_ = a.count;
+        components_ = components;
+        const std::size_t start = view.byteOffset + a.byteOffset;
+        const std::size_t need = count_ == 0 ? 0 : stride_ * (count_ - 1) + elementSize_;
+        if (view.byteOffset + view.byteLength > data.size() || a.byteOffset > view.byteLength ||
+            need > view.byteLength - a.byteOffset)
+            throw LoadError(what + ": accessor " + std::to_string(index) + " reaches past its buffer");
+        base_ = data.data() + start;
+    }
+    std::size_t count() const { return count_; }
+    int components() const { return components_; }
+    int componentType() const { return componentType_; }
+
+    glm::dvec3 vec3(std::size_t i) const {
+        float f[3];
+        std::memcpy(f, base_ + i * stride_, sizeof f);
+        return {f[0], f[1], f[2]};
+    }
+    std::uint32_t index(std::size_t i) const {
+        const unsigned char* p = base_ + i * stride_;
+        switch (componentType_) {
+            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+                return *p;
+            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+                std::uint16_t v;
+                std::memcpy(&v, p, 2);
+                return v;
+            }
+            default: {
+                std::uint32_t v;
+                std::memcpy(&v, p, 4);
+                return v;
+            }
+        }
+    }
+
+private:
+    const unsigned char* base_ = nullptr;
+    std::size_t stride_ = 0, elementSize_ = 0, count_ = 0;
+    int components_ = 0, componentType_ = 0;
+};
+
+glm::dmat4 nodeMatrix(const tinygltf::Node& node) {
+    if (node.matrix.size() == 16) {
+        glm::dmat4 m(1.0);
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r) m[c][r] = node.matrix[std::size_t(c * 4 + r)];
+        return m;
+    }
+    glm::dmat4 m(1.0);
+    if (node.translation.size() == 3)
+        m[3] = glm::dvec4(node.translation[0], node.translation[1], node.translation[2], 1.0);
+    if (node.rotation.size() == 4) {
+        const glm::dquat q(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);
+        m = m * glm::dmat4(glm::mat3_cast(glm::normalize(q)));
+    }
+    if (node.scale.size() == 3) m = glm::scale(m, glm::dvec3(node.scale[0], node.scale[1], node.scale[2]));
+    return m;
+}
+
+struct Collector {
+    const tinygltf::Model& model;
+    std::vector<glm::dvec3> positions;
+    std::vector<std::uint32_t> indices;
+
+    void addMesh(int meshIndex, const glm::dmat4& transform) {
+        if (meshIndex < 0 || std::size_t(meshIndex) >= model.meshes.size())
+            throw LoadError("mesh " + std::to_string(meshIndex) + " does not exist");
+        const tinygltf::Mesh& mesh = model.meshes[std::size_t(meshIndex)];
+        // A mirroring transform turns the triangles inside out: swap the winding back.
+        const bool mirrored = glm::determinant(glm::dmat3(transform)) < 0.0;
+        for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
+            const tinygltf::Primitive& prim = mesh.primitives[p];
+            const std::string what = "meshes[" + std::to_string(meshIndex) + "].primitives[" + std::to_string(p) + "]";
+            if (prim.mode != -1 && prim.mode != TINYGLTF_MODE_TRIANGLES)
+                throw LoadError(what + ": mode " + std::to_string(prim.mode) + "; a fog mesh is made of triangles (mode 4)");
+            const auto position = prim.attributes.find("POSITION");
+            if (position == prim.attributes.end()) throw LoadError(what + ": no POSITION attribute");
+            const AccessorView pos(model, position->second, what + " POSITION");
+            if (pos.components() != 3 || pos.componentType() != TINYGLTF_COMPONENT_TYPE_FLOAT)
+                throw LoadError(what + ": POSITION is not float VEC3");
+            if (positions.size() + pos.count() > limits::kMaxGltfVertices)
+                throw LoadError("too many vertices (over " + std::to_string(limits::kMaxGltfVertices) + ")");
+            const std::uint32_t base = std::uint32_t(positions.size());
+            for (std::size_t i = 0; i < pos.count(); ++i)
+                positions.push_back(glm::dvec3(transform * glm::dvec4(pos.vec3(i), 1.0)));
+            std::vector<std::uint32_t> local;
+            if (prim.indices >= 0) {
+                const AccessorView idx(model, prim.indices, what + " indices");
+                if (idx.components() != 1 || (idx.componentType() != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+                                              idx.componentType() != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+                                              idx.componentType() != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
+                    throw LoadError(what + ": indices are not unsigned integer scalars");
+                for (std::size_t i = 0; i < idx.count(); ++i) {
+                    const std::uint32_t v = idx.index(i);
+                    if (v >= pos.count())
+                        throw LoadError(what + ": index " + std::to_string(v) + " past the " +
+                                        std::to_string(pos.count()) + " vertices");
+                    local.push_back(v);
+                }
+            } else {
+                for (std::size_t i = 0; i < pos.count(); ++i) local.push_back(std::uint32_t(i));
+            }
+            if (local.size() % 3 != 0)
+                throw LoadError(what + ": " + std::to_string(local.size()) + " indices, not a multiple of 3");
+            if ((indices.size() + local.size()) / 3 > limits::kMaxFogMeshTriangles)
+                throw LoadError("more than " + std::to_string(limits::kMaxFogMeshTriangles) +
+                                " triangles, the limit for a fog volume mesh");
+            for (std::size_t i = 0; i < local.size(); i += 3) {
+                indices.push_back(base + local[i]);
+                indices.push_back(base + local[i + (mirrored ? 2 : 1)]);
+                indices.push_back(base + local[i + (mirrored ? 1 : 2)]);
+            }
+        }
+    }
+
+    void addNode(int nodeIndex, const glm::dmat4& parent, int depth) {
+        if (nodeIndex < 0 || std::size_t(nodeIndex) >= model.nodes.size())
+            throw LoadError("node " + std::to_string(nodeIndex) + " does not exist");
+        if (depth > limits::kMaxGltfNodeDepth)
+            throw LoadError("the node hierarchy is deeper than " + std::to_string(limits::kMaxGltfNodeDepth) +
+                            " (a cycle?)");
+        const tinygltf::Node& node = model.nodes[std::size_t(nodeIndex)];
+        const glm::dmat4 transform = parent * nodeMatrix(node);
+        if (node.mesh >= 0) addMesh(node.mesh, transform);
+        for (int child : node.children) addNode(child, transform, depth + 1);
+    }
+};
+
+}  // namespace
+
+FogMeshLoadResult loadFogMesh(const std::string& path) {
+    FogMeshLoadResult result;
+    try {
+        std::error_code ec;
+        if (!fs::is_regular_file(path, ec)) throw LoadError("no such file");
+        const std::uintmax_t size = fs::file_size(path, ec);
+        if (ec) throw LoadError("cannot read the file size: " + ec.message());
+        if (size > limits::kMaxGltfFileBytes)
+            throw LoadError("the file is " + std::to_string(size) + " bytes, over the limit of " +
+                            std::to_string(limits::kMaxGltfFileBytes) + " bytes");
+        std::string extension = fs::path(path).extension().string();
+        for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+        const bool binary = extension == ".glb";
+        if (!binary && extension != ".gltf")
+            throw LoadError("unsupported extension \"" + extension + "\" (a fog mesh is .gltf or .glb)");
+
+        tinygltf::TinyGLTF gltf;
+        gltf.SetImageLoader(&skipImage, nullptr);
+        gltf.SetFsCallbacks({&fileExists, &expandNothing, &readCapped, &refuseWrite, nullptr});
+        tinygltf::Model model;
+        std::string err, warn;
+        const bool ok = binary ? gltf.LoadBinaryFromFile(&model, &err, &warn, path)
+                               : gltf.LoadASCIIFromFile(&model, &err, &warn, path);
+        if (!ok) throw LoadError("not a valid glTF 2.0 file: " + oneLine(err.empty() ? warn : err));
+
+        Collector collect{model, {}, {}};
+        if (!model.scenes.empty()) {
+            const std::size_t scene = model.defaultScene >= 0 && std::size_t(model.defaultScene) < model.scenes.size()
+                                          ? std::size_t(model.defaultScene)
+                                          : 0;
+            for (int node : model.scenes[scene].nodes) collect.addNode(node, glm::dmat4(1.0), 0);
+        } else {
+            for (std::size_t m = 0; m < model.meshes.size(); ++m) collect.addMesh(int(m), glm::dmat4(1.0));
+        }
+        if (collect.indices.empty()) throw LoadError("no triangles (no mesh in the scene)");
+        std::string why;
+        result.mesh = FogMesh::build(collect.positions, collect.indices, why);
+        if (!result.mesh) throw LoadError(why);
+    } catch (const LoadError& e) {
+        result.mesh.reset();
+        result.error = path + ": " + e.what();
+    } catch (const std::bad_alloc&) {
+        result.mesh.reset();
+        result.error = path + ": out of memory";
+    } catch (const std::exception& e) {  // nlohmann::json inside tinygltf
+        result.mesh.reset();
+        result.error = path + ": " + e.what();
+    }
+    return result;
+}
+
+}  // namespace aerial
