@@ -60,4 +60,17 @@ float maskedExponentialDepth(ivec2 pixel, float b, float c, float heightAt0, flo
     return min(tau, kMaxOpticalDepth);
 }
 
+/// The global height fog's optical depth from the eye to the world point
+/// p seen through this pixel, the subtract union cut out (p's parameter
+/// t = z/far; the union is known up to the opaque scene's depth, which a
+/// depth-tested transparent fragment does not pass). For the transparent
+/// meshes and the particles, whose per-vertex global fog does not see the
+/// subtract volumes.
+float maskedGlobalFogDepthTo(ivec2 pixel, vec3 p) {
+    vec3 farRay = farRayAtFragment(vec2(pixel) + 0.5);
+    float t = max(dot(p - frame.eye, frame.forward) / frame.farDistance, 0.0);
+    return maskedExponentialDepth(pixel, frame.fogDensity, frame.fogFalloff, frame.eye.y - frame.fogBaseHeight,
+                                  farRay.y, length(farRay), 0.0, t);
+}
+
 #endif

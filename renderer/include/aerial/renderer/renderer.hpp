@@ -38,8 +38,9 @@
 //      same integral as pass 3 for the optical depth, its colour per pixel
 //      with the phase functions), fog volumes and emitters per object from the
 //      CPU fog query (FogScene) at the 8 corners of the mesh's world bounds,
-//      interpolated trilinearly per fragment (Wenzel 2006); the per-vertex
-//      global fog does not see subtract volumes (their volumes' fog does);
+//      interpolated trilinearly per fragment (Wenzel 2006); with subtract
+//      volumes the global fog per fragment instead, along the pixel's ray
+//      without their union (the soft particles too);
 //   0. (clouds only) the cloud shadow map: optical depth from the ground
 //      towards the sun through the cloud layer (cloud_shadow.glsl); the
 //      scene, transparent and particle lighting multiply the sun and moon by
