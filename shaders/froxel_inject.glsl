@@ -4,9 +4,10 @@
 // Per froxel, along the ray through its centre over its slice's segment
 // o -> o + d (view depth z(k/N) .. z((k+1)/N)), everything in closed form so
 // that the slice count only decides where the light is sampled:
-//   tau          optical depth of the global height fog and every box or
-//                ellipsoid volume over the segment (the analytic integrals
-//                of DESIGN.md "Global height fog" / "Fog volumes")
+//   tau          optical depth of the global height fog and every add
+//                volume over the segment (the analytic integrals of
+//                DESIGN.md "Global height fog" / "Fog volumes"; a mesh one
+//                over the segment's parts of its chords)
 //   W_sky (rgb)  sum of tau_i x tint_i over the media coloured by the sky
 //                (colour mode sky: tint 1; tinted: the tint)
 //   W_own (rgb)  sum of tau_i x colour_i over the media of a custom colour,
@@ -41,6 +42,9 @@
 #include "common/clouds.glsl"
 #include "common/unit_shape.glsl"
 #include "common/subtract.glsl"
+#include "common/froxel_volumes.glsl"
+
+layout(std430, binding = 1) readonly buffer MeshChords { vec2 meshChords[]; };
 
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
@@ -50,23 +54,7 @@ layout(r32f, binding = 2) uniform writeonly image3D uHistoryOut;  // V for the n
 layout(binding = 15) uniform sampler3D uHistory;                  // the previous frame's V
 layout(binding = 4) uniform sampler2D uLinearDepth;               // normalised linear depth z/far
 
-/// One fog volume as VolumeBlock (common/volume.glsl), packed in an array.
-struct FroxelVolume {
-    mat4 worldFromObject;
-    vec3 objectFromWorldRow0;
-    float shape;
-    vec3 objectFromWorldRow1;
-    float density;
-    vec3 objectFromWorldRow2;
-    float falloff;
-    vec3 position;
-    float gradientOffset;
-    vec3 gradientDirection;
-    float colourMode;
-    vec3 colour;
-    float blend;                // 0 add, 1 subtract
-};
-layout(std430, binding = 3) readonly buffer Volumes { FroxelVolume volumes[]; };
+
 
 /// Adds a medium of optical depth tau and colour mode/colour to the sums.
 void addMedium(float tau, float mode, vec3 colour, inout vec3 wSky, inout vec3 wOwn) {
@@ -160,9 +148,29 @@ void main() {
     }
     addMedium(tau, frame.fogColourMode, frame.fogColour, wSky, wOwn);
 
+    int mesh = 0;  // mesh volumes met so far (their chords' order)
     for (int v = 0; v < froxel.volumeCount && !cut; ++v) {
         FroxelVolume fv = volumes[v];
         if (fv.blend > 0.5) continue;  // subtract volumes add nothing
+        if (fv.shape > 1.5) {  // a mesh: the slice's parts of its chords (mesh_volume_chords.glsl)
+            float ta = za / frame.farDistance;
+            float tb = zb / frame.farDistance;
+            float rate = dot(farRay, fv.gradientDirection);
+            float tv = 0.0;
+            int base = meshChordBase(mesh++, id.xy);
+            for (int k = 0; k < kMeshChords; ++k) {
+                vec2 chord = meshChords[base + k];
+                float a = max(chord.x, ta);
+                float b = min(chord.y, tb);
+                if (!(b > a)) continue;
+                float height = dot(frame.eye + a * farRay - fv.position, fv.gradientDirection) - fv.gradientOffset;
+                tv += exponentialOpticalDepth(fv.density, fv.falloff, height, (b - a) * rate,
+                                              (b - a) * length(farRay));
+            }
+            addMedium(tv, fv.colourMode, fv.colour, wSky, wOwn);
+            tau += tv;
+            continue;
+        }
         vec3 rel = o - fv.position;
         vec3 oo = vec3(dot(fv.objectFromWorldRow0, rel), dot(fv.objectFromWorldRow1, rel),
                        dot(fv.objectFromWorldRow2, rel));

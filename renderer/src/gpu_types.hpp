@@ -444,6 +444,14 @@ constexpr unsigned kSubtractCrossingStorageBinding = 7;
 constexpr int kSubtractIntervals = 4;
 /// Mesh subtract crossings kept per pixel (subtract_crossings.glsl).
 constexpr int kSubtractCrossings = 16;
+/// The volumetric fog's mesh add volumes (mesh_volume_chords.glsl): the
+/// chords of each froxel column's ray (kFroxelMeshChords vec2 per mesh
+/// volume and column), and the mesh's positions and indices bound as
+/// storage while its chords are found.
+constexpr unsigned kFroxelMeshChordStorageBinding = 1;
+constexpr unsigned kMeshPositionStorageBinding = 6;
+constexpr unsigned kMeshIndexStorageBinding = 7;
+constexpr int kFroxelMeshChords = 8;
 /// A mesh add volume's accumulation target (R: sum of +-F, G: sum of the
 /// signs; mesh_volume_accumulate.glsl), read by its composite on the
 /// base-colour unit (free for every pass).

@@ -101,6 +101,9 @@ struct RendererResources {
         GLuint litSky = 0, sky = 0, own = 0;
         GLuint block = 0, volumes = 0;
         GLsizeiptr volumeCapacity = 0;  ///< [bytes]
+        /// The mesh add volumes' chords per froxel column (storage 1).
+        GLuint meshChords = 0;
+        GLsizeiptr meshChordCapacity = 0;  ///< [bytes]
         /// Temporal: the visibility of the last two frames (R32F, ping-pong),
         /// and what the last frame was.
         GLuint history[2] = {};

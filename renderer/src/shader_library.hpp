@@ -63,6 +63,7 @@ enum class Pass {
     SubtractResolve,  ///< compute
     MeshVolumeAccumulate,
     MeshVolumeComposite,
+    MeshVolumeChords,  ///< compute
     Count
 };
 
