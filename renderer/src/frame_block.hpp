@@ -39,7 +39,8 @@ struct FrameBlockInputs {
     int width = 1;         ///< [px], after FrameDesc's defaults and clamps
     int height = 1;        ///< [px]
     int emitterCount = 0;  ///< emitters uploaded this frame (after validation)
-    bool subtractActive = false;  ///< subtract volumes cut the fog this frame (subtract_pass.cpp)
+    /// Subtract volumes cut the fog this frame (subtract_pass.cpp).
+    bool subtractActive = false;
     FrameSkyInput sun;
     FrameSkyInput moon;
 };

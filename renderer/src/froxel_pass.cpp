@@ -128,7 +128,8 @@ bool injectRuns(const FrameContext& f) {
 void injectDraw(FrameContext& f) {
     RendererResources& gpu = f.gpu;
     std::vector<VolumeBlock> blocks;
-    std::vector<std::pair<int, const RendererResources::FogMeshGpu*>> meshes;  // (block, mesh) of mesh add volumes
+    // (index in blocks, uploaded mesh) of the mesh add volumes
+    std::vector<std::pair<int, const RendererResources::FogMeshGpu*>> meshes;
     if (f.desc.passes.volumes) {
         blocks.reserve(f.state.volumes.size());
         for (const FogVolume& v : f.state.volumes) {

@@ -43,7 +43,8 @@ void destroyFogMesh(RendererResources::FogMeshGpu& m) {
 }
 
 void prepareAccumulation(RendererResources& gpu, int width, int height) {
-    if (gpu.meshAccumulation != 0 && gpu.meshAccumulationWidth == width && gpu.meshAccumulationHeight == height)
+    if (gpu.meshAccumulation != 0 && gpu.meshAccumulationWidth == width &&
+        gpu.meshAccumulationHeight == height)
         return;
     glDeleteFramebuffers(1, &gpu.meshAccumulationTarget);
     glDeleteTextures(1, &gpu.meshAccumulation);
@@ -106,10 +107,11 @@ const RendererResources::FogMeshGpu* fogMeshOnGpu(RendererResources& gpu,
         }
         const std::vector<std::uint32_t>& indices = mesh->indices();
         glCreateBuffers(1, &m.vertexBuffer);
-        glNamedBufferStorage(m.vertexBuffer, GLsizeiptr(positions.size() * sizeof(float)), positions.data(), 0);
-        glCreateBuffers(1, &m.indexBuffer);
-        glNamedBufferStorage(m.indexBuffer, GLsizeiptr(indices.size() * sizeof(std::uint32_t)), indices.data(),
+        glNamedBufferStorage(m.vertexBuffer, GLsizeiptr(positions.size() * sizeof(float)), positions.data(),
                              0);
+        glCreateBuffers(1, &m.indexBuffer);
+        glNamedBufferStorage(m.indexBuffer, GLsizeiptr(indices.size() * sizeof(std::uint32_t)),
+                             indices.data(), 0);
         glCreateVertexArrays(1, &m.vertexArray);
         glVertexArrayVertexBuffer(m.vertexArray, 0, m.vertexBuffer, 0, 3 * sizeof(float));
         glVertexArrayElementBuffer(m.vertexArray, m.indexBuffer);

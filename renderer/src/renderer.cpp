@@ -39,10 +39,9 @@ using detail::GpuMesh;
 const detail::RenderPass* const kFramePasses[] = {
     &detail::kCloudShadowPass,  &detail::kShadowMapPass,       &detail::kScenePass,
     &detail::kSkyPass,          &detail::kCloudPass,           &detail::kSubtractPass,
-    &detail::kGlobalFogPass,
-    &detail::kVolumePass,       &detail::kEmitterPass,         &detail::kFroxelInjectPass,
-    &detail::kFroxelIntegratePass, &detail::kFroxelApplyPass,  &detail::kTransparentPass,
-    &detail::kParticlePass,
+    &detail::kGlobalFogPass,    &detail::kVolumePass,          &detail::kEmitterPass,
+    &detail::kFroxelInjectPass, &detail::kFroxelIntegratePass, &detail::kFroxelApplyPass,
+    &detail::kTransparentPass,  &detail::kParticlePass,
 };
 
 }  // namespace
@@ -369,7 +368,8 @@ void Renderer::Impl::render(const Camera& camera, const PresetState& state, cons
     for (const detail::RenderPass* pass : kFramePasses) timer.run(*pass, frame);
     timer.endFrame(stats);
     if (block.subtractActive != 0) detail::readSubtractStats(*this, stats);
-    detail::releaseUnusedFogMeshes(*this);  // meshes no volume of this frame drew
+    // Meshes that no volume of this frame drew are released.
+    detail::releaseUnusedFogMeshes(*this);
     if (!frame.cloudsDrawn()) detail::forgetCloudHistory(*this);  // the next amortised frame starts afresh
     if (!stats.froxels.drawn) froxels.valid = false;              // likewise the volumetric fog's
 }

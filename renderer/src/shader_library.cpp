@@ -267,9 +267,8 @@ bool ShaderLibrary::build(const ShaderReader& reader, std::string& log) {
     bool all = true;
     for (int k = 0; k < static_cast<int>(Pass::Count); ++k) {
         const Pass pass = static_cast<Pass>(k);
-        const bool compute =
-            pass == Pass::FroxelInject || pass == Pass::FroxelIntegrate || pass == Pass::SubtractResolve ||
-            pass == Pass::MeshVolumeChords;
+        const bool compute = pass == Pass::FroxelInject || pass == Pass::FroxelIntegrate ||
+                             pass == Pass::SubtractResolve || pass == Pass::MeshVolumeChords;
         const GLuint program = compute ? buildComputeProgram(fileOf(pass), reader, log)
                                        : buildProgram(fileOf(pass), reader, log);
         if (program == 0) {

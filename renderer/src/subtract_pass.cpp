@@ -91,7 +91,8 @@ void draw(FrameContext& f) {
     const std::uint32_t zero = 0;
     glClearNamedBufferData(s.counts, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSubtractCountStorageBinding, s.counts);
-    if (s.crossings != 0) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSubtractCrossingStorageBinding, s.crossings);
+    if (s.crossings != 0)
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSubtractCrossingStorageBinding, s.crossings);
 
     bool meshCrossings = false;
     if (!meshes.empty()) {
@@ -117,7 +118,8 @@ void draw(FrameContext& f) {
         s.volumeCapacity = bytes;
     }
     if (!analytic.empty()) {
-        glNamedBufferSubData(s.volumes, 0, GLsizeiptr(analytic.size() * sizeof(VolumeBlock)), analytic.data());
+        glNamedBufferSubData(s.volumes, 0, GLsizeiptr(analytic.size() * sizeof(VolumeBlock)),
+                             analytic.data());
     }
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSubtractVolumeStorageBinding, s.volumes);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSubtractIntervalStorageBinding, s.intervals);

@@ -32,7 +32,9 @@ using renderer::FrameDesc;
 
 constexpr double kTolerance = 1e-3;
 
-Camera fogCamera(const glm::dvec3& eye, const glm::dvec3& target) { return makeCamera(eye, target, 1500.0, 1.1); }
+Camera fogCamera(const glm::dvec3& eye, const glm::dvec3& target) {
+    return makeCamera(eye, target, 1500.0, 1.1);
+}
 
 std::shared_ptr<const FogMesh> buildMesh(const TriangleMesh& m) {
     std::string error;
@@ -57,7 +59,8 @@ protected:
 
     /// Renders the fog passes off and on; the fogged frame stays in the
     /// renderer (readColour) for the caller.
-    FogComparison run(const char* name, const Camera& camera, const PresetState& air, double wallDepth = 400.0) {
+    FogComparison run(const char* name, const Camera& camera, const PresetState& air,
+                      double wallDepth = 400.0) {
         renderer_->setScene(emissiveTestScene(camera, wallDepth));
         FrameDesc frame = floatFrame();
         frame.passes.sky = false;
@@ -122,7 +125,8 @@ double relativeDifference(const renderer::Image& a, const renderer::Image& b) {
     double worst = 0.0;
     for (std::size_t i = 0; i < a.pixels.size() && i < b.pixels.size(); ++i) {
         const double x = a.pixels[i], y = b.pixels[i];
-        const double e = std::isfinite(x) ? std::fabs(x - y) / std::max({std::fabs(x), std::fabs(y), 1e-3}) : 1e30;
+        const double e =
+            std::isfinite(x) ? std::fabs(x - y) / std::max({std::fabs(x), std::fabs(y), 1e-3}) : 1e30;
         worst = std::max(worst, e);
     }
     return worst;
@@ -289,7 +293,8 @@ TEST_F(MeshVolumesVsCpu, SubtractVolumeAroundTheViewRemovesAllFogInBothModes) {
             renderer_->render(camera, air, frame);
             const double worst = relativeDifference(renderer_->readColour(), unfogged);
             std::printf("[ measured ] subtract %s around the view, %s fog: max relative change %.3g\n",
-                        mesh ? "cube mesh" : "box", mode == FogMode::Analytic ? "analytic" : "volumetric", worst);
+                        mesh ? "cube mesh" : "box", mode == FogMode::Analytic ? "analytic" : "volumetric",
+                        worst);
             EXPECT_LT(worst, 1e-5);
             EXPECT_EQ(renderer_->stats().glErrors, 0);
         }

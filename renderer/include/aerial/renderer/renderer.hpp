@@ -326,8 +326,8 @@ struct PassTimes {
     double froxelIntegrate = 0.0;  ///< volumetric fog: front-to-back integration
     double froxelApply = 0.0;      ///< volumetric fog: composited over the frame
     double total() const {
-        return scene + sky + globalFog + subtract + volumes + emitters + transparent + particles + cloudShadow + clouds +
-               shadowMap + froxelInject + froxelIntegrate + froxelApply;
+        return scene + sky + globalFog + subtract + volumes + emitters + transparent + particles +
+               cloudShadow + clouds + shadowMap + froxelInject + froxelIntegrate + froxelApply;
     }
 };
 
