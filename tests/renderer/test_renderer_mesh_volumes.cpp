@@ -306,6 +306,38 @@ TEST_F(MeshVolumesVsCpu, SubtractVolumeAroundTheViewRemovesAllFogInBothModes) {
     }
 }
 
+TEST_F(MeshVolumesVsCpu, BeyondTheLimitsCountedAndFinite) {
+    // Six disjoint subtract slabs across the view (more than 4 stretches a
+    // pixel) and nine cube meshes in a row (18 crossings, more than 16):
+    // the renderer counts the pixels beyond its limits and stays finite.
+    PresetState air = baseFrame();
+    air.environment.fog = {0.004, 0.0, 0.0};
+    for (int k = 0; k < 6; ++k)
+        air.volumes.push_back(subtractBox({0.0, 8.0, -30.0 - 20.0 * k}, {200.0, 200.0, 4.0}, 0.0));
+    const Camera camera = fogCamera({0, 8, 10}, {0, 8, -100});
+    renderer_->setScene(emissiveTestScene(camera, 400.0));
+    FrameDesc frame = floatFrame();
+    frame.passes.sky = false;
+    renderer_->render(camera, air, frame);
+    EXPECT_EQ(renderer_->stats().subtractVolumes, 6);
+    EXPECT_GT(renderer_->stats().subtractIntervalOverflowPixels,
+              kWidth * kHeight / 2);  // the ground ends some rays sooner
+    const std::shared_ptr<const FogMesh> cube = buildMesh(cubeMesh());
+    air.volumes.clear();
+    for (int k = 0; k < 9; ++k) {
+        FogVolume v = subtractBox({0.0, 8.0, -30.0 - 12.0 * k}, {100.0, 100.0, 3.0}, 0.0);
+        v.shape = FogVolumeShape::Mesh;
+        v.mesh = "cube.gltf";
+        v.meshData = cube;
+        air.volumes.push_back(v);
+    }
+    renderer_->render(camera, air, frame);
+    EXPECT_GT(renderer_->stats().subtractCrossingOverflowPixels, kWidth * kHeight / 2);
+    EXPECT_EQ(renderer_->stats().glErrors, 0);
+    const renderer::Image image = renderer_->readColour();
+    for (float x : image.pixels) ASSERT_TRUE(std::isfinite(x));
+}
+
 TEST_F(MeshVolumesVsCpu, NothingRunsWithoutThem) {
     PresetState air = baseFrame();
     air.environment.fog = {0.002, 0.02, 0.0};
