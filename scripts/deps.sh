@@ -24,6 +24,12 @@ packages=(
   # fuzzing the loaders: clang with libFuzzer (tests/fuzz)
   clang libclang-rt-14-dev
 )
+# Node.js and npm: the Khronos glTF validator of tests/cli/layout_test.py
+# (the test installs npm gltf-validator into the build folder). Left alone
+# when some node and npm are already there (e.g. from NodeSource).
+if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
+  packages+=(nodejs npm)
+fi
 
 missing=()
 for p in "${packages[@]}"; do

@@ -24,6 +24,14 @@
 //       zenith (--radiance-size, default 256x128): a sky texture any engine
 //       and any RGBA-only EXR reader takes as it is. Header: the mapping in
 //       words, the Mie anisotropy, each light's direction and illuminance.
+//   layout.gltf
+//       the preset's fog volumes, cloud volumes and emitters at the first
+//       step's time as a glTF 2.0 scene (layout_gltf.cpp): one node per
+//       object named by its id, its position, rotation and half extents as
+//       the node's translation, rotation and scale over a unit cube, unit
+//       sphere or the volume's mesh, emitters as KHR_lights_punctual point
+//       lights, every parameter in the node's extras; for Blender, Godot,
+//       Unity or Unreal.
 //   manifest.json
 //       format, preset, steps and table mapping, and for every step: the
 //       time, the full evaluated state (sun, moon, every parameter, volumes,
@@ -31,7 +39,8 @@
 //       light direction and azimuth, row mapping, and horizon averages (the fog colour);
 //       how to expose a frame as the preset says ("exposure"); the clouds'
 //       noise seed and, when the preset has clouds, the FNV-1a fingerprint
-//       of the texels aerial::cloudNoise(seed) gives ("clouds").
+//       of the texels aerial::cloudNoise(seed) gives ("clouds"); the
+//       layout's file name ("layout").
 //
 // Radiance in a world direction v (unit): for each light,
 //   el = asin(max(v.y, 0)), j = (H - 1) v(el)   (v: the row mapping, kRowMapping;
@@ -47,6 +56,7 @@
 // it, fsync'ed and renamed into place, and manifest.json is removed first and
 // written last, so a directory with a manifest always holds a complete bake.
 #include "cli_common.hpp"
+#include "layout_gltf.hpp"
 
 #include <Imath/half.h>
 #include <OpenEXR/ImfChannelList.h>
@@ -316,6 +326,7 @@ int runBake(const BakeOptions& options) {
     Preset preset = loadPresetOrFail(options.preset, "bake");
     const Json presetInfo = {
         {"file", options.preset}, {"name", preset.name}, {"description", preset.description}};
+    const std::string presetName = preset.name;
     const CompiledPreset compiled(std::move(preset));
 
     const fs::path dir(options.out);
@@ -333,11 +344,13 @@ int runBake(const BakeOptions& options) {
     SkyTables tables(desc);
     PresetState state;
     Json steps = Json::array();
+    std::string layout;   // layout.gltf
     bool cloudy = false;  // some step has clouds: the manifest fingerprints their noise
     Progress progress(stepCount, options.quiet);
     for (int k = 0; k < stepCount; ++k) {
         const double t = k * stepHours;
         compiled.evaluate(t, state);
+        if (k == 0) layout = layoutGltf(state, presetName);  // the layout at the first step's time
         tables.solve(state);
         cloudy = cloudy || aerial::prepareClouds(state).active();
         std::string clock = formatTime(t);
@@ -363,6 +376,8 @@ int runBake(const BakeOptions& options) {
         progress.update(k + 1, formatTime(t), sunFile + ", " + moonFile);
     }
     progress.finish();
+    // Before the manifest that vouches for it.
+    writeText(dir / kLayoutName, layout);
 
     const Json manifest = {
         {"format", "aerial-bake"},
@@ -426,14 +441,22 @@ int runBake(const BakeOptions& options) {
            "DESIGN.md) or volumetric (a froxel grid in which the sun's, moon's and clouds' shadows cut light "
            "shafts, converging to the analytic fog without them); aerial::FogScene queries return the "
            "analytic answer in both modes"}}},
+        {"layout",
+         {{"file", kLayoutName},
+          {"time_h", 0.0},
+          {"what",
+           "glTF 2.0 (Y up, metres, as the manifest): one node per fog volume, cloud volume and emitter at "
+           "the first step's time, named by its id; translation = position_m, rotation = rotation_xyzw, "
+           "scale = half_extents_m over a unit cube (box), unit sphere (ellipsoid) or the volume's mesh; "
+           "emitters as KHR_lights_punctual point lights; the parameters in each node's extras"}}},
         {"steps", steps}};
     writeText(dir / kManifestName, jsonText(manifest) + "\n");
     syncPath(dir, true);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf(
-        "baked %d steps (%d EXR tables, %dx%d, and %d radiance EXRs, %dx%d) and %s into %s in %.2f s\n",
+        "baked %d steps (%d EXR tables, %dx%d, and %d radiance EXRs, %dx%d), %s and %s into %s in %.2f s\n",
         stepCount, 2 * stepCount, desc.azimuthCount, desc.elevationCount, stepCount, radianceWidth,
-        radianceHeight, kManifestName, dir.string().c_str(), seconds);
+        radianceHeight, kLayoutName, kManifestName, dir.string().c_str(), seconds);
     return kExitOk;
 }
 
@@ -444,7 +467,8 @@ Command addBakeCommand(CLI::App& parent) {
     CLI::App* app = parent.add_subcommand(
         "bake",
         "Sky tables (EXR, per step and light) and every evaluated parameter (manifest.json) over the day, "
-        "for games that do not link the library");
+        "for games that do not link the library, and the fog volumes, cloud volumes and emitters as a glTF "
+        "scene (layout.gltf) for level editors");
     app->add_option("preset", options->preset, "Preset file (JSON), or `default` for the built-in preset")
         ->required()
         ->type_name("PRESET");

@@ -1,5 +1,6 @@
 // editor/autosave.cpp — see autosave.hpp.
 #include "autosave.hpp"
+#include "preset_edit.hpp"
 #include "user_dirs.hpp"
 
 #include <nlohmann/json.hpp>
@@ -147,7 +148,10 @@ bool Autosave::update(double nowSeconds, bool dirty, std::uint64_t revision, con
     seenRevision_ = revision;
     if (!pending_ || nowSeconds - pendingSince_ < interval_) return false;
     pending_ = false;
-    const SaveResult saved = savePreset(preset, recoveryFile_);
+    // Mesh paths absolute: the recovery file lives elsewhere than the preset.
+    Preset aside = preset;
+    rebaseMeshPaths(aside, documentPath.empty() ? std::string() : fs::path(documentPath).parent_path().string(), "");
+    const SaveResult saved = savePreset(aside, recoveryFile_);
     if (!saved.ok()) {
         lastError_ = saved.errors.empty() ? std::string("cannot write the recovery file")
                                           : saved.errors.front().toString();

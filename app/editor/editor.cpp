@@ -192,6 +192,15 @@ std::optional<int> Editor::initialise() {
     view_.showTimeline = session_.showTimeline;
     view_.maximized = session_.maximized;
     view_.gameView = session_.gameView;
+    view_.outlinerCollapsed = session_.outlinerCollapsed;
+    // The first start (no session yet) opens the getting-started sheet;
+    // scripted runs (tests, automation) never do.
+    if (!session_.helpSeen && options_.script.empty() && options_.benchFrames == 0) {
+        dialogs_.showHelp = true;
+        session_.helpSeen = true;
+    }
+    view_.inspectorCollapsed = session_.inspectorCollapsed;
+    view_.timelineCollapsed = session_.timelineCollapsed;
     view_.outlinerWidth = float(session_.outlinerWidth);
     view_.inspectorWidth = float(session_.inspectorWidth);
     view_.timelineHeight = float(session_.timelineHeight);
@@ -268,6 +277,9 @@ int Editor::run() {
         session_.showTimeline = view_.showTimeline;
         session_.maximized = view_.maximized;
         session_.gameView = view_.gameView;
+        session_.outlinerCollapsed = view_.outlinerCollapsed;
+        session_.inspectorCollapsed = view_.inspectorCollapsed;
+        session_.timelineCollapsed = view_.timelineCollapsed;
         session_.outlinerWidth = view_.outlinerWidth;
         session_.inspectorWidth = view_.inspectorWidth;
         session_.timelineHeight = view_.timelineHeight;
@@ -409,22 +421,44 @@ void Editor::layout() {
     auto size = [](float chosen, float share, float lo, float hi) {
         return std::clamp(chosen > 0.0f ? chosen : share, lo, std::max(lo, hi));
     };
+    // A collapsed panel keeps only its title bar (its arrow, for a side panel).
+    const float titleH = ImGui::GetFrameHeight();
+    const float collapsedW = titleH + 8.0f;
     const float timelineH =
-        timeline ? size(view_.timelineHeight, std::clamp(h * 0.28f, 110.0f, 280.0f), 60.0f, h * 0.6f) : 0.0f;
-    const float leftW =
-        outliner ? size(view_.outlinerWidth, std::clamp(w * 0.17f, 120.0f, 280.0f), 100.0f, w * 0.35f) : 0.0f;
+        !timeline ? 0.0f
+        : view_.timelineCollapsed
+            ? titleH
+            : size(view_.timelineHeight, std::clamp(h * 0.28f, 110.0f, 280.0f), 60.0f, h * 0.6f);
+    const float leftW = !outliner ? 0.0f
+                        : view_.outlinerCollapsed
+                            ? collapsedW
+                            : size(view_.outlinerWidth, std::clamp(w * 0.17f, 120.0f, 280.0f), 100.0f, w * 0.35f);
     const float rightW =
-        inspector ? size(view_.inspectorWidth, std::clamp(w * 0.28f, 180.0f, 440.0f), 160.0f, w * 0.45f)
-                  : 0.0f;
+        !inspector ? 0.0f
+        : view_.inspectorCollapsed
+            ? collapsedW
+            : size(view_.inspectorWidth, std::clamp(w * 0.28f, 180.0f, 440.0f), 160.0f, w * 0.45f);
     const float middleH = std::max(60.0f, h - menuH - statusH - timelineH);
     const ImGuiWindowFlags fixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
                                    ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
                                    ImGuiWindowFlags_NoBringToFrontOnFocus;
+    // The panels may collapse (their title bar's arrow); the state is ours
+    // (remembered in the session), handed to ImGui every frame.
+    const ImGuiWindowFlags panel = fixed & ~ImGuiWindowFlags_NoCollapse;
+    auto beginPanel = [&](const char* title, bool& collapsed) {
+        ImGui::SetNextWindowCollapsed(collapsed, ImGuiCond_Always);
+        const bool open = ImGui::Begin(title, nullptr, panel);
+        collapsed = ImGui::IsWindowCollapsed();
+        if (ImGui::IsItemHovered() || (collapsed && ImGui::IsWindowHovered()))
+            ImGui::SetTooltip(collapsed ? "Expand (click the arrow or double-click the title)"
+                                        : "Collapse in place (click the arrow or double-click the title)");
+        return open && !collapsed;
+    };
 
     if (outliner) {
         ImGui::SetNextWindowPos(ImVec2(0, menuH));
         ImGui::SetNextWindowSize(ImVec2(leftW, middleH));
-        if (ImGui::Begin("Outliner", nullptr, fixed)) {
+        if (beginPanel("Outliner", view_.outlinerCollapsed)) {
             drawOutliner(doc_, edit_, actions_, [this](Selection s) { select(s); });
             drawSkyPreview(skyPreview_, sky_, view_, frames_.frameIndex);
         }
@@ -434,7 +468,7 @@ void Editor::layout() {
     if (inspector) {
         ImGui::SetNextWindowPos(ImVec2(w - rightW, menuH));
         ImGui::SetNextWindowSize(ImVec2(rightW, middleH));
-        if (ImGui::Begin("Inspector", nullptr, fixed))
+        if (beginPanel("Inspector", view_.inspectorCollapsed))
             drawInspector(doc_, edit_, playback_.timeHours, sky_.state, actions_, status_);
         ImGui::End();
     }
@@ -455,7 +489,10 @@ void Editor::layout() {
     if (timeline) {
         ImGui::SetNextWindowPos(ImVec2(0, menuH + middleH));
         ImGui::SetNextWindowSize(ImVec2(w, timelineH));
-        if (ImGui::Begin("Timeline", nullptr, fixed | ImGuiWindowFlags_NoScrollbar))
+        ImGui::SetNextWindowCollapsed(view_.timelineCollapsed, ImGuiCond_Always);
+        const bool timelineOpen = ImGui::Begin("Timeline", nullptr, panel | ImGuiWindowFlags_NoScrollbar);
+        view_.timelineCollapsed = ImGui::IsWindowCollapsed();
+        if (timelineOpen && !view_.timelineCollapsed)
             drawTimeline(doc_, edit_, playback_, actions_, status_);
         ImGui::End();
     }
@@ -480,13 +517,13 @@ void Editor::layout() {
         ImGui::PopStyleVar();
     };
     constexpr float kGrip = 6.0f;
-    if (outliner)
+    if (outliner && !view_.outlinerCollapsed)
         splitter("##split_left", ImVec2(leftW - kGrip * 0.5f, menuH), ImVec2(kGrip, middleH), true,
                  view_.outlinerWidth, leftW, 1.0f);
-    if (inspector)
+    if (inspector && !view_.inspectorCollapsed)
         splitter("##split_right", ImVec2(w - rightW - kGrip * 0.5f, menuH), ImVec2(kGrip, middleH), true,
                  view_.inspectorWidth, rightW, -1.0f);
-    if (timeline)
+    if (timeline && !view_.timelineCollapsed)
         splitter("##split_bottom", ImVec2(0, menuH + middleH - kGrip * 0.5f), ImVec2(w, kGrip), false,
                  view_.timelineHeight, timelineH, -1.0f);
 

@@ -99,6 +99,19 @@ private:
     void deleteSelection();
     void duplicateSelection();
 
+    // --- editor_meshes.cpp ---------------------------------------------------
+    /// Opens the file dialog for a glTF mesh: a new mesh volume
+    /// (volumeIndex -1) or the mesh of volume volumeIndex.
+    void requestMeshFile(int volumeIndex);
+    /// Adds a mesh volume from a glTF file on the surface in front of the
+    /// camera; a bad mesh is said in a modal and changes nothing.
+    bool addMeshVolumeFromFile(const std::string& file);
+    /// Gives volume volumeIndex the mesh of `file` (shape mesh); one undo step.
+    bool setVolumeMesh(int volumeIndex, const std::string& file);
+    /// Before saving to `newPath`: relative mesh paths rewritten (one undo
+    /// step) so that they still name the same files from the new folder.
+    void rebaseMeshesForSave(const std::string& newPath);
+
     // --- editor_actions.cpp --------------------------------------------------
     void declareActions();
     void drawMenuBar();

@@ -133,6 +133,13 @@ void Editor::declareActions() {
         .key(GLFW_KEY_E, S::kShift)
         .oneUndoStep()
         .does([this] { addVolumeInFront(FogVolumeShape::Ellipsoid); });
+    t.add("add_mesh_volume", "Mesh volume (glTF)...", "Create").does([this] { requestMeshFile(-1); });
+    t.add("choose_volume_mesh", "Choose mesh of the volume...", "Edit").does([this] {
+        if (edit_.selection.kind == Selection::Kind::Volume)
+            requestMeshFile(edit_.selection.index);
+        else
+            setStatus("Select a fog volume to give it a mesh");
+    });
     t.add("add_point_emitter", "Emitter", "Create").key(GLFW_KEY_P, S::kShift).oneUndoStep().does([this] {
         addEmitterInFront(EmitterKind::Point);
     });
@@ -202,6 +209,9 @@ void Editor::declareActions() {
     toggle("show_outliner", "Outliner", view_.showOutliner);
     toggle("show_inspector", "Inspector", view_.showInspector);
     toggle("show_timeline", "Timeline", view_.showTimeline);
+    toggle("collapse_outliner", "Collapse outliner", view_.outlinerCollapsed, true);
+    toggle("collapse_inspector", "Collapse inspector", view_.inspectorCollapsed);
+    toggle("collapse_timeline", "Collapse timeline", view_.timelineCollapsed);
     toggle("show_helpers", "Helpers (outlines, icons, gizmo)", view_.showHelpers, true);
     toggle("show_grid", "Ground grid", view_.showGrid);
     toggle("pass_sky", "Sky", view_.passes.sky, true);
@@ -319,7 +329,10 @@ void Editor::drawHelpSheet() {
         "4. Animate: the diamond keys a parameter at this hour. With Auto-key off (the default) a change of "
         "an animated parameter between keys waits, red, until you Key or Revert it.\n"
         "5. Play the day (Space), look at dawn, noon, dusk and night, then Save (Ctrl+S) and File > Export "
-        "for game.");
+        "for game.\n"
+        "Fog of any shape: Create > Mesh volume adds a closed glTF mesh; set a volume's Blend to subtract "
+        "for a fog-free room or tunnel. Room for the picture: drag the panel borders, collapse a panel "
+        "with its title's arrow, F11 maximizes the viewport, G shows the game view. This sheet: F1.");
     ImGui::Separator();
     if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY)) {
         ImGui::TableSetupColumn("Command");

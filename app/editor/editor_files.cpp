@@ -145,6 +145,7 @@ bool Editor::savePresetTo(const std::string& path) {
     if (path != doc_.path()) {
         renamed = nameAfterSaveAs(doc_.preset().name, doc_.path(), path);
         if (!renamed.empty()) doc_.apply("Rename preset", "", [&](Preset& p) { p.name = renamed; });
+        rebaseMeshesForSave(path);
     }
     const SaveResult result = doc_.save(path);
     if (!result.ok()) {
@@ -240,6 +241,12 @@ void Editor::drawFileDialogs() {
             }
             case DialogPurpose::Export:
                 startExport(path);
+                break;
+            case DialogPurpose::Mesh:
+                if (dialogs_.meshVolumeIndex < 0)
+                    addMeshVolumeFromFile(path);
+                else
+                    setVolumeMesh(dialogs_.meshVolumeIndex, path);
                 break;
             case DialogPurpose::None:
                 break;
@@ -351,7 +358,11 @@ void Editor::resolveUnsaved(UnsavedChoice choice) {
 void Editor::recover(bool accept) {
     if (!dialogs_.recovery) return;
     if (accept) {
-        doc_.reset(dialogs_.recovery->preset, dialogs_.recovery->documentPath);
+        // The recovery file holds absolute mesh paths: back to the document's folder.
+        Preset recovered = dialogs_.recovery->preset;
+        const std::string& document = dialogs_.recovery->documentPath;
+        rebaseMeshPaths(recovered, "", document.empty() ? std::string() : fs::path(document).parent_path().string());
+        doc_.reset(recovered, document);
         doc_.markDirty();
         select({Selection::Kind::Fog, -1});
         edit_.selectedParam.reset();
@@ -367,7 +378,11 @@ void Editor::recover(bool accept) {
 
 void Editor::startExport(const std::string& directory) {
     std::string error;
-    if (!export_.start(doc_.preset(), directory, dialogs_.exportOptions, error)) {
+    // preset.json in the export names the same mesh files (relative to it).
+    Preset exported = doc_.preset();
+    rebaseMeshPaths(exported, doc_.path().empty() ? std::string() : fs::path(doc_.path()).parent_path().string(),
+                    directory);
+    if (!export_.start(exported, directory, dialogs_.exportOptions, error)) {
         showError("Cannot export for game:", error);
         return;
     }

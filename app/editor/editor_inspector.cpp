@@ -14,6 +14,7 @@
 #include "viewport/picking.hpp"
 
 #include <aerial/clock.hpp>
+#include <aerial/fog_mesh.hpp>
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -411,6 +412,26 @@ void drawPlacePicker(Document& doc) {
             "clock time mode.");
 }
 
+/// A mesh volume's file: the path the preset stores, what was read from it
+/// and a button to choose another (the file dialog; the mesh is checked
+/// before anything changes).
+void drawMeshRow(const FogVolume& v, const ActionTable& actions) {
+    if (v.shape != FogVolumeShape::Mesh) return;
+    ImGui::Dummy(ImVec2(ImGui::GetFrameHeight() * 0.8f, 1.0f));
+    ImGui::SameLine(0.0f, 4.0f);
+    if (ImGui::Button("Choose mesh...")) actions.run("choose_volume_mesh");
+    ImGui::SameLine();
+    ImGui::TextUnformatted(v.mesh.empty() ? "(no file)" : v.mesh.c_str());
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("The glTF file of the volume's closed mesh, relative to the preset's folder; "
+                          "its position, rotation and half extents (as scale) place it");
+    if (v.meshData)
+        ImGui::TextDisabled("%zu triangles, %.3g m^3 before scaling", v.meshData->triangleCount(),
+                            v.meshData->enclosedVolume());
+    else
+        ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "No mesh: choose a closed glTF mesh (draws nothing)");
+}
+
 }  // namespace
 
 int keyAllChangedAt(Document& doc, double timeHours) {
@@ -564,7 +585,10 @@ void drawInspector(Document& doc, EditState& edit, double timeHours, const Prese
                     "unique, A-Z a-z 0-9 _ - .");
             const bool lightning = emitter && preset.emitters[i].kind == EmitterKind::Lightning;
             for (const ParamDesc& p : paramTable(scope)) {
-                if (p.type == ParamType::String) continue;  // id and name above
+                if (p.type == ParamType::String) {  // id and name above; a mesh volume's file
+                    if (scope == ParamScope::Volume && p.path == "mesh") drawMeshRow(preset.volumes[i], actions);
+                    continue;
+                }
                 if (emitter && !lightning && lightningOnly(p.path)) continue;
                 drawParam(doc, edit, {&p, index}, timeHours, status);
             }

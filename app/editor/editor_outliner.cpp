@@ -85,6 +85,7 @@ void drawOutliner(Document& doc, EditState& edit, const ActionTable& actions,
             if (scope == ParamScope::Volume) {
                 if (ImGui::MenuItem("Add box volume")) actions.run("add_box_volume");
                 if (ImGui::MenuItem("Add ellipsoid volume")) actions.run("add_ellipsoid_volume");
+                if (ImGui::MenuItem("Add mesh volume (glTF)...")) actions.run("add_mesh_volume");
             } else if (scope == ParamScope::Emitter) {
                 if (ImGui::MenuItem("Add emitter")) actions.run("add_point_emitter");
                 if (ImGui::MenuItem("Add lightning")) actions.run("add_lightning");
@@ -173,6 +174,7 @@ void drawOutliner(Document& doc, EditState& edit, const ActionTable& actions,
     };
     if (flowButton("+ Box")) actions.run("add_box_volume");
     if (flowButton("+ Ellipsoid")) actions.run("add_ellipsoid_volume");
+    if (flowButton("+ Mesh")) actions.run("add_mesh_volume");
     if (flowButton("+ Emitter")) actions.run("add_point_emitter");
     ImGui::EndChild();
 }

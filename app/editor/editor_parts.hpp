@@ -150,6 +150,10 @@ struct ViewportState {
     /// window); the splitters between them set the sizes.
     bool showOutliner = true, showInspector = true, showTimeline = true;
     float outlinerWidth = 0.0f, inspectorWidth = 0.0f, timelineHeight = 0.0f;
+    /// Panels collapsed in place (the arrow of their title bar, or a
+    /// double-click on it): a side panel shrinks to its title's arrow, the
+    /// timeline to its title bar, and the viewport takes the room.
+    bool outlinerCollapsed = false, inspectorCollapsed = false, timelineCollapsed = false;
     /// The outlines, icons, gizmo and grid are drawn.
     bool helpersShown() const { return showHelpers && !gameView; }
     /// Size of the viewport's window [px] (print_viewport).
@@ -205,7 +209,7 @@ enum class Pending { None, New, Open, Quit, OpenRecovery };
 /// The unsaved-changes prompt's buttons (and the script's `answer`).
 enum class UnsavedChoice { Save, Discard, Cancel };
 /// What the file dialog's result is for.
-enum class DialogPurpose { None, Open, SaveAs, Scene, Screenshot, Export };
+enum class DialogPurpose { None, Open, SaveAs, Scene, Screenshot, Export, Mesh };
 
 /// Modals, prompts and the file dialog.
 struct Dialogs {
@@ -222,6 +226,7 @@ struct Dialogs {
     bool openRecoveryModal = false;
     FileDialog fileDialog;
     DialogPurpose purpose = DialogPurpose::None;
+    int meshVolumeIndex = -1;  ///< DialogPurpose::Mesh: the volume to give the mesh, -1 a new volume
     std::vector<std::string> drops;  ///< dropped files, handled at the next frame
 
     /// The unsaved-changes prompt is open or about to open.

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 namespace aerial::editor {
 
@@ -76,6 +77,34 @@ void Editor::declareEditScriptCommands() {
                    const FogVolume& v = doc_.preset().volumes.back();
                    std::printf("added volume %zu at %.17g %.17g %.17g\n", doc_.preset().volumes.size() - 1,
                                v.position.x, v.position.y, v.position.z);
+                   return true;
+               }});
+    table.add({"add_mesh_volume", 1, 1, "add_mesh_volume FILE.gltf",
+               "a mesh fog volume from a glTF file, on the surface in front of the camera",
+               [this](W w, E error) {
+                   const std::size_t before = doc_.preset().volumes.size();
+                   if (!addMeshVolumeFromFile(w[1]) || doc_.preset().volumes.size() == before) {
+                       error = "add_mesh_volume: " + dialogs_.errorText;
+                       return false;
+                   }
+                   const FogVolume& v = doc_.preset().volumes.back();
+                   std::printf("added mesh volume %zu \"%s\" at %.17g %.17g %.17g\n", before, v.mesh.c_str(),
+                               v.position.x, v.position.y, v.position.z);
+                   return true;
+               }});
+    table.add({"set_volume_mesh", 2, 2, "set_volume_mesh INDEX FILE.gltf",
+               "give fog volume INDEX the mesh of a glTF file (shape mesh)", [this](W w, E error) {
+                   char* end = nullptr;
+                   const long index = std::strtol(w[1].c_str(), &end, 10);
+                   if (end == w[1].c_str() || *end != '\0' || index < 0 ||
+                       std::size_t(index) >= doc_.preset().volumes.size()) {
+                       error = "set_volume_mesh: no volume " + w[1];
+                       return false;
+                   }
+                   if (!setVolumeMesh(int(index), w[2])) {
+                       error = "set_volume_mesh: " + dialogs_.errorText;
+                       return false;
+                   }
                    return true;
                }});
     table.add({"add_emitter", 1, 1, "add_emitter point|lightning", "an emitter in front of the camera",
@@ -269,6 +298,19 @@ void Editor::declareEditScriptCommands() {
     };
     table.add({"maximize_viewport", 1, 1, "maximize_viewport on|off", "hide the side panels and the timeline",
                onOff("maximize_viewport", &ViewportState::maximized)});
+    table.add({"collapse", 2, 2, "collapse outliner|inspector|timeline on|off",
+               "collapse a panel in place (its title bar stays) or expand it", [this](W w, E error) {
+                   bool* flag = w[1] == "outliner"    ? &view_.outlinerCollapsed
+                                : w[1] == "inspector" ? &view_.inspectorCollapsed
+                                : w[1] == "timeline"  ? &view_.timelineCollapsed
+                                                      : nullptr;
+                   if (!flag || (w[2] != "on" && w[2] != "off")) {
+                       error = "collapse: outliner, inspector or timeline, then on or off";
+                       return false;
+                   }
+                   *flag = w[2] == "on";
+                   return true;
+               }});
     table.add({"game_view", 1, 1, "game_view on|off", "the picture without helpers (G)",
                onOff("game_view", &ViewportState::gameView)});
     table.add({"print_viewport", 0, 0, "print_viewport", "prints \"viewport WxH\" (the viewport's window)",

@@ -1,6 +1,9 @@
 // editor/game_export.cpp — see game_export.hpp.
 #include "game_export.hpp"
 
+#include <aerial/detail/file_system.hpp>
+#include <aerial/fog_mesh.hpp>
+
 #include <fcntl.h>
 #include <signal.h>
 #include <spawn.h>
@@ -64,8 +67,24 @@ bool GameExport::start(const Preset& preset, const std::string& directory, const
         error = "cannot create the directory " + directory;
         return false;
     }
+    // The export travels with its meshes: each mesh volume's mesh written
+    // beside preset.json as meshes/<id>.gltf (self-contained), which the
+    // exported preset names.
+    Preset exported = preset;
+    for (FogVolume& v : exported.volumes) {
+        if (v.shape != FogVolumeShape::Mesh || !v.meshData) continue;
+        fs::create_directories(fs::path(directory) / "meshes", ec);
+        const std::string relative = "meshes/" + v.id + ".gltf";
+        const std::string failure =
+            detail::writeFileAtomically((fs::path(directory) / relative).string(), fogMeshToGltf(*v.meshData, v.id));
+        if (!failure.empty()) {
+            error = "cannot write " + relative + ": " + failure;
+            return false;
+        }
+        v.mesh = relative;
+    }
     const std::string presetFile = (fs::path(directory) / "preset.json").string();
-    const SaveResult saved = savePreset(preset, presetFile);
+    const SaveResult saved = savePreset(exported, presetFile);
     if (!saved.ok()) {
         error = saved.errors.empty() ? "cannot write " + presetFile : saved.errors.front().toString();
         return false;

@@ -2,7 +2,9 @@
 // bake` does (it runs that command, the same code, in a child process),
 // with its progress read back for a progress bar. The preset being edited is
 // first saved into the export directory as preset.json, so the bake holds
-// the preset it came from. No GUI.
+// the preset it came from, with the mesh of every mesh volume written beside
+// it as meshes/<id>.gltf (self-contained), so the export travels whole. No
+// GUI.
 //
 // Usage:
 //   GameExport job;

@@ -387,6 +387,52 @@ int addVolume(Preset& preset, FogVolumeShape shape, const glm::dvec3& position) 
     return int(preset.volumes.size()) - 1;
 }
 
+int addMeshVolume(Preset& preset, const std::string& meshPath, std::shared_ptr<const FogMesh> mesh,
+                  const glm::dvec3& ground, const std::string& label) {
+    FogVolume v;
+    nameNewObject(preset, ParamScope::Volume, "mesh_volume", "Mesh volume", v.id, v.name);
+    if (!label.empty() && v.id == "mesh_volume") v.name = label;  // the file's stem reads better
+    v.shape = FogVolumeShape::Mesh;
+    v.halfExtents = glm::dvec3(1.0);
+    v.position = ground;
+    if (mesh) v.position.y -= mesh->boundsMin().y;  // resting on the surface
+    v.mesh = meshPath;
+    v.meshData = std::move(mesh);
+    preset.volumes.push_back(v);
+    return int(preset.volumes.size()) - 1;
+}
+
+std::string meshPathFor(const std::string& meshFile, const std::string& presetPath) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const fs::path absolute = fs::absolute(meshFile, ec).lexically_normal();
+    if (ec) return meshFile;
+    if (presetPath.empty()) return absolute.generic_string();
+    const fs::path folder = fs::absolute(presetPath, ec).parent_path();
+    const fs::path relative = absolute.lexically_relative(folder);
+    return ec || relative.empty() ? absolute.generic_string() : relative.generic_string();
+}
+
+int rebaseMeshPaths(Preset& preset, const std::string& fromFolder, const std::string& toFolder) {
+    namespace fs = std::filesystem;
+    int changed = 0;
+    std::error_code ec;
+    const fs::path from = fs::absolute(fromFolder.empty() ? fs::path(".") : fs::path(fromFolder), ec);
+    const fs::path to = toFolder.empty() ? fs::path() : fs::absolute(toFolder, ec);
+    for (FogVolume& v : preset.volumes) {
+        if (v.mesh.empty() || (to.empty() && fs::path(v.mesh).is_absolute())) continue;
+        const fs::path absolute =
+            fs::path(v.mesh).is_absolute() ? fs::path(v.mesh).lexically_normal() : (from / v.mesh).lexically_normal();
+        const fs::path relative = to.empty() ? fs::path() : absolute.lexically_relative(to);
+        const std::string rebased = relative.empty() ? absolute.generic_string() : relative.generic_string();
+        if (rebased != v.mesh) {
+            v.mesh = rebased;
+            ++changed;
+        }
+    }
+    return changed;
+}
+
 int addEmitter(Preset& preset, EmitterKind kind, const glm::dvec3& position) {
     Emitter e;
     const bool lightning = kind == EmitterKind::Lightning;

@@ -8,11 +8,13 @@
 #pragma once
 
 #include <aerial/clouds.hpp>
+#include <aerial/fog_mesh.hpp>
 #include <aerial/param_table.hpp>
 #include <aerial/preset.hpp>
 
 #include <glm/vec3.hpp>
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -124,6 +126,21 @@ inline constexpr double kNewEmitterAttenuationPerM2 = 0.05;
 
 /// Adds a volume (shape, centre) with a fresh id and name; returns its index.
 int addVolume(Preset& preset, FogVolumeShape shape, const glm::dvec3& position);
+/// Adds a mesh volume: `meshPath` as the preset stores it (meshPathFor), the
+/// mesh loaded from it, scale 1 (the mesh's own metres), its lowest vertex
+/// resting on `ground`; named after `label` (the file's stem). Returns its
+/// index.
+int addMeshVolume(Preset& preset, const std::string& meshPath, std::shared_ptr<const FogMesh> mesh,
+                  const glm::dvec3& ground, const std::string& label);
+/// What a preset saved at `presetPath` stores for the mesh file `meshFile`:
+/// the path relative to the preset's folder, or the absolute path while the
+/// preset is untitled ("").
+std::string meshPathFor(const std::string& meshFile, const std::string& presetPath);
+/// Rewrites the "mesh" paths of the mesh volumes, relative ones read from
+/// `fromFolder` ("" = the working directory), so that they name the same
+/// files relative to `toFolder`, or as absolute paths when `toFolder` is
+/// "". Returns how many changed.
+int rebaseMeshPaths(Preset& preset, const std::string& fromFolder, const std::string& toFolder);
 /// Adds an emitter (point or lightning) with artist-sane values; returns its index.
 int addEmitter(Preset& preset, EmitterKind kind, const glm::dvec3& position);
 /// Half width [m] (x and z) of a new cloud volume: a cell 6 km across.

@@ -114,6 +114,10 @@ void Session::load(const std::string& file) {
         flag("timeline", showTimeline);
         flag("maximized", maximized);
         flag("game_view", gameView);
+        flag("help_seen", helpSeen);
+        flag("outliner_collapsed", outlinerCollapsed);
+        flag("inspector_collapsed", inspectorCollapsed);
+        flag("timeline_collapsed", timelineCollapsed);
         size("outliner_width", outlinerWidth);
         size("inspector_width", inspectorWidth);
         size("timeline_height", timelineHeight);
@@ -132,6 +136,10 @@ bool Session::save(const std::string& file) const {
                              {"timeline", showTimeline},
                              {"maximized", maximized},
                              {"game_view", gameView},
+                             {"help_seen", helpSeen},
+                             {"outliner_collapsed", outlinerCollapsed},
+                             {"inspector_collapsed", inspectorCollapsed},
+                             {"timeline_collapsed", timelineCollapsed},
                              {"outliner_width", outlinerWidth},
                              {"inspector_width", inspectorWidth},
                              {"timeline_height", timelineHeight}}}};

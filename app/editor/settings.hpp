@@ -44,6 +44,10 @@ struct Session {
     bool showOutliner = true, showInspector = true, showTimeline = true;
     double outlinerWidth = 0.0, inspectorWidth = 0.0, timelineHeight = 0.0;
     bool maximized = false, gameView = false;
+    bool outlinerCollapsed = false, inspectorCollapsed = false, timelineCollapsed = false;
+    /// The getting-started sheet (F1) has been shown once: the first start
+    /// opens it by itself, later ones do not.
+    bool helpSeen = false;
 
     /// Reads `file`; missing or malformed fields keep their values.
     void load(const std::string& file);

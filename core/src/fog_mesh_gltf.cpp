@@ -1,6 +1,7 @@
 // fog_mesh_gltf.cpp — loadFogMesh: the triangles of a glTF file (.gltf or
 // .glb) through Debian's prebuilt tinygltf (TINYGLTF_IMPLEMENTATION is never
-// defined here), checked by FogMesh::build (aerial/fog_mesh.hpp).
+// defined here), checked by FogMesh::build (aerial/fog_mesh.hpp); and
+// fogMeshToGltf, a mesh back as a self-contained .gltf text.
 //
 // Reads: the file and its external buffers, each under
 // limits::kMaxGltfFileBytes; images are never decoded (a fog mesh has no
@@ -13,10 +14,13 @@
 
 #include <tiny_gltf.h>
 
+#include <nlohmann/json.hpp>
+
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/mat4x4.hpp>
 
+#include <algorithm>
 #include <cctype>
 #include <cstring>
 #include <filesystem>
@@ -226,7 +230,60 @@ struct Collector {
     }
 };
 
+std::string base64(const std::vector<unsigned char>& bytes) {
+    static const char* const kAlphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    out.reserve((bytes.size() + 2) / 3 * 4);
+    for (std::size_t i = 0; i < bytes.size(); i += 3) {
+        const std::uint32_t b = std::uint32_t(bytes[i]) << 16 |
+                                (i + 1 < bytes.size() ? std::uint32_t(bytes[i + 1]) << 8 : 0u) |
+                                (i + 2 < bytes.size() ? std::uint32_t(bytes[i + 2]) : 0u);
+        out += kAlphabet[(b >> 18) & 63];
+        out += kAlphabet[(b >> 12) & 63];
+        out += i + 1 < bytes.size() ? kAlphabet[(b >> 6) & 63] : '=';
+        out += i + 2 < bytes.size() ? kAlphabet[b & 63] : '=';
+    }
+    return out;
+}
+
 }  // namespace
+
+std::string fogMeshToGltf(const FogMesh& mesh, const std::string& name) {
+    std::vector<unsigned char> buffer;
+    auto append = [&](const void* data, std::size_t size) {
+        const auto* p = static_cast<const unsigned char*>(data);
+        buffer.insert(buffer.end(), p, p + size);
+    };
+    float lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+    for (std::size_t i = 0; i < mesh.positions().size(); ++i) {
+        const float f[3] = {float(mesh.positions()[i].x), float(mesh.positions()[i].y), float(mesh.positions()[i].z)};
+        for (int c = 0; c < 3; ++c) {
+            lo[c] = i == 0 ? f[c] : std::min(lo[c], f[c]);
+            hi[c] = i == 0 ? f[c] : std::max(hi[c], f[c]);
+        }
+        append(f, sizeof f);
+    }
+    const std::size_t positionBytes = buffer.size();
+    for (const std::uint32_t index : mesh.indices()) append(&index, sizeof index);
+    nlohmann::json doc = {
+        {"asset", {{"version", "2.0"}, {"generator", "Aerial (aerial_core fogMeshToGltf)"}}},
+        {"scene", 0},
+        {"scenes", {{{"nodes", {0}}}}},
+        {"nodes", {{{"name", name}, {"mesh", 0}}}},
+        {"meshes", {{{"name", name}, {"primitives", {{{"attributes", {{"POSITION", 0}}}, {"indices", 1}, {"mode", 4}}}}}}},
+        {"accessors",
+         {{{"bufferView", 0}, {"componentType", 5126}, {"count", mesh.positions().size()}, {"type", "VEC3"},
+           {"min", {lo[0], lo[1], lo[2]}}, {"max", {hi[0], hi[1], hi[2]}}},
+          {{"bufferView", 1}, {"componentType", 5125}, {"count", mesh.indices().size()}, {"type", "SCALAR"}}}},
+        {"bufferViews",
+         {{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", positionBytes}, {"target", 34962}},
+          {{"buffer", 0}, {"byteOffset", positionBytes}, {"byteLength", buffer.size() - positionBytes},
+           {"target", 34963}}}},
+        {"buffers",
+         {{{"byteLength", buffer.size()}, {"uri", "data:application/octet-stream;base64," + base64(buffer)}}}},
+    };
+    return doc.dump(1) + "\n";
+}
 
 FogMeshLoadResult loadFogMesh(const std::string& path) {
     FogMeshLoadResult result;

@@ -27,6 +27,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <random>
 #include <utility>
 #include <vector>
@@ -421,6 +422,25 @@ TEST(FogMesh, RefusesBadMeshesWithTheReason) {
     const auto welded = FogMesh::build(split.positions, split.indices, error);
     ASSERT_TRUE(welded) << error;
     EXPECT_EQ(welded->positions().size(), 8u);
+}
+
+TEST(FogMesh, WrittenAsGltfReadsBackToTheSameTriangles) {
+    const test::TriangleMesh torus = test::torusMesh(6.0, 2.0, 24, 12);
+    const auto mesh = build(torus);
+    ASSERT_TRUE(mesh);
+    const std::filesystem::path file = std::filesystem::temp_directory_path() / "aerial_fog_mesh_roundtrip.gltf";
+    {
+        std::ofstream out(file);
+        out << fogMeshToGltf(*mesh, "torus");
+    }
+    const FogMeshLoadResult back = loadFogMesh(file.string());
+    std::filesystem::remove(file);
+    ASSERT_TRUE(back.mesh) << back.error;
+    ASSERT_EQ(back.mesh->indices(), mesh->indices());
+    ASSERT_EQ(back.mesh->positions().size(), mesh->positions().size());
+    for (std::size_t i = 0; i < mesh->positions().size(); ++i)
+        EXPECT_LT(glm::length(back.mesh->positions()[i] - mesh->positions()[i]), 1e-6);  // float rounding
+    EXPECT_NEAR(back.mesh->enclosedVolume(), mesh->enclosedVolume(), 1e-5 * mesh->enclosedVolume());
 }
 
 TEST(FogMesh, ReadsGltfAndPresetsResolveRelativePaths) {

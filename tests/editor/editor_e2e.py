@@ -720,6 +720,28 @@ quit
     check(layout["maximized"] and layout["game_view"], "the layout was not kept: %s" % layout)
     p = env.run(env.script("layout_back.txt", "wait_frames 2\nprint_viewport\nmaximize_viewport off\ngame_view off\nquit\n"))
     check(re.search(r"^viewport 640x", p.stdout, re.M), "the maximized layout was not restored:\n" + p.stdout)
+    # Panels collapse in place: the viewport takes their room, and the
+    # collapsed layout is kept for the next start.
+    p = env.run(env.script("collapse.txt", """
+wait_frames 2
+print_viewport
+collapse outliner on
+collapse inspector on
+collapse timeline on
+wait_frames 3
+print_viewport
+quit
+"""))
+    sizes = [tuple(map(int, m)) for m in re.findall(r"^viewport (\d+)x(\d+)$", p.stdout, re.M)]
+    check(len(sizes) == 2, "print_viewport printed %s" % sizes)
+    check(560 <= sizes[1][0] < 640 and sizes[1][0] > sizes[0][0] + 100 and sizes[1][1] > sizes[0][1] + 40,
+          "collapsing did not give the viewport the room: %s -> %s" % (sizes[0], sizes[1]))
+    layout = load_json(os.path.join(env.config, "session.json"))["layout"]
+    check(layout["outliner_collapsed"] and layout["inspector_collapsed"] and layout["timeline_collapsed"],
+          "the collapsed layout was not kept: %s" % layout)
+    check(layout["help_seen"] is False, "a scripted run marked the getting-started sheet as seen")
+    p = env.run(env.script("collapse_back.txt", "wait_frames 2\nprint_viewport\nquit\n"))
+    check(re.search(r"^viewport %dx%d$" % sizes[1], p.stdout, re.M), "the collapsed layout was not restored:\n" + p.stdout)
     print("OK: session")
 
 
@@ -862,6 +884,69 @@ quit
     print("OK: placement")
 
 
+def case_mesh_volume(env):
+    """A mesh volume from a glTF file: added on the surface, made a subtract
+    volume, saved with its path relative to the preset, kept right by Save As
+    into another folder (crash recovery: test_autosave.cpp); a bad mesh is
+    refused with the reason and changes nothing; undo removes it."""
+    cube = os.path.join(env.source, "tests", "data", "bad_inputs", "meshes", "cube.gltf")
+    bad = os.path.join(env.source, "tests", "data", "bad_inputs", "meshes", "open_edge.gltf")
+    first = env.path("first.json")
+    os.makedirs(env.path("elsewhere"), exist_ok=True)
+    second = env.path(os.path.join("elsewhere", "second.json"))
+    p = env.run(env.script("mesh.txt", """
+new
+save {first}
+add_mesh_volume {cube}
+set volume[1].blend subtract
+set volume[1].half_extents_m 4 3 5
+expect_volumes 2
+wait_frames 2
+print_drawn
+save {first}
+save {second}
+quit
+""".format(first=first, second=second, cube=cube)))
+    m = re.search(r'added mesh volume 1 "([^"]+)" at (\S+) (\S+) (\S+)', p.stdout)
+    check(m is not None, "add_mesh_volume printed nothing:\n" + p.stdout)
+    saved = load_json(first)
+    v = saved["volumes"][1]
+    check(v["shape"] == "mesh" and v["blend"] == "subtract", "the volume was not saved as a subtract mesh: %s" % v)
+    check(not os.path.isabs(v["mesh"]), "the mesh path is not relative to the preset: %s" % v["mesh"])
+    check(os.path.samefile(os.path.join(env.work, v["mesh"]), cube), "the saved path names another file: %s" % v["mesh"])
+    moved = load_json(second)["volumes"][1]["mesh"]
+    check(os.path.samefile(os.path.join(env.work, "elsewhere", moved), cube),
+          "Save As into another folder broke the mesh path: %s" % moved)
+    # Export for game travels with its meshes: meshes/<id>.gltf beside
+    # preset.json, which names it, and the bake's layout.gltf lists the volume.
+    out = env.path("export")
+    env.run(env.script("mesh_export.txt", "open %s\nexport %s 6 32x16\nquit\n" % (first, out)))
+    exported = load_json(os.path.join(out, "preset.json"))["volumes"][1]
+    check(exported["mesh"] == "meshes/%s.gltf" % exported["id"] and os.path.isfile(os.path.join(out, exported["mesh"])),
+          "the export does not carry the mesh: %s" % exported)
+    layout = load_json(os.path.join(out, "layout.gltf"))
+    check(any(n.get("name") == exported["id"] for n in layout["nodes"]), "layout.gltf lacks the mesh volume")
+    # Both files open again with their meshes (the loader resolves the paths).
+    for path in (first, second):
+        env.run(env.script("reopen.txt", "open %s\nexpect_volumes 2\nquit\n" % path))
+    # A bad mesh: refused, named, nothing added.
+    p = env.run(env.script("bad_mesh.txt", "new\nadd_mesh_volume %s\n" % bad), expect_rc=1)
+    check("open edge" in p.stderr and "open_edge.gltf" in p.stderr,
+          "the bad mesh was not refused with its reason:\n" + p.stderr[-1500:])
+    # Undo removes the volume in one step.
+    env.run(env.script("mesh_undo.txt", """
+new
+add_mesh_volume {cube}
+expect_volumes 2
+expect_undo 1
+undo
+expect_volumes 1
+expect_undo 0
+quit
+""".format(cube=cube)))
+    print("OK: mesh_volume")
+
+
 CASES = {
     "session": case_session,
     "prompts": case_prompts,
@@ -874,6 +959,7 @@ CASES = {
     "cloud_volume": case_cloud_volume,
     "autokey": case_autokey,
     "placement": case_placement,
+    "mesh_volume": case_mesh_volume,
 }
 
 

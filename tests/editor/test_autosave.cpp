@@ -1,9 +1,12 @@
 // Autosave and crash recovery: the timer, the files, recovery of a crashed
 // session (a marker whose process is gone), a clean exit.
 #include "autosave.hpp"
+#include "preset_edit.hpp"
 #include "editor_test_support.hpp"
 #include "script.hpp"
 #include "settings.hpp"
+
+#include <aerial/fog_mesh.hpp>
 
 #include <gtest/gtest.h>
 
@@ -104,6 +107,40 @@ TEST(Autosave, RecoversACrashedSession) {
     EXPECT_FALSE(self.findRecovery());
     self.finish();
     EXPECT_TRUE(fs::is_empty(dir));
+    fs::remove_all(dir);
+}
+
+TEST(Autosave, MeshVolumesSurviveTheRecoveryFile) {
+    // A preset beside its mesh (a relative path) autosaved into the state
+    // folder: the recovery file names the mesh absolutely, so it loads.
+    const fs::path dir = test::tempDir("autosave", "mesh");
+    const fs::path project = dir / "project";
+    fs::create_directories(project / "meshes");
+    fs::copy_file(fs::path(AERIAL_SOURCE_DIR) / "tests/data/bad_inputs/meshes/cube.gltf",
+                  project / "meshes" / "room.gltf");
+    Preset work = defaultPreset();
+    FogVolume room;
+    room.id = "room";
+    room.shape = FogVolumeShape::Mesh;
+    room.blend = FogVolumeBlend::Subtract;
+    room.mesh = "meshes/room.gltf";
+    work.volumes.push_back(room);
+    const fs::path state = dir / "state";
+    Autosave autosave(state.string(), 1.0);
+    ASSERT_TRUE(autosave.start((project / "scene.json").string()));
+    EXPECT_FALSE(autosave.update(0.0, true, 2, work, (project / "scene.json").string()));
+    EXPECT_TRUE(autosave.update(1.5, true, 2, work, (project / "scene.json").string()));
+    const PresetLoadResult recovered = loadPreset(autosave.recoveryFile());
+    ASSERT_TRUE(recovered.ok()) << recovered.errors[0].toString();
+    const FogVolume& v = recovered.preset->volumes.back();
+    EXPECT_TRUE(fs::path(v.mesh).is_absolute()) << v.mesh;
+    ASSERT_TRUE(v.meshData);
+    EXPECT_EQ(v.meshData->triangleCount(), 12u);
+    // Back in the document's folder the path is relative again.
+    Preset back = *recovered.preset;
+    EXPECT_EQ(rebaseMeshPaths(back, "", project.string()), 1);
+    EXPECT_EQ(back.volumes.back().mesh, "meshes/room.gltf");
+    autosave.finish();
     fs::remove_all(dir);
 }
 

@@ -361,5 +361,49 @@ TEST(PresetEdit, DraggedKeysSnapToOtherKeysElseToTheQuarterHour) {
     EXPECT_DOUBLE_EQ(snapKeyTime(p, fog.target, 0, 23.9, near), 0.0);    // the quarter hour wraps
 }
 
+TEST(PresetEdit, MeshPathsFollowThePreset) {
+    EXPECT_EQ(meshPathFor("/data/meshes/room.gltf", "/data/presets/a.json"), "../meshes/room.gltf");
+    EXPECT_EQ(meshPathFor("/data/presets/room.gltf", "/data/presets/a.json"), "room.gltf");
+    EXPECT_EQ(meshPathFor("/data/meshes/room.gltf", ""), "/data/meshes/room.gltf");  // untitled: absolute
+    Preset p;
+    FogVolume v;
+    v.id = "room";
+    v.shape = FogVolumeShape::Mesh;
+    v.mesh = "../meshes/room.gltf";
+    p.volumes.push_back(v);
+    FogVolume box;
+    box.id = "box";
+    p.volumes.push_back(box);
+    // Save As from /data/presets into /data/presets/dusk: one more level up.
+    EXPECT_EQ(rebaseMeshPaths(p, "/data/presets", "/data/presets/dusk"), 1);
+    EXPECT_EQ(p.volumes[0].mesh, "../../meshes/room.gltf");
+    EXPECT_EQ(p.volumes[1].mesh, "");
+    // To absolute (a recovery file) and back.
+    EXPECT_EQ(rebaseMeshPaths(p, "/data/presets/dusk", ""), 1);
+    EXPECT_EQ(p.volumes[0].mesh, "/data/meshes/room.gltf");
+    EXPECT_EQ(rebaseMeshPaths(p, "", "/data"), 1);
+    EXPECT_EQ(p.volumes[0].mesh, "meshes/room.gltf");
+    EXPECT_EQ(rebaseMeshPaths(p, "/data", "/data"), 0);
+}
+
+TEST(PresetEdit, AddMeshVolumeRestsOnTheGround) {
+    std::string error;
+    // A cube [-1, 1]^3 (8 vertices, 12 triangles).
+    std::vector<glm::dvec3> positions;
+    for (int i = 0; i < 8; ++i) positions.push_back({(i & 1) ? 1.0 : -1.0, (i & 2) ? 1.0 : -1.0, (i & 4) ? 1.0 : -1.0});
+    const std::vector<std::uint32_t> indices = {1, 3, 7, 1, 7, 5, 0, 4, 6, 0, 6, 2, 2, 6, 7, 2, 7, 3,
+                                                0, 1, 5, 0, 5, 4, 4, 5, 7, 4, 7, 6, 0, 2, 3, 0, 3, 1};
+    const auto mesh = FogMesh::build(positions, indices, error);
+    ASSERT_TRUE(mesh) << error;
+    Preset p = defaultPreset();
+    const int i = addMeshVolume(p, "meshes/room.gltf", mesh, {5, 2, -7}, "room");
+    const FogVolume& v = p.volumes[std::size_t(i)];
+    EXPECT_EQ(v.shape, FogVolumeShape::Mesh);
+    EXPECT_EQ(v.name, "room");
+    EXPECT_EQ(v.id, "mesh_volume");
+    EXPECT_EQ(v.position, glm::dvec3(5, 3, -7));  // bottom at y = 2
+    EXPECT_TRUE(validatePreset(p).empty());
+}
+
 }  // namespace
 }  // namespace aerial::editor

@@ -1,8 +1,11 @@
 // Picking: rays through pixels against the renderer's far rays; closed-form
 // box / ellipsoid hits against hand-computed answers and against core's
 // intersectFogVolume on random rays; icons; nearest-hit ordering; placement.
+#include "test_meshes.hpp"
+#include "viewport/overlay.hpp"
 #include "viewport/picking.hpp"
 
+#include <aerial/fog_mesh.hpp>
 #include <aerial/fog_volume.hpp>
 #include <aerial/renderer/camera.hpp>
 
@@ -255,6 +258,40 @@ TEST(Pick, NearestHitWinsWhateverTheOrder) {
     hit = pick(ray, volumes, {}, alpha);
     EXPECT_EQ(hit.index, 2);
     EXPECT_EQ(pick({{0, 0, 0}, {0, 0, 0}}, volumes, emitters, alpha).kind, PickHit::Kind::None);
+}
+
+TEST(Pick, MeshVolumesByTheirRealTriangles) {
+    // A torus (ring 6 m, tube 2 m) in front of the camera, its axis towards
+    // it: a ray through the hole misses it and picks the box behind; a ray
+    // through the tube picks the torus at the tube's surface.
+    const test::TriangleMesh t = test::torusMesh(6.0, 2.0, 48, 24);
+    std::string error;
+    FogVolume torus = makeVolume(FogVolumeShape::Box, {0, 0, -20}, glm::angleAxis(std::numbers::pi / 2, glm::dvec3(1, 0, 0)),
+                                 {1, 1, 1});
+    torus.shape = FogVolumeShape::Mesh;
+    torus.mesh = "torus";
+    torus.meshData = FogMesh::build(t.positions, t.indices, error);
+    ASSERT_TRUE(torus.meshData) << error;
+    std::vector<FogVolume> volumes = {torus, makeVolume(FogVolumeShape::Box, {0, 0, -40}, glm::dquat(1, 0, 0, 0), {1, 1, 1})};
+    PickHit hit = pick({{0, 0, 0}, {0, 0, -1}}, volumes, {}, 0.01);
+    EXPECT_EQ(hit.index, 1);  // through the hole
+    EXPECT_NEAR(hit.distance, 39.0, 1e-9);
+    hit = pick({{6, 0.01, 0}, {0, 0, -1}}, volumes, {}, 0.01);
+    EXPECT_EQ(hit.index, 0);  // the tube, entered about 2 m before its centre line
+    EXPECT_NEAR(hit.distance, 18.0, 0.05);
+    // Its outline is its edges (a small mesh: all of them), in world space.
+    const std::vector<WorldSegment> outline = volumeOutlineSegments(torus);
+    // Every edge but the diagonals of the quads (their two triangles are
+    // coplanar): the closed torus has 3 edges per quad, 1 a diagonal.
+    EXPECT_EQ(outline.size(), t.indices.size() / 2 - t.indices.size() / 6);
+    for (const WorldSegment& s : outline) {
+        EXPECT_NEAR(glm::length(glm::dvec2(s.first.x, s.first.y)), 6.0, 2.0 + 1e-9);
+        EXPECT_NEAR(s.first.z, -20.0, 2.0 + 1e-9);
+    }
+    // The bounding sphere holds it.
+    const BoundingSphere b = boundingSphereOf(torus);
+    EXPECT_NEAR(b.centre.z, -20.0, 1e-9);
+    EXPECT_GE(b.radius, 8.0);
 }
 
 TEST(Pick, CloudVolumesByTheirShapeWhereNothingElseIs) {

@@ -18,12 +18,14 @@
 // CTest test.
 #include <aerial/evaluate.hpp>
 #include <aerial/finite.hpp>
+#include <aerial/fog_query.hpp>
 #include <aerial/preset.hpp>
 
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <string>
 #include <string_view>
 
 namespace {
@@ -65,11 +67,12 @@ void checkState(const aerial::PresetState& s) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string_view text(reinterpret_cast<const char*>(data), size);
-    aerial::PresetLoadResult r = aerial::parsePreset(text, "fuzz.json");
+    static const std::string file = std::string(AERIAL_SOURCE_DIR) + "/tests/data/bad_inputs/presets/fuzz.json";
+    aerial::PresetLoadResult r = aerial::parsePreset(text, file);
     if (!r.ok()) {
         check(!r.errors.empty(), "a failed load reports an error");
         for (const aerial::PresetIssue& e : r.errors)
-            check(e.file == "fuzz.json", "every error names the file");
+            check(e.file == file, "every error names the file");
         return 0;
     }
     check(r.errors.empty(), "a loaded preset has no errors");
@@ -77,7 +80,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     check(aerial::validatePreset(preset).empty(), "a loaded preset validates");
 
     const std::string saved = aerial::presetToJson(preset);
-    aerial::PresetLoadResult again = aerial::parsePreset(saved, "saved.json");
+    aerial::PresetLoadResult again = aerial::parsePreset(saved, file);
     check(again.ok(), "the saved text loads");
     check(aerial::presetsIdentical(preset, *again.preset), "save + load gives the same preset");
 
@@ -87,6 +90,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     for (double t : {0.0, 6.25, 12.0, 18.75, 23.99}) {
         compiled.evaluate(t, state);
         checkState(state);
+    }
+    // The fog of the last state along a few segments: finite, T in [0, 1].
+    aerial::FogSceneDesc desc;
+    desc.heightFog = state.environment.fog;
+    desc.volumes = state.volumes;
+    const aerial::FogScene scene(desc);
+    for (const auto& [from, to] : {std::pair{glm::dvec3(0, 2, 0), glm::dvec3(0, 2, -500)},
+                                   std::pair{glm::dvec3(-300, 5, 10), glm::dvec3(300, 1, -10)},
+                                   std::pair{glm::dvec3(1, 1, 1), glm::dvec3(1, 1, 1)}}) {
+        const aerial::FogQueryResult q = scene.query(from, to);
+        check(isFinite(q.transmittance) && isFinite(q.inScatter) && q.transmittance.x >= 0.0 &&
+                  q.transmittance.x <= 1.0 && q.globalOpticalDepth >= 0.0,
+              "finite fog queries");
     }
     return 0;
 }

@@ -4,6 +4,7 @@
 #include "viewport/overlay.hpp"
 
 #include <aerial/finite.hpp>
+#include <aerial/fog_mesh.hpp>
 
 #include <imgui.h>
 
@@ -13,10 +14,50 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
+#include <memory>
 #include <numbers>
+#include <utility>
 
 namespace aerial::editor {
 namespace {
+
+/// The edges of a mesh worth drawing (object space vertex pairs): all of
+/// them for a small mesh, the creases of a large one. Cached per mesh (the
+/// outline is drawn every frame).
+const std::vector<std::pair<std::uint32_t, std::uint32_t>>& meshOutlineEdges(
+    const std::shared_ptr<const FogMesh>& mesh) {
+    struct Entry {
+        std::weak_ptr<const FogMesh> mesh;
+        std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
+    };
+    static std::map<const FogMesh*, Entry> cache;
+    for (auto it = cache.begin(); it != cache.end();) it = it->second.mesh.expired() ? cache.erase(it) : ++it;
+    Entry& entry = cache[mesh.get()];
+    if (entry.mesh.lock() == mesh) return entry.edges;
+    entry = {mesh, {}};
+    const std::vector<glm::dvec3>& p = mesh->positions();
+    const std::vector<std::uint32_t>& idx = mesh->indices();
+    // Each undirected edge with the normals of its (two) triangles.
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::pair<glm::dvec3, glm::dvec3>> faces;
+    for (std::size_t t = 0; t + 2 < idx.size(); t += 3) {
+        const glm::dvec3 n = glm::normalize(glm::cross(p[idx[t + 1]] - p[idx[t]], p[idx[t + 2]] - p[idx[t]]));
+        for (int e = 0; e < 3; ++e) {
+            std::uint32_t a = idx[t + std::size_t(e)], b = idx[t + std::size_t((e + 1) % 3)];
+            if (a > b) std::swap(a, b);
+            auto [it, inserted] = faces.try_emplace({a, b}, n, n);
+            if (!inserted) it->second.second = n;
+        }
+    }
+    // A small mesh: every edge but those inside a flat face (the diagonal
+    // of a quad); a large one: its creases.
+    const bool all = faces.size() <= kMeshOutlineAllEdges;
+    const double creaseCos = std::cos((all ? 0.5 : 25.0) * std::numbers::pi / 180.0);
+    for (const auto& [edge, normals] : faces) {
+        if (glm::dot(normals.first, normals.second) < creaseCos) entry.edges.push_back(edge);
+    }
+    return entry.edges;
+}
 
 glm::dvec2 sanitisedSize(glm::dvec2 size) {
     return {(std::isfinite(size.x) && size.x >= 1.0) ? size.x : 1.0,
@@ -147,6 +188,26 @@ std::vector<WorldSegment> volumeOutlineSegments(const FogVolume& volume, int ell
     const auto world = [&](const glm::dvec3& object) {
         return prepared.position + prepared.worldFromObject * object;
     };
+    if (volume.shape == FogVolumeShape::Mesh) {
+        const auto& edges = meshOutlineEdges(prepared.mesh);
+        const std::vector<glm::dvec3>& p = prepared.mesh->positions();
+        out.reserve(edges.size());
+        for (const auto& [a, b] : edges) out.emplace_back(world(p[a]), world(p[b]));
+        if (edges.size() >= 12) return out;
+        // A large smooth mesh: its bounds, so that it is seen at all.
+        const glm::dvec3 lo = prepared.mesh->boundsMin(), hi = prepared.mesh->boundsMax();
+        for (int corner = 0; corner < 8; ++corner) {
+            const glm::dvec3 a{(corner & 1) ? hi.x : lo.x, (corner & 2) ? hi.y : lo.y, (corner & 4) ? hi.z : lo.z};
+            for (int bit = 0; bit < 3; ++bit) {
+                if ((corner & (1 << bit)) == 0) {
+                    glm::dvec3 b = a;
+                    b[bit] = hi[bit];
+                    out.emplace_back(world(a), world(b));
+                }
+            }
+        }
+        return out;
+    }
     if (volume.shape == FogVolumeShape::Box) {
         out.reserve(12);
         for (int corner = 0; corner < 8; ++corner) {

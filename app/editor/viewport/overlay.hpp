@@ -65,9 +65,14 @@ std::optional<ScreenSegment> clipSegmentToRect(const ScreenSegment& segment, glm
 
 /// World-space outline of a volume: a box's 12 edges; an ellipsoid's three
 /// principal great ellipses (in its object XY, YZ and ZX planes), each as
-/// `ellipseSegments` chords (clamped to [8, 512]). Empty for a degenerate
+/// `ellipseSegments` chords (clamped to [8, 512]); a mesh's edges (every
+/// edge of a mesh with at most kMeshOutlineAllEdges of them but those
+/// inside a flat face, such as the diagonals of its quads; else the
+/// creases, where the faces meet at more than 25 degrees, and the box of
+/// its bounds when a large smooth mesh has hardly any). Empty for a degenerate
 /// volume (non-finite or non-positive half extents, zero rotation).
 std::vector<WorldSegment> volumeOutlineSegments(const FogVolume& volume, int ellipseSegments = 64);
+inline constexpr std::size_t kMeshOutlineAllEdges = 20000;
 
 /// ImGui colour (IM_COL32 packing, 0xAABBGGRR) from display values 0..1.
 std::uint32_t overlayColour(double r, double g, double b, double a = 1.0);

@@ -81,7 +81,20 @@ RayInterval intersectOrientedEllipsoid(const Ray& ray, const glm::dvec3& centre,
 }
 
 RayInterval intersectVolumeShape(const Ray& ray, const FogVolume& volume) {
-    return intersectShape(ray, volume.shape, volume.position, volume.rotation, volume.halfExtents);
+    if (volume.shape != FogVolumeShape::Mesh) {
+        return intersectShape(ray, volume.shape, volume.position, volume.rotation, volume.halfExtents);
+    }
+    // A mesh volume is picked by its real triangles: core's chords, first
+    // entry to last exit.
+    RayInterval r;
+    if (!isFinite(ray.origin) || !isFinite(ray.direction)) return r;
+    const VolumeInterval line = intersectFogVolumeLine(prepareFogVolume(volume), ray.origin, ray.direction);
+    if (line.hit && std::isfinite(line.tNear) && std::isfinite(line.tFar)) {
+        r.hit = true;
+        r.tIn = line.tNear;
+        r.tOut = line.tFar;
+    }
+    return r;
 }
 
 std::optional<double> intersectIcon(const Ray& ray, const glm::dvec3& position, double angularRadius) {
@@ -191,7 +204,11 @@ PickHit pick(const Ray& ray, const std::vector<FogVolume>& volumes, const std::v
 BoundingSphere boundingSphereOf(const FogVolume& volume) {
     BoundingSphere b;
     b.centre = isFinite(volume.position) ? volume.position : glm::dvec3(0.0);
-    if (prepareFogVolume(volume).valid) {
+    const PreparedFogVolume p = prepareFogVolume(volume);
+    if (p.valid && volume.shape == FogVolumeShape::Mesh) {
+        b.centre = 0.5 * (p.boundsMin + p.boundsMax);
+        b.radius = 0.5 * glm::length(p.boundsMax - p.boundsMin);
+    } else if (p.valid) {
         const glm::dvec3& s = volume.halfExtents;
         b.radius = volume.shape == FogVolumeShape::Box ? glm::length(s) : std::max({s.x, s.y, s.z});
     }

@@ -104,4 +104,11 @@ struct FogMeshLoadResult {
 /// Reads and checks a glTF file (.gltf or .glb). Never throws.
 FogMeshLoadResult loadFogMesh(const std::string& path);
 
+/// The mesh as a self-contained glTF 2.0 text: one scene, one node and mesh
+/// named `name`, its welded positions (float VEC3, with min/max) and
+/// triangles (UNSIGNED_INT) in one embedded base64 buffer. What an export
+/// writes beside a preset so that it travels with its meshes; loadFogMesh
+/// reads it back to the same triangles (positions rounded to float).
+std::string fogMeshToGltf(const FogMesh& mesh, const std::string& name);
+
 }  // namespace aerial
