@@ -136,16 +136,16 @@ void releaseUnusedFogMeshes(RendererResources& gpu) {
     }
 }
 
-void drawMeshVolume(FrameContext& f, const PreparedFogVolume& volume, const VolumeBlock& block) {
+bool drawMeshVolume(FrameContext& f, const PreparedFogVolume& volume, const VolumeBlock& block) {
     RendererResources& gpu = f.gpu;
     const RendererResources::FogMeshGpu* mesh = fogMeshOnGpu(gpu, volume.mesh);
-    if (mesh == nullptr) return;
+    if (mesh == nullptr) return false;
     const int width = int(f.block.viewportSize[0]);
     const int height = int(f.block.viewportSize[1]);
     prepareAccumulation(gpu, width, height);
     int rect[4];
     screenRectangle(f.view.clipFromWorld, volume, width, height, rect);
-    if (rect[2] <= rect[0] || rect[3] <= rect[1]) return;
+    if (rect[2] <= rect[0] || rect[3] <= rect[1]) return false;  // off screen
     glNamedBufferSubData(gpu.volumeBuffer, 0, sizeof block, &block);
     glEnable(GL_SCISSOR_TEST);
     glScissor(rect[0], rect[1], rect[2] - rect[0], rect[3] - rect[1]);
@@ -170,6 +170,7 @@ void drawMeshVolume(FrameContext& f, const PreparedFogVolume& volume, const Volu
     drawFullscreen(gpu, Pass::MeshVolumeComposite);
     glDisable(GL_SCISSOR_TEST);
     ++f.stats.meshVolumesDrawn;
+    return true;
 }
 
 void destroyMeshVolumeResources(RendererResources& gpu) {

@@ -302,10 +302,10 @@ const RendererResources::FogMeshGpu* fogMeshOnGpu(RendererResources& gpu,
 void releaseUnusedFogMeshes(RendererResources& gpu);
 /// Draws one mesh add volume (accumulate, then composite over the colour);
 /// called by the volume pass in its back-to-front order, inside its
-/// beginComposite. Leaves compositeTarget bound and blending as
+/// beginComposite; false when nothing was drawn (no mesh, off screen). Leaves compositeTarget bound and blending as
 /// beginComposite(GL_ONE, GL_SRC_ALPHA); changes program, vertex array,
 /// culling, depth test and clamp (the caller sets them per volume).
-void drawMeshVolume(FrameContext& frame, const PreparedFogVolume& volume, const VolumeBlock& block);
+bool drawMeshVolume(FrameContext& frame, const PreparedFogVolume& volume, const VolumeBlock& block);
 void destroyMeshVolumeResources(RendererResources& gpu);
 
 /// The volumetric fog's grid for a frame of width x height pixels (no GL):

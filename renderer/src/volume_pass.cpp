@@ -101,8 +101,7 @@ void draw(FrameContext& f) {
         f.desc.volumeMethod == VolumeMethod::RayMarched64 ? Pass::FogVolumeMarched : Pass::FogVolume);
     for (const PreparedVolume& v : volumes) {
         if (v.isMesh) {
-            drawMeshVolume(f, v.mesh, v.block);
-            ++f.stats.volumesDrawn;
+            if (drawMeshVolume(f, v.mesh, v.block)) ++f.stats.volumesDrawn;
             continue;
         }
         glUseProgram(hullProgram);
