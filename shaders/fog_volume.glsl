@@ -21,7 +21,9 @@
 // at t = depth01. The segment is [max(t_in, 0), min(t_out, depth01)] (the
 // viewer may stand inside; geometry inside the volume ends it). Its optical
 // depth is the global-fog formula with o.y - h0 -> dot(o - centre, g) - offset
-// and d.y -> dot(d, g) (core/src/bvh.hpp, opticalDepthPrepared).
+// and d.y -> dot(d, g) (core/src/bvh.hpp, opticalDepthPrepared). With
+// subtract volumes (frame.subtractActive) the segment minus the pixel's
+// subtract union (common/subtract.glsl).
 #include "common/frame.glsl"
 #include "common/volume.glsl"
 
@@ -29,6 +31,7 @@
 void main() { transformHullVertex(); }
 #else
 #include "common/atmosphere.glsl"
+#include "common/subtract.glsl"
 
 layout(location = 0) out vec4 outColour;
 
@@ -44,6 +47,10 @@ void main() {
     float height = dot(eye - centre, g) + tIn * rate - volume.gradientOffset;
     float tau = exponentialOpticalDepth(volume.density, volume.falloff, height,
                                         span * rate, span * length(farRay));
+    if (frame.subtractActive != 0) {
+        tau = maskedExponentialDepth(ivec2(gl_FragCoord.xy), volume.density, volume.falloff, height - tIn * rate,
+                                     rate, length(farRay), tIn, tOut);
+    }
     outColour = fogInScatterTransmittance(volume.colourMode, volume.colour, normalize(farRay), tau);
 }
 #endif

@@ -6,6 +6,8 @@
 // along the clipped segment instead of the closed form.
 //
 // Inputs and output: as fog_volume.glsl.
+// Subtract volumes are not cut out here (a benchmark reference of the
+// plain integral; never in a normal frame).
 #include "common/frame.glsl"
 #include "common/volume.glsl"
 

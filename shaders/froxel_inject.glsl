@@ -4,9 +4,10 @@
 // Per froxel, along the ray through its centre over its slice's segment
 // o -> o + d (view depth z(k/N) .. z((k+1)/N)), everything in closed form so
 // that the slice count only decides where the light is sampled:
-//   tau          optical depth of the global height fog and every box or
-//                ellipsoid volume over the segment (the analytic integrals
-//                of DESIGN.md "Global height fog" / "Fog volumes")
+//   tau          optical depth of the global height fog and every add
+//                volume over the segment (the analytic integrals of
+//                DESIGN.md "Global height fog" / "Fog volumes"; a mesh one
+//                over the segment's parts of its chords)
 //   W_sky (rgb)  sum of tau_i x tint_i over the media coloured by the sky
 //                (colour mode sky: tint 1; tinted: the tint)
 //   W_own (rgb)  sum of tau_i x colour_i over the media of a custom colour,
@@ -22,6 +23,15 @@
 // grid: its clip transform, eye and forward axis), V = mix(V_prev, V,
 // historyWeight); the renderer sets the weight to 1 (no history) when the
 // time, the camera or the grid jumps (froxel_pass.cpp), so nothing ghosts.
+// Subtract volumes: a froxel whose sample point p lies inside one holds
+// neither the global fog nor any added volume (the whole slice segment, a
+// froxel's resolution of the cut). Box and ellipsoid ones (blend 1 in the
+// volume array) test p itself; mesh ones (frame.subtractActive) through
+// the subtract union of the pixel at the froxel's centre
+// (common/subtract.glsl, written by subtract_pass.cpp; they end at that
+// pixel's scene depth, and a sample beyond it takes the scene point's
+// answer). Mesh add volumes are not in the volumetric fog (the
+// renderer does not pass them).
 // Output: image 0 = (W_sky, tau), image 1 = (W_own, V), RGBA32F, one texel
 // per froxel (x, y, slice); image 2 = V (R32F), the next frame's history.
 #include "common/frame.glsl"
@@ -31,6 +41,10 @@
 #include "common/shadows.glsl"
 #include "common/clouds.glsl"
 #include "common/unit_shape.glsl"
+#include "common/subtract.glsl"
+#include "common/froxel_volumes.glsl"
+
+layout(std430, binding = 1) readonly buffer MeshChords { vec2 meshChords[]; };
 
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
@@ -38,24 +52,9 @@ layout(rgba32f, binding = 0) uniform writeonly image3D uMedium;  // (W_sky, tau)
 layout(rgba32f, binding = 1) uniform writeonly image3D uLight;   // (W_own, V)
 layout(r32f, binding = 2) uniform writeonly image3D uHistoryOut;  // V for the next frame
 layout(binding = 15) uniform sampler3D uHistory;                  // the previous frame's V
+layout(binding = 4) uniform sampler2D uLinearDepth;               // normalised linear depth z/far
 
-/// One fog volume as VolumeBlock (common/volume.glsl), packed in an array.
-struct FroxelVolume {
-    mat4 worldFromObject;
-    vec3 objectFromWorldRow0;
-    float shape;
-    vec3 objectFromWorldRow1;
-    float density;
-    vec3 objectFromWorldRow2;
-    float falloff;
-    vec3 position;
-    float gradientOffset;
-    vec3 gradientDirection;
-    float colourMode;
-    vec3 colour;
-    float padColour;
-};
-layout(std430, binding = 3) readonly buffer Volumes { FroxelVolume volumes[]; };
+
 
 /// Adds a medium of optical depth tau and colour mode/colour to the sums.
 void addMedium(float tau, float mode, vec3 colour, inout vec3 wSky, inout vec3 wOwn) {
@@ -120,7 +119,28 @@ void main() {
 
     vec3 p = o + froxel.jitter * d;  // where this slice's light (and noise) is sampled
     vec3 wSky = vec3(0.0), wOwn = vec3(0.0);
-    float tau = exponentialOpticalDepth(froxel.globalFog * frame.fogDensity, frame.fogFalloff,
+    bool cut = false;  // p inside a subtract volume
+    for (int v = 0; v < froxel.volumeCount && !cut; ++v) {
+        FroxelVolume fv = volumes[v];
+        if (fv.blend < 0.5) continue;
+        vec3 rel = p - fv.position;
+        vec3 q = vec3(dot(fv.objectFromWorldRow0, rel), dot(fv.objectFromWorldRow1, rel),
+                      dot(fv.objectFromWorldRow2, rel));
+        cut = fv.shape < 0.5 ? all(lessThanEqual(abs(q), vec3(1.0))) : dot(q, q) <= 1.0;
+    }
+    if (frame.subtractActive != 0 && !cut) {  // the mesh subtract volumes, per pixel
+        ivec2 pixel = min(ivec2((vec2(id.xy) + 0.5) * froxel.pixelsPerFroxel), ivec2(frame.viewportSize) - 1);
+        vec4 first, second;
+        pixelSubtractIntervals(pixel, first, second);
+        // Beyond the pixel's scene point (the intervals end there) p counts
+        // as inside when the scene point is: the slice the pixel's depth
+        // falls in is interpolated from both sides of it.
+        float depth01 = texelFetch(uLinearDepth, pixel, 0).r;
+        float t = min(dot(p - frame.eye, frame.forward) / frame.farDistance, depth01);
+        cut = (t >= first.x && t <= first.y) || (t >= first.z && t <= first.w) ||
+              (t >= second.x && t <= second.y) || (t >= second.z && t <= second.w);
+    }
+    float tau = cut ? 0.0 : exponentialOpticalDepth(froxel.globalFog * frame.fogDensity, frame.fogFalloff,
                                         o.y - frame.fogBaseHeight, d.y, len);
     if (froxel.noiseAmount > 0.0) {  // the detail noise: the slice's density scaled at its sample point
         float n = detailNoise((p - froxel.noiseOffset) / froxel.noiseScaleM);
@@ -128,8 +148,29 @@ void main() {
     }
     addMedium(tau, frame.fogColourMode, frame.fogColour, wSky, wOwn);
 
-    for (int v = 0; v < froxel.volumeCount; ++v) {
+    int mesh = 0;  // mesh volumes met so far (their chords' order)
+    for (int v = 0; v < froxel.volumeCount && !cut; ++v) {
         FroxelVolume fv = volumes[v];
+        if (fv.blend > 0.5) continue;  // subtract volumes add nothing
+        if (fv.shape > 1.5) {  // a mesh: the slice's parts of its chords (mesh_volume_chords.glsl)
+            float ta = za / frame.farDistance;
+            float tb = zb / frame.farDistance;
+            float rate = dot(farRay, fv.gradientDirection);
+            float tv = 0.0;
+            int base = meshChordBase(mesh++, id.xy);
+            for (int k = 0; k < kMeshChords; ++k) {
+                vec2 chord = meshChords[base + k];
+                float a = max(chord.x, ta);
+                float b = min(chord.y, tb);
+                if (!(b > a)) continue;
+                float height = dot(frame.eye + a * farRay - fv.position, fv.gradientDirection) - fv.gradientOffset;
+                tv += exponentialOpticalDepth(fv.density, fv.falloff, height, (b - a) * rate,
+                                              (b - a) * length(farRay));
+            }
+            addMedium(tv, fv.colourMode, fv.colour, wSky, wOwn);
+            tau += tv;
+            continue;
+        }
         vec3 rel = o - fv.position;
         vec3 oo = vec3(dot(fv.objectFromWorldRow0, rel), dot(fv.objectFromWorldRow1, rel),
                        dot(fv.objectFromWorldRow2, rel));

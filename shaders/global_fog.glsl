@@ -11,12 +11,16 @@
 //   rgb = L_fog(v) (1 - T), a = T, T = exp(-integral f), so the target becomes
 //   L = L_scene T + L_fog (1 - T); L_fog is the horizon average with the
 //   per-pixel phase functions (FogScene::fogColour) in colour mode "sky".
+// Subtract volumes (frame.subtractActive): the integral runs over the
+// segment minus the pixel's subtract union (common/subtract.glsl), the sum
+// over the gaps; without them the plain integral, bit for bit as before.
 #include "common/frame.glsl"
 
 #ifdef AERIAL_VERTEX_SHADER
 #include "common/fullscreen.glsl"
 #else
 #include "common/atmosphere.glsl"
+#include "common/subtract.glsl"
 
 layout(binding = 4) uniform sampler2D uLinearDepth;
 
@@ -27,6 +31,11 @@ void main() {
     float depth01 = texelFetch(uLinearDepth, ivec2(gl_FragCoord.xy), 0).r;
     vec3 d = depth01 * vFarRay;  // eye -> scene point [m]
     float tau = globalFogOpticalDepth(d);
+    if (frame.subtractActive != 0) {
+        tau = maskedExponentialDepth(ivec2(gl_FragCoord.xy), frame.fogDensity, frame.fogFalloff,
+                                     frame.eye.y - frame.fogBaseHeight, vFarRay.y, length(vFarRay), 0.0,
+                                     depth01);
+    }
     outColour = fogInScatterTransmittance(frame.fogColourMode, frame.fogColour, normalize(vFarRay), tau);
 }
 #endif

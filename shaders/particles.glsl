@@ -26,7 +26,8 @@
 //     L = albedo (E_sun + E_moon + sum_emitters colour i / (1 + a r_e^2)) / (4 pi)
 //         + albedo E_sky / (2 pi) + emission,
 //   fogged as transparent.glsl: the global height fog (optical depth per
-//   vertex, colour per fragment), then the volumes and emitters from the CPU
+//   vertex, or per fragment without the subtract union when subtract volumes
+//   are active; colour per fragment), then the volumes and emitters from the CPU
 //   (one query per sprite, at its centre):
 //   rgb = alpha ((L T_g + S_g) T' + S'), a = alpha.
 #include "common/frame.glsl"
@@ -64,6 +65,7 @@ void main() {
 #include "common/clouds.glsl"
 #include "common/shadows.glsl"
 #include "common/froxel.glsl"
+#include "common/subtract.glsl"
 layout(binding = 4) uniform sampler2D uLinearDepth;
 
 in vec2 vCorner;
@@ -110,7 +112,10 @@ void main() {
         vec4 fog = froxelFog(gl_FragCoord.xy, vSpriteDepth, farRayAtFragment(gl_FragCoord.xy));
         fogged = radiance * fog.a + fog.rgb;
     } else {
-        vec4 globalFog = globalFogTowards(vWorld - frame.eye, vGlobalTau);
+        // With subtract volumes, per fragment along the pixel's ray without their union.
+        float globalTau =
+            frame.subtractActive != 0 ? maskedGlobalFogDepthTo(ivec2(gl_FragCoord.xy), vWorld) : vGlobalTau;
+        vec4 globalFog = globalFogTowards(vWorld - frame.eye, globalTau);
         fogged = radiance * globalFog.a + globalFog.rgb;
         fogged = fogged * vLocalFog.a + vLocalFog.rgb;
     }

@@ -7,7 +7,10 @@
 //      global_fog.glsl from the eye to the vertex (optical depth tau_g,
 //      interpolated across the triangle), T_g = exp(-tau_g) and
 //      S_g = L_fog(v) (1 - T_g) per fragment with the per-pixel phase
-//      functions of the fog colour (as global_fog.glsl);
+//      functions of the fog colour (as global_fog.glsl); with subtract
+//      volumes (frame.subtractActive) instead per fragment along the
+//      pixel's ray without their union (common/subtract.glsl: exact, the
+//      fragment lies in front of the opaque depth the union is known to);
 //   2. fog volumes and emitters per object, from the CPU (FogScene without
 //      the global fog): the renderer queries the fog from the eye to the 8
 //      corners of the object's world bounds, and each fragment interpolates
@@ -44,6 +47,7 @@ void main() {
 #include "common/sky_table.glsl"
 #include "common/shading.glsl"
 #include "common/froxel.glsl"
+#include "common/subtract.glsl"
 
 in float vGlobalTau;
 layout(location = 0) out vec4 outColour;
@@ -75,7 +79,9 @@ void main() {
         outColour = vec4(min(surface * fog.a + alpha * fog.rgb, vec3(frame.radianceCap)), alpha);
         return;
     }
-    vec4 globalFog = globalFogTowards(vWorld - frame.eye, vGlobalTau);
+    // With subtract volumes, per fragment along the pixel's ray without their union.
+    float globalTau = frame.subtractActive != 0 ? maskedGlobalFogDepthTo(ivec2(gl_FragCoord.xy), vWorld) : vGlobalTau;
+    vec4 globalFog = globalFogTowards(vWorld - frame.eye, globalTau);
     vec3 fogged = surface * globalFog.a + alpha * globalFog.rgb;
     vec4 local = cornerFogAt(vWorld);
     fogged = fogged * local.a + alpha * local.rgb;

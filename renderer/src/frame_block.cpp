@@ -162,6 +162,7 @@ FrameBlock makeFrameBlock(const Camera& camera, const CameraFrame& view, const P
     fb.sunTableColumns = float(in.sun.columns);
     fb.sunTableRows = float(in.sun.rows);
     fb.emitterCount = in.emitterCount;
+    fb.subtractActive = in.subtractActive ? 1 : 0;
     fb.moonTableColumns = in.moon.columns;
     fb.moonTableRows = in.moon.rows;
     auto band = [](const FrameSkyInput& sky) {

@@ -39,6 +39,8 @@ struct FrameBlockInputs {
     int width = 1;         ///< [px], after FrameDesc's defaults and clamps
     int height = 1;        ///< [px]
     int emitterCount = 0;  ///< emitters uploaded this frame (after validation)
+    /// Subtract volumes cut the fog this frame (subtract_pass.cpp).
+    bool subtractActive = false;
     FrameSkyInput sun;
     FrameSkyInput moon;
 };

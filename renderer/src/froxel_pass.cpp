@@ -2,7 +2,10 @@
 // over a grid fitted to the view (common/froxel.glsl; Wronski 2014,
 // Hillaire 2015):
 //  inject    (froxel_inject.glsl, compute) density of the global height fog,
-//            every box/ellipsoid volume and the emitters' in-scatter per
+//            every volume (box and ellipsoid ones in closed form; mesh add
+//            ones over the chords of each froxel column's ray, found first
+//            by mesh_volume_chords.glsl; subtract ones cutting the froxels
+//            whose sample lies inside) and the emitters' in-scatter per
 //            froxel in closed form over its slice, and the casting light's
 //            visibility (shadow maps x cloud shadows) at its sample point;
 //  integrate (froxel_integrate.glsl, compute) front to back per column,
@@ -16,7 +19,8 @@
 //         the shadow map (binding 5, unit 14), CloudBlock and the cloud
 //         shadow map (binding 4, unit 10), linear depth (unit 4), the
 //         state's volumes.
-// Writes: the FroxelBlock (binding 6) and the volumes' buffer (storage 3);
+// Writes: the FroxelBlock (binding 6), the volumes' buffer (storage 3), the
+//         mesh volumes' chords (storage 1; the meshes bound at 6 and 7);
 //         the grid's textures (image units 0-4); the colour through
 //         compositeTarget (apply).
 // GL state: compute dispatches with image barriers; apply binds units 11-13
@@ -32,6 +36,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 namespace aerial::renderer::detail {
 namespace {
@@ -81,6 +87,37 @@ void uploadFroxelVolumes(RendererResources& gpu, const std::vector<VolumeBlock>&
         glNamedBufferSubData(g.volumes, 0, GLsizeiptr(blocks.size() * sizeof(VolumeBlock)), blocks.data());
 }
 
+/// The chords of each froxel column's ray through each mesh add volume
+/// (mesh_volume_chords.glsl) into g.meshChords, bound at storage 1 for the
+/// injection (a 1-chord buffer when there are none).
+void findMeshChords(RendererResources& gpu, const FroxelBlock& block,
+                    const std::vector<std::pair<int, const RendererResources::FogMeshGpu*>>& meshes) {
+    RendererResources::Froxels& g = gpu.froxels;
+    const GLsizeiptr columns = GLsizeiptr(block.gridSize[0]) * block.gridSize[1];
+    const GLsizeiptr bytes = std::max<GLsizeiptr>(
+        GLsizeiptr(meshes.size()) * columns * kFroxelMeshChords * GLsizeiptr(2 * sizeof(float)), 16);
+    if (g.meshChords == 0 || g.meshChordCapacity < bytes) {
+        glDeleteBuffers(1, &g.meshChords);
+        glCreateBuffers(1, &g.meshChords);
+        glNamedBufferData(g.meshChords, bytes, nullptr, GL_DYNAMIC_COPY);
+        g.meshChordCapacity = bytes;
+    }
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kFroxelMeshChordStorageBinding, g.meshChords);
+    if (meshes.empty()) return;
+    const GLuint program = gpu.shaders.program(Pass::MeshVolumeChords);
+    glUseProgram(program);
+    for (std::size_t m = 0; m < meshes.size(); ++m) {
+        const RendererResources::FogMeshGpu& mesh = *meshes[m].second;
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshPositionStorageBinding, mesh.vertexBuffer);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshIndexStorageBinding, mesh.indexBuffer);
+        glProgramUniform1i(program, 0, meshes[m].first);
+        glProgramUniform1i(program, 1, int(m));
+        glProgramUniform1i(program, 2, int(mesh.indexCount / 3));
+        glDispatchCompute(GLuint((block.gridSize[0] + 7) / 8), GLuint((block.gridSize[1] + 7) / 8), 1);
+    }
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
 bool injectRuns(const FrameContext& f) {
     if (f.desc.fogMode != FogMode::Volumetric) return false;
     return (f.desc.passes.globalFog && f.block.fogDensity > 0.0f) ||
@@ -91,11 +128,23 @@ bool injectRuns(const FrameContext& f) {
 void injectDraw(FrameContext& f) {
     RendererResources& gpu = f.gpu;
     std::vector<VolumeBlock> blocks;
+    // (index in blocks, uploaded mesh) of the mesh add volumes
+    std::vector<std::pair<int, const RendererResources::FogMeshGpu*>> meshes;
     if (f.desc.passes.volumes) {
         blocks.reserve(f.state.volumes.size());
         for (const FogVolume& v : f.state.volumes) {
             VolumeBlock b;
-            if (packVolumeBlock(prepareFogVolume(v), b)) blocks.push_back(b);
+            const PreparedFogVolume p = prepareFogVolume(v);
+            if (!packVolumeBlock(p, b)) continue;
+            if (p.shape == FogVolumeShape::Mesh) {
+                // Mesh subtract volumes reach the froxels through the
+                // per-pixel union (subtract_pass.cpp); add ones by chords.
+                const RendererResources::FogMeshGpu* mesh =
+                    p.blend == FogVolumeBlend::Add ? fogMeshOnGpu(gpu, p.mesh) : nullptr;
+                if (mesh == nullptr) continue;
+                meshes.emplace_back(int(blocks.size()), mesh);
+            }
+            blocks.push_back(b);
         }
     }
     FroxelBlock block =
@@ -137,6 +186,7 @@ void injectDraw(FrameContext& f) {
     uploadFroxelVolumes(gpu, blocks);
     glBindBufferBase(GL_UNIFORM_BUFFER, kFroxelBinding, gpu.froxels.block);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kFroxelVolumeStorageBinding, gpu.froxels.volumes);
+    findMeshChords(gpu, block, meshes);
 
     glUseProgram(gpu.shaders.program(Pass::FroxelInject));
     glBindImageTexture(0, gpu.froxels.medium, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
@@ -251,6 +301,7 @@ void destroyFroxelResources(RendererResources& gpu) {
     glDeleteTextures(7, textures);
     glDeleteBuffers(1, &g.block);
     glDeleteBuffers(1, &g.volumes);
+    glDeleteBuffers(1, &g.meshChords);
     g = RendererResources::Froxels{};
 }
 

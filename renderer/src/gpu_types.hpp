@@ -68,7 +68,9 @@ struct FrameBlock {
     std::int32_t emitterCount = 0;
     std::int32_t moonTableColumns = 0;
     std::int32_t moonTableRows = 0;
-    std::int32_t padCounts = 0;
+    /// 1 when the frame's subtract intervals (subtract_pass.cpp) are in the
+    /// SubtractIntervals buffer (storage 4) for the fog passes to read, 0 else.
+    std::int32_t subtractActive = 0;
     Vec3 starAxisX;
     float starIlluminance = 0.0f;  ///< 0: no stars
     Vec3 starAxisY;
@@ -160,7 +162,7 @@ static_assert(sizeof(FrameBlock) == 608);
 struct VolumeBlock {
     Mat4 worldFromObject;      ///< the hull: position + rotation * halfExtents
     Vec3 objectFromWorldRow0;  ///< rows of S^-1 R^T
-    float shape = 0.0f;        ///< 0 box, 1 ellipsoid
+    float shape = 0.0f;        ///< 0 box, 1 ellipsoid, 2 mesh
     Vec3 objectFromWorldRow1;
     float density = 0.0f;  ///< b_v [1/m]
     Vec3 objectFromWorldRow2;
@@ -170,7 +172,7 @@ struct VolumeBlock {
     Vec3 gradientDirection;       ///< unit
     float colourMode = 0.0f;      ///< 0 sky, 1 tinted, 2 custom
     Vec3 colour;
-    float padColour = 0.0f;
+    float blend = 0.0f;  ///< 0 adds fog, 1 subtracts it (FogVolumeBlend)
 };
 static_assert(offsetof(VolumeBlock, objectFromWorldRow0) == 64);
 static_assert(offsetof(VolumeBlock, shape) == 76);
@@ -183,6 +185,7 @@ static_assert(offsetof(VolumeBlock, gradientOffset) == 124);
 static_assert(offsetof(VolumeBlock, gradientDirection) == 128);
 static_assert(offsetof(VolumeBlock, colourMode) == 140);
 static_assert(offsetof(VolumeBlock, colour) == 144);
+static_assert(offsetof(VolumeBlock, blend) == 156);
 static_assert(sizeof(VolumeBlock) == 160);
 
 /// shaders/common/object.glsl, ObjectBlock (binding 3; scene and
@@ -428,5 +431,30 @@ constexpr unsigned kFroxelSkyUnit = 12;
 constexpr unsigned kFroxelOwnUnit = 13;
 /// The previous frame's froxel visibility (froxel_inject.glsl, compute).
 constexpr unsigned kFroxelHistoryUnit = 15;
+/// Subtract volumes (subtract_pass.cpp, common/subtract.glsl), shader
+/// storage: the union of the subtract volumes' intervals per pixel (K = 4
+/// pairs, vec4[2] per pixel; read by the fog passes), the box and
+/// ellipsoid subtract volumes (VolumeBlock[]), and the mesh subtract
+/// volumes' crossings per pixel (a count, then kSubtractCrossings slots).
+constexpr unsigned kSubtractIntervalStorageBinding = 4;
+constexpr unsigned kSubtractVolumeStorageBinding = 5;
+constexpr unsigned kSubtractCountStorageBinding = 6;
+constexpr unsigned kSubtractCrossingStorageBinding = 7;
+/// Disjoint subtract intervals kept per pixel (subtract_resolve.glsl).
+constexpr int kSubtractIntervals = 4;
+/// Mesh subtract crossings kept per pixel (subtract_crossings.glsl).
+constexpr int kSubtractCrossings = 16;
+/// The volumetric fog's mesh add volumes (mesh_volume_chords.glsl): the
+/// chords of each froxel column's ray (kFroxelMeshChords vec2 per mesh
+/// volume and column), and the mesh's positions and indices bound as
+/// storage while its chords are found.
+constexpr unsigned kFroxelMeshChordStorageBinding = 1;
+constexpr unsigned kMeshPositionStorageBinding = 6;
+constexpr unsigned kMeshIndexStorageBinding = 7;
+constexpr int kFroxelMeshChords = 8;
+/// A mesh add volume's accumulation target (R: sum of +-F, G: sum of the
+/// signs; mesh_volume_accumulate.glsl), read by its composite on the
+/// base-colour unit (free for every pass).
+constexpr unsigned kMeshVolumeAccumulationUnit = kBaseColourUnit;
 
 }  // namespace aerial::renderer::detail

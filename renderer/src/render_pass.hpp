@@ -31,7 +31,9 @@
 
 #include <epoxy/gl.h>
 
+#include <cstdint>
 #include <memory>
+#include <unordered_map>
 #include <vector>
 
 namespace aerial {
@@ -99,6 +101,9 @@ struct RendererResources {
         GLuint litSky = 0, sky = 0, own = 0;
         GLuint block = 0, volumes = 0;
         GLsizeiptr volumeCapacity = 0;  ///< [bytes]
+        /// The mesh add volumes' chords per froxel column (storage 1).
+        GLuint meshChords = 0;
+        GLsizeiptr meshChordCapacity = 0;  ///< [bytes]
         /// Temporal: the visibility of the last two frames (R32F, ping-pong),
         /// and what the last frame was.
         GLuint history[2] = {};
@@ -109,6 +114,32 @@ struct RendererResources {
         glm::dvec3 eye{0.0}, forward{0.0, 0.0, -1.0};
         double timeHours = 0.0;
     } froxels;
+    /// Mesh fog volumes' triangles (mesh_volume_pass.cpp): uploaded once
+    /// per FogMesh (keyed by its address, the weak pointer telling a new
+    /// mesh at a reused address apart), released after a frame that did not
+    /// use them. Positions in object space (float), 32-bit indices.
+    struct FogMeshGpu {
+        std::weak_ptr<const FogMesh> mesh;
+        GLuint vertexArray = 0, vertexBuffer = 0, indexBuffer = 0;
+        GLsizei indexCount = 0;
+        std::uint64_t lastFrame = 0;  ///< frameNumber of its last use
+    };
+    std::unordered_map<const FogMesh*, FogMeshGpu> fogMeshes;
+    std::uint64_t frameNumber = 0;  ///< frames rendered (for fogMeshes)
+    /// Subtract volumes (subtract_pass.cpp), storage buffers sized for
+    /// width x height pixels: the per-pixel union intervals (2 vec4), the
+    /// crossing counts (2 statistics, then one per pixel), the crossings
+    /// (kSubtractCrossings per pixel, only with mesh subtract volumes) and
+    /// the box/ellipsoid subtract volumes (VolumeBlock[]).
+    struct Subtract {
+        int width = 0, height = 0;
+        GLuint intervals = 0, counts = 0, crossings = 0, volumes = 0;
+        GLsizeiptr crossingBytes = 0, volumeCapacity = 0;
+    } subtract;
+    /// A mesh add volume's accumulation (RG32F) and its target
+    /// (mesh_volume_pass.cpp), created at the first mesh volume.
+    GLuint meshAccumulation = 0, meshAccumulationTarget = 0;
+    int meshAccumulationWidth = 0, meshAccumulationHeight = 0;
 };
 
 /// One frame as the passes see it.
@@ -158,6 +189,7 @@ struct RenderPass {
 // The passes, in the order of renderer.hpp (each in its own file).
 extern const RenderPass kScenePass;        // scene_pass.cpp
 extern const RenderPass kSkyPass;          // sky_pass.cpp
+extern const RenderPass kSubtractPass;     // subtract_pass.cpp
 extern const RenderPass kGlobalFogPass;    // global_fog_pass.cpp
 extern const RenderPass kVolumePass;       // volume_pass.cpp
 extern const RenderPass kEmitterPass;      // emitter_pass.cpp
@@ -250,8 +282,31 @@ void prepareShadowResources(RendererResources& gpu, int resolution, int layers);
 void destroyShadowResources(RendererResources& gpu);
 
 /// A prepared fog volume as the GPU takes it (volume_pass.cpp); false when
-/// it is invalid or empty (nothing to draw).
+/// it is invalid or empty (nothing to draw; a valid subtract volume is
+/// never empty: its density is unused).
 bool packVolumeBlock(const PreparedFogVolume& volume, VolumeBlock& block);
+
+/// Whether subtract volumes cut the fog this frame (no GL): analytic fog,
+/// the volume pass on and a valid subtract volume in the state.
+bool frameHasSubtractVolumes(const PresetState& state, const FrameDesc& frame);
+/// Reads the subtract pass's overflow counters into the stats (after the
+/// frame's passes; a wait for the GPU, only in frames with subtract volumes).
+void readSubtractStats(const RendererResources& gpu, RenderStats& stats);
+void destroySubtractResources(RendererResources& gpu);
+
+/// A mesh volume's triangles on the GPU, uploaded on first use
+/// (mesh_volume_pass.cpp); null when the mesh is empty.
+const RendererResources::FogMeshGpu* fogMeshOnGpu(RendererResources& gpu,
+                                                  const std::shared_ptr<const FogMesh>& mesh);
+/// Releases the meshes the frame numbered gpu.frameNumber did not use.
+void releaseUnusedFogMeshes(RendererResources& gpu);
+/// Draws one mesh add volume (accumulate, then composite over the colour);
+/// called by the volume pass in its back-to-front order, inside its
+/// beginComposite; false when nothing was drawn (no mesh, off screen). Leaves compositeTarget bound and blending as
+/// beginComposite(GL_ONE, GL_SRC_ALPHA); changes program, vertex array,
+/// culling, depth test and clamp (the caller sets them per volume).
+bool drawMeshVolume(FrameContext& frame, const PreparedFogVolume& volume, const VolumeBlock& block);
+void destroyMeshVolumeResources(RendererResources& gpu);
 
 /// The volumetric fog's grid for a frame of width x height pixels (no GL):
 /// FroxelSettings clamped, the far depth at most the camera's, the casting

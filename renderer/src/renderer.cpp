@@ -1,7 +1,7 @@
 // renderer.cpp — the Renderer: its GL resources (targets, buffers, the
 // uploaded scene and sky tables) and the frame as a list of passes (one
 // file each: scene_pass.cpp, sky_pass.cpp, global_fog_pass.cpp,
-// volume_pass.cpp, emitter_pass.cpp, transparent_pass.cpp,
+// subtract_pass.cpp, volume_pass.cpp (mesh_volume_pass.cpp), emitter_pass.cpp, transparent_pass.cpp,
 // particle_pass.cpp, cloud_shadow_pass.cpp, cloud_pass.cpp,
 // shadow_map_pass.cpp, froxel_pass.cpp; render_pass.hpp for their
 // contract). See
@@ -38,10 +38,10 @@ using detail::GpuMesh;
 /// The frame, in order (renderer.hpp).
 const detail::RenderPass* const kFramePasses[] = {
     &detail::kCloudShadowPass,  &detail::kShadowMapPass,       &detail::kScenePass,
-    &detail::kSkyPass,          &detail::kCloudPass,           &detail::kGlobalFogPass,
-    &detail::kVolumePass,       &detail::kEmitterPass,         &detail::kFroxelInjectPass,
-    &detail::kFroxelIntegratePass, &detail::kFroxelApplyPass,  &detail::kTransparentPass,
-    &detail::kParticlePass,
+    &detail::kSkyPass,          &detail::kCloudPass,           &detail::kSubtractPass,
+    &detail::kGlobalFogPass,    &detail::kVolumePass,          &detail::kEmitterPass,
+    &detail::kFroxelInjectPass, &detail::kFroxelIntegratePass, &detail::kFroxelApplyPass,
+    &detail::kTransparentPass,  &detail::kParticlePass,
 };
 
 }  // namespace
@@ -166,6 +166,8 @@ Renderer::~Renderer() {
     detail::destroyCloudResources(s);
     detail::destroyShadowResources(s);
     detail::destroyFroxelResources(s);
+    detail::destroySubtractResources(s);
+    detail::destroyMeshVolumeResources(s);
     detail::destroyMesh(s.hull);
     glDeleteTextures(1, &s.whiteTexture);
     glDeleteVertexArrays(1, &s.spriteArray);
@@ -264,6 +266,7 @@ void Renderer::Impl::render(const Camera& camera, const PresetState& state, cons
     inputs.width = w;
     inputs.height = h;
     inputs.emitterCount = stats.emitters;
+    inputs.subtractActive = detail::frameHasSubtractVolumes(state, frameDesc);
     auto skyInput = [](const detail::SkyTextures& sky, const SkyTable& table) {
         detail::FrameSkyInput in;
         in.table = &table;
@@ -360,9 +363,13 @@ void Renderer::Impl::render(const Camera& camera, const PresetState& state, cons
     frame.clouds = &clouds;
     frame.cloudBlock = cloudBlock;
     frame.shadowBlock = shadowBlock;
+    ++frameNumber;
     timer.beginFrame(frameDesc.gpuTimers);
     for (const detail::RenderPass* pass : kFramePasses) timer.run(*pass, frame);
     timer.endFrame(stats);
+    if (block.subtractActive != 0) detail::readSubtractStats(*this, stats);
+    // Meshes that no volume of this frame drew are released.
+    detail::releaseUnusedFogMeshes(*this);
     if (!frame.cloudsDrawn()) detail::forgetCloudHistory(*this);  // the next amortised frame starts afresh
     if (!stats.froxels.drawn) froxels.valid = false;              // likewise the volumetric fog's
 }

@@ -247,6 +247,16 @@ const char* ShaderLibrary::fileOf(Pass pass) {
             return "froxel_integrate.glsl";
         case Pass::FroxelApply:
             return "froxel_apply.glsl";
+        case Pass::SubtractCrossings:
+            return "subtract_crossings.glsl";
+        case Pass::SubtractResolve:
+            return "subtract_resolve.glsl";
+        case Pass::MeshVolumeAccumulate:
+            return "mesh_volume_accumulate.glsl";
+        case Pass::MeshVolumeComposite:
+            return "mesh_volume_composite.glsl";
+        case Pass::MeshVolumeChords:
+            return "mesh_volume_chords.glsl";
         case Pass::Count:
             break;
     }
@@ -257,7 +267,8 @@ bool ShaderLibrary::build(const ShaderReader& reader, std::string& log) {
     bool all = true;
     for (int k = 0; k < static_cast<int>(Pass::Count); ++k) {
         const Pass pass = static_cast<Pass>(k);
-        const bool compute = pass == Pass::FroxelInject || pass == Pass::FroxelIntegrate;
+        const bool compute = pass == Pass::FroxelInject || pass == Pass::FroxelIntegrate ||
+                             pass == Pass::SubtractResolve || pass == Pass::MeshVolumeChords;
         const GLuint program = compute ? buildComputeProgram(fileOf(pass), reader, log)
                                        : buildProgram(fileOf(pass), reader, log);
         if (program == 0) {

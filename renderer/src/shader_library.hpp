@@ -59,6 +59,11 @@ enum class Pass {
     FroxelInject,     ///< compute
     FroxelIntegrate,  ///< compute
     FroxelApply,
+    SubtractCrossings,
+    SubtractResolve,  ///< compute
+    MeshVolumeAccumulate,
+    MeshVolumeComposite,
+    MeshVolumeChords,  ///< compute
     Count
 };
 

@@ -1,8 +1,11 @@
-// volume_pass.cpp — pass 4: the fog volumes, back to front, each a hull
-// (the unit cube in object space) whose fragments integrate the volume's
-// density along the pixel's clipped ray (shaders/fog_volume.glsl, or
-// fog_volume_marched.glsl for VolumeMethod::RayMarched64):
-// L <- L T_v + C_v (1 - T_v).
+// volume_pass.cpp — pass 4: the fog volumes that add fog, back to front,
+// each a hull (the unit cube in object space) whose fragments integrate the
+// volume's density along the pixel's clipped ray (shaders/fog_volume.glsl,
+// or fog_volume_marched.glsl for VolumeMethod::RayMarched64):
+// L <- L T_v + C_v (1 - T_v). A mesh volume takes its place in the same
+// order, drawn by drawMeshVolume (mesh_volume_pass.cpp). Subtract volumes
+// draw nothing here: subtract_pass.cpp made their union, which every
+// volume's integral leaves out (common/subtract.glsl).
 //
 // Reads:  the state's volumes (core's prepareFogVolume, packed by
 //         prepareVolume), FrameBlock, linear depth (unit 4), the depth
@@ -10,7 +13,8 @@
 // Writes: the colour, through compositeTarget (no depth writes); the
 //         VolumeBlock per volume; RenderStats::volumesDrawn, volumesDrawnInside.
 // GL state: beginComposite with glBlendFunc(GL_ONE, GL_SRC_ALPHA) for
-//         colour (alpha kept); depth clamp and face culling on; per volume
+//         colour (alpha kept); depth clamp and face culling on (set again
+//         after each mesh volume, which changes them); per volume
 //         either back faces without depth test (the eye may be inside) or
 //         front faces depth-tested with GL_LEQUAL; all three off again and
 //         endComposite on exit.
@@ -28,6 +32,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace aerial::renderer::detail {
 namespace {
@@ -41,6 +46,8 @@ double distanceToBox(const glm::dvec3& p, const glm::dvec3& lo, const glm::dvec3
 /// (its validity rules and sanitising) packed for the GPU.
 struct PreparedVolume {
     VolumeBlock block;
+    PreparedFogVolume mesh;  ///< a mesh volume's preparation (shape Mesh); unused otherwise
+    bool isMesh = false;
     double sortDistance = 0.0;
     std::size_t index = 0;
     bool inside = false;
@@ -48,7 +55,8 @@ struct PreparedVolume {
 
 bool prepareVolume(const FogVolume& v, std::size_t index, const CameraFrame& camera,
                    double nearCornerDistance, PreparedVolume& out) {
-    const PreparedFogVolume p = prepareFogVolume(v);
+    if (v.blend == FogVolumeBlend::Subtract) return false;
+    PreparedFogVolume p = prepareFogVolume(v);
     if (!packVolumeBlock(p, out.block)) return false;
 
     out.sortDistance = distanceToBox(camera.eye, p.boundsMin, p.boundsMax);
@@ -60,6 +68,8 @@ bool prepareVolume(const FogVolume& v, std::size_t index, const CameraFrame& cam
     const double objectDistance = glm::length(o - glm::clamp(o, glm::dvec3(-1.0), glm::dvec3(1.0)));
     const glm::dvec3 s = v.halfExtents;
     out.inside = std::min({s.x, s.y, s.z}) * objectDistance <= 1.01 * nearCornerDistance;
+    out.isMesh = p.shape == FogVolumeShape::Mesh;
+    if (out.isMesh) out.mesh = std::move(p);
     return true;
 }
 
@@ -87,12 +97,17 @@ void draw(FrameContext& f) {
         return a.sortDistance > b.sortDistance;
     });
     beginComposite(gpu, GL_ONE, GL_SRC_ALPHA);
-    glUseProgram(gpu.shaders.program(
-        f.desc.volumeMethod == VolumeMethod::RayMarched64 ? Pass::FogVolumeMarched : Pass::FogVolume));
-    glBindVertexArray(gpu.hull.vertexArray);
-    glEnable(GL_DEPTH_CLAMP);  // hull parts beyond the far plane still rasterise (at depth 1)
-    glEnable(GL_CULL_FACE);
+    const GLuint hullProgram = gpu.shaders.program(
+        f.desc.volumeMethod == VolumeMethod::RayMarched64 ? Pass::FogVolumeMarched : Pass::FogVolume);
     for (const PreparedVolume& v : volumes) {
+        if (v.isMesh) {
+            if (drawMeshVolume(f, v.mesh, v.block)) ++f.stats.volumesDrawn;
+            continue;
+        }
+        glUseProgram(hullProgram);
+        glBindVertexArray(gpu.hull.vertexArray);
+        glEnable(GL_DEPTH_CLAMP);  // hull parts beyond the far plane still rasterise (at depth 1)
+        glEnable(GL_CULL_FACE);
         if (v.inside) {
             // Back faces, no depth test: every ray that meets the hull
             // leaves it through exactly one back face.
@@ -118,14 +133,15 @@ void draw(FrameContext& f) {
 }  // namespace
 
 bool packVolumeBlock(const PreparedFogVolume& p, VolumeBlock& block) {
-    if (!p.valid || !(p.density > 0.0)) return false;
+    const bool subtract = p.blend == FogVolumeBlend::Subtract;
+    if (!p.valid || (!subtract && !(p.density > 0.0))) return false;
     glm::dmat4 worldFromObject(1.0);
     for (int c = 0; c < 3; ++c) worldFromObject[c] = glm::dvec4(p.worldFromObject[c], 0.0);
     worldFromObject[3] = glm::dvec4(p.position, 1.0);
 
     block.worldFromObject = toMat4(worldFromObject);
     block.objectFromWorldRow0 = toVec3(p.row0);
-    block.shape = p.shape == FogVolumeShape::Ellipsoid ? 1.0f : 0.0f;
+    block.shape = p.shape == FogVolumeShape::Mesh ? 2.0f : p.shape == FogVolumeShape::Ellipsoid ? 1.0f : 0.0f;
     block.objectFromWorldRow1 = toVec3(p.row1);
     block.density = static_cast<float>(p.density);
     block.objectFromWorldRow2 = toVec3(p.row2);
@@ -135,6 +151,7 @@ bool packVolumeBlock(const PreparedFogVolume& p, VolumeBlock& block) {
     block.gradientDirection = toVec3(p.gradient);
     block.colourMode = static_cast<float>(static_cast<int>(p.colourMode));
     block.colour = toVec3(p.colour);
+    block.blend = subtract ? 1.0f : 0.0f;
     return true;
 }
 

@@ -36,6 +36,8 @@
 //                       band = (bandElevation [rad], bandShare,
 //                       shadowElevation [rad]), shadowWidth [rad], shadowShare
 //   emitterCount        emitters in the EmitterBlock (common/emitters.glsl)
+//   subtractActive      1 when subtract volumes cut the fog this frame: the
+//                       per-pixel intervals of common/subtract.glsl are valid
 //   starAxisX, starAxisY, starPole   the celestial frame (world, unit)
 //   starIlluminance     the brightest star's illuminance (0 = no stars)
 //   starSigma           a star's Gaussian radius [rad]
@@ -93,7 +95,7 @@ layout(std140, binding = 0) uniform FrameBlock {
     int emitterCount;
     int moonTableColumns;
     int moonTableRows;
-    int padCounts;
+    int subtractActive;
     vec3 starAxisX;
     float starIlluminance;
     vec3 starAxisY;

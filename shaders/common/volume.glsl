@@ -22,7 +22,7 @@ layout(std140, binding = 1) uniform VolumeBlock {
     vec3 gradientDirection;    // unit g
     float colourMode;          // 0 sky, 1 tinted, 2 custom
     vec3 colour;
-    float padColour;
+    float blend;                // 0 add, 1 subtract
 } volume;
 
 #ifdef AERIAL_VERTEX_SHADER

@@ -18,6 +18,9 @@
 // of the ray (T(x) = exp(-sigma x)), checked against the rendered shaft.
 #include "gl_fixture.hpp"
 
+#include "test_meshes.hpp"
+
+#include <aerial/fog_mesh.hpp>
 #include <aerial/preset.hpp>
 #include <aerial/renderer/scene.hpp>
 
@@ -139,6 +142,36 @@ TEST_F(Froxels, ConvergesToTheAnalyticInsideAVolume) {
         convergence("inside a volume", makeCamera({0, 10, -20}, {10, 6, -100}, 1500.0, 1.1), s, 128);
     EXPECT_LT(e.mean, 0.01);
     EXPECT_LT(e.p99, 0.05);
+}
+
+TEST_F(Froxels, ConvergesToTheAnalyticWithMeshAndSubtractVolumes) {
+    // A torus mesh volume (the eye inside its tube: chords behind and ahead)
+    // and a subtract box through it and the global fog.
+    PresetState s = baseState();
+    s.environment.fog = {0.002, 0.01, 0.0};
+    const TriangleMesh torus = torusMesh(60.0, 15.0);
+    std::string error;
+    FogVolume v;
+    v.shape = FogVolumeShape::Mesh;
+    v.mesh = "torus.gltf";
+    v.meshData = FogMesh::build(torus.positions, torus.indices, error);
+    ASSERT_TRUE(v.meshData) << error;
+    v.position = {0.0, 10.0, -80.0};
+    v.density = 0.02;
+    v.falloff = 0.05;
+    v.halfExtents = {1.0, 1.0, 1.0};
+    s.volumes.push_back(v);
+    FogVolume room;
+    room.shape = FogVolumeShape::Box;
+    room.blend = FogVolumeBlend::Subtract;
+    room.position = {-20.0, 8.0, -60.0};
+    room.halfExtents = {10.0, 8.0, 30.0};
+    s.volumes.push_back(room);
+    const Errors e =
+        convergence("mesh + subtract volumes", makeCamera({60, 10, -80}, {20, 6, -140}, 1500.0, 1.1), s, 128);
+    EXPECT_LT(e.mean, 0.01);
+    EXPECT_LT(e.p99, 0.05);
+    EXPECT_EQ(renderer_->stats().froxels.volumes, 2);
 }
 
 /// Light shafts: a roof 20 m up over the first ~60 m of the view, a sun

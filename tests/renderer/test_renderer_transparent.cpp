@@ -151,6 +151,27 @@ TEST_F(Transparent, GlobalFogPerVertexMatchesTheCpuQuery) {
     EXPECT_LE(fine.maxError, 1e-3);    // 0.5 m cells: float precision
 }
 
+TEST_F(Transparent, GlobalFogWithoutTheSubtractUnionMatchesTheCpuQuery) {
+    // A subtract box (fog-free room) between the camera and the pane, over
+    // part of the view: the global fog is then taken per fragment along the
+    // pixel's ray without the union (common/subtract.glsl), exact.
+    PresetState air = baseFrame();
+    air.environment.fog.density = 0.03;
+    air.environment.fog.falloff = 0.05;
+    air.environment.fog.baseHeight = 0.0;
+    FogVolume room;
+    room.shape = FogVolumeShape::Box;
+    room.blend = FogVolumeBlend::Subtract;
+    room.position = {-2.0, 3.0, -8.0};
+    room.halfExtents = {4.0, 3.0, 6.0};
+    room.rotation = glm::angleAxis(0.4, glm::dvec3(0.0, 1.0, 0.0));
+    air.volumes.push_back(room);
+    const Pane pane{-5.0, 5.0, 0.5, 8.5, -20.0};
+    const Result r = run("pane behind a subtract room, global fog", air, pane, 1, {1.0, 0.8, 0.6});
+    EXPECT_LT(r.meanT, 0.8);
+    EXPECT_LE(r.maxError, 1e-3);
+}
+
 TEST_F(Transparent, VolumeAndEmitterFogFromTheBoundsCornersMatchesTheCpuQuery) {
     PresetState air = baseFrame();
     // A rotated box volume with a tilted gradient between the camera and the

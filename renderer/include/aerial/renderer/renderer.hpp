@@ -22,8 +22,15 @@
 //   2. sky where no geometry is (a full-screen triangle at the far plane,
 //      depth-tested): both tables with per-pixel phase functions, sun and
 //      moon discs;
-//   3. global fog: L <- L T_g + L_fog (1 - T_g);
-//   4. fog volumes, back to front: L <- L T_v + C_v (1 - T_v);
+//   2c. (subtract volumes only, analytic fog) the union of the subtract
+//      volumes along each pixel's ray, up to 4 disjoint intervals a pixel
+//      (subtract_pass.cpp; RenderStats counts the pixels beyond);
+//   3. global fog: L <- L T_g + L_fog (1 - T_g), its integral without the
+//      subtract union;
+//   4. fog volumes that add fog, back to front: L <- L T_v + C_v (1 - T_v),
+//      each integral without the subtract union; a mesh volume is its
+//      faces' signed antiderivatives summed per pixel (back faces minus
+//      front faces, polygonal fog volumes), then composited in its place;
 //   5. emitters: L <- L + S_e;
 //   6. transparent (alpha-blend) meshes, back to front by the distance from
 //      the eye to the centre of their world bounds (farthest first; back
@@ -31,7 +38,9 @@
 //      same integral as pass 3 for the optical depth, its colour per pixel
 //      with the phase functions), fog volumes and emitters per object from the
 //      CPU fog query (FogScene) at the 8 corners of the mesh's world bounds,
-//      interpolated trilinearly per fragment (Wenzel 2006);
+//      interpolated trilinearly per fragment (Wenzel 2006); with subtract
+//      volumes the global fog per fragment instead, along the pixel's ray
+//      without their union (the soft particles too);
 //   0. (clouds only) the cloud shadow map: optical depth from the ground
 //      towards the sun through the cloud layer (cloud_shadow.glsl); the
 //      scene, transparent and particle lighting multiply the sun and moon by
@@ -305,6 +314,7 @@ struct PassTimes {
     double scene = 0.0;
     double sky = 0.0;
     double globalFog = 0.0;
+    double subtract = 0.0;  ///< the subtract volumes' per-pixel intervals
     double volumes = 0.0;
     double emitters = 0.0;
     double transparent = 0.0;
@@ -316,8 +326,8 @@ struct PassTimes {
     double froxelIntegrate = 0.0;  ///< volumetric fog: front-to-back integration
     double froxelApply = 0.0;      ///< volumetric fog: composited over the frame
     double total() const {
-        return scene + sky + globalFog + volumes + emitters + transparent + particles + cloudShadow + clouds +
-               shadowMap + froxelInject + froxelIntegrate + froxelApply;
+        return scene + sky + globalFog + subtract + volumes + emitters + transparent + particles +
+               cloudShadow + clouds + shadowMap + froxelInject + froxelIntegrate + froxelApply;
     }
 };
 
@@ -383,6 +393,18 @@ struct RenderStats {
     ShadowMapStats shadowMap;
     int volumesDrawn = 0;
     int volumesDrawnInside = 0;  ///< hulls drawn as back faces without depth test
+    int meshVolumesDrawn = 0;    ///< mesh add volumes (also counted in volumesDrawn)
+    /// Subtract volumes in this frame's per-pixel union (subtract_pass.cpp:
+    /// all of them with analytic fog; in volumetric fog the mesh ones, the
+    /// froxels testing box and ellipsoid ones themselves).
+    int subtractVolumes = 0;
+    /// Pixels whose ray met more than kSubtractCrossings (16) faces of mesh
+    /// subtract volumes (the rest are dropped: that pixel's union is wrong).
+    int subtractCrossingOverflowPixels = 0;
+    /// Pixels whose subtract union has more than 4 disjoint stretches (the
+    /// 4th is extended over the rest, removing the fog between them too) or
+    /// more than 48 interval ends.
+    int subtractIntervalOverflowPixels = 0;
     int emitters = 0;
     int glErrors = 0;           ///< GL errors seen (each also logged)
     int transparentDrawn = 0;   ///< alpha-blended meshes drawn
