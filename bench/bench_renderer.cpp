@@ -134,6 +134,7 @@ void DefaultScene720p(benchmark::State& state) {
         sum.scene += t.scene;
         sum.sky += t.sky;
         sum.globalFog += t.globalFog;
+        sum.subtract += t.subtract;
         sum.volumes += t.volumes;
         sum.emitters += t.emitters;
         sum.transparent += t.transparent;
@@ -157,6 +158,7 @@ void DefaultScene720p(benchmark::State& state) {
         state.counters[p + "scene"] = t.scene / n;
         state.counters[p + "sky"] = t.sky / n;
         state.counters[p + "fog"] = t.globalFog / n;
+        state.counters[p + "subtract"] = t.subtract / n;
         state.counters[p + "volumes"] = t.volumes / n;
         state.counters[p + "emitters"] = t.emitters / n;
         state.counters[p + "transp"] = t.transparent / n;

@@ -45,6 +45,7 @@ void Editor::drawStatusBar() {
                                                          {"scene", t.scene},
                                                          {"sky", t.sky},
                                                          {"clouds", t.clouds},
+                                                         {"subtract volumes", t.subtract},
                                                          {"global fog", t.globalFog},
                                                          {"fog volumes", t.volumes},
                                                          {"emitters", t.emitters},
@@ -116,14 +117,15 @@ void Editor::printBench() const {
         frames_.benchSolveMs.size(), passMedian([](const renderer::PassTimes& t) { return t.total(); }),
         frames_.benchPasses.size());
     std::printf(
-        "    scene %.2f  sky %.2f  clouds %.2f  cloud shadow %.2f  shadow maps %.2f  global fog %.2f  "
-        "volumes %.2f  "
+        "    scene %.2f  sky %.2f  clouds %.2f  cloud shadow %.2f  shadow maps %.2f  subtract %.2f  "
+        "global fog %.2f  volumes %.2f  "
         "emitters %.2f  froxel inject %.2f  integrate %.2f  apply %.2f  transparent %.2f  particles %.2f\n",
         passMedian([](const renderer::PassTimes& t) { return t.scene; }),
         passMedian([](const renderer::PassTimes& t) { return t.sky; }),
         passMedian([](const renderer::PassTimes& t) { return t.clouds; }),
         passMedian([](const renderer::PassTimes& t) { return t.cloudShadow; }),
         passMedian([](const renderer::PassTimes& t) { return t.shadowMap; }),
+        passMedian([](const renderer::PassTimes& t) { return t.subtract; }),
         passMedian([](const renderer::PassTimes& t) { return t.globalFog; }),
         passMedian([](const renderer::PassTimes& t) { return t.volumes; }),
         passMedian([](const renderer::PassTimes& t) { return t.emitters; }),
