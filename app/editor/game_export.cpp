@@ -75,8 +75,8 @@ bool GameExport::start(const Preset& preset, const std::string& directory, const
         if (v.shape != FogVolumeShape::Mesh || !v.meshData) continue;
         fs::create_directories(fs::path(directory) / "meshes", ec);
         const std::string relative = "meshes/" + v.id + ".gltf";
-        const std::string failure =
-            detail::writeFileAtomically((fs::path(directory) / relative).string(), fogMeshToGltf(*v.meshData, v.id));
+        const std::string failure = detail::writeFileAtomically((fs::path(directory) / relative).string(),
+                                                                fogMeshToGltf(*v.meshData, v.id));
         if (!failure.empty()) {
             error = "cannot write " + relative + ": " + failure;
             return false;

@@ -421,8 +421,8 @@ int rebaseMeshPaths(Preset& preset, const std::string& fromFolder, const std::st
     const fs::path to = toFolder.empty() ? fs::path() : fs::absolute(toFolder, ec);
     for (FogVolume& v : preset.volumes) {
         if (v.mesh.empty() || (to.empty() && fs::path(v.mesh).is_absolute())) continue;
-        const fs::path absolute =
-            fs::path(v.mesh).is_absolute() ? fs::path(v.mesh).lexically_normal() : (from / v.mesh).lexically_normal();
+        const fs::path absolute = fs::path(v.mesh).is_absolute() ? fs::path(v.mesh).lexically_normal()
+                                                                 : (from / v.mesh).lexically_normal();
         const fs::path relative = to.empty() ? fs::path() : absolute.lexically_relative(to);
         const std::string rebased = relative.empty() ? absolute.generic_string() : relative.generic_string();
         if (rebased != v.mesh) {

@@ -131,11 +131,13 @@ struct FogMesh::Impl {
                 continue;
             }
             const glm::dvec3 extent = cHi - cLo;
-            const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+            const int axis =
+                extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
             const std::uint32_t half = task.count / 2;
             auto first = order.begin() + task.first;
-            std::nth_element(first, first + half, first + task.count,
-                             [&](std::uint32_t a, std::uint32_t b) { return centroid[a][axis] < centroid[b][axis]; });
+            std::nth_element(first, first + half, first + task.count, [&](std::uint32_t a, std::uint32_t b) {
+                return centroid[a][axis] < centroid[b][axis];
+            });
             const std::uint32_t left = std::uint32_t(nodes.size());
             nodes[task.node].leftOrFirst = left;
             nodes[task.node].count = 0;
@@ -189,8 +191,9 @@ std::shared_ptr<const FogMesh> FogMesh::build(const std::vector<glm::dvec3>& pos
                                               const std::vector<std::uint32_t>& indices, std::string& error) {
     error.clear();
     if (indices.empty() || indices.size() % 3 != 0) {
-        error = indices.empty() ? "no triangles"
-                                : "the index count " + std::to_string(indices.size()) + " is not a multiple of 3";
+        error = indices.empty()
+                    ? "no triangles"
+                    : "the index count " + std::to_string(indices.size()) + " is not a multiple of 3";
         return nullptr;
     }
     const std::size_t triangles = indices.size() / 3;
@@ -225,7 +228,8 @@ std::shared_ptr<const FogMesh> FogMesh::build(const std::vector<glm::dvec3>& pos
         m.indices[i] = remap[indices[i]];
     }
     // Degenerate triangles, directed edges, enclosed volume.
-    std::map<std::pair<std::uint32_t, std::uint32_t>, std::pair<int, std::uint32_t>> edges;  // count, a triangle
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::pair<int, std::uint32_t>>
+        edges;  // count, a triangle
     double volume = 0.0;
     for (std::uint32_t t = 0; t < triangles; ++t) {
         const std::uint32_t i[3] = {m.indices[3 * t], m.indices[3 * t + 1], m.indices[3 * t + 2]};
@@ -321,7 +325,8 @@ std::size_t FogMesh::lineChords(const glm::dvec3& origin, const glm::dvec3& dire
 
 bool FogMesh::contains(const glm::dvec3& point) const {
     // An irrational-ish direction: no axis-aligned face or edge is grazed.
-    const glm::dvec3 direction = glm::normalize(glm::dvec3(0.5773502691896258, 0.6123724356957945, 0.5403023058681398));
+    const glm::dvec3 direction =
+        glm::normalize(glm::dvec3(0.5773502691896258, 0.6123724356957945, 0.5403023058681398));
     thread_local std::vector<VolumeSegment> chords;
     chords.clear();
     lineChords(point, direction, chords);

@@ -174,9 +174,11 @@ struct Collector {
         const bool mirrored = glm::determinant(glm::dmat3(transform)) < 0.0;
         for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
             const tinygltf::Primitive& prim = mesh.primitives[p];
-            const std::string what = "meshes[" + std::to_string(meshIndex) + "].primitives[" + std::to_string(p) + "]";
+            const std::string what =
+                "meshes[" + std::to_string(meshIndex) + "].primitives[" + std::to_string(p) + "]";
             if (prim.mode != -1 && prim.mode != TINYGLTF_MODE_TRIANGLES)
-                throw LoadError(what + ": mode " + std::to_string(prim.mode) + "; a fog mesh is made of triangles (mode 4)");
+                throw LoadError(what + ": mode " + std::to_string(prim.mode) +
+                                "; a fog mesh is made of triangles (mode 4)");
             const auto position = prim.attributes.find("POSITION");
             if (position == prim.attributes.end()) throw LoadError(what + ": no POSITION attribute");
             const AccessorView pos(model, position->second, what + " POSITION");
@@ -256,7 +258,8 @@ std::string fogMeshToGltf(const FogMesh& mesh, const std::string& name) {
     };
     float lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
     for (std::size_t i = 0; i < mesh.positions().size(); ++i) {
-        const float f[3] = {float(mesh.positions()[i].x), float(mesh.positions()[i].y), float(mesh.positions()[i].z)};
+        const float f[3] = {float(mesh.positions()[i].x), float(mesh.positions()[i].y),
+                            float(mesh.positions()[i].z)};
         for (int c = 0; c < 3; ++c) {
             lo[c] = i == 0 ? f[c] : std::min(lo[c], f[c]);
             hi[c] = i == 0 ? f[c] : std::max(hi[c], f[c]);
@@ -270,17 +273,29 @@ std::string fogMeshToGltf(const FogMesh& mesh, const std::string& name) {
         {"scene", 0},
         {"scenes", {{{"nodes", {0}}}}},
         {"nodes", {{{"name", name}, {"mesh", 0}}}},
-        {"meshes", {{{"name", name}, {"primitives", {{{"attributes", {{"POSITION", 0}}}, {"indices", 1}, {"mode", 4}}}}}}},
+        {"meshes",
+         {{{"name", name},
+           {"primitives", {{{"attributes", {{"POSITION", 0}}}, {"indices", 1}, {"mode", 4}}}}}}},
         {"accessors",
-         {{{"bufferView", 0}, {"componentType", 5126}, {"count", mesh.positions().size()}, {"type", "VEC3"},
-           {"min", {lo[0], lo[1], lo[2]}}, {"max", {hi[0], hi[1], hi[2]}}},
-          {{"bufferView", 1}, {"componentType", 5125}, {"count", mesh.indices().size()}, {"type", "SCALAR"}}}},
+         {{{"bufferView", 0},
+           {"componentType", 5126},
+           {"count", mesh.positions().size()},
+           {"type", "VEC3"},
+           {"min", {lo[0], lo[1], lo[2]}},
+           {"max", {hi[0], hi[1], hi[2]}}},
+          {{"bufferView", 1},
+           {"componentType", 5125},
+           {"count", mesh.indices().size()},
+           {"type", "SCALAR"}}}},
         {"bufferViews",
          {{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", positionBytes}, {"target", 34962}},
-          {{"buffer", 0}, {"byteOffset", positionBytes}, {"byteLength", buffer.size() - positionBytes},
+          {{"buffer", 0},
+           {"byteOffset", positionBytes},
+           {"byteLength", buffer.size() - positionBytes},
            {"target", 34963}}}},
         {"buffers",
-         {{{"byteLength", buffer.size()}, {"uri", "data:application/octet-stream;base64," + base64(buffer)}}}},
+         {{{"byteLength", buffer.size()},
+           {"uri", "data:application/octet-stream;base64," + base64(buffer)}}}},
     };
     return doc.dump(1) + "\n";
 }
@@ -312,9 +327,10 @@ FogMeshLoadResult loadFogMesh(const std::string& path) {
 
         Collector collect{model, {}, {}};
         if (!model.scenes.empty()) {
-            const std::size_t scene = model.defaultScene >= 0 && std::size_t(model.defaultScene) < model.scenes.size()
-                                          ? std::size_t(model.defaultScene)
-                                          : 0;
+            const std::size_t scene =
+                model.defaultScene >= 0 && std::size_t(model.defaultScene) < model.scenes.size()
+                    ? std::size_t(model.defaultScene)
+                    : 0;
             for (int node : model.scenes[scene].nodes) collect.addNode(node, glm::dmat4(1.0), 0);
         } else {
             for (std::size_t m = 0; m < model.meshes.size(); ++m) collect.addMesh(int(m), glm::dmat4(1.0));

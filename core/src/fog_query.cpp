@@ -229,8 +229,8 @@ struct FogScene::Impl {
 
     /// The parts of sorted disjoint `chords` outside the sorted disjoint
     /// `removed`, appended to `out`.
-    static void subtractUnion(const std::vector<VolumeSegment>& chords, const std::vector<VolumeSegment>& removed,
-                              std::vector<VolumeSegment>& out) {
+    static void subtractUnion(const std::vector<VolumeSegment>& chords,
+                              const std::vector<VolumeSegment>& removed, std::vector<VolumeSegment>& out) {
         std::size_t r = 0;
         for (const VolumeSegment& c : chords) {
             double start = c.tIn;

@@ -24,7 +24,6 @@ constexpr std::array<sv, 2> kShapeNames = {"box", "ellipsoid"};
 constexpr std::array<sv, 3> kVolumeShapeNames = {"box", "ellipsoid", "mesh"};
 constexpr std::array<sv, 2> kBlendNames = {"add", "subtract"};
 constexpr std::array<sv, 2> kEmitterKindNames = {"point", "lightning"};
-constexpr std::array<sv, 3> kInterpolationNames = {"step", "linear", "smooth"};
 constexpr std::array<sv, 2> kExposureModeNames = {"manual", "automatic"};
 constexpr std::array<sv, 2> kTimeModeNames = {"solar", "clock"};
 
@@ -139,6 +138,12 @@ ParamDesc text(ParamScope scope, sv path, sv label, bool required, std::string* 
     p.doc = doc;
     p.required = required;
     p.string = access;
+    return p;
+}
+
+/// A field most objects leave at its default: not written then.
+ParamDesc omittedWhenDefault(ParamDesc p) {
+    p.omitWhenDefault = true;
     return p;
 }
 
@@ -454,38 +459,31 @@ const std::vector<ParamDesc>& volumeTable() {
             identityParams<FogVolume>(V,
                                       "Stable identifier (1..64 of A-Z a-z 0-9 _ - .), unique among volumes; "
                                       "timeline tracks refer to it. Required.");
-        t.insert(t.end(),
-                 {
-                     enumeration(
-                         V, "shape", "Shape", kVolumeShapeNames, 0,
-                         [](const void* o) { return std::int64_t(static_cast<const FogVolume*>(o)->shape); },
-                         [](void* o, std::int64_t v) { vol(o).shape = FogVolumeShape(v); },
-                         "box (unit cube [-1,1]^3), ellipsoid (unit sphere) or mesh (the closed glTF mesh "
-                         "of \"mesh\", in its own coordinates) in object space, scaled by the half "
-                         "extents. Default box."),
-                     [] {
-                         ParamDesc p = text(
-                             V, "mesh", "Mesh", false, [](void* o) { return &vol(o).mesh; },
-                             "Shape mesh: the glTF file (.gltf or .glb) of the closed, outward-facing "
-                             "triangle mesh, relative to the preset's folder. Default none.");
-                         p.omitWhenDefault = true;
-                         return p;
-                     }(),
-                     [] {
-                         ParamDesc p = enumeration(
-                             V, "blend", "Blend", kBlendNames, 0,
-                             [](const void* o) { return std::int64_t(static_cast<const FogVolume*>(o)->blend); },
-                             [](void* o, std::int64_t v) { vol(o).blend = FogVolumeBlend(v); },
-                             "add (fog inside) or subtract (no fog inside: removes the global fog and every "
-                             "add volume there, for fog-free interiors; overlaps count once). Default add.");
-                         p.omitWhenDefault = true;
-                         return p;
-                     }(),
-                     triple(
-                         V, ParamType::Vec3, "position_m", "Position", "m", {-1e7, 1e7, -1000, 1000},
-                         glm::dvec3(0.0), false, true, [](void* o) { return &vol(o).position; },
-                         "Centre [m], world space (Y up, north -Z), -1e7..1e7. Default 0."),
-                 });
+        t.insert(
+            t.end(),
+            {
+                enumeration(
+                    V, "shape", "Shape", kVolumeShapeNames, 0,
+                    [](const void* o) { return std::int64_t(static_cast<const FogVolume*>(o)->shape); },
+                    [](void* o, std::int64_t v) { vol(o).shape = FogVolumeShape(v); },
+                    "box (unit cube [-1,1]^3), ellipsoid (unit sphere) or mesh (the glTF mesh of \"mesh\") "
+                    "in object space, scaled by the half extents. Default box."),
+                omittedWhenDefault(text(
+                    V, "mesh", "Mesh", false, [](void* o) { return &vol(o).mesh; },
+                    "Shape mesh: the glTF file (.gltf or .glb) of the closed, outward-facing triangle mesh, "
+                    "relative to the preset's folder. Default none.")),
+                omittedWhenDefault(enumeration(
+                    V, "blend", "Blend", kBlendNames, 0,
+                    [](const void* o) { return std::int64_t(static_cast<const FogVolume*>(o)->blend); },
+                    [](void* o, std::int64_t v) { vol(o).blend = FogVolumeBlend(v); },
+                    "add (fog inside) or subtract (no fog inside: removes the global fog and every add "
+                    "volume "
+                    "there, for fog-free interiors; overlaps count once). Default add.")),
+                triple(
+                    V, ParamType::Vec3, "position_m", "Position", "m", {-1e7, 1e7, -1000, 1000},
+                    glm::dvec3(0.0), false, true, [](void* o) { return &vol(o).position; },
+                    "Centre [m], world space (Y up, north -Z), -1e7..1e7. Default 0."),
+            });
         t.push_back(rotationParam(V, [](void* o) { return &vol(o).rotation; }));
         t.push_back(triple(
             V, ParamType::Vec3, "half_extents_m", "Half extents", "m", {1e-3, 1e7, 0.1, 1000},
@@ -622,25 +620,6 @@ const std::vector<ParamDesc>& cloudVolumeTable() {
 
 }  // namespace
 
-int ParamDesc::componentCount(ParamType type) {
-    switch (type) {
-        case ParamType::Scalar:
-        case ParamType::Enum:
-        case ParamType::Int:
-            return 1;
-        case ParamType::Vec2:
-            return 2;
-        case ParamType::Colour:
-        case ParamType::Vec3:
-            return 3;
-        case ParamType::Quaternion:
-            return 4;
-        case ParamType::String:
-            return 0;
-    }
-    return 0;
-}
-
 std::span<const ParamDesc> paramTable(ParamScope scope) {
     switch (scope) {
         case ParamScope::Global:
@@ -659,48 +638,6 @@ const ParamDesc* findParam(ParamScope scope, std::string_view path) {
     for (const ParamDesc& p : paramTable(scope))
         if (p.path == path) return &p;
     return nullptr;
-}
-
-std::string_view scopeName(ParamScope scope) {
-    switch (scope) {
-        case ParamScope::Global:
-            return "global";
-        case ParamScope::Volume:
-            return "volume";
-        case ParamScope::Emitter:
-            return "emitter";
-        case ParamScope::CloudVolume:
-            return "cloud volume";
-    }
-    return "";
-}
-
-std::string_view scopeKey(ParamScope scope) {
-    switch (scope) {
-        case ParamScope::Global:
-            return "";
-        case ParamScope::Volume:
-            return "volume";
-        case ParamScope::Emitter:
-            return "emitter";
-        case ParamScope::CloudVolume:
-            return "cloud_volume";
-    }
-    return "";
-}
-
-std::string_view interpolationName(Interpolation interpolation) {
-    return kInterpolationNames[std::size_t(interpolation)];
-}
-
-bool parseInterpolation(std::string_view name, Interpolation& out) {
-    for (std::size_t i = 0; i < kInterpolationNames.size(); ++i) {
-        if (kInterpolationNames[i] == name) {
-            out = Interpolation(i);
-            return true;
-        }
-    }
-    return false;
 }
 
 }  // namespace aerial

@@ -42,8 +42,8 @@ std::shared_ptr<const FogMesh> build(const test::TriangleMesh& m) {
     return mesh;
 }
 
-FogVolume meshVolume(std::shared_ptr<const FogMesh> mesh, const glm::dvec3& position, const glm::dquat& rotation,
-                     const glm::dvec3& scale) {
+FogVolume meshVolume(std::shared_ptr<const FogMesh> mesh, const glm::dvec3& position,
+                     const glm::dquat& rotation, const glm::dvec3& scale) {
     FogVolume v;
     v.id = "mesh";
     v.shape = FogVolumeShape::Mesh;
@@ -397,7 +397,8 @@ TEST(FogMesh, RefusesBadMeshesWithTheReason) {
     EXPECT_FALSE(FogMesh::build(flipped.positions, flipped.indices, error));
     EXPECT_EQ(error.rfind("flipped triangle ", 0), 0u) << error;
     test::TriangleMesh inward = m;
-    for (std::size_t k = 0; k < inward.indices.size(); k += 3) std::swap(inward.indices[k + 1], inward.indices[k + 2]);
+    for (std::size_t k = 0; k < inward.indices.size(); k += 3)
+        std::swap(inward.indices[k + 1], inward.indices[k + 2]);
     EXPECT_FALSE(FogMesh::build(inward.positions, inward.indices, error));
     EXPECT_NE(error.find("face inwards"), std::string::npos) << error;
     EXPECT_FALSE(FogMesh::build(m.positions, {0, 1}, error));
@@ -428,7 +429,8 @@ TEST(FogMesh, WrittenAsGltfReadsBackToTheSameTriangles) {
     const test::TriangleMesh torus = test::torusMesh(6.0, 2.0, 24, 12);
     const auto mesh = build(torus);
     ASSERT_TRUE(mesh);
-    const std::filesystem::path file = std::filesystem::temp_directory_path() / "aerial_fog_mesh_roundtrip.gltf";
+    const std::filesystem::path file =
+        std::filesystem::temp_directory_path() / "aerial_fog_mesh_roundtrip.gltf";
     {
         std::ofstream out(file);
         out << fogMeshToGltf(*mesh, "torus");

@@ -197,7 +197,8 @@ std::vector<WorldSegment> volumeOutlineSegments(const FogVolume& volume, int ell
         // A large smooth mesh: its bounds, so that it is seen at all.
         const glm::dvec3 lo = prepared.mesh->boundsMin(), hi = prepared.mesh->boundsMax();
         for (int corner = 0; corner < 8; ++corner) {
-            const glm::dvec3 a{(corner & 1) ? hi.x : lo.x, (corner & 2) ? hi.y : lo.y, (corner & 4) ? hi.z : lo.z};
+            const glm::dvec3 a{(corner & 1) ? hi.x : lo.x, (corner & 2) ? hi.y : lo.y,
+                               (corner & 4) ? hi.z : lo.z};
             for (int bit = 0; bit < 3; ++bit) {
                 if ((corner & (1 << bit)) == 0) {
                     glm::dvec3 b = a;

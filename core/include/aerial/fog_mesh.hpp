@@ -60,7 +60,8 @@ public:
     /// indices (3 per triangle, counter-clockwise seen from outside). On
     /// failure returns null and sets `error` to the reason (no file name).
     static std::shared_ptr<const FogMesh> build(const std::vector<glm::dvec3>& positions,
-                                                const std::vector<std::uint32_t>& indices, std::string& error);
+                                                const std::vector<std::uint32_t>& indices,
+                                                std::string& error);
 
     ~FogMesh();
     FogMesh(const FogMesh&) = delete;
