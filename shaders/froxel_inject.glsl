@@ -121,7 +121,7 @@ void main() {
     vec3 wSky = vec3(0.0), wOwn = vec3(0.0);
     bool cut = false;  // p inside a subtract volume
     for (int v = 0; v < froxel.volumeCount && !cut; ++v) {
-        FroxelVolume fv = volumes[v];
+        PackedVolume fv = volumes[v];
         if (fv.blend < 0.5) continue;
         vec3 rel = p - fv.position;
         vec3 q = vec3(dot(fv.objectFromWorldRow0, rel), dot(fv.objectFromWorldRow1, rel),
@@ -150,7 +150,7 @@ void main() {
 
     int mesh = 0;  // mesh volumes met so far (their chords' order)
     for (int v = 0; v < froxel.volumeCount && !cut; ++v) {
-        FroxelVolume fv = volumes[v];
+        PackedVolume fv = volumes[v];
         if (fv.blend > 0.5) continue;  // subtract volumes add nothing
         if (fv.shape > 1.5) {  // a mesh: the slice's parts of its chords (mesh_volume_chords.glsl)
             float ta = za / frame.farDistance;

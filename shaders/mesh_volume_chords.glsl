@@ -45,7 +45,7 @@ vec3 meshVertex(uint index) {
 void main() {
     ivec2 ij = ivec2(gl_GlobalInvocationID.xy);
     if (ij.x >= froxel.gridSize.x || ij.y >= froxel.gridSize.y) return;
-    FroxelVolume fv = volumes[uVolume];
+    PackedVolume fv = volumes[uVolume];
     vec3 farRay = froxelFarRay(ij);
     vec3 rel = frame.eye - fv.position;
     vec3 o = vec3(dot(fv.objectFromWorldRow0, rel), dot(fv.objectFromWorldRow1, rel),

@@ -23,11 +23,7 @@
 #ifdef AERIAL_VERTEX_SHADER
 out vec3 vRelative;  // vertex - eye [m], world
 
-void main() {
-    vec4 world = volume.worldFromObject * vec4(aPosition, 1.0);
-    vRelative = world.xyz - frame.eye;
-    gl_Position = frame.clipFromWorld * world;
-}
+void main() { vRelative = transformMeshVertex(); }
 #else
 const uint kSubtractCrossings = 16u;  // kSubtractCrossings in gpu_types.hpp
 

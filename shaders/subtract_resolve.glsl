@@ -35,24 +35,10 @@ layout(binding = 4) uniform sampler2D uLinearDepth;
 layout(location = 0) uniform int uSubtractVolumeCount;
 layout(location = 1) uniform int uMeshCrossings;
 
-struct SubtractVolume {  // VolumeBlock (common/volume.glsl)
-    mat4 worldFromObject;
-    vec3 objectFromWorldRow0;
-    float shape;
-    vec3 objectFromWorldRow1;
-    float density;
-    vec3 objectFromWorldRow2;
-    float falloff;
-    vec3 position;
-    float gradientOffset;
-    vec3 gradientDirection;
-    float colourMode;
-    vec3 colour;
-    float blend;
-};
+#include "common/packed_volume.glsl"
 
 layout(std430, binding = 4) writeonly buffer SubtractIntervals { vec4 subtractIntervals[]; };
-layout(std430, binding = 5) readonly buffer SubtractVolumes { SubtractVolume subtractVolumes[]; };
+layout(std430, binding = 5) readonly buffer SubtractVolumes { PackedVolume subtractVolumes[]; };
 layout(std430, binding = 6) buffer SubtractCounts { uint subtractCounts[]; };
 layout(std430, binding = 7) readonly buffer SubtractCrossings { uint subtractCrossings[]; };
 
@@ -105,7 +91,7 @@ void main() {
         }
     }
     for (int v = 0; v < uSubtractVolumeCount; ++v) {
-        SubtractVolume sv = subtractVolumes[v];
+        PackedVolume sv = subtractVolumes[v];
         vec3 rel = frame.eye - sv.position;
         vec3 o = vec3(dot(sv.objectFromWorldRow0, rel), dot(sv.objectFromWorldRow1, rel),
                       dot(sv.objectFromWorldRow2, rel));

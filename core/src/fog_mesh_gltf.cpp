@@ -9,6 +9,7 @@
 // buffer before a byte is read. The triangles of every primitive of the
 // default scene's nodes (placed by the node transforms; without scenes,
 // every mesh untransformed) make up the mesh.
+#include <aerial/detail/gltf_files.hpp>
 #include <aerial/fog_mesh.hpp>
 #include <aerial/limits.hpp>
 
@@ -37,36 +38,6 @@ struct LoadError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-bool readCapped(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
-    std::error_code ec;
-    const std::uintmax_t size = fs::file_size(path, ec);
-    if (ec) {
-        if (err) *err += "cannot read '" + path + "': " + ec.message() + "\n";
-        return false;
-    }
-    if (size > limits::kMaxGltfFileBytes) {
-        if (err)
-            *err += "'" + path + "' is " + std::to_string(size) + " bytes, over the limit of " +
-                    std::to_string(limits::kMaxGltfFileBytes) + "\n";
-        return false;
-    }
-    std::ifstream in(path, std::ios::binary);
-    out->resize(size);
-    if (size > 0 && !in.read(reinterpret_cast<char*>(out->data()), std::streamsize(size))) {
-        if (err) *err += "cannot read '" + path + "'\n";
-        return false;
-    }
-    return true;
-}
-bool fileExists(const std::string& path, void*) {
-    std::error_code ec;
-    return fs::is_regular_file(path, ec);
-}
-std::string expandNothing(const std::string& path, void*) { return path; }
-bool refuseWrite(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
-    if (err) *err += "writing is not supported\n";
-    return false;
-}
 bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int,
                void*) {
     return true;  // a fog mesh has no material: images are not decoded
@@ -318,7 +289,9 @@ FogMeshLoadResult loadFogMesh(const std::string& path) {
 
         tinygltf::TinyGLTF gltf;
         gltf.SetImageLoader(&skipImage, nullptr);
-        gltf.SetFsCallbacks({&fileExists, &expandNothing, &readCapped, &refuseWrite, nullptr});
+        detail::GltfFileLimit limit{limits::kMaxGltfFileBytes};
+        gltf.SetFsCallbacks({&detail::gltfFileExists, &detail::gltfExpandNothing, &detail::gltfReadCapped,
+                             &detail::gltfRefuseWrite, &limit});
         tinygltf::Model model;
         std::string err, warn;
         const bool ok = binary ? gltf.LoadBinaryFromFile(&model, &err, &warn, path)
@@ -351,5 +324,44 @@ FogMeshLoadResult loadFogMesh(const std::string& path) {
     }
     return result;
 }
+
+namespace detail {
+
+bool gltfReadCapped(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
+    const auto* limit = static_cast<const GltfFileLimit*>(user);
+    std::error_code ec;
+    const std::uintmax_t size = fs::file_size(path, ec);
+    if (ec) {
+        if (err) *err += "cannot read '" + path + "': " + ec.message() + "\n";
+        return false;
+    }
+    if (size > limit->maxBytes) {
+        if (err)
+            *err += "'" + path + "' is " + std::to_string(size) + " bytes, over the limit of " +
+                    std::to_string(limit->maxBytes) + "\n";
+        return false;
+    }
+    std::ifstream in(path, std::ios::binary);
+    out->resize(size);
+    if (size > 0 && !in.read(reinterpret_cast<char*>(out->data()), std::streamsize(size))) {
+        if (err) *err += "cannot read '" + path + "'\n";
+        return false;
+    }
+    return true;
+}
+
+bool gltfFileExists(const std::string& path, void*) {
+    std::error_code ec;
+    return fs::is_regular_file(path, ec);
+}
+
+std::string gltfExpandNothing(const std::string& path, void*) { return path; }
+
+bool gltfRefuseWrite(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+    if (err) *err += "writing is not supported\n";
+    return false;
+}
+
+}  // namespace detail
 
 }  // namespace aerial

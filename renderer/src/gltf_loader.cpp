@@ -6,6 +6,8 @@
 // reads the file under the size and image limits (aerial/limits.hpp).
 #include "gltf_model.hpp"
 
+#include <aerial/detail/gltf_files.hpp>
+
 #include <stb_image.h>  // Debian's prebuilt libstb: stbi_info_from_memory only
 
 #include <cctype>
@@ -20,46 +22,6 @@ namespace {
 namespace fs = std::filesystem;
 using gltf::fail;
 using gltf::LoadError;
-
-/// Limits every file tinygltf reads (external buffers and images too).
-struct FsLimit {
-    std::uint64_t maxBytes;
-};
-
-bool readCapped(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
-    const auto* limit = static_cast<const FsLimit*>(user);
-    std::error_code ec;
-    const std::uintmax_t size = fs::file_size(path, ec);
-    if (ec) {
-        if (err) *err += "cannot read '" + path + "': " + ec.message() + "\n";
-        return false;
-    }
-    if (size > limit->maxBytes) {
-        if (err)
-            *err += "'" + path + "' is " + std::to_string(size) + " bytes, over the limit of " +
-                    std::to_string(limit->maxBytes) + "\n";
-        return false;
-    }
-    std::ifstream in(path, std::ios::binary);
-    out->resize(size);
-    if (size > 0 && !in.read(reinterpret_cast<char*>(out->data()), std::streamsize(size))) {
-        if (err) *err += "cannot read '" + path + "'\n";
-        return false;
-    }
-    return true;
-}
-
-bool fileExists(const std::string& path, void*) {
-    std::error_code ec;
-    return fs::is_regular_file(path, ec);
-}
-
-std::string expandNothing(const std::string& path, void*) { return path; }  // no ~ or $VAR expansion
-
-bool refuseWrite(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
-    if (err) *err += "writing is not supported\n";
-    return false;
-}
 
 /// Images larger than this are refused before they are decoded (a small
 /// compressed file can claim a huge image).
@@ -138,10 +100,12 @@ GltfLoadResult loadGltfScene(const std::string& path, const GltfLoadOptions& opt
         if (binary) checkGlbHeader(path, size);
 
         tinygltf::TinyGLTF gltf;
-        FsLimit limit{options.maxFileBytes};
+        // Every file tinygltf reads (external buffers and images too) capped.
+        aerial::detail::GltfFileLimit limit{options.maxFileBytes};
         ImageBudget imageBudget{options.maxImagePixels};
         gltf.SetImageLoader(&loadImageChecked, &imageBudget);
-        gltf.SetFsCallbacks({&fileExists, &expandNothing, &readCapped, &refuseWrite, &limit});
+        gltf.SetFsCallbacks({&aerial::detail::gltfFileExists, &aerial::detail::gltfExpandNothing,
+                             &aerial::detail::gltfReadCapped, &aerial::detail::gltfRefuseWrite, &limit});
         tinygltf::Model model;
         std::string err, warn;
         const bool ok = binary ? gltf.LoadBinaryFromFile(&model, &err, &warn, path)

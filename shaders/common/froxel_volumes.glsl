@@ -7,23 +7,8 @@
 #ifndef AERIAL_FROXEL_VOLUMES_GLSL
 #define AERIAL_FROXEL_VOLUMES_GLSL
 
-/// One fog volume as VolumeBlock (common/volume.glsl), packed in an array.
-struct FroxelVolume {
-    mat4 worldFromObject;
-    vec3 objectFromWorldRow0;
-    float shape;  // 0 box, 1 ellipsoid, 2 mesh (an add volume: its chords below)
-    vec3 objectFromWorldRow1;
-    float density;
-    vec3 objectFromWorldRow2;
-    float falloff;
-    vec3 position;
-    float gradientOffset;
-    vec3 gradientDirection;
-    float colourMode;
-    vec3 colour;
-    float blend;  // 0 add, 1 subtract
-};
-layout(std430, binding = 3) readonly buffer Volumes { FroxelVolume volumes[]; };
+#include "common/packed_volume.glsl"
+layout(std430, binding = 3) readonly buffer Volumes { PackedVolume volumes[]; };
 
 /// Chords kept per mesh volume and froxel column (kFroxelMeshChords in
 /// renderer/src/gpu_types.hpp): (a, b) in the ray parameter t of

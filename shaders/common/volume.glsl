@@ -32,6 +32,14 @@ layout(location = 0) in vec3 aPosition;  // unit cube corner, object space
 void transformHullVertex() {
     gl_Position = frame.clipFromWorld * (volume.worldFromObject * vec4(aPosition, 1.0));
 }
+
+/// Writes gl_Position of this vertex of the volume's mesh (the hull's
+/// transform) and returns the vertex relative to the eye [m], world.
+vec3 transformMeshVertex() {
+    vec4 world = volume.worldFromObject * vec4(aPosition, 1.0);
+    gl_Position = frame.clipFromWorld * world;
+    return world.xyz - frame.eye;
+}
 #else
 layout(binding = 4) uniform sampler2D uLinearDepth;  // normalised linear eye depth z/far
 
