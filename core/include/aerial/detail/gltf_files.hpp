@@ -31,6 +31,7 @@ bool gltfFileExists(const std::string& path, void* user);
 /// `path` unchanged: no ~ or $VAR expansion.
 std::string gltfExpandNothing(const std::string& path, void* user);
 /// Always false, "writing is not supported".
-bool gltfRefuseWrite(std::string* err, const std::string& path, const std::vector<unsigned char>& bytes, void* user);
+bool gltfRefuseWrite(std::string* err, const std::string& path, const std::vector<unsigned char>& bytes,
+                     void* user);
 
 }  // namespace aerial::detail
