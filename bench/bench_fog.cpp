@@ -6,8 +6,14 @@
 // from a camera near the centre to a random object in the area (up to ~1.4
 // km away). Reports queries per second per thread (items_per_second) and the
 // mean number of volumes a query crosses (crossed/query).
+// BM_FogQueryMeshSubtract: the same layout with a quarter of the volumes
+// mesh volumes (a torus of 2304 triangles, 10-60 m across) and a quarter
+// subtract volumes, against BM_FogQuery/256 in the same run.
 //
 //   build/fog/bench/aerial_bench --benchmark_filter=Fog
+#include "test_meshes.hpp"
+
+#include <aerial/fog_mesh.hpp>
 #include <aerial/fog_query.hpp>
 
 #include <benchmark/benchmark.h>
@@ -16,6 +22,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include <cstddef>
+#include <memory>
 #include <random>
 #include <vector>
 
@@ -28,7 +35,7 @@ struct BenchScene {
     std::vector<aerial::FogSegment> segments;
 };
 
-BenchScene makeScene(std::size_t volumeCount) {
+BenchScene makeScene(std::size_t volumeCount, bool meshAndSubtract = false) {
     std::mt19937_64 rng(0xF06 + volumeCount);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     std::normal_distribution<double> normal(0.0, 1.0);
@@ -55,6 +62,18 @@ BenchScene makeScene(std::size_t volumeCount) {
         v.falloff = uniform(0.0, 0.1);
         v.colourMode = static_cast<aerial::FogColourMode>(i % 3);
         v.colour = {uniform(0.5, 1), uniform(0.5, 1), uniform(0.5, 1)};
+        if (meshAndSubtract && i % 4 == 1) {
+            static const std::shared_ptr<const aerial::FogMesh> torus = [] {
+                const aerial::test::TriangleMesh m = aerial::test::torusMesh(6.0, 2.0, 48, 24);
+                std::string error;
+                return aerial::FogMesh::build(m.positions, m.indices, error);
+            }();
+            v.shape = aerial::FogVolumeShape::Mesh;
+            v.meshData = torus;
+            const double scale = uniform(1.0, 4.0);
+            v.halfExtents = {scale, scale * uniform(0.5, 1.5), scale};
+        }
+        if (meshAndSubtract && i % 4 == 3) v.blend = aerial::FogVolumeBlend::Subtract;
         s.desc.volumes.push_back(v);
     }
     for (int i = 0; i < 2; ++i) {
@@ -95,6 +114,20 @@ void BM_FogQuery(benchmark::State& state) {
     state.counters["crossed/query"] = meanCrossed(scene, s);
 }
 BENCHMARK(BM_FogQuery)->Arg(1)->Arg(16)->Arg(256);
+
+void BM_FogQueryMeshSubtract(benchmark::State& state) {
+    const BenchScene s = makeScene(static_cast<std::size_t>(state.range(0)), true);
+    const aerial::FogScene scene(s.desc);
+    std::size_t k = 0;
+    for (auto _ : state) {
+        const aerial::FogSegment& seg = s.segments[k];
+        k = (k + 1) % kSegments;
+        benchmark::DoNotOptimize(scene.query(seg.from, seg.to));
+    }
+    state.SetItemsProcessed(state.iterations());
+    state.counters["crossed/query"] = meanCrossed(scene, s);
+}
+BENCHMARK(BM_FogQueryMeshSubtract)->Arg(256);
 
 void BM_FogQueryContributions(benchmark::State& state) {
     const BenchScene s = makeScene(static_cast<std::size_t>(state.range(0)));
