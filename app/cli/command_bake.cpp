@@ -32,6 +32,11 @@
 //       sphere or the volume's mesh, emitters as KHR_lights_punctual point
 //       lights, every parameter in the node's extras; for Blender, Godot,
 //       Unity or Unreal.
+//   meshes/<id>.gltf
+//       each mesh volume's closed mesh as a self-contained glTF
+//       (aerial::fogMeshToGltf; object space, placed by the volume's
+//       position, rotation and half extents), so that the bake carries the
+//       meshes the preset's "mesh" paths name outside it.
 //   manifest.json
 //       format, preset, steps and table mapping, and for every step: the
 //       time, the full evaluated state (sun, moon, every parameter, volumes,
@@ -57,6 +62,8 @@
 // written last, so a directory with a manifest always holds a complete bake.
 #include "cli_common.hpp"
 #include "layout_gltf.hpp"
+
+#include <aerial/fog_mesh.hpp>
 
 #include <Imath/half.h>
 #include <OpenEXR/ImfChannelList.h>
@@ -376,7 +383,17 @@ int runBake(const BakeOptions& options) {
         progress.update(k + 1, formatTime(t), sunFile + ", " + moonFile);
     }
     progress.finish();
-    // Before the manifest that vouches for it.
+    // Before the manifest that vouches for them: the meshes and the layout.
+    Json meshes = Json::object();
+    for (const FogVolume& v : compiled.preset().volumes) {
+        if (v.shape != FogVolumeShape::Mesh || !v.meshData) continue;
+        const std::string file = "meshes/" + v.id + ".gltf";
+        std::error_code made;
+        fs::create_directories(dir / "meshes", made);
+        if (made) dataError("cannot create " + (dir / "meshes").string() + ": " + made.message());
+        writeText(dir / file, fogMeshToGltf(*v.meshData, v.id));
+        meshes[v.id] = {{"file", file}, {"preset_mesh", v.mesh}, {"triangles", v.meshData->triangleCount()}};
+    }
     writeText(dir / kLayoutName, layout);
 
     const Json manifest = {
@@ -449,6 +466,12 @@ int runBake(const BakeOptions& options) {
            "the first step's time, named by its id; translation = position_m, rotation = rotation_xyzw, "
            "scale = half_extents_m over a unit cube (box), unit sphere (ellipsoid) or the volume's mesh; "
            "emitters as KHR_lights_punctual point lights; the parameters in each node's extras"}}},
+        {"meshes",
+         {{"what",
+           "per mesh volume id: its closed mesh as a self-contained glTF beside this manifest (object space; "
+           "the volume's position_m, rotation_xyzw and half_extents_m place it); the parameters' \"mesh\" "
+           "names the preset's own file (preset_mesh)"},
+          {"volumes", meshes}}},
         {"steps", steps}};
     writeText(dir / kManifestName, jsonText(manifest) + "\n");
     syncPath(dir, true);

@@ -274,7 +274,7 @@ class Layout(unittest.TestCase):
                 self.assertNotIn(edge, edges)
                 edges.add(edge)
         self.assertTrue(all((b, a) in edges for a, b in edges), "open edge in mesh %d" % mesh)
-        return positions, indices, primitive["material"]
+        return positions, indices, primitive.get("material")
 
     def test_buffer_accessors_and_meshes(self):
         buffer, data = buffer_bytes(self.gltf)
@@ -295,6 +295,22 @@ class Layout(unittest.TestCase):
             else:
                 for p in positions:
                     self.assertAlmostEqual(math.sqrt(dot(p, p)), 1.0, delta=1e-6)
+
+    def test_the_bake_carries_the_meshes(self):
+        """meshes/<id>.gltf beside the manifest: the volume's own closed, outward triangles."""
+        out = bake(write_mesh_preset(os.path.join(WORK, "mesh_preset")), "layout_mesh_files")
+        manifest = load(os.path.join(out, "manifest.json"))
+        volumes = manifest["meshes"]["volumes"]
+        self.assertEqual(sorted(volumes), ["cave", "hall"])
+        for volume_id, entry in volumes.items():
+            with self.subTest(id=volume_id):
+                self.assertEqual(entry["file"], "meshes/%s.gltf" % volume_id)
+                self.assertEqual(entry["preset_mesh"], "meshes/octahedron.gltf")
+                gltf = load(os.path.join(out, entry["file"]))
+                _, data = buffer_bytes(gltf)
+                positions, indices, _ = self.checkedMesh(gltf, data, 0)
+                self.assertEqual(sorted(positions), sorted(OCTAHEDRON))
+                self.assertEqual(len(indices) // 3, entry["triangles"])
 
     def test_mesh_volumes_carry_their_mesh(self):
         work = os.path.join(WORK, "mesh_preset")
@@ -355,9 +371,14 @@ class KhronosValidator(ValidatorCase):
         for preset_path in presets:
             with self.subTest(preset=os.path.basename(preset_path)):
                 out = bake(preset_path, "validated_" + os.path.splitext(os.path.basename(preset_path))[0])
-                code, output = validate(os.path.join(out, "layout.gltf"))
-                self.assertEqual(code, 0, output)
-                self.assertIn(": 0 errors, 0 warnings", output)
+                files = [os.path.join(out, "layout.gltf")]
+                meshes = os.path.join(out, "meshes")  # the mesh volumes' meshes the bake carries
+                if os.path.isdir(meshes):
+                    files += [os.path.join(meshes, f) for f in sorted(os.listdir(meshes))]
+                for path in files:
+                    code, output = validate(path)
+                    self.assertEqual(code, 0, output)
+                    self.assertIn(": 0 errors, 0 warnings", output)
 
 
 class KhronosValidatorCatchesErrors(ValidatorCase):
