@@ -101,8 +101,9 @@ double meanCrossed(const aerial::FogScene& scene, const BenchScene& s) {
     return static_cast<double>(total) / static_cast<double>(s.segments.size());
 }
 
-void BM_FogQuery(benchmark::State& state) {
-    const BenchScene s = makeScene(static_cast<std::size_t>(state.range(0)));
+/// Queries, one segment after another, of the scene of range(0) volumes.
+void runQueries(benchmark::State& state, bool meshAndSubtract) {
+    const BenchScene s = makeScene(static_cast<std::size_t>(state.range(0)), meshAndSubtract);
     const aerial::FogScene scene(s.desc);
     std::size_t k = 0;
     for (auto _ : state) {
@@ -113,20 +114,11 @@ void BM_FogQuery(benchmark::State& state) {
     state.SetItemsProcessed(state.iterations());
     state.counters["crossed/query"] = meanCrossed(scene, s);
 }
+
+void BM_FogQuery(benchmark::State& state) { runQueries(state, false); }
 BENCHMARK(BM_FogQuery)->Arg(1)->Arg(16)->Arg(256);
 
-void BM_FogQueryMeshSubtract(benchmark::State& state) {
-    const BenchScene s = makeScene(static_cast<std::size_t>(state.range(0)), true);
-    const aerial::FogScene scene(s.desc);
-    std::size_t k = 0;
-    for (auto _ : state) {
-        const aerial::FogSegment& seg = s.segments[k];
-        k = (k + 1) % kSegments;
-        benchmark::DoNotOptimize(scene.query(seg.from, seg.to));
-    }
-    state.SetItemsProcessed(state.iterations());
-    state.counters["crossed/query"] = meanCrossed(scene, s);
-}
+void BM_FogQueryMeshSubtract(benchmark::State& state) { runQueries(state, true); }
 BENCHMARK(BM_FogQueryMeshSubtract)->Arg(256);
 
 void BM_FogQueryContributions(benchmark::State& state) {
