@@ -63,8 +63,10 @@ void printNoDisplay(const char* why) {
 void dropCallback(GLFWwindow* window, int count, const char** paths) {
     auto* editor = static_cast<Editor*>(glfwGetWindowUserPointer(window));
     if (!editor) return;
+    const bool shift = glfwGetKey(window, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS ||
+                       glfwGetKey(window, GLFW_KEY_RIGHT_SHIFT) == GLFW_PRESS;
     for (int i = 0; i < count; ++i)
-        if (paths[i]) editor->dialogs_.drops.emplace_back(paths[i]);
+        if (paths[i]) editor->dialogs_.drops.push_back({paths[i], shift});
 }
 
 int runEditor(const EditorOptions& options) {

@@ -204,14 +204,18 @@ bool Editor::loadScene(const std::string& path) {
 }
 
 void Editor::handleDrops() {
-    std::vector<std::string> drops;
+    std::vector<Dialogs::Drop> drops;
     drops.swap(dialogs_.drops);
-    for (const std::string& path : drops) {
+    for (const auto& [path, asMesh] : drops) {
         const std::string ext = lowerExtension(path);
         if (ext == ".json")
             requestOpen(path);
+        else if ((ext == ".gltf" || ext == ".glb") && asMesh)
+            addMeshVolumeFromFile(path);  // Shift+drop: a mesh fog volume
+        else if ((ext == ".gltf" || ext == ".glb") && loadScene(path))
+            setStatus(status_ + " (Shift+drop adds a glTF as a mesh fog volume instead)");
         else if (ext == ".gltf" || ext == ".glb")
-            loadScene(path);
+            ;  // loadScene said why it could not
         else
             setStatus("Cannot open " + path + ": drop a preset (.json) or a glTF scene (.gltf, .glb)");
     }

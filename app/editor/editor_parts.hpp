@@ -231,7 +231,13 @@ struct Dialogs {
     FileDialog fileDialog;
     DialogPurpose purpose = DialogPurpose::None;
     int meshVolumeIndex = -1;  ///< DialogPurpose::Mesh: the volume to give the mesh, -1 a new volume
-    std::vector<std::string> drops;  ///< dropped files, handled at the next frame
+    /// A file dropped on the window, handled at the next frame; asMesh: a
+    /// glTF dropped with Shift held becomes a mesh fog volume, not the scene.
+    struct Drop {
+        std::string path;
+        bool asMesh = false;
+    };
+    std::vector<Drop> drops;
 
     /// The unsaved-changes prompt is open or about to open.
     bool unsavedPromptShown() const { return unsavedPromptOpen || openUnsavedModal; }

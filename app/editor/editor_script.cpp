@@ -118,8 +118,14 @@ void Editor::declareScriptCommands() {
                    return true;
                }});
     table.add(
-        {"drop", 1, 1, "drop PATH", "drop a file on the window (a preset or a glTF scene)", [this](W w, E) {
-             dialogs_.drops.push_back(w[1]);
+        {"drop", 1, 2, "drop PATH [shift]",
+         "drop a file on the window (a preset or a glTF scene; with shift a glTF becomes a mesh fog volume)",
+         [this](W w, E error) {
+             if (w.size() > 2 && w[2] != "shift") {
+                 error = "drop: the second word is shift (Shift held) or nothing";
+                 return false;
+             }
+             dialogs_.drops.push_back({w[1], w.size() > 2});
              return true;
          }});
     table.add({"load_scene", 1, 1, "load_scene PATH", "load a glTF scene", [this](W w, E error) {

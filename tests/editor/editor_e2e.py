@@ -1099,6 +1099,16 @@ quit
     p = env.run(env.script("bad_mesh.txt", "new\nadd_mesh_volume %s\n" % bad), expect_rc=1)
     check("open edge" in p.stderr and "open_edge.gltf" in p.stderr,
           "the bad mesh was not refused with its reason:\n" + p.stderr[-1500:])
+    # Shift+drop of a glTF adds it as a mesh volume (a plain drop loads it as the scene).
+    p = env.run(env.script("mesh_drop.txt", """
+new
+drop {cube} shift
+wait_frames 2
+expect_volumes 2
+print volume[1].shape
+quit
+""".format(cube=cube)))  # (enums print as their number: 2 = mesh)
+    check(re.search(r"volume\[1\]\.shape = 2$", p.stdout, re.M), "Shift+drop did not add a mesh volume:\n" + p.stdout)
     # Undo removes the volume in one step.
     env.run(env.script("mesh_undo.txt", """
 new
