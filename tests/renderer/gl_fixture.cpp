@@ -196,4 +196,31 @@ renderer::SceneDesc emissiveTestScene(const renderer::Camera& camera, double wal
     return scene;
 }
 
+glm::dvec3 FogVsCpuTest::sunDirection() { return glm::normalize(glm::dvec3(0.5, 0.35, -0.8)); }
+glm::dvec3 FogVsCpuTest::moonDirection() { return glm::normalize(glm::dvec3(-0.6, 0.2, 0.5)); }
+
+PresetState FogVsCpuTest::baseFrame() const {
+    PresetState air;
+    air.sunLight = light(sunDirection(), glm::dvec3(20.0), glm::dvec3(12.0, 10.0, 8.0));
+    air.moonLight = light(moonDirection(), glm::dvec3(0.05, 0.055, 0.06), glm::dvec3(0.03));
+    air.environment.atmosphere.mieAnisotropy = 0.8;
+    return air;
+}
+
+FogComparison FogVsCpuTest::renderAndCompare(const renderer::Camera& camera, const PresetState& air,
+                                             double wallDepth) {
+    renderer_->setScene(emissiveTestScene(camera, wallDepth));
+    renderer::FrameDesc frame = floatFrame();
+    frame.passes.sky = false;
+    frame.passes.globalFog = frame.passes.volumes = frame.passes.emitters = false;
+    renderer_->render(camera, air, frame);
+    const renderer::Image unfogged = renderer_->readColour();
+    frame.passes.globalFog = frame.passes.volumes = frame.passes.emitters = true;
+    renderer_->render(camera, air, frame);
+    const renderer::Image fogged = renderer_->readColour();
+    const renderer::Image depth = renderer_->readLinearDepth();
+    const FogScene scene(aerial::fogSceneDesc(air, sky_->sun, sky_->moon));
+    return compareWithCpu(fogged, unfogged, depth, camera, scene);
+}
+
 }  // namespace aerial::test

@@ -107,4 +107,23 @@ FogComparison compareWithCpu(const renderer::Image& fogged, const renderer::Imag
                              const renderer::Image& depth01, const renderer::Camera& camera,
                              const FogScene& scene, double floor = 1e-3);
 
+/// The fog-against-CPU fixture (test_renderer_fog.cpp, test_renderer_mesh_volumes.cpp):
+/// a fixed sun and moon, the emissive test scene, and one comparison of a
+/// fogged frame (global fog, volumes, emitters) with FogScene per pixel.
+class FogVsCpuTest : public SkyRendererTest {
+protected:
+    FogVsCpuTest() : SkyRendererTest(sunDirection(), moonDirection()) {}
+    static glm::dvec3 sunDirection();
+    static glm::dvec3 moonDirection();
+
+    /// The lights above the atmosphere and the Mie anisotropy; no fog yet.
+    PresetState baseFrame() const;
+
+    /// Renders the emissive test scene (its wall at `wallDepth`) with the fog
+    /// passes off, then on, and compares every pixel with the CPU query; the
+    /// fogged frame stays in the renderer (readColour) for the caller.
+    FogComparison renderAndCompare(const renderer::Camera& camera, const PresetState& air,
+                                   double wallDepth = 400.0);
+};
+
 }  // namespace aerial::test

@@ -31,35 +31,12 @@ Camera fogCamera(const glm::dvec3& eye, const glm::dvec3& target) {
     return makeCamera(eye, target, 1500.0, 1.1);
 }
 
-class FogVsCpu : public SkyRendererTest {
+class FogVsCpu : public FogVsCpuTest {
 protected:
-    FogVsCpu() : SkyRendererTest(sunDirection(), moonDirection()) {}
-    static glm::dvec3 sunDirection() { return glm::normalize(glm::dvec3(0.5, 0.35, -0.8)); }
-    static glm::dvec3 moonDirection() { return glm::normalize(glm::dvec3(-0.6, 0.2, 0.5)); }
-
-    PresetState baseFrame() const {
-        PresetState air;
-        air.sunLight = light(sunDirection(), glm::dvec3(20.0), glm::dvec3(12.0, 10.0, 8.0));
-        air.moonLight = light(moonDirection(), glm::dvec3(0.05, 0.055, 0.06), glm::dvec3(0.03));
-        air.environment.atmosphere.mieAnisotropy = 0.8;
-        return air;
-    }
-
     /// Renders with and without fog and compares every pixel with the CPU.
     FogComparison run(const char* name, const Camera& camera, const PresetState& air,
                       double wallDepth = 400.0) {
-        renderer_->setScene(emissiveTestScene(camera, wallDepth));
-        FrameDesc frame = floatFrame();
-        frame.passes.sky = false;
-        frame.passes.globalFog = frame.passes.volumes = frame.passes.emitters = false;
-        renderer_->render(camera, air, frame);
-        const renderer::Image unfogged = renderer_->readColour();
-        frame.passes.globalFog = frame.passes.volumes = frame.passes.emitters = true;
-        renderer_->render(camera, air, frame);
-        const renderer::Image fogged = renderer_->readColour();
-        const renderer::Image depth = renderer_->readLinearDepth();
-        const FogScene scene(aerial::fogSceneDesc(air, sky_->sun, sky_->moon));
-        const FogComparison c = compareWithCpu(fogged, unfogged, depth, camera, scene);
+        const FogComparison c = renderAndCompare(camera, air, wallDepth);
         std::printf(
             "[ measured ] %-34s max error %.3g (pixel %d,%d), mean T %.3f, mean S %.3g, inside hulls %d\n",
             name, c.maxError, c.worstX, c.worstY, c.meanTransmittance, c.meanInScatter,
