@@ -26,6 +26,22 @@ double transferFactor(double tau) { return tau < 1e-4 ? 1.0 - 0.5 * tau : -std::
 
 }  // namespace
 
+MsNode msZenithNode(int z) {
+    // x: midpoints in (-1, 1); cos theta = sign(x) |x|^p, weight = (1/2) d(cos theta) = (p/2) |x|^(p-1) dx.
+    const double dx = 2.0 / kMsZeniths;
+    const double x = -1.0 + (z + 0.5) * dx;
+    const double ax = std::abs(x);
+    return {-(x < 0.0 ? -1.0 : 1.0) * std::pow(ax, kMsZenithPower),
+            0.5 * kMsZenithPower * std::pow(ax, kMsZenithPower - 1.0) * dx};
+}
+
+MsNode msAzimuthNode(int a) {
+    // u: midpoints in (0, 1); phi = pi u^q, weight = d(phi) / pi = q u^(q-1) du.
+    const double du = 1.0 / kMsAzimuths;
+    const double u = (a + 0.5) * du;
+    return {kPi * std::pow(u, kMsAzimuthPower), kMsAzimuthPower * std::pow(u, kMsAzimuthPower - 1.0) * du};
+}
+
 double msCosineOfColumn(int column) {
     const double x = -1.0 + 2.0 * column / (kMsCosines - 1);
     return x * std::abs(x);
@@ -53,8 +69,8 @@ MultipleScatteringLut::MultipleScatteringLut() {
         const double mu = msCosineOfColumn(j);
         const double sinS = std::sqrt(std::max(1.0 - mu * mu, 0.0));
         for (int a = 0; a < kMsAzimuths; ++a) {
-            // Azimuth midpoints (a + 1/2) 2 pi / 8 in (0, pi); their mirrors give the other 4.
-            const double phi = (a + 0.5) * kPi / kMsAzimuths;
+            // Azimuths in (0, pi), their mirrors give the other half.
+            const double phi = msAzimuthNode(a).angle;
             comboP_[std::size_t(j * kMsAzimuths + a)] = float(mu);
             comboQ_[std::size_t(j * kMsAzimuths + a)] = float(sinS * std::cos(phi));
         }
@@ -75,12 +91,14 @@ void MultipleScatteringLut::setAtmosphere(const AtmosphereParams& air) {
     // E = 2 pi integral_0^1 L_f(mu) mu dmu over the upward zenith bands.
     MsScratch& s = groundScratch_;
     double irradiance[3] = {0.0, 0.0, 0.0};
-    for (int z = 0; z < kMsZeniths / 2; ++z) {
-        const double cosT = 1.0 - (2.0 * z + 1.0) / kMsZeniths;
+    for (int z = 0; z < kMsZeniths; ++z) {
+        const MsNode node = msZenithNode(z);
+        if (!(node.angle > 0.0)) continue;  // the upward bands
         double lf[3], endT[3];
         bool ground = false;
-        rayTransfer(0, cosT, s, lf, endT, ground);
-        for (int c = 0; c < 3; ++c) irradiance[c] += 2.0 * kPi * lf[c] * cosT * (2.0 / kMsZeniths);
+        rayTransfer(0, node.angle, s, lf, endT, ground);
+        // d(cos theta) of the band = 2 weight.
+        for (int c = 0; c < 3; ++c) irradiance[c] += 2.0 * kPi * lf[c] * node.angle * (2.0 * node.weight);
     }
     for (int c = 0; c < 3; ++c)
         groundReflection_[c] = std::clamp(air.groundAlbedo[c], 0.0, 1.0) / kPi * irradiance[c];
@@ -179,7 +197,8 @@ void MultipleScatteringLut::buildPsiRow(int row, MsScratch& s) {
     double transfer[3] = {0.0, 0.0, 0.0};  // sum over the zenith bands of the unit in-scattering
 
     for (int z = 0; z < kMsZeniths; ++z) {
-        const double cosT = 1.0 - (2.0 * z + 1.0) / kMsZeniths;
+        const MsNode node = msZenithNode(z);
+        const double cosT = node.angle, wz = node.weight;
         const double sinT = std::sqrt(std::max(1.0 - cosT * cosT, 0.0));
         bool hitsGround = false;
         const int n = rayCrossings(row, cosT, s, hitsGround);
@@ -221,41 +240,41 @@ void MultipleScatteringLut::buildPsiRow(int row, MsScratch& s) {
             seg.acc = s.acc.data();
             double segT[3];
             for (int c = 0; c < 3; ++c) {
-                seg.weight[c] = float(scatter[c] * viewT[c]);
+                seg.weight[c] = float(wz * scatter[c] * viewT[c]);
                 seg.tauView[c] = float(tau[c]);
                 segT[c] = std::exp(-tau[c]);
-                transfer[c] += scatter[c] * viewT[c] * transferFactor(tau[c]);
+                transfer[c] += wz * scatter[c] * viewT[c] * transferFactor(tau[c]);
             }
             msSegmentKernel(seg);
             for (int c = 0; c < 3; ++c) viewT[c] *= segT[c];
         }
         if (hitsGround) {
             // The ground reflects the unit field too (f_ms's ground share).
-            for (int c = 0; c < 3; ++c) transfer[c] += viewT[c] * groundReflection_[c];
+            for (int c = 0; c < 3; ++c) transfer[c] += wz * viewT[c] * groundReflection_[c];
             // The last crossing is the ground (shell 0, horizon cosine 0): its
             // margin is the sun's zenith cosine there.
             const float* r = record[segments % 2];
             for (int c = 0; c < 3; ++c) {
                 for (int m = 0; m < kMsCombos; ++m) {
                     const double mu = std::max(double(r[6 * kMsCombos + m]), 0.0);
-                    s.ground[std::size_t(c * kMsCombos + m)] += viewT[c] * r[(3 + c) * kMsCombos + m] * mu;
+                    s.ground[std::size_t(c * kMsCombos + m)] += wz * viewT[c] * r[(3 + c) * kMsCombos + m] * mu;
                 }
             }
         }
     }
 
-    // Means over the 64 directions: each combination stands for 2 of them.
-    const double directions = double(kMsZeniths) * 2.0 * kMsAzimuths;
+    // Means over the sphere (the weights sum to 1 in zenith and in azimuth;
+    // each azimuth stands for itself and its mirror).
     for (int c = 0; c < 3; ++c) {
-        const double fms = std::clamp(transfer[c] / kMsZeniths, 0.0, 0.999);
+        const double fms = std::clamp(transfer[c], 0.0, 0.999);
         const double albedo = std::clamp(air_.groundAlbedo[c], 0.0, 1.0);
         for (int j = 0; j < kMsCosines; ++j) {
             double sum = 0.0;
             for (int a = 0; a < kMsAzimuths; ++a) {
                 const std::size_t m = std::size_t(c * kMsCombos + j * kMsAzimuths + a);
-                sum += 2.0 * (double(s.acc[m]) / (4.0 * kPi) + s.ground[m] * albedo / kPi);
+                sum += msAzimuthNode(a).weight * (double(s.acc[m]) / (4.0 * kPi) + s.ground[m] * albedo / kPi);
             }
-            const double l2 = sum / directions;
+            const double l2 = sum;
             const double value = l2 / (1.0 - fms);
             psi_[(std::size_t(row) * kMsCosines + j) * 3 + c] = std::isfinite(value) ? float(value) : 0.0f;
         }

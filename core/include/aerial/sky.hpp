@@ -30,8 +30,9 @@
 // is the radiance per unit sun illuminance [1/sr] that all orders >= 2 add at
 // height h for a sun of zenith cosine mu_s, assuming isotropic scattering of
 // the second order and a geometric series of the higher ones:
-//   Psi_ms = L_2nd / (1 - f_ms), L_2nd the second order from 64 directions
-// (single scattering of the sun along each ray to the ground or the top, plus
+//   Psi_ms = L_2nd / (1 - f_ms), L_2nd the second order from 96 directions
+// crowded at the horizon and towards the sun (Hillaire: 64 uniform ones,
+// which miss the thin sunlit upper air that lights a deep twilight) (single scattering of the sun along each ray to the ground or the top, plus
 // the ground's Lambertian bounce with AtmosphereParams::groundAlbedo) and f_ms
 // the transfer (the same integral of unit isotropic in-scattering). The LUT
 // (MultipleScatteringTable) has 25 heights (the shells of 24 equal-mass
