@@ -54,8 +54,9 @@
 //   I_R, I_M, I_ms = bilinear(i, j), the azimuth wrapping;  mu = dot(v, light)
 //   L += E (3/(16 pi) (1 + mu^2) I_R + P_CS(mu, g) I_M + I_ms),
 // E = illuminance_space_rgb of that light, g = parameters.atmosphere.mie.
-// anisotropy. Far fog: the same with horizon_rayleigh / horizon_mie /
-// horizon_multiple.
+// anisotropy. Far fog seen along v: the same with H = (1 - s) horizon_x +
+// s (row 0 at v's azimuth), s = |v.xz| = cos(elevation), for each of
+// rayleigh / mie / multiple (the sky behind the fog; horizonSkySample).
 //
 // Writing is atomic: every file is written to a hidden temporary beside
 // it, fsync'ed and renamed into place, and manifest.json is removed first and
@@ -424,8 +425,9 @@ int runBake(const BakeOptions& options) {
           {"phase_mie",
            "P_M(mu, g) = 3 / (8 pi) * (1 - g^2) (1 + mu^2) / ((2 + g^2) (1 + g^2 - 2 g mu)^1.5)"},
           {"fog_colour",
-           "far fog seen along v: the radiance formula with horizon_rayleigh / horizon_mie / "
-           "horizon_multiple in place of the table sample"},
+           "far fog seen along v: the radiance formula with H = (1 - s) * horizon_x + s * (row 0 at the "
+           "azimuth of v) in place of the table sample, s = sqrt(v.x^2 + v.z^2), for x = rayleigh, mie, "
+           "multiple: the sky right behind fog near the horizon, the azimuthal mean straight up"},
           {"values",
            "rayleigh, mie: phase-less single-scattering integrals (dimensionless); multiple: the isotropic "
            "higher orders (Hillaire 2020), per steradian, phase already applied; scene-linear"}}},

@@ -5,8 +5,9 @@
 // The scene is built from the evaluated state: global height fog, the fog
 // volumes and the emitters (keyed values and lightning flashes applied), and
 // two fog lights, the sun and the moon, each with its illuminance above the
-// atmosphere and the horizon averages (horizonRayleigh / horizonMie) of its
-// sky table (SkySolver, 128 x 64).
+// atmosphere, the horizon averages (horizonRayleigh / horizonMie) of its
+// sky table (SkySolver, 128 x 64) and its horizon row (the fog takes the sky
+// behind it: horizonSkySample in <aerial/sky.hpp>).
 //
 // --json:
 //   {"preset": {"file", "name"}, "time_h", "time", "from", "to", "length_m",

@@ -238,9 +238,10 @@ FogSceneDesc fogSceneDesc(const PresetState& state, const SkyTable& sunSky, cons
     desc.emitters = state.emitters;
     desc.mieAnisotropy = state.environment.atmosphere.mieAnisotropy;
     desc.lights[0] = {state.sunLight.body.direction, state.sunLight.illuminanceSpace, sunSky.horizonRayleigh,
-                      sunSky.horizonMie, sunSky.horizonMultiple};
+                      sunSky.horizonMie, sunSky.horizonMultiple, skyHorizonRow(sunSky)};
     desc.lights[1] = {state.moonLight.body.direction, state.moonLight.illuminanceSpace,
-                      moonSky.horizonRayleigh, moonSky.horizonMie, moonSky.horizonMultiple};
+                      moonSky.horizonRayleigh, moonSky.horizonMie, moonSky.horizonMultiple,
+                      skyHorizonRow(moonSky)};
     return desc;
 }
 

@@ -83,10 +83,14 @@ private:
 struct PreparedLight {
     glm::dvec3 direction{0.0, 1.0, 0.0};
     glm::dvec3 illuminance{0.0};
-    glm::dvec3 horizonRayleigh{0.0};
-    glm::dvec3 horizonMie{0.0};
-    glm::dvec3 horizonMultiple{0.0};
+    SkyTable horizon;  // the row (if any) and the sanitised averages (horizonSkySample)
 };
+
+/// Non-finite or negative entries of a table row become 0.
+void sanitiseRow(std::vector<float>& row) {
+    for (float& x : row)
+        if (!(std::isfinite(x) && x > 0.0f)) x = 0.0f;
+}
 
 }  // namespace
 
@@ -110,13 +114,20 @@ struct FogScene::Impl {
             PreparedLight p;
             p.direction = detail::safeDirection(light.direction);
             p.illuminance = detail::sanitiseColour(light.illuminance);
-            p.horizonRayleigh = detail::sanitiseColour(light.horizonRayleigh);
-            p.horizonMie = detail::sanitiseColour(light.horizonMie);
-            p.horizonMultiple = detail::sanitiseColour(light.horizonMultiple);
+            p.horizon = light.horizonRow;
+            for (auto* row : {&p.horizon.rayleigh, &p.horizon.mie, &p.horizon.multiple}) sanitiseRow(*row);
+            p.horizon.horizonRayleigh = detail::sanitiseColour(light.horizonRayleigh);
+            p.horizon.horizonMie = detail::sanitiseColour(light.horizonMie);
+            p.horizon.horizonMultiple = detail::sanitiseColour(light.horizonMultiple);
+            const auto any = [](const std::vector<float>& row) {
+                return std::any_of(row.begin(), row.end(), [](float x) { return x > 0.0f; });
+            };
+            const SkyTable& h = p.horizon;
             const bool on = glm::dot(p.illuminance, p.illuminance) > 0.0 &&
-                            (glm::dot(p.horizonRayleigh, p.horizonRayleigh) > 0.0 ||
-                             glm::dot(p.horizonMie, p.horizonMie) > 0.0 ||
-                             glm::dot(p.horizonMultiple, p.horizonMultiple) > 0.0);
+                            (glm::dot(h.horizonRayleigh, h.horizonRayleigh) > 0.0 ||
+                             glm::dot(h.horizonMie, h.horizonMie) > 0.0 ||
+                             glm::dot(h.horizonMultiple, h.horizonMultiple) > 0.0 || any(h.rayleigh) ||
+                             any(h.mie) || any(h.multiple));
             if (on) {
                 lights[lightCount++] = p;
             }
@@ -146,8 +157,9 @@ struct FogScene::Impl {
         for (std::size_t k = 0; k < lightCount; ++k) {
             const PreparedLight& l = lights[k];
             const double mu = std::clamp(glm::dot(v, l.direction), -1.0, 1.0);
-            colour += l.illuminance * (rayleighPhase(mu) * l.horizonRayleigh +
-                                       miePhase(mu, mieAnisotropy) * l.horizonMie + l.horizonMultiple);
+            const SkySample h = horizonSkySample(l.horizon, v);
+            colour += l.illuminance *
+                      (rayleighPhase(mu) * h.rayleigh + miePhase(mu, mieAnisotropy) * h.mie + h.multiple);
         }
         return colour;
     }

@@ -250,13 +250,53 @@ glm::dvec3 skyRadiance(const SkyTable& table, double mieAnisotropy, const glm::d
     return illuminance * (rayleighPhase(mu) * s.rayleigh + miePhase(mu, mieAnisotropy) * s.mie + s.multiple);
 }
 
+SkySample horizonSkySample(const SkyTable& table, const glm::dvec3& viewDirection) {
+    SkySample mean;
+    mean.rayleigh = table.horizonRayleigh;
+    mean.mie = table.horizonMie;
+    mean.multiple = table.horizonMultiple;
+    const glm::dvec3 v = normalizedOr(viewDirection, glm::dvec3(0.0, 1.0, 0.0));
+    const double s = std::sqrt(v.x * v.x + v.z * v.z);
+    const std::size_t texels = std::size_t(std::max(table.azimuthCount, 0)) * 3;
+    if (!(s > 0.0) || table.elevationCount < 1 || table.rayleigh.size() < texels) return mean;
+    // Row 0 at v's azimuth (sampleSkyTable clamps the elevation to row 0).
+    const SkySample row = sampleSkyTable(table, glm::dvec3(v.x, 0.0, v.z));
+    const double w = std::min(s, 1.0);
+    SkySample out;
+    out.rayleigh = (1.0 - w) * mean.rayleigh + w * row.rayleigh;
+    out.mie = (1.0 - w) * mean.mie + w * row.mie;
+    out.multiple = (1.0 - w) * mean.multiple + w * row.multiple;
+    return out;
+}
+
+SkyTable skyHorizonRow(const SkyTable& table) {
+    SkyTable row;
+    row.azimuthCount = table.azimuthCount;
+    row.elevationCount = 1;
+    row.lightDirection = table.lightDirection;
+    row.lightAzimuth = table.lightAzimuth;
+    row.horizonRayleigh = table.horizonRayleigh;
+    row.horizonMie = table.horizonMie;
+    row.horizonMultiple = table.horizonMultiple;
+    row.generation = table.generation;
+    const std::size_t n = std::size_t(std::max(table.azimuthCount, 0)) * 3;
+    auto first = [&](const std::vector<float>& v) {
+        return v.size() >= n ? std::vector<float>(v.begin(), v.begin() + std::ptrdiff_t(n)) : std::vector<float>();
+    };
+    row.rayleigh = first(table.rayleigh);
+    row.mie = first(table.mie);
+    row.multiple = first(table.multiple);
+    if (row.rayleigh.empty() || row.mie.empty()) row.elevationCount = 0;
+    return row;
+}
+
 glm::dvec3 horizonFogRadiance(const SkyTable& table, double mieAnisotropy, const glm::dvec3& viewDirection,
                               const glm::dvec3& illuminance) {
     const glm::dvec3 v = normalizedOr(viewDirection, glm::dvec3(0.0, 1.0, 0.0));
     const glm::dvec3 l = normalizedOr(table.lightDirection, glm::dvec3(0.0, 1.0, 0.0));
     const double mu = dot3(v, l);
-    return illuminance * (rayleighPhase(mu) * table.horizonRayleigh +
-                          miePhase(mu, mieAnisotropy) * table.horizonMie + table.horizonMultiple);
+    const SkySample h = horizonSkySample(table, v);
+    return illuminance * (rayleighPhase(mu) * h.rayleigh + miePhase(mu, mieAnisotropy) * h.mie + h.multiple);
 }
 
 }  // namespace aerial

@@ -6,7 +6,7 @@
 // Cornette-Shanks phase functions), Wenzel 2006 section 6.4 (analytic
 // exponential height fog). Units: lengths [m], coefficients [1/m], phase
 // functions [1/sr], radiance in the unit of the lights' illuminance per sr.
-// Requires common/frame.glsl.
+// Requires common/frame.glsl; includes common/sky_table.glsl (the fog colour).
 #ifndef AERIAL_ATMOSPHERE_GLSL
 #define AERIAL_ATMOSPHERE_GLSL
 
@@ -75,16 +75,57 @@ float exponentialOpticalDepth(float b, float c, float height, float rise, float 
     return min(m * exp(min(-yDense, 80.0)), kMaxOpticalDepth);
 }
 
+// The sky tables (units 0-3, 6, 7, bound for the whole frame) give the fog
+// the horizon behind it.
+#include "common/sky_table.glsl"
+
+/// The phase-less horizon behind far fog in direction v (unit) for one light
+/// (horizonSkySample in core/src/sky_table.cpp): the table's row 0 at v's
+/// azimuth blended with the horizon averages by s = |v.xz|,
+/// H = (1 - s) average + s row0(azimuth). Row 0 is the texel row's centre,
+/// so only the columns are filtered, as in sampleSkyTable.
+void horizonSky(sampler2D rayleighTable, sampler2D mieTable, sampler2D multipleTable, vec3 v, float lightAzimuth,
+                vec2 size, vec3 meanRayleigh, vec3 meanMie, vec3 meanMultiple, out vec3 rayleigh, out vec3 mie,
+                out vec3 multiple) {
+    rayleigh = meanRayleigh;
+    mie = meanMie;
+    multiple = meanMultiple;
+    float s = min(length(v.xz), 1.0);
+    if (!(s > 0.0) || !(size.x >= 1.0)) return;
+    vec2 texel = skyTableTexelAt(vec2(0.0, skyAngles(v, false).y), lightAzimuth, size, vec3(0.0), 0.0, 0.0);
+    rayleigh = mix(meanRayleigh, sampleTable(rayleighTable, texel, size), s);
+    mie = mix(meanMie, sampleTable(mieTable, texel, size), s);
+    multiple = mix(meanMultiple, sampleTable(multipleTable, texel, size), s);
+}
+
+void sunHorizonSky(vec3 v, out vec3 rayleigh, out vec3 mie, out vec3 multiple) {
+    horizonSky(uSunRayleigh, uSunMie, uSunMultiple, v, frame.sunTableAzimuth,
+               vec2(frame.sunTableColumns, frame.sunTableRows), frame.sunHorizonRayleigh, frame.sunHorizonMie,
+               frame.sunHorizonMultiple, rayleigh, mie, multiple);
+}
+
+void moonHorizonSky(vec3 v, out vec3 rayleigh, out vec3 mie, out vec3 multiple) {
+    horizonSky(uMoonRayleigh, uMoonMie, uMoonMultiple, v, frame.moonTableAzimuth,
+               vec2(frame.moonTableColumns, frame.moonTableRows), frame.moonHorizonRayleigh,
+               frame.moonHorizonMie, frame.moonHorizonMultiple, rayleigh, mie, multiple);
+}
+
 /// The sky's fog colour in direction v (unit): sum over sun and moon of
-/// E (P_R(mu) I_R,horizon + P_M(mu, g) I_M,horizon + I_ms,horizon) (FogScene::fogColour).
+/// E (P_R(mu) H_R(v) + P_M(mu, g) H_M(v) + H_ms(v)) (FogScene::fogColour).
 vec3 skyFogColour(vec3 v) {
     float g = frame.mieAnisotropy;
-    float muSun = dot(v, frame.sunDirection);
-    float muMoon = dot(v, frame.moonDirection);
-    return frame.sunIlluminanceSpace * (rayleighPhase(muSun) * frame.sunHorizonRayleigh +
-                                            miePhase(muSun, g) * frame.sunHorizonMie + frame.sunHorizonMultiple) +
-           frame.moonIlluminanceSpace * (rayleighPhase(muMoon) * frame.moonHorizonRayleigh +
-                                             miePhase(muMoon, g) * frame.moonHorizonMie + frame.moonHorizonMultiple);
+    vec3 r, m, x, colour = vec3(0.0);
+    if (any(greaterThan(frame.sunIlluminanceSpace, vec3(0.0)))) {
+        sunHorizonSky(v, r, m, x);
+        float mu = dot(v, frame.sunDirection);
+        colour += frame.sunIlluminanceSpace * (rayleighPhase(mu) * r + miePhase(mu, g) * m + x);
+    }
+    if (any(greaterThan(frame.moonIlluminanceSpace, vec3(0.0)))) {
+        moonHorizonSky(v, r, m, x);
+        float mu = dot(v, frame.moonDirection);
+        colour += frame.moonIlluminanceSpace * (rayleighPhase(mu) * r + miePhase(mu, g) * m + x);
+    }
+    return colour;
 }
 
 /// Colour of fog in a colour mode (0 sky, 1 tinted, 2 custom; FogColourMode).

@@ -64,16 +64,15 @@ void froxelFogColours(vec3 v, out vec3 shadowable, out vec3 all) {
     float g = frame.mieAnisotropy;
     vec3 light, rayleigh, mie;
     float mu;
+    vec3 multiple;
     if (froxel.castIsMoon > 0.5) {
         mu = dot(v, frame.moonDirection);
         light = frame.moonIlluminanceSpace;
-        rayleigh = frame.moonHorizonRayleigh;
-        mie = frame.moonHorizonMie;
+        moonHorizonSky(v, rayleigh, mie, multiple);
     } else {
         mu = dot(v, frame.sunDirection);
         light = frame.sunIlluminanceSpace;
-        rayleigh = frame.sunHorizonRayleigh;
-        mie = frame.sunHorizonMie;
+        sunHorizonSky(v, rayleigh, mie, multiple);
     }
     vec3 single = light * (rayleighPhase(mu) * rayleigh + miePhase(mu, g) * mie);
     if (froxel.customPhase > 0.5) {  // the fog's own anisotropy in place of the atmosphere's

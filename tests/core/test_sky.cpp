@@ -581,15 +581,54 @@ TEST(SkySolver, HorizonAverageIsTheMeanOfRowZero) {
         EXPECT_NEAR(t.horizonRayleigh[c], r[c] / t.azimuthCount, 1e-12 * r[c]);
         EXPECT_NEAR(t.horizonMie[c], m[c] / t.azimuthCount, 1e-12 * m[c]);
     }
+}
+
+// The fog colour takes the sky behind it (horizonSkySample): row 0 at the
+// view's azimuth, linear between the columns (computed here from the texels
+// and the column convention of sky.hpp), blended with the averages by
+// cos(elevation); straight up, the averages alone. A twilight sun, where the
+// horizon ring varies most.
+TEST(SkySolver, HorizonFogTakesTheSkyBehindIt) {
+    AtmosphereParams air;
+    SkySolver solver;
+    solver.solve(air, lightAtElevation(-3.0));
+    const SkyTable& t = solver.table();
+    const SkyTable row = skyHorizonRow(t);
+    ASSERT_EQ(row.elevationCount, 1);
     const glm::dvec3 e(1.0, 2.0, 3.0);
-    const glm::dvec3 dir = glm::dvec3(0.6, 0.0, 0.8);
-    const double mu = dot3(dir, t.lightDirection);
-    const glm::dvec3 fog = horizonFogRadiance(t, air.mieAnisotropy, dir, e);
-    for (int c = 0; c < 3; ++c)
-        EXPECT_NEAR(fog[c],
-                    e[c] * (rayleighPhase(mu) * t.horizonRayleigh[c] +
-                            miePhase(mu, air.mieAnisotropy) * t.horizonMie[c] + t.horizonMultiple[c]),
-                    1e-15);
+    auto rowAt = [&](const std::vector<float>& table, double worldAzimuth, int c) {
+        double relative = worldAzimuth - t.lightAzimuth;
+        relative -= 2.0 * kPi * std::floor(relative / (2.0 * kPi));
+        const double col = relative / (2.0 * kPi) * t.azimuthCount;
+        const int i0 = int(col) % t.azimuthCount, i1 = (i0 + 1) % t.azimuthCount;
+        const double f = col - std::floor(col);
+        return (1.0 - f) * table[std::size_t(i0) * 3 + c] + f * table[std::size_t(i1) * 3 + c];
+    };
+    double lowest = 1e300, highest = 0.0;
+    for (double azimuthDeg = 1.3; azimuthDeg < 360.0; azimuthDeg += 17.0) {
+        for (double elevationDeg : {0.0, 30.0, 60.0, 90.0}) {
+            const double az = azimuthDeg * kPi / 180.0, el = elevationDeg * kPi / 180.0;
+            const glm::dvec3 dir(std::sin(az) * std::cos(el), std::sin(el), -std::cos(az) * std::cos(el));
+            const double mu = dot3(dir, t.lightDirection);
+            const double s = elevationDeg == 90.0 ? 0.0 : std::cos(el);
+            const glm::dvec3 fog = horizonFogRadiance(t, air.mieAnisotropy, dir, e);
+            const glm::dvec3 fromRow = horizonFogRadiance(row, air.mieAnisotropy, dir, e);
+            for (int c = 0; c < 3; ++c) {
+                const double r = (1.0 - s) * t.horizonRayleigh[c] + s * rowAt(t.rayleigh, az, c);
+                const double m = (1.0 - s) * t.horizonMie[c] + s * rowAt(t.mie, az, c);
+                const double x = (1.0 - s) * t.horizonMultiple[c] + s * rowAt(t.multiple, az, c);
+                const double want = e[c] * (rayleighPhase(mu) * r + miePhase(mu, air.mieAnisotropy) * m + x);
+                EXPECT_NEAR(fog[c], want, 1e-12 * want + 1e-300) << azimuthDeg << " " << elevationDeg;
+                EXPECT_NEAR(fromRow[c], want, 1e-12 * want + 1e-300) << azimuthDeg << " " << elevationDeg;
+                if (elevationDeg == 0.0) {
+                    lowest = std::min(lowest, r);
+                    highest = std::max(highest, r);
+                }
+            }
+        }
+    }
+    // The point of it: at twilight the ring is far from uniform.
+    EXPECT_GT(highest, 20.0 * lowest);
 }
 
 // ---------------------------------------------------------------------------

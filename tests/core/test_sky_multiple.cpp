@@ -261,7 +261,8 @@ TEST(SkyMultiple, HorizonAverageAndFogColour) {
         EXPECT_GT(t.horizonMultiple[c], 0.0);
         EXPECT_NEAR(t.horizonMultiple[c], sum[c] / t.azimuthCount, 1e-12 * sum[c]);
     }
-    // Far fog and the sky: the isotropic term is added as it is.
+    // Far fog and the sky: the isotropic term is added as it is (towards the
+    // horizon, the fog takes row 0 behind it: the sky's own sample there).
     const glm::dvec3 v = direction(0.0, 90.0), e(2.0);
     const SkySample s = sampleSkyTable(t, v);
     const glm::dvec3 withMs = skyRadiance(t, air.mieAnisotropy, v, e);
@@ -273,7 +274,7 @@ TEST(SkyMultiple, HorizonAverageAndFogColour) {
     const glm::dvec3 fogWithout = horizonFogRadiance(noMs, air.mieAnisotropy, v, e);
     for (int c = 0; c < 3; ++c) {
         EXPECT_NEAR(withMs[c] - without[c], e[c] * s.multiple[c], 1e-12);
-        EXPECT_NEAR(fogWith[c] - fogWithout[c], e[c] * t.horizonMultiple[c], 1e-12);
+        EXPECT_NEAR(fogWith[c] - fogWithout[c], e[c] * s.multiple[c], 1e-12);
     }
 }
 

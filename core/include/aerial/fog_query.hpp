@@ -43,6 +43,7 @@
 #include <aerial/emitter.hpp>
 #include <aerial/fog_volume.hpp>
 #include <aerial/height_fog.hpp>
+#include <aerial/sky.hpp>
 
 #include <glm/vec3.hpp>
 
@@ -52,13 +53,18 @@
 
 namespace aerial {
 
-/// A light that colours fog through the sky's horizon averages.
+/// A light that colours fog through the sky's horizon: the averages, and
+/// (when given) the horizon row, so that the fog takes the sky behind it
+/// (horizonSkySample in <aerial/sky.hpp>).
 struct FogLight {
     glm::dvec3 direction{0.0, 1.0, 0.0};  ///< unit, from the scene to the light
     glm::dvec3 illuminance{0.0};          ///< E, RGB (0 turns the light off)
     glm::dvec3 horizonRayleigh{0.0};      ///< SkyTable::horizonRayleigh for this light
     glm::dvec3 horizonMie{0.0};           ///< SkyTable::horizonMie for this light
     glm::dvec3 horizonMultiple{0.0};      ///< SkyTable::horizonMultiple for this light (isotropic)
+    /// skyHorizonRow of this light's table; empty (the default): the
+    /// averages alone colour the fog in every direction.
+    SkyTable horizonRow{};
 };
 
 struct FogSceneDesc {

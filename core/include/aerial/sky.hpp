@@ -207,9 +207,25 @@ SkySample sampleSkyTable(const SkyTable& table, const glm::dvec3& viewDirection)
 glm::dvec3 skyRadiance(const SkyTable& table, double mieAnisotropy, const glm::dvec3& viewDirection,
                        const glm::dvec3& illuminance);
 
-/// Colour of far fog seen in a view direction: the horizon averages with the
-/// per-direction phase functions, E (P_R horizonRayleigh + P_M horizonMie +
-/// horizonMultiple).
+/// The sky behind far fog seen in a unit view direction v, phase-less: the
+/// table's horizon row (row 0) at v's azimuth, blended with the horizon
+/// averages by v's elevation,
+///   H(v) = (1 - s) average + s row0(azimuth of v),  s = |v.xz| = cos(elevation),
+/// so fog towards the horizon matches the sky right behind it and fog seen
+/// steeply (lit from all around) takes the azimuthal mean. At twilight the
+/// horizon ring varies by 100x or more in azimuth (the glow towards the sun
+/// against the earth's shadow), and the mean alone coloured every fog with the
+/// glow. A table without rows gives the averages alone. A table of one row
+/// (skyHorizonRow) is enough.
+SkySample horizonSkySample(const SkyTable& table, const glm::dvec3& viewDirection);
+
+/// The horizon row of `table` (row 0, all columns) as a table of one row,
+/// with the light's direction and azimuth and the horizon averages: what
+/// horizonSkySample needs (FogLight::horizonRow).
+SkyTable skyHorizonRow(const SkyTable& table);
+
+/// Colour of far fog seen in a view direction: horizonSkySample with the
+/// per-direction phase functions, E (P_R H_R(v) + P_M H_M(v) + H_ms(v)).
 glm::dvec3 horizonFogRadiance(const SkyTable& table, double mieAnisotropy, const glm::dvec3& viewDirection,
                               const glm::dvec3& illuminance);
 
