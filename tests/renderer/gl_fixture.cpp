@@ -201,8 +201,8 @@ glm::dvec3 FogVsCpuTest::moonDirection() { return glm::normalize(glm::dvec3(-0.6
 
 PresetState FogVsCpuTest::baseFrame() const {
     PresetState air;
-    air.sunLight = light(sunDirection(), glm::dvec3(20.0), glm::dvec3(12.0, 10.0, 8.0));
-    air.moonLight = light(moonDirection(), glm::dvec3(0.05, 0.055, 0.06), glm::dvec3(0.03));
+    air.sunLight = light(sun_, glm::dvec3(20.0), glm::dvec3(12.0, 10.0, 8.0));
+    air.moonLight = light(moon_, glm::dvec3(0.05, 0.055, 0.06), glm::dvec3(0.03));
     air.environment.atmosphere.mieAnisotropy = 0.8;
     return air;
 }

@@ -112,7 +112,10 @@ FogComparison compareWithCpu(const renderer::Image& fogged, const renderer::Imag
 /// fogged frame (global fog, volumes, emitters) with FogScene per pixel.
 class FogVsCpuTest : public SkyRendererTest {
 protected:
-    FogVsCpuTest() : SkyRendererTest(sunDirection(), moonDirection()) {}
+    FogVsCpuTest() : FogVsCpuTest(sunDirection(), moonDirection()) {}
+    /// Lights in other directions (the tables are solved for them).
+    FogVsCpuTest(const glm::dvec3& sun, const glm::dvec3& moon)
+        : SkyRendererTest(sun, moon), sun_(sun), moon_(moon) {}
     static glm::dvec3 sunDirection();
     static glm::dvec3 moonDirection();
 
@@ -124,6 +127,9 @@ protected:
     /// fogged frame stays in the renderer (readColour) for the caller.
     FogComparison renderAndCompare(const renderer::Camera& camera, const PresetState& air,
                                    double wallDepth = 400.0);
+
+private:
+    glm::dvec3 sun_, moon_;
 };
 
 }  // namespace aerial::test

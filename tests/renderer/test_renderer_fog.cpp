@@ -2,7 +2,8 @@
 // contract of fog_query.hpp) on the same inputs, every pixel: global height
 // fog, box and ellipsoid volumes (rotated, non-uniformly scaled, gradients in
 // arbitrary directions, offsets, colour modes) with the camera outside,
-// inside and straddling the hull (near-plane crossing), and emitters.
+// inside and straddling the hull (near-plane crossing), and emitters; and the
+// sky fog colour at twilight, where it takes the horizon row behind it.
 //
 // Method: render the scene pass alone (L_scene) and the full frame into
 // RGBA32F targets, read back the linear depth, reconstruct each pixel's
@@ -33,6 +34,8 @@ Camera fogCamera(const glm::dvec3& eye, const glm::dvec3& target) {
 
 class FogVsCpu : public FogVsCpuTest {
 protected:
+    FogVsCpu() = default;
+    FogVsCpu(const glm::dvec3& sun, const glm::dvec3& moon) : FogVsCpuTest(sun, moon) {}
     /// Renders with and without fog and compares every pixel with the CPU.
     FogComparison run(const char* name, const Camera& camera, const PresetState& air,
                       double wallDepth = 400.0) {
@@ -52,6 +55,39 @@ TEST_F(FogVsCpu, GlobalHeightFog) {
     const FogComparison c = run("global fog", fogCamera({0, 25, 0}, {0, 18, -100}), air);
     EXPECT_LT(c.maxError, kTolerance);
     EXPECT_LT(c.meanTransmittance, 0.9);  // the fog is not trivial
+}
+
+// The sun 3 deg below the horizon: the horizon row behind the fog varies by
+// orders of magnitude in azimuth (the glow towards the sun, the earth's
+// shadow opposite), and the fog takes the sky behind it (horizonSkySample).
+// Looking towards the sun, across and away, the GPU matches the CPU.
+class FogVsCpuAtTwilight : public FogVsCpu {
+protected:
+    FogVsCpuAtTwilight()
+        : FogVsCpu(glm::normalize(glm::dvec3(0.6, -0.0524, -0.8)), glm::normalize(glm::dvec3(-0.6, 0.2, 0.5))) {}
+};
+
+TEST_F(FogVsCpuAtTwilight, GlobalFogTakesTheSkyBehindIt) {
+    PresetState air = baseFrame();
+    air.environment.fog = {0.004, 0.02, 3.0};
+    // A set sun's sky is dim: brighter light makes the in-scattering as large
+    // as the scene behind it, so the tolerance (relative to the larger) bites.
+    air.sunLight.illuminanceSpace *= 30.0;
+    const double sunAzimuth = std::atan2(0.6, 0.8);
+    const FogScene scene(aerial::fogSceneDesc(air, sky_->sun, sky_->moon));
+    glm::dvec3 towards(0.0), away(0.0);
+    for (double turn : {0.0, 0.5 * kPi, kPi}) {
+        const double az = sunAzimuth + turn;
+        const glm::dvec3 target(100.0 * std::sin(az), 18.0, -100.0 * std::cos(az));
+        char name[64];
+        std::snprintf(name, sizeof name, "twilight fog, %.0f deg from the sun", turn * 180.0 / kPi);
+        const FogComparison c = run(name, fogCamera({0, 25, 0}, target), air);
+        EXPECT_LT(c.maxError, kTolerance) << name;
+        const glm::dvec3 level(std::sin(az), 0.0, -std::cos(az));
+        (turn == 0.0 ? towards : away) = scene.fogColour(level);
+    }
+    // The point of it: towards the glow the fog is far brighter than opposite.
+    EXPECT_GT(towards.r, 10.0 * away.r);
 }
 
 TEST_F(FogVsCpu, GlobalFogHorizontalRaysAndUniformFog) {
