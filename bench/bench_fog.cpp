@@ -9,12 +9,16 @@
 // BM_FogQueryMeshSubtract: the same layout with a quarter of the volumes
 // mesh volumes (a torus of 2304 triangles, 10-60 m across) and a quarter
 // subtract volumes, against BM_FogQuery/256 in the same run.
+// BM_FogQueryHorizonRow: BM_FogQuery/256 with the lights' horizon rows (the
+// fog colour from the sky behind it, a solved 128-column table of a sun 3
+// deg below the horizon) in place of the averages alone.
 //
 //   build/fog/bench/aerial_bench --benchmark_filter=Fog
 #include "test_meshes.hpp"
 
 #include <aerial/fog_mesh.hpp>
 #include <aerial/fog_query.hpp>
+#include <aerial/sky.hpp>
 
 #include <benchmark/benchmark.h>
 
@@ -35,7 +39,17 @@ struct BenchScene {
     std::vector<aerial::FogSegment> segments;
 };
 
-BenchScene makeScene(std::size_t volumeCount, bool meshAndSubtract = false) {
+/// The horizon row of a sun 3 deg below the horizon (solved once).
+const aerial::SkyTable& twilightRow() {
+    static const aerial::SkyTable row = [] {
+        aerial::SkySolver solver;
+        solver.solve(aerial::AtmosphereParams{}, glm::normalize(glm::dvec3(0.4, -0.05, -0.8)));
+        return aerial::skyHorizonRow(solver.table());
+    }();
+    return row;
+}
+
+BenchScene makeScene(std::size_t volumeCount, bool meshAndSubtract = false, bool horizonRows = false) {
     std::mt19937_64 rng(0xF06 + volumeCount);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     std::normal_distribution<double> normal(0.0, 1.0);
@@ -49,6 +63,9 @@ BenchScene makeScene(std::size_t volumeCount, bool meshAndSubtract = false) {
                         {0.01, 0.01, 0.015},
                         {0.02, 0.05, 0.12},
                         {0.04, 0.04, 0.04}};
+    if (horizonRows) {
+        for (aerial::FogLight& light : s.desc.lights) light.horizonRow = twilightRow();
+    }
     for (std::size_t i = 0; i < volumeCount; ++i) {
         aerial::FogVolume v;
         v.shape = (i % 2 == 0) ? aerial::FogVolumeShape::Box : aerial::FogVolumeShape::Ellipsoid;
@@ -102,8 +119,8 @@ double meanCrossed(const aerial::FogScene& scene, const BenchScene& s) {
 }
 
 /// Queries, one segment after another, of the scene of range(0) volumes.
-void runQueries(benchmark::State& state, bool meshAndSubtract) {
-    const BenchScene s = makeScene(static_cast<std::size_t>(state.range(0)), meshAndSubtract);
+void runQueries(benchmark::State& state, bool meshAndSubtract, bool horizonRows = false) {
+    const BenchScene s = makeScene(static_cast<std::size_t>(state.range(0)), meshAndSubtract, horizonRows);
     const aerial::FogScene scene(s.desc);
     std::size_t k = 0;
     for (auto _ : state) {
@@ -120,6 +137,9 @@ BENCHMARK(BM_FogQuery)->Arg(1)->Arg(16)->Arg(256);
 
 void BM_FogQueryMeshSubtract(benchmark::State& state) { runQueries(state, true); }
 BENCHMARK(BM_FogQueryMeshSubtract)->Arg(256);
+
+void BM_FogQueryHorizonRow(benchmark::State& state) { runQueries(state, false, true); }
+BENCHMARK(BM_FogQueryHorizonRow)->Arg(256);
 
 void BM_FogQueryContributions(benchmark::State& state) {
     const BenchScene s = makeScene(static_cast<std::size_t>(state.range(0)));

@@ -258,14 +258,31 @@ SkySample horizonSkySample(const SkyTable& table, const glm::dvec3& viewDirectio
     const glm::dvec3 v = normalizedOr(viewDirection, glm::dvec3(0.0, 1.0, 0.0));
     const double s = std::sqrt(v.x * v.x + v.z * v.z);
     const std::size_t texels = std::size_t(std::max(table.azimuthCount, 0)) * 3;
-    if (!(s > 0.0) || table.elevationCount < 1 || table.rayleigh.size() < texels) return mean;
-    // Row 0 at v's azimuth (sampleSkyTable clamps the elevation to row 0).
-    const SkySample row = sampleSkyTable(table, glm::dvec3(v.x, 0.0, v.z));
+    if (!(s > 0.0) || table.azimuthCount < 1 || table.elevationCount < 1 || table.rayleigh.size() < texels ||
+        table.mie.size() < texels)
+        return mean;
+    // Row 0 at v's azimuth, linear between the columns as sampleSkyTable
+    // (done here directly: row 0 needs no row mapping).
+    const int columns = table.azimuthCount;
+    double relative = std::atan2(v.x, -v.z) - table.lightAzimuth;
+    relative -= 2.0 * kPi * std::floor(relative / (2.0 * kPi));
+    double col = relative / (2.0 * kPi) * columns;
+    if (!(col >= 0.0) || !(col < columns)) col = 0.0;
+    const int i0 = std::min(int(col), columns - 1);
+    const int i1 = (i0 + 1) % columns;
+    const double f = col - i0;
     const double w = std::min(s, 1.0);
+    const bool multiple = table.multiple.size() >= texels;
     SkySample out;
-    out.rayleigh = (1.0 - w) * mean.rayleigh + w * row.rayleigh;
-    out.mie = (1.0 - w) * mean.mie + w * row.mie;
-    out.multiple = (1.0 - w) * mean.multiple + w * row.multiple;
+    for (int c = 0; c < 3; ++c) {
+        const std::size_t a = std::size_t(i0) * 3 + c, b = std::size_t(i1) * 3 + c;
+        const double r = (1.0 - f) * table.rayleigh[a] + f * table.rayleigh[b];
+        const double m = (1.0 - f) * table.mie[a] + f * table.mie[b];
+        const double x = multiple ? (1.0 - f) * table.multiple[a] + f * table.multiple[b] : 0.0;
+        out.rayleigh[c] = (1.0 - w) * mean.rayleigh[c] + w * r;
+        out.mie[c] = (1.0 - w) * mean.mie[c] + w * m;
+        out.multiple[c] = (1.0 - w) * mean.multiple[c] + w * x;
+    }
     return out;
 }
 

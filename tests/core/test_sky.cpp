@@ -631,6 +631,28 @@ TEST(SkySolver, HorizonFogTakesTheSkyBehindIt) {
     EXPECT_GT(highest, 20.0 * lowest);
 }
 
+// A row that does not hold what it says (a game's hand-made FogLight), or a
+// NaN azimuth, falls back to the averages or to column 0, never reads past the end.
+TEST(SkySolver, HorizonSampleOfAMalformedRow) {
+    SkyTable t;
+    t.horizonRayleigh = glm::dvec3(1.0, 2.0, 3.0);
+    t.horizonMie = glm::dvec3(0.5);
+    t.elevationCount = 1;
+    const glm::dvec3 level(0.6, 0.0, 0.8);
+    for (int columns : {0, -3, 5}) {
+        t.azimuthCount = columns;
+        t.rayleigh.assign(3, 7.0f);  // one column where 5 are claimed
+        t.mie.assign(3, 7.0f);
+        const SkySample s = horizonSkySample(t, level);
+        EXPECT_EQ(s.rayleigh, t.horizonRayleigh) << columns;
+        EXPECT_EQ(s.mie, t.horizonMie) << columns;
+    }
+    t.azimuthCount = 1;
+    t.lightAzimuth = std::nan("");
+    const SkySample s = horizonSkySample(t, level);
+    EXPECT_EQ(s.rayleigh, glm::dvec3(7.0));  // the one column, at full weight on the horizon
+}
+
 // ---------------------------------------------------------------------------
 // Robustness
 
