@@ -196,6 +196,19 @@ renderer::SceneDesc emissiveTestScene(const renderer::Camera& camera, double wal
     return scene;
 }
 
+FogVolume testVolume(FogVolumeShape shape) {
+    FogVolume v;
+    v.shape = shape;
+    v.position = {-5.0, 8.0, -60.0};
+    v.rotation = glm::angleAxis(0.7, glm::normalize(glm::dvec3(0.3, 1.0, -0.4)));
+    v.halfExtents = {25.0, 9.0, 14.0};
+    v.density = 0.03;
+    v.falloff = 0.08;
+    v.gradientDirection = glm::normalize(glm::dvec3(0.4, 0.8, -0.45));
+    v.gradientOffset = 2.5;
+    return v;
+}
+
 glm::dvec3 FogVsCpuTest::sunDirection() { return glm::normalize(glm::dvec3(0.5, 0.35, -0.8)); }
 glm::dvec3 FogVsCpuTest::moonDirection() { return glm::normalize(glm::dvec3(-0.6, 0.2, 0.5)); }
 

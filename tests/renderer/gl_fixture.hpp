@@ -87,6 +87,10 @@ private:
     glm::dvec3 moonDirection_;
 };
 
+/// The fog tests' volume of `shape` (a mesh volume still needs its meshData):
+/// rotated, non-uniformly scaled, a density gradient in an arbitrary direction.
+FogVolume testVolume(FogVolumeShape shape);
+
 /// Test geometry with known radiance (emission only, albedo 0): a wall
 /// perpendicular to the view at `wallDepth` [m], the ground y = 0 and a
 /// rotated box (the fog tests' scene).

@@ -104,19 +104,6 @@ TEST_F(FogVsCpu, GlobalFogHorizontalRaysAndUniformFog) {
     EXPECT_LT(c.maxError, kTolerance);
 }
 
-FogVolume testVolume(FogVolumeShape shape) {
-    FogVolume v;
-    v.shape = shape;
-    v.position = {-5.0, 8.0, -60.0};
-    v.rotation = glm::angleAxis(0.7, glm::normalize(glm::dvec3(0.3, 1.0, -0.4)));
-    v.halfExtents = {25.0, 9.0, 14.0};
-    v.density = 0.03;
-    v.falloff = 0.08;
-    v.gradientDirection = glm::normalize(glm::dvec3(0.4, 0.8, -0.45));
-    v.gradientOffset = 2.5;
-    return v;
-}
-
 TEST_F(FogVsCpu, BoxVolumeCameraOutside) {
     PresetState air = baseFrame();
     air.environment.fog = {0.001, 0.02, 0.0};

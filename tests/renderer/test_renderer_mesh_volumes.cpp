@@ -62,21 +62,6 @@ protected:
     }
 };
 
-/// The box volume of test_renderer_fog.cpp: rotated, non-uniform, a
-/// gradient in an arbitrary direction.
-FogVolume testVolume(FogVolumeShape shape) {
-    FogVolume v;
-    v.shape = shape;
-    v.position = {-5.0, 8.0, -60.0};
-    v.rotation = glm::angleAxis(0.7, glm::normalize(glm::dvec3(0.3, 1.0, -0.4)));
-    v.halfExtents = {25.0, 9.0, 14.0};
-    v.density = 0.03;
-    v.falloff = 0.08;
-    v.gradientDirection = glm::normalize(glm::dvec3(0.4, 0.8, -0.45));
-    v.gradientOffset = 2.5;
-    return v;
-}
-
 /// A torus of ring radius 20 m and tube radius 6 m around +Y at (0, 4,
 /// -60): the ground (y = 0) and the scene's box at (15, 6, -70) lie partly
 /// inside its tube.
