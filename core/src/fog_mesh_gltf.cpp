@@ -10,6 +10,7 @@
 // default scene's nodes (placed by the node transforms; without scenes,
 // every mesh untransformed) make up the mesh.
 #include <aerial/detail/gltf_files.hpp>
+#include <aerial/detail/gltf_model.hpp>
 #include <aerial/fog_mesh.hpp>
 #include <aerial/limits.hpp>
 
@@ -17,9 +18,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include <glm/gtc/matrix_transform.hpp>
-#include <glm/gtc/quaternion.hpp>
 #include <glm/mat4x4.hpp>
+#include <glm/matrix.hpp>
 
 #include <algorithm>
 #include <cctype>
@@ -43,94 +43,11 @@ bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int
     return true;  // a fog mesh has no material: images are not decoded
 }
 
-std::string oneLine(std::string s) {
-    while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
-    for (char& c : s) {
-        if (c == '\n') c = ';';
-    }
-    return s;
-}
+namespace gltf = detail::gltf;
 
-/// The bytes of element i of an accessor, bounds-checked.
-class AccessorView {
-public:
-    AccessorView(const tinygltf::Model& model, int index, const std::string& what) {
-        if (index < 0 || std::size_t(index) >= model.accessors.size())
-            throw LoadError(what + ": accessor " + std::to_string(index) + " does not exist");
-        const tinygltf::Accessor& a = model.accessors[std::size_t(index)];
-        if (a.sparse.isSparse) throw LoadError(what + ": sparse accessors are not supported");
-        if (a.bufferView < 0 || std::size_t(a.bufferView) >= model.bufferViews.size())
-            throw LoadError(what + ": accessor " + std::to_string(index) + " has no buffer view");
-        const tinygltf::BufferView& view = model.bufferViews[std::size_t(a.bufferView)];
-        if (view.buffer < 0 || std::size_t(view.buffer) >= model.buffers.size())
-            throw LoadError(what + ": buffer view " + std::to_string(a.bufferView) + " has no buffer");
-        const std::vector<unsigned char>& data = model.buffers[std::size_t(view.buffer)].data;
-        componentType_ = a.componentType;
-        const int componentSize = tinygltf::GetComponentSizeInBytes(std::uint32_t(a.componentType));
-        const int components = tinygltf::GetNumComponentsInType(std::uint32_t(a.type));
-        if (componentSize <= 0 || components <= 0)
-            throw LoadError(what + ": accessor " + std::to_string(index) + " has an unknown type");
-        elementSize_ = std::size_t(componentSize) * std::size_t(components);
-        stride_ = view.byteStride != 0 ? view.byteStride : elementSize_;
-        count_ = a.count;
-        components_ = components;
-        const std::size_t start = view.byteOffset + a.byteOffset;
-        const std::size_t need = count_ == 0 ? 0 : stride_ * (count_ - 1) + elementSize_;
-        if (view.byteOffset + view.byteLength > data.size() || a.byteOffset > view.byteLength ||
-            need > view.byteLength - a.byteOffset)
-            throw LoadError(what + ": accessor " + std::to_string(index) + " reaches past its buffer");
-        base_ = data.data() + start;
-    }
-    std::size_t count() const { return count_; }
-    int components() const { return components_; }
-    int componentType() const { return componentType_; }
-
-    glm::dvec3 vec3(std::size_t i) const {
-        float f[3];
-        std::memcpy(f, base_ + i * stride_, sizeof f);
-        return {f[0], f[1], f[2]};
-    }
-    std::uint32_t index(std::size_t i) const {
-        const unsigned char* p = base_ + i * stride_;
-        switch (componentType_) {
-            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-                return *p;
-            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
-                std::uint16_t v;
-                std::memcpy(&v, p, 2);
-                return v;
-            }
-            default: {
-                std::uint32_t v;
-                std::memcpy(&v, p, 4);
-                return v;
-            }
-        }
-    }
-
-private:
-    const unsigned char* base_ = nullptr;
-    std::size_t stride_ = 0, elementSize_ = 0, count_ = 0;
-    int components_ = 0, componentType_ = 0;
-};
-
-glm::dmat4 nodeMatrix(const tinygltf::Node& node) {
-    if (node.matrix.size() == 16) {
-        glm::dmat4 m(1.0);
-        for (int c = 0; c < 4; ++c)
-            for (int r = 0; r < 4; ++r) m[c][r] = node.matrix[std::size_t(c * 4 + r)];
-        return m;
-    }
-    glm::dmat4 m(1.0);
-    if (node.translation.size() == 3)
-        m[3] = glm::dvec4(node.translation[0], node.translation[1], node.translation[2], 1.0);
-    if (node.rotation.size() == 4) {
-        const glm::dquat q(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);
-        m = m * glm::dmat4(glm::mat3_cast(glm::normalize(q)));
-    }
-    if (node.scale.size() == 3) m = glm::scale(m, glm::dvec3(node.scale[0], node.scale[1], node.scale[2]));
-    return m;
-}
+/// The largest accessor count a fog mesh reads (vertices or indices).
+constexpr std::uint64_t kMaxAccessorCount =
+    std::max<std::uint64_t>(limits::kMaxGltfVertices, std::uint64_t(limits::kMaxFogMeshTriangles) * 3);
 
 struct Collector {
     const tinygltf::Model& model;
@@ -152,30 +69,34 @@ struct Collector {
                                 "; a fog mesh is made of triangles (mode 4)");
             const auto position = prim.attributes.find("POSITION");
             if (position == prim.attributes.end()) throw LoadError(what + ": no POSITION attribute");
-            const AccessorView pos(model, position->second, what + " POSITION");
-            if (pos.components() != 3 || pos.componentType() != TINYGLTF_COMPONENT_TYPE_FLOAT)
+            const gltf::AccessorView pos =
+                gltf::accessorView(model, position->second, "POSITION", what, kMaxAccessorCount);
+            if (pos.components != 3 || pos.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT)
                 throw LoadError(what + ": POSITION is not float VEC3");
-            if (positions.size() + pos.count() > limits::kMaxGltfVertices)
+            if (positions.size() + pos.count > limits::kMaxGltfVertices)
                 throw LoadError("too many vertices (over " + std::to_string(limits::kMaxGltfVertices) + ")");
             const std::uint32_t base = std::uint32_t(positions.size());
-            for (std::size_t i = 0; i < pos.count(); ++i)
-                positions.push_back(glm::dvec3(transform * glm::dvec4(pos.vec3(i), 1.0)));
+            for (std::uint64_t i = 0; i < pos.count; ++i) {
+                const glm::dvec4 at(pos.component(i, 0), pos.component(i, 1), pos.component(i, 2), 1.0);
+                positions.push_back(glm::dvec3(transform * at));
+            }
             std::vector<std::uint32_t> local;
             if (prim.indices >= 0) {
-                const AccessorView idx(model, prim.indices, what + " indices");
-                if (idx.components() != 1 || (idx.componentType() != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
-                                              idx.componentType() != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
-                                              idx.componentType() != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
+                const gltf::AccessorView idx =
+                    gltf::accessorView(model, prim.indices, "indices", what, kMaxAccessorCount);
+                if (idx.components != 1 || (idx.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+                                            idx.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+                                            idx.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
                     throw LoadError(what + ": indices are not unsigned integer scalars");
-                for (std::size_t i = 0; i < idx.count(); ++i) {
+                for (std::uint64_t i = 0; i < idx.count; ++i) {
                     const std::uint32_t v = idx.index(i);
-                    if (v >= pos.count())
+                    if (v >= pos.count)
                         throw LoadError(what + ": index " + std::to_string(v) + " past the " +
-                                        std::to_string(pos.count()) + " vertices");
+                                        std::to_string(pos.count) + " vertices");
                     local.push_back(v);
                 }
             } else {
-                for (std::size_t i = 0; i < pos.count(); ++i) local.push_back(std::uint32_t(i));
+                for (std::uint64_t i = 0; i < pos.count; ++i) local.push_back(std::uint32_t(i));
             }
             if (local.size() % 3 != 0)
                 throw LoadError(what + ": " + std::to_string(local.size()) + " indices, not a multiple of 3");
@@ -197,7 +118,8 @@ struct Collector {
             throw LoadError("the node hierarchy is deeper than " + std::to_string(limits::kMaxGltfNodeDepth) +
                             " (a cycle?)");
         const tinygltf::Node& node = model.nodes[std::size_t(nodeIndex)];
-        const glm::dmat4 transform = parent * nodeMatrix(node);
+        const glm::dmat4 transform =
+            parent * gltf::nodeTransform(node, "nodes[" + std::to_string(nodeIndex) + "]");
         if (node.mesh >= 0) addMesh(node.mesh, transform);
         for (int child : node.children) addNode(child, transform, depth + 1);
     }
@@ -296,7 +218,7 @@ FogMeshLoadResult loadFogMesh(const std::string& path) {
         std::string err, warn;
         const bool ok = binary ? gltf.LoadBinaryFromFile(&model, &err, &warn, path)
                                : gltf.LoadASCIIFromFile(&model, &err, &warn, path);
-        if (!ok) throw LoadError("not a valid glTF 2.0 file: " + oneLine(err.empty() ? warn : err));
+        if (!ok) throw LoadError("not a valid glTF 2.0 file: " + gltf::oneLine(err.empty() ? warn : err));
 
         Collector collect{model, {}, {}};
         if (!model.scenes.empty()) {
@@ -315,6 +237,9 @@ FogMeshLoadResult loadFogMesh(const std::string& path) {
     } catch (const LoadError& e) {
         result.mesh.reset();
         result.error = path + ": " + e.what();
+    } catch (const gltf::LoadError& e) {  // an accessor or a node transform
+        result.mesh.reset();
+        result.error = path + ": " + e.message;
     } catch (const std::bad_alloc&) {
         result.mesh.reset();
         result.error = path + ": out of memory";

@@ -56,96 +56,17 @@ private:
                  "the node hierarchy is deeper than " + std::to_string(options_.maxNodeDepth) + " levels");
         if (++nodeVisits_ > (1u << 20)) fail(element, "more than 1048576 node instances");
         const tinygltf::Node& node = model_.nodes[std::size_t(index)];
-        const glm::dmat4 world = parent * localTransform(node, element);
+        const glm::dmat4 world = parent * nodeTransform(node, element);
         onPath_[std::size_t(index)] = true;
         if (node.mesh >= 0) addMesh(node.mesh, world, element);
         for (int child : node.children) visitNode(child, world, depth + 1, element + ".children");
         onPath_[std::size_t(index)] = false;
     }
 
-    static glm::dmat4 localTransform(const tinygltf::Node& node, const std::string& element) {
-        glm::dmat4 m(1.0);
-        if (!node.matrix.empty()) {
-            if (node.matrix.size() != 16)
-                fail(element, "matrix has " + std::to_string(node.matrix.size()) + " values, expected 16");
-            for (int c = 0; c < 4; ++c)
-                for (int r = 0; r < 4; ++r) m[c][r] = node.matrix[std::size_t(c * 4 + r)];  // column-major
-        } else {
-            glm::dvec3 t(0.0), s(1.0);
-            glm::dquat q(1.0, 0.0, 0.0, 0.0);
-            if (!node.translation.empty()) {
-                if (node.translation.size() != 3) fail(element, "translation needs 3 values");
-                t = {node.translation[0], node.translation[1], node.translation[2]};
-            }
-            if (!node.rotation.empty()) {
-                if (node.rotation.size() != 4) fail(element, "rotation needs 4 values (x, y, z, w)");
-                q = glm::dquat(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);
-                const double len = glm::length(q);
-                if (!(len > 1e-12) || !std::isfinite(len)) fail(element, "rotation is not a unit quaternion");
-                q = q / len;
-            }
-            if (!node.scale.empty()) {
-                if (node.scale.size() != 3) fail(element, "scale needs 3 values");
-                s = {node.scale[0], node.scale[1], node.scale[2]};
-            }
-            m = glm::translate(glm::dmat4(1.0), t) * glm::mat4_cast(q) * glm::scale(glm::dmat4(1.0), s);
-        }
-        for (int c = 0; c < 4; ++c)
-            for (int r = 0; r < 4; ++r)
-                if (!std::isfinite(m[c][r])) fail(element, "the transform has a non-finite value");
-        return m;
-    }
-
     /// Checks accessors[index] against its buffer view and buffer.
     AccessorView view(int index, const std::string& what, const std::string& element) const {
-        if (index < 0 || std::size_t(index) >= model_.accessors.size())
-            fail(element, what + " accessor " + std::to_string(index) + " does not exist (" +
-                              std::to_string(model_.accessors.size()) + " accessors)");
-        const std::string a = "accessors[" + std::to_string(index) + "]";
-        const tinygltf::Accessor& accessor = model_.accessors[std::size_t(index)];
-        if (accessor.sparse.isSparse) fail(a, "sparse accessors are not supported");
-        if (accessor.bufferView < 0) fail(a, "has no bufferView (zero-filled accessors are not supported)");
-        if (std::size_t(accessor.bufferView) >= model_.bufferViews.size())
-            fail(a, "bufferView " + std::to_string(accessor.bufferView) + " does not exist");
-        const std::string bvName = "bufferViews[" + std::to_string(accessor.bufferView) + "]";
-        const tinygltf::BufferView& bv = model_.bufferViews[std::size_t(accessor.bufferView)];
-        if (bv.buffer < 0 || std::size_t(bv.buffer) >= model_.buffers.size())
-            fail(bvName, "buffer " + std::to_string(bv.buffer) + " does not exist");
-        const tinygltf::Buffer& buffer = model_.buffers[std::size_t(bv.buffer)];
-        const std::uint64_t bufferSize = buffer.data.size();
-        const std::uint64_t bvOffset = bv.byteOffset, bvLength = bv.byteLength;
-        if (bvOffset > bufferSize || bvLength > bufferSize - bvOffset)
-            fail(bvName, "bytes " + std::to_string(bvOffset) + ".." + std::to_string(bvOffset + bvLength) +
-                             " lie outside buffers[" + std::to_string(bv.buffer) + "] (" +
-                             std::to_string(bufferSize) + " bytes)");
-        AccessorView v;
-        v.componentType = accessor.componentType;
-        v.components = componentCount(accessor.type);
-        v.normalized = accessor.normalized;
-        const std::uint64_t size = componentSize(accessor.componentType);
-        if (size == 0) fail(a, "unknown componentType " + std::to_string(accessor.componentType));
-        if (v.components == 0) fail(a, "unknown type");
-        const std::uint64_t elementSize = size * v.components;
-        v.stride = bv.byteStride != 0 ? bv.byteStride : elementSize;
-        if (v.stride < elementSize)
-            fail(bvName, "byteStride " + std::to_string(v.stride) + " is smaller than the " +
-                             std::to_string(elementSize) + "-byte elements of " + a);
-        v.count = accessor.count;
-        const std::uint64_t cap = std::max(options_.maxVertices, options_.maxTriangles * 3);
-        if (v.count > cap)
-            fail(a, "count " + std::to_string(v.count) + " is over the limit of " + std::to_string(cap));
-        const std::uint64_t offset = accessor.byteOffset;
-        if (v.count > 0) {
-            // Written so that nothing overflows whatever offset, stride and count say.
-            const bool fits = offset <= bvLength && elementSize <= bvLength - offset &&
-                              v.count - 1 <= (bvLength - offset - elementSize) / v.stride;
-            if (!fits)
-                fail(a, "count " + std::to_string(v.count) + " with byteOffset " + std::to_string(offset) +
-                            " and stride " + std::to_string(v.stride) + " reaches past the end of " + bvName +
-                            " (" + std::to_string(bvLength) + " bytes)");
-        }
-        v.data = buffer.data.data() + bvOffset + offset;
-        return v;
+        return accessorView(model_, index, what, element,
+                            std::max(options_.maxVertices, options_.maxTriangles * 3));
     }
 
     static void expect(const AccessorView& v, const tinygltf::Accessor& accessor, int index,

@@ -87,6 +87,9 @@ const BadInput kBadPresets[] = {
      ":25:15: error: /volumes/0/mesh: mesh volume \"room\": ../meshes/flipped_triangle.gltf: flipped triangle 1: "
      "the edge between (1, -1, -1) and (1, 1, 1) runs the same way in both its triangles (the mesh is not "
      "consistently oriented)"},
+    {"mesh_index_count_overflow.json",
+     ":25:15: error: /volumes/0/mesh: mesh volume \"room\": ../meshes/index_count_overflow.gltf: accessors[1]: "
+     "count 4611686018427387905 is over the limit of 16777216"},
     {"mesh_inside_out.json",
      ":25:15: error: /volumes/0/mesh: mesh volume \"room\": ../meshes/inside_out.gltf: the triangles face "
      "inwards (enclosed volume -8.000000 < 0); flip the normals so they point out of the fog"},
@@ -110,6 +113,9 @@ const BadInput kBadPresets[] = {
      ":25:16: error: /volumes/0/blend: unknown value \"multiply\"; expected one of add, subtract"},
     {"mesh_without_file.json",
      ":25:15: error: /volumes/0/mesh: a mesh volume needs \"mesh\": the glTF file of its closed mesh"},
+    {"mesh_zero_rotation.json",
+     ":25:15: error: /volumes/0/mesh: mesh volume \"room\": ../meshes/zero_rotation.gltf: nodes[0]: rotation is "
+     "not a unit quaternion"},
     {"mie_extinction_below_scattering.json",
      ":13:9: error: /atmosphere/mie/extinction_per_m/1: Mie extinction 1e-06 must be >= Mie scattering "
      "4e-06"},

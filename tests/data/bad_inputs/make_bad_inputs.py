@@ -86,6 +86,8 @@ PRESETS = {
     "mesh_degenerate_triangle.json": dump(preset(volumes=[mesh_volume("../meshes/degenerate_triangle.gltf")])),
     "mesh_lines.json": dump(preset(volumes=[mesh_volume("../meshes/lines.gltf")])),
     "mesh_not_gltf.json": dump(preset(volumes=[mesh_volume("../meshes/not_gltf.gltf")])),
+    "mesh_index_count_overflow.json": dump(preset(volumes=[mesh_volume("../meshes/index_count_overflow.gltf")])),
+    "mesh_zero_rotation.json": dump(preset(volumes=[mesh_volume("../meshes/zero_rotation.gltf")])),
     "mesh_unknown_blend.json": dump(preset(volumes=[vol(blend="multiply")])),
     "zero_half_extent.json": dump(preset(volumes=[vol(half_extents_m=[10, 0, 10])])),
     "negative_half_extent.json": dump(preset(volumes=[vol(half_extents_m=[10, 5, -3])])),
@@ -129,19 +131,20 @@ def write_glb(doc, length_delta=0, magic=b"glTF", version=2, truncate=None):
     return data[:truncate] if truncate is not None else data
 
 
-def mesh_gltf(positions, indices, mode=None):
-    """A .gltf of one triangle mesh (a fog volume mesh), embedded buffer."""
+def mesh_gltf(positions, indices, mode=None, index_count=None, node=None):
+    """A .gltf of one triangle mesh (a fog volume mesh), embedded buffer;
+    index_count overrides the indices accessor's count, node adds to the node."""
     d = g.Doc()
     flat = [c for p in positions for c in p]
     lo = [min(p[i] for p in positions) for i in range(3)]
     hi = [max(p[i] for p in positions) for i in range(3)]
     pos = d.accessor("f", flat, 5126, "VEC3", len(positions), (lo, hi))
-    idx = d.accessor("H", indices, 5123, "SCALAR", len(indices))
+    idx = d.accessor("H", indices, 5123, "SCALAR", len(indices) if index_count is None else index_count)
     prim = {"attributes": {"POSITION": pos}, "indices": idx}
     if mode is not None:
         prim["mode"] = mode
     d.json["meshes"] = [{"primitives": [prim]}]
-    d.json["nodes"] = [{"mesh": 0}]
+    d.json["nodes"] = [dict({"mesh": 0}, **(node or {}))]
     d.json["scenes"] = [{"nodes": [0]}]
     return d.finish_embedded()
 
@@ -173,6 +176,9 @@ def mesh_variants():
     out["degenerate_triangle.gltf"] = mesh_gltf(positions, degenerate)
     out["lines.gltf"] = mesh_gltf(positions, indices, mode=1)
     out["not_gltf.gltf"] = b"this is not JSON\n"
+    # A count whose byte length overflows 64 bits (stride x count wraps round).
+    out["index_count_overflow.gltf"] = mesh_gltf(positions, indices, index_count=2**62 + 1)
+    out["zero_rotation.gltf"] = mesh_gltf(positions, indices, node={"rotation": [0, 0, 0, 0]})
     return out
 
 
