@@ -196,6 +196,10 @@ renderer::SceneDesc emissiveTestScene(const renderer::Camera& camera, double wal
     return scene;
 }
 
+renderer::Camera fogCamera(const glm::dvec3& eye, const glm::dvec3& target) {
+    return makeCamera(eye, target, 1500.0, 1.1);
+}
+
 FogVolume testVolume(FogVolumeShape shape) {
     FogVolume v;
     v.shape = shape;

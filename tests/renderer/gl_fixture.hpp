@@ -87,6 +87,9 @@ private:
     glm::dvec3 moonDirection_;
 };
 
+/// The fog tests' camera: 1500 m far plane, 1.1 rad vertical field of view.
+renderer::Camera fogCamera(const glm::dvec3& eye, const glm::dvec3& target);
+
 /// The fog tests' volume of `shape` (a mesh volume still needs its meshData):
 /// rotated, non-uniformly scaled, a density gradient in an arbitrary direction.
 FogVolume testVolume(FogVolumeShape shape);

@@ -28,10 +28,6 @@ using renderer::FrameDesc;
 
 constexpr double kTolerance = 1e-3;
 
-Camera fogCamera(const glm::dvec3& eye, const glm::dvec3& target) {
-    return makeCamera(eye, target, 1500.0, 1.1);
-}
-
 class FogVsCpu : public FogVsCpuTest {
 protected:
     FogVsCpu() = default;

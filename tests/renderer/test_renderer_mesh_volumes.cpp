@@ -32,10 +32,6 @@ using renderer::FrameDesc;
 
 constexpr double kTolerance = 1e-3;
 
-Camera fogCamera(const glm::dvec3& eye, const glm::dvec3& target) {
-    return makeCamera(eye, target, 1500.0, 1.1);
-}
-
 std::shared_ptr<const FogMesh> buildMesh(const TriangleMesh& m) {
     std::string error;
     std::shared_ptr<const FogMesh> mesh = FogMesh::build(m.positions, m.indices, error);
