@@ -81,52 +81,59 @@ float exponentialOpticalDepth(float b, float c, float height, float rise, float 
 
 /// The phase-less horizon behind far fog in direction v (unit) for one light
 /// (horizonSkySample in core/src/sky_table.cpp): the table's row 0 at v's
-/// azimuth blended with the horizon averages by s = |v.xz|,
+/// world `azimuth` blended with the horizon averages by s = |v.xz|,
 /// H = (1 - s) average + s row0(azimuth). Row 0 is the texel row's centre,
 /// so only the columns are filtered, as in sampleSkyTable.
-void horizonSky(sampler2D rayleighTable, sampler2D mieTable, sampler2D multipleTable, vec3 v, float lightAzimuth,
-                vec2 size, vec3 meanRayleigh, vec3 meanMie, vec3 meanMultiple, out vec3 rayleigh, out vec3 mie,
-                out vec3 multiple) {
+void horizonSky(sampler2D rayleighTable, sampler2D mieTable, sampler2D multipleTable, vec3 v, float azimuth,
+                float lightAzimuth, vec2 size, vec3 meanRayleigh, vec3 meanMie, vec3 meanMultiple,
+                out vec3 rayleigh, out vec3 mie, out vec3 multiple) {
     rayleigh = meanRayleigh;
     mie = meanMie;
     multiple = meanMultiple;
     float s = min(length(v.xz), 1.0);
     if (!(s > 0.0) || !(size.x >= 1.0)) return;
-    vec2 texel = skyTableTexelAt(vec2(0.0, skyAngles(v, false).y), lightAzimuth, size, vec3(0.0), 0.0, 0.0);
+    vec2 texel = skyTableTexelAt(vec2(0.0, azimuth), lightAzimuth, size, vec3(0.0), 0.0, 0.0);
     rayleigh = mix(meanRayleigh, sampleTable(rayleighTable, texel, size), s);
     mie = mix(meanMie, sampleTable(mieTable, texel, size), s);
     multiple = mix(meanMultiple, sampleTable(multipleTable, texel, size), s);
 }
 
-void sunHorizonSky(vec3 v, out vec3 rayleigh, out vec3 mie, out vec3 multiple) {
-    horizonSky(uSunRayleigh, uSunMie, uSunMultiple, v, frame.sunTableAzimuth,
-               vec2(frame.sunTableColumns, frame.sunTableRows), frame.sunHorizonRayleigh, frame.sunHorizonMie,
-               frame.sunHorizonMultiple, rayleigh, mie, multiple);
+/// Both lights' horizons behind direction v (the azimuth found once; a light
+/// that is off keeps zeros and fetches nothing).
+struct HorizonSkies {
+    vec3 sunRayleigh, sunMie, sunMultiple;
+    vec3 moonRayleigh, moonMie, moonMultiple;
+};
+
+HorizonSkies horizonSkies(vec3 v) {
+    HorizonSkies h;
+    h.sunRayleigh = h.sunMie = h.sunMultiple = vec3(0.0);
+    h.moonRayleigh = h.moonMie = h.moonMultiple = vec3(0.0);
+    float azimuth = skyAngles(v, false).y;
+    if (any(greaterThan(frame.sunIlluminanceSpace, vec3(0.0))))
+        horizonSky(uSunRayleigh, uSunMie, uSunMultiple, v, azimuth, frame.sunTableAzimuth,
+                   vec2(frame.sunTableColumns, frame.sunTableRows), frame.sunHorizonRayleigh, frame.sunHorizonMie,
+                   frame.sunHorizonMultiple, h.sunRayleigh, h.sunMie, h.sunMultiple);
+    if (any(greaterThan(frame.moonIlluminanceSpace, vec3(0.0))))
+        horizonSky(uMoonRayleigh, uMoonMie, uMoonMultiple, v, azimuth, frame.moonTableAzimuth,
+                   vec2(frame.moonTableColumns, frame.moonTableRows), frame.moonHorizonRayleigh,
+                   frame.moonHorizonMie, frame.moonHorizonMultiple, h.moonRayleigh, h.moonMie, h.moonMultiple);
+    return h;
 }
 
-void moonHorizonSky(vec3 v, out vec3 rayleigh, out vec3 mie, out vec3 multiple) {
-    horizonSky(uMoonRayleigh, uMoonMie, uMoonMultiple, v, frame.moonTableAzimuth,
-               vec2(frame.moonTableColumns, frame.moonTableRows), frame.moonHorizonRayleigh,
-               frame.moonHorizonMie, frame.moonHorizonMultiple, rayleigh, mie, multiple);
-}
-
-/// The sky's fog colour in direction v (unit): sum over sun and moon of
-/// E (P_R(mu) H_R(v) + P_M(mu, g) H_M(v) + H_ms(v)) (FogScene::fogColour).
-vec3 skyFogColour(vec3 v) {
+/// The sky's fog colour in direction v (unit) from its horizons: sum over sun
+/// and moon of E (P_R(mu) H_R(v) + P_M(mu, g) H_M(v) + H_ms(v)) (FogScene::fogColour).
+vec3 skyFogColourFrom(HorizonSkies h, vec3 v) {
     float g = frame.mieAnisotropy;
-    vec3 r, m, x, colour = vec3(0.0);
-    if (any(greaterThan(frame.sunIlluminanceSpace, vec3(0.0)))) {
-        sunHorizonSky(v, r, m, x);
-        float mu = dot(v, frame.sunDirection);
-        colour += frame.sunIlluminanceSpace * (rayleighPhase(mu) * r + miePhase(mu, g) * m + x);
-    }
-    if (any(greaterThan(frame.moonIlluminanceSpace, vec3(0.0)))) {
-        moonHorizonSky(v, r, m, x);
-        float mu = dot(v, frame.moonDirection);
-        colour += frame.moonIlluminanceSpace * (rayleighPhase(mu) * r + miePhase(mu, g) * m + x);
-    }
-    return colour;
+    float muSun = dot(v, frame.sunDirection);
+    float muMoon = dot(v, frame.moonDirection);
+    return frame.sunIlluminanceSpace *
+               (rayleighPhase(muSun) * h.sunRayleigh + miePhase(muSun, g) * h.sunMie + h.sunMultiple) +
+           frame.moonIlluminanceSpace *
+               (rayleighPhase(muMoon) * h.moonRayleigh + miePhase(muMoon, g) * h.moonMie + h.moonMultiple);
 }
+
+vec3 skyFogColour(vec3 v) { return skyFogColourFrom(horizonSkies(v), v); }
 
 /// Colour of fog in a colour mode (0 sky, 1 tinted, 2 custom; FogColourMode).
 vec3 fogColourFor(float mode, vec3 colour, vec3 v) {

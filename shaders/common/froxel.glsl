@@ -60,19 +60,21 @@ vec3 froxelFarRay(ivec2 ij) {
 /// (skyFogColour, capped as fogInScatterTransmittance); with the custom
 /// phase the casting light's Mie part takes the fog's anisotropy.
 void froxelFogColours(vec3 v, out vec3 shadowable, out vec3 all) {
-    vec3 sky = skyFogColour(v);
+    HorizonSkies h = horizonSkies(v);
+    vec3 sky = skyFogColourFrom(h, v);
     float g = frame.mieAnisotropy;
     vec3 light, rayleigh, mie;
     float mu;
-    vec3 multiple;
     if (froxel.castIsMoon > 0.5) {
         mu = dot(v, frame.moonDirection);
         light = frame.moonIlluminanceSpace;
-        moonHorizonSky(v, rayleigh, mie, multiple);
+        rayleigh = h.moonRayleigh;
+        mie = h.moonMie;
     } else {
         mu = dot(v, frame.sunDirection);
         light = frame.sunIlluminanceSpace;
-        sunHorizonSky(v, rayleigh, mie, multiple);
+        rayleigh = h.sunRayleigh;
+        mie = h.sunMie;
     }
     vec3 single = light * (rayleighPhase(mu) * rayleigh + miePhase(mu, g) * mie);
     if (froxel.customPhase > 0.5) {  // the fog's own anisotropy in place of the atmosphere's
