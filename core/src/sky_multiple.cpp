@@ -55,6 +55,9 @@ MsScratch::MsScratch() {
     records.assign(std::size_t(2) * 7 * kMsCombos, 0.0f);
     acc.assign(std::size_t(3) * kMsCombos, 0.0f);
     ground.assign(std::size_t(3) * kMsCombos, 0.0);
+    source.assign(std::size_t(2) * 3 * kMsCombos, 0.0f);
+    orderAcc.assign(std::size_t(3) * kMsCombos, 0.0);
+    groundSky.assign(std::size_t(3) * kMsCombos, 0.0);
 }
 
 MultipleScatteringLut::MultipleScatteringLut() {
@@ -63,6 +66,10 @@ MultipleScatteringLut::MultipleScatteringLut() {
     angleScale_.assign(kMsRows, 0.0f);
     depth_.assign(std::size_t(3) * kMsRows * kMsAngles, 0.0f);
     psi_.assign(std::size_t(kMsRows) * kMsCosines * 3, 0.0f);
+    for (auto& o : order_) o.assign(psi_.size(), 0.0f);
+    sum_.assign(psi_.size(), 0.0);
+    fms_.assign(std::size_t(kMsRows) * 3, 0.0);
+    groundSky_.assign(std::size_t(kMsCosines) * 3, 0.0);
     comboP_.assign(kMsCombos, 0.0f);
     comboQ_.assign(kMsCombos, 0.0f);
     for (int j = 0; j < kMsCosines; ++j) {
@@ -187,7 +194,7 @@ void MultipleScatteringLut::segmentDepths(int i, const MsScratch& s, double scat
     }
 }
 
-void MultipleScatteringLut::buildPsiRow(int row, MsScratch& s) {
+void MultipleScatteringLut::buildSecondOrderRow(int row, MsScratch& s) {
     const double rg = air_.planetRadius;
     const double hk = height_[std::size_t(row)];
     const double rk = rg + hk;
@@ -196,10 +203,19 @@ void MultipleScatteringLut::buildPsiRow(int row, MsScratch& s) {
     std::fill(s.ground.begin(), s.ground.end(), 0.0);
     double transfer[3] = {0.0, 0.0, 0.0};  // sum over the zenith bands of the unit in-scattering
 
+    // Row 0 (the ground): the irradiance E_1 that single scattering sends
+    // down to it, per sun column, from the upward rays' in-scattering
+    // (integral L_1 cos d omega = sum over the bands of cos theta times each
+    // band's share of acc, which carries 4 pi w_z L_1).
+    const bool groundRow = row == 0;
+    if (groundRow) std::fill(s.groundSky.begin(), s.groundSky.end(), 0.0);
     for (int z = 0; z < kMsZeniths; ++z) {
         const MsNode node = msZenithNode(z);
         const double cosT = node.angle, wz = node.weight;
         const double sinT = std::sqrt(std::max(1.0 - cosT * cosT, 0.0));
+        const bool skyward = groundRow && cosT > 0.0;
+        if (skyward)
+            for (std::size_t m = 0; m < s.acc.size(); ++m) s.groundSky[m] -= cosT * double(s.acc[m]);
         bool hitsGround = false;
         const int n = rayCrossings(row, cosT, s, hitsGround);
         const int segments = n - 1;
@@ -248,6 +264,8 @@ void MultipleScatteringLut::buildPsiRow(int row, MsScratch& s) {
             msSegmentKernel(seg);
             for (int c = 0; c < 3; ++c) viewT[c] *= segT[c];
         }
+        if (skyward)
+            for (std::size_t m = 0; m < s.acc.size(); ++m) s.groundSky[m] += cosT * double(s.acc[m]);
         if (hitsGround) {
             // The ground reflects the unit field too (f_ms's ground share).
             for (int c = 0; c < 3; ++c) transfer[c] += wz * viewT[c] * groundReflection_[c];
@@ -274,9 +292,121 @@ void MultipleScatteringLut::buildPsiRow(int row, MsScratch& s) {
                 const std::size_t m = std::size_t(c * kMsCombos + j * kMsAzimuths + a);
                 sum += msAzimuthNode(a).weight * (double(s.acc[m]) / (4.0 * kPi) + s.ground[m] * albedo / kPi);
             }
-            const double l2 = sum;
+            const double l2 = std::isfinite(sum) ? sum : 0.0;
+            const std::size_t at = (std::size_t(row) * kMsCosines + j) * 3 + c;
+            order_[0][at] = float(l2);
+            sum_[at] = l2;
             const double value = l2 / (1.0 - fms);
-            psi_[(std::size_t(row) * kMsCosines + j) * 3 + c] = std::isfinite(value) ? float(value) : 0.0f;
+            psi_[at] = std::isfinite(value) ? float(value) : 0.0f;
+        }
+        fms_[std::size_t(row) * 3 + c] = fms;
+        if (groundRow) {
+            for (int j = 0; j < kMsCosines; ++j) {
+                double e = 0.0;
+                for (int a = 0; a < kMsAzimuths; ++a)
+                    e += msAzimuthNode(a).weight * s.groundSky[std::size_t(c * kMsCombos + j * kMsAzimuths + a)];
+                groundSky_[std::size_t(j) * 3 + c] = std::isfinite(e) ? std::max(e, 0.0) : 0.0;
+            }
+        }
+    }
+}
+
+void MultipleScatteringLut::buildOrderRow(int row, int order, MsScratch& s) {
+    if (order <= 2) {
+        buildSecondOrderRow(row, s);
+        return;
+    }
+    const std::vector<float>& from = order_[(order - 3) % 2];  // J_(order - 1)
+    std::vector<float>& to = order_[(order - 2) % 2];
+    const double rg = air_.planetRadius;
+    const double rk = rg + height_[std::size_t(row)];
+    std::fill(s.orderAcc.begin(), s.orderAcc.end(), 0.0);
+    // J_n at shell j for the combos' sun cosines there, linear in the columns' x = sign(mu) sqrt|mu|.
+    auto sourceAt = [&](int i, float* out) {
+        const int j = s.shell[std::size_t(i)];
+        const double dist = s.crossing[std::size_t(i)];
+        const double rj = rg + height_[std::size_t(j)];
+        const double cosT = s.cosT, sinT = s.sinT;
+        const double alpha = (rk + dist * cosT) / rj, beta = dist * sinT / rj;
+        const float* rowJ = from.data() + std::size_t(j) * kMsCosines * 3;
+        // Order 3 also takes the ground's reflection of the skylight that
+        // single scattering sends down (E_1), as extra source at the ground.
+        const bool bounce = order == 3 && j == 0 && i + 1 == s.crossingCount && s.groundHit;
+        for (int m = 0; m < kMsCombos; ++m) {
+            const double mu = std::clamp(alpha * comboP_[std::size_t(m)] + beta * comboQ_[std::size_t(m)], -1.0, 1.0);
+            const double x = mu < 0.0 ? -std::sqrt(-mu) : std::sqrt(mu);
+            const double u = std::min((x + 1.0) * 0.5 * (kMsCosines - 1), kMsCosines - 1 - 1e-9);
+            const int iu = int(u);
+            const double f = u - iu;
+            for (int c = 0; c < 3; ++c) {
+                const double a = rowJ[std::size_t(iu) * 3 + c], b = rowJ[std::size_t(iu + 1) * 3 + c];
+                double value = a + f * (b - a);
+                if (bounce && groundReflection_[c] > 0.0) {
+                    const double ea = groundSky_[std::size_t(iu) * 3 + c], eb = groundSky_[std::size_t(iu + 1) * 3 + c];
+                    const double albedo = std::clamp(air_.groundAlbedo[c], 0.0, 1.0);
+                    value += albedo / kPi * (ea + f * (eb - ea)) / groundReflection_[c];
+                }
+                out[std::size_t(c) * kMsCombos + std::size_t(m)] = float(value);
+            }
+        }
+    };
+    for (int z = 0; z < kMsZeniths; ++z) {
+        const MsNode node = msZenithNode(z);
+        s.cosT = node.angle;
+        s.sinT = std::sqrt(std::max(1.0 - node.angle * node.angle, 0.0));
+        bool hitsGround = false;
+        const int n = rayCrossings(row, node.angle, s, hitsGround);
+        s.crossingCount = n;
+        s.groundHit = hitsGround;
+        float* g[2] = {s.source.data(), s.source.data() + std::size_t(3) * kMsCombos};
+        sourceAt(0, g[0]);
+        double viewT[3] = {1.0, 1.0, 1.0};
+        for (int i = 0; i + 1 < n; ++i) {
+            double scatter[3], tau[3];
+            segmentDepths(i, s, scatter, tau);
+            sourceAt(i + 1, g[(i + 1) % 2]);
+            const float* ga = g[i % 2];
+            const float* gb = g[(i + 1) % 2];
+            for (int c = 0; c < 3; ++c) {
+                // integral_0^1 e^(-tau t) (1 - t, t) dt = (F0 - F1, F1).
+                const double t = tau[c];
+                const double f0 = transferFactor(t);
+                const double f1 = t < 1e-3 ? 0.5 - t / 3.0 : (1.0 - std::exp(-t) * (1.0 + t)) / (t * t);
+                const double w = node.weight * scatter[c] * viewT[c];
+                const double wa = w * (f0 - f1), wb = w * f1;
+                double* acc = s.orderAcc.data() + std::size_t(c) * kMsCombos;
+                const float* a = ga + std::size_t(c) * kMsCombos;
+                const float* b = gb + std::size_t(c) * kMsCombos;
+                for (int m = 0; m < kMsCombos; ++m) acc[m] += wa * a[m] + wb * b[m];
+                viewT[c] *= std::exp(-t);
+            }
+        }
+        if (hitsGround) {
+            // The ground lit by order n's skylight (J_n around it times the
+            // unit field's irradiance there) reflects it.
+            const float* gl = g[(n - 1) % 2];
+            for (int c = 0; c < 3; ++c) {
+                const double w = node.weight * viewT[c] * groundReflection_[c];
+                double* acc = s.orderAcc.data() + std::size_t(c) * kMsCombos;
+                for (int m = 0; m < kMsCombos; ++m) acc[m] += w * gl[std::size_t(c) * kMsCombos + std::size_t(m)];
+            }
+        }
+    }
+    const bool last = order == kMsLastOrder;
+    for (int c = 0; c < 3; ++c) {
+        const double fms = fms_[std::size_t(row) * 3 + c];
+        for (int j = 0; j < kMsCosines; ++j) {
+            double value = 0.0;
+            for (int a = 0; a < kMsAzimuths; ++a)
+                value += msAzimuthNode(a).weight * s.orderAcc[std::size_t(c * kMsCombos + j * kMsAzimuths + a)];
+            if (!std::isfinite(value)) value = 0.0;
+            const std::size_t at = (std::size_t(row) * kMsCosines + j) * 3 + c;
+            to[at] = float(value);
+            sum_[at] += value;
+            if (last) {
+                const double total = sum_[at] + value * fms / (1.0 - fms);
+                psi_[at] = std::isfinite(total) ? float(total) : 0.0f;
+            }
         }
     }
 }

@@ -195,14 +195,15 @@ SkySolver::Impl::Impl(const SkySolverDesc& d) : desc(d) {
     pool.emplace(desc.threadCount);
 }
 
-// One dispatch. With `rebuild`, the first items build the optical-depth
-// rows (the solver's, then the multiple-scattering LUT's), then the rows of
-// Psi_ms (which wait for the LUT's optical depths; the thread that finishes
-// the last one resamples Psi_ms at the shells); the rest solve sky rows,
-// which wait (briefly, yielding) until all of that is done.
+// One dispatch. With `rebuild`, the first items build the optical-depth rows
+// (the solver's, then the multiple-scattering LUT's), then the LUT's rows of
+// each scattering order (the thread that finishes the last row resamples
+// Psi_ms at the shells); the rest solve sky rows, which wait (briefly,
+// yielding) until all of that is done.
 void SkySolver::Impl::run(bool rebuild, int rowBegin, int rowEnd) {
     const int depthRows = rebuild ? layers + 1 : 0;
     const int msRows = rebuild && multiple ? kMsRows : 0;
+    const int orderItems = msRows * (kMsLastOrder - 1);  // orders 2..kMsLastOrder
     depthRowsDone.store(0);  // published to the workers by the pool's dispatch
     msDepthRowsDone.store(0);
     psiRowsDone.store(0);
@@ -220,22 +221,25 @@ void SkySolver::Impl::run(bool rebuild, int rowBegin, int rowEnd) {
             return;
         }
         index -= msRows;
-        if (index < msRows) {
-            while (msDepthRowsDone.load(std::memory_order_acquire) < msRows) std::this_thread::yield();
-            ms.buildPsiRow(index, msScratch[std::size_t(worker)]);
-            if (psiRowsDone.fetch_add(1, std::memory_order_acq_rel) + 1 == msRows) {
+        if (index < orderItems) {
+            // Order n's rows wait for the LUT's optical depths (n = 2) or for every row of order n - 1.
+            const int order = 2 + index / msRows;
+            const std::atomic<int>& ready = order == 2 ? msDepthRowsDone : psiRowsDone;
+            while (ready.load(std::memory_order_acquire) < std::max(order - 2, 1) * msRows) std::this_thread::yield();
+            ms.buildOrderRow(index % msRows, order, msScratch[std::size_t(worker)]);
+            if (psiRowsDone.fetch_add(1, std::memory_order_acq_rel) + 1 == orderItems) {
                 ms.resample(shellHeight.data(), layers + 1, psiShell.data());
                 psiReady.store(true, std::memory_order_release);
             }
             return;
         }
-        index -= msRows;
+        index -= orderItems;
         while (depthRowsDone.load(std::memory_order_acquire) < depthRows ||
                !psiReady.load(std::memory_order_acquire))
             std::this_thread::yield();
         solveRow(rowBegin + index, scratch[std::size_t(worker)]);
     };
-    pool->run(depthRows + 2 * msRows + (rowEnd - rowBegin), item);
+    pool->run(depthRows + msRows + orderItems + (rowEnd - rowBegin), item);
 }
 
 // Shells of equal mixed mass between the viewer and the top (see the file

@@ -10,7 +10,7 @@
 // that sun over the compared directions and channels); the worst per sun is
 // printed. Under AddressSanitizer / UndefinedBehaviorSanitizer builds (or
 // with AERIAL_TEST_QUICK set) the comparison runs 3 of the 7 sun elevations,
-// with the same 512 paths per direction.
+// with the same 2048 paths per direction.
 #include <aerial/atmosphere.hpp>
 #include <aerial/sky.hpp>
 #include <aerial/sky_reference.hpp>
@@ -44,11 +44,16 @@ struct SunCase {
     double tolerance;  // measured worst (512 paths) plus margin, see the file comment and the report
 };
 
-// The tolerances are regression bounds, not the goal of 5%: Hillaire's
-// isotropic second order and geometric series under-estimate the horizon of
-// a low sun (see the printed table; tests/support/ms_reference.hpp).
-const SunCase kSuns[] = {{-6.0, 0.75}, {-2.0, 0.45}, {0.0, 0.80}, {2.0, 0.40},
-                         {10.0, 0.22}, {30.0, 0.13}, {90.0, 0.06}};
+// The tolerances are regression bounds, not the goal of 5%: the LUT's
+// isotropic orders (sky_multiple.hpp) miss the phase functions' anisotropy,
+// which leaves the horizon of a low sun up to ~25% off (see the printed
+// table; tests/support/ms_reference.hpp), and 2048 paths still carry up to
+// ~10% of Monte Carlo noise in twilight. At sun 0 the probe (0, 180) lies
+// exactly on the earth's shadow (the light grazes the ground at the viewer),
+// where the exact single scattering is a knife edge: 0 just below, twice
+// the probed value just above.
+const SunCase kSuns[] = {{-6.0, 0.50}, {-2.0, 0.30}, {0.0, 0.35}, {2.0, 0.14},
+                         {10.0, 0.10}, {30.0, 0.07}, {90.0, 0.08}};
 
 TEST(SkyMultiple, TotalRadianceAgainstPathTracer) {
     const AtmosphereParams air;
@@ -56,7 +61,7 @@ TEST(SkyMultiple, TotalRadianceAgainstPathTracer) {
     SkyReferenceSettings single;
     single.viewSteps = 512;
     single.lightSteps = 128;
-    const int paths = 512;  // fewer paths add Monte Carlo noise the tolerances were not measured with
+    const int paths = 2048;  // fewer paths add Monte Carlo noise the tolerances were not measured with
     SkySolver solver;
     std::printf(
         "[ sky ms  ] sun elev | worst error | at (elev, azimuth from the sun) | channel | "
@@ -103,6 +108,45 @@ TEST(SkyMultiple, TotalRadianceAgainstPathTracer) {
             sun.elevation, worst, at->el, at->az, "RGB"[channel], at -> solver[channel], at -> ref[channel],
             at -> ms[channel] / at -> ref[channel]);
         EXPECT_LT(worst, sun.tolerance) << "sun " << sun.elevation;
+    }
+}
+
+// The LUT's own assumption made true: with isotropic phase functions at
+// every scattering the in-scattered field is isotropic at each point, and
+// the LUT's explicit orders (sky_multiple.hpp: J_2, J_3 from J_2 along every
+// direction, the ground's reflection of the skylight, a geometric tail) must
+// match the path tracer's orders >= 2 direction by direction. Hillaire's
+// local geometric series alone came out 0.81-0.93 at sun 0 (fails here) and
+// 0.94-1.00 at the zenith sun (8192 paths); with the explicit orders the
+// measured band is 0.94-1.08 over these suns. Within 10%: the quadrature
+// (96 directions, 24 layers, 64 sun cosines) and 4096 paths' noise.
+TEST(SkyMultiple, IsotropicOrdersAgainstPathTracer) {
+    const AtmosphereParams air;
+    const reference::MultipleScatteringTracer tracer(air, reference::MultipleScatteringTracer::Phase::Isotropic);
+    SkySolver solver;
+    for (double sunElevation : {-2.0, 0.0, 10.0, 90.0}) {
+        if (quick() && sunElevation != 10.0) continue;
+        const glm::dvec3 light = direction(sunElevation, 0.0);
+        solver.solve(air, light);
+        double lowest = 1e9, highest = 0.0;
+        for (double el : {0.0, 2.0, 10.0, 45.0, 90.0}) {
+            for (double az : {0.0, 90.0, 180.0}) {
+                if (el == 90.0 && az > 0.0) continue;
+                const glm::dvec3 v = direction(el, az);
+                const glm::dvec3 got = sampleSkyTable(solver.table(), v).multiple;
+                const glm::dvec3 ref = tracer.multipleScattering(v, light, 4096, 4321);
+                for (int c = 0; c < 3; ++c) {
+                    ASSERT_GT(ref[c], 0.0) << el << " " << az;
+                    const double ratio = got[c] / ref[c];
+                    lowest = std::min(lowest, ratio);
+                    highest = std::max(highest, ratio);
+                    EXPECT_NEAR(ratio, 1.0, 0.10) << "sun " << sunElevation << " at " << el << ", " << az << " "
+                                                  << "RGB"[c];
+                }
+            }
+        }
+        std::printf("[ sky ms  ] sun %+5.1f, isotropic phases: multiple scattering solver / tracer %.3f .. %.3f\n",
+                    sunElevation, lowest, highest);
     }
 }
 

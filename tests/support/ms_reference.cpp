@@ -62,6 +62,7 @@ private:
 
 struct MultipleScatteringTracer::Impl {
     AtmosphereParams air;
+    bool isotropic = false;  // Phase::Isotropic: every scattering 1 / (4 pi)
     double rg = 0.0, rt = 0.0;
     std::vector<glm::dvec3> depth;  // [kTableHeights][kTableCosines] optical depth to the top
 
@@ -141,7 +142,8 @@ struct MultipleScatteringTracer::Impl {
         m.totalWeight = 0.0;
         m.single = glm::dvec3(0.0);
         glm::dvec3 t(1.0);
-        const double mr = miePhase(dot3(w, sun), air.mieAnisotropy), rr = rayleighPhase(dot3(w, sun));
+        const double mr = isotropic ? 0.25 / kPi : miePhase(dot3(w, sun), air.mieAnisotropy);
+        const double rr = isotropic ? 0.25 / kPi : rayleighPhase(dot3(w, sun));
         for (int k = 0; k < kSteps; ++k) {
             const double u0 = double(k) / kSteps, u1 = double(k + 1) / kSteps;
             Step& st = m.steps[std::size_t(k)];
@@ -184,6 +186,10 @@ struct MultipleScatteringTracer::Impl {
         const double q = sr + sm > 0.0 ? sr / (sr + sm) : 1.0;
         const double g = std::clamp(air.mieAnisotropy, -0.95, 0.95);
         double mu = 0.0;
+        if (isotropic) {
+            out = around(look, 1.0 - 2.0 * u1, 2.0 * kPi * u2);
+            return st.sigmaR + st.sigmaM;  // (sigma_R + sigma_M) / (4 pi) over the pdf 1 / (4 pi)
+        }
         if (u0 < q) {
             const double qq = 4.0 - 8.0 * u1;  // F(mu) = (mu^3 + 3 mu + 4) / 8 = u1
             const double a = std::cbrt(-0.5 * qq + std::sqrt(0.25 * qq * qq + 1.0));
@@ -238,8 +244,10 @@ struct MultipleScatteringTracer::Impl {
     }
 };
 
-MultipleScatteringTracer::MultipleScatteringTracer(const AtmosphereParams& air)
-    : impl_(std::make_unique<Impl>(air)) {}
+MultipleScatteringTracer::MultipleScatteringTracer(const AtmosphereParams& air, Phase phase)
+    : impl_(std::make_unique<Impl>(air)) {
+    impl_->isotropic = phase == Phase::Isotropic;
+}
 MultipleScatteringTracer::~MultipleScatteringTracer() = default;
 
 glm::dvec3 MultipleScatteringTracer::multipleScattering(const glm::dvec3& view, const glm::dvec3& sun,

@@ -36,8 +36,13 @@ namespace aerial::reference {
 
 class MultipleScatteringTracer {
 public:
+    /// The phase functions at every scattering: the atmosphere's (Rayleigh
+    /// and Cornette-Shanks Mie), or isotropic 1 / (4 pi) for both, the
+    /// assumption of the solver's Psi_ms LUT (which that LUT's orders must
+    /// then match closely, test_sky_multiple.cpp).
+    enum class Phase { Physical, Isotropic };
     /// Builds the sun-transmittance table of this atmosphere.
-    explicit MultipleScatteringTracer(const AtmosphereParams& air);
+    explicit MultipleScatteringTracer(const AtmosphereParams& air, Phase phase = Phase::Physical);
     ~MultipleScatteringTracer();
 
     /// Radiance per unit sun illuminance [1/sr], RGB, added by all orders

@@ -26,17 +26,25 @@
 // their exact integral, sky_reference.hpp).
 //
 // Multiple scattering (Hillaire 2020, "A Scalable and Production Ready Sky
-// and Atmosphere Rendering Technique", section 5.5, eq. 5-10): Psi_ms(h, mu_s)
-// is the radiance per unit sun illuminance [1/sr] that all orders >= 2 add at
-// height h for a sun of zenith cosine mu_s, assuming isotropic scattering of
-// the second order and a geometric series of the higher ones:
-//   Psi_ms = L_2nd / (1 - f_ms), L_2nd the second order from 96 directions
-// crowded at the horizon and towards the sun (Hillaire: 64 uniform ones,
-// which miss the thin sunlit upper air that lights a deep twilight) (single scattering of the sun along each ray to the ground or the top, plus
-// the ground's Lambertian bounce with AtmosphereParams::groundAlbedo) and f_ms
-// the transfer (the same integral of unit isotropic in-scattering). The LUT
+// and Atmosphere Rendering Technique", section 5.5, eq. 5-10, with its
+// third order made explicit): Psi_ms(h, mu_s) is the radiance per unit sun
+// illuminance [1/sr] that all orders >= 2 add at height h for a sun of
+// zenith cosine mu_s, assuming isotropic scattering from the second order on:
+//   Psi_ms = J_2 + J_3 + J_3 f_ms / (1 - f_ms),
+// J_2 = Hillaire's L_2nd, the second order from 96 directions crowded at
+// the horizon and towards the sun (Hillaire: 64 uniform ones, which miss the
+// thin sunlit upper air that lights a deep twilight): single scattering of
+// the sun along each ray to the ground or the top, plus the ground's
+// Lambertian bounce with AtmosphereParams::groundAlbedo. J_3 is the third
+// order integrated from J_2 through the atmosphere along the same
+// directions, with the ground's reflection of J_2's light and of the
+// single-scattered skylight; f_ms (the transfer of unit isotropic
+// in-scattering) gives the geometric tail of the rest. Hillaire's
+// L_2nd / (1 - f_ms) takes every higher order from the point's own
+// neighbourhood, which under-estimated the horizon of a low sun by a third
+// (details and measurements: core/src/sky_multiple.hpp). The LUT
 // (MultipleScatteringTable) has 25 heights (the shells of 24 equal-mass
-// layers from the ground to the top) x 32 sun cosines (mu = sign(x) x^2, x
+// layers from the ground to the top) x 64 sun cosines (mu = sign(x) x^2, x
 // uniform in [-1, 1]: dense near the horizon). It depends only on the
 // atmosphere and is cached with the optical-depth table. Along a view ray it
 // is taken at each shell (height of the shell, the sun's zenith cosine where
@@ -232,7 +240,8 @@ glm::dvec3 horizonFogRadiance(const SkyTable& table, double mieAnisotropy, const
 /// The Nishita 1993 solver: a 2D optical-depth table (height x light zenith
 /// angle, Rayleigh, Mie and ozone) and integration over exponentially
 /// distributed layers along each view ray, plus Hillaire 2020 multiple
-/// scattering (the Psi_ms LUT, built with the optical-depth table). Multithreaded (threads made once,
+/// scattering with an explicit third order (the Psi_ms LUT, built with the
+/// optical-depth table). Multithreaded (threads made once,
 /// in the constructor); allocates nothing per solve. Single-threaded,
 /// multi-threaded and amortised solves give bit-identical tables. The
 /// optical-depth table and the Psi_ms LUT are kept while the AtmosphereParams stay bitwise equal,
