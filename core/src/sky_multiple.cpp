@@ -56,7 +56,9 @@ MsScratch::MsScratch() {
     acc.assign(std::size_t(3) * kMsCombos, 0.0f);
     ground.assign(std::size_t(3) * kMsCombos, 0.0);
     source.assign(std::size_t(2) * 3 * kMsCombos, 0.0f);
-    orderAcc.assign(std::size_t(3) * kMsCombos, 0.0);
+    orderAcc.assign(std::size_t(3) * kMsCombos, 0.0f);
+    column.assign(kMsCombos, 0);
+    fraction.assign(kMsCombos, 0.0f);
     groundSky.assign(std::size_t(3) * kMsCombos, 0.0);
 }
 
@@ -320,33 +322,29 @@ void MultipleScatteringLut::buildOrderRow(int row, int order, MsScratch& s) {
     std::vector<float>& to = order_[(order - 2) % 2];
     const double rg = air_.planetRadius;
     const double rk = rg + height_[std::size_t(row)];
-    std::fill(s.orderAcc.begin(), s.orderAcc.end(), 0.0);
-    // J_n at shell j for the combos' sun cosines there, linear in the columns' x = sign(mu) sqrt|mu|.
+    std::fill(s.orderAcc.begin(), s.orderAcc.end(), 0.0f);
+    constexpr float kMaxU = float(kMsCosines - 1) - 1e-3f;
+    // The LUT column (s.column, s.fraction) of each combo's sun cosine where
+    // the ray crosses shell s.shell[i] (linear in x = sign(mu) sqrt|mu|), and
+    // J_(order - 1) there, as out[c][combo].
     auto sourceAt = [&](int i, float* out) {
         const int j = s.shell[std::size_t(i)];
         const double dist = s.crossing[std::size_t(i)];
         const double rj = rg + height_[std::size_t(j)];
-        const double cosT = s.cosT, sinT = s.sinT;
-        const double alpha = (rk + dist * cosT) / rj, beta = dist * sinT / rj;
-        const float* rowJ = from.data() + std::size_t(j) * kMsCosines * 3;
-        // Order 3 also takes the ground's reflection of the skylight that
-        // single scattering sends down (E_1), as extra source at the ground.
-        const bool bounce = order == 3 && j == 0 && i + 1 == s.crossingCount && s.groundHit;
+        const float alpha = float((rk + dist * s.cosT) / rj), beta = float(dist * s.sinT / rj);
         for (int m = 0; m < kMsCombos; ++m) {
-            const double mu = std::clamp(alpha * comboP_[std::size_t(m)] + beta * comboQ_[std::size_t(m)], -1.0, 1.0);
-            const double x = mu < 0.0 ? -std::sqrt(-mu) : std::sqrt(mu);
-            const double u = std::min((x + 1.0) * 0.5 * (kMsCosines - 1), kMsCosines - 1 - 1e-9);
-            const int iu = int(u);
-            const double f = u - iu;
-            for (int c = 0; c < 3; ++c) {
-                const double a = rowJ[std::size_t(iu) * 3 + c], b = rowJ[std::size_t(iu + 1) * 3 + c];
-                double value = a + f * (b - a);
-                if (bounce && groundReflection_[c] > 0.0) {
-                    const double ea = groundSky_[std::size_t(iu) * 3 + c], eb = groundSky_[std::size_t(iu + 1) * 3 + c];
-                    const double albedo = std::clamp(air_.groundAlbedo[c], 0.0, 1.0);
-                    value += albedo / kPi * (ea + f * (eb - ea)) / groundReflection_[c];
-                }
-                out[std::size_t(c) * kMsCombos + std::size_t(m)] = float(value);
+            const float mu = std::clamp(alpha * comboP_[std::size_t(m)] + beta * comboQ_[std::size_t(m)], -1.0f, 1.0f);
+            const float x = std::copysign(std::sqrt(std::abs(mu)), mu);
+            const float u = std::clamp((x + 1.0f) * 0.5f * float(kMsCosines - 1), 0.0f, kMaxU);
+            s.column[std::size_t(m)] = int(u);
+            s.fraction[std::size_t(m)] = u - float(int(u));
+        }
+        const float* rowJ = from.data() + std::size_t(j) * kMsCosines * 3;
+        for (int c = 0; c < 3; ++c) {
+            float* dst = out + std::size_t(c) * kMsCombos;
+            for (int m = 0; m < kMsCombos; ++m) {
+                const std::size_t at = std::size_t(s.column[std::size_t(m)]) * 3 + std::size_t(c);
+                dst[m] = rowJ[at] + s.fraction[std::size_t(m)] * (rowJ[at + 3] - rowJ[at]);
             }
         }
     };
@@ -356,8 +354,6 @@ void MultipleScatteringLut::buildOrderRow(int row, int order, MsScratch& s) {
         s.sinT = std::sqrt(std::max(1.0 - node.angle * node.angle, 0.0));
         bool hitsGround = false;
         const int n = rayCrossings(row, node.angle, s, hitsGround);
-        s.crossingCount = n;
-        s.groundHit = hitsGround;
         float* g[2] = {s.source.data(), s.source.data() + std::size_t(3) * kMsCombos};
         sourceAt(0, g[0]);
         double viewT[3] = {1.0, 1.0, 1.0};
@@ -365,30 +361,36 @@ void MultipleScatteringLut::buildOrderRow(int row, int order, MsScratch& s) {
             double scatter[3], tau[3];
             segmentDepths(i, s, scatter, tau);
             sourceAt(i + 1, g[(i + 1) % 2]);
-            const float* ga = g[i % 2];
-            const float* gb = g[(i + 1) % 2];
             for (int c = 0; c < 3; ++c) {
                 // integral_0^1 e^(-tau t) (1 - t, t) dt = (F0 - F1, F1).
                 const double t = tau[c];
                 const double f0 = transferFactor(t);
                 const double f1 = t < 1e-3 ? 0.5 - t / 3.0 : (1.0 - std::exp(-t) * (1.0 + t)) / (t * t);
                 const double w = node.weight * scatter[c] * viewT[c];
-                const double wa = w * (f0 - f1), wb = w * f1;
-                double* acc = s.orderAcc.data() + std::size_t(c) * kMsCombos;
-                const float* a = ga + std::size_t(c) * kMsCombos;
-                const float* b = gb + std::size_t(c) * kMsCombos;
+                const float wa = float(w * (f0 - f1)), wb = float(w * f1);
+                float* acc = s.orderAcc.data() + std::size_t(c) * kMsCombos;
+                const float* a = g[i % 2] + std::size_t(c) * kMsCombos;
+                const float* b = g[(i + 1) % 2] + std::size_t(c) * kMsCombos;
                 for (int m = 0; m < kMsCombos; ++m) acc[m] += wa * a[m] + wb * b[m];
                 viewT[c] *= std::exp(-t);
             }
         }
         if (hitsGround) {
-            // The ground lit by order n's skylight (J_n around it times the
-            // unit field's irradiance there) reflects it.
+            // The ground (the last crossing, whose columns sourceAt left in
+            // s.column) lit by J_(order - 1)'s skylight (J around it times
+            // the unit field's irradiance E_f there) reflects it; for order 3
+            // also the skylight of single scattering (E_1).
             const float* gl = g[(n - 1) % 2];
             for (int c = 0; c < 3; ++c) {
-                const double w = node.weight * viewT[c] * groundReflection_[c];
-                double* acc = s.orderAcc.data() + std::size_t(c) * kMsCombos;
-                for (int m = 0; m < kMsCombos; ++m) acc[m] += w * gl[std::size_t(c) * kMsCombos + std::size_t(m)];
+                const double albedo = std::clamp(air_.groundAlbedo[c], 0.0, 1.0);
+                const float w = float(node.weight * viewT[c] * groundReflection_[c]);
+                const float w1 = order == 3 ? float(node.weight * viewT[c] * albedo / kPi) : 0.0f;
+                float* acc = s.orderAcc.data() + std::size_t(c) * kMsCombos;
+                for (int m = 0; m < kMsCombos; ++m) {
+                    const std::size_t at = std::size_t(s.column[std::size_t(m)]) * 3 + std::size_t(c);
+                    const double e1 = groundSky_[at] + s.fraction[std::size_t(m)] * (groundSky_[at + 3] - groundSky_[at]);
+                    acc[m] += w * gl[std::size_t(c) * kMsCombos + std::size_t(m)] + w1 * float(e1);
+                }
             }
         }
     }

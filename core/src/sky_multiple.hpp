@@ -105,10 +105,10 @@ struct MsScratch {
     std::vector<float> acc;                         // [3][kMsCombos] in-scattering
     std::vector<double> ground;                     // [3][kMsCombos] the ground's share
     std::vector<float> source;                      // [2][3][kMsCombos] J_n at two crossings
-    std::vector<double> orderAcc;                   // [3][kMsCombos]
+    std::vector<float> orderAcc;                    // [3][kMsCombos]
+    std::vector<int> column;                        // [kMsCombos] LUT column of a crossing
+    std::vector<float> fraction;                    // [kMsCombos] and the fraction towards the next
     double cosT = 1.0, sinT = 0.0;                  // the ray of buildOrderRow
-    int crossingCount = 0;
-    bool groundHit = false;
     std::vector<double> groundSky;                  // [3][kMsCombos]
     MsScratch();
 };

@@ -118,7 +118,7 @@ TEST(SkyMultiple, TotalRadianceAgainstPathTracer) {
 // match the path tracer's orders >= 2 direction by direction. Hillaire's
 // local geometric series alone came out 0.81-0.93 at sun 0 (fails here) and
 // 0.94-1.00 at the zenith sun (8192 paths); with the explicit orders the
-// measured band is 0.94-1.08 over these suns. Within 10%: the quadrature
+// measured band is 0.93-1.07 over these suns. Within 10%: the quadrature
 // (96 directions, 24 layers, 64 sun cosines) and 4096 paths' noise.
 TEST(SkyMultiple, IsotropicOrdersAgainstPathTracer) {
     const AtmosphereParams air;
