@@ -116,8 +116,8 @@ TEST(SkyMultiple, TotalRadianceAgainstPathTracer) {
 // the LUT's explicit orders (sky_multiple.hpp: J_2, J_3 from J_2 along every
 // direction, the ground's reflection of the skylight, a geometric tail) must
 // match the path tracer's orders >= 2 direction by direction. Hillaire's
-// local geometric series alone came out 0.81-0.93 at sun 0 (fails here) and
-// 0.94-1.00 at the zenith sun (8192 paths); with the explicit orders the
+// local geometric series alone came out 0.67-0.93 at sun 0 (fails here) and
+// 0.96-1.00 at the zenith sun (8192 paths); with the explicit orders the
 // measured band is 0.93-1.07 over these suns. Within 10%: the quadrature
 // (96 directions, 24 layers, 64 sun cosines) and 4096 paths' noise.
 TEST(SkyMultiple, IsotropicOrdersAgainstPathTracer) {
