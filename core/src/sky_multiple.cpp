@@ -55,7 +55,7 @@ MsScratch::MsScratch() {
     records.assign(std::size_t(2) * 7 * kMsCombos, 0.0f);
     acc.assign(std::size_t(3) * kMsCombos, 0.0f);
     ground.assign(std::size_t(3) * kMsCombos, 0.0);
-    source.assign(std::size_t(2) * 3 * kMsCombos, 0.0f);
+    source.assign(std::size_t(3) * 3 * kMsCombos, 0.0f);
     orderAcc.assign(std::size_t(3) * kMsCombos, 0.0f);
     column.assign(kMsCombos, 0);
     fraction.assign(kMsCombos, 0.0f);
@@ -298,8 +298,10 @@ void MultipleScatteringLut::buildSecondOrderRow(int row, MsScratch& s) {
             const std::size_t at = (std::size_t(row) * kMsCosines + j) * 3 + c;
             order_[0][at] = float(l2);
             sum_[at] = l2;
-            const double value = l2 / (1.0 - fms);
-            psi_[at] = std::isfinite(value) ? float(value) : 0.0f;
+            if (kMsLastOrder == 2) {  // Hillaire's series from the second order on
+                const double value = l2 / (1.0 - fms);
+                psi_[at] = std::isfinite(value) ? float(value) : 0.0f;
+            }
         }
         fms_[std::size_t(row) * 3 + c] = fms;
         if (groundRow) {
@@ -348,14 +350,24 @@ void MultipleScatteringLut::buildOrderRow(int row, int order, MsScratch& s) {
             }
         }
     };
+    // Every ray starts at the point itself (alpha = 1, beta = 0: the combo's
+    // own sun cosine), so its source there is the same for all directions.
+    const std::size_t plane = std::size_t(3) * kMsCombos;
+    float* start = s.source.data() + 2 * plane;
+    s.shell[0] = row;
+    s.crossing[0] = 0.0;
+    sourceAt(0, start);
     for (int z = 0; z < kMsZeniths; ++z) {
         const MsNode node = msZenithNode(z);
         s.cosT = node.angle;
         s.sinT = std::sqrt(std::max(1.0 - node.angle * node.angle, 0.0));
         bool hitsGround = false;
         const int n = rayCrossings(row, node.angle, s, hitsGround);
-        float* g[2] = {s.source.data(), s.source.data() + std::size_t(3) * kMsCombos};
-        sourceAt(0, g[0]);
+        float* g[2] = {s.source.data(), s.source.data() + plane};
+        if (n > 1)
+            std::copy(start, start + plane, g[0]);
+        else
+            sourceAt(0, g[0]);  // the ground row looking down: the ground term needs its columns
         double viewT[3] = {1.0, 1.0, 1.0};
         for (int i = 0; i + 1 < n; ++i) {
             double scatter[3], tau[3];

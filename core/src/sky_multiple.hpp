@@ -104,7 +104,7 @@ struct MsScratch {
     std::vector<float> records;                     // [2][7][kMsCombos]
     std::vector<float> acc;                         // [3][kMsCombos] in-scattering
     std::vector<double> ground;                     // [3][kMsCombos] the ground's share
-    std::vector<float> source;                      // [2][3][kMsCombos] J_n at two crossings
+    std::vector<float> source;                      // [3][3][kMsCombos] J_n at two crossings and the start
     std::vector<float> orderAcc;                    // [3][kMsCombos]
     std::vector<int> column;                        // [kMsCombos] LUT column of a crossing
     std::vector<float> fraction;                    // [kMsCombos] and the fraction towards the next
