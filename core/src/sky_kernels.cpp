@@ -261,7 +261,8 @@ AERIAL_INLINE void skyLayer(
 
 /// Psi_ms at one shell for every column: the light's zenith cosine
 /// alpha + beta cos(phi) -> LUT column x = sign(mu) sqrt|mu|,
-/// u = (x + 1) / 2 (n - 1) (sky_multiple.hpp) -> linear interpolation.
+/// u = (x + 1) / 2 (n - 1) (sky_multiple.hpp) -> interpolation of -ln Psi
+/// (MultipleScatteringLut::resample: geometric in Psi).
 AERIAL_INLINE void shellPsi(int nc, float alpha, float beta, int n, const float* __restrict psi0,
                             const float* __restrict psi1, const float* __restrict psi2,
                             const float* __restrict cosPhi, float* __restrict out0, float* __restrict out1,
@@ -276,24 +277,90 @@ AERIAL_INLINE void shellPsi(int nc, float alpha, float beta, int n, const float*
         const float u = minNonNegative(maxZero((x + 1.0f) * scale), maxU);
         const int iu = static_cast<int>(u);
         const float f = u - float(iu);
-        out0[i] = psi0[iu] + f * (psi0[iu + 1] - psi0[iu]);
-        out1[i] = psi1[iu] + f * (psi1[iu + 1] - psi1[iu]);
-        out2[i] = psi2[iu] + f * (psi2[iu + 1] - psi2[iu]);
+        out0[i] = expNeg(psi0[iu] + f * (psi0[iu + 1] - psi0[iu]));
+        out1[i] = expNeg(psi1[iu] + f * (psi1[iu + 1] - psi1[iu]));
+        out2[i] = expNeg(psi2[iu] + f * (psi2[iu + 1] - psi2[iu]));
+    }
+}
+
+/// The second order's view-dependent remainder at one shell for every
+/// column (sky_multiple.hpp, "The phases"), added to the multiple
+/// scattering's accumulators: the layers on both sides of the shell weight
+/// the shell's A_R and A_M by W_R and W_M (msB of the layer below, msA of
+/// the one above: Psi and A_X are linear along a layer), so the shell adds
+///   W_R A_R + W_M A_M = Psi (K_q Q + K_d D),  K_q = W_R r2 + W_M m2, K_d = W_M m1,
+/// with Q = B_0 + B_u v_u^2 + B_s v_s^2 + B_us v_u v_s, D = D_u v_u + D_s v_s
+/// (the B and D relative to Psi, resample), v_u the view's zenith cosine at
+/// the shell (the same for every column of a row) and
+/// v_s = (v.l - v_u mu) / sqrt(1 - mu^2) its component along the light's
+/// horizontal. Per LUT column that is a polynomial p0 + p1 v_s + p2 v_s^2
+/// (`poly`: [3 channels][3][n] scratch), interpolated at each column's light
+/// cosine as in shellPsi; `psi` is shellPsi's output ([3][nc]), `column` and
+/// `across` [nc] scratch, `aniso` the shell's first plane, planes `stride` apart.
+AERIAL_INLINE void shellAniso(int nc, float alpha, float beta, int n, const float* __restrict aniso,
+                              std::size_t stride, float viewUp, float nuA, float nuB, const float kq[3],
+                              const float kd[3], const float* __restrict cosPhi, const float* __restrict psi,
+                              float* __restrict poly, float* __restrict column, float* __restrict across,
+                              float* __restrict acc) {
+    const float scale = 0.5f * float(n - 1);
+    const float maxU = float(n - 1) - 1e-3f;
+    const float vu = viewUp, vu2 = viewUp * viewUp;
+    for (int c = 0; c < 3; ++c) {
+        const float* __restrict du = aniso + std::size_t(c) * stride;
+        const float* __restrict ds = aniso + std::size_t(3 + c) * stride;
+        const float* __restrict b0 = aniso + std::size_t(6 + c) * stride;
+        const float* __restrict bu = aniso + std::size_t(9 + c) * stride;
+        const float* __restrict bs = aniso + std::size_t(12 + c) * stride;
+        const float* __restrict bus = aniso + std::size_t(15 + c) * stride;
+        float* __restrict p0 = poly + std::size_t(3 * c) * n;
+        float* __restrict p1 = p0 + n;
+        float* __restrict p2 = p1 + n;
+        for (int j = 0; j < n; ++j) {
+            p0[j] = kq[c] * (b0[j] + bu[j] * vu2) + kd[c] * du[j] * vu;
+            p1[j] = kq[c] * bus[j] * vu + kd[c] * ds[j];
+            p2[j] = kq[c] * bs[j];
+        }
+    }
+    const float vsMax = fastSqrt(maxZero(1.0f - vu2) + 1e-30f);
+    for (int i = 0; i < nc; ++i) {
+        const float mu = alpha + beta * cosPhi[i];
+        const float root = fastSqrt(minNonNegative(std::abs(mu), 1.0f) + 1e-30f);
+        const float x = std::bit_cast<float>(std::bit_cast<int>(root) |
+                                             (std::bit_cast<int>(mu) & static_cast<int>(0x80000000u)));
+        column[i] = minNonNegative(maxZero((x + 1.0f) * scale), maxU);
+        const float sinS = fastSqrt(maxZero(1.0f - mu * mu) + 1e-8f);
+        const float vs = (nuA + nuB * cosPhi[i] - vu * mu) / sinS;
+        across[i] = vs < -vsMax ? -vsMax : (vs > vsMax ? vsMax : vs);
+    }
+    for (int c = 0; c < 3; ++c) {
+        const float* __restrict p0 = poly + std::size_t(3 * c) * n;
+        const float* __restrict p1 = p0 + n;
+        const float* __restrict p2 = p1 + n;
+        const float* __restrict psiC = psi + std::size_t(c) * nc;
+        float* __restrict out = acc + std::size_t(c) * nc;
+        for (int i = 0; i < nc; ++i) {
+            const float u = column[i], vs = across[i];
+            const int iu = static_cast<int>(u);
+            const float f = u - float(iu);
+            const float a0 = p0[iu] + f * (p0[iu + 1] - p0[iu]);
+            const float a1 = p1[iu] + f * (p1[iu + 1] - p1[iu]);
+            const float a2 = p2[iu] + f * (p2[iu + 1] - p2[iu]);
+            out[i] += psiC[i] * (a0 + vs * (a1 + vs * a2));
+        }
     }
 }
 
 /// A layer's multiple scattering for every column: msA Psi(a) + msB Psi(b)
-/// (Psi linear along the layer, weighted by the layer's sigma_s T shape).
-AERIAL_INLINE void msLayer(int nc, const LayerConstants& k, const float* __restrict a0,
-                           const float* __restrict a1, const float* __restrict a2, const float* __restrict b0,
-                           const float* __restrict b1, const float* __restrict b2, float* __restrict acc0,
-                           float* __restrict acc1, float* __restrict acc2) {
-    const float wa0 = k.msA[0], wa1 = k.msA[1], wa2 = k.msA[2];
-    const float wb0 = k.msB[0], wb1 = k.msB[1], wb2 = k.msB[2];
-    for (int i = 0; i < nc; ++i) {
-        acc0[i] += wa0 * a0[i] + wb0 * b0[i];
-        acc1[i] += wa1 * a1[i] + wb1 * b1[i];
-        acc2[i] += wa2 * a2[i] + wb2 * b2[i];
+/// (Psi linear along the layer, weighted by the layer's sigma_s T shape; the
+/// anisotropy is added per shell, shellAniso).
+AERIAL_INLINE void msLayer(int nc, const LayerConstants& k, const float* __restrict lo,
+                           const float* __restrict up, float* __restrict acc) {
+    for (int c = 0; c < 3; ++c) {
+        const float wa = k.msA[c] + k.msA[3 + c], wb = k.msB[c] + k.msB[3 + c];
+        const float* __restrict pa = lo + std::size_t(10 + c) * nc;
+        const float* __restrict pb = up + std::size_t(10 + c) * nc;
+        float* __restrict out = acc + std::size_t(c) * nc;
+        for (int i = 0; i < nc; ++i) out[i] += wa * pa[i] + wb * pb[i];
     }
 }
 
@@ -343,6 +410,37 @@ AERIAL_INLINE void lightAtShell(const SkyKernelArgs& a, int j, float maxU) {
         const float* p1 = a.psi + (rows + std::size_t(j)) * n;
         const float* p2 = a.psi + (2 * rows + std::size_t(j)) * n;
         shellPsi(nc, alpha, beta, n, p0, p1, p2, a.cosPhi, r + 10 * nc, r + 11 * nc, r + 12 * nc);
+        // The anisotropy at every kAnisoShellStride-th shell (and the last)
+        // only, each also with its share of the skipped shells' weights
+        // (linear between the evaluated ones): A_X, a correction of a few tens
+        // of percent, is smooth along the ray, and this divides its cost.
+        const int stride = kAnisoShellStride;
+        const bool evaluated = j % stride == 0 || j == a.layers;
+        if (a.aniso != nullptr && evaluated) {
+            const int before =
+                j == a.layers ? (j - 1) / stride * stride : j - stride;  // evaluated neighbours
+            const int after = std::min(j + stride, a.layers);
+            float kq[3], kd[3];
+            for (int c = 0; c < 3; ++c) {
+                // Shell i's weights: msB of the layer below, msA of the one above.
+                auto weight = [&](int i, int x) {
+                    return (i > 0 ? a.layer[i - 1].msB[x] : 0.0f) + (i < a.layers ? a.layer[i].msA[x] : 0.0f);
+                };
+                float wr = weight(j, c), wm = weight(j, 3 + c);
+                for (int i = std::max(before + 1, 1); i < after; ++i) {
+                    if (i == j) continue;
+                    const float share =
+                        i < j ? float(i - before) / float(j - before) : float(after - i) / float(after - j);
+                    wr += share * weight(i, c);
+                    wm += share * weight(i, 3 + c);
+                }
+                kq[c] = wr * a.rayleighBand2 + wm * a.mieBand2;
+                kd[c] = wm * a.mieBand1;
+            }
+            shellAniso(nc, alpha, beta, n, a.aniso + std::size_t(j) * n, rows * n,
+                       j == 0 ? a.viewUp0 : a.layer[j - 1].viewUp, a.nuA, a.nuB, kq, kd, a.cosPhi,
+                       r + 10 * nc, a.anisoPoly, r + 13 * nc, r + 14 * nc, a.acc + 6 * nc);
+        }
     }
 }
 
@@ -415,8 +513,8 @@ AERIAL_HOT_KERNEL void skyKernel(const SkyKernelArgs& a) {
     const float maxU = float(a.angles - 1) - 1e-3f;
     float* acc = a.acc;
     auto shell = [&](int j) { return a.shells + std::size_t(j % kShellSlots) * kShellRecord * nc; };
+    for (int i = 0; i < 9 * nc; ++i) acc[i] = 0.0f;  // before the shells: shellAniso adds to it
     for (int j = 0; j <= std::min(nl, kShellSlots - 1); ++j) lightAtShell(a, j, maxU);
-    for (int i = 0; i < 9 * nc; ++i) acc[i] = 0.0f;
     for (int l = 0; l < nl; ++l) {
         if (l >= 2 && l + 2 <= nl) lightAtShell(a, l + 2, maxU);
         const LayerConstants& k = a.layer[l];
@@ -429,9 +527,7 @@ AERIAL_HOT_KERNEL void skyKernel(const SkyKernelArgs& a) {
                  up + 4 * nc, up + 5 * nc, up + 6 * nc, up + 7 * nc, up + 8 * nc, c, c + nc, c + 2 * nc, d,
                  d + nc, d + 2 * nc, lo + 9 * nc, up + 9 * nc, c + 9 * nc, d + 9 * nc, acc, acc + nc,
                  acc + 2 * nc, acc + 3 * nc, acc + 4 * nc, acc + 5 * nc);
-        if (a.psi != nullptr)
-            msLayer(nc, k, lo + 10 * nc, lo + 11 * nc, lo + 12 * nc, up + 10 * nc, up + 11 * nc, up + 12 * nc,
-                    acc + 6 * nc, acc + 7 * nc, acc + 8 * nc);
+        if (a.psi != nullptr) msLayer(nc, k, lo, up, acc + 6 * nc);
     }
 }
 
@@ -489,8 +585,9 @@ AERIAL_HOT_KERNEL void msSegmentKernel(const MsSegmentArgs& a) {
     const float* __restrict ra = a.a;
     const float* __restrict rb = a.b;
     float* __restrict acc = a.acc;
+    float* __restrict accMie = a.accMie;
     for (int c = 0; c < 3; ++c) {
-        const float w = a.weight[c], tv = a.tauView[c], eView = expNeg(tv);
+        const float w = a.weight[c], wm = a.weightMie[c], tv = a.tauView[c], eView = expNeg(tv);
         const float* __restrict tauA = ra + c * n;
         const float* __restrict tauB = rb + c * n;
         const float* __restrict trA = ra + (3 + c) * n;
@@ -498,6 +595,7 @@ AERIAL_HOT_KERNEL void msSegmentKernel(const MsSegmentArgs& a) {
         const float* __restrict mA = ra + 6 * n;
         const float* __restrict mB = rb + 6 * n;
         float* __restrict out = acc + c * n;
+        float* __restrict outMie = accMie + c * n;
         for (int i = 0; i < n; ++i) {
             const float marginA = mA[i], marginB = mB[i];
             const float pos = maxZero(marginA) + maxZero(marginB);
@@ -505,7 +603,9 @@ AERIAL_HOT_KERNEL void msSegmentKernel(const MsSegmentArgs& a) {
             const float lit = pos / (pos + neg + 1e-30f);
             float f1, f2;
             exponentialMoments(trA[i], trB[i] * eView, tv + tauB[i] - tauA[i], f1, f2);
-            out[i] += w * lit * f1;
+            const float share = lit * f1;
+            out[i] += w * share;
+            outMie[i] += wm * share;
         }
     }
 }

@@ -93,14 +93,18 @@ struct LayerConstants {
     float alpha, beta, horizonCos, angleScale;  // upper shell: light cosine alpha + beta cos(phi), table row
     float start, end;                           // layer extent along the view ray
     float p[6], q[6];                           // weight p + q t: R rgb, M rgb
-    float msA[3], msB[3];                       // multiple scattering: sigma_s T weights of Psi at a and b
-    float curvature;                            // tanh(lambda / 4) / 3, see curvatureFactor
+    float msA[6], msB[6];    // multiple scattering: sigma_X T weights at a and b, R rgb, M rgb
+    float viewUp;            // the view ray's zenith cosine at the upper shell
+    float curvature;         // tanh(lambda / 4) / 3, see curvatureFactor
     int stencilC, stencilD;  // the stencil's two shells besides the layer's own (curvatureFactor)
     float stencil[4];        // -2/3 (cubic at mid-layer - chord): weights of tau at shells a, b, C, D
 };
 
-/// Floats per column of a shell record (skyShell: 10; shellPsi: 3 more).
-constexpr int kShellRecord = 13;
+/// Floats per column of a shell record (skyShell: 10; shellPsi: 3 more;
+/// shellAniso: 2 of scratch).
+constexpr int kShellRecord = 15;
+/// The second order's anisotropy is evaluated at every this many shells (skyKernel).
+constexpr int kAnisoShellStride = 4;
 /// Shell records kept at a time: a layer's stencil spans four shells.
 constexpr int kShellSlots = 4;
 
@@ -119,6 +123,14 @@ struct SkyKernelArgs {
     /// (sky_multiple.hpp, column mapping msColumnOfCosine); null: single scattering only.
     const float* psi;
     int psiCosines;
+    /// The second order's anisotropy (sky_multiple.hpp) resampled at the shells,
+    /// [kMsAniso * 3][layers + 1][psiCosines] (D_u, D_s, B_0, B_u, B_s, B_us, each rgb);
+    /// null: none (isotropic, or single scattering only).
+    const float* aniso;
+    float viewUp0;   // the view ray's zenith cosine at the viewer (sin of the row's elevation)
+    float nuA, nuB;  // the view ray's cosine to the light: nuA + nuB cos(phi)
+    float rayleighBand2, mieBand1, mieBand2;  // MultipleScatteringLut's Legendre factors
+    float* anisoPoly;                         // [9][psiCosines] scratch of shellAniso
     float* shells;  // [kShellSlots][kShellRecord][columns] scratch: the light at the shells in use
     float* acc;     // [9][columns]: R rgb, M rgb, multiple rgb (with psi)
 };
@@ -127,7 +139,8 @@ struct SkyKernelArgs {
 /// light at every shell (table lookup), then each layer's closed-form
 /// integral times its curvature factor and lit fraction, summed into acc
 /// (Rayleigh rgb, Mie rgb), and with `psi` the multiple scattering of each
-/// layer, msA Psi(a) + msB Psi(b) (multiple rgb). `columns` is a multiple of
+/// layer, msA Psi(a) + msB Psi(b) (multiple rgb; with `aniso`, each
+/// scatterer's sigma_X A_X(v) added to its Psi, per shell). `columns` is a multiple of
 /// 16 (no scalar tail).
 void skyKernel(const SkyKernelArgs& a);
 
@@ -168,15 +181,17 @@ void msCrossingKernel(const MsCrossingArgs& a);
 
 struct MsSegmentArgs {
     int count;
-    float weight[3];  // the segment's scattering column mass times T(start -> segment start), rgb
+    float weight[3];     // the segment's Rayleigh scattering column mass times T(start -> segment start), rgb
+    float weightMie[3];  // ... Mie's
     float tauView[3];
     const float* a;  // crossing records (msCrossingKernel) at the segment's ends
     const float* b;
-    float* acc;  // [3][count]
+    float* acc;     // [3][count] Rayleigh
+    float* accMie;  // [3][count] Mie
 };
 
-/// One segment between two crossings, for every combination: the integral of
-/// sigma_s T(start -> s) T(s -> sun) over it, with the total optical depth
+/// One segment between two crossings, for every combination: the integrals of
+/// sigma_R T(start -> s) T(s -> sun) and of sigma_M T T over it, with the total optical depth
 /// linear along the segment (closed form), times the lit fraction (the part
 /// where the margin, interpolated linearly, is positive).
 void msSegmentKernel(const MsSegmentArgs& a);

@@ -3,6 +3,7 @@
 #include "sky_multiple.hpp"
 
 #include "sky_layers.hpp"
+#include "sky_solver_impl.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -54,7 +55,9 @@ MsScratch::MsScratch() {
     for (auto* v : {&nodeS, &nodeR, &nodeM, &nodeO}) v->assign(std::size_t(4) * kMsMaxCrossings, 0.0f);
     records.assign(std::size_t(2) * 7 * kMsCombos, 0.0f);
     acc.assign(std::size_t(3) * kMsCombos, 0.0f);
+    accMie.assign(std::size_t(3) * kMsCombos, 0.0f);
     ground.assign(std::size_t(3) * kMsCombos, 0.0);
+    moment.assign(std::size_t(kMsAniso) * 3 * kMsCombos, 0.0);
     source.assign(std::size_t(3) * 3 * kMsCombos, 0.0f);
     orderAcc.assign(std::size_t(3) * kMsCombos, 0.0f);
     column.assign(kMsCombos, 0);
@@ -72,6 +75,9 @@ MultipleScatteringLut::MultipleScatteringLut() {
     sum_.assign(psi_.size(), 0.0);
     fms_.assign(std::size_t(kMsRows) * 3, 0.0);
     groundSky_.assign(std::size_t(kMsCosines) * 3, 0.0);
+    aniso_.assign(std::size_t(kMsRows) * kMsCosines * kMsAniso * 3, 0.0f);
+    phaseR_.assign(std::size_t(kMsZeniths) * kMsCombos, float(0.25 / kPi));
+    phaseM_.assign(phaseR_.size(), float(0.25 / kPi));
     comboP_.assign(kMsCombos, 0.0f);
     comboQ_.assign(kMsCombos, 0.0f);
     for (int j = 0; j < kMsCosines; ++j) {
@@ -86,8 +92,10 @@ MultipleScatteringLut::MultipleScatteringLut() {
     }
 }
 
-void MultipleScatteringLut::setAtmosphere(const AtmosphereParams& air) {
+void MultipleScatteringLut::setAtmosphere(const AtmosphereParams& air, bool isotropic) {
     air_ = air;
+    isotropic_ = isotropic;
+    buildPhases();
     density_ = densityConstants(air);
     const double top = std::max(air.atmosphereRadius - air.planetRadius, 0.0);
     equalMassShells(air, 0.0, top, kMsLayers, height_.data());
@@ -111,6 +119,73 @@ void MultipleScatteringLut::setAtmosphere(const AtmosphereParams& air) {
     }
     for (int c = 0; c < 3; ++c)
         groundReflection_[c] = std::clamp(air.groundAlbedo[c], 0.0, 1.0) / kPi * irradiance[c];
+}
+
+// The first scattering's phases per zenith node and combo, each the average
+// of the phase over the node's quadrature cell (kMsPhaseSubsamples^2 points
+// weighted by the cell's Jacobian): at 96 directions the Mie peak (g = 0.8:
+// half its light within ~25 deg of the sun) falls inside one or two cells.
+// Also Mie's Legendre coefficients g_1, g_2 (2 pi integral P P_l dmu, with
+// mu = 1 - 2 t^2 to resolve the peak). Kept while g does not change.
+void MultipleScatteringLut::buildPhases() {
+    if (isotropic_) {
+        std::fill(phaseR_.begin(), phaseR_.end(), float(0.25 / kPi));
+        std::fill(phaseM_.begin(), phaseM_.end(), float(0.25 / kPi));
+        mieG1_ = mieG2_ = 0.0;
+        phaseG_ = NAN;
+        return;
+    }
+    const double g = air_.mieAnisotropy;
+    if (g == phaseG_) return;
+    phaseG_ = g;
+    constexpr int kLegendre = 4096;
+    mieG1_ = mieG2_ = 0.0;
+    for (int k = 0; k < kLegendre; ++k) {
+        const double t = (k + 0.5) / kLegendre, mu = 1.0 - 2.0 * t * t;
+        const double w = 2.0 * kPi * miePhase(mu, g) * 4.0 * t / kLegendre;
+        mieG1_ += w * mu;
+        mieG2_ += w * (1.5 * mu * mu - 0.5);
+    }
+    // The cells' sub-samples: zenith (cos, sin, Jacobian) and azimuth (cos, Jacobian).
+    constexpr int n = kMsPhaseSubsamples;
+    const double dx = 2.0 / kMsZeniths, du = 1.0 / kMsAzimuths;
+    double zc[kMsZeniths][n], zs[kMsZeniths][n], zw[kMsZeniths][n], ac[kMsAzimuths][n], aw[kMsAzimuths][n];
+    for (int z = 0; z < kMsZeniths; ++z) {
+        for (int i = 0; i < n; ++i) {
+            const double x = -1.0 + (z + (i + 0.5) / n) * dx, ax = std::abs(x);
+            zc[z][i] = -(x < 0.0 ? -1.0 : 1.0) * std::pow(ax, kMsZenithPower);
+            zs[z][i] = std::sqrt(std::max(1.0 - zc[z][i] * zc[z][i], 0.0));
+            zw[z][i] = std::pow(ax, kMsZenithPower - 1.0);
+        }
+    }
+    for (int a = 0; a < kMsAzimuths; ++a) {
+        for (int i = 0; i < n; ++i) {
+            const double u = (a + (i + 0.5) / n) * du;
+            ac[a][i] = std::cos(kPi * std::pow(u, kMsAzimuthPower));
+            aw[a][i] = std::pow(u, kMsAzimuthPower - 1.0);
+        }
+    }
+    for (int z = 0; z < kMsZeniths; ++z) {
+        for (int j = 0; j < kMsCosines; ++j) {
+            const double mus = msCosineOfColumn(j);
+            const double sinS = std::sqrt(std::max(1.0 - mus * mus, 0.0));
+            for (int a = 0; a < kMsAzimuths; ++a) {
+                double sumR = 0.0, sumM = 0.0, sumW = 0.0;
+                for (int ix = 0; ix < n; ++ix) {
+                    for (int iu = 0; iu < n; ++iu) {
+                        const double nu = zc[z][ix] * mus + zs[z][ix] * sinS * ac[a][iu];
+                        const double w = zw[z][ix] * aw[a][iu];
+                        sumR += w * rayleighPhase(nu);
+                        sumM += w * miePhase(nu, g);
+                        sumW += w;
+                    }
+                }
+                const std::size_t at = std::size_t(z) * kMsCombos + std::size_t(j * kMsAzimuths + a);
+                phaseR_[at] = float(sumR / sumW);
+                phaseM_[at] = float(sumM / sumW);
+            }
+        }
+    }
 }
 
 void MultipleScatteringLut::buildDepthRow(int row, MsScratch& s) {
@@ -186,13 +261,15 @@ void MultipleScatteringLut::rayTransfer(int row, double cosT, MsScratch& s, doub
 }
 
 /// Scattering and extinction optical depths of segment i of the last rayCrossings.
-void MultipleScatteringLut::segmentDepths(int i, const MsScratch& s, double scatter[3], double tau[3]) const {
+void MultipleScatteringLut::segmentDepths(int i, const MsScratch& s, double scatter[3], double tau[3],
+                                          double* mieScatter) const {
     const double len = s.crossing[std::size_t(i) + 1] - s.crossing[std::size_t(i)];
     const MeanDensity m = segmentMeanDensity(s.nodeR.data(), s.nodeM.data(), s.nodeO.data(), i);
     const double mR = m.rayleigh * len, mM = m.mie * len, mO = m.ozone * len;
     for (int c = 0; c < 3; ++c) {
         scatter[c] = air_.rayleighScattering[c] * mR + air_.mieScattering[c] * mM;
         tau[c] = air_.rayleighScattering[c] * mR + air_.mieExtinction[c] * mM + air_.ozoneAbsorption[c] * mO;
+        if (mieScatter != nullptr) mieScatter[c] = air_.mieScattering[c] * mM;
     }
 }
 
@@ -201,23 +278,24 @@ void MultipleScatteringLut::buildSecondOrderRow(int row, MsScratch& s) {
     const double hk = height_[std::size_t(row)];
     const double rk = rg + hk;
     const std::size_t plane = std::size_t(kMsRows) * kMsAngles;
-    std::fill(s.acc.begin(), s.acc.end(), 0.0f);
-    std::fill(s.ground.begin(), s.ground.end(), 0.0);
+    const std::size_t channel = std::size_t(3) * kMsCombos;  // one moment plane
+    std::fill(s.moment.begin(), s.moment.end(), 0.0);
     double transfer[3] = {0.0, 0.0, 0.0};  // sum over the zenith bands of the unit in-scattering
 
-    // Row 0 (the ground): the irradiance E_1 that single scattering sends
-    // down to it, per sun column, from the upward rays' in-scattering
-    // (integral L_1 cos d omega = sum over the bands of cos theta times each
-    // band's share of acc, which carries 4 pi w_z L_1).
+    // Row 0 (the ground) also gathers the irradiance E_1 that single
+    // scattering sends down to it, per sun column, from the upward rays
+    // (integral L_1 cos d omega).
     const bool groundRow = row == 0;
     if (groundRow) std::fill(s.groundSky.begin(), s.groundSky.end(), 0.0);
+    double albedoPi[3];
+    for (int c = 0; c < 3; ++c) albedoPi[c] = std::clamp(air_.groundAlbedo[c], 0.0, 1.0) / kPi;
     for (int z = 0; z < kMsZeniths; ++z) {
         const MsNode node = msZenithNode(z);
         const double cosT = node.angle, wz = node.weight;
         const double sinT = std::sqrt(std::max(1.0 - cosT * cosT, 0.0));
-        const bool skyward = groundRow && cosT > 0.0;
-        if (skyward)
-            for (std::size_t m = 0; m < s.acc.size(); ++m) s.groundSky[m] -= cosT * double(s.acc[m]);
+        std::fill(s.acc.begin(), s.acc.end(), 0.0f);
+        std::fill(s.accMie.begin(), s.accMie.end(), 0.0f);
+        std::fill(s.ground.begin(), s.ground.end(), 0.0);
         bool hitsGround = false;
         const int n = rayCrossings(row, cosT, s, hitsGround);
         const int segments = n - 1;
@@ -248,17 +326,19 @@ void MultipleScatteringLut::buildSecondOrderRow(int row, MsScratch& s) {
         msCrossingKernel(crossingArgs(0, record[0]));
         double viewT[3] = {1.0, 1.0, 1.0};
         for (int i = 0; i < segments; ++i) {
-            double scatter[3], tau[3];
-            segmentDepths(i, s, scatter, tau);
+            double scatter[3], tau[3], mie[3];
+            segmentDepths(i, s, scatter, tau, mie);
             msCrossingKernel(crossingArgs(i + 1, record[(i + 1) % 2]));
             MsSegmentArgs seg{};
             seg.count = kMsCombos;
             seg.a = record[i % 2];
             seg.b = record[(i + 1) % 2];
             seg.acc = s.acc.data();
+            seg.accMie = s.accMie.data();
             double segT[3];
             for (int c = 0; c < 3; ++c) {
-                seg.weight[c] = float(wz * scatter[c] * viewT[c]);
+                seg.weight[c] = float(wz * (scatter[c] - mie[c]) * viewT[c]);
+                seg.weightMie[c] = float(wz * mie[c] * viewT[c]);
                 seg.tauView[c] = float(tau[c]);
                 segT[c] = std::exp(-tau[c]);
                 transfer[c] += wz * scatter[c] * viewT[c] * transferFactor(tau[c]);
@@ -266,8 +346,6 @@ void MultipleScatteringLut::buildSecondOrderRow(int row, MsScratch& s) {
             msSegmentKernel(seg);
             for (int c = 0; c < 3; ++c) viewT[c] *= segT[c];
         }
-        if (skyward)
-            for (std::size_t m = 0; m < s.acc.size(); ++m) s.groundSky[m] += cosT * double(s.acc[m]);
         if (hitsGround) {
             // The ground reflects the unit field too (f_ms's ground share).
             for (int c = 0; c < 3; ++c) transfer[c] += wz * viewT[c] * groundReflection_[c];
@@ -277,30 +355,66 @@ void MultipleScatteringLut::buildSecondOrderRow(int row, MsScratch& s) {
             for (int c = 0; c < 3; ++c) {
                 for (int m = 0; m < kMsCombos; ++m) {
                     const double mu = std::max(double(r[6 * kMsCombos + m]), 0.0);
-                    s.ground[std::size_t(c * kMsCombos + m)] += wz * viewT[c] * r[(3 + c) * kMsCombos + m] * mu;
+                    s.ground[std::size_t(c * kMsCombos + m)] =
+                        wz * viewT[c] * r[(3 + c) * kMsCombos + m] * mu;
                 }
+            }
+        }
+        // This ray's L_1 (times w_z) per combo, into the moments' sums
+        // (planes: 1, cos, sin, cos^2, sin^2, cos sin of the ray's zenith
+        // angle; the azimuth's factors come with the azimuth weights below).
+        const double f[kMsAniso] = {1.0, cosT, sinT, cosT * cosT, sinT * sinT, cosT * sinT};
+        const float* phR = phaseR_.data() + std::size_t(z) * kMsCombos;
+        const float* phM = phaseM_.data() + std::size_t(z) * kMsCombos;
+        const bool skyward = groundRow && cosT > 0.0;
+        for (int c = 0; c < 3; ++c) {
+            for (int m = 0; m < kMsCombos; ++m) {
+                const std::size_t at = std::size_t(c * kMsCombos + m);
+                const double l1 =
+                    double(phR[m]) * s.acc[at] + double(phM[m]) * s.accMie[at] + s.ground[at] * albedoPi[c];
+                for (int k = 0; k < kMsAniso; ++k) s.moment[std::size_t(k) * channel + at] += f[k] * l1;
+                if (skyward) s.groundSky[at] += 4.0 * kPi * cosT * l1;
             }
         }
     }
 
     // Means over the sphere (the weights sum to 1 in zenith and in azimuth;
-    // each azimuth stands for itself and its mirror).
+    // each azimuth stands for itself and its mirror), and the moments
+    // (integrals over the sphere: 4 pi times the means).
     for (int c = 0; c < 3; ++c) {
         const double fms = std::clamp(transfer[c], 0.0, 0.999);
-        const double albedo = std::clamp(air_.groundAlbedo[c], 0.0, 1.0);
         for (int j = 0; j < kMsCosines; ++j) {
-            double sum = 0.0;
+            double m[kMsAniso] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
             for (int a = 0; a < kMsAzimuths; ++a) {
-                const std::size_t m = std::size_t(c * kMsCombos + j * kMsAzimuths + a);
-                sum += msAzimuthNode(a).weight * (double(s.acc[m]) / (4.0 * kPi) + s.ground[m] * albedo / kPi);
+                const MsNode az = msAzimuthNode(a);
+                const double cp = std::cos(az.angle);
+                const double factor[kMsAniso] = {1.0, 1.0, cp, 1.0, cp * cp, cp};
+                const std::size_t at = std::size_t(c * kMsCombos + j * kMsAzimuths + a);
+                for (int k = 0; k < kMsAniso; ++k)
+                    m[k] += az.weight * factor[k] * s.moment[std::size_t(k) * channel + at];
             }
-            const double l2 = std::isfinite(sum) ? sum : 0.0;
+            const double l2 = std::isfinite(m[0]) ? m[0] : 0.0;
             const std::size_t at = (std::size_t(row) * kMsCosines + j) * 3 + c;
             order_[0][at] = float(l2);
             sum_[at] = l2;
             if (kMsLastOrder == 2) {  // Hillaire's series from the second order on
                 const double value = l2 / (1.0 - fms);
                 psi_[at] = std::isfinite(value) ? float(value) : 0.0f;
+            }
+            // D_u, D_s, M_uu, M_ss, M_us, M_pp; a sun at the zenith or the
+            // nadir has no horizontal direction: symmetric about the vertical.
+            const double m0 = 4.0 * kPi * m[0], du = 4.0 * kPi * m[1], muu = 4.0 * kPi * m[3];
+            const bool axial = j == 0 || j == kMsCosines - 1;
+            const double ds = axial ? 0.0 : 4.0 * kPi * m[2];
+            const double mss = axial ? 0.5 * (m0 - muu) : 4.0 * kPi * m[4];
+            const double mus = axial ? 0.0 : 4.0 * kPi * m[5];
+            const double mpp = m0 - muu - mss;
+            const double out[kMsAniso] = {
+                du, ds, 1.5 * mpp - 0.5 * m0, 1.5 * (muu - mpp), 1.5 * (mss - mpp), 3.0 * mus};
+            for (int k = 0; k < kMsAniso; ++k) {
+                const double v = isotropic_ ? 0.0 : out[k];
+                aniso_[((std::size_t(row) * kMsCosines + j) * kMsAniso + k) * 3 + c] =
+                    std::isfinite(v) ? float(v) : 0.0f;
             }
         }
         fms_[std::size_t(row) * 3 + c] = fms;
@@ -425,7 +539,7 @@ void MultipleScatteringLut::buildOrderRow(int row, int order, MsScratch& s) {
     }
 }
 
-void MultipleScatteringLut::resample(const double* heights, int count, float* out) const {
+void MultipleScatteringLut::resample(const double* heights, int count, float* out, float* aniso) const {
     for (int k = 0; k < count; ++k) {
         const double h = heights[k];
         int i = 0;
@@ -437,10 +551,33 @@ void MultipleScatteringLut::resample(const double* heights, int count, float* ou
             for (int j = 0; j < kMsCosines; ++j) {
                 const double a = psi_[(std::size_t(i) * kMsCosines + j) * 3 + c];
                 const double b = psi_[((std::size_t(i) + 1) * kMsCosines + j) * 3 + c];
-                dst[j] = float(a + f * (b - a));
+                const double psi = std::max(a + f * (b - a), kMsPsiFloor);
+                dst[j] = float(-std::log(psi));
+                for (int n = 0; n < kMsAniso; ++n) {
+                    const double x = aniso_[((std::size_t(i) * kMsCosines + j) * kMsAniso + n) * 3 + c];
+                    const double y = aniso_[(((std::size_t(i) + 1) * kMsCosines + j) * kMsAniso + n) * 3 + c];
+                    aniso[(std::size_t(n * 3 + c) * count + k) * kMsCosines + std::size_t(j)] =
+                        float(std::clamp((x + f * (y - x)) / psi, -kMsAnisoRatio, kMsAnisoRatio));
+                }
             }
         }
     }
 }
 
 }  // namespace aerial::detail
+
+namespace aerial {
+
+MultipleScatteringTable SkySolver::multipleScatteringTable() const {
+    MultipleScatteringTable t;
+    if (!impl_->multiple) return t;
+    t.heightCount = detail::kMsRows;
+    t.cosineCount = detail::kMsCosines;
+    t.heights = impl_->ms.heights();
+    t.cosines.resize(std::size_t(detail::kMsCosines));
+    for (int j = 0; j < detail::kMsCosines; ++j) t.cosines[std::size_t(j)] = detail::msCosineOfColumn(j);
+    t.psi = impl_->ms.psi();
+    return t;
+}
+
+}  // namespace aerial

@@ -27,12 +27,40 @@
 // ground where the sun's zenith cosine is mu_g (from the ground row's upward
 // rays; Hillaire's ground term has the direct sun only, which left the
 // skylight's bounce out). Against the path tracer with isotropic phases
-// this is within 6% for suns from -2 to 90 deg (1.3x at -6 deg); more
-// explicit orders change it by under 1% (kMsLastOrder). What remains against
-// the real phases is their anisotropy (the LUT is isotropic): up to ~25% at
-// the horizon of a low sun. Psi_ms is a radiance per unit illuminance
+// this is within 8% for suns from -2 to 90 deg (1.3x at -6 deg before the
+// solver's lookups became geometric between columns, see resample); more
+// explicit orders change it by under 1% (kMsLastOrder). Psi_ms is a radiance per unit illuminance
 // [1/sr]; the sky's multiple scattering along a view ray is then
 // integral sigma_s T(viewer -> x) Psi_ms(h(x), mu_s(x)) ds (sky.hpp).
+//
+// The phases. Hillaire's LUT is isotropic twice over: the first scattering
+// (of the sun's light, in L') and the last (towards the viewer, P_u). Against
+// a path tracer with the real phases at the first scattering and isotropic
+// ones after it, that LUT was within 5% for suns from -2 deg up (0.12 at -6
+// deg), but against the real phases everywhere 0.11 at +2 deg and 0.13 at
+// -2 deg (the horizon opposite a low sun, blue): the anisotropy of the later
+// scatterings (made isotropic in the tracer for Rayleigh or for Mie alone,
+// each accounted for about half). So the second order has the real phases:
+//   L_1(omega)  = P_R(omega.sun) I_R(omega) + P_M(omega.sun) I_M(omega) + ground,
+//     I_X = integral beta_X rho_X T(x -> y) T(y -> sun) ds, the phases averaged
+//     over each quadrature cell (the Mie peak is narrower than a cell);
+//   J_2 = mean of L_1 over the sphere (Psi_ms's order 2, isotropic), and its
+//   view-dependent remainder as the Legendre series of the phases to l = 2
+//   (Funk-Hecke: the band l of L_1 is scaled by the phase's coefficient g_l):
+//     A_X(v) = integral (P_X(omega.v) - 1 / (4 pi)) L_1(omega) d omega
+//            ~ 3 g_X1 / (4 pi) D.v + 5 g_X2 / (4 pi) (3/2 v.M.v - 1/2 M_0),
+//     D = integral omega L_1, M = integral omega omega^T L_1, M_0 = trace M,
+//   g_R1 = 0, g_R2 = 1/10 (Rayleigh exactly), g_M1, g_M2 of Cornette-Shanks
+//   (numerically). In the point's frame (up u, the sun's horizontal s, and p)
+//   L_1 is symmetric about the (u, s) plane, so A_X needs six numbers per
+//   height, sun cosine and channel (aniso_, resample): D_u, D_s and
+//   B_0 = 3/2 M_pp - 1/2 M_0, B_u = 3/2 (M_uu - M_pp), B_s = 3/2 (M_ss - M_pp),
+//   B_us = 3 M_us, with
+//     3/2 v.M.v - 1/2 M_0 = B_0 + B_u v_u^2 + B_s v_s^2 + B_us v_u v_s.
+//   The sky solver adds sigma_R A_R(v) + sigma_M A_M(v) to sigma_s Psi_ms
+//   along each view ray (sky_kernels.cpp, shellAniso). The third and higher
+//   orders stay isotropic (from J_2). setAtmosphere's `isotropic` restores
+//   Hillaire's phases (validation against the isotropic tracer).
 //
 // Discretisation (documented in <aerial/sky.hpp>):
 //  * rows: kMsRows heights, the shells of kMsLayers equal-mass layers from
@@ -66,6 +94,7 @@
 
 #include <aerial/atmosphere.hpp>
 
+#include <cmath>
 #include <vector>
 
 namespace aerial::detail {
@@ -81,6 +110,10 @@ inline constexpr double kMsAzimuthPower = 1.5;  // phi = pi u^1.5
 inline constexpr int kMsCombos = kMsCosines * kMsAzimuths;  // per crossing, a multiple of 16
 inline constexpr int kMsMaxCrossings = 2 * kMsLayers + 2;
 inline constexpr int kMsLastOrder = 3;  // orders 2..kMsLastOrder explicit, the rest the geometric tail
+inline constexpr int kMsAniso = 6;      // D_u, D_s, B_0, B_u, B_s, B_us (the phases, above)
+inline constexpr int kMsPhaseSubsamples = 8;    // per cell side, for the cell-averaged phases
+inline constexpr double kMsPsiFloor = 1e-30;    // 1/sr, below any sky that shows (resample)
+inline constexpr double kMsAnisoRatio = 100.0;  // |A_n / Psi| at most (resample)
 
 /// A quadrature node: a zenith cosine or an azimuth [rad], and its weight.
 struct MsNode {
@@ -102,8 +135,9 @@ struct MsScratch {
     std::vector<int> shell;                         // [kMsMaxCrossings]
     std::vector<float> nodeS, nodeR, nodeM, nodeO;  // [4 kMsMaxCrossings]
     std::vector<float> records;                     // [2][7][kMsCombos]
-    std::vector<float> acc;                         // [3][kMsCombos] in-scattering
-    std::vector<double> ground;                     // [3][kMsCombos] the ground's share
+    std::vector<float> acc, accMie;                 // [3][kMsCombos] one ray's I_R, I_M
+    std::vector<double> ground;                     // [3][kMsCombos] one ray's ground share
+    std::vector<double> moment;                     // [kMsAniso + 1][3][kMsCombos] of L_1 (sums)
     std::vector<float> source;                      // [3][3][kMsCombos] J_n at two crossings and the start
     std::vector<float> orderAcc;                    // [3][kMsCombos]
     std::vector<int> column;                        // [kMsCombos] LUT column of a crossing
@@ -118,17 +152,30 @@ class MultipleScatteringLut {
 public:
     MultipleScatteringLut();
 
-    /// New (sanitized) atmosphere: the shells and row constants.
-    void setAtmosphere(const AtmosphereParams& air);
+    /// New (sanitized) atmosphere: the shells, row constants and phases;
+    /// `isotropic`: Hillaire's isotropic phases (no anisotropic remainder).
+    void setAtmosphere(const AtmosphereParams& air, bool isotropic = false);
     /// Row `row` (0..kMsRows-1) of the optical-depth table.
     void buildDepthRow(int row, MsScratch& s);
     /// Row `row` of scattering order `order` (2..kMsLastOrder): order 2 (and
     /// f_ms) needs every optical-depth row, a higher one every row of the
     /// order before; the last order completes Psi_ms's row.
     void buildOrderRow(int row, int order, MsScratch& s);
-    /// Psi_ms at `count` heights [m] (linear in height between rows), as
-    /// out[c][k][kMsCosines].
-    void resample(const double* heights, int count, float* out) const;
+    /// Psi_ms at `count` heights [m] (linear in height between rows) for the
+    /// sky solver's kernel, which interpolates it geometrically between the
+    /// sun-cosine columns (in twilight Psi falls about exponentially with the
+    /// sun's depression, and linear interpolation over-estimated it by up to
+    /// 1.3x between columns 1.2 deg apart): out[c][k][kMsCosines] = -ln Psi
+    /// (Psi floored at kMsPsiFloor), and the anisotropy relative to Psi,
+    /// aniso[n * 3 + c][k][kMsCosines] = A_n / Psi (clamped to +-kMsAnisoRatio).
+    void resample(const double* heights, int count, float* out, float* aniso) const;
+    /// Whether the anisotropic remainder is in use (not isotropic, see setAtmosphere).
+    bool anisotropic() const { return !isotropic_; }
+    /// The Legendre coefficients 3 g_1 / (4 pi) and 5 g_2 / (4 pi) of Rayleigh
+    /// (r1 = 0) and Mie: A_X = r1 D.v + r2 (B_0 + ...), see above.
+    double rayleighBand2() const { return isotropic_ ? 0.0 : 5.0 * 0.1 / (4.0 * kPi); }
+    double mieBand1() const { return isotropic_ ? 0.0 : 3.0 * mieG1_ / (4.0 * kPi); }
+    double mieBand2() const { return isotropic_ ? 0.0 : 5.0 * mieG2_ / (4.0 * kPi); }
 
     const std::vector<double>& heights() const { return height_; }
     /// Psi_ms [1/sr], RGB per entry, (row * kMsCosines + column) * 3.
@@ -139,7 +186,9 @@ private:
     int rayCrossings(int row, double cosT, MsScratch& s, bool& hitsGround) const;
     void rayTransfer(int row, double cosT, MsScratch& s, double out[3], double endT[3],
                      bool& hitsGround) const;
-    void segmentDepths(int i, const MsScratch& s, double scatter[3], double tau[3]) const;
+    void segmentDepths(int i, const MsScratch& s, double scatter[3], double tau[3],
+                       double* mieScatter = nullptr) const;
+    void buildPhases();
 
     AtmosphereParams air_;
     MsScratch groundScratch_;
@@ -155,6 +204,11 @@ private:
     std::vector<double> sum_;             // J_2 + .. J_n [kMsRows][kMsCosines][3]
     std::vector<double> fms_;             // [kMsRows][3]
     std::vector<double> groundSky_;       // E_1 at the ground [kMsCosines][3]
+    bool isotropic_ = false;
+    double phaseG_ = NAN;                 // the Mie g of phaseM_
+    double mieG1_ = 0.0, mieG2_ = 0.0;    // Cornette-Shanks' Legendre coefficients
+    std::vector<float> phaseR_, phaseM_;  // cell-averaged first phases [kMsZeniths][kMsCombos]
+    std::vector<float> aniso_;            // [kMsRows][kMsCosines][kMsAniso][3]
 };
 
 }  // namespace aerial::detail

@@ -167,6 +167,7 @@ SkySolver::Impl::Impl(const SkySolverDesc& d) : desc(d) {
     }
     multiple = !desc.singleScatteringOnly;
     psiShell.assign(std::size_t(3) * (layers + 1) * kMsCosines, 0.0f);
+    anisoShell.assign(std::size_t(kMsAniso) * 3 * (layers + 1) * kMsCosines, 0.0f);
     scratch.resize(std::size_t(desc.threadCount));
     for (Scratch& s : scratch) {
         s.crossing.assign(std::size_t(layers) + 1, 0.0);
@@ -179,6 +180,7 @@ SkySolver::Impl::Impl(const SkySolverDesc& d) : desc(d) {
         s.shadowIn.assign(std::size_t(paddedColumns), -1.0f);  // padding stays unshadowed
         s.shadowOut.assign(std::size_t(paddedColumns), -1.0f);
         s.acc.assign(std::size_t(9) * paddedColumns, 0.0f);
+        s.anisoPoly.assign(std::size_t(9) * kMsCosines, 0.0f);
         const std::size_t pieces = std::size_t(2) * paddedColumns;
         s.edgeCrossing.assign(std::size_t(layers) + 1, 0.0f);
         s.edgeTauStart.assign(3 * pieces, 0.0f);
@@ -228,7 +230,7 @@ void SkySolver::Impl::run(bool rebuild, int rowBegin, int rowEnd) {
             while (ready.load(std::memory_order_acquire) < std::max(order - 2, 1) * msRows) std::this_thread::yield();
             ms.buildOrderRow(index % msRows, order, msScratch[std::size_t(worker)]);
             if (psiRowsDone.fetch_add(1, std::memory_order_acq_rel) + 1 == orderItems) {
-                ms.resample(shellHeight.data(), layers + 1, psiShell.data());
+                ms.resample(shellHeight.data(), layers + 1, psiShell.data(), anisoShell.data());
                 psiReady.store(true, std::memory_order_release);
             }
             return;
@@ -321,7 +323,6 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
         const double mass[2] = {s.mass[std::size_t(3 * l)], s.mass[std::size_t(3 * l + 1)]};
         const float* profile[2] = {&s.nodeR[std::size_t(4 * l)], &s.nodeM[std::size_t(4 * l)]};
         for (int c = 0; c < 3; ++c) {
-            double msA = 0.0, msB = 0.0;  // multiple scattering: sigma_s T weights of Psi at a and b
             const std::size_t at = std::size_t(3 * l + c);
             const double tau = s.layerDepth[at];
             const double layerT = s.layerT[at];
@@ -344,11 +345,9 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
                 const double wA = total * (1.0 - centroid), wB = total * centroid;
                 lc.p[3 * p + c] = float(4.0 * wA - 2.0 * wB);
                 lc.q[3 * p + c] = float(6.0 * (wB - wA));
-                msA += wA;
-                msB += wB;
+                lc.msA[3 * p + c] = float(wA);  // multiple scattering: sigma_X T weights at a and b
+                lc.msB[3 * p + c] = float(wB);
             }
-            lc.msA[c] = float(msA);
-            lc.msB[c] = float(msB);
             viewT[c] *= layerT;
         }
         lc.curvature = layerCurvature[std::size_t(l)];
@@ -360,6 +359,7 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
         const double rb = rg + shellHeight[std::size_t(l) + 1];
         lc.alpha = float((r0 * sinL + b * sinEl * sinL) / rb);
         lc.beta = float(b * cosEl * cosL / rb);
+        lc.viewUp = float((r0 * sinEl + b) / rb);
         lc.horizonCos = horizonCos[std::size_t(l) + 1];
         lc.angleScale = angleScale[std::size_t(l) + 1];
     }
@@ -431,6 +431,14 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
     k.depth = depth.data();
     k.psi = multiple ? psiShell.data() : nullptr;
     k.psiCosines = kMsCosines;
+    k.aniso = multiple && ms.anisotropic() ? anisoShell.data() : nullptr;
+    k.anisoPoly = s.anisoPoly.data();
+    k.viewUp0 = float(sinEl);
+    k.nuA = float(sinEl * sinL);
+    k.nuB = float(cosEl * cosL);
+    k.rayleighBand2 = float(ms.rayleighBand2());
+    k.mieBand1 = float(ms.mieBand1());
+    k.mieBand2 = float(ms.mieBand2());
     k.shells = s.shells.data();
     k.acc = s.acc.data();
     skyKernel(k);
@@ -589,7 +597,7 @@ void SkySolver::Impl::setAtmosphere(const AtmosphereParams& params) {
     }
     cacheValid = false;
     buildLayers();
-    if (multiple) ms.setAtmosphere(air);
+    if (multiple) ms.setAtmosphere(air, desc.isotropicMultipleScattering);
     depthPending = true;
 }
 
@@ -683,17 +691,5 @@ const SkyTable& SkySolver::table() const { return impl_->tables[impl_->front]; }
 const SkySolverDesc& SkySolver::desc() const { return impl_->desc; }
 
 void SkySolver::invalidateCache() { impl_->cacheValid = false; }
-
-MultipleScatteringTable SkySolver::multipleScatteringTable() const {
-    MultipleScatteringTable t;
-    if (!impl_->multiple) return t;
-    t.heightCount = kMsRows;
-    t.cosineCount = kMsCosines;
-    t.heights = impl_->ms.heights();
-    t.cosines.resize(std::size_t(kMsCosines));
-    for (int j = 0; j < kMsCosines; ++j) t.cosines[std::size_t(j)] = msCosineOfColumn(j);
-    t.psi = impl_->ms.psi();
-    return t;
-}
 
 }  // namespace aerial

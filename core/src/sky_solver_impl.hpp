@@ -27,6 +27,7 @@ struct SkySolver::Impl {
         std::vector<float> shells;                              // [kShellSlots][kShellRecord][padded columns]
         std::vector<float> shadowIn, shadowOut;                 // [padded columns]
         std::vector<float> acc;                                 // [9 padded columns]
+        std::vector<float> anisoPoly;                           // [9][kMsCosines] shellAniso's scratch
         // Lit pieces of the layers cut by a shadow edge (shadowEdgeLayers), at most 2 per column.
         std::vector<float> edgeCrossing;              // [layers + 1]
         std::vector<float> edgeTauStart, edgeTauEnd;  // [3][2 padded columns]
@@ -54,7 +55,8 @@ struct SkySolver::Impl {
     // Multiple scattering (sky_multiple.hpp): the LUT and Psi_ms at the shells.
     bool multiple = true;
     detail::MultipleScatteringLut ms;
-    std::vector<float> psiShell;  // [3][layers + 1][kMsCosines]
+    std::vector<float> psiShell;    // [3][layers + 1][kMsCosines]
+    std::vector<float> anisoShell;  // [kMsAniso * 3][layers + 1][kMsCosines]
 
     // Light-dependent state.
     glm::dvec3 light{0.0, 1.0, 0.0};

@@ -41,19 +41,23 @@ bool quick() { return test::quickRun(); }
 
 struct SunCase {
     double elevation;
-    double tolerance;  // measured worst (512 paths) plus margin, see the file comment and the report
+    double tolerance;  // measured worst (2048 paths) plus margin, see below
 };
 
-// The tolerances are regression bounds, not the goal of 5%: the LUT's
-// isotropic orders (sky_multiple.hpp) miss the phase functions' anisotropy,
-// which leaves the horizon of a low sun up to ~25% off (see the printed
-// table; tests/support/ms_reference.hpp), and 2048 paths still carry up to
-// ~10% of Monte Carlo noise in twilight. At sun 0 the probe (0, 180) lies
-// exactly on the earth's shadow (the light grazes the ground at the viewer),
-// where the exact single scattering is a knife edge: 0 just below, twice
-// the probed value just above.
-const SunCase kSuns[] = {{-6.0, 0.50}, {-2.0, 0.30}, {0.0, 0.35}, {2.0, 0.14},
-                         {10.0, 0.10}, {30.0, 0.07}, {90.0, 0.06}};
+// The tolerances are regression bounds at the measured level (2048 paths,
+// this seed: -6: 0.39, -2: 0.135, 0: 0.069, +2: 0.065, +10: 0.032, +30: 0.019,
+// +90: 0.021) with the noise as margin, not the goal of 5%: with the real
+// phases in the second order (sky_multiple.hpp, "The phases") the orders
+// from the third on are still isotropic and the first's moments stop at l = 2,
+// and 2048 paths still carry up to ~15% of Monte Carlo noise at the horizon
+// in twilight (the same comparison with 16384 paths is in the report). They
+// were 0.50, 0.30, 0.35, 0.14, 0.10, 0.07 and 0.06 with the isotropic LUT.
+// At sun 0 the probe (0, 180) lies exactly on the earth's shadow (the light
+// grazes the ground at the viewer), where the exact single scattering is a
+// knife edge (0 just below, twice the probed value just above): left out
+// there, as in test_sky's off-texel probes.
+const SunCase kSuns[] = {{-6.0, 0.45}, {-2.0, 0.20}, {0.0, 0.10}, {2.0, 0.09},
+                         {10.0, 0.05}, {30.0, 0.04}, {90.0, 0.04}};
 
 TEST(SkyMultiple, TotalRadianceAgainstPathTracer) {
     const AtmosphereParams air;
@@ -79,6 +83,7 @@ TEST(SkyMultiple, TotalRadianceAgainstPathTracer) {
         for (double el : {0.0, 2.0, 10.0, 45.0, 90.0}) {
             for (double az : {0.0, 90.0, 180.0}) {
                 if (el == 90.0 && az > 0.0) continue;
+                if (sun.elevation == 0.0 && el == 0.0 && az == 180.0) continue;  // the knife edge (above)
                 const glm::dvec3 v = direction(el, az);
                 Probe p{el, az, skyRadiance(solver.table(), air.mieAnisotropy, v, glm::dvec3(1.0)),
                         glm::dvec3(0.0), glm::dvec3(0.0)};
@@ -118,12 +123,17 @@ TEST(SkyMultiple, TotalRadianceAgainstPathTracer) {
 // match the path tracer's orders >= 2 direction by direction. Hillaire's
 // local geometric series alone came out 0.67-0.93 at sun 0 (fails here) and
 // 0.96-1.00 at the zenith sun (8192 paths); with the explicit orders the
-// measured band is 0.93-1.07 over these suns. Within 10%: the quadrature
-// (96 directions, 24 layers, 64 sun cosines) and 4096 paths' noise.
+// measured band is 0.92-1.07 over these suns. Within 10%: the quadrature
+// (96 directions, 24 layers, 64 sun cosines) and 4096 paths' noise. The
+// solver's LUT runs with Hillaire's isotropic phases here
+// (SkySolverDesc::isotropicMultipleScattering), as the tracer; with the real
+// phases its second order is view-dependent, up to 1.7x off this tracer.
 TEST(SkyMultiple, IsotropicOrdersAgainstPathTracer) {
     const AtmosphereParams air;
     const reference::MultipleScatteringTracer tracer(air, reference::MultipleScatteringTracer::Phase::Isotropic);
-    SkySolver solver;
+    SkySolverDesc isotropic;  // the LUT with Hillaire's isotropic phases, as the tracer
+    isotropic.isotropicMultipleScattering = true;
+    SkySolver solver(isotropic);
     for (double sunElevation : {-2.0, 0.0, 10.0, 90.0}) {
         if (quick() && sunElevation != 10.0) continue;
         const glm::dvec3 light = direction(sunElevation, 0.0);

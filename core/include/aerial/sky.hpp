@@ -17,9 +17,10 @@
 // the upper hemisphere the two phase-less single-scattering integrals
 //   I_R(v) = integral beta_R(h(s)) T(viewer -> x(s)) T(x(s) -> light) ds
 //   I_M(v) = integral beta_M(h(s)) T(viewer -> x(s)) T(x(s) -> light) ds
-// (RGB each, dimensionless) and the multiple scattering, already isotropic,
-//   I_ms(v) = integral (beta_R + beta_M)(h(s)) T(viewer -> x(s)) Psi_ms(h(x), mu_s(x)) ds
-// (RGB, [1/sr]), so that the radiance is
+// (RGB each, dimensionless) and the multiple scattering, its phases applied,
+//   I_ms(v) = integral T(viewer -> x(s)) [(beta_R + beta_M)(h) Psi_ms(h, mu_s)
+//                                         + beta_R(h) A_R(v) + beta_M(h) A_M(v)] ds
+// (RGB, [1/sr]; h, mu_s and the A_X at x(s)), so that the radiance is
 //   L(v) = E * (P_R(mu) I_R(v) + P_M(mu) I_M(v) + I_ms(v)),  mu = dot(v, light),
 // with the phase functions applied per pixel. The single-scattering channels
 // do not depend on the multiple scattering (they stay checkable against
@@ -29,7 +30,7 @@
 // and Atmosphere Rendering Technique", section 5.5, eq. 5-10, with its
 // third order made explicit): Psi_ms(h, mu_s) is the radiance per unit sun
 // illuminance [1/sr] that all orders >= 2 add at height h for a sun of
-// zenith cosine mu_s, assuming isotropic scattering from the second order on:
+// zenith cosine mu_s, its isotropic part:
 //   Psi_ms = J_2 + J_3 + J_3 f_ms / (1 - f_ms),
 // J_2 = Hillaire's L_2nd, the second order from 96 directions crowded at
 // the horizon and towards the sun (Hillaire: 64 uniform ones, which miss the
@@ -42,14 +43,24 @@
 // in-scattering) gives the geometric tail of the rest. Hillaire's
 // L_2nd / (1 - f_ms) takes every higher order from the point's own
 // neighbourhood, which under-estimated the horizon of a low sun by a third
-// (details and measurements: core/src/sky_multiple.hpp). The LUT
+// (details and measurements: core/src/sky_multiple.hpp). The second order
+// has the real phases: Rayleigh's and Mie's at the first scattering
+// (averaged over each direction's quadrature cell), and at the last, towards
+// the viewer, the view-dependent remainder A_X(v) = integral (P_X(omega.v) -
+// 1/(4 pi)) L_1(omega) d omega of each scatterer X, from the dipole and
+// quadrupole moments of the once-scattered light L_1 at each height and sun
+// cosine (Legendre series of the phases to l = 2: exact for Rayleigh, the
+// smooth part of Mie's peak). Hillaire's isotropic phases left the horizon
+// opposite a low sun 7-13% too dark against the path tracer (sun -2 to +10
+// deg); the orders from the third on stay isotropic. The LUT
 // (MultipleScatteringTable) has 25 heights (the shells of 24 equal-mass
 // layers from the ground to the top) x 64 sun cosines (mu = sign(x) x^2, x
 // uniform in [-1, 1]: dense near the horizon). It depends only on the
 // atmosphere and is cached with the optical-depth table. Along a view ray it
 // is taken at each shell (height of the shell, the sun's zenith cosine where
-// the ray crosses it), linear within a layer, times the layer's exact
-// integral of beta_s T(viewer -> s).
+// the ray crosses it; geometric between the LUT's sun-cosine columns, as
+// Psi falls about exponentially with the sun's depression in twilight),
+// linear within a layer, times the layer's exact integral of beta_X T(viewer -> s).
 //
 // Table mapping (the one contract between the solver and every sampler):
 //   * rows j = 0..elevationCount-1 hold the elevation el_j with
@@ -145,6 +156,11 @@ struct SkySolverDesc {
     /// True: no multiple scattering (SkyTable::multiple stays 0, no LUT is
     /// built); for comparisons and benchmarks. Default false.
     bool singleScatteringOnly = false;
+    /// True: the multiple-scattering LUT with Hillaire's isotropic phases
+    /// (no phase at the first scattering, no view dependence of the second
+    /// order); for validation against a path tracer with isotropic phases.
+    /// Default false: the real phases (sky.hpp, "Multiple scattering").
+    bool isotropicMultipleScattering = false;
 };
 
 /// The multiple-scattering LUT Psi_ms (Hillaire 2020, eq. 10) of the cached
@@ -164,7 +180,7 @@ struct SkyTable {
     int elevationCount = 0;
     std::vector<float> rayleigh;  ///< I_R, RGB per texel (see mapping above)
     std::vector<float> mie;       ///< I_M, RGB per texel
-    std::vector<float> multiple;  ///< I_ms [1/sr], RGB per texel (isotropic: no phase to apply)
+    std::vector<float> multiple;  ///< I_ms [1/sr], RGB per texel (phases applied: none to apply)
     /// Average of the horizon row(s): the colour of far fog is
     /// E * (P_R(mu) horizonRayleigh + P_M(mu) horizonMie + horizonMultiple).
     glm::dvec3 horizonRayleigh{0.0};
@@ -240,8 +256,8 @@ glm::dvec3 horizonFogRadiance(const SkyTable& table, double mieAnisotropy, const
 /// The Nishita 1993 solver: a 2D optical-depth table (height x light zenith
 /// angle, Rayleigh, Mie and ozone) and integration over exponentially
 /// distributed layers along each view ray, plus Hillaire 2020 multiple
-/// scattering with an explicit third order (the Psi_ms LUT, built with the
-/// optical-depth table). Multithreaded (threads made once,
+/// scattering with an explicit third order and the phases in the second (the
+/// Psi_ms LUT, built with the optical-depth table). Multithreaded (threads made once,
 /// in the constructor); allocates nothing per solve. Single-threaded,
 /// multi-threaded and amortised solves give bit-identical tables. The
 /// optical-depth table and the Psi_ms LUT are kept while the AtmosphereParams stay bitwise equal,
