@@ -262,11 +262,12 @@ AERIAL_INLINE void skyLayer(
 /// Psi_ms at one shell for every column: the light's zenith cosine
 /// alpha + beta cos(phi) -> LUT column x = sign(mu) sqrt|mu|,
 /// u = (x + 1) / 2 (n - 1) (sky_multiple.hpp) -> interpolation of -ln Psi
-/// (MultipleScatteringLut::resample: geometric in Psi).
+/// (MultipleScatteringLut::resample: geometric in Psi); the column u of
+/// each sky column into `column` (shellAniso's lookups).
 AERIAL_INLINE void shellPsi(int nc, float alpha, float beta, int n, const float* __restrict psi0,
                             const float* __restrict psi1, const float* __restrict psi2,
                             const float* __restrict cosPhi, float* __restrict out0, float* __restrict out1,
-                            float* __restrict out2) {
+                            float* __restrict out2, float* __restrict column) {
     const float scale = 0.5f * float(n - 1);
     const float maxU = float(n - 1) - 1e-3f;
     for (int i = 0; i < nc; ++i) {
@@ -275,6 +276,7 @@ AERIAL_INLINE void shellPsi(int nc, float alpha, float beta, int n, const float*
         const float x = std::bit_cast<float>(std::bit_cast<int>(root) |
                                              (std::bit_cast<int>(mu) & static_cast<int>(0x80000000u)));
         const float u = minNonNegative(maxZero((x + 1.0f) * scale), maxU);
+        column[i] = u;
         const int iu = static_cast<int>(u);
         const float f = u - float(iu);
         out0[i] = expNeg(psi0[iu] + f * (psi0[iu + 1] - psi0[iu]));
@@ -295,15 +297,14 @@ AERIAL_INLINE void shellPsi(int nc, float alpha, float beta, int n, const float*
 /// v_s = (v.l - v_u mu) / sqrt(1 - mu^2) its component along the light's
 /// horizontal. Per LUT column that is a polynomial p0 + p1 v_s + p2 v_s^2
 /// (`poly`: [3 channels][3][n] scratch), interpolated at each column's light
-/// cosine as in shellPsi; `psi` is shellPsi's output ([3][nc]), `column` and
-/// `across` [nc] scratch, `aniso` the shell's first plane, planes `stride` apart.
+/// cosine at shellPsi's LUT column (`column`, [nc]); `psi` is shellPsi's
+/// output ([3][nc]), `across` [nc] scratch, `aniso` the shell's first plane,
+/// planes `stride` apart.
 AERIAL_INLINE void shellAniso(int nc, float alpha, float beta, int n, const float* __restrict aniso,
                               std::size_t stride, float viewUp, float nuA, float nuB, const float kq[3],
                               const float kd[3], const float* __restrict cosPhi, const float* __restrict psi,
-                              float* __restrict poly, float* __restrict column, float* __restrict across,
-                              float* __restrict acc) {
-    const float scale = 0.5f * float(n - 1);
-    const float maxU = float(n - 1) - 1e-3f;
+                              float* __restrict poly, const float* __restrict column,
+                              float* __restrict across, float* __restrict acc) {
     const float vu = viewUp, vu2 = viewUp * viewUp;
     for (int c = 0; c < 3; ++c) {
         const float* __restrict du = aniso + std::size_t(c) * stride;
@@ -324,10 +325,6 @@ AERIAL_INLINE void shellAniso(int nc, float alpha, float beta, int n, const floa
     const float vsMax = fastSqrt(maxZero(1.0f - vu2) + 1e-30f);
     for (int i = 0; i < nc; ++i) {
         const float mu = alpha + beta * cosPhi[i];
-        const float root = fastSqrt(minNonNegative(std::abs(mu), 1.0f) + 1e-30f);
-        const float x = std::bit_cast<float>(std::bit_cast<int>(root) |
-                                             (std::bit_cast<int>(mu) & static_cast<int>(0x80000000u)));
-        column[i] = minNonNegative(maxZero((x + 1.0f) * scale), maxU);
         const float sinS = fastSqrt(maxZero(1.0f - mu * mu) + 1e-8f);
         const float vs = (nuA + nuB * cosPhi[i] - vu * mu) / sinS;
         across[i] = vs < -vsMax ? -vsMax : (vs > vsMax ? vsMax : vs);
@@ -409,7 +406,8 @@ AERIAL_INLINE void lightAtShell(const SkyKernelArgs& a, int j, float maxU) {
         const float* p0 = a.psi + std::size_t(j) * n;
         const float* p1 = a.psi + (rows + std::size_t(j)) * n;
         const float* p2 = a.psi + (2 * rows + std::size_t(j)) * n;
-        shellPsi(nc, alpha, beta, n, p0, p1, p2, a.cosPhi, r + 10 * nc, r + 11 * nc, r + 12 * nc);
+        shellPsi(nc, alpha, beta, n, p0, p1, p2, a.cosPhi, r + 10 * nc, r + 11 * nc, r + 12 * nc,
+                 r + 13 * nc);
         // The anisotropy at every kAnisoShellStride-th shell (and the last)
         // only, each also with its share of the skipped shells' weights
         // (linear between the evaluated ones): A_X, a correction of a few tens

@@ -101,7 +101,7 @@ struct LayerConstants {
 };
 
 /// Floats per column of a shell record (skyShell: 10; shellPsi: 3 more;
-/// shellAniso: 2 of scratch).
+/// the LUT column of shellPsi and shellAniso's scratch).
 constexpr int kShellRecord = 15;
 /// The second order's anisotropy is evaluated at every this many shells (skyKernel).
 constexpr int kAnisoShellStride = 4;

@@ -27,21 +27,32 @@ double transferFactor(double tau) { return tau < 1e-4 ? 1.0 - 0.5 * tau : -std::
 
 }  // namespace
 
-MsNode msZenithNode(int z) {
-    // x: midpoints in (-1, 1); cos theta = sign(x) |x|^p, weight = (1/2) d(cos theta) = (p/2) |x|^(p-1) dx.
+namespace {
+
+/// The zenith mapping at cell position t (node z's midpoint: t = z + 0.5):
+/// x = -1 + t dx in (-1, 1), cos theta = sign(x) |x|^p (from +1 down), and
+/// the weight (1/2) d(cos theta) = (p/2) |x|^(p-1) dx of a whole cell there.
+MsNode zenithAt(double t) {
     const double dx = 2.0 / kMsZeniths;
-    const double x = -1.0 + (z + 0.5) * dx;
+    const double x = -1.0 + t * dx;
     const double ax = std::abs(x);
     return {-(x < 0.0 ? -1.0 : 1.0) * std::pow(ax, kMsZenithPower),
             0.5 * kMsZenithPower * std::pow(ax, kMsZenithPower - 1.0) * dx};
 }
 
-MsNode msAzimuthNode(int a) {
-    // u: midpoints in (0, 1); phi = pi u^q, weight = d(phi) / pi = q u^(q-1) du.
+/// The azimuth mapping at cell position t: u = t du in (0, 1), phi = pi u^q,
+/// and the weight d(phi) / pi = q u^(q-1) du of a whole cell there.
+MsNode azimuthAt(double t) {
     const double du = 1.0 / kMsAzimuths;
-    const double u = (a + 0.5) * du;
+    const double u = t * du;
     return {kPi * std::pow(u, kMsAzimuthPower), kMsAzimuthPower * std::pow(u, kMsAzimuthPower - 1.0) * du};
 }
+
+}  // namespace
+
+MsNode msZenithNode(int z) { return zenithAt(z + 0.5); }
+
+MsNode msAzimuthNode(int a) { return azimuthAt(a + 0.5); }
 
 double msCosineOfColumn(int column) {
     const double x = -1.0 + 2.0 * column / (kMsCosines - 1);
@@ -146,23 +157,23 @@ void MultipleScatteringLut::buildPhases() {
         mieG1_ += w * mu;
         mieG2_ += w * (1.5 * mu * mu - 0.5);
     }
-    // The cells' sub-samples: zenith (cos, sin, Jacobian) and azimuth (cos, Jacobian).
+    // The cells' sub-samples (the nodes' own mappings): zenith (cos, sin,
+    // Jacobian) and azimuth (cos, Jacobian).
     constexpr int n = kMsPhaseSubsamples;
-    const double dx = 2.0 / kMsZeniths, du = 1.0 / kMsAzimuths;
     double zc[kMsZeniths][n], zs[kMsZeniths][n], zw[kMsZeniths][n], ac[kMsAzimuths][n], aw[kMsAzimuths][n];
     for (int z = 0; z < kMsZeniths; ++z) {
         for (int i = 0; i < n; ++i) {
-            const double x = -1.0 + (z + (i + 0.5) / n) * dx, ax = std::abs(x);
-            zc[z][i] = -(x < 0.0 ? -1.0 : 1.0) * std::pow(ax, kMsZenithPower);
-            zs[z][i] = std::sqrt(std::max(1.0 - zc[z][i] * zc[z][i], 0.0));
-            zw[z][i] = std::pow(ax, kMsZenithPower - 1.0);
+            const MsNode at = zenithAt(z + (i + 0.5) / n);
+            zc[z][i] = at.angle;
+            zs[z][i] = std::sqrt(std::max(1.0 - at.angle * at.angle, 0.0));
+            zw[z][i] = at.weight;
         }
     }
     for (int a = 0; a < kMsAzimuths; ++a) {
         for (int i = 0; i < n; ++i) {
-            const double u = (a + (i + 0.5) / n) * du;
-            ac[a][i] = std::cos(kPi * std::pow(u, kMsAzimuthPower));
-            aw[a][i] = std::pow(u, kMsAzimuthPower - 1.0);
+            const MsNode at = azimuthAt(a + (i + 0.5) / n);
+            ac[a][i] = std::cos(at.angle);
+            aw[a][i] = at.weight;
         }
     }
     for (int z = 0; z < kMsZeniths; ++z) {
