@@ -284,6 +284,43 @@ void MultipleScatteringLut::segmentDepths(int i, const MsScratch& s, double scat
     }
 }
 
+// The moments of the in-scattered field L (sums over the quadrature in
+// s.moment, planes 1, cos, sin, cos^2, sin^2, cos sin of the ray's zenith
+// angle, each times the ray's zenith weight) at row `row`, channel c, sun
+// column j: the means over the sphere (the weights sum to 1 in zenith and in
+// azimuth; each azimuth stands for itself and its mirror) and the integrals
+// (4 pi times the means) turned into D_u, D_s, B_0, B_u, B_s, B_us (above),
+// stored into aniso_ or, with `add`, added to it. Returns the mean of L.
+double MultipleScatteringLut::storeMoments(int row, int c, int j, const MsScratch& s, bool add,
+                                           double scale) {
+    const std::size_t channel = std::size_t(3) * kMsCombos;  // one moment plane
+    double m[kMsAniso] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    for (int a = 0; a < kMsAzimuths; ++a) {
+        const MsNode az = msAzimuthNode(a);
+        const double cp = std::cos(az.angle);
+        const double factor[kMsAniso] = {1.0, 1.0, cp, 1.0, cp * cp, cp};
+        const std::size_t at = std::size_t(c * kMsCombos + j * kMsAzimuths + a);
+        for (int k = 0; k < kMsAniso; ++k)
+            m[k] += az.weight * factor[k] * s.moment[std::size_t(k) * channel + at];
+    }
+    // D_u, D_s, M_uu, M_ss, M_us, M_pp; a sun at the zenith or the nadir has
+    // no horizontal direction: symmetric about the vertical.
+    const double m0 = 4.0 * kPi * m[0], du = 4.0 * kPi * m[1], muu = 4.0 * kPi * m[3];
+    const bool axial = j == 0 || j == kMsCosines - 1;
+    const double ds = axial ? 0.0 : 4.0 * kPi * m[2];
+    const double mss = axial ? 0.5 * (m0 - muu) : 4.0 * kPi * m[4];
+    const double mus = axial ? 0.0 : 4.0 * kPi * m[5];
+    const double mpp = m0 - muu - mss;
+    const double out[kMsAniso] = {du,       ds, 1.5 * mpp - 0.5 * m0, 1.5 * (muu - mpp), 1.5 * (mss - mpp),
+                                  3.0 * mus};
+    for (int k = 0; k < kMsAniso; ++k) {
+        const double v = isotropic_ || !std::isfinite(out[k]) ? 0.0 : scale * out[k];
+        float& dst = aniso_[((std::size_t(row) * kMsCosines + j) * kMsAniso + k) * 3 + c];
+        dst = add ? dst + float(v) : float(v);
+    }
+    return std::isfinite(m[0]) ? m[0] : 0.0;
+}
+
 void MultipleScatteringLut::buildSecondOrderRow(int row, MsScratch& s) {
     const double rg = air_.planetRadius;
     const double hk = height_[std::size_t(row)];
@@ -389,43 +426,17 @@ void MultipleScatteringLut::buildSecondOrderRow(int row, MsScratch& s) {
         }
     }
 
-    // Means over the sphere (the weights sum to 1 in zenith and in azimuth;
-    // each azimuth stands for itself and its mirror), and the moments
-    // (integrals over the sphere: 4 pi times the means).
+    // The sphere's mean of L_1 (J_2) per sun column, and its moments (aniso_).
     for (int c = 0; c < 3; ++c) {
         const double fms = std::clamp(transfer[c], 0.0, 0.999);
         for (int j = 0; j < kMsCosines; ++j) {
-            double m[kMsAniso] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-            for (int a = 0; a < kMsAzimuths; ++a) {
-                const MsNode az = msAzimuthNode(a);
-                const double cp = std::cos(az.angle);
-                const double factor[kMsAniso] = {1.0, 1.0, cp, 1.0, cp * cp, cp};
-                const std::size_t at = std::size_t(c * kMsCombos + j * kMsAzimuths + a);
-                for (int k = 0; k < kMsAniso; ++k)
-                    m[k] += az.weight * factor[k] * s.moment[std::size_t(k) * channel + at];
-            }
-            const double l2 = std::isfinite(m[0]) ? m[0] : 0.0;
+            const double l2 = storeMoments(row, c, j, s, false, 1.0);
             const std::size_t at = (std::size_t(row) * kMsCosines + j) * 3 + c;
             order_[0][at] = float(l2);
             sum_[at] = l2;
             if (kMsLastOrder == 2) {  // Hillaire's series from the second order on
                 const double value = l2 / (1.0 - fms);
                 psi_[at] = std::isfinite(value) ? float(value) : 0.0f;
-            }
-            // D_u, D_s, M_uu, M_ss, M_us, M_pp; a sun at the zenith or the
-            // nadir has no horizontal direction: symmetric about the vertical.
-            const double m0 = 4.0 * kPi * m[0], du = 4.0 * kPi * m[1], muu = 4.0 * kPi * m[3];
-            const bool axial = j == 0 || j == kMsCosines - 1;
-            const double ds = axial ? 0.0 : 4.0 * kPi * m[2];
-            const double mss = axial ? 0.5 * (m0 - muu) : 4.0 * kPi * m[4];
-            const double mus = axial ? 0.0 : 4.0 * kPi * m[5];
-            const double mpp = m0 - muu - mss;
-            const double out[kMsAniso] = {
-                du, ds, 1.5 * mpp - 0.5 * m0, 1.5 * (muu - mpp), 1.5 * (mss - mpp), 3.0 * mus};
-            for (int k = 0; k < kMsAniso; ++k) {
-                const double v = isotropic_ ? 0.0 : out[k];
-                aniso_[((std::size_t(row) * kMsCosines + j) * kMsAniso + k) * 3 + c] =
-                    std::isfinite(v) ? float(v) : 0.0f;
             }
         }
         fms_[std::size_t(row) * 3 + c] = fms;
@@ -482,10 +493,15 @@ void MultipleScatteringLut::buildOrderRow(int row, int order, MsScratch& s) {
     s.shell[0] = row;
     s.crossing[0] = 0.0;
     sourceAt(0, start);
+    // The third order's field L_2 is view-dependent too: its moments are
+    // added to L_1's (aniso_), as the later orders' are not (isotropic).
+    const bool moments = order == 3 && !isotropic_;
+    if (moments) std::fill(s.moment.begin(), s.moment.end(), 0.0);
     for (int z = 0; z < kMsZeniths; ++z) {
         const MsNode node = msZenithNode(z);
         s.cosT = node.angle;
         s.sinT = std::sqrt(std::max(1.0 - node.angle * node.angle, 0.0));
+        std::fill(s.acc.begin(), s.acc.end(), 0.0f);  // this ray's L_(order - 1), times its weight
         bool hitsGround = false;
         const int n = rayCrossings(row, node.angle, s, hitsGround);
         float* g[2] = {s.source.data(), s.source.data() + plane};
@@ -505,7 +521,7 @@ void MultipleScatteringLut::buildOrderRow(int row, int order, MsScratch& s) {
                 const double f1 = t < 1e-3 ? 0.5 - t / 3.0 : (1.0 - std::exp(-t) * (1.0 + t)) / (t * t);
                 const double w = node.weight * scatter[c] * viewT[c];
                 const float wa = float(w * (f0 - f1)), wb = float(w * f1);
-                float* acc = s.orderAcc.data() + std::size_t(c) * kMsCombos;
+                float* acc = s.acc.data() + std::size_t(c) * kMsCombos;
                 const float* a = g[i % 2] + std::size_t(c) * kMsCombos;
                 const float* b = g[(i + 1) % 2] + std::size_t(c) * kMsCombos;
                 for (int m = 0; m < kMsCombos; ++m) acc[m] += wa * a[m] + wb * b[m];
@@ -522,7 +538,7 @@ void MultipleScatteringLut::buildOrderRow(int row, int order, MsScratch& s) {
                 const double albedo = std::clamp(air_.groundAlbedo[c], 0.0, 1.0);
                 const float w = float(node.weight * viewT[c] * groundReflection_[c]);
                 const float w1 = order == 3 ? float(node.weight * viewT[c] * albedo / kPi) : 0.0f;
-                float* acc = s.orderAcc.data() + std::size_t(c) * kMsCombos;
+                float* acc = s.acc.data() + std::size_t(c) * kMsCombos;
                 for (int m = 0; m < kMsCombos; ++m) {
                     const std::size_t at = std::size_t(s.column[std::size_t(m)]) * 3 + std::size_t(c);
                     const double e1 = groundSky_[at] + s.fraction[std::size_t(m)] * (groundSky_[at + 3] - groundSky_[at]);
@@ -530,11 +546,21 @@ void MultipleScatteringLut::buildOrderRow(int row, int order, MsScratch& s) {
                 }
             }
         }
+        for (std::size_t at = 0; at < s.orderAcc.size(); ++at) s.orderAcc[at] += s.acc[at];
+        if (moments) {
+            const std::size_t channel = std::size_t(3) * kMsCombos;
+            const double f[kMsAniso] = {
+                1.0, s.cosT, s.sinT, s.cosT * s.cosT, s.sinT * s.sinT, s.cosT * s.sinT};
+            for (std::size_t at = 0; at < channel; ++at)
+                for (int k = 0; k < kMsAniso; ++k)
+                    s.moment[std::size_t(k) * channel + at] += f[k] * s.acc[at];
+        }
     }
     const bool last = order == kMsLastOrder;
     for (int c = 0; c < 3; ++c) {
         const double fms = fms_[std::size_t(row) * 3 + c];
         for (int j = 0; j < kMsCosines; ++j) {
+            if (moments) storeMoments(row, c, j, s, true, 1.0 / (1.0 - fms));
             double value = 0.0;
             for (int a = 0; a < kMsAzimuths; ++a)
                 value += msAzimuthNode(a).weight * s.orderAcc[std::size_t(c * kMsCombos + j * kMsAzimuths + a)];
