@@ -115,9 +115,9 @@ double shadowKinkElevation(const AtmosphereParams& air, double depression) {
 // the anti-light quarter: 700 directions per sun): with them the worst error
 // of a 128 x 64 table is 0.8-1.6% for suns from -6 to 0 deg, against 3-49%
 // with the quadratic rows, except for suns 0.01-0.3 deg below the horizon
-// (up to 93% at -0.01 deg, 16% at -0.05 deg in a dense sweep: the onset
-// above the shadow's black sliver is thinner than the rows and bends down
-// within a few columns; see sky.hpp and SkyShadowOnset).
+// (up to 63% at -0.01 deg, 8.7% at -0.05 deg in a dense sweep: the onset
+// above the shadow's black sliver bends down within a few columns; see
+// sky.hpp and SkyShadowOnset).
 void setSkyTableMapping(SkyTable& table, const AtmosphereParams& air, const glm::dvec3& lightDirection) {
     constexpr double kDeg = kPi / 180.0;
     const glm::dvec3 l = normalizedOr(lightDirection, glm::dvec3(0.0, 1.0, 0.0));
@@ -131,7 +131,10 @@ void setSkyTableMapping(SkyTable& table, const AtmosphereParams& air, const glm:
     table.bandShare = 0.7 * std::min(1.0 - light / kMappingTopDeg, 1.0);
     if (depression > 0.0) {
         table.shadowElevation = 1.1 * depression * kDeg;
-        table.shadowWidth = 0.25 * depression * kDeg;
+        // The onset above the kink narrows about as L^2 for a light just set
+        // (a ray just above it leaves the shadow Rg L^2 / (2 (e - L)) from the
+        // viewer): below 0.3 deg the rows' width narrows with it.
+        table.shadowWidth = 0.25 * depression * std::min(depression / 0.3, 1.0) * kDeg;
         table.shadowShare = 0.15 - 0.1 * std::clamp((depression - 2.0) / 4.0, 0.0, 1.0);
         table.shadowShare *= std::min(depression / kShadowFadeDeg, 1.0);
         // A row exactly on the kink of the shadow opposite the light: the
