@@ -105,7 +105,7 @@ void main() {
                       (1.0 + max(emitters[k].attenuation, 0.0) * dot(toLight, toLight));
     }
     vec3 albedo = clamp(vAlbedoOpacity.rgb, 0.0, 1.0);
-    vec3 radiance = albedo * irradiance / (4.0 * kPi) + albedo * frame.skyAmbient / (2.0 * kPi) +
+    vec3 radiance = albedo * irradiance / (4.0 * kPi) + albedo * frame.groundAmbient / (2.0 * kPi) +
                     max(vEmissionFade.rgb, vec3(0.0));
     vec3 fogged;
     if (froxelsActive()) {  // the volumetric fog's grid at the fragment (common/froxel.glsl)

@@ -7,8 +7,9 @@
 //
 // Inputs:
 //   frame (common/frame.glsl): clipFromWorld, eye, forward, far; the lights'
-//     direction and illuminance at the ground E_ground (rgb); skyAmbient
-//     E_sky (rgb, cosine-weighted sky irradiance on an upward surface); the
+//     direction and illuminance at the ground E_ground (rgb); groundAmbient
+//     E_sky (rgb, cosine-weighted irradiance of the sky, under the cloud
+//     deck, on an upward surface); the
 //     sky tables (units 0..3) for specular sky reflections
 //   ObjectBlock (common/object.glsl, binding 3): transform, material
 //   uBaseColour (unit 5): base-colour texture (sRGB, mipmapped), when used

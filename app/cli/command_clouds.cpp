@@ -9,10 +9,14 @@
 //   transmittance   through the layer along --dir (default straight up;
 //                   aerial::cloudTransmittance, the reference march);
 //   density_per_m, coverage, height_m   at the point itself.
+// And once, the overcast seen from the world origin (aerial::cloudOvercast,
+// what greys the fog and the ambient light under the deck): sky_cover,
+// horizon_cover, optical_depth, diffuse_transmittance.
 //
 // --json:
 //   {"preset": {"file", "name"}, "time_h", "time", "direction",
 //    "sun_direction", "clouds_active",
+//    "overcast": {"sky_cover", "horizon_cover", "optical_depth", "diffuse_transmittance"},
 //    "points": [{"at", "sun_visibility", "transmittance", "density_per_m",
 //                "coverage", "height_m"}]}
 #include "cli_common.hpp"
@@ -46,6 +50,7 @@ int runClouds(const CloudsOptions& options) {
     const PresetState state = compiled.evaluate(t);
     const CloudField clouds = aerial::prepareClouds(state);
     const glm::dvec3 sun = state.sunLight.body.direction;
+    const CloudOvercast overcast = cloudOvercast(clouds);
 
     struct Answer {
         double sunVisibility, transmittance, density, coverage, height;
@@ -72,6 +77,11 @@ int runClouds(const CloudsOptions& options) {
                    {"direction", toJson(direction)},
                    {"sun_direction", toJson(sun)},
                    {"clouds_active", clouds.active()},
+                   {"overcast",
+                    {{"sky_cover", overcast.skyCover},
+                     {"horizon_cover", overcast.horizonCover},
+                     {"optical_depth", overcast.opticalDepth},
+                     {"diffuse_transmittance", overcast.diffuseTransmittance}}},
                    {"points", list}});
         return kExitOk;
     }
@@ -79,6 +89,10 @@ int runClouds(const CloudsOptions& options) {
                 formatTime(state.timeHours).c_str(), clouds.params.coverage, clouds.params.bottomM,
                 clouds.params.bottomM + clouds.params.thicknessM, sun.x, sun.y, sun.z,
                 clouds.active() ? "" : " (clear sky)");
+    std::printf(
+        "  overcast from the origin: sky cover %.4g, horizon cover %.4g, optical depth %.4g (diffuse "
+        "transmittance %.4g)\n",
+        overcast.skyCover, overcast.horizonCover, overcast.opticalDepth, overcast.diffuseTransmittance);
     for (std::size_t i = 0; i < points.size(); ++i) {
         const Answer& a = answers[i];
         std::printf(

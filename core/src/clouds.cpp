@@ -3,6 +3,7 @@
 // same arithmetic in float; tests/renderer compare the two.
 #include <aerial/clouds.hpp>
 
+#include <aerial/atmosphere.hpp>
 #include <aerial/finite.hpp>
 #include <aerial/height_fog.hpp>
 
@@ -214,6 +215,62 @@ double cloudTransmittance(const CloudField& clouds, const glm::dvec3& origin, co
 double cloudSunVisibility(const CloudField& clouds, const glm::dvec3& point, const glm::dvec3& toLight,
                           int steps) {
     return cloudTransmittance(clouds, point, toLight, std::numeric_limits<double>::infinity(), steps);
+}
+
+CloudOvercast cloudOvercast(const CloudField& clouds) {
+    CloudOvercast out;
+    if (!clouds.active()) return out;
+    const glm::dvec3 origin(0.0);
+    // Zenith band: kCloudOvercastRays directions of equal cosine-weighted
+    // solid angle (rings of equal sin^2 of the zenith angle, azimuths
+    // staggered between rings), so the plain mean of T is the cosine-weighted one.
+    constexpr int kRings = 8, kPerRing = kCloudOvercastRays / kRings;
+    double transmitted = 0.0, depthSum = 0.0, coverSum = 0.0;
+    for (int i = 0; i < kRings; ++i) {
+        const double sin2 = (i + 0.5) / kRings;
+        const double sinT = std::sqrt(sin2), cosT = std::sqrt(1.0 - sin2);
+        for (int j = 0; j < kPerRing; ++j) {
+            const double phi = 2.0 * kPi * (j + 0.5 * (1 + i % 2)) / kPerRing;
+            const glm::dvec3 d(sinT * std::sin(phi), cosT, -sinT * std::cos(phi));
+            const double tau = cloudOpticalDepth(clouds, origin, d, std::numeric_limits<double>::infinity(),
+                                                 kCloudOvercastSteps);
+            const double t = std::exp(-tau);
+            transmitted += t;
+            depthSum += (1.0 - t) * tau * cosT;
+            coverSum += 1.0 - t;
+        }
+    }
+    out.skyCover = std::clamp(1.0 - transmitted / kCloudOvercastRays, 0.0, 1.0);
+    out.opticalDepth = coverSum > 0.0 ? std::min(depthSum / coverSum, kMaxOpticalDepth) : 0.0;
+    out.diffuseTransmittance = 1.0 / (1.0 + 0.75 * (1.0 - 0.85) * out.opticalDepth);
+    // Horizon band: elevations 1..11 deg, uniform in elevation and azimuth.
+    constexpr int kElevations = 4, kAzimuths = kCloudOvercastRays / kElevations;
+    double horizon = 0.0;
+    for (int i = 0; i < kElevations; ++i) {
+        const double el = (1.0 + 10.0 * (i + 0.5) / kElevations) * kPi / 180.0;
+        for (int j = 0; j < kAzimuths; ++j) {
+            const double phi = 2.0 * kPi * (j + 0.5 * (1 + i % 2)) / kAzimuths;
+            const glm::dvec3 d(std::cos(el) * std::sin(phi), std::sin(el), -std::cos(el) * std::cos(phi));
+            horizon += cloudTransmittance(clouds, origin, d, std::numeric_limits<double>::infinity(),
+                                          kCloudOvercastSteps);
+        }
+    }
+    out.horizonCover = std::clamp(1.0 - horizon / kCloudOvercastRays, 0.0, 1.0);
+    return out;
+}
+
+glm::dvec3 overcastRadiance(const CloudOvercast& overcast, const glm::dvec3& albedo,
+                            const glm::dvec3& irradianceOnTop) {
+    glm::dvec3 out(0.0);
+    const double td = std::isfinite(overcast.diffuseTransmittance)
+                          ? std::clamp(overcast.diffuseTransmittance, 0.0, 1.0)
+                          : 1.0;
+    for (int c = 0; c < 3; ++c) {
+        const double a = std::isfinite(albedo[c]) ? std::clamp(albedo[c], 0.0, 1.0) : 0.0;
+        const double e = std::isfinite(irradianceOnTop[c]) ? std::clamp(irradianceOnTop[c], 0.0, 1e30) : 0.0;
+        out[c] = a * td * e / kPi;
+    }
+    return out;
 }
 
 }  // namespace aerial

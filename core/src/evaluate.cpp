@@ -229,8 +229,44 @@ CloudField prepareClouds(const PresetState& state) {
                          state.environment.atmosphere.planetRadius);
 }
 
+OvercastLight overcastLight(const PresetState& state, const SkyTable& sunSky, const SkyTable& moonSky) {
+    OvercastLight out;
+    const double g = state.environment.atmosphere.mieAnisotropy;
+    out.clearSkyIrradiance = skyIrradiance(sunSky, g, state.sunLight.illuminanceSpace) +
+                             skyIrradiance(moonSky, g, state.moonLight.illuminanceSpace);
+    out.groundIrradiance = out.clearSkyIrradiance;
+    const CloudField clouds = prepareClouds(state);
+    out.overcast = cloudOvercast(clouds);
+    if (!(out.overcast.skyCover > 0.0) && !(out.overcast.horizonCover > 0.0)) return out;
+    // What the deck passes on of each light: a beam at zenith cosine mu gets
+    // through as (1/2 + 3/4 mu) times diffuse light does (Eddington; the
+    // mean over a diffuse field is 1), so the glow low over a set sun's
+    // horizon counts less than the sky overhead.
+    auto direct = [](const LightState& l) {
+        const double mu = std::clamp(l.body.direction.y, 0.0, 1.0);
+        return l.illuminance * mu * (0.5 + 0.75 * mu);
+    };
+    const glm::dvec3 sky = skyIrradiance(sunSky, g, state.sunLight.illuminanceSpace, 0.5, 0.75) +
+                           skyIrradiance(moonSky, g, state.moonLight.illuminanceSpace, 0.5, 0.75);
+    out.radiance = overcastRadiance(out.overcast, clouds.params.albedo,
+                                    direct(state.sunLight) + direct(state.moonLight) + sky);
+    const double c = out.overcast.skyCover;
+    out.groundIrradiance = (1.0 - c) * out.clearSkyIrradiance + c * kPi * out.radiance;
+    return out;
+}
+
 FogSceneDesc fogSceneDesc(const PresetState& state, const SkyTable& sunSky, const SkyTable& moonSky) {
+    // Without clouds the overcast changes nothing (and its sky irradiance is not needed).
+    const bool clouds = prepareClouds(state).active();
+    return fogSceneDesc(state, sunSky, moonSky,
+                        clouds ? overcastLight(state, sunSky, moonSky) : OvercastLight{});
+}
+
+FogSceneDesc fogSceneDesc(const PresetState& state, const SkyTable& sunSky, const SkyTable& moonSky,
+                          const OvercastLight& overcast) {
     FogSceneDesc desc;
+    desc.overcastCover = overcast.overcast.horizonCover;
+    desc.overcastRadiance = overcast.radiance;
     desc.heightFog = state.environment.fog;
     desc.heightFogColourMode = state.environment.fogColourMode;
     desc.heightFogColour = state.environment.fogColour;

@@ -103,6 +103,8 @@ struct FogScene::Impl {
     double mieAnisotropy = 0.0;
     FogColourMode heightFogColourMode = FogColourMode::Sky;
     glm::dvec3 heightFogColour{1.0};
+    double overcastCover = 0.0;
+    glm::dvec3 overcastRadiance{0.0};
 
     explicit Impl(const FogSceneDesc& d) : desc(d) {
         volumes.reserve(desc.volumes.size());
@@ -135,6 +137,8 @@ struct FogScene::Impl {
         mieAnisotropy = std::isnan(desc.mieAnisotropy) ? 0.0 : std::clamp(desc.mieAnisotropy, -0.999, 0.999);
         heightFogColourMode = desc.heightFogColourMode;
         heightFogColour = detail::sanitiseColour(desc.heightFogColour);
+        overcastCover = std::isfinite(desc.overcastCover) ? std::clamp(desc.overcastCover, 0.0, 1.0) : 0.0;
+        overcastRadiance = detail::sanitiseColour(desc.overcastRadiance);
     }
 
     /// The in-scattered colour of a fog with this colour mode, given the
@@ -161,6 +165,7 @@ struct FogScene::Impl {
             colour += l.illuminance *
                       (rayleighPhase(mu) * h.rayleigh + miePhase(mu, mieAnisotropy) * h.mie + h.multiple);
         }
+        if (overcastCover > 0.0) colour = (1.0 - overcastCover) * colour + overcastCover * overcastRadiance;
         return colour;
     }
 

@@ -143,6 +143,17 @@ FrameBlock makeFrameBlock(const Camera& camera, const CameraFrame& view, const P
     const glm::dvec3 airglow =
         nightSky > 0.0 ? nightSky * airglowIrradiance(state.zenithTransmittance) : glm::dvec3(0.0);
     fb.skyAmbient = toVec3(colourOf(ambient + airglow));
+    // Below the cloud deck: the clear sky (and the airglow) through its gaps
+    // and the deck's underside (OvercastLight::groundIrradiance).
+    const CloudOvercast& overcast = in.overcast.overcast;
+    const double skyCover = std::isfinite(overcast.skyCover) ? std::clamp(overcast.skyCover, 0.0, 1.0) : 0.0;
+    const glm::dvec3 deck = colourOf(in.overcast.radiance);
+    fb.groundAmbient = skyCover > 0.0
+                           ? toVec3(colourOf((1.0 - skyCover) * (ambient + airglow) + skyCover * kPi * deck))
+                           : fb.skyAmbient;
+    fb.overcastCover = static_cast<float>(
+        std::isfinite(overcast.horizonCover) ? std::clamp(overcast.horizonCover, 0.0, 1.0) : 0.0);
+    fb.overcastRadiance = toVec3(deck);
 
     // Without the global fog pass, the transparent meshes and particles get
     // no global fog either (they read the same density).

@@ -5,16 +5,12 @@
 
 #include "gpu_types.hpp"
 
+#include <aerial/evaluate.hpp>
 #include <aerial/renderer/camera.hpp>
 #include <aerial/renderer/renderer.hpp>
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
-
-namespace aerial {
-struct PresetState;
-struct SkyTable;
-}  // namespace aerial
 
 namespace aerial::renderer::detail {
 
@@ -43,6 +39,9 @@ struct FrameBlockInputs {
     bool subtractActive = false;
     FrameSkyInput sun;
     FrameSkyInput moon;
+    /// The cloud deck's light (overcastLight of the state and these tables;
+    /// the default: no clouds).
+    OvercastLight overcast;
 };
 
 /// sky.glsl's stars: the Gaussian radius never exceeds 0.4 of a cell's

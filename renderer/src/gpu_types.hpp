@@ -53,8 +53,8 @@ struct FrameBlock {
     float padMoonRayleigh = 0.0f;
     Vec3 moonHorizonMie;
     float padMoonMie = 0.0f;
-    Vec3 skyAmbient;
-    float padAmbient = 0.0f;
+    Vec3 skyAmbient;             ///< the clear sky's, on the clouds (and on the ground without them)
+    float overcastCover = 0.0f;  ///< CloudOvercast::horizonCover: the deck in front of the fog's horizon
     float fogDensity = 0.0f;     ///< [1/m]
     float fogFalloff = 0.0f;     ///< [1/m]
     float fogBaseHeight = 0.0f;  ///< [m]
@@ -102,6 +102,14 @@ struct FrameBlock {
     float moonTableShadowShare = 0.0f;
     float padTableShadow0 = 0.0f;
     float padTableShadow1 = 0.0f;
+    /// Ambient on an upward surface under the cloud deck (OvercastLight::
+    /// groundIrradiance, with the airglow through the gaps); skyAmbient
+    /// exactly without clouds.
+    Vec3 groundAmbient;
+    float padGroundAmbient = 0.0f;
+    /// The deck's underside [E / sr] (OvercastLight::radiance).
+    Vec3 overcastRadiance;
+    float padOvercast = 0.0f;
 };
 static_assert(offsetof(FrameBlock, clipFromWorld) == 0);
 static_assert(offsetof(FrameBlock, eye) == 64);
@@ -156,7 +164,10 @@ static_assert(offsetof(FrameBlock, moonTableBand) == 576);
 static_assert(offsetof(FrameBlock, moonTableShadowWidth) == 588);
 static_assert(offsetof(FrameBlock, sunTableShadowShare) == 592);
 static_assert(offsetof(FrameBlock, moonTableShadowShare) == 596);
-static_assert(sizeof(FrameBlock) == 608);
+static_assert(offsetof(FrameBlock, overcastCover) == 348);
+static_assert(offsetof(FrameBlock, groundAmbient) == 608);
+static_assert(offsetof(FrameBlock, overcastRadiance) == 624);
+static_assert(sizeof(FrameBlock) == 640);
 
 /// shaders/common/volume.glsl, VolumeBlock (binding 1): one fog volume.
 struct VolumeBlock {

@@ -17,7 +17,8 @@ namespace aerial::renderer::detail {
 
 const FogScene& FrameContext::localFog() {
     if (!localFog_) {
-        FogSceneDesc fogDesc = fogSceneDesc(state, gpu.sunTable, gpu.moonTable);
+        FogSceneDesc fogDesc =
+            fogSceneDesc(state, gpu.sunTable, gpu.moonTable, overcast ? *overcast : OvercastLight{});
         fogDesc.heightFog.density = 0.0;
         if (!desc.passes.volumes) fogDesc.volumes.clear();
         if (!desc.passes.emitters) fogDesc.emitters.clear();

@@ -22,6 +22,7 @@
 #include "sky_textures.hpp"
 
 #include <aerial/clouds.hpp>
+#include <aerial/evaluate.hpp>
 #include <aerial/fog_query.hpp>
 #include <aerial/fog_volume.hpp>
 #include <aerial/renderer/camera.hpp>
@@ -159,6 +160,8 @@ public:
     /// The frame's cloud layer (prepareClouds of the state) and its block,
     /// already uploaded to gpu.cloudBuffer; set by Renderer::Impl::render.
     const CloudField* clouds = nullptr;
+    /// The frame's overcast (in the frame block too); null: none.
+    const OvercastLight* overcast = nullptr;
     CloudBlock cloudBlock;
     /// The frame's shadow maps' block, already uploaded to gpu.shadowBuffer;
     /// castingLight > 0 when the shadow-map pass draws this frame.

@@ -286,6 +286,9 @@ void Renderer::Impl::render(const Camera& camera, const PresetState& state, cons
     };
     inputs.sun = skyInput(sunSky, sunTable);
     inputs.moon = skyInput(moonSky, moonTable);
+    // The cloud deck greys and dims the fog's colour and the ambient light
+    // below it, while the layer is drawn (OvercastLight, aerial/evaluate.hpp).
+    if (frameDesc.passes.clouds) inputs.overcast = overcastLight(state, sunTable, moonTable);
     const detail::FrameBlock block = detail::makeFrameBlock(camera, view, state, frameDesc, inputs);
     glNamedBufferSubData(frameBuffer, 0, sizeof block, &block);
 
@@ -361,6 +364,7 @@ void Renderer::Impl::render(const Camera& camera, const PresetState& state, cons
 
     detail::FrameContext frame(camera, view, state, frameDesc, block, *this, stats);
     frame.clouds = &clouds;
+    frame.overcast = &inputs.overcast;
     frame.cloudBlock = cloudBlock;
     frame.shadowBlock = shadowBlock;
     ++frameNumber;

@@ -68,23 +68,4 @@ void SkyTextures::upload(const SkyTable& table) {
     horizonMultiple = valid ? table.horizonMultiple : glm::dvec3(0.0);
 }
 
-glm::dvec3 skyIrradiance(const SkyTable& table, double mieAnisotropy, const glm::dvec3& illuminance) {
-    if (table.azimuthCount < 1 || table.elevationCount < 1) return glm::dvec3(0.0);
-    constexpr int kAzimuths = 64;
-    constexpr int kElevations = 16;
-    glm::dvec3 sum(0.0);
-    for (int j = 0; j < kElevations; ++j) {
-        // Midpoint in elevation; dOmega = cos(el) d(el) d(az).
-        const double el = (j + 0.5) / kElevations * 0.5 * kPi;
-        const double weight =
-            std::sin(el) * std::cos(el) * (0.5 * kPi / kElevations) * (2.0 * kPi / kAzimuths);
-        for (int i = 0; i < kAzimuths; ++i) {
-            const double az = (i + 0.5) / kAzimuths * 2.0 * kPi;
-            const glm::dvec3 v(std::cos(el) * std::sin(az), std::sin(el), -std::cos(el) * std::cos(az));
-            sum += skyRadiance(table, mieAnisotropy, v, illuminance) * weight;
-        }
-    }
-    return sum;
-}
-
 }  // namespace aerial::renderer::detail

@@ -32,10 +32,4 @@ struct SkyTextures {
     void upload(const SkyTable& table);
 };
 
-/// Cosine-weighted sky irradiance on an upward surface from one table,
-/// E_sky = E * integral over the upper hemisphere of (P_R I_R + P_M I_M + I_ms) v.y
-/// dOmega, by the midpoint rule on a 64 x 16 grid of directions sampled with
-/// sampleSkyTable.
-glm::dvec3 skyIrradiance(const SkyTable& table, double mieAnisotropy, const glm::dvec3& illuminance);
-
 }  // namespace aerial::renderer::detail

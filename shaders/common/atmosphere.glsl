@@ -121,9 +121,9 @@ HorizonSkies horizonSkies(vec3 v) {
     return h;
 }
 
-/// The sky's fog colour in direction v (unit) from its horizons: sum over sun
-/// and moon of E (P_R(mu) H_R(v) + P_M(mu, g) H_M(v) + H_ms(v)) (FogScene::fogColour).
-vec3 skyFogColourFrom(HorizonSkies h, vec3 v) {
+/// The clear sky's fog colour in direction v (unit) from its horizons: sum
+/// over sun and moon of E (P_R(mu) H_R(v) + P_M(mu, g) H_M(v) + H_ms(v)).
+vec3 clearSkyFogColourFrom(HorizonSkies h, vec3 v) {
     float g = frame.mieAnisotropy;
     float muSun = dot(v, frame.sunDirection);
     float muMoon = dot(v, frame.moonDirection);
@@ -132,6 +132,17 @@ vec3 skyFogColourFrom(HorizonSkies h, vec3 v) {
            frame.moonIlluminanceSpace *
                (rayleighPhase(muMoon) * h.moonRayleigh + miePhase(muMoon, g) * h.moonMie + h.moonMultiple);
 }
+
+/// The cloud deck in front of the horizon (frame.overcastCover) over a clear
+/// sky's fog colour: mix(clear, deck's underside, cover); the clear colour
+/// itself without clouds.
+vec3 underOvercast(vec3 clear) {
+    return frame.overcastCover > 0.0 ? mix(clear, frame.overcastRadiance, frame.overcastCover) : clear;
+}
+
+/// The sky's fog colour in direction v (unit) (FogScene::fogColour): the
+/// clear sky's under the overcast.
+vec3 skyFogColourFrom(HorizonSkies h, vec3 v) { return underOvercast(clearSkyFogColourFrom(h, v)); }
 
 vec3 skyFogColour(vec3 v) { return skyFogColourFrom(horizonSkies(v), v); }
 

@@ -20,8 +20,17 @@
 //                       Mie / Multiple (horizon averages I_R, I_M, I_ms),
 //                       <light>TableAzimuth (the table's light azimuth [rad])
 //   mieAnisotropy       Cornette-Shanks g of the sky and fog colour
-//   skyAmbient          cosine-weighted sky irradiance on an upward surface
-//                       (E_sky, same unit as E)
+//   skyAmbient          cosine-weighted irradiance of the clear sky on an
+//                       upward surface (E_sky, same unit as E): what lights
+//                       the clouds from above
+//   groundAmbient       the same below the cloud deck (the clear sky through
+//                       its gaps and the deck's underside; OvercastLight in
+//                       aerial/evaluate.hpp): what lights surfaces and fog
+//                       particles; skyAmbient without clouds
+//   overcastCover, overcastRadiance
+//                       the deck in front of the horizon (CloudOvercast::
+//                       horizonCover) and its underside's radiance: the sky's
+//                       fog colour is mix(sky, overcastRadiance, overcastCover)
 //   fogDensity          global fog b [1/m]; fogFalloff c [1/m];
 //   fogBaseHeight       h0 [m]; fogColourMode 0 sky, 1 tinted, 2 custom
 //   fogColour           tint or radiance of the global fog
@@ -81,7 +90,7 @@ layout(std140, binding = 0) uniform FrameBlock {
     vec3 moonHorizonMie;
     float padMoonMie;
     vec3 skyAmbient;
-    float padAmbient;
+    float overcastCover;
     float fogDensity;
     float fogFalloff;
     float fogBaseHeight;
@@ -122,6 +131,10 @@ layout(std140, binding = 0) uniform FrameBlock {
     float moonTableShadowShare;
     float padTableShadow0;
     float padTableShadow1;
+    vec3 groundAmbient;
+    float padGroundAmbient;
+    vec3 overcastRadiance;
+    float padOvercast;
 } frame;
 
 // Ray from the eye to the far plane at normalised device coordinates ndc

@@ -61,7 +61,7 @@ vec3 froxelFarRay(ivec2 ij) {
 /// phase the casting light's Mie part takes the fog's anisotropy.
 void froxelFogColours(vec3 v, out vec3 shadowable, out vec3 all) {
     HorizonSkies h = horizonSkies(v);
-    vec3 sky = skyFogColourFrom(h, v);
+    vec3 sky = clearSkyFogColourFrom(h, v);
     float g = frame.mieAnisotropy;
     vec3 light, rayleigh, mie;
     float mu;
@@ -81,6 +81,18 @@ void froxelFogColours(vec3 v, out vec3 shadowable, out vec3 all) {
         vec3 custom = light * (rayleighPhase(mu) * rayleigh + miePhase(mu, froxel.anisotropy) * mie);
         sky = max(sky - single, vec3(0.0)) + custom;
         single = custom;
+    }
+    // The cloud deck (underOvercast): with the cloud shadow in the grid the
+    // casting light's single scattering is dimmed per froxel, and the deck
+    // replaces only the rest of the sky's light; without it both are blended,
+    // as in the analytic fog's colour.
+    if (frame.overcastCover > 0.0) {
+        if (froxel.cloudShadows > 0.5) {
+            sky = underOvercast(max(sky - single, vec3(0.0))) + single;
+        } else {
+            sky = underOvercast(sky);
+            single *= 1.0 - frame.overcastCover;
+        }
     }
     vec3 capped = min(sky, vec3(frame.radianceCap));
     vec3 share = vec3(1.0);

@@ -131,13 +131,13 @@ void shadeSurface(Surface s, vec3 p, vec3 n, vec3 v, out vec3 diffuse, out vec3 
                  specular);
     }
     vec3 cdiff = s.base * (1.0 - s.metallic);
-    diffuse += cdiff / kPi * frame.skyAmbient * (0.5 + 0.5 * n.y);
+    diffuse += cdiff / kPi * frame.groundAmbient * (0.5 + 0.5 * n.y);
     float nv = clamp(dot(n, v), 1e-4, 1.0);
     vec3 f0 = mix(vec3(0.04 * s.specular), s.base, s.metallic);
     float f90 = mix(s.specular, 1.0, s.metallic);
     if (any(greaterThan(f0, vec3(0.0))) || f90 > 0.0) {
         vec3 r = reflect(-v, n);
-        vec3 diffuseSky = frame.skyAmbient * (0.5 + 0.5 * r.y) / kPi;
+        vec3 diffuseSky = frame.groundAmbient * (0.5 + 0.5 * r.y) / kPi;
         // Roughness is uniform per draw, so this branch is too (the table
         // lookups need no derivatives anyway).
         vec3 sky = s.roughness < 1.0 ? mix(skyRadiance(r, false), diffuseSky, s.roughness) : diffuseSky;

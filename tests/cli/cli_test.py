@@ -490,6 +490,21 @@ class Clouds(unittest.TestCase):
         self.assertLess(min(vis), 0.05)
         self.assertEqual(max(vis), 1.0)
 
+    def test_overcast_from_the_origin(self):
+        r = run_json(self, "clouds", self.LAYER, "--time", "14:00", "--at=0,0,0")
+        o = r["overcast"]
+        for key in ("sky_cover", "horizon_cover"):
+            self.assertTrue(0.05 < o[key] <= 1.0, o)
+        # The two-stream diffuse transmittance of its optical depth (g = 0.85).
+        self.assertGreater(o["optical_depth"], 0.5)
+        self.assertAlmostEqual(o["diffuse_transmittance"], 1.0 / (1.0 + 0.75 * 0.15 * o["optical_depth"]),
+                               delta=1e-12)
+        # No layer, no overcast.
+        clear = run_json(self, "clouds", os.path.join(ROOT, "tests", "data", "cli", "global_fog_only.json"),
+                         "--time", "14:00", "--at=0,0,0")
+        self.assertEqual(clear["overcast"], {"sky_cover": 0.0, "horizon_cover": 0.0, "optical_depth": 0.0,
+                                             "diffuse_transmittance": 1.0})
+
     def test_up_through_the_layer_equals_down_through_it(self):
         # The same segment marched from either end gives the same samples.
         for x, z in ((0, 0), (1234, -777), (-5000, 3000)):

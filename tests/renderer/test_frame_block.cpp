@@ -172,6 +172,31 @@ TEST(FrameBlock, LightsDiscsAndSkyMapping) {
     EXPECT_EQ(fb.emitterCount, 3);
 }
 
+// Under a cloud deck (FrameBlockInputs::overcast) the surfaces' ambient is
+// the clear sky's through the gaps plus the deck's underside, the clouds keep
+// the clear sky's, and the fog's horizon takes the deck's cover and radiance.
+TEST(FrameBlock, GroundAmbientAndFogUnderTheOvercast) {
+    PresetState night = testState();
+    night.sunLight.body.elevation = -20.0 * kPiD / 180.0;  // the airglow is on
+    night.zenithTransmittance = {0.8, 0.85, 0.9};
+    FrameBlockInputs inputs = testInputs();
+    const FrameBlock clear = blockFor(night, {}, inputs);
+    EXPECT_EQ(clear.groundAmbient.x, clear.skyAmbient.x);
+    EXPECT_EQ(clear.groundAmbient.z, clear.skyAmbient.z);
+    EXPECT_EQ(clear.overcastCover, 0.0f);
+    inputs.overcast.overcast.skyCover = 0.75;
+    inputs.overcast.overcast.horizonCover = 0.9;
+    inputs.overcast.radiance = {0.01, 0.02, -1.0};  // a negative channel is sanitised to 0
+    const FrameBlock under = blockFor(night, {}, inputs);
+    expectNear3(under.skyAmbient, d3(clear.skyAmbient), 0.0, "the clouds keep the clear sky's ambient");
+    const glm::dvec3 sky = d3(clear.skyAmbient);
+    expectNear3(under.groundAmbient, 0.25 * sky + 0.75 * kPiD * glm::dvec3(0.01, 0.02, 0.0), 1e-7,
+                "ground ambient under the deck");
+    EXPECT_FLOAT_EQ(under.overcastCover, 0.9f);
+    expectNear3(under.overcastRadiance, {0.01, 0.02, 0.0}, 1e-9, "deck radiance");
+    ASSERT_GT(sky.x, 0.0);  // the airglow made the comparison meaningful
+}
+
 TEST(FrameBlock, DiscsAtTheApparentPositionWithTheMoonsPhase) {
     // A real evaluation: the built-in preset's sun at 19:54, 1.6 deg below
     // the horizon, stands ~0.4 deg higher refracted (Saemundsson's formula,
@@ -350,6 +375,7 @@ TEST(FrameBlock, Std140OffsetsMatchTheGlslBlocks) {
                   AERIAL_OFFSET(FrameBlock, moonHorizonRayleigh),
                   AERIAL_OFFSET(FrameBlock, moonHorizonMie),
                   AERIAL_OFFSET(FrameBlock, skyAmbient),
+                  AERIAL_OFFSET(FrameBlock, overcastCover),
                   AERIAL_OFFSET(FrameBlock, fogDensity),
                   AERIAL_OFFSET(FrameBlock, fogFalloff),
                   AERIAL_OFFSET(FrameBlock, fogBaseHeight),
@@ -380,7 +406,9 @@ TEST(FrameBlock, Std140OffsetsMatchTheGlslBlocks) {
                   AERIAL_OFFSET(FrameBlock, moonTableBand),
                   AERIAL_OFFSET(FrameBlock, moonTableShadowWidth),
                   AERIAL_OFFSET(FrameBlock, sunTableShadowShare),
-                  AERIAL_OFFSET(FrameBlock, moonTableShadowShare)},
+                  AERIAL_OFFSET(FrameBlock, moonTableShadowShare),
+                  AERIAL_OFFSET(FrameBlock, groundAmbient),
+                  AERIAL_OFFSET(FrameBlock, overcastRadiance)},
                  sizeof(FrameBlock));
     expectLayout(
         "common/volume.glsl", "VolumeBlock",

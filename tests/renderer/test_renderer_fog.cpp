@@ -2,8 +2,9 @@
 // contract of fog_query.hpp) on the same inputs, every pixel: global height
 // fog, box and ellipsoid volumes (rotated, non-uniformly scaled, gradients in
 // arbitrary directions, offsets, colour modes) with the camera outside,
-// inside and straddling the hull (near-plane crossing), and emitters; and the
-// sky fog colour at twilight, where it takes the horizon row behind it.
+// inside and straddling the hull (near-plane crossing), and emitters; the
+// sky fog colour at twilight, where it takes the horizon row behind it, and
+// under a cloud deck, where it takes the deck's underside.
 //
 // Method: render the scene pass alone (L_scene) and the full frame into
 // RGBA32F targets, read back the linear depth, reconstruct each pixel's
@@ -205,6 +206,32 @@ TEST_F(FogVsCpu, GlobalFogTintedAndCustomColour) {
                 fogCamera({0, 25, 0}, {0, 18, -100}), air);
         EXPECT_LT(c.maxError, kTolerance);
     }
+}
+
+// Under a cloud deck the sky's fog colour is blended with the deck's
+// underside (OvercastLight, FogScene::fogColour): the GPU's global fog and
+// tinted volume take the same blend as the CPU.
+TEST_F(FogVsCpu, GlobalFogAndVolumesUnderAnOvercast) {
+    PresetState air = baseFrame();
+    air.environment.clouds.coverage = 0.8;
+    air.environment.clouds.bottomM = 1500.0;
+    air.environment.clouds.thicknessM = 2000.0;
+    air.environment.fog = {0.004, 0.02, 3.0};
+    FogVolume e = testVolume(FogVolumeShape::Ellipsoid);
+    e.colourMode = FogColourMode::Tinted;
+    e.colour = {0.5, 0.8, 1.0};
+    air.volumes.push_back(e);
+    const FogComparison c =
+        run("global fog + volume under an overcast", fogCamera({0, 25, 0}, {0, 18, -100}), air);
+    EXPECT_LT(c.maxError, kTolerance);
+    // The deck is there: the fog's colour is not the clear sky's.
+    const FogSceneDesc under = aerial::fogSceneDesc(air, sky_->sun, sky_->moon);
+    FogSceneDesc clear = under;
+    clear.overcastCover = 0.0;
+    ASSERT_GT(under.overcastCover, 0.5);
+    const glm::dvec3 v(0.0, 0.05, -1.0);
+    const glm::dvec3 a = FogScene(clear).fogColour(v), b = FogScene(under).fogColour(v);
+    EXPECT_GT(glm::length(b - a), 0.1 * glm::length(a));
 }
 
 TEST_F(FogVsCpu, TheComparisonSeesAMissingPass) {

@@ -221,4 +221,46 @@ double cloudTransmittance(const CloudField& clouds, const glm::dvec3& origin, co
 double cloudSunVisibility(const CloudField& clouds, const glm::dvec3& point, const glm::dvec3& toLight,
                           int steps = kCloudSunVisibilitySteps);
 
+/// What the cloud deck does to the sky's light below it (an overcast greys
+/// and dims the fog and the ambient light; Aerial's sky table is the clear
+/// sky's). Seen from the world origin on the ground, so that every query of
+/// a frame (renderer, FogScene, a game) agrees whatever its camera; the
+/// layer's wind and volumes at that moment are in the field.
+struct CloudOvercast {
+    /// Fraction of the upper hemisphere's cosine-weighted light the clouds
+    /// block, 0..1: 1 - mean transmittance over kCloudOvercastRays
+    /// cosine-distributed directions.
+    double skyCover = 0.0;
+    /// The same for the band 1-11 deg above the horizon (what far fog shows
+    /// behind it), 0..1: through the layer's long slant there, a broken
+    /// deck covers more of it than of the zenith.
+    double horizonCover = 0.0;
+    /// Mean vertical optical depth of the clouds where they are (the covered
+    /// directions' optical depth times their zenith cosine, weighted by
+    /// their cover); 0 without clouds.
+    double opticalDepth = 0.0;
+    /// Diffuse transmittance of a slab of that optical depth, the two-stream
+    /// (diffusion) T_d = 1 / (1 + 3/4 (1 - g) tau) with the droplets' g =
+    /// 0.85 (Bohren 1987; the renderer's cloud shader uses the same for the
+    /// light deep in a cloud); 1 without clouds.
+    double diffuseTransmittance = 1.0;
+};
+
+/// Directions per band of cloudOvercast (the zenith band; the horizon band has as many).
+constexpr int kCloudOvercastRays = 128;
+/// Samples of each of cloudOvercast's marches.
+constexpr int kCloudOvercastSteps = 32;
+
+/// The overcast of a cloud field (above); all zero (and T_d = 1) when the
+/// layer is inactive.
+CloudOvercast cloudOvercast(const CloudField& clouds);
+
+/// Radiance of the deck's underside [illuminance unit / sr], the same in
+/// every direction: the light falling on its top (`irradianceOnTop`: the
+/// direct sun and moon on a horizontal surface plus the clear sky's
+/// irradiance), diffusely transmitted (T_d) times the clouds' albedo, spread
+/// over the lower hemisphere: albedo T_d E / pi.
+glm::dvec3 overcastRadiance(const CloudOvercast& overcast, const glm::dvec3& albedo,
+                            const glm::dvec3& irradianceOnTop);
+
 }  // namespace aerial

@@ -106,11 +106,37 @@ private:
     std::unique_ptr<Impl> impl_;
 };
 
+/// The light under the cloud deck of a state (clouds.hpp, CloudOvercast),
+/// with the sky tables solved for its sun and moon. The renderer and
+/// fogSceneDesc take it from here, so the GPU's fog and ambient and a game's
+/// CPU queries agree.
+struct OvercastLight {
+    CloudOvercast overcast;  ///< of prepareClouds(state); all zero without clouds
+    /// The clear sky's irradiance on an upward surface (skyIrradiance of both
+    /// tables with the lights' illuminance above the atmosphere).
+    glm::dvec3 clearSkyIrradiance{0.0};
+    /// The deck's underside (overcastRadiance): lit on top by the sun and
+    /// moon as they reach the ground (LightState::illuminance times mu (1/2 +
+    /// 3/4 mu), mu the zenith cosine, 0 below the horizon) and the clear sky
+    /// (skyIrradiance with a = 1/2, b = 3/4): a thick deck passes a beam at
+    /// zenith cosine mu on as (1/2 + 3/4 mu) times diffuse light (Eddington).
+    glm::dvec3 radiance{0.0};
+    /// Ambient on an upward surface below the deck: the clear sky through
+    /// the gaps plus the deck, (1 - skyCover) clearSkyIrradiance + skyCover
+    /// pi radiance; clearSkyIrradiance exactly without clouds.
+    glm::dvec3 groundIrradiance{0.0};
+};
+OvercastLight overcastLight(const PresetState& state, const SkyTable& sunSky, const SkyTable& moonSky);
+
 /// The fog of a state for CPU fog queries (FogScene): global fog with the
-/// preset's fog colour mode, volumes, emitters (flashes applied) and the two
+/// preset's fog colour mode, volumes, emitters (flashes applied), the two
 /// fog lights — direction, illuminance above the atmosphere and the horizon
-/// averages of the sky tables solved for this state's sun and moon.
+/// averages of the sky tables solved for this state's sun and moon — and
+/// the overcast (overcastLight: horizonCover and the deck's radiance).
 FogSceneDesc fogSceneDesc(const PresetState& state, const SkyTable& sunSky, const SkyTable& moonSky);
+/// The same with the overcast already computed (overcastLight of the same state and tables).
+FogSceneDesc fogSceneDesc(const PresetState& state, const SkyTable& sunSky, const SkyTable& moonSky,
+                          const OvercastLight& overcast);
 
 /// The clouds of a state for CPU cloud queries (clouds.hpp): the evaluated
 /// cloud layer at the state's time (wind offset), the evaluated cloud

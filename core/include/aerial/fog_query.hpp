@@ -83,6 +83,11 @@ struct FogSceneDesc {
     /// radiance (Environment::fogColourMode / fogColour of a preset).
     FogColourMode heightFogColourMode = FogColourMode::Sky;
     glm::dvec3 heightFogColour{1.0, 1.0, 1.0};
+    /// The cloud deck in front of the horizon (OvercastLight, evaluate.hpp):
+    /// the sky's fog colour becomes (1 - cover) sky + cover radiance, in the
+    /// colour modes that use it (Sky, Tinted). Default 0: the clear sky.
+    double overcastCover = 0.0;
+    glm::dvec3 overcastRadiance{0.0};  ///< the deck's underside [illuminance unit / sr]
 };
 
 /// One volume's share of a query.
@@ -128,8 +133,10 @@ public:
 
     /// The fog colour of the sky in a view direction (global fog's L_fog):
     /// sum over the lights of E (P_R(mu) horizonRayleigh + P_M(mu, g)
-    /// horizonMie + horizonMultiple), mu = dot(v, light direction). The direction need not be
-    /// unit (zero or non-finite means +Y).
+    /// horizonMie + horizonMultiple), mu = dot(v, light direction), blended
+    /// with the overcast: (1 - overcastCover) that + overcastCover
+    /// overcastRadiance. The direction need not be unit (zero or non-finite
+    /// means +Y).
     glm::dvec3 fogColour(const glm::dvec3& viewDirection) const;
 
     const FogSceneDesc& desc() const;

@@ -52,7 +52,9 @@
 // cosine (Legendre series of the phases to l = 2: exact for Rayleigh, the
 // smooth part of Mie's peak). Hillaire's isotropic phases left the horizon
 // opposite a low sun 7-13% too dark against the path tracer (sun -2 to +10
-// deg); the orders from the third on stay isotropic. The LUT
+// deg). The third order's field L_2 adds its moments the same way (and the
+// later orders theirs, as L_2's times the tail's 1 / (1 - f_ms)); the
+// sources of the third and later orders stay isotropic. The LUT
 // (MultipleScatteringTable) has 25 heights (the shells of 24 equal-mass
 // layers from the ground to the top) x 64 sun cosines (mu = sign(x) x^2, x
 // uniform in [-1, 1]: dense near the horizon). It depends only on the
@@ -81,9 +83,11 @@
 //       horizon opposite the light;
 //     - a light below the horizon also: b = 0.15 (0.05 from L = 6 deg; fading
 //       in over the first 0.1 deg; L beyond 18 deg counts as 18) of the rows
-//       around c with width w = 0.25 L: the edge of the earth's shadow
+//       around c with width w = 0.25 L min(L / 0.3, 1): the edge of the earth's shadow
 //       opposite the light, which is sharpest (a kink in the radiance a few
-//       hundredths of a degree above a black sliver) for a light just set.
+//       hundredths of a degree above a black sliver) for a light just set;
+//       the lit sky's onset above the kink narrows about as L^2 there, so
+//       below 0.3 deg the width does too.
 //       c is the kink's elevation straight opposite the light (the view ray
 //       that leaves the shadow cylinder exactly at the top of the
 //       atmosphere, about 1.1 L; for a light more than ~6 deg down that ray
@@ -99,11 +103,13 @@
 //     is to the horizon), and the onset's elevation drops towards the
 //     horizon within a few degrees of azimuth from the anti-light point, so
 //     it falls between the rows and between the columns. A dense sweep of
-//     that quarter (SkyShadowOnset) finds up to 93% at -0.01 deg,
-//     68% at -0.02, 52% at -0.03, 16% at -0.05, 8.7% at -0.07, 7.4% at -0.1,
-//     5.5% at -0.15, 3.7% at -0.2 and 2.2% at -0.3 deg (1.1% at -0.5 and
-//     1.0% at -1 deg); finer rows alone do not fix it (256 rows x 1024
-//     columns with rows crowded at the kink: 2.4% at -0.05 deg);
+//     that quarter (SkyShadowOnset) finds up to 63% at -0.01 deg,
+//     22% at -0.02, 11% at -0.03, 8.7% at -0.05, 6.3% at -0.07, 4.3% at -0.1,
+//     4.1% at -0.15, 3.2% at -0.2 and 2.2% at -0.3 deg (1.1% at -0.5 and
+//     1.0% at -1 deg; with w = 0.25 L throughout it was 93, 68, 52, 16, 8.7,
+//     7.4, 5.5, 3.7 and 2.2%), the worst mostly 1-4 deg of azimuth from the
+//     anti-light point, between the columns; finer rows alone do not fix it
+//     (256 rows x 1024 columns with rows crowded at the kink: 2.4% at -0.05 deg);
 //   * columns i = 0..azimuthCount-1 hold the azimuth relative to the light
 //       phi_i = 2 pi * i / azimuthCount,
 //     measured from the light's azimuth towards east (the same sense as the
@@ -230,6 +236,18 @@ SkySample sampleSkyTable(const SkyTable& table, const glm::dvec3& viewDirection)
 /// multiple scattering: E (P_R I_R + P_M I_M + I_ms).
 glm::dvec3 skyRadiance(const SkyTable& table, double mieAnisotropy, const glm::dvec3& viewDirection,
                        const glm::dvec3& illuminance);
+
+/// Cosine-weighted irradiance of the sky on an upward surface [illuminance
+/// unit]: E integral over the upper hemisphere of (P_R I_R + P_M I_M + I_ms)
+/// v.y d omega, by the midpoint rule on 64 azimuths x 16 elevations of
+/// skyRadiance. The clear sky's share of a scene's ambient light.
+glm::dvec3 skyIrradiance(const SkyTable& table, double mieAnisotropy, const glm::dvec3& illuminance);
+/// The same with a weight linear in the zenith cosine: E integral of (P_R I_R
+/// + P_M I_M + I_ms) v.y (a + b v.y) d omega. a = 1, b = 0 is skyIrradiance;
+/// a = 1/2, b = 3/4 is the sky's light as a thick cloud deck passes it on
+/// (the Eddington beam transmission's angular factor, overcastLight).
+glm::dvec3 skyIrradiance(const SkyTable& table, double mieAnisotropy, const glm::dvec3& illuminance, double a,
+                         double b);
 
 /// The sky behind far fog seen in a unit view direction v, phase-less: the
 /// table's horizon row (row 0) at v's azimuth, blended with the horizon
