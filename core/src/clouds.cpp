@@ -273,4 +273,10 @@ glm::dvec3 overcastRadiance(const CloudOvercast& overcast, const glm::dvec3& alb
     return out;
 }
 
+double overcastCoverTowards(const CloudOvercast& overcast, const glm::dvec3& direction) {
+    const double x = std::clamp(direction.y / 0.5, 0.0, 1.0);
+    const double t = x * x * (3.0 - 2.0 * x);  // smoothstep(0, 0.5, y), as GLSL
+    return overcast.horizonCover + (overcast.skyCover - overcast.horizonCover) * t;
+}
+
 }  // namespace aerial

@@ -154,6 +154,7 @@ FrameBlock makeFrameBlock(const Camera& camera, const CameraFrame& view, const P
     fb.overcastCover = static_cast<float>(
         std::isfinite(overcast.horizonCover) ? std::clamp(overcast.horizonCover, 0.0, 1.0) : 0.0);
     fb.overcastRadiance = toVec3(deck);
+    fb.overcastSkyCover = static_cast<float>(skyCover);
 
     // Without the global fog pass, the transparent meshes and particles get
     // no global fog either (they read the same density).

@@ -109,7 +109,9 @@ struct FrameBlock {
     float padGroundAmbient = 0.0f;
     /// The deck's underside [E / sr] (OvercastLight::radiance).
     Vec3 overcastRadiance;
-    float padOvercast = 0.0f;
+    /// CloudOvercast::skyCover: the deck over the whole sky (cosine-weighted),
+    /// what a mirror sees of it looking up (atmosphere.glsl, overcastCoverTowards).
+    float overcastSkyCover = 0.0f;
 };
 static_assert(offsetof(FrameBlock, clipFromWorld) == 0);
 static_assert(offsetof(FrameBlock, eye) == 64);
@@ -167,6 +169,7 @@ static_assert(offsetof(FrameBlock, moonTableShadowShare) == 596);
 static_assert(offsetof(FrameBlock, overcastCover) == 348);
 static_assert(offsetof(FrameBlock, groundAmbient) == 608);
 static_assert(offsetof(FrameBlock, overcastRadiance) == 624);
+static_assert(offsetof(FrameBlock, overcastSkyCover) == 636);
 static_assert(sizeof(FrameBlock) == 640);
 
 /// shaders/common/volume.glsl, VolumeBlock (binding 1): one fog volume.

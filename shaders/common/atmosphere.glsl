@@ -140,6 +140,15 @@ vec3 underOvercast(vec3 clear) {
     return frame.overcastCover > 0.0 ? mix(clear, frame.overcastRadiance, frame.overcastCover) : clear;
 }
 
+/// How much of the sky in direction r (unit) the deck hides, for what a mirror
+/// reflects (shading.glsl): the cover in front of the horizon (overcastCover,
+/// 1-11 deg up) for r level or below, rising to the whole sky's cosine-weighted
+/// cover (overcastSkyCover) from 30 deg up, smoothly (smoothstep in r.y from 0
+/// to 0.5); overcastCoverTowards in aerial/clouds.hpp on the CPU.
+float overcastCoverTowards(vec3 r) {
+    return mix(frame.overcastCover, frame.overcastSkyCover, smoothstep(0.0, 0.5, r.y));
+}
+
 /// The sky's fog colour in direction v (unit) (FogScene::fogColour): the
 /// clear sky's under the overcast.
 vec3 skyFogColourFrom(HorizonSkies h, vec3 v) { return underOvercast(clearSkyFogColourFrom(h, v)); }

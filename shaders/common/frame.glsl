@@ -31,6 +31,8 @@
 //                       the deck in front of the horizon (CloudOvercast::
 //                       horizonCover) and its underside's radiance: the sky's
 //                       fog colour is mix(sky, overcastRadiance, overcastCover)
+//   overcastSkyCover    the deck over the whole sky (CloudOvercast::skyCover):
+//                       with overcastCover, what a mirror sees of the deck
 //   fogDensity          global fog b [1/m]; fogFalloff c [1/m];
 //   fogBaseHeight       h0 [m]; fogColourMode 0 sky, 1 tinted, 2 custom
 //   fogColour           tint or radiance of the global fog
@@ -134,7 +136,7 @@ layout(std140, binding = 0) uniform FrameBlock {
     vec3 groundAmbient;
     float padGroundAmbient;
     vec3 overcastRadiance;
-    float padOvercast;
+    float overcastSkyCover;
 } frame;
 
 // Ray from the eye to the far plane at normalised device coordinates ndc

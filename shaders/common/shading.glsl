@@ -25,7 +25,10 @@
 // Requires common/frame.glsl, common/atmosphere.glsl, common/sky_table.glsl,
 // common/object.glsl.
 // Clouds: the sun and moon are multiplied by the cloud shadow map's
-// visibility at p (common/clouds.glsl) while a cloud layer is drawn.
+// visibility at p (common/clouds.glsl) while a cloud layer is drawn; E_sky
+// is then the ambient below the deck (groundAmbient), and L_sky(r) the clear
+// sky blended towards the deck's underside by the cover in r
+// (overcastCoverTowards, common/atmosphere.glsl).
 // Shadows: the light that casts the cascaded shadow maps (the brighter of
 // sun and moon) is multiplied by their visibility at p
 // (common/shadows.glsl) while they are drawn; the other light is not.
@@ -140,7 +143,14 @@ void shadeSurface(Surface s, vec3 p, vec3 n, vec3 v, out vec3 diffuse, out vec3 
         vec3 diffuseSky = frame.groundAmbient * (0.5 + 0.5 * r.y) / kPi;
         // Roughness is uniform per draw, so this branch is too (the table
         // lookups need no derivatives anyway).
-        vec3 sky = s.roughness < 1.0 ? mix(skyRadiance(r, false), diffuseSky, s.roughness) : diffuseSky;
+        vec3 sky = diffuseSky;
+        if (s.roughness < 1.0) {
+            // The mirrored sky: the clear sky's, under the deck where it hides it.
+            vec3 mirrored = skyRadiance(r, false);
+            if (frame.overcastCover > 0.0 || frame.overcastSkyCover > 0.0)
+                mirrored = mix(mirrored, frame.overcastRadiance, overcastCoverTowards(r));
+            sky = mix(mirrored, diffuseSky, s.roughness);
+        }
         vec2 ab = environmentBrdf(s.roughness, nv);
         specular += (f0 * ab.x + f90 * ab.y) * sky;
     }

@@ -132,6 +132,22 @@ struct CloudyNoon {
     }
 };
 
+// What a mirror sees of the deck: the horizon band's cover for a level (or
+// lower) direction, the whole sky's from 30 deg up, and in between the
+// smoothstep (3 t^2 - 2 t^3 of t = y / 0.5) of the two.
+TEST(CloudOvercast, CoverTowardsADirection) {
+    CloudOvercast o;
+    o.horizonCover = 0.9;
+    o.skyCover = 0.5;
+    EXPECT_DOUBLE_EQ(overcastCoverTowards(o, {1.0, 0.0, 0.0}), 0.9);
+    EXPECT_DOUBLE_EQ(overcastCoverTowards(o, glm::normalize(glm::dvec3(1.0, -0.3, 0.0))), 0.9);
+    EXPECT_DOUBLE_EQ(overcastCoverTowards(o, {0.0, 1.0, 0.0}), 0.5);
+    EXPECT_NEAR(overcastCoverTowards(o, {std::sqrt(0.75), 0.5, 0.0}), 0.5, 1e-15);
+    const double y = 0.2, t = y / 0.5, smooth = t * t * (3.0 - 2.0 * t);  // 0.352
+    EXPECT_NEAR(overcastCoverTowards(o, {std::sqrt(1.0 - y * y), y, 0.0}), 0.9 - 0.4 * smooth, 1e-15);
+    EXPECT_DOUBLE_EQ(overcastCoverTowards(CloudOvercast{}, {0.0, 1.0, 0.0}), 0.0);  // no clouds: none
+}
+
 TEST(OvercastLight, ClearSkyUnchanged) {
     CloudyNoon noon(0.0);
     const OvercastLight o = overcastLight(noon.state, noon.sun.table(), noon.moon.table());

@@ -193,6 +193,8 @@ TEST(FrameBlock, GroundAmbientAndFogUnderTheOvercast) {
     expectNear3(under.groundAmbient, 0.25 * sky + 0.75 * kPiD * glm::dvec3(0.01, 0.02, 0.0), 1e-7,
                 "ground ambient under the deck");
     EXPECT_FLOAT_EQ(under.overcastCover, 0.9f);
+    EXPECT_FLOAT_EQ(under.overcastSkyCover, 0.75f);
+    EXPECT_EQ(clear.overcastSkyCover, 0.0f);
     expectNear3(under.overcastRadiance, {0.01, 0.02, 0.0}, 1e-9, "deck radiance");
     ASSERT_GT(sky.x, 0.0);  // the airglow made the comparison meaningful
 }
@@ -408,7 +410,8 @@ TEST(FrameBlock, Std140OffsetsMatchTheGlslBlocks) {
                   AERIAL_OFFSET(FrameBlock, sunTableShadowShare),
                   AERIAL_OFFSET(FrameBlock, moonTableShadowShare),
                   AERIAL_OFFSET(FrameBlock, groundAmbient),
-                  AERIAL_OFFSET(FrameBlock, overcastRadiance)},
+                  AERIAL_OFFSET(FrameBlock, overcastRadiance),
+                  AERIAL_OFFSET(FrameBlock, overcastSkyCover)},
                  sizeof(FrameBlock));
     expectLayout(
         "common/volume.glsl", "VolumeBlock",

@@ -263,4 +263,12 @@ CloudOvercast cloudOvercast(const CloudField& clouds);
 glm::dvec3 overcastRadiance(const CloudOvercast& overcast, const glm::dvec3& albedo,
                             const glm::dvec3& irradianceOnTop);
 
+/// How much of the sky in direction `direction` (unit) the deck hides, for
+/// what a mirror reflects: horizonCover for a direction level or below,
+/// rising smoothly (smoothstep in its y from 0 to 0.5) to skyCover from 30
+/// deg up. The renderer blends the sky seen in its reflections towards the
+/// deck's underside by it (shading.glsl); a game can do the same:
+/// mix(clear sky, overcast radiance, overcastCoverTowards(overcast, r)).
+double overcastCoverTowards(const CloudOvercast& overcast, const glm::dvec3& direction);
+
 }  // namespace aerial
