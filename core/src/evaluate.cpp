@@ -232,8 +232,11 @@ CloudField prepareClouds(const PresetState& state) {
 OvercastLight overcastLight(const PresetState& state, const SkyTable& sunSky, const SkyTable& moonSky) {
     OvercastLight out;
     const double g = state.environment.atmosphere.mieAnisotropy;
-    out.clearSkyIrradiance = skyIrradiance(sunSky, g, state.sunLight.illuminanceSpace) +
-                             skyIrradiance(moonSky, g, state.moonLight.illuminanceSpace);
+    // One pass over each table gives both the clear sky's irradiance and the
+    // deck's weighting of it below.
+    const SkyCosineMoments sunMoments = skyCosineMoments(sunSky, g, state.sunLight.illuminanceSpace);
+    const SkyCosineMoments moonMoments = skyCosineMoments(moonSky, g, state.moonLight.illuminanceSpace);
+    out.clearSkyIrradiance = sunMoments.first + moonMoments.first;
     out.groundIrradiance = out.clearSkyIrradiance;
     const CloudField clouds = prepareClouds(state);
     out.overcast = cloudOvercast(clouds);
@@ -246,8 +249,8 @@ OvercastLight overcastLight(const PresetState& state, const SkyTable& sunSky, co
         const double mu = std::clamp(l.body.direction.y, 0.0, 1.0);
         return l.illuminance * mu * (0.5 + 0.75 * mu);
     };
-    const glm::dvec3 sky = skyIrradiance(sunSky, g, state.sunLight.illuminanceSpace, 0.5, 0.75) +
-                           skyIrradiance(moonSky, g, state.moonLight.illuminanceSpace, 0.5, 0.75);
+    const glm::dvec3 sky =
+        0.5 * (sunMoments.first + moonMoments.first) + 0.75 * (sunMoments.second + moonMoments.second);
     out.radiance = overcastRadiance(out.overcast, clouds.params.albedo,
                                     direct(state.sunLight) + direct(state.moonLight) + sky);
     const double c = out.overcast.skyCover;

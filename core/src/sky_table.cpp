@@ -253,28 +253,37 @@ glm::dvec3 skyRadiance(const SkyTable& table, double mieAnisotropy, const glm::d
     return illuminance * (rayleighPhase(mu) * s.rayleigh + miePhase(mu, mieAnisotropy) * s.mie + s.multiple);
 }
 
+SkyCosineMoments skyCosineMoments(const SkyTable& table, double mieAnisotropy,
+                                  const glm::dvec3& illuminance) {
+    SkyCosineMoments m;
+    if (table.azimuthCount < 1 || table.elevationCount < 1) return m;
+    constexpr int kAzimuths = 64;
+    constexpr int kElevations = 16;
+    for (int j = 0; j < kElevations; ++j) {
+        // Midpoint in elevation; d omega = cos(el) d(el) d(az).
+        const double el = (j + 0.5) / kElevations * 0.5 * kPi;
+        const double mu = std::sin(el);
+        const double weight = mu * std::cos(el) * (0.5 * kPi / kElevations) * (2.0 * kPi / kAzimuths);
+        glm::dvec3 ring(0.0);
+        for (int i = 0; i < kAzimuths; ++i) {
+            const double az = (i + 0.5) / kAzimuths * 2.0 * kPi;
+            const glm::dvec3 v(std::cos(el) * std::sin(az), mu, -std::cos(el) * std::cos(az));
+            ring += skyRadiance(table, mieAnisotropy, v, illuminance);
+        }
+        m.first += ring * weight;
+        m.second += ring * (weight * mu);
+    }
+    return m;
+}
+
 glm::dvec3 skyIrradiance(const SkyTable& table, double mieAnisotropy, const glm::dvec3& illuminance) {
-    return skyIrradiance(table, mieAnisotropy, illuminance, 1.0, 0.0);
+    return skyCosineMoments(table, mieAnisotropy, illuminance).first;
 }
 
 glm::dvec3 skyIrradiance(const SkyTable& table, double mieAnisotropy, const glm::dvec3& illuminance, double a,
                          double b) {
-    if (table.azimuthCount < 1 || table.elevationCount < 1) return glm::dvec3(0.0);
-    constexpr int kAzimuths = 64;
-    constexpr int kElevations = 16;
-    glm::dvec3 sum(0.0);
-    for (int j = 0; j < kElevations; ++j) {
-        // Midpoint in elevation; d omega = cos(el) d(el) d(az).
-        const double el = (j + 0.5) / kElevations * 0.5 * kPi;
-        const double weight = std::sin(el) * (a + b * std::sin(el)) * std::cos(el) *
-                              (0.5 * kPi / kElevations) * (2.0 * kPi / kAzimuths);
-        for (int i = 0; i < kAzimuths; ++i) {
-            const double az = (i + 0.5) / kAzimuths * 2.0 * kPi;
-            const glm::dvec3 v(std::cos(el) * std::sin(az), std::sin(el), -std::cos(el) * std::cos(az));
-            sum += skyRadiance(table, mieAnisotropy, v, illuminance) * weight;
-        }
-    }
-    return sum;
+    const SkyCosineMoments m = skyCosineMoments(table, mieAnisotropy, illuminance);
+    return a * m.first + b * m.second;
 }
 
 SkySample horizonSkySample(const SkyTable& table, const glm::dvec3& viewDirection) {

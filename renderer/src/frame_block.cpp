@@ -134,10 +134,13 @@ FrameBlock makeFrameBlock(const Camera& camera, const CameraFrame& view, const P
     fb.sunHorizonMultiple = toVec3(colourOf(in.sun.horizonMultiple));
     fb.moonHorizonMultiple = toVec3(colourOf(in.moon.horizonMultiple));
     const glm::dvec3 ambient =
-        (in.sun.valid && in.sun.table ? skyIrradiance(*in.sun.table, g, colourOf(sun.illuminanceSpace))
-                                      : glm::dvec3(0.0)) +
-        (in.moon.valid && in.moon.table ? skyIrradiance(*in.moon.table, g, colourOf(moon.illuminanceSpace))
-                                        : glm::dvec3(0.0));
+        in.clearSkyIrradiance
+            ? colourOf(*in.clearSkyIrradiance)
+            : (in.sun.valid && in.sun.table ? skyIrradiance(*in.sun.table, g, colourOf(sun.illuminanceSpace))
+                                            : glm::dvec3(0.0)) +
+                  (in.moon.valid && in.moon.table
+                       ? skyIrradiance(*in.moon.table, g, colourOf(moon.illuminanceSpace))
+                       : glm::dvec3(0.0));
     // The night sky (stars and airglow) fades in as the sun sets.
     const double nightSky = frame.stars ? starVisibility(sun.body.elevation) : 0.0;
     const glm::dvec3 airglow =

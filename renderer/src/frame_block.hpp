@@ -42,6 +42,10 @@ struct FrameBlockInputs {
     /// The cloud deck's light (overcastLight of the state and these tables;
     /// the default: no clouds).
     OvercastLight overcast;
+    /// The clear sky's irradiance when already computed for these tables
+    /// (overcast.clearSkyIrradiance, valid tables only); null: makeFrameBlock
+    /// integrates the tables itself (skyIrradiance).
+    const glm::dvec3* clearSkyIrradiance = nullptr;
 };
 
 /// sky.glsl's stars: the Gaussian radius never exceeds 0.4 of a cell's

@@ -288,7 +288,12 @@ void Renderer::Impl::render(const Camera& camera, const PresetState& state, cons
     inputs.moon = skyInput(moonSky, moonTable);
     // The cloud deck greys and dims the fog's colour and the ambient light
     // below it, while the layer is drawn (OvercastLight, aerial/evaluate.hpp).
-    if (frameDesc.passes.clouds) inputs.overcast = overcastLight(state, sunTable, moonTable);
+    if (frameDesc.passes.clouds) {
+        inputs.overcast = overcastLight(state, sunTable, moonTable);
+        // Its clear sky is the frame block's too (the same integral of the same tables).
+        if (inputs.sun.valid && inputs.moon.valid)
+            inputs.clearSkyIrradiance = &inputs.overcast.clearSkyIrradiance;
+    }
     const detail::FrameBlock block = detail::makeFrameBlock(camera, view, state, frameDesc, inputs);
     glNamedBufferSubData(frameBuffer, 0, sizeof block, &block);
 

@@ -197,6 +197,12 @@ TEST(FrameBlock, GroundAmbientAndFogUnderTheOvercast) {
     EXPECT_EQ(clear.overcastSkyCover, 0.0f);
     expectNear3(under.overcastRadiance, {0.01, 0.02, 0.0}, 1e-9, "deck radiance");
     ASSERT_GT(sky.x, 0.0);  // the airglow made the comparison meaningful
+    // A clear sky's irradiance computed already (the renderer's overcastLight)
+    // replaces the tables' integral, sanitised like it.
+    const glm::dvec3 given(0.3, 0.4, std::nan(""));
+    inputs.clearSkyIrradiance = &given;
+    const FrameBlock reused = blockFor(night, {}, inputs);
+    expectNear3(reused.skyAmbient, sky + glm::dvec3(0.3, 0.4, 0.0), 1e-7, "clear sky given");
 }
 
 TEST(FrameBlock, DiscsAtTheApparentPositionWithTheMoonsPhase) {

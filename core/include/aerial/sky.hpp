@@ -237,6 +237,16 @@ SkySample sampleSkyTable(const SkyTable& table, const glm::dvec3& viewDirection)
 glm::dvec3 skyRadiance(const SkyTable& table, double mieAnisotropy, const glm::dvec3& viewDirection,
                        const glm::dvec3& illuminance);
 
+/// The first two zenith-cosine moments of the sky's radiance over the upper
+/// hemisphere: first = E integral of (P_R I_R + P_M I_M + I_ms) v.y d omega
+/// (skyIrradiance), second = the same with v.y^2; one pass of the midpoint
+/// rule below for every weight linear in v.y (a first + b second).
+struct SkyCosineMoments {
+    glm::dvec3 first{0.0};
+    glm::dvec3 second{0.0};
+};
+SkyCosineMoments skyCosineMoments(const SkyTable& table, double mieAnisotropy, const glm::dvec3& illuminance);
+
 /// Cosine-weighted irradiance of the sky on an upward surface [illuminance
 /// unit]: E integral over the upper hemisphere of (P_R I_R + P_M I_M + I_ms)
 /// v.y d omega, by the midpoint rule on 64 azimuths x 16 elevations of
