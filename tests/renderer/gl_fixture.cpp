@@ -213,6 +213,12 @@ FogVolume testVolume(FogVolumeShape shape) {
     return v;
 }
 
+void addTestCloudDeck(PresetState& air) {
+    air.environment.clouds.coverage = 0.8;
+    air.environment.clouds.bottomM = 1500.0;
+    air.environment.clouds.thicknessM = 2000.0;
+}
+
 glm::dvec3 FogVsCpuTest::sunDirection() { return glm::normalize(glm::dvec3(0.5, 0.35, -0.8)); }
 glm::dvec3 FogVsCpuTest::moonDirection() { return glm::normalize(glm::dvec3(-0.6, 0.2, 0.5)); }
 

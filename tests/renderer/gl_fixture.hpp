@@ -94,6 +94,10 @@ renderer::Camera fogCamera(const glm::dvec3& eye, const glm::dvec3& target);
 /// rotated, non-uniformly scaled, a density gradient in an arbitrary direction.
 FogVolume testVolume(FogVolumeShape shape);
 
+/// The tests' cloud deck over `air`: coverage 0.8 from 1500 m up, 2000 m
+/// thick (an overcast that hides most of the sky, OvercastLight).
+void addTestCloudDeck(PresetState& air);
+
 /// Test geometry with known radiance (emission only, albedo 0): a wall
 /// perpendicular to the view at `wallDepth` [m], the ground y = 0 and a
 /// rotated box (the fog tests' scene).

@@ -213,9 +213,7 @@ TEST_F(FogVsCpu, GlobalFogTintedAndCustomColour) {
 // tinted volume take the same blend as the CPU.
 TEST_F(FogVsCpu, GlobalFogAndVolumesUnderAnOvercast) {
     PresetState air = baseFrame();
-    air.environment.clouds.coverage = 0.8;
-    air.environment.clouds.bottomM = 1500.0;
-    air.environment.clouds.thicknessM = 2000.0;
+    addTestCloudDeck(air);
     air.environment.fog = {0.004, 0.02, 3.0};
     FogVolume e = testVolume(FogVolumeShape::Ellipsoid);
     e.colourMode = FogColourMode::Tinted;

@@ -128,9 +128,7 @@ TEST_F(Reflections, AMirrorShowsTheClearSky) {
 // Under the deck a mirror shows its underside, not the clear sky's blue.
 TEST_F(Reflections, AMirrorShowsTheDeckUnderAnOvercast) {
     PresetState air = skyOnly();
-    air.environment.clouds.coverage = 0.8;
-    air.environment.clouds.bottomM = 1500.0;
-    air.environment.clouds.thicknessM = 2000.0;
+    addTestCloudDeck(air);
     const MirrorComparison c = run("overcast in a mirror", air);
     EXPECT_LT(c.maxError, kTolerance);
     EXPECT_GT(c.clearSkyError, 20.0 * kTolerance);  // the deck's part is there and seen
