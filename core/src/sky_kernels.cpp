@@ -297,14 +297,16 @@ AERIAL_INLINE void shellPsi(int nc, float alpha, float beta, int n, const float*
 /// v_s = (v.l - v_u mu) / sqrt(1 - mu^2) its component along the light's
 /// horizontal. Per LUT column that is a polynomial p0 + p1 v_s + p2 v_s^2
 /// (`poly`: [3 channels][3][n] scratch), interpolated at each column's light
-/// cosine at shellPsi's LUT column (`column`, [nc]); `psi` is shellPsi's
-/// output ([3][nc]), `across` [nc] scratch, `aniso` the shell's first plane,
-/// planes `stride` apart.
-AERIAL_INLINE void shellAniso(int nc, float alpha, float beta, int n, const float* __restrict aniso,
-                              std::size_t stride, float viewUp, float nuA, float nuB, const float kq[3],
-                              const float kd[3], const float* __restrict cosPhi, const float* __restrict psi,
-                              float* __restrict poly, const float* __restrict column,
-                              float* __restrict across, float* __restrict acc) {
+/// cosine at shellPsi's LUT column (`column`, [count]); `psi` is shellPsi's
+/// output ([3][nc]: channels nc apart, as acc's), `across` [count] scratch,
+/// `aniso` the shell's first plane, planes `stride` apart. The first `count`
+/// columns only (the multiple scattering's azimuths, kMsSkyColumns).
+AERIAL_INLINE void shellAniso(int count, int nc, float alpha, float beta, int n,
+                              const float* __restrict aniso, std::size_t stride, float viewUp, float nuA,
+                              float nuB, const float kq[3], const float kd[3], const float* __restrict cosPhi,
+                              const float* __restrict psi, float* __restrict poly,
+                              const float* __restrict column, float* __restrict across,
+                              float* __restrict acc) {
     const float vu = viewUp, vu2 = viewUp * viewUp;
     for (int c = 0; c < 3; ++c) {
         const float* __restrict du = aniso + std::size_t(c) * stride;
@@ -323,7 +325,7 @@ AERIAL_INLINE void shellAniso(int nc, float alpha, float beta, int n, const floa
         }
     }
     const float vsMax = fastSqrt(maxZero(1.0f - vu2) + 1e-30f);
-    for (int i = 0; i < nc; ++i) {
+    for (int i = 0; i < count; ++i) {
         const float mu = alpha + beta * cosPhi[i];
         const float sinS = fastSqrt(maxZero(1.0f - mu * mu) + 1e-8f);
         const float vs = (nuA + nuB * cosPhi[i] - vu * mu) / sinS;
@@ -335,7 +337,7 @@ AERIAL_INLINE void shellAniso(int nc, float alpha, float beta, int n, const floa
         const float* __restrict p2 = p1 + n;
         const float* __restrict psiC = psi + std::size_t(c) * nc;
         float* __restrict out = acc + std::size_t(c) * nc;
-        for (int i = 0; i < nc; ++i) {
+        for (int i = 0; i < count; ++i) {
             const float u = column[i], vs = across[i];
             const int iu = static_cast<int>(u);
             const float f = u - float(iu);
@@ -352,12 +354,13 @@ AERIAL_INLINE void shellAniso(int nc, float alpha, float beta, int n, const floa
 /// anisotropy is added per shell, shellAniso).
 AERIAL_INLINE void msLayer(int nc, const LayerConstants& k, const float* __restrict lo,
                            const float* __restrict up, float* __restrict acc) {
+    constexpr int count = kMsSkyColumns;  // of the nc-strided records
     for (int c = 0; c < 3; ++c) {
         const float wa = k.msA[c] + k.msA[3 + c], wb = k.msB[c] + k.msB[3 + c];
         const float* __restrict pa = lo + std::size_t(10 + c) * nc;
         const float* __restrict pb = up + std::size_t(10 + c) * nc;
         float* __restrict out = acc + std::size_t(c) * nc;
-        for (int i = 0; i < nc; ++i) out[i] += wa * pa[i] + wb * pb[i];
+        for (int i = 0; i < count; ++i) out[i] += wa * pa[i] + wb * pb[i];
     }
 }
 
@@ -406,7 +409,7 @@ AERIAL_INLINE void lightAtShell(const SkyKernelArgs& a, int j, float maxU) {
         const float* p0 = a.psi + std::size_t(j) * n;
         const float* p1 = a.psi + (rows + std::size_t(j)) * n;
         const float* p2 = a.psi + (2 * rows + std::size_t(j)) * n;
-        shellPsi(nc, alpha, beta, n, p0, p1, p2, a.cosPhi, r + 10 * nc, r + 11 * nc, r + 12 * nc,
+        shellPsi(kMsSkyColumns, alpha, beta, n, p0, p1, p2, a.msCosPhi, r + 10 * nc, r + 11 * nc, r + 12 * nc,
                  r + 13 * nc);
         // The anisotropy at every kAnisoShellStride-th shell (and the last)
         // only, each also with its share of the skipped shells' weights
@@ -435,8 +438,8 @@ AERIAL_INLINE void lightAtShell(const SkyKernelArgs& a, int j, float maxU) {
                 kq[c] = wr * a.rayleighBand2 + wm * a.mieBand2;
                 kd[c] = wm * a.mieBand1;
             }
-            shellAniso(nc, alpha, beta, n, a.aniso + std::size_t(j) * n, rows * n,
-                       j == 0 ? a.viewUp0 : a.layer[j - 1].viewUp, a.nuA, a.nuB, kq, kd, a.cosPhi,
+            shellAniso(kMsSkyColumns, nc, alpha, beta, n, a.aniso + std::size_t(j) * n, rows * n,
+                       j == 0 ? a.viewUp0 : a.layer[j - 1].viewUp, a.nuA, a.nuB, kq, kd, a.msCosPhi,
                        r + 10 * nc, a.anisoPoly, r + 13 * nc, r + 14 * nc, a.acc + 6 * nc);
         }
     }

@@ -107,6 +107,12 @@ constexpr int kShellRecord = 15;
 constexpr int kAnisoShellStride = 4;
 /// Shell records kept at a time: a layer's stencil spans four shells.
 constexpr int kShellSlots = 4;
+/// Multiple scattering is integrated along the view rays of this many
+/// azimuths only, phi_k = pi k / (kMsSkyColumns - 1) from the light, and
+/// interpolated between them into the table's columns (sky_solver.cpp,
+/// spreadMultiple): it is smooth in azimuth (the light's zenith cosine at a
+/// shell is alpha + beta cos(phi)), and this is its cost divided by ~5.
+constexpr int kMsSkyColumns = 16;
 
 struct SkyKernelArgs {
     int columns;
@@ -115,6 +121,7 @@ struct SkyKernelArgs {
     float knee;
     float alpha0, beta0, horizonCos0, angleScale0;  // the viewer's shell
     const float* cosPhi;                            // [columns]
+    const float* msCosPhi;                          // [kMsSkyColumns] the multiple scattering's azimuths
     const float* shadowIn;                          // [columns]
     const float* shadowOut;                         // [columns]
     const LayerConstants* layer;                    // [layers]
@@ -132,7 +139,9 @@ struct SkyKernelArgs {
     float rayleighBand2, mieBand1, mieBand2;  // MultipleScatteringLut's Legendre factors
     float* anisoPoly;                         // [9][psiCosines] scratch of shellAniso
     float* shells;  // [kShellSlots][kShellRecord][columns] scratch: the light at the shells in use
-    float* acc;     // [9][columns]: R rgb, M rgb, multiple rgb (with psi)
+    /// [9][columns]: R rgb, M rgb, multiple rgb (with psi; its first
+    /// kMsSkyColumns entries per channel only, at msCosPhi; columns >= kMsSkyColumns)
+    float* acc;
 };
 
 /// The inner loop of a sky row over contiguous float arrays, no branch: the
@@ -140,8 +149,8 @@ struct SkyKernelArgs {
 /// integral times its curvature factor and lit fraction, summed into acc
 /// (Rayleigh rgb, Mie rgb), and with `psi` the multiple scattering of each
 /// layer, msA Psi(a) + msB Psi(b) (multiple rgb; with `aniso`, each
-/// scatterer's sigma_X A_X(v) added to its Psi, per shell). `columns` is a multiple of
-/// 16 (no scalar tail).
+/// scatterer's sigma_X A_X(v) added to its Psi, per shell) at the
+/// kMsSkyColumns azimuths msCosPhi. `columns` is a multiple of 16 (no scalar tail).
 void skyKernel(const SkyKernelArgs& a);
 
 struct EdgeKernelArgs {

