@@ -150,13 +150,18 @@ void MultipleScatteringLut::buildPhases() {
     if (g == phaseG_) return;
     phaseG_ = g;
     constexpr int kLegendre = 4096;
-    mieG1_ = mieG2_ = 0.0;
+    double g1 = 0.0, g2 = 0.0, g3 = 0.0;
     for (int k = 0; k < kLegendre; ++k) {
         const double t = (k + 0.5) / kLegendre, mu = 1.0 - 2.0 * t * t;
         const double w = 2.0 * kPi * miePhase(mu, g) * 4.0 * t / kLegendre;
-        mieG1_ += w * mu;
-        mieG2_ += w * (1.5 * mu * mu - 0.5);
+        g1 += w * mu;
+        g2 += w * (1.5 * mu * mu - 0.5);
+        g3 += w * (2.5 * mu * mu - 1.5) * mu;
     }
+    // Delta-M with f = g_3, the delta through the Fejer window (sky_multiple.hpp, "Mie's truncation").
+    const double f = g3;
+    mieG1_ = g1 - 0.5 * f;
+    mieG2_ = g2 - 0.9 * f;
     // The cells' sub-samples (the nodes' own mappings): zenith (cos, sin,
     // Jacobian) and azimuth (cos, Jacobian).
     constexpr int n = kMsPhaseSubsamples;

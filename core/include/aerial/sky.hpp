@@ -49,8 +49,12 @@
 // the viewer, the view-dependent remainder A_X(v) = integral (P_X(omega.v) -
 // 1/(4 pi)) L_1(omega) d omega of each scatterer X, from the dipole and
 // quadrupole moments of the once-scattered light L_1 at each height and sun
-// cosine (Legendre series of the phases to l = 2: exact for Rayleigh, the
-// smooth part of Mie's peak). Hillaire's isotropic phases left the horizon
+// cosine (Legendre series of the phases to l = 2: exact for Rayleigh; for
+// Mie, delta-M: the forward peak's share g_3 as light going straight on,
+// read through the moments' Fejer window, and the rest to l = 2, since the
+// plain series sent a directional field (a point in the earth's shadow at
+// twilight) 30x too much light straight back; sky_multiple.hpp, "Mie's
+// truncation"). Hillaire's isotropic phases left the horizon
 // opposite a low sun 7-13% too dark against the path tracer (sun -2 to +10
 // deg). The third order's field L_2 adds its moments the same way (and the
 // later orders theirs, as L_2's times the tail's 1 / (1 - f_ms)); the
