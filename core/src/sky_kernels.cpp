@@ -542,6 +542,26 @@ AERIAL_HOT_KERNEL void edgeKernel(const EdgeKernelArgs& a) {
                     a.p + (3 + c) * m, a.q + (3 + c) * m, a.out + c * m, a.out + (3 + c) * m);
 }
 
+/// exp of a 4-point weighted sum of logarithms per column (expNeg of its
+/// negative: valid for sums in (-87, 87), which the callers' values are).
+AERIAL_HOT_KERNEL void spreadKernel(const SpreadKernelArgs& a) {
+    const int n = a.count;
+    const int* __restrict i0 = a.index;
+    const int* __restrict i1 = a.index + n;
+    const int* __restrict i2 = a.index + 2 * n;
+    const int* __restrict i3 = a.index + 3 * n;
+    const float* __restrict w0 = a.weight;
+    const float* __restrict w1 = a.weight + n;
+    const float* __restrict w2 = a.weight + 2 * n;
+    const float* __restrict w3 = a.weight + 3 * n;
+    const float* __restrict v = a.logValue;
+    float* __restrict out = a.out;
+    for (int i = 0; i < n; ++i) {
+        const float x = w0[i] * v[i0[i]] + w1[i] * v[i1[i]] + w2[i] * v[i2[i]] + w3[i] * v[i3[i]];
+        out[i] = expNeg(-x);
+    }
+}
+
 /// The sun seen from one crossing of a multiple-scattering ray, for every
 /// combination of sun cosine and azimuth (as skyShell, without the roots).
 AERIAL_HOT_KERNEL void msCrossingKernel(const MsCrossingArgs& a) {

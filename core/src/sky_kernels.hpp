@@ -153,6 +153,18 @@ struct SkyKernelArgs {
 /// kMsSkyColumns azimuths msCosPhi. `columns` is a multiple of 16 (no scalar tail).
 void skyKernel(const SkyKernelArgs& a);
 
+/// The multiple scattering's spread from its kMsSkyColumns azimuths into
+/// the table's columns (sky_solver.cpp, spreadMultiple): per column
+/// out = exp(sum of 4 weights x ln value at 4 indices), Catmull-Rom in ln.
+struct SpreadKernelArgs {
+    int count;              // columns, a multiple of 16
+    const int* index;       // [4][count] azimuths 0..kMsSkyColumns-1 (mirrored at the ends)
+    const float* weight;    // [4][count]
+    const float* logValue;  // [kMsSkyColumns] ln of the azimuths' values (each > -87)
+    float* out;             // [count]
+};
+void spreadKernel(const SpreadKernelArgs& a);
+
 struct EdgeKernelArgs {
     int count;              // lit pieces, a multiple of 16 (those past the real ones: any finite values)
     int stride;             // >= count: distance between the channels' arrays

@@ -161,6 +161,26 @@ SkySolver::Impl::Impl(const SkySolverDesc& d) : desc(d) {
     msCosPhiF.assign(std::size_t(kMsSkyColumns), 1.0f);
     for (int k = 0; k < kMsSkyColumns; ++k)
         msCosPhiF[std::size_t(k)] = float(std::cos(kPi * k / (kMsSkyColumns - 1)));
+    // spreadMultiple's stencil: column i at azimuth 2 pi i / azimuthCount is
+    // u = 2 i (K - 1) / azimuthCount in units of the K azimuths; Catmull-Rom
+    // through the azimuths k - 1 .. k + 2 around it, mirrored at 0 and K - 1
+    // (padding: weight 0).
+    spreadIndex.assign(std::size_t(4) * paddedColumns, 0);
+    spreadWeight.assign(std::size_t(4) * paddedColumns, 0.0f);
+    for (int i = 0; i < columns; ++i) {
+        constexpr int kK = kMsSkyColumns;
+        const double u = 2.0 * i * (kK - 1) / azimuthCount;
+        const int k = std::min(int(u), kK - 2);
+        const double f = u - k;
+        const double w[4] = {0.5 * f * (-1.0 + f * (2.0 - f)), 1.0 + 0.5 * f * f * (-5.0 + 3.0 * f),
+                             0.5 * f * (1.0 + f * (4.0 - 3.0 * f)), 0.5 * f * f * (f - 1.0)};
+        for (int m = 0; m < 4; ++m) {
+            const int at = k - 1 + m;
+            spreadIndex[std::size_t(m * paddedColumns + i)] =
+                at < 0 ? -at : (at > kK - 1 ? 2 * (kK - 1) - at : at);
+            spreadWeight[std::size_t(m * paddedColumns + i)] = float(w[m]);
+        }
+    }
     for (SkyTable& t : tables) {
         t.azimuthCount = azimuthCount;
         t.elevationCount = elevationCount;
@@ -481,7 +501,6 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
 // (linear in the value: 1.6% at -6 deg).
 void SkySolver::Impl::spreadMultiple(Scratch& s) const {
     constexpr int kK = kMsSkyColumns;
-    auto mirrored = [](int k) { return k < 0 ? -k : (k > kK - 1 ? 2 * (kK - 1) - k : k); };
     for (int c = 0; c < 3; ++c) {
         float* x = &s.acc[std::size_t((6 + c) * paddedColumns)];
         float value[kK], logValue[kK];
@@ -491,20 +510,21 @@ void SkySolver::Impl::spreadMultiple(Scratch& s) const {
             positive = positive && value[k] > 1e-30f;
             logValue[k] = positive ? std::log(value[k]) : 0.0f;
         }
-        for (int i = 0; i < columns; ++i) {
+        if (positive) {
+            SpreadKernelArgs a{};
+            a.count = paddedColumns;
+            a.index = spreadIndex.data();
+            a.weight = spreadWeight.data();
+            a.logValue = logValue;
+            a.out = x;
+            spreadKernel(a);
+            continue;
+        }
+        for (int i = 0; i < columns; ++i) {  // linear between the two nearest
             const double u = 2.0 * i * (kK - 1) / azimuthCount;
             const int k = std::min(int(u), kK - 2);
             const float f = float(u - k);
-            if (!positive) {
-                x[i] = value[k] + f * (value[k + 1] - value[k]);
-                continue;
-            }
-            const float p0 = logValue[mirrored(k - 1)], p1 = logValue[k], p2 = logValue[k + 1];
-            const float p3 = logValue[mirrored(k + 2)];
-            const float cr = p1 + 0.5f * f *
-                                      ((p2 - p0) + f * ((2.0f * p0 - 5.0f * p1 + 4.0f * p2 - p3) +
-                                                        f * (3.0f * (p1 - p2) + p3 - p0)));
-            x[i] = std::exp(cr);
+            x[i] = value[k] + f * (value[k + 1] - value[k]);
         }
     }
 }

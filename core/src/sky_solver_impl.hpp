@@ -65,6 +65,8 @@ struct SkySolver::Impl {
     std::vector<double> rowElevation;  // [elevationCount] the rows' elevations (the table's mapping)
     std::vector<float> cosPhiF;        // [padded columns]
     std::vector<float> msCosPhiF;      // [kMsSkyColumns] the multiple scattering's azimuths (sky_kernels.hpp)
+    std::vector<int> spreadIndex;      // [4][padded columns] spreadMultiple's Catmull-Rom stencil
+    std::vector<float> spreadWeight;   // [4][padded columns] and weights
 
     // Double-buffered output: tables[front] is published.
     SkyTable tables[2];
