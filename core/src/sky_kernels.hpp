@@ -160,7 +160,7 @@ struct SpreadKernelArgs {
     int count;              // columns, a multiple of 16
     const int* index;       // [4][count] azimuths 0..kMsSkyColumns-1 (mirrored at the ends)
     const float* weight;    // [4][count]
-    const float* logValue;  // [kMsSkyColumns] ln of the azimuths' values (each > -87)
+    const float* logValue;  // [kMsSkyColumns] ln of the azimuths' values, in [-69, 60]
     float* out;             // [count]
 };
 void spreadKernel(const SpreadKernelArgs& a);

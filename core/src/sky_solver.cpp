@@ -508,7 +508,9 @@ void SkySolver::Impl::spreadMultiple(Scratch& s) const {
         for (int k = 0; k < kK; ++k) {
             value[k] = x[k] > 0.0f && std::isfinite(x[k]) ? x[k] : 0.0f;
             positive = positive && value[k] > 1e-30f;
-            logValue[k] = positive ? std::log(value[k]) : 0.0f;
+            // ln in [-69, 60]: Catmull-Rom overshoots by at most 0.148 of the
+            // range, so the sum stays inside spreadKernel's (-87, 87).
+            logValue[k] = positive ? std::min(std::log(value[k]), 60.0f) : 0.0f;
         }
         if (positive) {
             SpreadKernelArgs a{};
