@@ -536,9 +536,9 @@ void SkySolver::Impl::spreadMultiple(Scratch& s) const {
 // lit part of such a layer only, [s0, sIn] or [sOut, s1], added here. At a
 // shadow edge the point lies on the planet's shadow cylinder, so its ray to
 // the light grazes the ground: its optical depth is that of the grazing ray
-// from the edge's height, interpolated linearly in height between the
-// grazing rays of the layer's two shells (column 0 of their optical-depth
-// rows). From there the optical depth falls steeply and then levels off
+// from the edge's height, interpolated linearly in the tangent length
+// sqrt(r^2 - Rg^2) between the grazing rays of the layer's two shells
+// (column 0 of their optical-depth rows). From there the optical depth falls steeply and then levels off
 // towards the lit shell (the light's perigee rises along the view ray, and
 // tau falls about exponentially with it), so it is taken log-linear along the
 // piece (edgeKernel). Multiplying the whole layer's integral by its lit
@@ -559,8 +559,14 @@ void SkySolver::Impl::shadowEdgeLayers(Scratch& s, double r0, double sinEl) {
         if (!(len > 0.0)) return;
         const double edge = edgeAtStart ? from : to;
         const double r = std::sqrt(std::max(r0 * r0 + 2.0 * r0 * edge * sinEl + edge * edge, 0.0));
+        // Linear in the tangent length z = sqrt(r^2 - Rg^2), the grazing ray's
+        // path down to the ground, which its optical depth grows with
+        // (linear in height put it 4% low 22 m above the ground, and the sky
+        // above the earth's shadow of a sun 0.07 deg down 7% too bright).
         const double ha = shellHeight[std::size_t(l)], hb = shellHeight[std::size_t(l) + 1];
-        const double f = hb > ha ? std::clamp((r - rg - ha) / (hb - ha), 0.0, 1.0) : 0.0;
+        auto tangent = [&](double radius) { return std::sqrt(std::max((radius - rg) * (radius + rg), 0.0)); };
+        const double za = tangent(rg + ha), zb = tangent(rg + hb);
+        const double f = zb > za ? std::clamp((tangent(r) - za) / (zb - za), 0.0, 1.0) : 0.0;
         // The lit shell: the lower one (l) for a piece that ends at the edge.
         const int shell = edgeAtStart ? l + 1 : l;
         const double alpha = shell == 0 ? sinLight : double(s.layer[std::size_t(shell) - 1].alpha);
