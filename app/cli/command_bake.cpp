@@ -15,7 +15,8 @@
 //       aerialLight ("sun"/"moon"), aerialTimeHours, aerialLightAzimuthRad,
 //       aerialLightDirection (V3d), aerialMapping (the mapping in words) and
 //       the row mapping's parameters (aerialBandElevationRad, aerialBandShare,
-//       aerialShadowElevationRad, aerialShadowWidthRad, aerialShadowShare),
+//       aerialShadowElevationRad, aerialShadowWidthRad, aerialShadowShare) and
+//       the column mapping's (aerialCapCurvature, aerialCapStrength),
 //       aerialMieAnisotropy, aerialLightIlluminance (V3d, above the
 //       atmosphere) and aerialRadiance (how to turn a texel into radiance).
 //   sky_<NNN>_<HHMM>_radiance.exr
@@ -51,6 +52,7 @@
 //   el = asin(max(v.y, 0)), j = (H - 1) v(el)   (v: the row mapping, kRowMapping;
 //                                                  (H - 1) sqrt(el / (pi/2)) above 1 deg)
 //   phi = (atan2(v.x, -v.z) - light_azimuth_rad) mod 2 pi,  i = W phi / (2 pi)
+//                                                 (kColumnMapping: warped by cap_curvature)
 //   I_R, I_M, I_ms = bilinear(i, j), the azimuth wrapping;  mu = dot(v, light)
 //   L += E (3/(16 pi) (1 + mu^2) I_R + P_CS(mu, g) I_M + I_ms),
 // E = illuminance_space_rgb of that light, g = parameters.atmosphere.mie.
@@ -130,17 +132,26 @@ constexpr const char* kChannelNames[kChannelCount] = {"rayleigh.R", "rayleigh.G"
 constexpr const char* kRowMapping =
     "row j = EXR line y (y = 0 first) holds the elevation el_j [rad] above the horizon where v(el_j) = "
     "j / (H - 1), v(el) = (1 - a - b) sqrt(el / (pi/2)) + a atan(el / E) / atan(pi/2 / E) + "
-    "b (atan((el - c) / w) - atan(-c / w)) / (atan((pi/2 - c) / w) - atan(-c / w)), with E = "
-    "band_elevation_rad, a = band_share, c = shadow_elevation_rad, w = shadow_width_rad, b = shadow_share "
+    "b (atan((el - c) / w) - atan(-c / w)) / (atan((pi/2 - c) / w) - atan(-c / w)) + "
+    "d/2 (1 - s sqrt(min(|el - c|, c) / c)) (s = 1 below c, -1 above), with E = "
+    "band_elevation_rad, a = band_share, c = shadow_elevation_rad, w = shadow_width_rad, b = shadow_share, "
+    "d = (16/63) cap_strength where cap_curvature > 0, else 0 "
     "(row_mapping per step and light; EXR header aerialBandElevationRad, aerialBandShare, "
-    "aerialShadowElevationRad, aerialShadowWidthRad, aerialShadowShare; a term is absent when its share "
-    "is 0). A light above 1 deg has a = b = 0: el_j = pi/2 * (j / (H - 1))^2 (quadratic: more rows near "
+    "aerialShadowElevationRad, aerialShadowWidthRad, aerialShadowShare, aerialCapCurvature, "
+    "aerialCapStrength; a term is absent when its share is 0). A light above 1 deg has a = b = 0: el_j = "
+    "pi/2 * (j / (H - 1))^2 (quadratic: more rows near "
     "the horizon); a low or set light crowds rows towards the horizon and the earth's shadow. Directions "
     "below the horizon use row 0";
 constexpr const char* kColumnMapping =
     "column i = EXR pixel x holds the azimuth relative to the light phi_i = 2 pi i / W rad, measured from "
-    "the "
-    "light's azimuth towards east; the azimuth wraps (column W = column 0) and column i equals column W - i";
+    "the light's azimuth towards east; the azimuth wraps (column W = column 0) and column i equals column "
+    "W - i. Where cap_curvature k > 0 and cap_strength g > 0 (a light less than 1 deg below the horizon) "
+    "the columns of the row at elevation el are instead piecewise linear in psi = |pi - phi| through the "
+    "knots x = |i - W/2| = (0, 3, 15, 25, 64) W / 128 at psi = (0, p1, p2, p3, pi), p_m = g q_m + "
+    "(1 - g) 2 pi x_m / W with q1 = P, q2 = P + D, q3 = F2, P = min(sqrt(max(c - el, 0) / k), F), "
+    "F = min(sqrt(c / k), pi/4), D = max(F / 2, 1 deg), F2 = min(2 (F + D), 3 pi / 4) (the onset of the "
+    "lit sky around the cap of the earth's shadow, el = c - k psi^2, on column W/2 -+ 3 W / 128 in "
+    "every row)";
 
 constexpr const char* kRadianceMapping =
     "equirectangular over the whole sphere: pixel (x, y) of a W x H image looks along azimuth "
@@ -205,6 +216,8 @@ void writeSkyExr(const fs::path& path, const SkyTable& table, const char* light,
             header.insert("aerialShadowElevationRad", Imf::DoubleAttribute(table.shadowElevation));
             header.insert("aerialShadowWidthRad", Imf::DoubleAttribute(table.shadowWidth));
             header.insert("aerialShadowShare", Imf::DoubleAttribute(table.shadowShare));
+            header.insert("aerialCapCurvature", Imf::DoubleAttribute(table.capCurvature));
+            header.insert("aerialCapStrength", Imf::DoubleAttribute(table.capStrength));
             header.insert("aerialMieAnisotropy", Imf::DoubleAttribute(mieAnisotropy));
             header.insert(
                 "aerialLightIlluminance",
@@ -318,7 +331,9 @@ Json lightBakeToJson(const SkyTable& table, const std::string& file) {
               {"band_share", table.bandShare},
               {"shadow_elevation_rad", table.shadowElevation},
               {"shadow_width_rad", table.shadowWidth},
-              {"shadow_share", table.shadowShare}}},
+              {"shadow_share", table.shadowShare},
+              {"cap_curvature", table.capCurvature},
+              {"cap_strength", table.capStrength}}},
             {"horizon_rayleigh", toJson(table.horizonRayleigh)},
             {"horizon_mie", toJson(table.horizonMie)},
             {"horizon_multiple", toJson(table.horizonMultiple)}};

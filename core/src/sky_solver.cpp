@@ -75,6 +75,24 @@ constexpr int kDefaultOpticalDepthAngles = 128;
 
 /// Distance along a ray from radius r0 with zenith cosine mu >= 0 to the
 /// sphere of radius r >= r0, given dr2 = r^2 - r0^2 >= 0 (no cancellation).
+// spreadMultiple's stencil for column i at azimuth phi [rad, 0..pi] from
+// the light: u = phi (K - 1) / pi in units of the K azimuths; Catmull-Rom
+// through the azimuths k - 1 .. k + 2 around it, mirrored at 0 and K - 1
+// (padding: weight 0). index and weight are [4][padded].
+void spreadStencil(double phi, int i, int padded, int* index, float* weight) {
+    constexpr int kK = kMsSkyColumns;
+    const double u = std::clamp(phi / kPi, 0.0, 1.0) * (kK - 1);
+    const int k = std::min(int(u), kK - 2);
+    const double f = u - k;
+    const double w[4] = {0.5 * f * (-1.0 + f * (2.0 - f)), 1.0 + 0.5 * f * f * (-5.0 + 3.0 * f),
+                         0.5 * f * (1.0 + f * (4.0 - 3.0 * f)), 0.5 * f * f * (f - 1.0)};
+    for (int m = 0; m < 4; ++m) {
+        const int at = k - 1 + m;
+        index[m * padded + i] = at < 0 ? -at : (at > kK - 1 ? 2 * (kK - 1) - at : at);
+        weight[m * padded + i] = float(w[m]);
+    }
+}
+
 double upwardCrossing(double r0, double mu, double dr2) {
     if (!(dr2 > 0.0)) return 0.0;
     const double b = r0 * mu;
@@ -167,19 +185,12 @@ SkySolver::Impl::Impl(const SkySolverDesc& d) : desc(d) {
     // (padding: weight 0).
     spreadIndex.assign(std::size_t(4) * paddedColumns, 0);
     spreadWeight.assign(std::size_t(4) * paddedColumns, 0.0f);
+    phi.assign(std::size_t(columns), 0.0);
     for (int i = 0; i < columns; ++i) {
-        constexpr int kK = kMsSkyColumns;
-        const double u = 2.0 * i * (kK - 1) / azimuthCount;
-        const int k = std::min(int(u), kK - 2);
-        const double f = u - k;
-        const double w[4] = {0.5 * f * (-1.0 + f * (2.0 - f)), 1.0 + 0.5 * f * f * (-5.0 + 3.0 * f),
-                             0.5 * f * (1.0 + f * (4.0 - 3.0 * f)), 0.5 * f * f * (f - 1.0)};
-        for (int m = 0; m < 4; ++m) {
-            const int at = k - 1 + m;
-            spreadIndex[std::size_t(m * paddedColumns + i)] =
-                at < 0 ? -at : (at > kK - 1 ? 2 * (kK - 1) - at : at);
-            spreadWeight[std::size_t(m * paddedColumns + i)] = float(w[m]);
-        }
+        phi[std::size_t(i)] = 2.0 * kPi * i / azimuthCount;
+        cosPhi[std::size_t(i)] = std::cos(phi[std::size_t(i)]);
+        cosPhiF[std::size_t(i)] = float(cosPhi[std::size_t(i)]);
+        spreadStencil(phi[std::size_t(i)], i, paddedColumns, spreadIndex.data(), spreadWeight.data());
     }
     for (SkyTable& t : tables) {
         t.azimuthCount = azimuthCount;
@@ -215,6 +226,11 @@ SkySolver::Impl::Impl(const SkySolverDesc& d) : desc(d) {
         s.edgeOut.assign(6 * pieces, 0.0f);
         s.edgeColumn.assign(pieces, 0);
         s.depthRow.resize(angles);
+        s.rowPhi.assign(std::size_t(columns), 0.0);
+        s.rowCosPhi.assign(std::size_t(columns), 1.0);
+        s.rowCosPhiF.assign(std::size_t(paddedColumns), 1.0f);
+        s.rowSpreadIndex.assign(std::size_t(4) * paddedColumns, 0);
+        s.rowSpreadWeight.assign(std::size_t(4) * paddedColumns, 0.0f);
     }
     msScratch.resize(std::size_t(desc.threadCount));
     pool.emplace(desc.threadCount);
@@ -297,12 +313,42 @@ void SkySolver::Impl::buildDepthRow(int row, Scratch& s) {
                     s.depthRow, out, out + plane, out + 2 * plane);
 }
 
+// The azimuths of a row's columns 0..azimuthCount/2 (skyTableAzimuth): the
+// uniform ones, or where the column mapping warps the row (around the cap
+// of the earth's shadow opposite a light just set) the row's own, with their
+// cosines and spreadMultiple's stencil.
+void SkySolver::Impl::rowColumns(double elevation, Scratch& s) const {
+    const SkyTable& back = tables[1 - front];
+    const bool uniform = !skyTableColumnsWarped(back);
+    if (uniform) {
+        s.phi = phi.data();
+        s.cosPhi = cosPhi.data();
+        s.cosPhiF = cosPhiF.data();
+        s.spreadIndex = spreadIndex.data();
+        s.spreadWeight = spreadWeight.data();
+        return;
+    }
+    for (int i = 0; i < columns; ++i) {
+        const double p = std::min(skyTableAzimuth(back, double(i), elevation), kPi);
+        s.rowPhi[std::size_t(i)] = p;
+        s.rowCosPhi[std::size_t(i)] = std::cos(p);
+        s.rowCosPhiF[std::size_t(i)] = float(s.rowCosPhi[std::size_t(i)]);
+        spreadStencil(p, i, paddedColumns, s.rowSpreadIndex.data(), s.rowSpreadWeight.data());
+    }
+    s.phi = s.rowPhi.data();
+    s.cosPhi = s.rowCosPhi.data();
+    s.cosPhiF = s.rowCosPhiF.data();
+    s.spreadIndex = s.rowSpreadIndex.data();
+    s.spreadWeight = s.rowSpreadWeight.data();
+}
+
 // One elevation row: columns 0..azimuthCount/2, mirrored into the back table.
 void SkySolver::Impl::solveRow(int row, Scratch& s) {
     const double rg = air.planetRadius;
     const double h0 = shellHeight[0];
     const double r0 = rg + h0;
     const double elevation = rowElevation[std::size_t(row)];
+    rowColumns(elevation, s);
     const double sinEl = row == elevationCount - 1 ? 1.0 : std::sin(elevation);
     const double cosEl = row == elevationCount - 1 ? 0.0 : std::cos(elevation);
 
@@ -394,7 +440,7 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
     //   x . l < 0:               r0 sinL + s mu < 0
     const double c2 = (r0 * cosL - rg) * (r0 * cosL + rg);
     for (int i = 0; i < columns; ++i) {
-        const double mu = sinEl * sinL + cosEl * cosL * cosPhi[std::size_t(i)];
+        const double mu = sinEl * sinL + cosEl * cosL * s.cosPhi[i];
         // x . l is linear in s: lit at both ends of the ray means no shadow.
         if (sinL >= 0.0 && r0 * sinL + viewLength * mu >= 0.0) {
             s.shadowIn[std::size_t(i)] = -1.0f;
@@ -447,7 +493,7 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
     k.beta0 = 0.0f;
     k.horizonCos0 = horizonCos[0];
     k.angleScale0 = angleScale[0];
-    k.cosPhi = cosPhiF.data();
+    k.cosPhi = s.cosPhiF;
     k.msCosPhi = msCosPhiF.data();
     k.shadowIn = s.shadowIn.data();
     k.shadowOut = s.shadowOut.data();
@@ -515,15 +561,15 @@ void SkySolver::Impl::spreadMultiple(Scratch& s) const {
         if (positive) {
             SpreadKernelArgs a{};
             a.count = paddedColumns;
-            a.index = spreadIndex.data();
-            a.weight = spreadWeight.data();
+            a.index = s.spreadIndex;
+            a.weight = s.spreadWeight;
             a.logValue = logValue;
             a.out = x;
             spreadKernel(a);
             continue;
         }
         for (int i = 0; i < columns; ++i) {  // linear between the two nearest
-            const double u = 2.0 * i * (kK - 1) / azimuthCount;
+            const double u = s.phi[i] / kPi * (kK - 1);
             const int k = std::min(int(u), kK - 2);
             const float f = float(u - k);
             x[i] = value[k] + f * (value[k + 1] - value[k]);
@@ -571,7 +617,7 @@ void SkySolver::Impl::shadowEdgeLayers(Scratch& s, double r0, double sinEl) {
         const int shell = edgeAtStart ? l + 1 : l;
         const double alpha = shell == 0 ? sinLight : double(s.layer[std::size_t(shell) - 1].alpha);
         const double beta = shell == 0 ? 0.0 : double(s.layer[std::size_t(shell) - 1].beta);
-        const double margin = alpha + beta * cosPhi[std::size_t(i)] - horizonCos[std::size_t(shell)];
+        const double margin = alpha + beta * s.cosPhi[i] - horizonCos[std::size_t(shell)];
         const double x = std::max(margin, 0.0);
         const double u =
             std::min(x / (x + kAngleKnee) * angleScale[std::size_t(shell)], double(angles - 1) - 1e-3);
@@ -680,11 +726,6 @@ void SkySolver::Impl::setLight(const glm::dvec3& direction) {
     lightAzimuth = std::atan2(light.x, -light.z);
     sinLight = std::clamp(light.y, -1.0, 1.0);
     cosLight = std::sqrt(light.x * light.x + light.z * light.z);
-    for (int i = 0; i < columns; ++i) {
-        const double phi = 2.0 * kPi * i / azimuthCount;
-        cosPhi[std::size_t(i)] = std::cos(phi);
-        cosPhiF[std::size_t(i)] = float(cosPhi[std::size_t(i)]);
-    }
     SkyTable& back = tables[1 - front];
     back.lightDirection = light;
     back.lightAzimuth = lightAzimuth;
@@ -693,20 +734,35 @@ void SkySolver::Impl::setLight(const glm::dvec3& direction) {
         rowElevation[std::size_t(j)] = skyTableElevation(back, double(j));
 }
 
-// Horizon averages (row 0, all columns, equal weights) and the swap.
+// Horizon averages (the azimuthal mean of row 0: its columns with equal
+// weights, or where the column mapping warps row 0 the mean of its
+// interpolant over 8 azimuths per column) and the swap.
 void SkySolver::Impl::publish() {
     SkyTable& back = tables[1 - front];
     glm::dvec3 sumR(0.0), sumM(0.0), sumX(0.0);
-    for (int i = 0; i < azimuthCount; ++i) {
-        for (int c = 0; c < 3; ++c) {
-            sumR[c] += back.rayleigh[std::size_t(i) * 3 + c];
-            sumM[c] += back.mie[std::size_t(i) * 3 + c];
-            sumX[c] += back.multiple[std::size_t(i) * 3 + c];
+    const bool uniform = !skyTableColumnsWarped(back);
+    const int samples = uniform ? azimuthCount : 8 * azimuthCount;
+    for (int n = 0; n < samples; ++n) {
+        double weight[2] = {1.0, 0.0};
+        int at[2] = {n, 0};
+        if (!uniform) {
+            const double col = skyTableColumn(back, 2.0 * kPi * (n + 0.5) / samples, 0.0);
+            at[0] = std::min(int(col), azimuthCount - 1);
+            at[1] = (at[0] + 1) % azimuthCount;
+            weight[1] = col - at[0];
+            weight[0] = 1.0 - weight[1];
+        }
+        for (int m = 0; m < 2; ++m) {
+            for (int c = 0; c < 3; ++c) {
+                sumR[c] += weight[m] * back.rayleigh[std::size_t(at[m]) * 3 + c];
+                sumM[c] += weight[m] * back.mie[std::size_t(at[m]) * 3 + c];
+                sumX[c] += weight[m] * back.multiple[std::size_t(at[m]) * 3 + c];
+            }
         }
     }
-    back.horizonRayleigh = sumR / double(azimuthCount);
-    back.horizonMie = sumM / double(azimuthCount);
-    back.horizonMultiple = sumX / double(azimuthCount);
+    back.horizonRayleigh = sumR / double(samples);
+    back.horizonMie = sumM / double(samples);
+    back.horizonMultiple = sumX / double(samples);
     back.generation = tables[front].generation + 1;
     front = 1 - front;
 }

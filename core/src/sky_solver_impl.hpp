@@ -35,6 +35,17 @@ struct SkySolver::Impl {
         std::vector<float> edgeP, edgeQ, edgeOut;     // [6][2 padded columns]
         std::vector<int> edgeColumn;                  // [2 padded columns]
         detail::DepthRowScratch depthRow;             // optical-depth rows
+        // The row's column azimuths (rowColumns): the shared uniform ones, or
+        // this row's own where the column mapping warps it.
+        std::vector<double> rowPhi, rowCosPhi;  // [columns]
+        std::vector<float> rowCosPhiF;          // [padded columns]
+        std::vector<int> rowSpreadIndex;        // [4][padded columns]
+        std::vector<float> rowSpreadWeight;     // [4][padded columns]
+        const double* phi = nullptr;            // [columns] azimuth of each column from the light
+        const double* cosPhi = nullptr;         // [columns]
+        const float* cosPhiF = nullptr;         // [padded columns]
+        const int* spreadIndex = nullptr;       // [4][padded columns]
+        const float* spreadWeight = nullptr;    // [4][padded columns]
     };
 
     SkySolverDesc desc;
@@ -61,7 +72,7 @@ struct SkySolver::Impl {
     // Light-dependent state.
     glm::dvec3 light{0.0, 1.0, 0.0};
     double lightAzimuth = 0.0, sinLight = 1.0, cosLight = 0.0;
-    std::vector<double> cosPhi;        // [columns]
+    std::vector<double> phi, cosPhi;   // [columns] the uniform columns' azimuths
     std::vector<double> rowElevation;  // [elevationCount] the rows' elevations (the table's mapping)
     std::vector<float> cosPhiF;        // [padded columns]
     std::vector<float> msCosPhiF;      // [kMsSkyColumns] the multiple scattering's azimuths (sky_kernels.hpp)
@@ -92,6 +103,7 @@ struct SkySolver::Impl {
     void setLight(const glm::dvec3& direction);
     void buildLayers();
     void buildDepthRow(int row, Scratch& s);
+    void rowColumns(double elevation, Scratch& s) const;
     void solveRow(int row, Scratch& s);
     void shadowEdgeLayers(Scratch& s, double r0, double sinEl);
     void spreadMultiple(Scratch& s) const;

@@ -27,9 +27,13 @@ constexpr double kDeepestDeg = 18.0;    // depressions beyond this [deg] map as 
 /// v(x) = (1 - a - b) x / sqrt(pi/2) + a atan(x^2 / E) / atan(pi/2 / E)
 ///        + b (atan((x^2 - c) / w) - atan(-c / w)) / (atan((pi/2 - c) / w) - atan(-c / w)),
 /// increasing in x, with v(0) = 0 and v(sqrt(pi/2)) = 1.
+///        + d/2 (1 -+ sqrt(min(|x^2 - c|, c) / c))   (- below c, + above: the cap's
+///          rows, d = kSkyCapRowShare g where the columns are warped, uniform in
+///          the onset's azimuth psiC below c and as many from c to 2c),
 struct RowMapping {
     double plain = 1.0, a = 0.0, e = 1.0, bandNorm = 1.0;
     double b = 0.0, c = 0.0, w = 1.0, shadowLow = 0.0, shadowNorm = 1.0;
+    double d = 0.0, cap = 1.0;
 
     explicit RowMapping(const SkyTable& t) {
         if (t.bandElevation > 0.0 && t.bandShare > 0.0) {
@@ -44,28 +48,37 @@ struct RowMapping {
             shadowLow = std::atan(-c / w);
             shadowNorm = 1.0 / (std::atan((0.5 * kPi - c) / w) - shadowLow);
         }
-        plain = (1.0 - a - b) / std::sqrt(0.5 * kPi);
+        if (skyTableColumnsWarped(t)) {
+            d = std::min(kSkyCapRowShare * std::min(t.capStrength, 1.0), 1.0 - a - b);
+            cap = t.shadowElevation;
+        }
+        plain = (1.0 - a - b - d) / std::sqrt(0.5 * kPi);
     }
-    bool quadratic() const { return a == 0.0 && b == 0.0; }
+    bool quadratic() const { return a == 0.0 && b == 0.0 && d == 0.0; }
     double operator()(double x) const {
         const double el = x * x;
         double v = plain * x;
         if (a > 0.0) v += a * std::atan(el / e) * bandNorm;
         if (b > 0.0) v += b * (std::atan((el - c) / w) - shadowLow) * shadowNorm;
+        if (d > 0.0) {
+            const double r = std::sqrt(std::min(std::abs(el - cap), cap) / cap);
+            v += d * 0.5 * (el < cap ? 1.0 - r : 1.0 + r);
+        }
         return v;
     }
-    double slope(double x) const {
+    double slope(double x) const {  // may be +inf (the cap's rows at el = c)
         const double el = x * x;
-        double d = plain;
+        double g = plain;
+        if (d > 0.0 && el != cap && el < 2.0 * cap) g += 0.5 * d * x / std::sqrt(cap * std::abs(el - cap));
         if (a > 0.0) {
             const double r = el / e;
-            d += a * bandNorm * 2.0 * x / (e * (1.0 + r * r));
+            g += a * bandNorm * 2.0 * x / (e * (1.0 + r * r));
         }
         if (b > 0.0) {
             const double r = (el - c) / w;
-            d += b * shadowNorm * 2.0 * x / (w * (1.0 + r * r));
+            g += b * shadowNorm * 2.0 * x / (w * (1.0 + r * r));
         }
-        return d;
+        return g;
     }
 };
 
@@ -102,7 +115,117 @@ double shadowKinkElevation(const AtmosphereParams& air, double depression) {
     return 0.5 * (lo + hi);
 }
 
+/// Azimuth [rad] from the anti-light point at which the onset of the lit
+/// sky above the earth's shadow of a light `depression` [rad] below the
+/// horizon lies at `elevation` [rad]: where the view ray at that elevation
+/// leaves the planet's shadow cylinder exactly at the top of the atmosphere.
+/// -1 where there is none.
+double capAzimuth(const AtmosphereParams& air, double depression, double elevation) {
+    const double rg = air.planetRadius, rt = air.atmosphereRadius;
+    const double r0 = rg + std::clamp(air.viewerHeight, 0.0, rt - rg);
+    const double sinL = -std::sin(depression), cosL = std::cos(depression);
+    const double c2 = (r0 * cosL - rg) * (r0 * cosL + rg);
+    const double sinEl = std::sin(elevation), cosEl = std::cos(elevation);
+    // Radius of the shadow's exit along the ray at azimuth psi from the
+    // anti-light point (falling as psi grows: the ray leaves the shadow sooner).
+    auto exitRadius = [&](double psi) {
+        const double mu = sinEl * sinL - cosEl * cosL * std::cos(psi);
+        const double a2 = 1.0 - mu * mu, b2 = r0 * (sinEl - sinL * mu);
+        if (!(a2 > 1e-15)) return 2.0 * rt;
+        const double disc = b2 * b2 - a2 * c2;
+        if (!(disc > 0.0)) return 0.0;
+        const double s = (-b2 + std::sqrt(disc)) / a2;
+        return std::sqrt(std::max(r0 * r0 + 2.0 * r0 * s * sinEl + s * s, 0.0));
+    };
+    double lo = 0.0, hi = 0.5 * kPi;
+    if (!(exitRadius(lo) > rt) || exitRadius(hi) > rt) return -1.0;
+    for (int it = 0; it < 80; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        (exitRadius(mid) > rt ? lo : hi) = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+
+constexpr double kCapTopDeg = 0.5;  // the column warp at full strength up to this depression [deg]
+constexpr double kCapEndDeg = 1.0;  // and none from this one
+
+/// The column mapping of one row (sky.hpp, "Table mapping", columns), in
+/// half-columns x = 0..N/2 counted from the anti-light point and the
+/// azimuth psi = 0..pi from it: piecewise linear through five knots,
+///   x:   0, a0,    a0 + a1,    xE,  N/2
+///   psi: 0, psiC,  psiC + D,   psiE, pi
+/// where psiC = sqrt(max(c - el, 0) / k) is the onset of the lit sky around
+/// the cap of the earth's shadow in this row, D = max(psiC(0) / 2, 1 deg)
+/// the band above it, psiE = min(2 (psiC(0) + D), 3 pi / 4), and (a0, a1,
+/// xE) = (3, 12, 25) / 128 of N. Only psiC depends on the row, so every
+/// column keeps its place relative to the onset from row to row. With the
+/// strength g < 1 each psi knot is blended towards the uniform azimuth of
+/// its x: g psi + (1 - g) 2 pi x / N.
+struct ColumnMapping {
+    double x[5] = {0.0, 0.0, 0.0, 0.0, 0.0};
+    double psi[5] = {0.0, 0.0, 0.0, 0.0, kPi};
+    bool uniform = true;
+
+    ColumnMapping(const SkyTable& t, double elevation) {
+        const double n = t.azimuthCount;
+        const double k = t.capCurvature, g = std::clamp(t.capStrength, 0.0, 1.0);
+        const double c = t.shadowElevation;
+        if (!(k > 0.0) || !(g > 0.0) || !(c > 0.0) || !(n >= 4.0)) return;
+        constexpr double kDeg = kPi / 180.0;
+        const double foot = std::min(std::sqrt(c / k), 0.25 * kPi);  // psiC at the horizon
+        const double band = std::max(0.5 * foot, kSkyCapMinBandDeg * kDeg);
+        const double end = std::min(2.0 * (foot + band), 0.75 * kPi);
+        const double onset = std::min(std::sqrt(std::max(c - std::max(elevation, 0.0), 0.0) / k), foot);
+        x[1] = kSkyCapInsideShare * n;
+        x[2] = x[1] + kSkyCapOnsetShare * n;
+        x[3] = x[2] + kSkyCapNearShare * n;
+        x[4] = 0.5 * n;
+        const double capPsi[5] = {0.0, onset, onset + band, end, kPi};
+        for (int m = 1; m < 4; ++m) psi[m] = g * capPsi[m] + (1.0 - g) * 2.0 * kPi * x[m] / n;
+        uniform = false;
+    }
+    double halfColumn(double p) const {  // psi -> x
+        if (!(p > 0.0)) return 0.0;      // the anti-light point (columns 0..a0 from it when psiC = 0)
+        for (int m = 0; m < 4; ++m)
+            if (p < psi[m + 1] || m == 3)
+                return psi[m + 1] > psi[m]
+                           ? x[m] + (x[m + 1] - x[m]) * (std::min(p, kPi) - psi[m]) / (psi[m + 1] - psi[m])
+                           : x[m + 1];
+        return x[4];
+    }
+    double azimuthOf(double h) const {  // x -> psi
+        for (int m = 0; m < 4; ++m)
+            if (h < x[m + 1] || m == 3)
+                return x[m + 1] > x[m]
+                           ? psi[m] + (psi[m + 1] - psi[m]) * (std::min(h, x[4]) - x[m]) / (x[m + 1] - x[m])
+                           : psi[m + 1];
+        return kPi;
+    }
+};
+
 }  // namespace
+
+double skyTableColumn(const SkyTable& table, double relative, double elevation) {
+    const int n = table.azimuthCount;
+    if (n < 1) return 0.0;
+    double phi = relative - 2.0 * kPi * std::floor(relative / (2.0 * kPi));
+    if (!(phi >= 0.0) || !(phi < 2.0 * kPi)) phi = 0.0;  // NaN, or 2 pi by rounding
+    const ColumnMapping map(table, elevation);
+    if (map.uniform) return std::min(phi / (2.0 * kPi) * n, std::nextafter(double(n), 0.0));
+    const double half = 0.5 * n;
+    const double col = phi <= kPi ? half - map.halfColumn(kPi - phi) : half + map.halfColumn(phi - kPi);
+    return std::clamp(col, 0.0, std::nextafter(double(n), 0.0));
+}
+
+double skyTableAzimuth(const SkyTable& table, double column, double elevation) {
+    const int n = table.azimuthCount;
+    if (n < 1) return 0.0;
+    const double col = std::clamp(column, 0.0, double(n));
+    const ColumnMapping map(table, elevation);
+    if (map.uniform) return 2.0 * kPi * col / n;
+    const double half = 0.5 * n;
+    return col <= half ? kPi - map.azimuthOf(half - col) : kPi + map.azimuthOf(col - half);
+}
 
 // The row mapping for a light (sky.hpp, "Table mapping"). Where the rows go
 // follows the light where it changes fastest: the earth's shadow opposite a
@@ -114,16 +237,18 @@ double shadowKinkElevation(const AtmosphereParams& air, double depression) {
 // exact integral (tests/core/test_sky.cpp, SkyOffTexel, and a denser grid of
 // the anti-light quarter: 700 directions per sun): with them the worst error
 // of a 128 x 64 table is 0.8-1.6% for suns from -6 to 0 deg, against 3-49%
-// with the quadratic rows, except for suns 0.01-0.3 deg below the horizon
-// (up to 63% at -0.01 deg, 8.7% at -0.05 deg in a dense sweep: the onset
-// above the shadow's black sliver bends down within a few columns; see
-// sky.hpp and SkyShadowOnset).
+// with the quadratic rows. For a light 0-1 deg below the horizon the cap of
+// the earth's shadow opposite it gets its own rows (uniform in the azimuth
+// of its onset) and warped columns (the onset on one column in every row):
+// 1.0-1.9% in a dense sweep of the anti-light quarter from -0.3 to -0.05 deg
+// (SkyShadowOnset), 2.6-6.5% from -0.03 to -0.01 deg at the cap's top.
 void setSkyTableMapping(SkyTable& table, const AtmosphereParams& air, const glm::dvec3& lightDirection) {
     constexpr double kDeg = kPi / 180.0;
     const glm::dvec3 l = normalizedOr(lightDirection, glm::dvec3(0.0, 1.0, 0.0));
     const double light = std::asin(std::clamp(l.y, -1.0, 1.0)) / kDeg;  // elevation [deg]
     table.bandElevation = table.bandShare = 0.0;
     table.shadowElevation = table.shadowWidth = table.shadowShare = 0.0;
+    table.capCurvature = table.capStrength = 0.0;
     if (!(light < kMappingTopDeg)) return;
     // [deg]; below 18 deg (night) the mapping stays that of 18 deg.
     const double depression = std::clamp(-light, 0.0, kDeepestDeg);
@@ -143,15 +268,28 @@ void setSkyTableMapping(SkyTable& table, const AtmosphereParams& air, const glm:
         const double kink = shadowKinkElevation(air, depression * kDeg);
         if (kink > 0.0 && table.elevationCount > 1) {
             table.shadowElevation = kink;
+            // The cap of the earth's shadow around the anti-light point: its
+            // onset el(psi) = c - k psi^2, k fitted where it crosses c / 2;
+            // its rows (kSkyCapRowShare g) come out of the band's.
+            const double halfway = capAzimuth(air, depression * kDeg, 0.5 * kink);
+            if (halfway > 0.0 && depression < kCapEndDeg) {
+                table.capCurvature = 0.5 * kink / (halfway * halfway);
+                table.capStrength =
+                    std::clamp((kCapEndDeg - depression) / (kCapEndDeg - kCapTopDeg), 0.0, 1.0);
+                table.bandShare -= kSkyCapRowShare * table.capStrength;
+            }
             const double rows = table.elevationCount - 1;
-            auto rowOfKink = [&](double e) {
+            auto rowOfKink = [&](double e) {  // the mapping only (no texels copied)
                 SkyTable t = {};
+                t.azimuthCount = table.azimuthCount;
                 t.elevationCount = table.elevationCount;
                 t.bandElevation = e;
                 t.bandShare = table.bandShare;
                 t.shadowElevation = table.shadowElevation;
                 t.shadowWidth = table.shadowWidth;
                 t.shadowShare = table.shadowShare;
+                t.capCurvature = table.capCurvature;
+                t.capStrength = table.capStrength;
                 return skyTableRow(t, kink);
             };
             const double nominal = table.bandElevation;
@@ -194,13 +332,24 @@ double skyTableElevation(const SkyTable& table, double row) {
         const double f = map(x) - v;
         if (f == 0.0) break;
         (f < 0.0 ? lo : hi) = x;
-        double next = x - f / map.slope(x);
+        const double slope = map.slope(x);
+        double next = slope > 0.0 && std::isfinite(slope) ? x - f / slope : 0.5 * (lo + hi);
         if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
         if (std::abs(next - x) <= 1e-16 * hi) {
-            x = next;
-            break;
+            // Converged, or stalled where the slope is near infinite (the
+            // cap's rows at el = c): bisect then.
+            if (std::abs(f) <= 1e-13 || hi - lo <= 1e-16 * hi) {
+                x = next;
+                break;
+            }
+            next = 0.5 * (lo + hi);
         }
         x = next;
+    }
+    // Newton can crawl along the cap's steep rows: finish by bisection.
+    for (int it = 0; it < 200 && std::abs(map(x) - v) > 1e-13 && hi - lo > 1e-16 * hi; ++it) {
+        x = 0.5 * (lo + hi);
+        (map(x) < v ? lo : hi) = x;
     }
     return std::min(x * x, 0.5 * kPi);
 }
@@ -221,11 +370,8 @@ SkySample sampleSkyTable(const SkyTable& table, const glm::dvec3& viewDirection)
     const int j1 = std::min(j0 + 1, h - 1);
     const double fj = row - j0;
 
-    // Column: azimuth relative to the light, wrapping.
-    double relative = std::atan2(v.x, -v.z) - table.lightAzimuth;
-    relative -= 2.0 * kPi * std::floor(relative / (2.0 * kPi));
-    double col = relative / (2.0 * kPi) * w;
-    if (!(col >= 0.0) || !(col < w)) col = 0.0;  // NaN or exactly 2 pi
+    // Column: azimuth relative to the light, wrapping (skyTableColumn).
+    const double col = skyTableColumn(table, std::atan2(v.x, -v.z) - table.lightAzimuth, elevation);
     const int i0 = std::min(int(col), w - 1);
     const int i1 = (i0 + 1) % w;
     const double fi = col - i0;
@@ -300,10 +446,7 @@ SkySample horizonSkySample(const SkyTable& table, const glm::dvec3& viewDirectio
     // Row 0 at v's azimuth, linear between the columns as sampleSkyTable
     // (done here directly: row 0 needs no row mapping).
     const int columns = table.azimuthCount;
-    double relative = std::atan2(v.x, -v.z) - table.lightAzimuth;
-    relative -= 2.0 * kPi * std::floor(relative / (2.0 * kPi));
-    double col = relative / (2.0 * kPi) * columns;
-    if (!(col >= 0.0) || !(col < columns)) col = 0.0;
+    const double col = skyTableColumn(table, std::atan2(v.x, -v.z) - table.lightAzimuth, 0.0);
     const int i0 = std::min(int(col), columns - 1);
     const int i1 = (i0 + 1) % columns;
     const double f = col - i0;
@@ -328,6 +471,10 @@ SkyTable skyHorizonRow(const SkyTable& table) {
     row.elevationCount = 1;
     row.lightDirection = table.lightDirection;
     row.lightAzimuth = table.lightAzimuth;
+    row.shadowElevation = table.shadowElevation;  // row 0's column mapping
+    row.shadowWidth = table.shadowWidth;
+    row.capCurvature = table.capCurvature;
+    row.capStrength = table.capStrength;
     row.horizonRayleigh = table.horizonRayleigh;
     row.horizonMie = table.horizonMie;
     row.horizonMultiple = table.horizonMultiple;

@@ -189,6 +189,10 @@ FrameBlock makeFrameBlock(const Camera& camera, const CameraFrame& view, const P
     fb.moonTableShadowWidth = float(in.moon.shadowWidth);
     fb.sunTableShadowShare = float(in.sun.shadowShare);
     fb.moonTableShadowShare = float(in.moon.shadowShare);
+    fb.sunTableCapCurvature = float(in.sun.capCurvature);
+    fb.sunTableCapStrength = float(in.sun.capStrength);
+    fb.moonTableCapCurvature = float(in.moon.capCurvature);
+    fb.moonTableCapStrength = float(in.moon.capStrength);
 
     // Stars: the celestial frame, the brightest star's illuminance and the
     // Gaussian radius of a star, sigma = 0.6 pixel (vertical angle / rows).

@@ -112,6 +112,11 @@ struct FrameBlock {
     /// CloudOvercast::skyCover: the deck over the whole sky (cosine-weighted),
     /// what a mirror sees of it looking up (atmosphere.glsl, overcastCoverTowards).
     float overcastSkyCover = 0.0f;
+    /// The tables' column mappings (SkyTable::capCurvature [1/rad], capStrength).
+    float sunTableCapCurvature = 0.0f;
+    float sunTableCapStrength = 0.0f;
+    float moonTableCapCurvature = 0.0f;
+    float moonTableCapStrength = 0.0f;
 };
 static_assert(offsetof(FrameBlock, clipFromWorld) == 0);
 static_assert(offsetof(FrameBlock, eye) == 64);
@@ -170,7 +175,9 @@ static_assert(offsetof(FrameBlock, overcastCover) == 348);
 static_assert(offsetof(FrameBlock, groundAmbient) == 608);
 static_assert(offsetof(FrameBlock, overcastRadiance) == 624);
 static_assert(offsetof(FrameBlock, overcastSkyCover) == 636);
-static_assert(sizeof(FrameBlock) == 640);
+static_assert(offsetof(FrameBlock, sunTableCapCurvature) == 640);
+static_assert(offsetof(FrameBlock, moonTableCapStrength) == 652);
+static_assert(sizeof(FrameBlock) == 656);
 
 /// shaders/common/volume.glsl, VolumeBlock (binding 1): one fog volume.
 struct VolumeBlock {

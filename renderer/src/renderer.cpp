@@ -279,6 +279,8 @@ void Renderer::Impl::render(const Camera& camera, const PresetState& state, cons
         in.shadowElevation = sky.shadowElevation;
         in.shadowWidth = sky.shadowWidth;
         in.shadowShare = sky.shadowShare;
+        in.capCurvature = sky.capCurvature;
+        in.capStrength = sky.capStrength;
         in.horizonRayleigh = sky.horizonRayleigh;
         in.horizonMie = sky.horizonMie;
         in.horizonMultiple = sky.horizonMultiple;

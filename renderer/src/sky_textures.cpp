@@ -62,6 +62,8 @@ void SkyTextures::upload(const SkyTable& table) {
     shadowElevation = valid ? table.shadowElevation : 0.0;
     shadowWidth = valid ? table.shadowWidth : 0.0;
     shadowShare = valid ? table.shadowShare : 0.0;
+    capCurvature = valid ? table.capCurvature : 0.0;
+    capStrength = valid ? table.capStrength : 0.0;
     lightDirection = table.lightDirection;
     horizonRayleigh = valid ? table.horizonRayleigh : glm::dvec3(0.0);
     horizonMie = valid ? table.horizonMie : glm::dvec3(0.0);

@@ -21,6 +21,7 @@ struct SkyTextures {
     /// The table's row mapping (SkyTable::bandElevation .. shadowShare; 0: quadratic).
     double bandElevation = 0.0, bandShare = 0.0;
     double shadowElevation = 0.0, shadowWidth = 0.0, shadowShare = 0.0;
+    double capCurvature = 0.0, capStrength = 0.0;  ///< the column mapping (SkyTable)
     glm::dvec3 lightDirection{0.0, 1.0, 0.0};
     glm::dvec3 horizonRayleigh{0.0};
     glm::dvec3 horizonMie{0.0};

@@ -42,7 +42,8 @@
 //                       The fog passes only interpolate between the target and
 //                       capped colours, so they stay below the cap too.
 //   sunTableColumns, sunTableRows, moonTableColumns, moonTableRows  table sizes
-//   <light>TableBand, <light>TableShadowWidth, <light>TableShadowShare
+//   <light>TableBand, <light>TableShadowWidth, <light>TableShadowShare,
+//   <light>TableCapCurvature, <light>TableCapStrength  the tables' mappings
 //                       the table's row mapping (aerial/sky.hpp, SkyTable):
 //                       band = (bandElevation [rad], bandShare,
 //                       shadowElevation [rad]), shadowWidth [rad], shadowShare
@@ -137,6 +138,10 @@ layout(std140, binding = 0) uniform FrameBlock {
     float padGroundAmbient;
     vec3 overcastRadiance;
     float overcastSkyCover;
+    float sunTableCapCurvature;
+    float sunTableCapStrength;
+    float moonTableCapCurvature;
+    float moonTableCapStrength;
 } frame;
 
 // Ray from the eye to the far plane at normalised device coordinates ndc

@@ -9,9 +9,11 @@
 //       + b (atan((el - c) / w) - atan(-c / w)) / (atan((pi/2 - c) / w) - atan(-c / w)),
 // (E, a, c) = <light>TableBand, w = <light>TableShadowWidth,
 // b = <light>TableShadowShare; with a = b = 0 (a light above 1 deg) the
-// quadratic j = (rows - 1) sqrt(el / (pi/2)). Column i holds the azimuth
-// relative to the light phi = 2 pi i / columns (wrapping); directions below
-// the horizon use row 0. Texel centres sit at (i + 0.5, j + 0.5), so the
+// quadratic j = (rows - 1) sqrt(el / (pi/2)); plus the cap's rows
+// (skyTableMappedRow). Column i holds the azimuth relative to the light
+// phi = 2 pi i / columns (wrapping), except around the cap of the earth's
+// shadow opposite a light just set (skyTableColumnAt); directions below the
+// horizon use row 0. Texel centres sit at (i + 0.5, j + 0.5), so the
 // hardware's bilinear filter equals sampleSkyTable().
 // Requires common/frame.glsl and common/atmosphere.glsl.
 #ifndef AERIAL_SKY_TABLE_GLSL
@@ -35,31 +37,86 @@ vec2 skyAngles(vec3 v, bool accurate) {
     return vec2(a.x == 0.0 && b.x == 0.0 ? 0.0 : atan(a.x, b.x), a.y == 0.0 && b.y == 0.0 ? 0.0 : atan(a.y, b.y));
 }
 
+// The column mapping's constants (aerial/sky.hpp, kSkyCap*).
+const float kSkyCapInsideShare = 3.0 / 128.0;
+const float kSkyCapOnsetShare = 12.0 / 128.0;
+const float kSkyCapNearShare = 10.0 / 128.0;
+const float kSkyCapMinBand = 1.0 * kPi / 180.0;
+const float kSkyCapRowShare = 16.0 / 63.0;
+
+/// Whether a table's columns are warped around the cap of the earth's shadow
+/// (skyTableColumnsWarped): cap = (k, g) = (capCurvature, capStrength), c
+/// the shadow's elevation.
+bool skyTableCapActive(vec2 cap, float c) { return cap.x > 0.0 && cap.y > 0.0 && c > 0.0; }
+
 /// The table's row mapping v(el) in 0..1 (see the file comment); band =
-/// (E, a, c), w and b as there.
-float skyTableMappedRow(float elevation, vec3 band, float w, float b) {
+/// (E, a, c), w and b as there; cap as in skyTableCapActive (the cap's rows,
+/// d = kSkyCapRowShare g, uniform in sqrt(|el - c|) from 0 to 2c).
+float skyTableMappedRow(float elevation, vec3 band, float w, float b, vec2 cap) {
     float el = clamp(elevation, 0.0, 0.5 * kPi);
     float a = band.y;
-    if (a <= 0.0 && b <= 0.0) return sqrt(el / (0.5 * kPi));
-    float v = (1.0 - a - b) * sqrt(el / (0.5 * kPi));
+    float d = skyTableCapActive(cap, band.z) ? kSkyCapRowShare * min(cap.y, 1.0) : 0.0;
+    if (a <= 0.0 && b <= 0.0 && d <= 0.0) return sqrt(el / (0.5 * kPi));
+    float v = (1.0 - a - b - d) * sqrt(el / (0.5 * kPi));
     if (a > 0.0) v += a * preciseAtan2(el, band.x) / preciseAtan2(0.5 * kPi, band.x);
     if (b > 0.0) {
         float low = preciseAtan2(-band.z, w);
         v += b * (preciseAtan2(el - band.z, w) - low) / (preciseAtan2(0.5 * kPi - band.z, w) - low);
     }
+    if (d > 0.0) {
+        float r = sqrt(min(abs(el - band.z), band.z) / band.z);
+        v += d * 0.5 * (el < band.z ? 1.0 - r : 1.0 + r);
+    }
     return v;
+}
+
+/// The column (0..columns) of an azimuth `relative` [0, 2 pi) from the light
+/// at elevation el (skyTableColumn, core/src/sky_table.cpp): uniform, or
+/// piecewise linear in the azimuth psi from the anti-light point through the
+/// knots x = (0, 3, 15, 25, 64) / 128 columns, psi = (0, psiC, psiC + D, psiE,
+/// pi), psiC = sqrt(max(c - el, 0) / k) the onset of the lit sky around the
+/// cap of the earth's shadow, D = max(psiC(0) / 2, 1 deg), psiE = min(2
+/// (psiC(0) + D), 3 pi / 4), each inner psi blended with g towards 2 pi x / columns.
+float skyTableColumnAt(float relative, float el, float columns, float c, vec2 cap) {
+    if (!skyTableCapActive(cap, c) || !(columns >= 4.0)) return relative / (2.0 * kPi) * columns;
+    float k = cap.x, g = min(cap.y, 1.0);
+    float foot = min(sqrt(c / k), 0.25 * kPi);
+    float band = max(0.5 * foot, kSkyCapMinBand);
+    float end = min(2.0 * (foot + band), 0.75 * kPi);
+    float onset = min(sqrt(max(c - max(el, 0.0), 0.0) / k), foot);
+    float x1 = kSkyCapInsideShare * columns, x2 = x1 + kSkyCapOnsetShare * columns;
+    float x3 = x2 + kSkyCapNearShare * columns, x4 = 0.5 * columns;
+    float p1 = g * onset + (1.0 - g) * 2.0 * kPi * x1 / columns;
+    float p2 = g * (onset + band) + (1.0 - g) * 2.0 * kPi * x2 / columns;
+    float p3 = g * end + (1.0 - g) * 2.0 * kPi * x3 / columns;
+    float psi = relative <= kPi ? kPi - relative : relative - kPi;
+    float x;
+    if (!(psi > 0.0))
+        x = 0.0;  // the anti-light point
+    else if (psi < p1)
+        x = x1 * psi / p1;
+    else if (psi < p2)
+        x = x1 + (x2 - x1) * (psi - p1) / (p2 - p1);
+    else if (psi < p3)
+        x = x2 + (x3 - x2) * (psi - p2) / (p3 - p2);
+    else
+        x = x3 + (x4 - x3) * (min(psi, kPi) - p3) / (kPi - p3);
+    return relative <= kPi ? x4 - x : x4 + x;
 }
 
 /// Continuous texel coordinates (column, row) of a direction with the given
 /// skyAngles in a table solved for a light at world azimuth `lightAzimuth`
-/// [rad], with the row mapping (band, shadowWidth, shadowShare).
-vec2 skyTableTexelAt(vec2 angles, float lightAzimuth, vec2 size, vec3 band, float shadowWidth, float shadowShare) {
+/// [rad], with the row mapping (band, shadowWidth, shadowShare) and the
+/// column mapping (cap, band.z).
+vec2 skyTableTexelAt(vec2 angles, float lightAzimuth, vec2 size, vec3 band, float shadowWidth, float shadowShare,
+                     vec2 cap) {
     float columns = size.x;
     float rows = size.y;
-    float row = clamp((rows - 1.0) * skyTableMappedRow(angles.x, band, shadowWidth, shadowShare), 0.0, rows - 1.0);
+    float row =
+        clamp((rows - 1.0) * skyTableMappedRow(angles.x, band, shadowWidth, shadowShare, cap), 0.0, rows - 1.0);
     float relative = angles.y - lightAzimuth;
     relative -= 2.0 * kPi * floor(relative / (2.0 * kPi));
-    float column = relative / (2.0 * kPi) * columns;
+    float column = skyTableColumnAt(relative, angles.x, columns, band.z, cap);
     if (!(column >= 0.0) || !(column < columns)) column = 0.0;
     return vec2(column, row);
 }
@@ -71,9 +128,10 @@ vec2 skyTableTexelAt(vec2 angles, float lightAzimuth, vec2 size, vec3 band, floa
 vec3 sampleTable(sampler2D table, vec2 texel, vec2 size) { return texture(table, (texel + 0.5) / size).rgb; }
 
 vec3 lightSky(sampler2D rayleigh, sampler2D mie, sampler2D multiple, vec3 v, vec2 angles, vec3 lightDirection,
-              float lightAzimuth, vec2 size, vec3 band, float shadowWidth, float shadowShare, vec3 illuminance) {
+              float lightAzimuth, vec2 size, vec3 band, float shadowWidth, float shadowShare, vec2 cap,
+              vec3 illuminance) {
     if (all(equal(illuminance, vec3(0.0)))) return vec3(0.0);
-    vec2 texel = skyTableTexelAt(angles, lightAzimuth, size, band, shadowWidth, shadowShare);
+    vec2 texel = skyTableTexelAt(angles, lightAzimuth, size, band, shadowWidth, shadowShare, cap);
     float mu = dot(v, lightDirection);
     return illuminance * (rayleighPhase(mu) * sampleTable(rayleigh, texel, size) +
                           miePhase(mu, frame.mieAnisotropy) * sampleTable(mie, texel, size) +
@@ -86,10 +144,12 @@ vec3 skyRadiance(vec3 v, bool accurate) {
     vec2 angles = skyAngles(v, accurate);
     return lightSky(uSunRayleigh, uSunMie, uSunMultiple, v, angles, frame.sunDirection, frame.sunTableAzimuth,
                     vec2(frame.sunTableColumns, frame.sunTableRows), frame.sunTableBand, frame.sunTableShadowWidth,
-                    frame.sunTableShadowShare, frame.sunIlluminanceSpace) +
+                    frame.sunTableShadowShare, vec2(frame.sunTableCapCurvature, frame.sunTableCapStrength),
+                    frame.sunIlluminanceSpace) +
            lightSky(uMoonRayleigh, uMoonMie, uMoonMultiple, v, angles, frame.moonDirection, frame.moonTableAzimuth,
                     vec2(frame.moonTableColumns, frame.moonTableRows), frame.moonTableBand,
-                    frame.moonTableShadowWidth, frame.moonTableShadowShare, frame.moonIlluminanceSpace);
+                    frame.moonTableShadowWidth, frame.moonTableShadowShare,
+                    vec2(frame.moonTableCapCurvature, frame.moonTableCapStrength), frame.moonIlluminanceSpace);
 }
 
 #endif

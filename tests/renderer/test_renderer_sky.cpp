@@ -120,49 +120,59 @@ TEST_F(SkyVsCpu, EveryPixelMatchesSkyRadiance) {
 TEST_F(SkyVsCpu, SetSunRowMappingMatchesSkyRadiance) {
     // A sun 1.5 deg below the horizon: its table's rows crowd towards the
     // horizon and the earth's shadow (SkyTable::bandElevation .. shadowShare,
-    // inverted in GLSL). Error per pixel and channel relative to
-    // max(|cpu|, 1e-3 of the brightest CPU value in the image): the shadow
-    // side is dark, and there float rounding of the row alone is relative.
-    const glm::dvec3 sun = glm::normalize(glm::dvec3(0.3, -0.02618 * std::hypot(0.3, 0.9), -0.9));
-    const SkyPair sky = solveSky(AtmosphereParams{}, sun, moonDirection());
-    ASSERT_GT(sky.sun.shadowShare, 0.0);
-    Renderer r(rendererDesc());
-    ASSERT_TRUE(r.valid()) << r.error();
-    r.setSky(sky.sun, sky.moon);
-    PresetState air = frame();
-    air.sunLight = light(sun, glm::dvec3(20.0, 19.0, 18.0), glm::dvec3(0.0));
-    const glm::dvec3 flat = glm::normalize(glm::dvec3(sun.x, 0.0, sun.z));
-    const glm::dvec3 eye(0, 2, 0);
-    const glm::dvec3 targets[] = {eye - flat * 10.0 + glm::dvec3(0, 0.3, 0),   // the earth's shadow
-                                  eye + flat * 10.0 + glm::dvec3(0, 0.3, 0)};  // the afterglow
-    for (const glm::dvec3& target : targets) {
-        const Camera camera = skyCamera(eye, target, 0.3);
-        const Image image = renderSky(r, camera, air);
-        const renderer::CameraFrame f = renderer::cameraFrame(camera);
-        std::vector<glm::dvec3> cpu(std::size_t(kWidth) * kHeight);
-        double brightest = 0.0;
-        for (int y = 0; y < kHeight; ++y) {
-            for (int x = 0; x < kWidth; ++x) {
-                const glm::dvec3 v = glm::normalize(renderer::farRayAtPixel(f, x, y, kWidth, kHeight));
-                const glm::dvec3 c = skyRadiance(sky.sun, air.environment.atmosphere.mieAnisotropy, v,
-                                                 air.sunLight.illuminanceSpace) +
-                                     skyRadiance(sky.moon, air.environment.atmosphere.mieAnisotropy, v,
-                                                 air.moonLight.illuminanceSpace);
-                cpu[std::size_t(y) * kWidth + x] = c;
-                brightest = std::max({brightest, c.x, c.y, c.z});
-            }
+    // inverted in GLSL); and one 0.07 deg below it, whose columns are also
+    // warped around the cap of the earth's shadow (capCurvature,
+    // capStrength; skyTableColumnAt in GLSL), seen also straight along the
+    // horizon. Error per pixel and channel relative to max(|cpu|, 1e-3 of
+    // the brightest CPU value in the image): the shadow side is dark, and
+    // there float rounding of the row alone is relative.
+    for (const double depression : {1.5, 0.07}) {
+        const double t = std::tan(depression * kPi / 180.0);
+        const glm::dvec3 sun = glm::normalize(glm::dvec3(0.3, -t * std::hypot(0.3, 0.9), -0.9));
+        const SkyPair sky = solveSky(AtmosphereParams{}, sun, moonDirection());
+        ASSERT_GT(sky.sun.shadowShare, 0.0);
+        if (depression < 1.0) {
+            ASSERT_TRUE(skyTableColumnsWarped(sky.sun));
         }
-        double worst = 0.0;
-        for (int y = 0; y < kHeight; ++y)
-            for (int x = 0; x < kWidth; ++x)
-                for (int c = 0; c < 3; ++c) {
-                    const double want = cpu[std::size_t(y) * kWidth + x][c];
-                    const double error =
-                        std::fabs(image.at(x, y, c) - want) / std::max(std::fabs(want), 1e-3 * brightest);
-                    worst = std::max(worst, std::isfinite(error) ? error : 1e30);
+        Renderer r(rendererDesc());
+        ASSERT_TRUE(r.valid()) << r.error();
+        r.setSky(sky.sun, sky.moon);
+        PresetState air = frame();
+        air.sunLight = light(sun, glm::dvec3(20.0, 19.0, 18.0), glm::dvec3(0.0));
+        const glm::dvec3 flat = glm::normalize(glm::dvec3(sun.x, 0.0, sun.z));
+        const glm::dvec3 eye(0, 2, 0);
+        const glm::dvec3 targets[] = {eye - flat * 10.0 + glm::dvec3(0, 0.3, 0),     // the earth's shadow
+                                      eye + flat * 10.0 + glm::dvec3(0, 0.3, 0),     // the afterglow
+                                      eye - flat * 10.0 + glm::dvec3(0, 0.005, 0)};  // along the horizon
+        for (const glm::dvec3& target : targets) {
+            const Camera camera = skyCamera(eye, target, 0.3);
+            const Image image = renderSky(r, camera, air);
+            const renderer::CameraFrame f = renderer::cameraFrame(camera);
+            std::vector<glm::dvec3> cpu(std::size_t(kWidth) * kHeight);
+            double brightest = 0.0;
+            for (int y = 0; y < kHeight; ++y) {
+                for (int x = 0; x < kWidth; ++x) {
+                    const glm::dvec3 v = glm::normalize(renderer::farRayAtPixel(f, x, y, kWidth, kHeight));
+                    const glm::dvec3 c = skyRadiance(sky.sun, air.environment.atmosphere.mieAnisotropy, v,
+                                                     air.sunLight.illuminanceSpace) +
+                                         skyRadiance(sky.moon, air.environment.atmosphere.mieAnisotropy, v,
+                                                     air.moonLight.illuminanceSpace);
+                    cpu[std::size_t(y) * kWidth + x] = c;
+                    brightest = std::max({brightest, c.x, c.y, c.z});
                 }
-        std::printf("[ measured ] set sun (-1.5 deg): max error %.3g\n", worst);
-        EXPECT_LT(worst, 1e-3);
+            }
+            double worst = 0.0;
+            for (int y = 0; y < kHeight; ++y)
+                for (int x = 0; x < kWidth; ++x)
+                    for (int c = 0; c < 3; ++c) {
+                        const double want = cpu[std::size_t(y) * kWidth + x][c];
+                        const double error =
+                            std::fabs(image.at(x, y, c) - want) / std::max(std::fabs(want), 1e-3 * brightest);
+                        worst = std::max(worst, std::isfinite(error) ? error : 1e30);
+                    }
+            std::printf("[ measured ] set sun (-%.2f deg): max error %.3g\n", depression, worst);
+            EXPECT_LT(worst, 1e-3) << depression;
+        }
     }
     EXPECT_TRUE(log.errors.empty());
 }

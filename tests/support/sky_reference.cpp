@@ -138,8 +138,14 @@ double texelElevation(int j, const SkyTable& table) {
     // The mapping of <aerial/sky.hpp>, written out again: v(el) in 0..1.
     const double a = table.bandElevation > 0.0 ? table.bandShare : 0.0;
     const double b = table.shadowWidth > 0.0 ? table.shadowShare : 0.0;
+    const double d = skyTableColumnsWarped(table) ? kSkyCapRowShare * std::min(table.capStrength, 1.0) : 0.0;
     auto mapped = [&](double el) {
-        double v = (1.0 - a - b) * std::sqrt(el / (0.5 * kPi));
+        double v = (1.0 - a - b - d) * std::sqrt(el / (0.5 * kPi));
+        if (d > 0.0) {
+            const double c = table.shadowElevation;
+            const double r = std::sqrt(std::min(std::abs(el - c), c) / c);
+            v += 0.5 * d * (el < c ? 1.0 - r : 1.0 + r);
+        }
         if (a > 0.0)
             v += a * std::atan(el / table.bandElevation) / std::atan(0.5 * kPi / table.bandElevation);
         if (b > 0.0) {
@@ -158,9 +164,33 @@ double texelElevation(int j, const SkyTable& table) {
     return 0.5 * (lo + hi);
 }
 
+double texelAzimuth(int i, double elevation, const SkyTable& table) {
+    const double n = table.azimuthCount;
+    if (!skyTableColumnsWarped(table)) return 2.0 * kPi * i / n;
+    // The column mapping of <aerial/sky.hpp>, written out again: piecewise
+    // linear in the azimuth psi from the anti-light point.
+    const double k = table.capCurvature, g = std::min(table.capStrength, 1.0), c = table.shadowElevation;
+    const double foot = std::min(std::sqrt(c / k), 0.25 * kPi);
+    const double band = std::max(0.5 * foot, kSkyCapMinBandDeg * kPi / 180.0);
+    const double onset = std::min(std::sqrt(std::max(c - elevation, 0.0) / k), foot);
+    const double xs[5] = {0.0, kSkyCapInsideShare * n, (kSkyCapInsideShare + kSkyCapOnsetShare) * n,
+                          (kSkyCapInsideShare + kSkyCapOnsetShare + kSkyCapNearShare) * n, 0.5 * n};
+    const double cap[5] = {0.0, onset, onset + band, std::min(2.0 * (foot + band), 0.75 * kPi), kPi};
+    const double x = std::abs(i - 0.5 * n);
+    for (int m = 0; m < 4; ++m) {
+        if (x <= xs[m + 1]) {
+            const double p0 = m == 0 ? 0.0 : g * cap[m] + (1.0 - g) * 2.0 * kPi * xs[m] / n;
+            const double p1 = m == 3 ? kPi : g * cap[m + 1] + (1.0 - g) * 2.0 * kPi * xs[m + 1] / n;
+            const double psi = p0 + (p1 - p0) * (x - xs[m]) / (xs[m + 1] - xs[m]);
+            return i <= 0.5 * n ? kPi - psi : kPi + psi;
+        }
+    }
+    return 0.0;
+}
+
 glm::dvec3 texelDirection(int i, int j, const SkyTable& table) {
     const double elevation = texelElevation(j, table);
-    const double azimuth = table.lightAzimuth + 2.0 * kPi * i / table.azimuthCount;
+    const double azimuth = table.lightAzimuth + texelAzimuth(i, elevation, table);
     const double ce = std::cos(elevation);
     return glm::dvec3(std::sin(azimuth) * ce, std::sin(elevation), -std::cos(azimuth) * ce);
 }

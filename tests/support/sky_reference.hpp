@@ -41,8 +41,12 @@ double azimuthOf(const glm::dvec3& direction);
 /// inverted by bisection).
 double texelElevation(int j, const SkyTable& table);
 
+/// Azimuth from the light [rad] of column i in the row at `elevation` [rad],
+/// per the column mapping in <aerial/sky.hpp> (re-implemented here).
+double texelAzimuth(int i, double elevation, const SkyTable& table);
+
 /// World direction of texel (i, j) of a table (its size, light azimuth and
-/// row mapping), per the mapping in <aerial/sky.hpp> (re-implemented here).
+/// row and column mappings), per the mapping in <aerial/sky.hpp> (re-implemented here).
 glm::dvec3 texelDirection(int i, int j, const SkyTable& table);
 
 /// Fills a whole SkyTable by brute force (same layout and row mapping as

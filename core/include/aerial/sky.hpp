@@ -79,9 +79,10 @@
 //   * rows j = 0..elevationCount-1 hold the elevation el_j with
 //     v(el_j) = j / (elevationCount - 1), v increasing from v(0) = 0 to
 //     v(pi/2) = 1 (skyTableRow, skyTableElevation):
-//       v(el) = (1 - a - b) sqrt(el / (pi/2))
+//       v(el) = (1 - a - b - d) sqrt(el / (pi/2))
 //             + a atan(el / E) / atan(pi/2 / E)
-//             + b (atan((el - c) / w) - atan(-c / w)) / (atan((pi/2 - c) / w) - atan(-c / w)),
+//             + b (atan((el - c) / w) - atan(-c / w)) / (atan((pi/2 - c) / w) - atan(-c / w))
+//             + d/2 (1 -+ sqrt(min(|el - c|, c) / c)),
 //     E = bandElevation, a = bandShare, c = shadowElevation, w = shadowWidth,
 //     b = shadowShare, carried in the SkyTable and set by the solver from the
 //     light (setSkyTableMapping). The rows go where the light changes fastest:
@@ -104,35 +105,50 @@
 //       atmosphere, about 1.1 L; for a light more than ~6 deg down that ray
 //       is shadowed up to the top and c = 1.1 L), and E is adjusted so that
 //       a row lies exactly on it (the kink's row moves by at most half a row);
+//     - a light 0-1 deg below the horizon also: d = (16/63) g of the rows
+//       (taken from the band's a) uniform in sqrt(|el - c|) between 0 and 2c,
+//       the term d/2 (1 -+ sqrt(min(|el - c|, c) / c)) (- below c, + above),
+//       so that below c they are uniform in the azimuth of the cap's onset
+//       (the columns below); g = capStrength, 1 up to 0.5 deg, fading to 0
+//       at 1 deg;
 //     With 128 x 64 texels this keeps the table within 2% of the exact
 //     single-scattering integral relative to the pixel (floored at 1% of the
 //     brightest sky) in every direction tests/core/test_sky.cpp probes, off
-//     the texel centres too, for suns from -6 to 90 deg (SkyOffTexel). Not
-//     resolved: a light about 0.01-0.3 deg below the horizon. Opposite it
-//     the lit sky above the black sliver switches on within thousandths of
-//     a degree (~0.005 deg at -0.05 deg, and narrower the nearer the light
-//     is to the horizon), and the onset's elevation drops towards the
-//     horizon within a few degrees of azimuth from the anti-light point, so
-//     it falls between the rows and between the columns. A dense sweep of
-//     that quarter (SkyShadowOnset) finds up to 63% at -0.01 deg,
-//     22% at -0.02, 11% at -0.03, 8.7% at -0.05, 6.3% at -0.07, 4.3% at -0.1,
-//     4.1% at -0.15, 3.2% at -0.2 and 2.2% at -0.3 deg (1.1% at -0.5 and
-//     1.0% at -1 deg; with w = 0.25 L throughout it was 93, 68, 52, 16, 8.7,
-//     7.4, 5.5, 3.7 and 2.2%), the worst mostly 1-4 deg of azimuth from the
-//     anti-light point, between the columns; finer rows alone do not fix it
-//     (256 rows x 1024 columns with rows crowded at the kink: 2.4% at -0.05 deg);
+//     the texel centres too, for suns from -6 to 90 deg (SkyOffTexel), and
+//     in a dense sweep of the anti-light quarter for suns 0.05-0.3 deg below
+//     the horizon (SkyShadowOnset: 1.0-1.9%). Not yet within 2%: a light
+//     less than ~0.04 deg below the horizon, at the top of the cap straight
+//     opposite it (2.6% at -0.03 deg, 3.4% at -0.02, 6.5% at -0.01; 63%
+//     before the cap's rows and columns);
 //   * columns i = 0..azimuthCount-1 hold the azimuth relative to the light
 //       phi_i = 2 pi * i / azimuthCount,
 //     measured from the light's azimuth towards east (the same sense as the
 //     world azimuth); the azimuth wraps. Because single scattering is
 //     symmetric about the light's vertical plane, column i equals column
-//     azimuthCount - i;
+//     azimuthCount - i. Except for a light 0-1 deg below the horizon
+//     (capCurvature k > 0, capStrength g > 0): opposite it the earth's
+//     shadow is a cap, dark below a parabola el = c - k psi^2 (psi: azimuth
+//     from the anti-light point, k ~ 0.069/rad fitted to the exact onset
+//     where it crosses c/2), above which the lit sky switches on within
+//     thousandths of a degree. The columns of the row at elevation el are
+//     then piecewise linear in psi through the knots
+//       x = |i - W/2| = (0, 3, 15, 25, 64) W / 128,
+//       psi = (0, P, P + D, F2, pi),  P = min(sqrt(max(c - el, 0) / k), F),
+//       F = min(sqrt(c / k), pi/4),  D = max(F / 2, 1 deg),  F2 = min(2 (F + D), 3 pi / 4),
+//     each inner psi blended with g towards 2 pi x / W (skyTableColumn,
+//     skyTableAzimuth): the onset lies on column W/2 -+ 3 W / 128 in every
+//     row below the cap's top, with 12 columns in the band above it. Only P
+//     depends on the row, so between two rows the onset stays on its column
+//     (rows alone could not follow it: 256 x 1024 texels left 2.4% at
+//     -0.05 deg). The knots are mirror-symmetric, so column i still equals
+//     column W - i. The horizon averages then weight row 0 by azimuth;
 //   * texel (i, j) is stored at index (j * azimuthCount + i) * 3 (RGB, float).
 //   Directions below the horizon use row 0.
 //
 // Horizon average (SkyTable::horizonRayleigh / horizonMie / horizonMultiple): row 0 only
 // (elevation exactly 0), all azimuthCount columns with equal weight
-// 1 / azimuthCount, i.e. the azimuthal mean of the horizon ring.
+// 1 / azimuthCount, i.e. the azimuthal mean of the horizon ring (with warped
+// columns, the mean of row 0's interpolant over 8 azimuths per column).
 #pragma once
 
 #include <aerial/atmosphere.hpp>
@@ -215,6 +231,11 @@ struct SkyTable {
     double shadowElevation = 0.0;  ///< c [rad]: centre of the rows at the earth's shadow
     double shadowWidth = 0.0;      ///< w [rad], > 0 where shadowShare > 0
     double shadowShare = 0.0;      ///< b, 0..1 - a: share of the rows at the earth's shadow
+    /// The column mapping (see "Table mapping" above): k [1/rad] of the cap
+    /// of the earth's shadow, whose onset lies at el = c - k psi^2, and the
+    /// warp's strength g (0..1). Both 0: columns uniform in azimuth.
+    double capCurvature = 0.0;
+    double capStrength = 0.0;
     /// Bumped on every completed solve.
     unsigned long long generation = 0;
 };
@@ -238,6 +259,32 @@ double skyTableRow(const SkyTable& table, double elevation);
 /// Elevation [rad] of a continuous row (0..elevationCount-1), the inverse of
 /// skyTableRow; row elevationCount-1 is exactly pi/2.
 double skyTableElevation(const SkyTable& table, double row);
+
+/// The column mapping's constants (sky.hpp, "Table mapping", columns): the
+/// shares of azimuthCount (each side of the anti-light point) inside the cap
+/// of the earth's shadow, in the band of its onset and between that band
+/// and the knot psiE; and the band's least width [deg].
+inline constexpr double kSkyCapInsideShare = 3.0 / 128.0;
+inline constexpr double kSkyCapOnsetShare = 12.0 / 128.0;
+inline constexpr double kSkyCapNearShare = 10.0 / 128.0;
+inline constexpr double kSkyCapMinBandDeg = 1.0;
+/// The share of the rows in the cap (0 .. c) and as far above it (c .. 2c),
+/// taken from the horizon band's.
+inline constexpr double kSkyCapRowShare = 16.0 / 63.0;
+
+/// Continuous column (0..azimuthCount, wrapping) of an azimuth `relative`
+/// [rad] from the light's (any value, wrapped into [0, 2 pi)) in the row at
+/// `elevation` [rad] (the column mapping: uniform except around the cap of
+/// the earth's shadow opposite a light just set).
+double skyTableColumn(const SkyTable& table, double relative, double elevation);
+/// Whether the table's columns are warped (else uniform in azimuth in every row).
+inline bool skyTableColumnsWarped(const SkyTable& table) {
+    return table.capCurvature > 0.0 && table.capStrength > 0.0 && table.shadowElevation > 0.0 &&
+           table.azimuthCount >= 4;
+}
+/// Azimuth from the light [rad, 0..2 pi] of a continuous column
+/// (0..azimuthCount) in the row at `elevation`, the inverse of skyTableColumn.
+double skyTableAzimuth(const SkyTable& table, double column, double elevation);
 
 /// Table lookup for a unit view direction (world space).
 SkySample sampleSkyTable(const SkyTable& table, const glm::dvec3& viewDirection);
