@@ -328,8 +328,9 @@ void SkySolver::Impl::rowColumns(double elevation, Scratch& s) const {
         s.spreadWeight = spreadWeight.data();
         return;
     }
+    skyTableAzimuths(back, elevation, columns, s.rowPhi.data());
     for (int i = 0; i < columns; ++i) {
-        const double p = std::min(skyTableAzimuth(back, double(i), elevation), kPi);
+        const double p = std::min(s.rowPhi[std::size_t(i)], kPi);
         s.rowPhi[std::size_t(i)] = p;
         s.rowCosPhi[std::size_t(i)] = std::cos(p);
         s.rowCosPhiF[std::size_t(i)] = float(s.rowCosPhi[std::size_t(i)]);

@@ -217,6 +217,19 @@ double skyTableColumn(const SkyTable& table, double relative, double elevation) 
     return std::clamp(col, 0.0, std::nextafter(double(n), 0.0));
 }
 
+void skyTableAzimuths(const SkyTable& table, double elevation, int count, double* out) {
+    const int n = table.azimuthCount;
+    const ColumnMapping map(table, elevation);
+    const double half = 0.5 * n;
+    for (int i = 0; i < count; ++i) {
+        const double col = std::clamp(double(i), 0.0, double(std::max(n, 0)));
+        out[i] = n < 1         ? 0.0
+                 : map.uniform ? 2.0 * kPi * col / n
+                 : col <= half ? kPi - map.azimuthOf(half - col)
+                               : kPi + map.azimuthOf(col - half);
+    }
+}
+
 double skyTableAzimuth(const SkyTable& table, double column, double elevation) {
     const int n = table.azimuthCount;
     if (n < 1) return 0.0;

@@ -527,6 +527,9 @@ TEST(SkyTableSampling, ColumnMappingFollowsTheCap) {
         ASSERT_TRUE(skyTableColumnsWarped(t)) << sun;
         const double c = t.shadowElevation;
         for (double el : {0.0, 0.3 * c, 0.9 * c, c, 1.5 * c, 0.3, 1.0}) {
+            std::vector<double> row(128);
+            skyTableAzimuths(t, el, 128, row.data());
+            for (int i = 0; i < 128; ++i) EXPECT_EQ(row[std::size_t(i)], skyTableAzimuth(t, i, el));
             double previous = -1.0;
             for (int n = 0; n <= 720; ++n) {
                 const double phi = 2.0 * kPi * n / 720.0;

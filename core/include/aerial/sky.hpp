@@ -277,6 +277,9 @@ inline constexpr double kSkyCapRowShare = 16.0 / 63.0;
 /// `elevation` [rad] (the column mapping: uniform except around the cap of
 /// the earth's shadow opposite a light just set).
 double skyTableColumn(const SkyTable& table, double relative, double elevation);
+/// skyTableAzimuth of the whole columns 0..count-1 of the row at `elevation`
+/// into out[0..count-1] (the row's mapping set up once).
+void skyTableAzimuths(const SkyTable& table, double elevation, int count, double* out);
 /// Whether the table's columns are warped (else uniform in azimuth in every row).
 inline bool skyTableColumnsWarped(const SkyTable& table) {
     return table.capCurvature > 0.0 && table.capStrength > 0.0 && table.shadowElevation > 0.0 &&
