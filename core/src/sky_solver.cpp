@@ -73,8 +73,6 @@ namespace {
 
 constexpr int kDefaultOpticalDepthAngles = 128;
 
-/// Distance along a ray from radius r0 with zenith cosine mu >= 0 to the
-/// sphere of radius r >= r0, given dr2 = r^2 - r0^2 >= 0 (no cancellation).
 // spreadMultiple's stencil for column i at azimuth phi [rad, 0..pi] from
 // the light: u = phi (K - 1) / pi in units of the K azimuths; Catmull-Rom
 // through the azimuths k - 1 .. k + 2 around it, mirrored at 0 and K - 1
@@ -93,6 +91,8 @@ void spreadStencil(double phi, int i, int padded, int* index, float* weight) {
     }
 }
 
+/// Distance along a ray from radius r0 with zenith cosine mu >= 0 to the
+/// sphere of radius r >= r0, given dr2 = r^2 - r0^2 >= 0 (no cancellation).
 double upwardCrossing(double r0, double mu, double dr2) {
     if (!(dr2 > 0.0)) return 0.0;
     const double b = r0 * mu;
