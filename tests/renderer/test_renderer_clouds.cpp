@@ -369,6 +369,80 @@ double maxDifference(const renderer::Image& a, const renderer::Image& b) {
     return out;
 }
 
+/// PSNR [dB] over the sky pixels of two frames after a 5 x 5 box filter of
+/// each (the mean of the sky pixels of the window): fine per-pixel grain
+/// averages out, structure wider than a few pixels (bands) stays.
+double blurredSkyPsnr(const renderer::Image& image, const renderer::Image& reference,
+                      const renderer::Image& depth) {
+    double squares = 0.0, peak = 0.0;
+    std::size_t count = 0;
+    const int w = depth.width, h = depth.height;
+    for (int y = 2; y < h - 2; ++y) {
+        for (int x = 2; x < w - 2; ++x) {
+            glm::dvec3 a(0.0), b(0.0);
+            int n = 0;
+            for (int dy = -2; dy <= 2; ++dy) {
+                for (int dx = -2; dx <= 2; ++dx) {
+                    const std::size_t i = std::size_t(y + dy) * w + (x + dx);
+                    if (depth.pixels[i] < 1.0f) continue;
+                    for (int c = 0; c < 3; ++c) {
+                        a[c] += image.pixels[i * 4 + c];
+                        b[c] += reference.pixels[i * 4 + c];
+                    }
+                    ++n;
+                }
+            }
+            if (n < 25) continue;  // whole windows of sky only
+            for (int c = 0; c < 3; ++c) {
+                const double d = (a[c] - b[c]) / n;
+                squares += d * d;
+                peak = std::max(peak, b[c] / n);
+            }
+            count += 3;
+        }
+    }
+    if (count == 0 || squares == 0.0) return 1000.0;
+    return 10.0 * std::log10(peak * peak / (squares / double(count)));
+}
+
+// A camera 400 m up looking 3 deg above the horizon at sunset: the rays
+// cross the layer over tens of km, and a dense cloud takes a whole step's
+// opacity at one sample. With the samples at the steps' midpoints and 64
+// steps per ray the clouds showed contour bands (the surface jumping by a
+// step, ~500 m, from row to row). The default march (64 steps: per-pixel
+// offsets, more samples on long paths, thick steps split) against 1024
+// steps, both through a 5 x 5 box filter (the grain of the offsets averages
+// out, bands do not): measured 51.3 dB, unfiltered 41.4 dB (the midpoint
+// march before: 30.2 and 26.1 dB); bound 40.
+TEST_F(GlTest, GrazingCloudsConvergeWithoutBands) {
+    renderer::Renderer r(rendererDesc());
+    ASSERT_TRUE(r.valid()) << r.error();
+    r.setScene(renderer::makeBuiltinScene());
+    const renderer::Camera camera = makeCamera({0.0, 400.0, 0.0}, {826.0, 443.3, 563.0}, 200000.0, 0.44);
+    PresetState state = cloudyState(19.7, 0.45);
+    const SkyPair sky = solveSky(state.environment.atmosphere, state.sunLight.body.direction,
+                                 state.moonLight.body.direction, 32, 16);
+    r.setSky(sky.sun, sky.moon);
+    renderer::FrameDesc frame = floatFrame();
+    frame.width = 320;
+    frame.height = 180;
+    frame.cloudSteps = 1024;
+    r.render(camera, state, frame);
+    const renderer::Image converged = r.readColour();
+    const renderer::Image depth = r.readLinearDepth();
+    frame.cloudSteps = 64;
+    r.render(camera, state, frame);
+    const renderer::Image image = r.readColour();
+    for (float value : image.pixels) ASSERT_TRUE(std::isfinite(value));
+    const double psnr = blurredSkyPsnr(image, converged, depth);
+    std::printf(
+        "[ measured ] clouds at a grazing view, 64 steps against 1024, 5x5 box-filtered sky PSNR %.1f dB "
+        "(plain %.1f dB)\n",
+        psnr, skyPsnr(image, converged, depth));
+    EXPECT_GE(psnr, 40.0);
+    EXPECT_TRUE(log.errors.empty()) << log.errors.front();
+}
+
 class AmortisedCloudTest : public GlTest {
 protected:
     void SetUp() override {

@@ -266,8 +266,12 @@ struct FrameDesc {
     /// Angular radius of the moon disc [rad]; 0 hides it. Default 0.2588 deg.
     double moonDiscRadius = 0.004517;
     CloudOutput cloudOutput = CloudOutput::Lit;
-    /// Samples of the cloud pass's view-ray march (core's midpoint march:
-    /// max(1, round(steps x share)) per shell segment), 1..1024. Default 64.
+    /// Samples of the cloud pass's view-ray march, 1..1024. Default 64. The
+    /// transmittance output takes exactly core's midpoint march (max(1,
+    /// round(steps x share)) per shell segment); the lit march takes this
+    /// many for a vertical crossing of the layer and up to 4x that along
+    /// grazing paths (sqrt of the path over the thickness), at offsets per
+    /// pixel, with optically thick steps split (shaders/clouds.glsl).
     int cloudSteps = 64;
     CloudQuality cloudQuality = CloudQuality::Reference;
     /// CloudQuality::Amortised: the side of the block of which one pixel is
