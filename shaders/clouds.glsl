@@ -5,16 +5,21 @@
 // sun and moon after the atmosphere, the sky and lightning emitters, then
 // faded into the air between the viewer and the cloud (DESIGN.md "Clouds").
 //
-// The lit march (not the transmittance mode): the samples are not at the
-// steps' midpoints but at an offset per pixel (interleaved gradient noise),
-// a grazing ray gets more of them (cloudLitSamples), and an optically thick
-// step is split into sub-steps (kSubStepDepth). Before, a dense cloud took
-// a whole step's opacity at one sample, so its surface sat where the first
-// sample inside it fell, and that moved by a step along the ray from row to
-// row of pixels: contour bands across every cloud seen at a low angle (a
-// camera 400 m up looking 3 deg above the horizon: bands 530 m apart along
-// the rays; 640x360 at 19:43, render 1.05 s, with all three 3.0 s on
-// llvmpipe here; the default view 1.35 -> 2.3 s).
+// The lit march (not the transmittance mode): a grazing ray gets more
+// samples (cloudLitSamples), and an optically thick step is split into
+// sub-steps (kSubStepDepth). Before, a dense cloud took a whole step's
+// opacity at one sample, so its surface sat where the first sample inside
+// it fell, and that moved by a step along the ray from row to row of
+// pixels: contour bands across every cloud seen at a low angle (a camera
+// 400 m up looking 3 deg above the horizon: bands 530 m apart along the
+// rays). A per-pixel offset of the samples (interleaved gradient noise)
+// was tried as well: it turned what was left into grain and brought the
+// image no closer to the converged march (test_renderer_clouds,
+// GrazingCloudsConvergeWithoutBands), so the samples stay at the midpoints.
+// Cost (llvmpipe here, bench_renderer CloudsReferenceVsAmortised/320/180,
+// looking up from the valley): the reference pass 237 -> 550 ms, the
+// amortised pass while panning 41 -> 94 ms; most of it the longer paths'
+// samples (without them 381 ms, and 35.5 dB in that test).
 //
 // Inputs: frame (eye, corner rays, lights: direction and E_ground,
 //   skyAmbient), CloudBlock and the noise (common/clouds.glsl), the sky
@@ -112,14 +117,6 @@ const float kAmbientBase = 0.25;
 const float kLongPathFactor = 4.0;  // samples along a grazing path: at most 4x a vertical crossing's  // samples along a grazing path: at most 4x a vertical crossing's
 const float kSubStepDepth = 0.5;    // optical depth of a sub-step of a thick step
 const int kMaxSubSteps = 8;
-
-/// Interleaved gradient noise (Jimenez 2014, "Next generation post
-/// processing in Call of Duty: Advanced Warfare", SIGGRAPH course): a
-/// value in [0, 1) per pixel whose neighbours differ, so an offset made
-/// of it dithers a step pattern into fine grain, not bands.
-float interleavedGradientNoise(vec2 pixel) {
-    return fract(52.9829189 * fract(dot(pixel, vec2(0.06711056, 0.00583715))));
-}
 
 /// Samples of the lit march along a path of length `total` in the layer:
 /// `steps` for a vertical crossing of the layer's thickness, times
@@ -264,21 +261,17 @@ void main() {
     vec3 radiance = vec3(0.0);
     float transmittance = 1.0;
     float weightedDistance = 0.0;
-    // Where the samples sit in their steps: a fixed offset per pixel
-    // (interleaved gradient noise, Jimenez 2014), not the midpoint, so the
-    // steps' edges do not line up across neighbouring pixels; and how many:
-    // clouds.steps for a vertical crossing of the layer, up to
-    // kLongPathFactor times that along the long grazing paths
-    // (cloudLitSamples). Both are functions of the pixel and its ray only,
-    // so the amortised path traces exactly the reference's march.
-    float offset = interleavedGradientNoise(vec2(pixel));
+    // How many samples: clouds.steps for a vertical crossing of the layer,
+    // up to kLongPathFactor times that along the long grazing paths
+    // (cloudLitSamples); each at its step's midpoint. A function of the ray
+    // only (no noise), so the amortised path traces exactly the reference.
     int steps = cloudLitSamples(clouds.steps, total);
     for (int k = 0; k < count && transmittance >= kTransmittanceCutoff; ++k) {
         float span = segments[k].y - segments[k].x;
         int n = cloudSegmentSamples(steps, span, total);
         float dt = span / float(n);
         for (int i = 0; i < n && transmittance >= kTransmittanceCutoff; ++i) {
-            float t = segments[k].x + (float(i) + offset) * dt;
+            float t = segments[k].x + (float(i) + 0.5) * dt;
             float f;
             float rho = cloudDensityAt(o + v * t, f);
             if (!(rho > 0.0)) continue;
@@ -291,7 +284,7 @@ void main() {
             int m = clamp(int(ceil(rho * dt / kSubStepDepth)), 1, kMaxSubSteps);
             float h = dt / float(m);
             for (int j = 0; j < m; ++j) {
-                float ts = m == 1 ? t : segments[k].x + float(i) * dt + (float(j) + offset) * h;
+                float ts = m == 1 ? t : segments[k].x + float(i) * dt + (float(j) + 0.5) * h;
                 vec3 p = o + v * ts;
                 float rhoSub = rho;
                 if (m > 1) {

@@ -407,13 +407,13 @@ double blurredSkyPsnr(const renderer::Image& image, const renderer::Image& refer
 
 // A camera 400 m up looking 3 deg above the horizon at sunset: the rays
 // cross the layer over tens of km, and a dense cloud takes a whole step's
-// opacity at one sample. With the samples at the steps' midpoints and 64
-// steps per ray the clouds showed contour bands (the surface jumping by a
-// step, ~500 m, from row to row). The default march (64 steps: per-pixel
-// offsets, more samples on long paths, thick steps split) against 1024
-// steps, both through a 5 x 5 box filter (the grain of the offsets averages
-// out, bands do not): measured 51.3 dB, unfiltered 41.4 dB (the midpoint
-// march before: 30.2 and 26.1 dB); bound 40.
+// opacity at one sample. With 64 midpoint samples per ray the clouds showed
+// contour bands (the surface jumping by a step, ~500 m, from row to row).
+// The default lit march (64 steps: more samples on long paths, thick steps
+// split) against 1024 steps, both through a 5 x 5 box filter (bands stay,
+// per-pixel grain would average out): measured 52.1 dB, unfiltered 43.5 dB
+// (the plain midpoint march before: 30.2 and 26.1 dB; without the longer
+// paths' samples 35.5 dB); bound 40.
 TEST_F(GlTest, GrazingCloudsConvergeWithoutBands) {
     renderer::Renderer r(rendererDesc());
     ASSERT_TRUE(r.valid()) << r.error();

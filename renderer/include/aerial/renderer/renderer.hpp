@@ -270,8 +270,8 @@ struct FrameDesc {
     /// transmittance output takes exactly core's midpoint march (max(1,
     /// round(steps x share)) per shell segment); the lit march takes this
     /// many for a vertical crossing of the layer and up to 4x that along
-    /// grazing paths (sqrt of the path over the thickness), at offsets per
-    /// pixel, with optically thick steps split (shaders/clouds.glsl).
+    /// grazing paths (sqrt of the path over the thickness), with optically
+    /// thick steps split (shaders/clouds.glsl).
     int cloudSteps = 64;
     CloudQuality cloudQuality = CloudQuality::Reference;
     /// CloudQuality::Amortised: the side of the block of which one pixel is
