@@ -1,25 +1,32 @@
 // clouds.glsl — the cloud layer pass (renderer/src/cloud_pass.cpp): a
 // full-resolution march per pixel through the shell segments of
-// common/clouds.glsl (in the transmittance mode core's cloudOpticalDepth
-// midpoint placement; the lit march's own below), lit by the
+// common/clouds.glsl (core's cloudOpticalDepth midpoint placement; the lit
+// march refines it where a cloud begins, below), lit by the
 // sun and moon after the atmosphere, the sky and lightning emitters, then
 // faded into the air between the viewer and the cloud (DESIGN.md "Clouds").
 //
-// The lit march (not the transmittance mode): a grazing ray gets more
-// samples (cloudLitSamples), and an optically thick step is split into
-// sub-steps (kSubStepDepth). Before, a dense cloud took a whole step's
-// opacity at one sample, so its surface sat where the first sample inside
-// it fell, and that moved by a step along the ray from row to row of
-// pixels: contour bands across every cloud seen at a low angle (a camera
-// 400 m up looking 3 deg above the horizon: bands 530 m apart along the
-// rays). A per-pixel offset of the samples (interleaved gradient noise)
-// was tried as well: it turned what was left into grain and brought the
-// image no closer to the converged march (test_renderer_clouds,
-// GrazingCloudsConvergeWithoutBands), so the samples stay at the midpoints.
-// Cost (llvmpipe here, bench_renderer CloudsReferenceVsAmortised/320/180,
-// looking up from the valley): the reference pass 237 -> 550 ms, the
-// amortised pass while panning 41 -> 94 ms; most of it the longer paths'
-// samples (without them 381 ms, and 35.5 dB in that test).
+// The lit march (not the transmittance mode) refines the steps where the
+// surface of a cloud is: a step that enters a cloud (the sample before was
+// empty) is re-marched from the sample before in kEntrySubSteps sub-steps,
+// and an optically thick step is split (kSubStepDepth). Before, a dense
+// cloud took a whole step's opacity at one sample, so its surface sat where
+// the first sample inside it fell, and that moved by a step along the ray
+// from row to row of pixels: contour bands across every cloud seen at a low
+// angle (a camera 400 m up looking 3 deg above the horizon: 64 steps of
+// ~530 m, optical depth ~16 each). Measured (test_renderer_clouds,
+// GrazingCloudsConvergeWithoutBands: 64 against 1024 steps, 5x5-filtered
+// sky PSNR; bench_renderer CloudsReferenceVsAmortised/320/180, llvmpipe
+// here, the reference pass looking up from the valley), in one session:
+//   midpoint march only                              30.2 dB   237 ms
+//   thick steps split                                35.5 dB   381 ms
+//   + sqrt(path / thickness) x the samples (<= 4x)   52.1 dB   550 ms
+//   thick steps split + entries refined (this)       46.4 dB   448 ms
+//   the same + the samples on long paths (<= 2x)     56.5 dB   644 ms
+// (the timings vary by ~15% from run to run; the grazing 640x360 frame of
+// above: 1.05 s before, 1.8 s now, 2.9 s with 4x the samples).
+// A per-pixel offset of the samples (interleaved gradient noise) only
+// turned what was left into grain (no closer to the converged march): the
+// samples stay at the midpoints.
 //
 // Inputs: frame (eye, corner rays, lights: direction and E_ground,
 //   skyAmbient), CloudBlock and the noise (common/clouds.glsl), the sky
@@ -114,22 +121,10 @@ const float kBackLobeWeight = 0.3;
 const float kLightMaxDistanceFactor = 4.0;
 const float kTransmittanceCutoff = 1e-3;
 const float kAmbientBase = 0.25;
-const float kLongPathFactor = 4.0;  // samples along a grazing path: at most 4x a vertical crossing's  // samples along a grazing path: at most 4x a vertical crossing's
 const float kSubStepDepth = 0.5;    // optical depth of a sub-step of a thick step
 const int kMaxSubSteps = 8;
+const int kEntrySubSteps = 6;     // sub-steps of a cloud's entry (1.5 steps)
 
-/// Samples of the lit march along a path of length `total` in the layer:
-/// `steps` for a vertical crossing of the layer's thickness, times
-/// sqrt(total / thickness), at most kLongPathFactor times (capped at 1024):
-/// a grazing ray 16x longer than a vertical one gets 4x the samples, so its
-/// steps are 4x, not 16x, as long. With clouds.steps = 64 and a 1.8 km
-/// layer seen from 400 m at 3 deg of elevation (34 km in the layer), 256
-/// samples of 130 m instead of 64 of 530 m.
-int cloudLitSamples(int steps, float total) {
-    float ratio = total / max(clouds.thicknessM, 1.0);
-    float scale = clamp(sqrt(max(ratio, 1.0)), 1.0, kLongPathFactor);
-    return clamp(int(ceil(float(max(steps, 1)) * scale)), 1, 1024);
-}
 
 /// Henyey-Greenstein (1 - g^2) / (4 pi (1 + g^2 - 2 g mu)^1.5) [1/sr].
 float henyeyGreenstein(float mu, float g) {
@@ -261,30 +256,39 @@ void main() {
     vec3 radiance = vec3(0.0);
     float transmittance = 1.0;
     float weightedDistance = 0.0;
-    // How many samples: clouds.steps for a vertical crossing of the layer,
-    // up to kLongPathFactor times that along the long grazing paths
-    // (cloudLitSamples); each at its step's midpoint. A function of the ray
-    // only (no noise), so the amortised path traces exactly the reference.
-    int steps = cloudLitSamples(clouds.steps, total);
+    // The samples at the steps' midpoints, as core's march, refined below
+    // where a step holds a cloud's entry or is optically thick. A function
+    // of the ray only (no noise), so the amortised path traces exactly the
+    // reference.
+    int steps = clouds.steps;
     for (int k = 0; k < count && transmittance >= kTransmittanceCutoff; ++k) {
         float span = segments[k].y - segments[k].x;
         int n = cloudSegmentSamples(steps, span, total);
         float dt = span / float(n);
+        bool empty = true;  // the sample before held no cloud
         for (int i = 0; i < n && transmittance >= kTransmittanceCutoff; ++i) {
             float t = segments[k].x + (float(i) + 0.5) * dt;
             float f;
             float rho = cloudDensityAt(o + v * t, f);
-            if (!(rho > 0.0)) continue;
-            // An optically thick step (a dense cloud at a grazing ray's
-            // long steps) would put the cloud's whole surface at its one
-            // sample, and the surface would jump by a step from pixel to
+            if (!(rho > 0.0)) {
+                empty = true;
+                continue;
+            }
+            // The piece this sample stands for: its step, or, entering a
+            // cloud (the sample before was empty), from the sample before:
+            // the cloud's surface lies somewhere after it. A piece that is
+            // optically thick or a cloud's entry would put the surface at
+            // one sample, and the surface would jump by a step from pixel to
             // pixel (contour bands): it is split into sub-steps of optical
-            // depth <= kSubStepDepth (at most kMaxSubSteps), each with its
-            // own density sample, from the step's start.
-            int m = clamp(int(ceil(rho * dt / kSubStepDepth)), 1, kMaxSubSteps);
-            float h = dt / float(m);
+            // depth <= kSubStepDepth (an entry into at least kEntrySubSteps,
+            // at most kMaxSubSteps), each with its own density sample.
+            float start = segments[k].x + float(i) * dt - (empty && i > 0 ? 0.5 * dt : 0.0);
+            float piece = segments[k].x + float(i + 1) * dt - start;
+            int m = clamp(int(ceil(rho * piece / kSubStepDepth)), empty ? kEntrySubSteps : 1, kMaxSubSteps);
+            empty = false;
+            float h = piece / float(m);
             for (int j = 0; j < m; ++j) {
-                float ts = m == 1 ? t : segments[k].x + float(i) * dt + (float(j) + 0.5) * h;
+                float ts = m == 1 ? t : start + (float(j) + 0.5) * h;
                 vec3 p = o + v * ts;
                 float rhoSub = rho;
                 if (m > 1) {

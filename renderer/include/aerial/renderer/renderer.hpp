@@ -268,10 +268,9 @@ struct FrameDesc {
     CloudOutput cloudOutput = CloudOutput::Lit;
     /// Samples of the cloud pass's view-ray march, 1..1024. Default 64. The
     /// transmittance output takes exactly core's midpoint march (max(1,
-    /// round(steps x share)) per shell segment); the lit march takes this
-    /// many for a vertical crossing of the layer and up to 4x that along
-    /// grazing paths (sqrt of the path over the thickness), with optically
-    /// thick steps split (shaders/clouds.glsl).
+    /// round(steps x share)) per shell segment); the lit march the same,
+    /// with each entry into a cloud and each optically thick step re-marched
+    /// in sub-steps (shaders/clouds.glsl).
     int cloudSteps = 64;
     CloudQuality cloudQuality = CloudQuality::Reference;
     /// CloudQuality::Amortised: the side of the block of which one pixel is
