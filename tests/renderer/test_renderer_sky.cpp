@@ -55,6 +55,13 @@ protected:
         r.render(camera, air, f);
         return r.readColour();
     }
+
+    /// What the GPU must show along v: the CPU's sun sky plus moon sky.
+    static glm::dvec3 cpuSky(const SkyPair& sky, const PresetState& air, const glm::dvec3& v) {
+        const double g = air.environment.atmosphere.mieAnisotropy;
+        return skyRadiance(sky.sun, g, v, air.sunLight.illuminanceSpace) +
+               skyRadiance(sky.moon, g, v, air.moonLight.illuminanceSpace);
+    }
 };
 
 Camera skyCamera(const glm::dvec3& eye, const glm::dvec3& target, double fov) {
@@ -94,10 +101,7 @@ TEST_F(SkyVsCpu, EveryPixelMatchesSkyRadiance) {
         for (int y = 0; y < kHeight; ++y) {
             for (int x = 0; x < kWidth; ++x) {
                 const glm::dvec3 v = glm::normalize(renderer::farRayAtPixel(f, x, y, kWidth, kHeight));
-                const glm::dvec3 cpu = skyRadiance(sky.sun, air.environment.atmosphere.mieAnisotropy, v,
-                                                   air.sunLight.illuminanceSpace) +
-                                       skyRadiance(sky.moon, air.environment.atmosphere.mieAnisotropy, v,
-                                                   air.moonLight.illuminanceSpace);
+                const glm::dvec3 cpu = cpuSky(sky, air, v);
                 for (int c = 0; c < 3; ++c) {
                     const double gpu = image.at(x, y, c);
                     const double error = std::fabs(gpu - cpu[c]) / std::max(std::fabs(cpu[c]), 1e-6);
@@ -153,10 +157,7 @@ TEST_F(SkyVsCpu, SetSunRowMappingMatchesSkyRadiance) {
             for (int y = 0; y < kHeight; ++y) {
                 for (int x = 0; x < kWidth; ++x) {
                     const glm::dvec3 v = glm::normalize(renderer::farRayAtPixel(f, x, y, kWidth, kHeight));
-                    const glm::dvec3 c = skyRadiance(sky.sun, air.environment.atmosphere.mieAnisotropy, v,
-                                                     air.sunLight.illuminanceSpace) +
-                                         skyRadiance(sky.moon, air.environment.atmosphere.mieAnisotropy, v,
-                                                     air.moonLight.illuminanceSpace);
+                    const glm::dvec3 c = cpuSky(sky, air, v);
                     cpu[std::size_t(y) * kWidth + x] = c;
                     brightest = std::max({brightest, c.x, c.y, c.z});
                 }
