@@ -121,10 +121,9 @@ const float kBackLobeWeight = 0.3;
 const float kLightMaxDistanceFactor = 4.0;
 const float kTransmittanceCutoff = 1e-3;
 const float kAmbientBase = 0.25;
-const float kSubStepDepth = 0.5;    // optical depth of a sub-step of a thick step
+const float kSubStepDepth = 0.5;  // optical depth of a sub-step of a thick step
 const int kMaxSubSteps = 8;
-const int kEntrySubSteps = 6;     // sub-steps of a cloud's entry (1.5 steps)
-
+const int kEntrySubSteps = 6;  // sub-steps of a cloud's entry (1.5 steps)
 
 /// Henyey-Greenstein (1 - g^2) / (4 pi (1 + g^2 - 2 g mu)^1.5) [1/sr].
 float henyeyGreenstein(float mu, float g) {
@@ -260,10 +259,9 @@ void main() {
     // where a step holds a cloud's entry or is optically thick. A function
     // of the ray only (no noise), so the amortised path traces exactly the
     // reference.
-    int steps = clouds.steps;
     for (int k = 0; k < count && transmittance >= kTransmittanceCutoff; ++k) {
         float span = segments[k].y - segments[k].x;
-        int n = cloudSegmentSamples(steps, span, total);
+        int n = cloudSegmentSamples(clouds.steps, span, total);
         float dt = span / float(n);
         bool empty = true;  // the sample before held no cloud
         for (int i = 0; i < n && transmittance >= kTransmittanceCutoff; ++i) {
