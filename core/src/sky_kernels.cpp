@@ -202,6 +202,11 @@ AERIAL_INLINE float curvatureFactor(float cubic, int shadowed, float tauA, float
 /// along the view ray (the light crosses the dense air below the point) and
 /// bulges above the line: without the term the first layer of a horizon row
 /// is 3% too bright in blue there, and the texel 2%.
+/// With kStraight the same integrals are also summed with the straight-on
+/// weights (LayerConstants::straightP, straightQ) into so0..so5: the single
+/// scattering that Mie's narrow forward peak scatters on along the view ray
+/// towards the viewer (sky_multiple.hpp, "Mie's truncation").
+template <bool kStraight>
 AERIAL_INLINE void skyLayer(
     int nc, const LayerConstants& k, const float* __restrict sIn, const float* __restrict sOut,
     const float* __restrict tauA0, const float* __restrict tauA1, const float* __restrict tauA2,
@@ -214,10 +219,16 @@ AERIAL_INLINE void skyLayer(
     const float* __restrict tauD0, const float* __restrict tauD1, const float* __restrict tauD2,
     const float* __restrict mA, const float* __restrict mB, const float* __restrict mC,
     const float* __restrict mD, float* __restrict acc0, float* __restrict acc1, float* __restrict acc2,
-    float* __restrict acc3, float* __restrict acc4, float* __restrict acc5) {
+    float* __restrict acc3, float* __restrict acc4, float* __restrict acc5, float* __restrict so0,
+    float* __restrict so1, float* __restrict so2, float* __restrict so3, float* __restrict so4,
+    float* __restrict so5) {
     const float s0 = k.start, s1 = k.end;
     const float p0 = k.p[0], p1 = k.p[1], p2 = k.p[2], p3 = k.p[3], p4 = k.p[4], p5 = k.p[5];
     const float q0 = k.q[0], q1 = k.q[1], q2 = k.q[2], q3 = k.q[3], q4 = k.q[4], q5 = k.q[5];
+    const float sp0 = k.straightP[0], sp1 = k.straightP[1], sp2 = k.straightP[2], sp3 = k.straightP[3],
+                sp4 = k.straightP[4], sp5 = k.straightP[5];
+    const float sq0 = k.straightQ[0], sq1 = k.straightQ[1], sq2 = k.straightQ[2], sq3 = k.straightQ[3],
+                sq4 = k.straightQ[4], sq5 = k.straightQ[5];
     const float curv = k.curvature;
     const float wA = k.stencil[0], wB = k.stencil[1], wC = k.stencil[2], wD = k.stencil[3];
     for (int i = 0; i < nc; ++i) {
@@ -256,6 +267,14 @@ AERIAL_INLINE void skyLayer(
         acc3[i] += p3 * a1 + q3 * a2;
         acc4[i] += p4 * b1 + q4 * b2;
         acc5[i] += p5 * c1 + q5 * c2;
+        if constexpr (kStraight) {
+            so0[i] += sp0 * a1 + sq0 * a2;
+            so1[i] += sp1 * b1 + sq1 * b2;
+            so2[i] += sp2 * c1 + sq2 * c2;
+            so3[i] += sp3 * a1 + sq3 * a2;
+            so4[i] += sp4 * b1 + sq4 * b2;
+            so5[i] += sp5 * c1 + sq5 * c2;
+        }
     }
 }
 
@@ -350,13 +369,14 @@ AERIAL_INLINE void shellAniso(int count, int nc, float alpha, float beta, int n,
 }
 
 /// A layer's multiple scattering for every column: msA Psi(a) + msB Psi(b)
-/// (Psi linear along the layer, weighted by the layer's sigma_s T shape; the
-/// anisotropy is added per shell, shellAniso).
+/// (Psi linear along the layer, weighted by the layer's sigma_s T shape,
+/// Mie's weights times its isotropic share `mieShare`; the anisotropy is
+/// added per shell, shellAniso).
 AERIAL_INLINE void msLayer(int nc, const LayerConstants& k, const float* __restrict lo,
-                           const float* __restrict up, float* __restrict acc) {
+                           const float* __restrict up, float mieShare, float* __restrict acc) {
     constexpr int count = kMsSkyColumns;  // of the nc-strided records
     for (int c = 0; c < 3; ++c) {
-        const float wa = k.msA[c] + k.msA[3 + c], wb = k.msB[c] + k.msB[3 + c];
+        const float wa = k.msA[c] + mieShare * k.msA[3 + c], wb = k.msB[c] + mieShare * k.msB[3 + c];
         const float* __restrict pa = lo + std::size_t(10 + c) * nc;
         const float* __restrict pb = up + std::size_t(10 + c) * nc;
         float* __restrict out = acc + std::size_t(c) * nc;
@@ -514,7 +534,9 @@ AERIAL_HOT_KERNEL void skyKernel(const SkyKernelArgs& a) {
     const float maxU = float(a.angles - 1) - 1e-3f;
     float* acc = a.acc;
     auto shell = [&](int j) { return a.shells + std::size_t(j % kShellSlots) * kShellRecord * nc; };
-    for (int i = 0; i < 9 * nc; ++i) acc[i] = 0.0f;  // before the shells: shellAniso adds to it
+    const bool straight = a.psi != nullptr && a.straightOn;
+    for (int i = 0; i < (straight ? 15 : 9) * nc; ++i)
+        acc[i] = 0.0f;  // before the shells: shellAniso adds to it
     for (int j = 0; j <= std::min(nl, kShellSlots - 1); ++j) lightAtShell(a, j, maxU);
     for (int l = 0; l < nl; ++l) {
         if (l >= 2 && l + 2 <= nl) lightAtShell(a, l + 2, maxU);
@@ -523,12 +545,23 @@ AERIAL_HOT_KERNEL void skyKernel(const SkyKernelArgs& a) {
         const float* up = shell(l + 1);
         const float* c = shell(k.stencilC);
         const float* d = shell(k.stencilD);
-        skyLayer(nc, k, a.shadowIn, a.shadowOut, lo, lo + nc, lo + 2 * nc, lo + 3 * nc, lo + 4 * nc,
-                 lo + 5 * nc, lo + 6 * nc, lo + 7 * nc, lo + 8 * nc, up, up + nc, up + 2 * nc, up + 3 * nc,
-                 up + 4 * nc, up + 5 * nc, up + 6 * nc, up + 7 * nc, up + 8 * nc, c, c + nc, c + 2 * nc, d,
-                 d + nc, d + 2 * nc, lo + 9 * nc, up + 9 * nc, c + 9 * nc, d + 9 * nc, acc, acc + nc,
-                 acc + 2 * nc, acc + 3 * nc, acc + 4 * nc, acc + 5 * nc);
-        if (a.psi != nullptr) msLayer(nc, k, lo, up, acc + 6 * nc);
+        float* so = acc + 9 * nc;  // the straight-on share (with a.straightOn only)
+        if (straight) {
+            skyLayer<true>(nc, k, a.shadowIn, a.shadowOut, lo, lo + nc, lo + 2 * nc, lo + 3 * nc, lo + 4 * nc,
+                           lo + 5 * nc, lo + 6 * nc, lo + 7 * nc, lo + 8 * nc, up, up + nc, up + 2 * nc,
+                           up + 3 * nc, up + 4 * nc, up + 5 * nc, up + 6 * nc, up + 7 * nc, up + 8 * nc, c,
+                           c + nc, c + 2 * nc, d, d + nc, d + 2 * nc, lo + 9 * nc, up + 9 * nc, c + 9 * nc,
+                           d + 9 * nc, acc, acc + nc, acc + 2 * nc, acc + 3 * nc, acc + 4 * nc, acc + 5 * nc,
+                           so, so + nc, so + 2 * nc, so + 3 * nc, so + 4 * nc, so + 5 * nc);
+        } else {
+            skyLayer<false>(nc, k, a.shadowIn, a.shadowOut, lo, lo + nc, lo + 2 * nc, lo + 3 * nc,
+                            lo + 4 * nc, lo + 5 * nc, lo + 6 * nc, lo + 7 * nc, lo + 8 * nc, up, up + nc,
+                            up + 2 * nc, up + 3 * nc, up + 4 * nc, up + 5 * nc, up + 6 * nc, up + 7 * nc,
+                            up + 8 * nc, c, c + nc, c + 2 * nc, d, d + nc, d + 2 * nc, lo + 9 * nc,
+                            up + 9 * nc, c + 9 * nc, d + 9 * nc, acc, acc + nc, acc + 2 * nc, acc + 3 * nc,
+                            acc + 4 * nc, acc + 5 * nc, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr);
+        }
+        if (a.psi != nullptr) msLayer(nc, k, lo, up, a.mieIsotropicShare, acc + 6 * nc);
     }
 }
 

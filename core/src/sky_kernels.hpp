@@ -94,6 +94,8 @@ struct LayerConstants {
     float start, end;                           // layer extent along the view ray
     float p[6], q[6];                           // weight p + q t: R rgb, M rgb
     float msA[6], msB[6];    // multiple scattering: sigma_X T weights at a and b, R rgb, M rgb
+    float straightP[6],
+        straightQ[6];        // the straight-on share's weight (p + q t) (e^(f tau_M) - 1), see skyLayer
     float viewUp;            // the view ray's zenith cosine at the upper shell
     float curvature;         // tanh(lambda / 4) / 3, see curvatureFactor
     int stencilC, stencilD;  // the stencil's two shells besides the layer's own (curvatureFactor)
@@ -137,10 +139,14 @@ struct SkyKernelArgs {
     float viewUp0;   // the view ray's zenith cosine at the viewer (sin of the row's elevation)
     float nuA, nuB;  // the view ray's cosine to the light: nuA + nuB cos(phi)
     float rayleighBand2, mieBand1, mieBand2;  // MultipleScatteringLut's Legendre factors
+    float mieIsotropicShare;                  // 1 - f_s: Mie's isotropic share of Psi (MultipleScatteringLut)
+    bool straightOn;                          // sum the straight-on share (acc 9..14; with psi only)
     float* anisoPoly;                         // [9][psiCosines] scratch of shellAniso
     float* shells;  // [kShellSlots][kShellRecord][columns] scratch: the light at the shells in use
-    /// [9][columns]: R rgb, M rgb, multiple rgb (with psi; its first
-    /// kMsSkyColumns entries per channel only, at msCosPhi; columns >= kMsSkyColumns)
+    /// [15][columns]: R rgb, M rgb, multiple rgb (with psi; its first
+    /// kMsSkyColumns entries per channel only, at msCosPhi; columns >= kMsSkyColumns),
+    /// and with straightOn the straight-on share of the single scattering, R rgb, M rgb
+    /// (phase-less, as the first six: LayerConstants::straightP)
     float* acc;
 };
 

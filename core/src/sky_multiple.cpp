@@ -150,18 +150,24 @@ void MultipleScatteringLut::buildPhases() {
     if (g == phaseG_) return;
     phaseG_ = g;
     constexpr int kLegendre = 4096;
-    double g1 = 0.0, g2 = 0.0, g3 = 0.0;
+    double g1 = 0.0, g2 = 0.0, g3 = 0.0, cone = 0.0;
+    const double coneCos = std::cos(kMsStraightOnConeDeg * kPi / 180.0);
     for (int k = 0; k < kLegendre; ++k) {
         const double t = (k + 0.5) / kLegendre, mu = 1.0 - 2.0 * t * t;
         const double w = 2.0 * kPi * miePhase(mu, g) * 4.0 * t / kLegendre;
         g1 += w * mu;
         g2 += w * (1.5 * mu * mu - 0.5);
         g3 += w * (2.5 * mu * mu - 1.5) * mu;
+        if (mu > coneCos) cone += w;
     }
-    // Delta-M with f = g_3, the delta through the Fejer window (sky_multiple.hpp, "Mie's truncation").
+    // Delta-M with f = g_3 (sky_multiple.hpp, "Mie's truncation"): the share
+    // f_s within the cone straight on (the sky solver's view rays), the rest
+    // f - f_s through the Fejer window.
     const double f = g3;
-    mieG1_ = g1 - 0.5 * f;
-    mieG2_ = g2 - 0.9 * f;
+    const double fs = std::clamp(cone, 0.0, std::max(f, 0.0));
+    mieStraightOn_ = fs;
+    mieG1_ = g1 - fs - 0.5 * (f - fs);
+    mieG2_ = g2 - fs - 0.9 * (f - fs);
     // The cells' sub-samples (the nodes' own mappings): zenith (cos, sin,
     // Jacobian) and azimuth (cos, Jacobian).
     constexpr int n = kMsPhaseSubsamples;

@@ -17,19 +17,24 @@
 // the field were the same everywhere around the point. Where it is not (a
 // low sun: lit upper air over a dark lower one) that under-estimated the
 // horizon by 30-37% against the path tracer, also with isotropic phases in
-// the tracer, i.e. it was the series, not the phase. So here the third order
-// is integrated explicitly from the second, through the atmosphere:
+// the tracer, i.e. it was the series, not the phase. So here the orders 3 to
+// kMsLastOrder (5) are integrated explicitly, each from the one before,
+// through the atmosphere:
 //   J_2 = L_2nd
-//   J_3(h, mu_s) = mean over the sphere of ( integral sigma_s T(x -> y) J_2(h(y), mu_s(y)) ds
-//                  + T(x -> ground) rho / pi (E_f J_2(0, mu_g) + E_1(mu_g)) )
-//   Psi_ms = J_2 + J_3 + J_3 f_ms / (1 - f_ms)       (the local series as the tail only)
+//   J_n(h, mu_s) = mean over the sphere of ( integral sigma_s T(x -> y) J_(n-1)(h(y), mu_s(y)) ds
+//                  + T(x -> ground) rho / pi (E_f J_(n-1)(0, mu_g) + [n = 3] E_1(mu_g)) )
+//   Psi_ms = J_2 + .. + J_5 + J_5 f_ms / (1 - f_ms)    (the local series as the tail only)
 // with E_1(mu_g) the irradiance that single scattering sends down to the
 // ground where the sun's zenith cosine is mu_g (from the ground row's upward
 // rays; Hillaire's ground term has the direct sun only, which left the
 // skylight's bounce out). Against the path tracer with isotropic phases
 // this is within 8% for suns from -2 to 90 deg (1.3x at -6 deg before the
-// solver's lookups became geometric between columns, see resample); more
-// explicit orders change it by under 1% (kMsLastOrder). Psi_ms is a radiance per unit illuminance
+// solver's lookups became geometric between columns, see resample). Orders
+// 4 and 5 matter in twilight only, where the tail's local series is worst
+// (blue, whose f_ms is largest): at sun -6 deg they took the horizon from
+// 0.85x to 0.91x the tracer in blue, at -2 and 0 deg by 2%, above the
+// horizon by under 1%; they cost ~25% more LUT build (on a change of the
+// atmosphere only, not of the sun). Psi_ms is a radiance per unit illuminance
 // [1/sr]; the sky's multiple scattering along a view ray is then
 // integral sigma_s T(viewer -> x) Psi_ms(h(x), mu_s(x)) ds (sky.hpp).
 //
@@ -88,9 +93,33 @@
 //   (0.55 and 0.19 at g = 0.8). Against the tracer at 16384 paths the worst
 //   per sun went from -6: 0.36, -2: 0.114, 0: 0.047, +2: 0.038, +10: 0.014,
 //   +30: 0.011, +90: 0.018 to 0.144, 0.067, 0.054, 0.042, 0.023, 0.020,
-//   0.018 (the sun's side of the horizon at sun 0 a little darker: less of
-//   the forward peak is carried; plain delta-M, the delta's share
-//   isotropic: 0.27, 0.078, 0.060, 0.044, 0.023, 0.024, 0.025).
+//   0.018 (plain delta-M, the delta's share isotropic: 0.27, 0.078, 0.060,
+//   0.044, 0.023, 0.024, 0.025). What the window still lost was the sun's
+//   side of the horizon in twilight (0.72x the tracer's multiple scattering
+//   in red at -2 deg, 0.58x at 0): there the light the Mie peak scatters on
+//   is the single scattering along the view ray itself, bright and sharply
+//   peaked at the horizon, which no l <= 2 field can carry. So the narrow
+//   part of the peak, f_s = the phase's share within kMsStraightOnConeDeg
+//   (6 deg: 0.12 at g = 0.8; the horizon's single scattering changes over a
+//   few degrees), is taken as going straight on, exactly: along each view
+//   ray the light that reaches s keeps f_s of Mie's scattering, i.e. sees
+//   e^(f_s tau_M(viewer -> s)) more transmittance (tau_M Mie's scattering
+//   depth), which the sky solver adds as a straight-on share of the single
+//   scattering (its phases per column, into the multiple channel: the
+//   single channels stay the single scattering) and as a factor on the
+//   multiple scattering's own weights. Only f - f_s then goes through the
+//   Fejer window, and Mie's isotropic share of Psi is 1 - f_s:
+//     g~_1 = g_M1 - f_s - (f - f_s) / 2,  g~_2 = g_M2 - f_s - 9 (f - f_s) / 10.
+//   With it (and orders to 5) the worst per sun is -6: 0.123, -2: 0.045,
+//   0: 0.033, +2: 0.023, +10: 0.015, +30: 0.014, +90: 0.015 (in a first
+//   form, carried in the single channels, f_s of 0.05 and 0.15 gave 0.053
+//   and 0.046 at -2 deg; the whole e^(f tau_M) without the window, "delta-M
+//   extinction" with f_s = f, 1.2x in red at -2 deg). Rows whose share stays
+//   under 0.5% of their single scattering (above ~7 deg) leave it out
+//   (sky_solver.cpp, kStraightOnFloor): it costs ~3% of the solve. What
+//   is left at -6 deg is the series' backward lobe: for a field from the
+//   sunlit air towards the sun it sends ~0.3 of the isotropic radiance back
+//   (the phase: 0.06), the anti-solar horizon 1.12x in red.
 //
 // Discretisation (documented in <aerial/sky.hpp>):
 //  * rows: kMsRows heights, the shells of kMsLayers equal-mass layers from
@@ -139,11 +168,12 @@ inline constexpr int kMsAzimuths = 4;           // of 8, by symmetry
 inline constexpr double kMsAzimuthPower = 1.5;  // phi = pi u^1.5
 inline constexpr int kMsCombos = kMsCosines * kMsAzimuths;  // per crossing, a multiple of 16
 inline constexpr int kMsMaxCrossings = 2 * kMsLayers + 2;
-inline constexpr int kMsLastOrder = 3;  // orders 2..kMsLastOrder explicit, the rest the geometric tail
+inline constexpr int kMsLastOrder = 5;  // orders 2..kMsLastOrder explicit, the rest the geometric tail
 inline constexpr int kMsAniso = 6;      // D_u, D_s, B_0, B_u, B_s, B_us (the phases, above)
 inline constexpr int kMsPhaseSubsamples = 8;    // per cell side, for the cell-averaged phases
 inline constexpr double kMsPsiFloor = 1e-30;    // 1/sr, below any sky that shows (resample)
 inline constexpr double kMsAnisoRatio = 100.0;  // |A_n / Psi| at most (resample)
+inline constexpr double kMsStraightOnConeDeg = 6.0;  // Mie's straight-on share ("Mie's truncation")
 
 /// A quadrature node: a zenith cosine or an azimuth [rad], and its weight.
 struct MsNode {
@@ -206,6 +236,9 @@ public:
     double rayleighBand2() const { return isotropic_ ? 0.0 : 5.0 * 0.1 / (4.0 * kPi); }
     double mieBand1() const { return isotropic_ ? 0.0 : 3.0 * mieG1_ / (4.0 * kPi); }
     double mieBand2() const { return isotropic_ ? 0.0 : 5.0 * mieG2_ / (4.0 * kPi); }
+    /// f_s, the share of Mie's phase within kMsStraightOnConeDeg of straight
+    /// on (0 with isotropic phases): taken as unscattered, see above.
+    double mieStraightOn() const { return isotropic_ ? 0.0 : mieStraightOn_; }
 
     const std::vector<double>& heights() const { return height_; }
     /// Psi_ms [1/sr], RGB per entry, (row * kMsCosines + column) * 3.
@@ -238,6 +271,7 @@ private:
     bool isotropic_ = false;
     double phaseG_ = NAN;                 // the Mie g of phaseM_
     double mieG1_ = 0.0, mieG2_ = 0.0;    // Cornette-Shanks' Legendre coefficients, delta-M (above)
+    double mieStraightOn_ = 0.0;          // f_s (mieStraightOn)
     std::vector<float> phaseR_, phaseM_;  // cell-averaged first phases [kMsZeniths][kMsCombos]
     std::vector<float> aniso_;            // [kMsRows][kMsCosines][kMsAniso][3]
 };

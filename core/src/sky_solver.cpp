@@ -72,6 +72,9 @@ using namespace detail;
 namespace {
 
 constexpr int kDefaultOpticalDepthAngles = 128;
+/// A row sums the straight-on share of Mie's forward peak (solveRow) where
+/// it reaches this fraction of the row's single scattering.
+constexpr double kStraightOnFloor = 5e-3;
 
 // spreadMultiple's stencil for column i at azimuth phi [rad, 0..pi] from
 // the light: u = phi (K - 1) / pi in units of the K azimuths; Catmull-Rom
@@ -213,7 +216,7 @@ SkySolver::Impl::Impl(const SkySolverDesc& d) : desc(d) {
         s.shells.assign(std::size_t(kShellSlots) * kShellRecord * paddedColumns, 0.0f);
         s.shadowIn.assign(std::size_t(paddedColumns), -1.0f);  // padding stays unshadowed
         s.shadowOut.assign(std::size_t(paddedColumns), -1.0f);
-        s.acc.assign(std::size_t(9) * paddedColumns, 0.0f);
+        s.acc.assign(std::size_t(15) * paddedColumns, 0.0f);
         s.anisoPoly.assign(std::size_t(9) * kMsCosines, 0.0f);
         const std::size_t pieces = std::size_t(2) * paddedColumns;
         s.edgeCrossing.assign(std::size_t(layers) + 1, 0.0f);
@@ -221,9 +224,9 @@ SkySolver::Impl::Impl(const SkySolverDesc& d) : desc(d) {
         s.edgeTauEnd.assign(3 * pieces, 0.0f);
         s.edgeT0.assign(pieces, 0.0f);
         s.edgeDt.assign(pieces, 0.0f);
-        s.edgeP.assign(6 * pieces, 0.0f);
-        s.edgeQ.assign(6 * pieces, 0.0f);
-        s.edgeOut.assign(6 * pieces, 0.0f);
+        s.edgeP.assign(12 * pieces, 0.0f);  // the layers' weights, then their straight-on share's
+        s.edgeQ.assign(12 * pieces, 0.0f);
+        s.edgeOut.assign(12 * pieces, 0.0f);
         s.edgeColumn.assign(pieces, 0);
         s.depthRow.resize(angles);
         s.rowPhi.assign(std::size_t(columns), 0.0);
@@ -386,6 +389,13 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
     }
     layerExpKernel(3 * layers, s.layerDepth.data(), s.layerT.data(), s.nodeT0.data(), s.nodeT1.data());
     double viewT[3] = {1.0, 1.0, 1.0};
+    // The straight-on share of Mie's forward peak (sky_multiple.hpp, "Mie's
+    // truncation"): light scattered once and then on by less than the cone
+    // keeps going towards the viewer, so beside the single scattering's
+    // weight beta_X T(viewer -> s) the layer carries beta_X T (e^(f tau_M) - 1),
+    // tau_M Mie's scattering depth from the viewer (at the layer's middle).
+    const double straight = multiple ? ms.mieStraightOn() : 0.0;
+    double mieDepth[3] = {0.0, 0.0, 0.0};
     const double sinL = sinLight, cosL = cosLight;
     for (int l = 0; l < layers; ++l) {
         const double a = s.crossing[std::size_t(l)], b = s.crossing[std::size_t(l) + 1];
@@ -403,6 +413,9 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
             const double e0 = s.nodeT0[at], e1 = s.nodeT1[at];
             const double e[4] = {e0, e1, e1 > 0.0 ? layerT / e1 : 0.0, e0 > 0.0 ? layerT / e0 : 0.0};
             const double beta[2] = {air.rayleighScattering[c], air.mieScattering[c]};
+            const double mieLayer = air.mieScattering[c] * mass[1];
+            const double boost = std::expm1(straight * (mieDepth[c] + 0.5 * mieLayer));
+            mieDepth[c] += mieLayer;
             for (int p = 0; p < 2; ++p) {
                 double num = 0.0, den = 0.0;
                 for (int n = 0; n < 4; ++n) {
@@ -415,8 +428,13 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
                 const double wA = total * (1.0 - centroid), wB = total * centroid;
                 lc.p[3 * p + c] = float(4.0 * wA - 2.0 * wB);
                 lc.q[3 * p + c] = float(6.0 * (wB - wA));
-                lc.msA[3 * p + c] = float(wA);  // multiple scattering: sigma_X T weights at a and b
-                lc.msB[3 * p + c] = float(wB);
+                lc.straightP[3 * p + c] = float((4.0 * wA - 2.0 * wB) * boost);
+                lc.straightQ[3 * p + c] = float(6.0 * (wB - wA) * boost);
+                // Multiple scattering: sigma_X T weights at a and b, with its
+                // own straight-on share (the multiple scattering along the
+                // view ray scattered on: e^(f tau_M) in all).
+                lc.msA[3 * p + c] = float(wA * (1.0 + boost));
+                lc.msB[3 * p + c] = float(wB * (1.0 + boost));
             }
             viewT[c] *= layerT;
         }
@@ -510,11 +528,30 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
     k.rayleighBand2 = float(ms.rayleighBand2());
     k.mieBand1 = float(ms.mieBand1());
     k.mieBand2 = float(ms.mieBand2());
+    k.mieIsotropicShare = float(1.0 - straight);
+    // Rows whose straight-on share stays below kStraightOnFloor of their
+    // single scattering (e^(f tau_M) - 1 at the far end: all but the rows
+    // within a few degrees of the horizon) leave it out, the cost of
+    // summing it.
+    k.straightOn = multiple && std::expm1(straight * std::max({mieDepth[0], mieDepth[1], mieDepth[2]})) >
+                                   kStraightOnFloor;
     k.shells = s.shells.data();
     k.acc = s.acc.data();
     skyKernel(k);
-    shadowEdgeLayers(s, r0, sinEl);
+    shadowEdgeLayers(s, r0, sinEl, k.straightOn);
     if (multiple) spreadMultiple(s);
+    if (k.straightOn) {
+        // The straight-on share, phase-less as the single scattering, with
+        // the phases of each column's angle to the light.
+        const std::size_t n = std::size_t(paddedColumns);
+        for (int i = 0; i < columns; ++i) {
+            const double mu = sinEl * sinL + cosEl * cosL * s.cosPhi[i];
+            const double pr = rayleighPhase(mu), pm = miePhase(mu, air.mieAnisotropy);
+            for (std::size_t c = 0; c < 3; ++c)
+                s.acc[(6 + c) * n + std::size_t(i)] += float(pr * s.acc[(9 + c) * n + std::size_t(i)] +
+                                                             pm * s.acc[(12 + c) * n + std::size_t(i)]);
+        }
+    }
     SkyTable& out = tables[1 - front];
     for (int i = 0; i < columns; ++i) {
         const std::size_t at0 = (std::size_t(row) * azimuthCount + i) * 3;
@@ -592,7 +629,7 @@ void SkySolver::Impl::spreadMultiple(Scratch& s) const {
 // fraction instead, with the shadowed shell's lookup clamped to its grazing
 // ray, put up to 17% too much Mie into the horizon towards a sun 0.5 deg
 // below it.
-void SkySolver::Impl::shadowEdgeLayers(Scratch& s, double r0, double sinEl) {
+void SkySolver::Impl::shadowEdgeLayers(Scratch& s, double r0, double sinEl, bool straightOn) {
     const double rg = air.planetRadius;
     const std::size_t rows = std::size_t(layers) + 1;
     const int cap = 2 * paddedColumns;
@@ -637,6 +674,8 @@ void SkySolver::Impl::shadowEdgeLayers(Scratch& s, double r0, double sinEl) {
         for (int k = 0; k < 6; ++k) {
             s.edgeP[std::size_t(k * cap + n)] = lc.p[k];
             s.edgeQ[std::size_t(k * cap + n)] = lc.q[k];
+            s.edgeP[std::size_t((6 + k) * cap + n)] = lc.straightP[k];
+            s.edgeQ[std::size_t((6 + k) * cap + n)] = lc.straightQ[k];
         }
         s.edgeT0[std::size_t(n)] = float((double(from) - s0) / len);
         s.edgeDt[std::size_t(n)] = float((double(to) - double(from)) / len);
@@ -670,10 +709,18 @@ void SkySolver::Impl::shadowEdgeLayers(Scratch& s, double r0, double sinEl) {
     e.q = s.edgeQ.data();
     e.out = s.edgeOut.data();
     edgeKernel(e);
+    const int planes = straightOn ? 12 : 6;  // with the straight-on share (skyKernel's acc 9..14)
+    if (straightOn) {
+        e.p = s.edgeP.data() + std::size_t(6) * cap;
+        e.q = s.edgeQ.data() + std::size_t(6) * cap;
+        e.out = s.edgeOut.data() + std::size_t(6) * cap;
+        edgeKernel(e);
+    }
     for (int m = 0; m < n; ++m) {
         const int i = s.edgeColumn[std::size_t(m)];
-        for (int k = 0; k < 6; ++k)
-            s.acc[std::size_t(k * paddedColumns + i)] += s.edgeOut[std::size_t(k * cap + m)];
+        for (int k = 0; k < planes; ++k)
+            s.acc[std::size_t((k < 6 ? k : k + 3) * paddedColumns + i)] +=
+                s.edgeOut[std::size_t(k * cap + m)];
     }
 }
 

@@ -105,7 +105,7 @@ struct SkySolver::Impl {
     void buildDepthRow(int row, Scratch& s);
     void rowColumns(double elevation, Scratch& s) const;
     void solveRow(int row, Scratch& s);
-    void shadowEdgeLayers(Scratch& s, double r0, double sinEl);
+    void shadowEdgeLayers(Scratch& s, double r0, double sinEl, bool straightOn);
     void spreadMultiple(Scratch& s) const;
     void run(bool rebuild, int rowBegin, int rowEnd);
     void publish();

@@ -10,7 +10,7 @@
 // that sun over the compared directions and channels); the worst per sun is
 // printed. Under AddressSanitizer / UndefinedBehaviorSanitizer builds (or
 // with AERIAL_TEST_QUICK set) the comparison runs 3 of the 7 sun elevations,
-// with the same 8192 paths per direction.
+// with the same 16384 paths per direction.
 #include <aerial/atmosphere.hpp>
 #include <aerial/sky.hpp>
 #include <aerial/sky_reference.hpp>
@@ -41,30 +41,33 @@ bool quick() { return test::quickRun(); }
 
 struct SunCase {
     double elevation;
-    double tolerance;  // measured worst (8192 paths) plus margin, see below
+    double tolerance;  // the 5% goal, or a regression bound where it is not met (below)
 };
 
-// The tolerances are regression bounds at the measured level (8192 paths,
-// this seed: -6: 0.154, -2: 0.067, 0: 0.052, +2: 0.039, +10: 0.024, +30:
-// 0.019, +90: 0.018; 16384 paths: 0.144, 0.067, 0.054, 0.042, 0.023, 0.020,
-// 0.018) with the noise as margin, not the goal of 5%: with the real phases
-// in the second order's first scattering, the moments of the second and
-// third orders' fields at the last and Mie's phase delta-M
-// (sky_multiple.hpp, "The phases", "Mie's truncation"), the sources of the
-// third and later orders are still isotropic and the moments stop at l = 2;
-// 2048 paths carried up to ~15% of Monte Carlo noise at the horizon in
-// twilight (at -2 deg the reference at (2, 180) was 11% above its 8192-path
-// value). Before delta-M (16384 paths) they measured -6: 0.36, -2: 0.114,
-// 0: 0.047, +2: 0.038, +10: 0.014, +30: 0.011, +90: 0.018; with L_1's
-// moments only (2048 paths) -6: 0.39, -2: 0.135, 0: 0.069, +2: 0.065, +10:
-// 0.032, +30: 0.019, +90: 0.021, and with the isotropic LUT they were
-// bounded by 0.50, 0.30, 0.35, 0.14, 0.10, 0.07 and 0.06.
+// The goal is 5% from -2 deg up, and that is the bound there; -6 deg has a
+// regression bound at its measured level. Measured (16384 paths, these
+// seeds) -6: 0.123, -2: 0.045, 0: 0.033, +2: 0.023, +10: 0.015, +30: 0.014,
+// +90: 0.015 with five explicit orders and Mie's straight-on share
+// (sky_multiple.hpp, "Mie's truncation"); 8192 paths left up to ~2% of
+// Monte Carlo noise in the twilight references (-2 deg: 0.051 at (2, 180),
+// the same solver), so the comparison takes 16384 (~1 min). What remains
+// at -6 deg is the l <= 2 series of Mie's phase: a field from the sunlit
+// air far towards the sun, sent back towards the anti-solar horizon, comes
+// out 1.12x in red (the series' backward lobe is ~0.3 of the isotropic
+// value, the phase's 0.06), and the sun's side of the horizon 0.91x in blue.
+// History (16384 paths): three explicit orders and the delta through the
+// Fejer window only: -6: 0.144, -2: 0.067, 0: 0.054, +2: 0.042, +10: 0.023,
+// +30: 0.020, +90: 0.018; before delta-M -6: 0.36, -2: 0.114, 0: 0.047,
+// +2: 0.038, +10: 0.014, +30: 0.011, +90: 0.018; with L_1's moments only
+// (2048 paths) -6: 0.39, -2: 0.135, 0: 0.069, +2: 0.065, +10: 0.032, +30:
+// 0.019, +90: 0.021, and with the isotropic LUT they were bounded by 0.50,
+// 0.30, 0.35, 0.14, 0.10, 0.07 and 0.06.
 // At sun 0 the probe (0, 180) lies exactly on the earth's shadow (the light
 // grazes the ground at the viewer), where the exact single scattering is a
 // knife edge (0 just below, twice the probed value just above): left out
 // there, as in test_sky's off-texel probes.
-const SunCase kSuns[] = {{-6.0, 0.20}, {-2.0, 0.09},  {0.0, 0.065}, {2.0, 0.05},
-                         {10.0, 0.03}, {30.0, 0.025}, {90.0, 0.025}};
+const SunCase kSuns[] = {{-6.0, 0.15}, {-2.0, 0.05}, {0.0, 0.05}, {2.0, 0.05},
+                         {10.0, 0.05}, {30.0, 0.05}, {90.0, 0.05}};
 
 TEST(SkyMultiple, TotalRadianceAgainstPathTracer) {
     const AtmosphereParams air;
@@ -73,9 +76,9 @@ TEST(SkyMultiple, TotalRadianceAgainstPathTracer) {
     single.viewSteps = 512;
     single.lightSteps = 128;
     // Fewer paths add Monte Carlo noise the tolerances were not measured
-    // with; AERIAL_MS_PATHS sets more for a report (16384: ~1 min).
+    // with; AERIAL_MS_PATHS sets another count for a report.
     const char* pathsEnv = std::getenv("AERIAL_MS_PATHS");
-    const int paths = pathsEnv != nullptr ? std::clamp(std::atoi(pathsEnv), 256, 1 << 20) : 8192;
+    const int paths = pathsEnv != nullptr ? std::clamp(std::atoi(pathsEnv), 256, 1 << 20) : 16384;
     SkySolver solver;
     std::printf(
         "[ sky ms  ] sun elev | worst error | at (elev, azimuth from the sun) | channel | "
@@ -128,7 +131,7 @@ TEST(SkyMultiple, TotalRadianceAgainstPathTracer) {
 
 // The LUT's own assumption made true: with isotropic phase functions at
 // every scattering the in-scattered field is isotropic at each point, and
-// the LUT's explicit orders (sky_multiple.hpp: J_2, J_3 from J_2 along every
+// the LUT's explicit orders (sky_multiple.hpp: J_2, then J_3 .. J_5 each from the one before along every
 // direction, the ground's reflection of the skylight, a geometric tail) must
 // match the path tracer's orders >= 2 direction by direction. Hillaire's
 // local geometric series alone came out 0.67-0.93 at sun 0 (fails here) and

@@ -18,9 +18,12 @@
 //   I_R(v) = integral beta_R(h(s)) T(viewer -> x(s)) T(x(s) -> light) ds
 //   I_M(v) = integral beta_M(h(s)) T(viewer -> x(s)) T(x(s) -> light) ds
 // (RGB each, dimensionless) and the multiple scattering, its phases applied,
-//   I_ms(v) = integral T(viewer -> x(s)) [(beta_R + beta_M)(h) Psi_ms(h, mu_s)
+//   I_ms(v) = integral T(viewer -> x(s)) e^(f_s tau_M(s)) [(beta_R + (1 - f_s) beta_M)(h) Psi_ms(h, mu_s)
 //                                         + beta_R(h) A_R(v) + beta_M(h) A_M(v)] ds
-// (RGB, [1/sr]; h, mu_s and the A_X at x(s)), so that the radiance is
+//           + integral T(viewer -> x(s)) (e^(f_s tau_M(s)) - 1) (P_R(mu) beta_R + P_M(mu) beta_M)(h)
+//                                        T(x(s) -> light) ds
+// (RGB, [1/sr]; h, mu_s and the A_X at x(s); tau_M(s) Mie's scattering depth
+// from the viewer, f_s the straight-on share of Mie's peak, below), so that the radiance is
 //   L(v) = E * (P_R(mu) I_R(v) + P_M(mu) I_M(v) + I_ms(v)),  mu = dot(v, light),
 // with the phase functions applied per pixel. The single-scattering channels
 // do not depend on the multiple scattering (they stay checkable against
@@ -28,18 +31,18 @@
 //
 // Multiple scattering (Hillaire 2020, "A Scalable and Production Ready Sky
 // and Atmosphere Rendering Technique", section 5.5, eq. 5-10, with its
-// third order made explicit): Psi_ms(h, mu_s) is the radiance per unit sun
+// orders 3 to 5 made explicit): Psi_ms(h, mu_s) is the radiance per unit sun
 // illuminance [1/sr] that all orders >= 2 add at height h for a sun of
 // zenith cosine mu_s, its isotropic part:
-//   Psi_ms = J_2 + J_3 + J_3 f_ms / (1 - f_ms),
+//   Psi_ms = J_2 + .. + J_5 + J_5 f_ms / (1 - f_ms),
 // J_2 = Hillaire's L_2nd, the second order from 96 directions crowded at
 // the horizon and towards the sun (Hillaire: 64 uniform ones, which miss the
 // thin sunlit upper air that lights a deep twilight): single scattering of
 // the sun along each ray to the ground or the top, plus the ground's
-// Lambertian bounce with AtmosphereParams::groundAlbedo. J_3 is the third
-// order integrated from J_2 through the atmosphere along the same
-// directions, with the ground's reflection of J_2's light and of the
-// single-scattered skylight; f_ms (the transfer of unit isotropic
+// Lambertian bounce with AtmosphereParams::groundAlbedo. J_3 .. J_5 are
+// the next orders, each integrated from the one before through the
+// atmosphere along the same directions, with the ground's reflection of its
+// light (and J_3 of the single-scattered skylight); f_ms (the transfer of unit isotropic
 // in-scattering) gives the geometric tail of the rest. Hillaire's
 // L_2nd / (1 - f_ms) takes every higher order from the point's own
 // neighbourhood, which under-estimated the horizon of a low sun by a third
@@ -50,11 +53,13 @@
 // 1/(4 pi)) L_1(omega) d omega of each scatterer X, from the dipole and
 // quadrupole moments of the once-scattered light L_1 at each height and sun
 // cosine (Legendre series of the phases to l = 2: exact for Rayleigh; for
-// Mie, delta-M: the forward peak's share g_3 as light going straight on,
-// read through the moments' Fejer window, and the rest to l = 2, since the
-// plain series sent a directional field (a point in the earth's shadow at
-// twilight) 30x too much light straight back; sky_multiple.hpp, "Mie's
-// truncation"). Hillaire's isotropic phases left the horizon
+// Mie, delta-M: the forward peak's share g_3 as light going straight on and
+// the rest to l = 2, since the plain series sent a directional field (a
+// point in the earth's shadow at twilight) 30x too much light straight
+// back; of that share, f_s, the phase within 6 deg of straight on (0.12 at
+// g = 0.8), is carried exactly along the view ray, the e^(f_s tau_M) above,
+// and the remainder read through the moments' Fejer window; sky_multiple.hpp,
+// "Mie's truncation"). Hillaire's isotropic phases left the horizon
 // opposite a low sun 7-13% too dark against the path tracer (sun -2 to +10
 // deg). The third order's field L_2 adds its moments the same way (and the
 // later orders theirs, as L_2's times the tail's 1 / (1 - f_ms)); the
