@@ -33,8 +33,9 @@
 // 4 and 5 matter in twilight only, where the tail's local series is worst
 // (blue, whose f_ms is largest): at sun -6 deg they took the horizon from
 // 0.85x to 0.91x the tracer in blue, at -2 and 0 deg by 2%, above the
-// horizon by under 1%; they cost ~25% more LUT build (on a change of the
-// atmosphere only, not of the sun). Psi_ms is a radiance per unit illuminance
+// horizon by under 1%; they cost ~1.6x the LUT build on one thread (67 ->
+// 110 ms; 36 -> 48 ms on two, bench BM_SkySolve rebuild:1), which runs on a
+// change of the atmosphere only, not of the sun. Psi_ms is a radiance per unit illuminance
 // [1/sr]; the sky's multiple scattering along a view ray is then
 // integral sigma_s T(viewer -> x) Psi_ms(h(x), mu_s(x)) ds (sky.hpp).
 //
