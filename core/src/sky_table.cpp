@@ -82,6 +82,33 @@ struct RowMapping {
     }
 };
 
+/// The planet's shadow cylinder (radius Rg around the light's axis, behind
+/// the planet) seen from the viewer of `air`, for a light `depression` [rad]
+/// below the horizon.
+struct ShadowCylinder {
+    double r0, rt;      // the viewer's radius, the top's
+    double sinL, cosL;  // the light's elevation (negative)
+    double c2;          // (r0 cosL)^2 - Rg^2: negative where the viewer is in the shadow
+    ShadowCylinder(const AtmosphereParams& air, double depression)
+        : r0(air.planetRadius + std::clamp(air.viewerHeight, 0.0, air.atmosphereRadius - air.planetRadius)),
+          rt(air.atmosphereRadius),
+          sinL(-std::sin(depression)),
+          cosL(std::cos(depression)),
+          c2((r0 * cosL - air.planetRadius) * (r0 * cosL + air.planetRadius)) {}
+    /// Radius at which the view ray at elevation el (sinEl, cosEl) and
+    /// azimuth psi from the anti-light point (cosPsi) leaves the cylinder:
+    /// 2 rt for a ray along its axis, 0 for one that misses it.
+    double exitRadius(double sinEl, double cosEl, double cosPsi) const {
+        const double mu = sinEl * sinL - cosEl * cosL * cosPsi;  // cos(view, light)
+        const double a2 = 1.0 - mu * mu, b2 = r0 * (sinEl - sinL * mu);
+        if (!(a2 > 1e-15)) return 2.0 * rt;
+        const double disc = b2 * b2 - a2 * c2;
+        if (!(disc > 0.0)) return 0.0;
+        const double s = (-b2 + std::sqrt(disc)) / a2;
+        return std::sqrt(std::max(r0 * r0 + 2.0 * r0 * s * sinEl + s * s, 0.0));
+    }
+};
+
 /// For a light `depression` [rad] below the horizon, the elevation [rad] of
 /// the kink of the earth's shadow straight opposite the light: the view ray
 /// in the light's vertical plane that leaves the planet's shadow cylinder
@@ -89,28 +116,19 @@ struct RowMapping {
 /// up to the top, above it the lit part grows from the top down). -1 where
 /// there is none (a viewer above the shadow, an empty atmosphere).
 double shadowKinkElevation(const AtmosphereParams& air, double depression) {
-    const double rg = air.planetRadius, rt = air.atmosphereRadius;
-    if (!(rg > 0.0) || !(rt > rg) || !(depression > 0.0)) return -1.0;
-    const double r0 = rg + std::clamp(air.viewerHeight, 0.0, rt - rg);
-    const double sinL = -std::sin(depression), cosL = std::cos(depression);
-    const double c2 = (r0 * cosL - rg) * (r0 * cosL + rg);
-    if (!(c2 < 0.0)) return -1.0;  // the viewer is lit
-    // Radius of the shadow's exit along the ray at elevation e opposite the
-    // light (decreasing in e above the anti-light point; beyond the top where
-    // the ray never leaves the shadow below it).
-    auto exitRadius = [&](double e) {
-        const double sinEl = std::sin(e), cosEl = std::cos(e);
-        const double mu = sinEl * sinL - cosEl * cosL;  // cos(view, light), azimuth pi
-        const double a2 = 1.0 - mu * mu, b2 = r0 * (sinEl - sinL * mu);
-        if (!(a2 > 1e-15)) return 2.0 * rt;
-        const double s = (-b2 + std::sqrt(std::max(b2 * b2 - a2 * c2, 0.0))) / a2;
-        return std::sqrt(std::max(r0 * r0 + 2.0 * r0 * s * sinEl + s * s, 0.0));
-    };
+    if (!(air.planetRadius > 0.0) || !(air.atmosphereRadius > air.planetRadius) || !(depression > 0.0))
+        return -1.0;
+    const ShadowCylinder shadow(air, depression);
+    if (!(shadow.c2 < 0.0)) return -1.0;  // the viewer is lit
+    // The exit radius at elevation e opposite the light decreases in e above
+    // the anti-light point (beyond the top where the ray never leaves the
+    // shadow below it).
+    auto exitRadius = [&](double e) { return shadow.exitRadius(std::sin(e), std::cos(e), 1.0); };
     double lo = depression, hi = depression + 0.2;  // exit above the top at lo, below it at hi
-    if (!(exitRadius(hi) < rt)) return -1.0;
+    if (!(exitRadius(hi) < shadow.rt)) return -1.0;
     for (int it = 0; it < 80; ++it) {
         const double mid = 0.5 * (lo + hi);
-        (exitRadius(mid) > rt ? lo : hi) = mid;
+        (exitRadius(mid) > shadow.rt ? lo : hi) = mid;
     }
     return 0.5 * (lo + hi);
 }
@@ -121,27 +139,15 @@ double shadowKinkElevation(const AtmosphereParams& air, double depression) {
 /// leaves the planet's shadow cylinder exactly at the top of the atmosphere.
 /// -1 where there is none.
 double capAzimuth(const AtmosphereParams& air, double depression, double elevation) {
-    const double rg = air.planetRadius, rt = air.atmosphereRadius;
-    const double r0 = rg + std::clamp(air.viewerHeight, 0.0, rt - rg);
-    const double sinL = -std::sin(depression), cosL = std::cos(depression);
-    const double c2 = (r0 * cosL - rg) * (r0 * cosL + rg);
+    const ShadowCylinder shadow(air, depression);
     const double sinEl = std::sin(elevation), cosEl = std::cos(elevation);
-    // Radius of the shadow's exit along the ray at azimuth psi from the
-    // anti-light point (falling as psi grows: the ray leaves the shadow sooner).
-    auto exitRadius = [&](double psi) {
-        const double mu = sinEl * sinL - cosEl * cosL * std::cos(psi);
-        const double a2 = 1.0 - mu * mu, b2 = r0 * (sinEl - sinL * mu);
-        if (!(a2 > 1e-15)) return 2.0 * rt;
-        const double disc = b2 * b2 - a2 * c2;
-        if (!(disc > 0.0)) return 0.0;
-        const double s = (-b2 + std::sqrt(disc)) / a2;
-        return std::sqrt(std::max(r0 * r0 + 2.0 * r0 * s * sinEl + s * s, 0.0));
-    };
+    // The exit radius falls as psi grows: the ray leaves the shadow sooner.
+    auto exitRadius = [&](double psi) { return shadow.exitRadius(sinEl, cosEl, std::cos(psi)); };
     double lo = 0.0, hi = 0.5 * kPi;
-    if (!(exitRadius(lo) > rt) || exitRadius(hi) > rt) return -1.0;
+    if (!(exitRadius(lo) > shadow.rt) || exitRadius(hi) > shadow.rt) return -1.0;
     for (int it = 0; it < 80; ++it) {
         const double mid = 0.5 * (lo + hi);
-        (exitRadius(mid) > rt ? lo : hi) = mid;
+        (exitRadius(mid) > shadow.rt ? lo : hi) = mid;
     }
     return 0.5 * (lo + hi);
 }
