@@ -111,8 +111,11 @@
 //   multiple scattering's own weights. Only f - f_s then goes through the
 //   Fejer window, and Mie's isotropic share of Psi is 1 - f_s:
 //     g~_1 = g_M1 - f_s - (f - f_s) / 2,  g~_2 = g_M2 - f_s - 9 (f - f_s) / 10.
-//   With it (and orders to 5) the worst per sun is -6: 0.123, -2: 0.045,
-//   0: 0.033, +2: 0.023, +10: 0.015, +30: 0.014, +90: 0.015 (in a first
+//   The solver integrates the factor over each layer together with the
+//   layer's transmittance (sky_solver.cpp, solveRow), so a haze of any
+//   depth stays finite. With it (and orders to 5) the worst per sun is
+//   -6: 0.123, -2: 0.046, 0: 0.035, +2: 0.024, +10: 0.014, +30: 0.013,
+//   +90: 0.013 (in a first
 //   form, carried in the single channels, f_s of 0.05 and 0.15 gave 0.053
 //   and 0.046 at -2 deg; the whole e^(f tau_M) without the window, "delta-M
 //   extinction" with f_s = f, 1.2x in red at -2 deg). Rows whose share stays

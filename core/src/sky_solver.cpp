@@ -94,6 +94,12 @@ void spreadStencil(double phi, int i, int padded, int* index, float* weight) {
     }
 }
 
+/// (1 - e^-tau) / tau, the mean transmittance across a layer of optical
+/// depth tau >= 0, by its series where the quotient would cancel.
+double layerShape(double tau) {
+    return tau < 1e-2 ? 1.0 - tau * (0.5 - tau * (1.0 / 6.0 - tau / 24.0)) : -std::expm1(-tau) / tau;
+}
+
 /// Distance along a ray from radius r0 with zenith cosine mu >= 0 to the
 /// sphere of radius r >= r0, given dr2 = r^2 - r0^2 >= 0 (no cancellation).
 double upwardCrossing(double r0, double mu, double dr2) {
@@ -393,7 +399,13 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
     // truncation"): light scattered once and then on by less than the cone
     // keeps going towards the viewer, so beside the single scattering's
     // weight beta_X T(viewer -> s) the layer carries beta_X T (e^(f tau_M) - 1),
-    // tau_M Mie's scattering depth from the viewer (at the layer's middle).
+    // tau_M Mie's scattering depth from the viewer to s. Over the layer that
+    // is T(viewer -> a) e^(f tau_M(viewer -> a)) beta_X m_X (1 - e^-tau') / tau'
+    // with tau' = tau - f tau_M(layer) >= 0, less the layer's own weight; the
+    // factor before the layer is formed in one exponent, never above 1 (the
+    // extinction's depth is at least Mie's scattering depth; clamped for air
+    // that says otherwise), so a haze of
+    // any thickness neither overflows nor turns 0 * inf into NaN.
     const double straight = multiple ? ms.mieStraightOn() : 0.0;
     double mieDepth[3] = {0.0, 0.0, 0.0};
     const double sinL = sinLight, cosL = cosLight;
@@ -414,7 +426,17 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
             const double e[4] = {e0, e1, e1 > 0.0 ? layerT / e1 : 0.0, e0 > 0.0 ? layerT / e0 : 0.0};
             const double beta[2] = {air.rayleighScattering[c], air.mieScattering[c]};
             const double mieLayer = air.mieScattering[c] * mass[1];
-            const double boost = std::expm1(straight * (mieDepth[c] + 0.5 * mieLayer));
+            // (1 - e^-tau) / tau and (1 - e^-tau') / tau' alike in double, so
+            // that their difference is the straight-on share alone.
+            const double straightT =
+                straight > 0.0 && viewT[c] > 0.0
+                    ? std::exp(std::min(std::log(viewT[c]) + straight * mieDepth[c], 0.0))
+                    : 0.0;
+            const double straightExtra =
+                straightT > 0.0 ? std::max(straightT * layerShape(std::max(tau - straight * mieLayer, 0.0)) -
+                                               viewT[c] * layerShape(tau),
+                                           0.0)
+                                : 0.0;
             mieDepth[c] += mieLayer;
             for (int p = 0; p < 2; ++p) {
                 double num = 0.0, den = 0.0;
@@ -428,13 +450,17 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
                 const double wA = total * (1.0 - centroid), wB = total * centroid;
                 lc.p[3 * p + c] = float(4.0 * wA - 2.0 * wB);
                 lc.q[3 * p + c] = float(6.0 * (wB - wA));
-                lc.straightP[3 * p + c] = float((4.0 * wA - 2.0 * wB) * boost);
-                lc.straightQ[3 * p + c] = float(6.0 * (wB - wA) * boost);
+                // The straight-on share with the same shape (its centroid
+                // lies a little deeper; the layers are thin where it matters).
+                const double extra = beta[p] * mass[p] * straightExtra;
+                const double sA = extra * (1.0 - centroid), sB = extra * centroid;
+                lc.straightP[3 * p + c] = float(4.0 * sA - 2.0 * sB);
+                lc.straightQ[3 * p + c] = float(6.0 * (sB - sA));
                 // Multiple scattering: sigma_X T weights at a and b, with its
                 // own straight-on share (the multiple scattering along the
                 // view ray scattered on: e^(f tau_M) in all).
-                lc.msA[3 * p + c] = float(wA * (1.0 + boost));
-                lc.msB[3 * p + c] = float(wB * (1.0 + boost));
+                lc.msA[3 * p + c] = float(wA + sA);
+                lc.msB[3 * p + c] = float(wB + sB);
             }
             viewT[c] *= layerT;
         }
