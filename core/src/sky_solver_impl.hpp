@@ -109,6 +109,12 @@ struct SkySolver::Impl {
     void spreadMultiple(Scratch& s) const;
     void run(bool rebuild, int rowBegin, int rowEnd);
     void publish();
+    // The atmosphere's tables shared between solvers (sky_solver.cpp,
+    // "Shared atmosphere tables"): adopt a snapshot built by another solver
+    // for the same AtmosphereParams and description, or offer this one's.
+    bool adoptSharedTables(const AtmosphereParams& params);
+    void shareTables() const;
+    bool forceRebuild = false;  // invalidateCache: the next atmosphere is built here, not adopted
 };
 
 }  // namespace aerial

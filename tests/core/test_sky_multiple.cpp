@@ -330,6 +330,9 @@ TEST(SkyMultiple, BitIdenticalAcrossThreadsAndAmortised) {
     SkySolverDesc many;
     many.threadCount = 4;
     SkySolver a(one), b(many), c(many);
+    // Each builds the atmosphere's tables itself (not adopting another's:
+    // SharedAtmosphereTablesAreBitIdentical).
+    for (SkySolver* s : {&a, &b, &c}) s->invalidateCache();
     a.solve(air, light);
     b.solve(air, light);
     c.beginSolve(air, light);
@@ -342,6 +345,61 @@ TEST(SkyMultiple, BitIdenticalAcrossThreadsAndAmortised) {
     // The cached LUT gives the same result as a rebuilt one.
     b.solve(air, light);
     EXPECT_EQ(a.table().multiple, b.table().multiple);
+}
+
+// Solvers share the atmosphere's tables (sky.hpp, SkySolver): one that
+// adopts what another built (other thread count, other light, amortised or
+// not) gives exactly the table of one that builds them itself, and a
+// solver with other multiple-scattering settings or other air never adopts
+// them.
+TEST(SkyMultiple, SharedAtmosphereTablesAreBitIdentical) {
+    AtmosphereParams air;
+    air.mieScattering = glm::dvec3(17e-6);  // air no other test solves
+    air.mieExtinction = air.mieScattering / 0.9;
+    const glm::dvec3 sun = direction(-1.5, 30.0), moon = direction(25.0, 200.0);
+    SkySolverDesc two;
+    two.threadCount = 2;
+    SkySolverDesc one;
+    one.threadCount = 1;
+    SkySolver builder(two);
+    builder.invalidateCache();
+    builder.solve(air, sun);
+    auto expectSame = [](const SkySolver& x, const SkySolver& y, const char* what) {
+        EXPECT_EQ(x.table().rayleigh, y.table().rayleigh) << what;
+        EXPECT_EQ(x.table().mie, y.table().mie) << what;
+        EXPECT_EQ(x.table().multiple, y.table().multiple) << what;
+        EXPECT_EQ(x.table().horizonMultiple, y.table().horizonMultiple) << what;
+        EXPECT_EQ(x.multipleScatteringTable().psi, y.multipleScatteringTable().psi) << what;
+    };
+    for (const glm::dvec3& light : {sun, moon}) {
+        SkySolver adopter(one), amortised(one), fresh(one);
+        adopter.solve(air, light);
+        amortised.beginSolve(air, light);
+        while (!amortised.continueSolve(7)) {
+        }
+        fresh.invalidateCache();
+        fresh.solve(air, light);
+        expectSame(adopter, fresh, "adopted");
+        expectSame(amortised, fresh, "adopted, amortised");
+    }
+    // Isotropic multiple scattering has its own LUT: not the shared one.
+    SkySolverDesc iso = one;
+    iso.isotropicMultipleScattering = true;
+    SkySolver isoAdopter(iso), isoFresh(iso);
+    isoAdopter.solve(air, sun);
+    isoFresh.invalidateCache();
+    isoFresh.solve(air, sun);
+    expectSame(isoAdopter, isoFresh, "isotropic");
+    EXPECT_NE(isoAdopter.multipleScatteringTable().psi, builder.multipleScatteringTable().psi);
+    // Other air (one byte of it: the viewer's height) is built anew.
+    AtmosphereParams higher = air;
+    higher.viewerHeight = 1.0;
+    SkySolver other(one), otherFresh(one);
+    other.solve(higher, sun);
+    otherFresh.invalidateCache();
+    otherFresh.solve(higher, sun);
+    expectSame(other, otherFresh, "other air");
+    EXPECT_NE(other.table().multiple, builder.table().multiple);
 }
 
 // The view-ray integral of the LUT, I_ms(v) = integral T(viewer -> x)

@@ -355,9 +355,12 @@ glm::dvec3 horizonFogRadiance(const SkyTable& table, double mieAnisotropy, const
 /// in the constructor); allocates nothing per solve. Single-threaded,
 /// multi-threaded and amortised solves give bit-identical tables. The
 /// optical-depth table and the Psi_ms LUT are kept while the AtmosphereParams stay bitwise equal,
-/// so a moving sun only re-solves the hemisphere. Earth shadow: where the ray
-/// from a point to the light hits the planet, that point is unlit (the
-/// transmittance to the light is 0), also for a light below the horizon.
+/// so a moving sun only re-solves the hemisphere; and they are shared between solvers in
+/// the process (the last four atmospheres built, by any solver with the same layer count,
+/// optical-depth angles and multiple-scattering settings), so the moon's solver adopts
+/// what the sun's built for the same air instead of building it again (bit-identical). Earth shadow: where
+/// the ray from a point to the light hits the planet, that point is unlit (the transmittance to the light is
+/// 0), also for a light below the horizon.
 class SkySolver {
 public:
     explicit SkySolver(const SkySolverDesc& desc = {});
@@ -380,7 +383,8 @@ public:
     bool solving() const;
 
     /// Forgets the cached optical-depth table and Psi_ms LUT, so the next solve
-    /// rebuilds them even if the AtmosphereParams are bitwise unchanged (benchmarks).
+    /// rebuilds them even if the AtmosphereParams are bitwise unchanged and
+    /// another solver has built them (benchmarks, tests).
     void invalidateCache();
 
     /// A copy of the Psi_ms LUT of the last atmosphere built (empty before
