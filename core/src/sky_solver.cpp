@@ -53,6 +53,7 @@
 // hot loops work on contiguous float arrays (sky_kernels.hpp) and are
 // compiled for AVX-512, AVX2 and the baseline (target_clones, chosen at load
 // time): no global -march needed.
+#include "planet_shadow.hpp"
 #include "sky_solver_impl.hpp"
 
 #include <aerial/limits.hpp>
@@ -537,7 +538,13 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
     // around the light axis and behind the planet (x . l < 0).
     //   |x|^2 - (x.l)^2 < Rg^2:  (1 - mu^2) s^2 + 2 r0 (sinEl - sinL mu) s + r0^2 cosL^2 - Rg^2 < 0
     //   x . l < 0:               r0 sinL + s mu < 0
+    // Opposite a light just set the view ray runs within 1e-7 rad of the
+    // cylinder's axis: 1 - mu^2 is formed from the angles and the roots
+    // without cancellation (planet_shadow.hpp); as written (1 - mu * mu,
+    // under 1e-12 taken as parallel) the rows just above the shadow's kink
+    // came out dark straight opposite a light 0.01 deg down.
     const double c2 = (r0 * cosL - rg) * (r0 * cosL + rg);
+    const double lightElevation = std::atan2(sinL, cosL);
     for (int i = 0; i < columns; ++i) {
         const double mu = sinEl * sinL + cosEl * cosL * s.cosPhi[i];
         // x . l is linear in s: lit at both ends of the ray means no shadow.
@@ -547,17 +554,11 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
             continue;
         }
         double lo = -INFINITY, hi = INFINITY;
-        const double a2 = 1.0 - mu * mu;
+        const double a2 = oneMinusCosBetween(elevation, -lightElevation, kPi - s.phi[i]) *
+                          oneMinusCosBetween(elevation, lightElevation, s.phi[i]);
         const double b2 = r0 * (sinEl - sinL * mu);
-        if (a2 > 1e-12) {
-            const double disc = b2 * b2 - a2 * c2;
-            if (disc > 0.0) {
-                const double root = std::sqrt(disc);
-                lo = (-b2 - root) / a2;
-                hi = (-b2 + root) / a2;
-            } else {
-                hi = lo;  // empty
-            }
+        if (a2 > kShadowAxisA2) {
+            if (!halfQuadraticRoots(a2, b2, c2, lo, hi)) hi = lo;  // empty
         } else if (c2 > -2.0e-3 * rg) {
             // Parallel to the axis, outside the cylinder or on its surface: a
             // viewer less than 1 mm inside it (c2 ~ -2 Rg depth) counts as on

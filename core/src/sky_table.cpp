@@ -2,6 +2,8 @@
 // <aerial/sky.hpp>) and applying the phase functions per direction.
 #include <aerial/sky.hpp>
 
+#include "planet_shadow.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -87,24 +89,30 @@ struct RowMapping {
 /// below the horizon.
 struct ShadowCylinder {
     double r0, rt;      // the viewer's radius, the top's
+    double depression;  // the light's [rad]
     double sinL, cosL;  // the light's elevation (negative)
     double c2;          // (r0 cosL)^2 - Rg^2: negative where the viewer is in the shadow
-    ShadowCylinder(const AtmosphereParams& air, double depression)
+    ShadowCylinder(const AtmosphereParams& air, double lightDepression)
         : r0(air.planetRadius + std::clamp(air.viewerHeight, 0.0, air.atmosphereRadius - air.planetRadius)),
           rt(air.atmosphereRadius),
-          sinL(-std::sin(depression)),
-          cosL(std::cos(depression)),
+          depression(lightDepression),
+          sinL(-std::sin(lightDepression)),
+          cosL(std::cos(lightDepression)),
           c2((r0 * cosL - air.planetRadius) * (r0 * cosL + air.planetRadius)) {}
-    /// Radius at which the view ray at elevation el (sinEl, cosEl) and
-    /// azimuth psi from the anti-light point (cosPsi) leaves the cylinder:
-    /// 2 rt for a ray along its axis, 0 for one that misses it.
-    double exitRadius(double sinEl, double cosEl, double cosPsi) const {
-        const double mu = sinEl * sinL - cosEl * cosL * cosPsi;  // cos(view, light)
-        const double a2 = 1.0 - mu * mu, b2 = r0 * (sinEl - sinL * mu);
-        if (!(a2 > 1e-15)) return 2.0 * rt;
-        const double disc = b2 * b2 - a2 * c2;
-        if (!(disc > 0.0)) return 0.0;
-        const double s = (-b2 + std::sqrt(disc)) / a2;
+    /// Radius at which the view ray at elevation el and azimuth psi [rad]
+    /// from the anti-light point leaves the cylinder: 2 rt for a ray along
+    /// its axis, 0 for one that misses it. Without cancellation within a
+    /// hair of the axis (planet_shadow.hpp), where the kink of a light just
+    /// set lies.
+    double exitRadius(double el, double psi) const {
+        const double sinEl = std::sin(el), cosEl = std::cos(el);
+        const double mu = sinEl * sinL - cosEl * cosL * std::cos(psi);  // cos(view, light)
+        const double a2 = detail::oneMinusCosBetween(el, depression, psi) *
+                          detail::oneMinusCosBetween(el, -depression, kPi - psi);
+        const double b2 = r0 * (sinEl - sinL * mu);
+        if (!(a2 > detail::kShadowAxisA2)) return 2.0 * rt;
+        double lo = 0.0, s = 0.0;
+        if (!detail::halfQuadraticRoots(a2, b2, c2, lo, s)) return 0.0;
         return std::sqrt(std::max(r0 * r0 + 2.0 * r0 * s * sinEl + s * s, 0.0));
     }
 };
@@ -123,7 +131,7 @@ double shadowKinkElevation(const AtmosphereParams& air, double depression) {
     // The exit radius at elevation e opposite the light decreases in e above
     // the anti-light point (beyond the top where the ray never leaves the
     // shadow below it).
-    auto exitRadius = [&](double e) { return shadow.exitRadius(std::sin(e), std::cos(e), 1.0); };
+    auto exitRadius = [&](double e) { return shadow.exitRadius(e, 0.0); };
     double lo = depression, hi = depression + 0.2;  // exit above the top at lo, below it at hi
     if (!(exitRadius(hi) < shadow.rt)) return -1.0;
     for (int it = 0; it < 80; ++it) {
@@ -140,9 +148,8 @@ double shadowKinkElevation(const AtmosphereParams& air, double depression) {
 /// -1 where there is none.
 double capAzimuth(const AtmosphereParams& air, double depression, double elevation) {
     const ShadowCylinder shadow(air, depression);
-    const double sinEl = std::sin(elevation), cosEl = std::cos(elevation);
     // The exit radius falls as psi grows: the ray leaves the shadow sooner.
-    auto exitRadius = [&](double psi) { return shadow.exitRadius(sinEl, cosEl, std::cos(psi)); };
+    auto exitRadius = [&](double psi) { return shadow.exitRadius(elevation, psi); };
     double lo = 0.0, hi = 0.5 * kPi;
     if (!(exitRadius(lo) > shadow.rt) || exitRadius(hi) > shadow.rt) return -1.0;
     for (int it = 0; it < 80; ++it) {
