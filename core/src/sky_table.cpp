@@ -26,12 +26,13 @@ constexpr double kShadowFadeDeg = 0.1;  // the shadow rows fade in over this dep
 constexpr double kDeepestDeg = 18.0;    // depressions beyond this [deg] map as this one
 
 /// The row mapping of a table (sky.hpp) as a function of x = sqrt(elevation):
-/// v(x) = (1 - a - b) x / sqrt(pi/2) + a atan(x^2 / E) / atan(pi/2 / E)
-///        + b (atan((x^2 - c) / w) - atan(-c / w)) / (atan((pi/2 - c) / w) - atan(-c / w)),
+/// v(x) = (1 - a - b - d) x / sqrt(pi/2) + a atan(x^2 / E) / atan(pi/2 / E)
+///        + b (atan((x^2 - c) / w) - atan(-c / w)) / (atan((pi/2 - c) / w) - atan(-c / w))
+///        + d/2 (1 - sqrt(u)) below c, d/2 (1 + cbrt(u)) above, u = min(|x^2 - c|, c) / c
+///          (the cap's rows, d = kSkyCapRowShare g where the columns are warped:
+///          uniform in the onset's azimuth psiC below c, crowded at the cap's
+///          top above it, where the lit sky switches on within 1e-4 deg),
 /// increasing in x, with v(0) = 0 and v(sqrt(pi/2)) = 1.
-///        + d/2 (1 -+ sqrt(min(|x^2 - c|, c) / c))   (- below c, + above: the cap's
-///          rows, d = kSkyCapRowShare g where the columns are warped, uniform in
-///          the onset's azimuth psiC below c and as many from c to 2c),
 struct RowMapping {
     double plain = 1.0, a = 0.0, e = 1.0, bandNorm = 1.0;
     double b = 0.0, c = 0.0, w = 1.0, shadowLow = 0.0, shadowNorm = 1.0;
@@ -63,15 +64,19 @@ struct RowMapping {
         if (a > 0.0) v += a * std::atan(el / e) * bandNorm;
         if (b > 0.0) v += b * (std::atan((el - c) / w) - shadowLow) * shadowNorm;
         if (d > 0.0) {
-            const double r = std::sqrt(std::min(std::abs(el - cap), cap) / cap);
-            v += d * 0.5 * (el < cap ? 1.0 - r : 1.0 + r);
+            const double u = std::min(std::abs(el - cap), cap) / cap;
+            v += d * 0.5 * (el < cap ? 1.0 - std::sqrt(u) : 1.0 + std::cbrt(u));
         }
         return v;
     }
     double slope(double x) const {  // may be +inf (the cap's rows at el = c)
         const double el = x * x;
         double g = plain;
-        if (d > 0.0 && el != cap && el < 2.0 * cap) g += 0.5 * d * x / std::sqrt(cap * std::abs(el - cap));
+        if (d > 0.0 && el != cap && el < 2.0 * cap) {
+            const double u = std::abs(el - cap) / cap;
+            g += el < cap ? 0.5 * d * x / std::sqrt(cap * std::abs(el - cap))
+                          : d * x / (3.0 * cap * std::cbrt(u * u));
+        }
         if (a > 0.0) {
             const double r = el / e;
             g += a * bandNorm * 2.0 * x / (e * (1.0 + r * r));
@@ -164,14 +169,21 @@ constexpr double kCapEndDeg = 1.0;  // and none from this one
 
 /// The column mapping of one row (sky.hpp, "Table mapping", columns), in
 /// half-columns x = 0..N/2 counted from the anti-light point and the
-/// azimuth psi = 0..pi from it: piecewise linear through five knots,
-///   x:   0, a0,    a0 + a1,    xE,  N/2
-///   psi: 0, psiC,  psiC + D,   psiE, pi
+/// azimuth psi = 0..pi from it: piecewise linear through five knots (in
+/// psi^2 between a0 and a0 + a1),
+///   x:   0, a0,    a0 + a1,                 xE,  N/2
+///   psi: 0, psiC,  sqrt((G psiC)^2 + D^2),  psiE, pi
 /// where psiC = sqrt(max(c - el, 0) / k) is the onset of the lit sky around
 /// the cap of the earth's shadow in this row, D = max(psiC(0) / 2, 1 deg)
-/// the band above it, psiE = min(2 (psiC(0) + D), 3 pi / 4), and (a0, a1,
-/// xE) = (3, 12, 25) / 128 of N. Only psiC depends on the row, so every
-/// column keeps its place relative to the onset from row to row. With the
+/// the band's width at the cap's top, G = kSkyCapOnsetGrowth, psiE = min(2
+/// (psiC(0) + D), 3 pi / 4), and (a0, a1, xE) = (3, 12, 25) / 128 of N.
+/// Only psiC depends on the row, so every column keeps its place relative
+/// to the onset from row to row. The band: at the cap's top (psiC = 0) the
+/// height above the onset is k psi^2, so uniform in psi^2 is uniform in it;
+/// lower down the lit sky ramps up over a width that grows with psiC (the
+/// level lines of the shadow's exit height fan out from the cap's top), so
+/// the band widens with G psiC (G = 1.25, 1.5 and 2 tried: 2 is best at
+/// -0.01 and -0.02 deg, SkyShadowOnset). With the
 /// strength g < 1 each psi knot is blended towards the uniform azimuth of
 /// its x: g psi + (1 - g) 2 pi x / N.
 struct ColumnMapping {
@@ -193,25 +205,30 @@ struct ColumnMapping {
         x[2] = x[1] + kSkyCapOnsetShare * n;
         x[3] = x[2] + kSkyCapNearShare * n;
         x[4] = 0.5 * n;
-        const double capPsi[5] = {0.0, onset, onset + band, end, kPi};
+        const double capPsi[5] = {0.0, onset, std::hypot(kSkyCapOnsetGrowth * onset, band), end, kPi};
         for (int m = 1; m < 4; ++m) psi[m] = g * capPsi[m] + (1.0 - g) * 2.0 * kPi * x[m] / n;
         uniform = false;
     }
     double halfColumn(double p) const {  // psi -> x
         if (!(p > 0.0)) return 0.0;      // the anti-light point (columns 0..a0 from it when psiC = 0)
         for (int m = 0; m < 4; ++m)
-            if (p < psi[m + 1] || m == 3)
-                return psi[m + 1] > psi[m]
-                           ? x[m] + (x[m + 1] - x[m]) * (std::min(p, kPi) - psi[m]) / (psi[m + 1] - psi[m])
-                           : x[m + 1];
+            if (p < psi[m + 1] || m == 3) {
+                if (!(psi[m + 1] > psi[m])) return x[m + 1];
+                const double q = std::min(p, kPi);
+                const double t = m == 1 ? (q * q - psi[1] * psi[1]) / (psi[2] * psi[2] - psi[1] * psi[1])
+                                        : (q - psi[m]) / (psi[m + 1] - psi[m]);
+                return x[m] + (x[m + 1] - x[m]) * t;
+            }
         return x[4];
     }
     double azimuthOf(double h) const {  // x -> psi
         for (int m = 0; m < 4; ++m)
-            if (h < x[m + 1] || m == 3)
-                return x[m + 1] > x[m]
-                           ? psi[m] + (psi[m + 1] - psi[m]) * (std::min(h, x[4]) - x[m]) / (x[m + 1] - x[m])
-                           : psi[m + 1];
+            if (h < x[m + 1] || m == 3) {
+                if (!(x[m + 1] > x[m])) return psi[m + 1];
+                const double t = (std::min(h, x[4]) - x[m]) / (x[m + 1] - x[m]);
+                return m == 1 ? std::sqrt(psi[1] * psi[1] + (psi[2] * psi[2] - psi[1] * psi[1]) * t)
+                              : psi[m] + (psi[m + 1] - psi[m]) * t;
+            }
         return kPi;
     }
 };
@@ -265,9 +282,10 @@ double skyTableAzimuth(const SkyTable& table, double column, double elevation) {
 // of a 128 x 64 table is 0.8-1.6% for suns from -6 to 0 deg, against 3-49%
 // with the quadratic rows. For a light 0-1 deg below the horizon the cap of
 // the earth's shadow opposite it gets its own rows (uniform in the azimuth
-// of its onset) and warped columns (the onset on one column in every row):
-// 1.0-1.9% in a dense sweep of the anti-light quarter from -0.3 to -0.05 deg
-// (SkyShadowOnset), 2.6-6.5% from -0.03 to -0.01 deg at the cap's top.
+// of its onset below the kink, crowded at the kink above it) and warped
+// columns (the onset on one column in every row): 0.9-1.6% in a dense sweep
+// of the anti-light quarter from -0.3 to -0.02 deg (SkyShadowOnset), 3.2%
+// at -0.01 deg at the cap's top.
 void setSkyTableMapping(SkyTable& table, const AtmosphereParams& air, const glm::dvec3& lightDirection) {
     constexpr double kDeg = kPi / 180.0;
     const glm::dvec3 l = normalizedOr(lightDirection, glm::dvec3(0.0, 1.0, 0.0));

@@ -42,6 +42,7 @@ const float kSkyCapInsideShare = 3.0 / 128.0;
 const float kSkyCapOnsetShare = 12.0 / 128.0;
 const float kSkyCapNearShare = 10.0 / 128.0;
 const float kSkyCapMinBand = 1.0 * kPi / 180.0;
+const float kSkyCapOnsetGrowth = 2.0;
 const float kSkyCapRowShare = 16.0 / 63.0;
 
 /// Whether a table's columns are warped around the cap of the earth's shadow
@@ -51,7 +52,8 @@ bool skyTableCapActive(vec2 cap, float c) { return cap.x > 0.0 && cap.y > 0.0 &&
 
 /// The table's row mapping v(el) in 0..1 (see the file comment); band =
 /// (E, a, c), w and b as there; cap as in skyTableCapActive (the cap's rows,
-/// d = kSkyCapRowShare g, uniform in sqrt(|el - c|) from 0 to 2c).
+/// d = kSkyCapRowShare g, uniform in sqrt(c - el) from 0 to c and in
+/// cbrt(el - c) from c to 2c).
 float skyTableMappedRow(float elevation, vec3 band, float w, float b, vec2 cap) {
     float el = clamp(elevation, 0.0, 0.5 * kPi);
     float a = band.y;
@@ -64,19 +66,21 @@ float skyTableMappedRow(float elevation, vec3 band, float w, float b, vec2 cap) 
         v += b * (preciseAtan2(el - band.z, w) - low) / (preciseAtan2(0.5 * kPi - band.z, w) - low);
     }
     if (d > 0.0) {
-        float r = sqrt(min(abs(el - band.z), band.z) / band.z);
-        v += d * 0.5 * (el < band.z ? 1.0 - r : 1.0 + r);
+        float u = min(abs(el - band.z), band.z) / band.z;
+        v += d * 0.5 * (el < band.z ? 1.0 - sqrt(u) : 1.0 + pow(u, 1.0 / 3.0));
     }
     return v;
 }
 
 /// The column (0..columns) of an azimuth `relative` [0, 2 pi) from the light
 /// at elevation el (skyTableColumn, core/src/sky_table.cpp): uniform, or
-/// piecewise linear in the azimuth psi from the anti-light point through the
-/// knots x = (0, 3, 15, 25, 64) / 128 columns, psi = (0, psiC, psiC + D, psiE,
-/// pi), psiC = sqrt(max(c - el, 0) / k) the onset of the lit sky around the
-/// cap of the earth's shadow, D = max(psiC(0) / 2, 1 deg), psiE = min(2
-/// (psiC(0) + D), 3 pi / 4), each inner psi blended with g towards 2 pi x / columns.
+/// piecewise linear in the azimuth psi from the anti-light point (in psi^2
+/// between the second and third knot) through the knots x = (0, 3, 15, 25,
+/// 64) / 128 columns, psi = (0, psiC, sqrt((G psiC)^2 + D^2), psiE, pi),
+/// psiC = sqrt(max(c - el, 0) / k) the onset of the lit sky around the cap
+/// of the earth's shadow, D = max(psiC(0) / 2, 1 deg), G =
+/// kSkyCapOnsetGrowth, psiE = min(2 (psiC(0) + D), 3 pi / 4), each inner psi
+/// blended with g towards 2 pi x / columns.
 float skyTableColumnAt(float relative, float el, float columns, float c, vec2 cap) {
     if (!skyTableCapActive(cap, c) || !(columns >= 4.0)) return relative / (2.0 * kPi) * columns;
     float k = cap.x, g = min(cap.y, 1.0);
@@ -87,7 +91,7 @@ float skyTableColumnAt(float relative, float el, float columns, float c, vec2 ca
     float x1 = kSkyCapInsideShare * columns, x2 = x1 + kSkyCapOnsetShare * columns;
     float x3 = x2 + kSkyCapNearShare * columns, x4 = 0.5 * columns;
     float p1 = g * onset + (1.0 - g) * 2.0 * kPi * x1 / columns;
-    float p2 = g * (onset + band) + (1.0 - g) * 2.0 * kPi * x2 / columns;
+    float p2 = g * length(vec2(kSkyCapOnsetGrowth * onset, band)) + (1.0 - g) * 2.0 * kPi * x2 / columns;
     float p3 = g * end + (1.0 - g) * 2.0 * kPi * x3 / columns;
     float psi = relative <= kPi ? kPi - relative : relative - kPi;
     float x;
@@ -96,7 +100,7 @@ float skyTableColumnAt(float relative, float el, float columns, float c, vec2 ca
     else if (psi < p1)
         x = x1 * psi / p1;
     else if (psi < p2)
-        x = x1 + (x2 - x1) * (psi - p1) / (p2 - p1);
+        x = x1 + (x2 - x1) * (psi * psi - p1 * p1) / (p2 * p2 - p1 * p1);
     else if (psi < p3)
         x = x2 + (x3 - x2) * (psi - p2) / (p3 - p2);
     else

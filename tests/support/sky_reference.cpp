@@ -143,8 +143,8 @@ double texelElevation(int j, const SkyTable& table) {
         double v = (1.0 - a - b - d) * std::sqrt(el / (0.5 * kPi));
         if (d > 0.0) {
             const double c = table.shadowElevation;
-            const double r = std::sqrt(std::min(std::abs(el - c), c) / c);
-            v += 0.5 * d * (el < c ? 1.0 - r : 1.0 + r);
+            const double u = std::min(std::abs(el - c), c) / c;
+            v += 0.5 * d * (el < c ? 1.0 - std::sqrt(u) : 1.0 + std::pow(u, 1.0 / 3.0));
         }
         if (a > 0.0)
             v += a * std::atan(el / table.bandElevation) / std::atan(0.5 * kPi / table.bandElevation);
@@ -168,20 +168,23 @@ double texelAzimuth(int i, double elevation, const SkyTable& table) {
     const double n = table.azimuthCount;
     if (!skyTableColumnsWarped(table)) return 2.0 * kPi * i / n;
     // The column mapping of <aerial/sky.hpp>, written out again: piecewise
-    // linear in the azimuth psi from the anti-light point.
+    // linear in the azimuth psi from the anti-light point, in psi^2 between
+    // the second and the third knot.
     const double k = table.capCurvature, g = std::min(table.capStrength, 1.0), c = table.shadowElevation;
     const double foot = std::min(std::sqrt(c / k), 0.25 * kPi);
     const double band = std::max(0.5 * foot, kSkyCapMinBandDeg * kPi / 180.0);
     const double onset = std::min(std::sqrt(std::max(c - elevation, 0.0) / k), foot);
     const double xs[5] = {0.0, kSkyCapInsideShare * n, (kSkyCapInsideShare + kSkyCapOnsetShare) * n,
                           (kSkyCapInsideShare + kSkyCapOnsetShare + kSkyCapNearShare) * n, 0.5 * n};
-    const double cap[5] = {0.0, onset, onset + band, std::min(2.0 * (foot + band), 0.75 * kPi), kPi};
+    const double cap[5] = {0.0, onset, std::hypot(kSkyCapOnsetGrowth * onset, band),
+                           std::min(2.0 * (foot + band), 0.75 * kPi), kPi};
     const double x = std::abs(i - 0.5 * n);
     for (int m = 0; m < 4; ++m) {
         if (x <= xs[m + 1]) {
             const double p0 = m == 0 ? 0.0 : g * cap[m] + (1.0 - g) * 2.0 * kPi * xs[m] / n;
             const double p1 = m == 3 ? kPi : g * cap[m + 1] + (1.0 - g) * 2.0 * kPi * xs[m + 1] / n;
-            const double psi = p0 + (p1 - p0) * (x - xs[m]) / (xs[m + 1] - xs[m]);
+            const double t = (x - xs[m]) / (xs[m + 1] - xs[m]);
+            const double psi = m == 1 ? std::sqrt(p0 * p0 + (p1 * p1 - p0 * p0) * t) : p0 + (p1 - p0) * t;
             return i <= 0.5 * n ? kPi - psi : kPi + psi;
         }
     }

@@ -87,7 +87,7 @@
 //       v(el) = (1 - a - b - d) sqrt(el / (pi/2))
 //             + a atan(el / E) / atan(pi/2 / E)
 //             + b (atan((el - c) / w) - atan(-c / w)) / (atan((pi/2 - c) / w) - atan(-c / w))
-//             + d/2 (1 -+ sqrt(min(|el - c|, c) / c)),
+//             + d/2 (1 - sqrt(u)) below c, d/2 (1 + cbrt(u)) above, u = min(|el - c|, c) / c,
 //     E = bandElevation, a = bandShare, c = shadowElevation, w = shadowWidth,
 //     b = shadowShare, carried in the SkyTable and set by the solver from the
 //     light (setSkyTableMapping). The rows go where the light changes fastest:
@@ -111,20 +111,21 @@
 //       is shadowed up to the top and c = 1.1 L), and E is adjusted so that
 //       a row lies exactly on it (the kink's row moves by at most half a row);
 //     - a light 0-1 deg below the horizon also: d = (16/63) g of the rows
-//       (taken from the band's a) uniform in sqrt(|el - c|) between 0 and 2c,
-//       the term d/2 (1 -+ sqrt(min(|el - c|, c) / c)) (- below c, + above),
-//       so that below c they are uniform in the azimuth of the cap's onset
-//       (the columns below); g = capStrength, 1 up to 0.5 deg, fading to 0
-//       at 1 deg;
+//       (taken from the band's a) between 0 and 2c, half below c uniform in
+//       sqrt(c - el), so uniform in the azimuth of the cap's onset (the
+//       columns below), half above c uniform in cbrt(el - c), crowded at the
+//       cap's top where straight opposite the light the lit sky switches on
+//       within a few 1e-4 deg for a light 0.01 deg down; g = capStrength, 1
+//       up to 0.5 deg, fading to 0 at 1 deg;
 //     With 128 x 64 texels this keeps the table within 2% of the exact
 //     single-scattering integral relative to the pixel (floored at 1% of the
 //     brightest sky) in every direction tests/core/test_sky.cpp probes, off
 //     the texel centres too, for suns from -6 to 90 deg (SkyOffTexel), and
 //     in a dense sweep of the anti-light quarter for suns 0.05-0.3 deg below
-//     the horizon (SkyShadowOnset: 1.0-1.9%). Not yet within 2%: a light
-//     less than ~0.04 deg below the horizon, at the top of the cap straight
-//     opposite it (2.6% at -0.03 deg, 3.4% at -0.02, 6.5% at -0.01; 63%
-//     before the cap's rows and columns);
+//     the horizon (SkyShadowOnset: 0.9-1.6% from -0.3 to -0.02 deg). Not
+//     yet within 2%: a light less than ~0.015 deg below the horizon, at the
+//     top of the cap straight opposite it (3.2% at -0.01 deg; 63% before the
+//     cap's rows and columns);
 //   * columns i = 0..azimuthCount-1 hold the azimuth relative to the light
 //       phi_i = 2 pi * i / azimuthCount,
 //     measured from the light's azimuth towards east (the same sense as the
@@ -136,16 +137,20 @@
 //     from the anti-light point, k ~ 0.069/rad fitted to the exact onset
 //     where it crosses c/2), above which the lit sky switches on within
 //     thousandths of a degree. The columns of the row at elevation el are
-//     then piecewise linear in psi through the knots
+//     then piecewise linear in psi (in psi^2 between the second and third
+//     knot) through the knots
 //       x = |i - W/2| = (0, 3, 15, 25, 64) W / 128,
-//       psi = (0, P, P + D, F2, pi),  P = min(sqrt(max(c - el, 0) / k), F),
+//       psi = (0, P, sqrt((2 P)^2 + D^2), F2, pi),  P = min(sqrt(max(c - el, 0) / k), F),
 //       F = min(sqrt(c / k), pi/4),  D = max(F / 2, 1 deg),  F2 = min(2 (F + D), 3 pi / 4),
 //     each inner psi blended with g towards 2 pi x / W (skyTableColumn,
 //     skyTableAzimuth): the onset lies on column W/2 -+ 3 W / 128 in every
 //     row below the cap's top, with 12 columns in the band above it. Only P
 //     depends on the row, so between two rows the onset stays on its column
 //     (rows alone could not follow it: 256 x 1024 texels left 2.4% at
-//     -0.05 deg). The knots are mirror-symmetric, so column i still equals
+//     -0.05 deg). The band is uniform in psi^2 (at the cap's top the height
+//     above the onset is k psi^2) and widens with P (the 2 in its outer
+//     knot is kSkyCapOnsetGrowth): lower down the cap the lit sky ramps up
+//     over an azimuth that grows with P. The knots are mirror-symmetric, so column i still equals
 //     column W - i. The horizon averages then weight row 0 by azimuth;
 //   * texel (i, j) is stored at index (j * azimuthCount + i) * 3 (RGB, float).
 //   Directions below the horizon use row 0.
@@ -273,8 +278,11 @@ inline constexpr double kSkyCapInsideShare = 3.0 / 128.0;
 inline constexpr double kSkyCapOnsetShare = 12.0 / 128.0;
 inline constexpr double kSkyCapNearShare = 10.0 / 128.0;
 inline constexpr double kSkyCapMinBandDeg = 1.0;
+/// The onset band's outer knot: sqrt((kSkyCapOnsetGrowth P)^2 + D^2).
+inline constexpr double kSkyCapOnsetGrowth = 2.0;
 /// The share of the rows in the cap (0 .. c) and as far above it (c .. 2c),
-/// taken from the horizon band's.
+/// taken from the horizon band's: half uniform in sqrt(c - el) below c,
+/// half in cbrt(el - c) above.
 inline constexpr double kSkyCapRowShare = 16.0 / 63.0;
 
 /// Continuous column (0..azimuthCount, wrapping) of an azimuth `relative`
