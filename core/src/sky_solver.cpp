@@ -459,8 +459,8 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
     // with tau' = tau - f tau_M(layer) >= 0, less the layer's own weight; the
     // factor before the layer is formed in one exponent, never above 1 (the
     // extinction's depth is at least Mie's scattering depth; clamped for air
-    // that says otherwise), so a haze of
-    // any thickness neither overflows nor turns 0 * inf into NaN.
+    // that says otherwise), so a haze of any thickness neither overflows nor
+    // turns 0 * inf into NaN.
     const double straight = multiple ? ms.mieStraightOn() : 0.0;
     double mieDepth[3] = {0.0, 0.0, 0.0};
     const double sinL = sinLight, cosL = cosLight;

@@ -22,7 +22,7 @@ glm::dvec3 normalizedOr(const glm::dvec3& v, const glm::dvec3& fallback) {
 namespace {
 
 constexpr double kMappingTopDeg = 1.0;  // lights above this elevation [deg]: the plain mapping
-constexpr double kShadowFadeDeg = 0.1;  // the shadow rows fade in over this depression [deg]
+constexpr double kShadowFadeDeg = 0.01;  // the shadow rows fade in over this depression [deg]
 constexpr double kDeepestDeg = 18.0;    // depressions beyond this [deg] map as this one
 
 /// The row mapping of a table (sky.hpp) as a function of x = sqrt(elevation):
@@ -283,9 +283,9 @@ double skyTableAzimuth(const SkyTable& table, double column, double elevation) {
 // with the quadratic rows. For a light 0-1 deg below the horizon the cap of
 // the earth's shadow opposite it gets its own rows (uniform in the azimuth
 // of its onset below the kink, crowded at the kink above it) and warped
-// columns (the onset on one column in every row): 0.9-1.6% in a dense sweep
-// of the anti-light quarter from -0.3 to -0.02 deg (SkyShadowOnset), 3.2%
-// at -0.01 deg at the cap's top.
+// columns (the onset on one column in every row): 0.9-1.8% in a dense sweep
+// of the anti-light quarter from -0.3 to -0.02 deg (SkyShadowOnset), 2.8%
+// at -0.01 deg.
 void setSkyTableMapping(SkyTable& table, const AtmosphereParams& air, const glm::dvec3& lightDirection) {
     constexpr double kDeg = kPi / 180.0;
     const glm::dvec3 l = normalizedOr(lightDirection, glm::dvec3(0.0, 1.0, 0.0));
@@ -305,6 +305,10 @@ void setSkyTableMapping(SkyTable& table, const AtmosphereParams& air, const glm:
         // viewer): below 0.3 deg the rows' width narrows with it.
         table.shadowWidth = 0.25 * depression * std::min(depression / 0.3, 1.0) * kDeg;
         table.shadowShare = 0.15 - 0.1 * std::clamp((depression - 2.0) / 4.0, 0.0, 1.0);
+        // In full from 0.01 deg: straight opposite a light just set these rows
+        // are what resolves the lit sky's switch-on just above the kink (a
+        // fade over 0.1 deg left 6.2% at -0.01 deg and 4.6% at -0.02 within
+        // 3e-4 deg above it, 2.8% and 1.8% now).
         table.shadowShare *= std::min(depression / kShadowFadeDeg, 1.0);
         // A row exactly on the kink of the shadow opposite the light: the
         // shadow rows centred there, and the band's width E adjusted (by at

@@ -99,7 +99,7 @@
 //       the top of the earth's shadow, whose edge rises to about L above the
 //       horizon opposite the light;
 //     - a light below the horizon also: b = 0.15 (0.05 from L = 6 deg; fading
-//       in over the first 0.1 deg; L beyond 18 deg counts as 18) of the rows
+//       in over the first 0.01 deg; L beyond 18 deg counts as 18) of the rows
 //       around c with width w = 0.25 L min(L / 0.3, 1): the edge of the earth's shadow
 //       opposite the light, which is sharpest (a kink in the radiance a few
 //       hundredths of a degree above a black sliver) for a light just set;
@@ -122,10 +122,10 @@
 //     brightest sky) in every direction tests/core/test_sky.cpp probes, off
 //     the texel centres too, for suns from -6 to 90 deg (SkyOffTexel), and
 //     in a dense sweep of the anti-light quarter for suns 0.05-0.3 deg below
-//     the horizon (SkyShadowOnset: 0.9-1.6% from -0.3 to -0.02 deg). Not
-//     yet within 2%: a light less than ~0.015 deg below the horizon, at the
-//     top of the cap straight opposite it (3.2% at -0.01 deg; 63% before the
-//     cap's rows and columns);
+//     the horizon (SkyShadowOnset: 0.9-1.8% from -0.3 to -0.02 deg). Not
+//     yet within 2%: a light less than ~0.015 deg below the horizon (2.8% at
+//     -0.01 deg, 10 deg of azimuth from the anti-light point just above the
+//     horizon; 63% before the cap's rows and columns);
 //   * columns i = 0..azimuthCount-1 hold the azimuth relative to the light
 //       phi_i = 2 pi * i / azimuthCount,
 //     measured from the light's azimuth towards east (the same sense as the
