@@ -22,10 +22,12 @@ inline constexpr double kShadowAxisA2 = 1e-24;
 
 /// 1 - cos(angle) between the directions at elevations a and b [rad] whose
 /// azimuths differ by d [rad]: 2 sin^2((a - b) / 2) + 2 cos a cos b
-/// sin^2(d / 2), without the cancellation of 1 - cos for small angles.
+/// sin^2(d / 2), without the cancellation of 1 - cos for small angles; from
+/// its parts e = sin((a - b) / 2), cc = cos a cos b and f = sin(d / 2), for
+/// a caller that keeps e and cc over many azimuths.
+inline double oneMinusCosFromParts(double e, double cc, double f) { return 2.0 * (e * e + cc * f * f); }
 inline double oneMinusCosBetween(double a, double b, double d) {
-    const double e = std::sin(0.5 * (a - b)), f = std::sin(0.5 * d);
-    return 2.0 * (e * e + std::cos(a) * std::cos(b) * f * f);
+    return oneMinusCosFromParts(std::sin(0.5 * (a - b)), std::cos(a) * std::cos(b), std::sin(0.5 * d));
 }
 
 /// The roots lo <= hi of a s^2 + 2 b s + c = 0 (a > 0), without the

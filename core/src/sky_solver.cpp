@@ -544,7 +544,12 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
     // under 1e-12 taken as parallel) the rows just above the shadow's kink
     // came out dark straight opposite a light 0.01 deg down.
     const double c2 = (r0 * cosL - rg) * (r0 * cosL + rg);
+    // 1 + mu and 1 - mu: the angle to the anti-light point (elevation -lambda,
+    // azimuth pi - phi) and to the light; their elevation parts are the row's.
     const double lightElevation = std::atan2(sinL, cosL);
+    const double towardsAnti = std::sin(0.5 * (elevation + lightElevation));
+    const double towardsLight = std::sin(0.5 * (elevation - lightElevation));
+    const double cosCos = std::cos(elevation) * cosL;
     for (int i = 0; i < columns; ++i) {
         const double mu = sinEl * sinL + cosEl * cosL * s.cosPhi[i];
         // x . l is linear in s: lit at both ends of the ray means no shadow.
@@ -554,8 +559,9 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
             continue;
         }
         double lo = -INFINITY, hi = INFINITY;
-        const double a2 = oneMinusCosBetween(elevation, -lightElevation, kPi - s.phi[i]) *
-                          oneMinusCosBetween(elevation, lightElevation, s.phi[i]);
+        const double halfPhi = 0.5 * s.phi[i];
+        const double a2 = oneMinusCosFromParts(towardsAnti, cosCos, std::cos(halfPhi)) *
+                          oneMinusCosFromParts(towardsLight, cosCos, std::sin(halfPhi));
         const double b2 = r0 * (sinEl - sinL * mu);
         if (a2 > kShadowAxisA2) {
             if (!halfQuadraticRoots(a2, b2, c2, lo, hi)) hi = lo;  // empty

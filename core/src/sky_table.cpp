@@ -21,9 +21,9 @@ glm::dvec3 normalizedOr(const glm::dvec3& v, const glm::dvec3& fallback) {
 
 namespace {
 
-constexpr double kMappingTopDeg = 1.0;  // lights above this elevation [deg]: the plain mapping
+constexpr double kMappingTopDeg = 1.0;   // lights above this elevation [deg]: the plain mapping
 constexpr double kShadowFadeDeg = 0.01;  // the shadow rows fade in over this depression [deg]
-constexpr double kDeepestDeg = 18.0;    // depressions beyond this [deg] map as this one
+constexpr double kDeepestDeg = 18.0;     // depressions beyond this [deg] map as this one
 
 /// The row mapping of a table (sky.hpp) as a function of x = sqrt(elevation):
 /// v(x) = (1 - a - b - d) x / sqrt(pi/2) + a atan(x^2 / E) / atan(pi/2 / E)
@@ -308,7 +308,7 @@ void setSkyTableMapping(SkyTable& table, const AtmosphereParams& air, const glm:
         // In full from 0.01 deg: straight opposite a light just set these rows
         // are what resolves the lit sky's switch-on just above the kink (a
         // fade over 0.1 deg left 6.2% at -0.01 deg and 4.6% at -0.02 within
-        // 3e-4 deg above it, 2.8% and 1.8% now).
+        // 3e-4 deg above it; now at most 2.8% and 1.8% over the whole sweep).
         table.shadowShare *= std::min(depression / kShadowFadeDeg, 1.0);
         // A row exactly on the kink of the shadow opposite the light: the
         // shadow rows centred there, and the band's width E adjusted (by at
