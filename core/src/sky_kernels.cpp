@@ -384,27 +384,24 @@ AERIAL_INLINE void msLayer(int nc, const LayerConstants& k, const float* __restr
     }
 }
 
-/// One channel of edgeKernel (a helper, as skyLayer, so that GCC vectorises
-/// it): two halves per piece, tau linear in each, through the geometric mean
-/// of the ends; half k covers t = t0 + dt (k/2 .. (k+1)/2) and adds
-/// dt/2 [(p + q t_k) F1 + q dt/2 F2].
-AERIAL_INLINE void edgeChannel(int n, const float* __restrict tauS, const float* __restrict tauE,
-                               const float* __restrict start, const float* __restrict length,
-                               const float* __restrict pR, const float* __restrict qR,
-                               const float* __restrict pM, const float* __restrict qM, float* __restrict outR,
-                               float* __restrict outM) {
+/// One channel and scatterer of edgeKernel (a helper, as skyLayer, so that
+/// GCC vectorises it): two halves per piece, tau linear in each through its
+/// value at the middle; half k covers t = t0 + h (k .. k + 1), h = dt / 2,
+/// where e^(-kappa t - tau) = E_k e^(-(kappa h + tau_(k+1) - tau_k) u),
+/// u = 0..1, and adds h F1 (exponentialMoments).
+AERIAL_INLINE void edgeChannel(int n, const float* __restrict tauS, const float* __restrict tauM,
+                               const float* __restrict tauE, const float* __restrict start,
+                               const float* __restrict length, const float* __restrict kappa,
+                               float* __restrict out) {
     for (int i = 0; i < n; ++i) {
-        const float ts = tauS[i], te = tauE[i];
-        const float tm = fastSqrt(ts * te + 1e-30f);  // geometric mean (~0 for an empty atmosphere)
-        const float es = expNeg(ts), em = expNeg(tm), ee = expNeg(te);
-        float f1a, f2a, f1b, f2b;
-        exponentialMoments(es, em, tm - ts, f1a, f2a);
-        exponentialMoments(em, ee, te - tm, f1b, f2b);
+        const float ts = tauS[i], tm = tauM[i], te = tauE[i], k = kappa[i];
         const float h = 0.5f * length[i];
-        const float ta = start[i], tb = start[i] + h;
-        const float pr = pR[i], qr = qR[i], pm = pM[i], qm = qM[i];
-        outR[i] = h * ((pr + qr * ta) * f1a + qr * h * f2a + (pr + qr * tb) * f1b + qr * h * f2b);
-        outM[i] = h * ((pm + qm * ta) * f1a + qm * h * f2a + (pm + qm * tb) * f1b + qm * h * f2b);
+        const float ka = k * start[i], kh = k * h;
+        const float e0 = expNeg(ka + ts), e1 = expNeg(ka + kh + tm), e2 = expNeg(ka + 2.0f * kh + te);
+        float f1a, f2a, f1b, f2b;
+        exponentialMoments(e0, e1, kh + tm - ts, f1a, f2a);
+        exponentialMoments(e1, e2, kh + te - tm, f1b, f2b);
+        out[i] = h * (f1a + f1b);
     }
 }
 
@@ -570,9 +567,11 @@ AERIAL_HOT_KERNEL void skyKernel(const SkyKernelArgs& a) {
 AERIAL_HOT_KERNEL void edgeKernel(const EdgeKernelArgs& a) {
     const int n = a.count;
     const std::size_t m = std::size_t(a.stride);
-    for (std::size_t c = 0; c < 3; ++c)
-        edgeChannel(n, a.tauStart + c * m, a.tauEnd + c * m, a.t0, a.dt, a.p + c * m, a.q + c * m,
-                    a.p + (3 + c) * m, a.q + (3 + c) * m, a.out + c * m, a.out + (3 + c) * m);
+    for (std::size_t x = 0; x < 6; ++x) {
+        const std::size_t c = x % 3;
+        edgeChannel(n, a.tauStart + c * m, a.tauMid + c * m, a.tauEnd + c * m, a.t0, a.dt, a.kappa + x * m,
+                    a.out + x * m);
+    }
 }
 
 /// exp of a 4-point weighted sum of logarithms per column (expNeg of its

@@ -175,19 +175,19 @@ struct EdgeKernelArgs {
     int count;              // lit pieces, a multiple of 16 (those past the real ones: any finite values)
     int stride;             // >= count: distance between the channels' arrays
     const float* tauStart;  // [3][stride] optical depth to the light at the piece's start, rgb
+    const float* tauMid;    // [3][stride] ... at its middle
     const float* tauEnd;    // [3][stride] ... at its end
     const float* t0;        // [count] start of the piece in its layer's t = (s - s0) / (s1 - s0)
     const float* dt;        // [count] its length in t
-    const float* p;         // [6][stride] the layer's weight p + q t: R rgb, M rgb
-    const float* q;         // [6][stride]
-    float* out;             // [6][stride] the piece's integrals: R rgb, M rgb
+    const float* kappa;     // [6][stride] the fall of the view's weight e^(-kappa t), >= 0: R rgb, M rgb
+    float* out;             // [6][stride] the piece's shape integrals: R rgb, M rgb
 };
 
 /// The lit pieces of the layers that an edge of the earth's shadow cuts
-/// (sky_solver.cpp, shadowEdgeLayers): for each, the integral of
-/// (p + q t) e^(-tau(t)) over it, tau falling geometrically (log-linear) from
-/// its start to its end, as two halves with tau linear in each (closed form,
-/// exponentialMoments) meeting at the geometric mean sqrt(tau_start tau_end).
+/// (sky_solver.cpp, shadowEdgeLayers): for each, the integral over it of
+/// e^(-kappa t) e^(-tau(t)), the view's weight's shape times the light's
+/// transmittance, as two halves with tau linear in each (through tau at the
+/// piece's middle), in closed form (exponentialMoments).
 void edgeKernel(const EdgeKernelArgs& a);
 
 struct MsCrossingArgs {

@@ -39,7 +39,10 @@
 //     exactly per texel) does not touch. A layer that an edge of the shadow
 //     cuts (sun below the horizon) adds its lit part only (shadowEdgeLayers):
 //     the optical depth at the edge is that of the ray grazing the ground,
-//     falling log-linearly to the lit shell's, integrated in closed form.
+//     at the piece's middle interpolated between the two shells' rows at
+//     the point's own margin above its horizon, at the lit shell the
+//     table's; the view's weight falls exponentially along the layer; the
+//     product integrated in closed form.
 //  Rows are at the elevations of the table's row mapping for this light
 //  (setSkyTableMapping, <aerial/sky.hpp>): for a low or set sun they crowd
 //  towards the horizon and the edge of the earth's shadow opposite the sun.
@@ -282,12 +285,16 @@ SkySolver::Impl::Impl(const SkySolverDesc& d) : desc(d) {
         const std::size_t pieces = std::size_t(2) * paddedColumns;
         s.edgeCrossing.assign(std::size_t(layers) + 1, 0.0f);
         s.edgeTauStart.assign(3 * pieces, 0.0f);
+        s.edgeTauMid.assign(3 * pieces, 0.0f);
         s.edgeTauEnd.assign(3 * pieces, 0.0f);
         s.edgeT0.assign(pieces, 0.0f);
         s.edgeDt.assign(pieces, 0.0f);
-        s.edgeP.assign(12 * pieces, 0.0f);  // the layers' weights, then their straight-on share's
-        s.edgeQ.assign(12 * pieces, 0.0f);
-        s.edgeOut.assign(12 * pieces, 0.0f);
+        s.edgeKappa.assign(6 * pieces, 0.0f);
+        s.edgeWeight.assign(12 * pieces, 0.0f);
+        s.edgeOut.assign(6 * pieces, 0.0f);
+        s.edgeLayerKappa.assign(std::size_t(6) * layers, 0.0);
+        s.edgeLayerNorm.assign(std::size_t(6) * layers, 1.0);
+        s.edgeLayerReady.assign(std::size_t(layers), 0);
         s.edgeColumn.assign(pieces, 0);
         s.depthRow.resize(angles);
         s.rowPhi.assign(std::size_t(columns), 0.0);
@@ -704,65 +711,128 @@ void SkySolver::Impl::spreadMultiple(Scratch& s) const {
 
 // The layers that an edge of the earth's shadow cuts, which skyKernel leaves
 // out (a layer the shadow overlaps adds nothing there): for each column, the
-// lit part of such a layer only, [s0, sIn] or [sOut, s1], added here. At a
-// shadow edge the point lies on the planet's shadow cylinder, so its ray to
-// the light grazes the ground: its optical depth is that of the grazing ray
-// from the edge's height, interpolated linearly in the tangent length
-// sqrt(r^2 - Rg^2) between the grazing rays of the layer's two shells
-// (column 0 of their optical-depth rows). From there the optical depth falls steeply and then levels off
-// towards the lit shell (the light's perigee rises along the view ray, and
-// tau falls about exponentially with it), so it is taken log-linear along the
-// piece (edgeKernel). Multiplying the whole layer's integral by its lit
-// fraction instead, with the shadowed shell's lookup clamped to its grazing
-// ray, put up to 17% too much Mie into the horizon towards a sun 0.5 deg
-// below it.
+// lit part of such a layer only, [s0, sIn] or [sOut, s1], added here. Near
+// the horizon of a light just set this piece carries most of the texel (85%
+// of the blue 30 deg from the anti-light point, a sun 0.01 deg down: the
+// edge lies in the first layer there, 10 km out along a 40 km layer), and
+// the light reaches it through an optical depth of ~10, so 0.5% in tau is 5%
+// in the texel. Both factors of the integrand are modelled, not taken from
+// the whole layer's straight lines:
+//  * The view's weight beta_X T(viewer -> s) falls about exponentially along
+//    the layer, e^(-kappa t) with kappa the layer's optical depth plus the
+//    density's fall across it (from its first and last Gauss nodes), scaled
+//    so that the whole layer integrates to its weight W = p + q/2. The
+//    layer's linear p + q t (matched mean and centroid) put ~3% too much of
+//    W into the far two thirds of the horizon's first layer (blue depth 1.5).
+//  * The optical depth to the light at the edge is that of the ray grazing
+//    the ground from the edge's height, at the lit shell the table's, and in
+//    between (at the piece's middle) the table's rows of the layer's two
+//    shells at the point's own margin above its horizon, interpolated
+//    linearly in the tangent length sqrt(r^2 - Rg^2) (at the edge, margin 0,
+//    that is the grazing value). tau is linear in each half (edgeKernel).
+//    Along a ray looking away from the light the optical depth rises and
+//    bulges above its chord (by 0.03 at the middle of the piece above,
+//    where tau = 10..11): taken log-linear through the ends, as before, it
+//    sagged below it instead.
+// A sun 0.01 deg down, the horizon texels 26-30 deg from the anti-light
+// point: 5.2 -> 0.9% (Rayleigh, blue), 4.4 -> 0.7% (Mie). Multiplying the
+// whole layer's integral by its lit fraction, with the shadowed shell's
+// lookup clamped to its grazing ray, put up to 17% too much Mie into the
+// horizon towards a sun 0.5 deg below it.
 void SkySolver::Impl::shadowEdgeLayers(Scratch& s, double r0, double sinEl, bool straightOn) {
     const double rg = air.planetRadius;
+    const double cosEl = std::sqrt(std::max(1.0 - sinEl * sinEl, 0.0));
     const std::size_t rows = std::size_t(layers) + 1;
     const int cap = 2 * paddedColumns;
     float* crossing = s.edgeCrossing.data();
     for (int k = 0; k <= layers; ++k) crossing[k] = float(s.crossing[std::size_t(k)]);
+    const double r0Tangent2 = (r0 - rg) * (r0 + rg);
+    // Where optical-depth row `row` holds margin x >= 0 above its horizon
+    // (the mapping of opticalDepthRow): the entry's offset in a channel's
+    // plane and the fraction towards the next.
+    struct Lookup {
+        std::size_t at;
+        double f;
+    };
+    auto lookup = [&](int row, double x) {
+        const double u =
+            std::min(x / (x + kAngleKnee) * angleScale[std::size_t(row)], double(angles - 1) - 1e-3);
+        const int iu = int(u);
+        return Lookup{std::size_t(row) * angles + std::size_t(iu), u - iu};
+    };
+    auto depthAt = [&](const Lookup& q, int c) {
+        const float* at = depth.data() + std::size_t(c) * rows * angles + q.at;
+        return at[0] + q.f * (double(at[1]) - at[0]);
+    };
+    // The view's weight's fall and scale of layer l (the same in every column).
+    std::fill(s.edgeLayerReady.begin(), s.edgeLayerReady.end(), 0);
+    auto layerWeights = [&](int l) {
+        if (s.edgeLayerReady[std::size_t(l)]) return;
+        s.edgeLayerReady[std::size_t(l)] = 1;
+        const float* profile[2] = {&s.nodeR[std::size_t(4 * l)], &s.nodeM[std::size_t(4 * l)]};
+        for (int x = 0; x < 2; ++x) {
+            const double first = profile[x][0], last = profile[x][3];
+            const double fall =
+                first > 0.0 && last > 0.0 ? std::log(first / last) / (kGaussT[3] - kGaussT[0]) : 0.0;
+            for (int c = 0; c < 3; ++c) {
+                // >= 0: the rows rise, so density and transmittance fall.
+                const double kappa = std::max(double(s.layerDepth[std::size_t(3 * l + c)]) + fall, 0.0);
+                const std::size_t at = std::size_t(6 * l + 3 * x + c);
+                s.edgeLayerKappa[at] = kappa;
+                s.edgeLayerNorm[at] = kappa > 1e-6 ? kappa / -std::expm1(-kappa) : 1.0 + 0.5 * kappa;
+            }
+        }
+    };
     int n = 0;
     // One lit piece of layer l, from s = from to s = to; `edgeAtStart`: the
     // start is the shadow's edge (else the end is).
     auto piece = [&](int i, int l, float from, float to, bool edgeAtStart) {
         const double s0 = crossing[l], len = double(crossing[l + 1]) - s0;
         if (!(len > 0.0)) return;
-        const double edge = edgeAtStart ? from : to;
-        const double r = std::sqrt(std::max(r0 * r0 + 2.0 * r0 * edge * sinEl + edge * edge, 0.0));
+        // r^2 - Rg^2 at s along the view ray.
+        auto tangent2At = [&](double sv) { return std::max(r0Tangent2 + sv * (2.0 * r0 * sinEl + sv), 0.0); };
+        const double edge = edgeAtStart ? from : to, middle = 0.5 * (double(from) + double(to));
+        const double zMid2 = tangent2At(middle), zMid = std::sqrt(zMid2), rMid = std::sqrt(zMid2 + rg * rg);
         // Linear in the tangent length z = sqrt(r^2 - Rg^2), the grazing ray's
         // path down to the ground, which its optical depth grows with
         // (linear in height put it 4% low 22 m above the ground, and the sky
         // above the earth's shadow of a sun 0.07 deg down 7% too bright).
-        const double ha = shellHeight[std::size_t(l)], hb = shellHeight[std::size_t(l) + 1];
-        auto tangent = [&](double radius) { return std::sqrt(std::max((radius - rg) * (radius + rg), 0.0)); };
-        const double za = tangent(rg + ha), zb = tangent(rg + hb);
-        const double f = zb > za ? std::clamp((tangent(r) - za) / (zb - za), 0.0, 1.0) : 0.0;
+        // The shells' tangent lengths: c_h = -z / r at their horizon.
+        const double za = -horizonCosD[std::size_t(l)] * (rg + shellHeight[std::size_t(l)]);
+        const double zb = -horizonCosD[std::size_t(l) + 1] * (rg + shellHeight[std::size_t(l) + 1]);
+        auto across = [&](double z) { return zb > za ? std::clamp((z - za) / (zb - za), 0.0, 1.0) : 0.0; };
+        const double fEdge = across(std::sqrt(tangent2At(edge))), fMid = across(zMid);
+        // The light's zenith cosine at the middle, (r0 sinL + s mu) / r, above
+        // the horizon's there, -z / r.
+        const double mu = sinEl * sinLight + cosEl * cosLight * s.cosPhi[i];
+        const double midMargin = std::max((r0 * sinLight + middle * mu + zMid) / rMid, 0.0);
         // The lit shell: the lower one (l) for a piece that ends at the edge.
         const int shell = edgeAtStart ? l + 1 : l;
         const double alpha = shell == 0 ? sinLight : double(s.layer[std::size_t(shell) - 1].alpha);
         const double beta = shell == 0 ? 0.0 : double(s.layer[std::size_t(shell) - 1].beta);
-        const double margin = alpha + beta * s.cosPhi[i] - horizonCos[std::size_t(shell)];
-        const double x = std::max(margin, 0.0);
-        const double u =
-            std::min(x / (x + kAngleKnee) * angleScale[std::size_t(shell)], double(angles - 1) - 1e-3);
-        const int iu = int(u);
-        const double fu = u - iu;
+        const double litMargin = std::max(alpha + beta * s.cosPhi[i] - horizonCos[std::size_t(shell)], 0.0);
+        const Lookup lit = lookup(shell, litMargin), midA = lookup(l, midMargin),
+                     midB = lookup(l + 1, midMargin);
+        const Lookup grazeA{std::size_t(l) * angles, 0.0}, grazeB{(std::size_t(l) + 1) * angles, 0.0};
         for (int c = 0; c < 3; ++c) {
-            const float* plane = depth.data() + std::size_t(c) * rows * angles;
-            const float* lit = plane + std::size_t(shell) * angles;
-            const double tauLit = lit[iu] + fu * (double(lit[iu + 1]) - lit[iu]);
-            const double ga = plane[std::size_t(l) * angles], gb = plane[(std::size_t(l) + 1) * angles];
-            const double tauEdge = ga + f * (gb - ga);
+            const double tauLit = depthAt(lit, c);
+            const double ga = depthAt(grazeA, c), ma = depthAt(midA, c);
+            const double tauEdge = ga + fEdge * (depthAt(grazeB, c) - ga);
+            const double tauMid = ma + fMid * (depthAt(midB, c) - ma);
             s.edgeTauStart[std::size_t(c * cap + n)] = float(edgeAtStart ? tauEdge : tauLit);
+            s.edgeTauMid[std::size_t(c * cap + n)] = float(tauMid);
             s.edgeTauEnd[std::size_t(c * cap + n)] = float(edgeAtStart ? tauLit : tauEdge);
         }
+        // The view's weight A e^(-kappa t), A = W kappa / (1 - e^-kappa).
+        layerWeights(l);
         const LayerConstants& lc = s.layer[std::size_t(l)];
         for (int k = 0; k < 6; ++k) {
-            s.edgeP[std::size_t(k * cap + n)] = lc.p[k];
-            s.edgeQ[std::size_t(k * cap + n)] = lc.q[k];
-            s.edgeP[std::size_t((6 + k) * cap + n)] = lc.straightP[k];
-            s.edgeQ[std::size_t((6 + k) * cap + n)] = lc.straightQ[k];
+            const std::size_t at = std::size_t(6 * l + k);
+            const double norm = s.edgeLayerNorm[at];
+            s.edgeKappa[std::size_t(k * cap + n)] = float(s.edgeLayerKappa[at]);
+            s.edgeWeight[std::size_t(k * cap + n)] = float((lc.p[k] + 0.5 * double(lc.q[k])) * norm);
+            s.edgeWeight[std::size_t((6 + k) * cap + n)] =
+                float((lc.straightP[k] + 0.5 * double(lc.straightQ[k])) * norm);
         }
         s.edgeT0[std::size_t(n)] = float((double(from) - s0) / len);
         s.edgeDt[std::size_t(n)] = float((double(to) - double(from)) / len);
@@ -789,25 +859,19 @@ void SkySolver::Impl::shadowEdgeLayers(Scratch& s, double r0, double sinEl, bool
     e.count = std::min((n + 15) / 16 * 16, cap);
     e.stride = cap;
     e.tauStart = s.edgeTauStart.data();
+    e.tauMid = s.edgeTauMid.data();
     e.tauEnd = s.edgeTauEnd.data();
     e.t0 = s.edgeT0.data();
     e.dt = s.edgeDt.data();
-    e.p = s.edgeP.data();
-    e.q = s.edgeQ.data();
+    e.kappa = s.edgeKappa.data();
     e.out = s.edgeOut.data();
     edgeKernel(e);
     const int planes = straightOn ? 12 : 6;  // with the straight-on share (skyKernel's acc 9..14)
-    if (straightOn) {
-        e.p = s.edgeP.data() + std::size_t(6) * cap;
-        e.q = s.edgeQ.data() + std::size_t(6) * cap;
-        e.out = s.edgeOut.data() + std::size_t(6) * cap;
-        edgeKernel(e);
-    }
     for (int m = 0; m < n; ++m) {
         const int i = s.edgeColumn[std::size_t(m)];
         for (int k = 0; k < planes; ++k)
             s.acc[std::size_t((k < 6 ? k : k + 3) * paddedColumns + i)] +=
-                s.edgeOut[std::size_t(k * cap + m)];
+                s.edgeWeight[std::size_t(k * cap + m)] * s.edgeOut[std::size_t((k % 6) * cap + m)];
     }
 }
 

@@ -30,9 +30,14 @@ struct SkySolver::Impl {
         std::vector<float> anisoPoly;                           // [9][kMsCosines] shellAniso's scratch
         // Lit pieces of the layers cut by a shadow edge (shadowEdgeLayers), at most 2 per column.
         std::vector<float> edgeCrossing;              // [layers + 1]
-        std::vector<float> edgeTauStart, edgeTauEnd;  // [3][2 padded columns]
-        std::vector<float> edgeT0, edgeDt;            // [2 padded columns]
-        std::vector<float> edgeP, edgeQ, edgeOut;     // [6][2 padded columns]
+        std::vector<float> edgeTauStart, edgeTauMid, edgeTauEnd;  // [3][2 padded columns]
+        std::vector<float> edgeT0, edgeDt;                        // [2 padded columns]
+        std::vector<float> edgeKappa, edgeOut;                    // [6][2 padded columns]
+        std::vector<float> edgeWeight;  // [12][2 padded columns]: the weights, then the straight-on share's
+        // Per layer of the row: the view's weight's fall kappa and its scale
+        // kappa / (1 - e^-kappa), [layers][6] (R rgb, M rgb), once a piece needs them.
+        std::vector<double> edgeLayerKappa, edgeLayerNorm;
+        std::vector<unsigned char> edgeLayerReady;    // [layers]
         std::vector<int> edgeColumn;                  // [2 padded columns]
         detail::DepthRowScratch depthRow;             // optical-depth rows
         // The row's column azimuths (rowColumns): the shared uniform ones, or
