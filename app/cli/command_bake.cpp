@@ -153,7 +153,8 @@ constexpr const char* kColumnMapping =
     "F), "
     "F = min(sqrt(c / k), pi/4), D = max(F / 2, 1 deg), F2 = min(2 (F + D), 3 pi / 4) (the onset of the "
     "lit sky around the cap of the earth's shadow, el = c - k psi^2, on column W/2 -+ 3 W / 128 in "
-    "every row)";
+    "every row), except from p3 to pi: psi = p3 + (pi - p3) (a t + (1 - a) t^2), t = (x - 25 W / 128) / "
+    "(39 W / 128), a = 1 - 0.7 g";
 
 constexpr const char* kRadianceMapping =
     "equirectangular over the whole sphere: pixel (x, y) of a W x H image looks along azimuth "

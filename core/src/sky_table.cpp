@@ -183,12 +183,19 @@ constexpr double kCapEndDeg = 1.0;  // and none from this one
 /// lower down the lit sky ramps up over a width that grows with psiC (the
 /// level lines of the shadow's exit height fan out from the cap's top), so
 /// the band widens with G psiC (G = 1.25, 1.5 and 2 tried: 2 is best at
-/// -0.01 and -0.02 deg, SkyShadowOnset). With the
+/// -0.01 and -0.02 deg, SkyShadowOnset). The last segment, psiE .. pi, is
+/// quadratic: psi = psiE + (pi - psiE) (a t + (1 - a) t^2), t = 0..1 along
+/// it, a = kSkyCapFarSlope: its first columns lie at 0.3 of its mean
+/// spacing, where the lit sky beyond the band still climbs steeply near the
+/// horizon (a light 0.01 deg down: the radiance halves between 8.7 and 11
+/// deg from the anti-light point, where linear columns 4.4 deg apart put the
+/// pixel 16% high), its last (at the light's azimuth) 1.7 times it. With the
 /// strength g < 1 each psi knot is blended towards the uniform azimuth of
-/// its x: g psi + (1 - g) 2 pi x / N.
+/// its x, g psi + (1 - g) 2 pi x / N, and a towards 1, 1 - g (1 - a).
 struct ColumnMapping {
     double x[5] = {0.0, 0.0, 0.0, 0.0, 0.0};
     double psi[5] = {0.0, 0.0, 0.0, 0.0, kPi};
+    double farSlope = 1.0;  // a: the last segment's slope at psiE, relative to its mean
     bool uniform = true;
 
     ColumnMapping(const SkyTable& t, double elevation) {
@@ -207,6 +214,7 @@ struct ColumnMapping {
         x[4] = 0.5 * n;
         const double capPsi[5] = {0.0, onset, std::hypot(kSkyCapOnsetGrowth * onset, band), end, kPi};
         for (int m = 1; m < 4; ++m) psi[m] = g * capPsi[m] + (1.0 - g) * 2.0 * kPi * x[m] / n;
+        farSlope = 1.0 - g * (1.0 - kSkyCapFarSlope);
         uniform = false;
     }
     double halfColumn(double p) const {  // psi -> x
@@ -215,8 +223,13 @@ struct ColumnMapping {
             if (p < psi[m + 1] || m == 3) {
                 if (!(psi[m + 1] > psi[m])) return x[m + 1];
                 const double q = std::min(p, kPi);
-                const double t = m == 1 ? (q * q - psi[1] * psi[1]) / (psi[2] * psi[2] - psi[1] * psi[1])
+                const double u = m == 1 ? (q * q - psi[1] * psi[1]) / (psi[2] * psi[2] - psi[1] * psi[1])
                                         : (q - psi[m]) / (psi[m + 1] - psi[m]);
+                // The last segment's u = a t + (1 - a) t^2, solved for t without cancellation.
+                const double t =
+                    m == 3
+                        ? 2.0 * u / (farSlope + std::sqrt(farSlope * farSlope + 4.0 * (1.0 - farSlope) * u))
+                        : u;
                 return x[m] + (x[m + 1] - x[m]) * t;
             }
         return x[4];
@@ -226,8 +239,9 @@ struct ColumnMapping {
             if (h < x[m + 1] || m == 3) {
                 if (!(x[m + 1] > x[m])) return psi[m + 1];
                 const double t = (std::min(h, x[4]) - x[m]) / (x[m + 1] - x[m]);
-                return m == 1 ? std::sqrt(psi[1] * psi[1] + (psi[2] * psi[2] - psi[1] * psi[1]) * t)
-                              : psi[m] + (psi[m + 1] - psi[m]) * t;
+                const double u = m == 3 ? t * (farSlope + (1.0 - farSlope) * t) : t;
+                return m == 1 ? std::sqrt(psi[1] * psi[1] + (psi[2] * psi[2] - psi[1] * psi[1]) * u)
+                              : psi[m] + (psi[m + 1] - psi[m]) * u;
             }
         return kPi;
     }
@@ -283,9 +297,11 @@ double skyTableAzimuth(const SkyTable& table, double column, double elevation) {
 // with the quadratic rows. For a light 0-1 deg below the horizon the cap of
 // the earth's shadow opposite it gets its own rows (uniform in the azimuth
 // of its onset below the kink, crowded at the kink above it) and warped
-// columns (the onset on one column in every row): 0.9-1.8% in a dense sweep
-// of the anti-light quarter from -0.3 to -0.02 deg (SkyShadowOnset), 2.8%
-// at -0.01 deg.
+// columns (the onset on one column in every row): 0.8-1.8% in a dense sweep
+// of the anti-light quarter from -0.3 to -0.01 deg (SkyShadowOnset; 1.9%
+// at -0.01 deg with probes within 3e-4 deg of the kink). Lights less than
+// 0.01 deg down are not yet within 2% (4.7% at -0.005 deg, at the kink
+// straight opposite the light).
 void setSkyTableMapping(SkyTable& table, const AtmosphereParams& air, const glm::dvec3& lightDirection) {
     constexpr double kDeg = kPi / 180.0;
     const glm::dvec3 l = normalizedOr(lightDirection, glm::dvec3(0.0, 1.0, 0.0));
@@ -308,7 +324,7 @@ void setSkyTableMapping(SkyTable& table, const AtmosphereParams& air, const glm:
         // In full from 0.01 deg: straight opposite a light just set these rows
         // are what resolves the lit sky's switch-on just above the kink (a
         // fade over 0.1 deg left 6.2% at -0.01 deg and 4.6% at -0.02 within
-        // 3e-4 deg above it; now at most 2.8% and 1.8% over the whole sweep).
+        // 3e-4 deg above it; now at most 1.9% and 1.8% over the whole sweep).
         table.shadowShare *= std::min(depression / kShadowFadeDeg, 1.0);
         // A row exactly on the kink of the shadow opposite the light: the
         // shadow rows centred there, and the band's width E adjusted (by at

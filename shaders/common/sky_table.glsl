@@ -43,6 +43,7 @@ const float kSkyCapOnsetShare = 12.0 / 128.0;
 const float kSkyCapNearShare = 10.0 / 128.0;
 const float kSkyCapMinBand = 1.0 * kPi / 180.0;
 const float kSkyCapOnsetGrowth = 2.0;
+const float kSkyCapFarSlope = 0.3;
 const float kSkyCapRowShare = 16.0 / 63.0;
 
 /// Whether a table's columns are warped around the cap of the earth's shadow
@@ -79,8 +80,10 @@ float skyTableMappedRow(float elevation, vec3 band, float w, float b, vec2 cap) 
 /// 64) / 128 columns, psi = (0, psiC, sqrt((G psiC)^2 + D^2), psiE, pi),
 /// psiC = sqrt(max(c - el, 0) / k) the onset of the lit sky around the cap
 /// of the earth's shadow, D = max(psiC(0) / 2, 1 deg), G =
-/// kSkyCapOnsetGrowth, psiE = min(2 (psiC(0) + D), 3 pi / 4), each inner psi
-/// blended with g towards 2 pi x / columns.
+/// kSkyCapOnsetGrowth, psiE = min(2 (psiC(0) + D), 3 pi / 4), the last
+/// segment quadratic (psi = psiE + (pi - psiE) (a t + (1 - a) t^2), a = 1 -
+/// g (1 - kSkyCapFarSlope)), each inner psi blended with g towards 2 pi x /
+/// columns.
 float skyTableColumnAt(float relative, float el, float columns, float c, vec2 cap) {
     if (!skyTableCapActive(cap, c) || !(columns >= 4.0)) return relative / (2.0 * kPi) * columns;
     float k = cap.x, g = min(cap.y, 1.0);
@@ -103,8 +106,11 @@ float skyTableColumnAt(float relative, float el, float columns, float c, vec2 ca
         x = x1 + (x2 - x1) * (psi * psi - p1 * p1) / (p2 * p2 - p1 * p1);
     else if (psi < p3)
         x = x2 + (x3 - x2) * (psi - p2) / (p3 - p2);
-    else
-        x = x3 + (x4 - x3) * (min(psi, kPi) - p3) / (kPi - p3);
+    else {  // u = a t + (1 - a) t^2 along the last segment, solved for t
+        float a = 1.0 - g * (1.0 - kSkyCapFarSlope);
+        float u = (min(psi, kPi) - p3) / (kPi - p3);
+        x = x3 + (x4 - x3) * 2.0 * u / (a + sqrt(a * a + 4.0 * (1.0 - a) * u));
+    }
     return relative <= kPi ? x4 - x : x4 + x;
 }
 

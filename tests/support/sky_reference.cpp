@@ -169,7 +169,7 @@ double texelAzimuth(int i, double elevation, const SkyTable& table) {
     if (!skyTableColumnsWarped(table)) return 2.0 * kPi * i / n;
     // The column mapping of <aerial/sky.hpp>, written out again: piecewise
     // linear in the azimuth psi from the anti-light point, in psi^2 between
-    // the second and the third knot.
+    // the second and the third knot, quadratic in the columns after the fourth.
     const double k = table.capCurvature, g = std::min(table.capStrength, 1.0), c = table.shadowElevation;
     const double foot = std::min(std::sqrt(c / k), 0.25 * kPi);
     const double band = std::max(0.5 * foot, kSkyCapMinBandDeg * kPi / 180.0);
@@ -184,7 +184,10 @@ double texelAzimuth(int i, double elevation, const SkyTable& table) {
             const double p0 = m == 0 ? 0.0 : g * cap[m] + (1.0 - g) * 2.0 * kPi * xs[m] / n;
             const double p1 = m == 3 ? kPi : g * cap[m + 1] + (1.0 - g) * 2.0 * kPi * xs[m + 1] / n;
             const double t = (x - xs[m]) / (xs[m + 1] - xs[m]);
-            const double psi = m == 1 ? std::sqrt(p0 * p0 + (p1 * p1 - p0 * p0) * t) : p0 + (p1 - p0) * t;
+            // The last segment: quadratic, slope a at its start (relative to its mean).
+            const double a = 1.0 - g * (1.0 - kSkyCapFarSlope);
+            const double u = m == 3 ? a * t + (1.0 - a) * t * t : t;
+            const double psi = m == 1 ? std::sqrt(p0 * p0 + (p1 * p1 - p0 * p0) * u) : p0 + (p1 - p0) * u;
             return i <= 0.5 * n ? kPi - psi : kPi + psi;
         }
     }

@@ -121,11 +121,11 @@
 //     single-scattering integral relative to the pixel (floored at 1% of the
 //     brightest sky) in every direction tests/core/test_sky.cpp probes, off
 //     the texel centres too, for suns from -6 to 90 deg (SkyOffTexel), and
-//     in a dense sweep of the anti-light quarter for suns 0.05-0.3 deg below
-//     the horizon (SkyShadowOnset: 0.9-1.8% from -0.3 to -0.02 deg). Not
-//     yet within 2%: a light less than ~0.015 deg below the horizon (2.8% at
-//     -0.01 deg, 10 deg of azimuth from the anti-light point just above the
-//     horizon; 63% before the cap's rows and columns);
+//     in a dense sweep of the anti-light quarter for suns 0.01-0.3 deg below
+//     the horizon (SkyShadowOnset: 0.8-1.8% from -0.3 to -0.01 deg; 63% at
+//     -0.01 deg before the cap's rows and columns). Not yet within 2%: a
+//     light less than 0.01 deg below the horizon (4.7% at -0.005 deg, at
+//     the kink straight opposite the light);
 //   * columns i = 0..azimuthCount-1 hold the azimuth relative to the light
 //       phi_i = 2 pi * i / azimuthCount,
 //     measured from the light's azimuth towards east (the same sense as the
@@ -142,16 +142,17 @@
 //       x = |i - W/2| = (0, 3, 15, 25, 64) W / 128,
 //       psi = (0, P, sqrt((2 P)^2 + D^2), F2, pi),  P = min(sqrt(max(c - el, 0) / k), F),
 //       F = min(sqrt(c / k), pi/4),  D = max(F / 2, 1 deg),  F2 = min(2 (F + D), 3 pi / 4),
-//     each inner psi blended with g towards 2 pi x / W (skyTableColumn,
-//     skyTableAzimuth): the onset lies on column W/2 -+ 3 W / 128 in every
-//     row below the cap's top, with 12 columns in the band above it. Only P
-//     depends on the row, so between two rows the onset stays on its column
-//     (rows alone could not follow it: 256 x 1024 texels left 2.4% at
-//     -0.05 deg). The band is uniform in psi^2 (at the cap's top the height
-//     above the onset is k psi^2) and widens with P (the 2 in its outer
-//     knot is kSkyCapOnsetGrowth): lower down the cap the lit sky ramps up
-//     over an azimuth that grows with P. The knots are mirror-symmetric, so column i still equals
-//     column W - i. The horizon averages then weight row 0 by azimuth;
+//     except that the last segment is quadratic, psi = F2 + (pi - F2)
+//     (a t + (1 - a) t^2) with t = 0..1 along it and a = 1 - g (1 -
+//     kSkyCapFarSlope) (its columns crowd just beyond F2, where the lit sky
+//     still climbs steeply near the horizon), and each inner psi blended
+//     with g towards 2 pi x / W (skyTableColumn, skyTableAzimuth): the onset lies on column W/2 -+ 3 W / 128
+//     in every row below the cap's top, with 12 columns in the band above it. Only P depends on the row, so
+//     between two rows the onset stays on its column (rows alone could not follow it: 256 x 1024 texels
+//     left 2.4% at -0.05 deg). The band is uniform in psi^2 (at the cap's top the height above the onset is k
+//     psi^2) and widens with P (the 2 in its outer knot is kSkyCapOnsetGrowth): lower down the cap the lit
+//     sky ramps up over an azimuth that grows with P. The knots are mirror-symmetric, so column i still
+//     equals column W - i. The horizon averages then weight row 0 by azimuth;
 //   * texel (i, j) is stored at index (j * azimuthCount + i) * 3 (RGB, float).
 //   Directions below the horizon use row 0.
 //
@@ -280,6 +281,9 @@ inline constexpr double kSkyCapNearShare = 10.0 / 128.0;
 inline constexpr double kSkyCapMinBandDeg = 1.0;
 /// The onset band's outer knot: sqrt((kSkyCapOnsetGrowth P)^2 + D^2).
 inline constexpr double kSkyCapOnsetGrowth = 2.0;
+/// The last segment (psiE .. pi) is quadratic in its columns, with this
+/// slope at psiE relative to its mean (and 2 - it at pi).
+inline constexpr double kSkyCapFarSlope = 0.3;
 /// The share of the rows in the cap (0 .. c) and as far above it (c .. 2c),
 /// taken from the horizon band's: half uniform in sqrt(c - el) below c,
 /// half in cbrt(el - c) above.
