@@ -385,6 +385,18 @@ std::unique_ptr<SkySolver> singleScatteringSolver(const AtmosphereParams& air, c
     return solver;
 }
 
+// `check(sun, light, table)` for lights 0.01 and 0.02 deg below the horizon,
+// each with its single-scattering table; skipped in quick runs.
+template <class Check>
+void forLightsJustSet(const AtmosphereParams& air, Check&& check) {
+    if (quick()) GTEST_SKIP() << "quick run";
+    for (double sun : {-0.01, -0.02}) {
+        const glm::dvec3 light = lightAtElevation(sun);
+        const std::unique_ptr<SkySolver> solver = singleScatteringSolver(air, light);
+        check(sun, light, solver->table());
+    }
+}
+
 class SkyOffTexel : public ::testing::TestWithParam<double> {};
 
 TEST_P(SkyOffTexel, WithinTwoPercentOfTheExactIntegral) {
@@ -492,12 +504,8 @@ INSTANTIATE_TEST_SUITE_P(SmallDepressions, SkyShadowOnset,
 // written the rows within ~3e-5 deg above c came out black (the exact
 // radiance there is 6% of the floor and more above).
 TEST(SkySolver, TexelsAtTheTopOfTheCapAreExact) {
-    if (quick()) GTEST_SKIP() << "quick run";
     AtmosphereParams air;
-    for (double sun : {-0.01, -0.02}) {
-        const glm::dvec3 light = lightAtElevation(sun);
-        const std::unique_ptr<SkySolver> solver = singleScatteringSolver(air, light);
-        const SkyTable& t = solver->table();
+    forLightsJustSet(air, [&](double sun, const glm::dvec3& light, const SkyTable& t) {
         ASSERT_TRUE(skyTableColumnsWarped(t)) << sun;
         const double lightAzimuth = reference::azimuthOf(light);
         double brightest = 0.0;  // towards the light, where the sky is brightest
@@ -529,7 +537,7 @@ TEST(SkySolver, TexelsAtTheTopOfTheCapAreExact) {
         }
         EXPECT_GE(rows, 2) << sun;  // the cap's rows crowd at its top
         EXPECT_GT(lit, 0) << sun;   // and the sky is lit there
-    }
+    });
 }
 
 // The horizon texels beside the earth's shadow of a light just set, 15-60
@@ -542,12 +550,8 @@ TEST(SkySolver, TexelsAtTheTopOfTheCapAreExact) {
 // layer's linear weight and tau log-linear along the piece they were 3-5%
 // high (-0.01 deg: 5.2% in Rayleigh's blue 26 deg from the anti-light point).
 TEST(SkySolver, HorizonTexelsBesideTheEarthsShadowAreExact) {
-    if (quick()) GTEST_SKIP() << "quick run";
     AtmosphereParams air;
-    for (double sun : {-0.01, -0.02}) {
-        const glm::dvec3 light = lightAtElevation(sun);
-        const std::unique_ptr<SkySolver> solver = singleScatteringSolver(air, light);
-        const SkyTable& t = solver->table();
+    forLightsJustSet(air, [&](double sun, const glm::dvec3& light, const SkyTable& t) {
         int compared = 0;
         for (int j = 0; j <= 3; ++j) {
             const double el = reference::texelElevation(j, t);
@@ -567,7 +571,7 @@ TEST(SkySolver, HorizonTexelsBesideTheEarthsShadowAreExact) {
             }
         }
         EXPECT_GE(compared, 16) << sun;
-    }
+    });
 }
 
 // ---------------------------------------------------------------------------
