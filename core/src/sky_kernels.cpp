@@ -574,46 +574,43 @@ AERIAL_HOT_KERNEL void edgeKernel(const EdgeKernelArgs& a) {
     }
 }
 
-/// exp of a 4-point weighted sum of logarithms per column (expNeg of its
-/// negative: valid for sums in (-87, 87), which the callers' values are).
-AERIAL_HOT_KERNEL void spreadKernel(const SpreadKernelArgs& a) {
-    const int n = a.count;
-    const int* __restrict i0 = a.index;
-    const int* __restrict i1 = a.index + n;
-    const int* __restrict i2 = a.index + 2 * n;
-    const int* __restrict i3 = a.index + 3 * n;
-    const float* __restrict w0 = a.weight;
-    const float* __restrict w1 = a.weight + n;
-    const float* __restrict w2 = a.weight + 2 * n;
-    const float* __restrict w3 = a.weight + 3 * n;
-    const float* __restrict v = a.logValue;
-    float* __restrict out = a.out;
+/// spreadKernel's loop (restrict parameters: see crossingRecords below).
+AERIAL_INLINE void spreadColumns(int n, const int* __restrict i0, const int* __restrict i1,
+                                 const int* __restrict i2, const int* __restrict i3,
+                                 const float* __restrict w0, const float* __restrict w1,
+                                 const float* __restrict w2, const float* __restrict w3,
+                                 const float* __restrict v, float* __restrict out) {
     for (int i = 0; i < n; ++i) {
         const float x = w0[i] * v[i0[i]] + w1[i] * v[i1[i]] + w2[i] * v[i2[i]] + w3[i] * v[i3[i]];
         out[i] = expNeg(-x);
     }
 }
 
-/// The sun seen from one crossing of a multiple-scattering ray, for every
-/// combination of sun cosine and azimuth (as skyShell, without the roots).
-AERIAL_HOT_KERNEL void msCrossingKernel(const MsCrossingArgs& a) {
+/// exp of a 4-point weighted sum of logarithms per column (expNeg of its
+/// negative: valid for sums in (-87, 87), which the callers' values are).
+AERIAL_HOT_KERNEL void spreadKernel(const SpreadKernelArgs& a) {
     const int n = a.count;
-    const float* __restrict p = a.p;
-    const float* __restrict q = a.q;
-    const float* __restrict t0 = a.depth0;
-    const float* __restrict t1 = a.depth1;
-    const float* __restrict t2 = a.depth2;
-    float* __restrict tau0 = a.record;
-    float* __restrict tau1 = a.record + n;
-    float* __restrict tau2 = a.record + 2 * n;
-    float* __restrict tr0 = a.record + 3 * n;
-    float* __restrict tr1 = a.record + 4 * n;
-    float* __restrict tr2 = a.record + 5 * n;
-    float* __restrict margins = a.record + 6 * n;
+    spreadColumns(n, a.index, a.index + n, a.index + 2 * n, a.index + 3 * n, a.weight, a.weight + n,
+                  a.weight + 2 * n, a.weight + 3 * n, a.logValue, a.out);
+}
+
+// The loops of msCrossingKernel and msSourceKernel live in helpers whose
+// arrays are __restrict parameters (as skyShell's): written inline in the
+// kernels, with the pointers taken from the argument struct, GCC did not
+// vectorise them.
+
+/// msCrossingKernel's loop: as skyShell, without the roots.
+AERIAL_INLINE void crossingRecords(int n, float alpha, float beta, float horizonCos, float knee,
+                                   float angleScale, float maxU, const float* __restrict p,
+                                   const float* __restrict q, const float* __restrict t0,
+                                   const float* __restrict t1, const float* __restrict t2,
+                                   float* __restrict tau0, float* __restrict tau1, float* __restrict tau2,
+                                   float* __restrict tr0, float* __restrict tr1, float* __restrict tr2,
+                                   float* __restrict margins) {
     for (int i = 0; i < n; ++i) {
-        const float margin = a.alpha * p[i] + a.beta * q[i] - a.horizonCos;
+        const float margin = alpha * p[i] + beta * q[i] - horizonCos;
         const float x = maxZero(margin);
-        const float u = minNonNegative(x / (x + a.knee) * a.angleScale, a.maxU);
+        const float u = minNonNegative(x / (x + knee) * angleScale, maxU);
         const int iu = static_cast<int>(u);
         const float f = u - float(iu);
         const float d0 = t0[iu] + f * (t0[iu + 1] - t0[iu]);
@@ -629,37 +626,78 @@ AERIAL_HOT_KERNEL void msCrossingKernel(const MsCrossingArgs& a) {
     }
 }
 
+/// The sun seen from one crossing of a multiple-scattering ray, for every
+/// combination of sun cosine and azimuth.
+AERIAL_HOT_KERNEL void msCrossingKernel(const MsCrossingArgs& a) {
+    const int n = a.count;
+    float* r = a.record;
+    crossingRecords(n, a.alpha, a.beta, a.horizonCos, a.knee, a.angleScale, a.maxU, a.p, a.q, a.depth0,
+                    a.depth1, a.depth2, r, r + n, r + 2 * n, r + 3 * n, r + 4 * n, r + 5 * n, r + 6 * n);
+}
+
+/// msSourceKernel's loop. The LUT column: x = sign(mu) sqrt(min(|mu|, 1)),
+/// on the bit patterns (sign and magnitude apart), so that it vectorises.
+AERIAL_INLINE void sourceColumns(int n, float alpha, float beta, float scale, float maxU,
+                                 const float* __restrict p, const float* __restrict q,
+                                 const float* __restrict row, int* __restrict column,
+                                 float* __restrict fraction, float* __restrict out0, float* __restrict out1,
+                                 float* __restrict out2) {
+    for (int i = 0; i < n; ++i) {
+        const float mu = alpha * p[i] + beta * q[i];
+        const int bits = std::bit_cast<int>(mu);
+        const float magnitude = minNonNegative(std::bit_cast<float>(bits & 0x7fffffff), 1.0f);
+        const float root = fastSqrt(magnitude);
+        const float x = std::bit_cast<float>(std::bit_cast<int>(root) | (bits & int(0x80000000u)));
+        const float u = minNonNegative(maxZero((x + 1.0f) * scale), maxU);
+        const int iu = static_cast<int>(u);
+        const float f = u - float(iu);
+        const int at = 3 * iu;
+        column[i] = iu;
+        fraction[i] = f;
+        out0[i] = row[at] + f * (row[at + 3] - row[at]);
+        out1[i] = row[at + 1] + f * (row[at + 4] - row[at + 1]);
+        out2[i] = row[at + 2] + f * (row[at + 5] - row[at + 2]);
+    }
+}
+
+AERIAL_HOT_KERNEL void msSourceKernel(const MsSourceArgs& a) {
+    const int n = a.count;
+    const float scale = 0.5f * float(a.cosines - 1), maxU = float(a.cosines - 1) - 1e-3f;
+    sourceColumns(n, a.alpha, a.beta, scale, maxU, a.p, a.q, a.row, a.column, a.fraction, a.out, a.out + n,
+                  a.out + 2 * n);
+}
+
+/// msSegmentKernel's loop, one channel (restrict parameters, as above).
+AERIAL_INLINE void segmentChannel(int n, float w, float wm, float tv, float eView,
+                                  const float* __restrict tauA, const float* __restrict tauB,
+                                  const float* __restrict trA, const float* __restrict trB,
+                                  const float* __restrict mA, const float* __restrict mB,
+                                  float* __restrict out, float* __restrict outMie) {
+    for (int i = 0; i < n; ++i) {
+        const float marginA = mA[i], marginB = mB[i];
+        const float pos = maxZero(marginA) + maxZero(marginB);
+        const float neg = maxZero(-marginA) + maxZero(-marginB);
+        const float lit = pos / (pos + neg + 1e-30f);
+        float f1, f2;
+        exponentialMoments(trA[i], trB[i] * eView, tv + tauB[i] - tauA[i], f1, f2);
+        const float share = lit * f1;
+        out[i] += w * share;
+        outMie[i] += wm * share;
+    }
+}
+
 /// One segment of a multiple-scattering ray for every combination:
 /// weight T_sun(a) E1(d) lit, d = tauView + tau_sun(b) - tau_sun(a)
 /// (exponentialMoments), lit the fraction of the segment where the margin,
 /// linear between its ends, is positive.
 AERIAL_HOT_KERNEL void msSegmentKernel(const MsSegmentArgs& a) {
     const int n = a.count;
-    const float* __restrict ra = a.a;
-    const float* __restrict rb = a.b;
-    float* __restrict acc = a.acc;
-    float* __restrict accMie = a.accMie;
+    const float* ra = a.a;
+    const float* rb = a.b;
     for (int c = 0; c < 3; ++c) {
         const float w = a.weight[c], wm = a.weightMie[c], tv = a.tauView[c], eView = expNeg(tv);
-        const float* __restrict tauA = ra + c * n;
-        const float* __restrict tauB = rb + c * n;
-        const float* __restrict trA = ra + (3 + c) * n;
-        const float* __restrict trB = rb + (3 + c) * n;
-        const float* __restrict mA = ra + 6 * n;
-        const float* __restrict mB = rb + 6 * n;
-        float* __restrict out = acc + c * n;
-        float* __restrict outMie = accMie + c * n;
-        for (int i = 0; i < n; ++i) {
-            const float marginA = mA[i], marginB = mB[i];
-            const float pos = maxZero(marginA) + maxZero(marginB);
-            const float neg = maxZero(-marginA) + maxZero(-marginB);
-            const float lit = pos / (pos + neg + 1e-30f);
-            float f1, f2;
-            exponentialMoments(trA[i], trB[i] * eView, tv + tauB[i] - tauA[i], f1, f2);
-            const float share = lit * f1;
-            out[i] += w * share;
-            outMie[i] += wm * share;
-        }
+        segmentChannel(n, w, wm, tv, eView, ra + c * n, rb + c * n, ra + (3 + c) * n, rb + (3 + c) * n,
+                       ra + 6 * n, rb + 6 * n, a.acc + c * n, a.accMie + c * n);
     }
 }
 

@@ -206,6 +206,25 @@ struct MsCrossingArgs {
 /// (sky_multiple.cpp), for every combination: table lookup as in skyShell.
 void msCrossingKernel(const MsCrossingArgs& a);
 
+struct MsSourceArgs {
+    int count;          // combinations, a multiple of 16
+    float alpha, beta;  // sun zenith cosine at the crossing: alpha P + beta Q
+    int cosines;        // the LUT's columns (kMsCosines)
+    const float* p;     // [count] mu_s
+    const float* q;     // [count] sqrt(1 - mu_s^2) cos(phi)
+    const float* row;   // the LUT row of the crossing's shell, [cosines][3] (rgb interleaved)
+    int* column;        // [count] out: the LUT column of each combination's sun cosine
+    float* fraction;    // [count] out: the fraction towards the next column
+    float* out;         // [3][count] out: the row interpolated there, per channel
+};
+
+/// The previous order's source J seen from one crossing of a
+/// multiple-scattering ray, for every combination (sky_multiple.cpp,
+/// buildOrderRow): the sun's zenith cosine mu there, clamped to [-1, 1], ->
+/// LUT column u = (x + 1) / 2 (cosines - 1), x = sign(mu) sqrt|mu| ->
+/// the row linear between columns.
+void msSourceKernel(const MsSourceArgs& a);
+
 struct MsSegmentArgs {
     int count;
     float weight[3];     // the segment's Rayleigh scattering column mass times T(start -> segment start), rgb

@@ -472,30 +472,25 @@ void MultipleScatteringLut::buildOrderRow(int row, int order, MsScratch& s) {
     const double rg = air_.planetRadius;
     const double rk = rg + height_[std::size_t(row)];
     std::fill(s.orderAcc.begin(), s.orderAcc.end(), 0.0f);
-    constexpr float kMaxU = float(kMsCosines - 1) - 1e-3f;
     // The LUT column (s.column, s.fraction) of each combo's sun cosine where
-    // the ray crosses shell s.shell[i] (linear in x = sign(mu) sqrt|mu|), and
-    // J_(order - 1) there, as out[c][combo].
+    // the ray crosses shell s.shell[i] (msSourceKernel), and J_(order - 1)
+    // there, as out[c][combo].
     auto sourceAt = [&](int i, float* out) {
         const int j = s.shell[std::size_t(i)];
         const double dist = s.crossing[std::size_t(i)];
         const double rj = rg + height_[std::size_t(j)];
-        const float alpha = float((rk + dist * s.cosT) / rj), beta = float(dist * s.sinT / rj);
-        for (int m = 0; m < kMsCombos; ++m) {
-            const float mu = std::clamp(alpha * comboP_[std::size_t(m)] + beta * comboQ_[std::size_t(m)], -1.0f, 1.0f);
-            const float x = std::copysign(std::sqrt(std::abs(mu)), mu);
-            const float u = std::clamp((x + 1.0f) * 0.5f * float(kMsCosines - 1), 0.0f, kMaxU);
-            s.column[std::size_t(m)] = int(u);
-            s.fraction[std::size_t(m)] = u - float(int(u));
-        }
-        const float* rowJ = from.data() + std::size_t(j) * kMsCosines * 3;
-        for (int c = 0; c < 3; ++c) {
-            float* dst = out + std::size_t(c) * kMsCombos;
-            for (int m = 0; m < kMsCombos; ++m) {
-                const std::size_t at = std::size_t(s.column[std::size_t(m)]) * 3 + std::size_t(c);
-                dst[m] = rowJ[at] + s.fraction[std::size_t(m)] * (rowJ[at + 3] - rowJ[at]);
-            }
-        }
+        MsSourceArgs a{};
+        a.count = kMsCombos;
+        a.alpha = float((rk + dist * s.cosT) / rj);
+        a.beta = float(dist * s.sinT / rj);
+        a.cosines = kMsCosines;
+        a.p = comboP_.data();
+        a.q = comboQ_.data();
+        a.row = from.data() + std::size_t(j) * kMsCosines * 3;
+        a.column = s.column.data();
+        a.fraction = s.fraction.data();
+        a.out = out;
+        msSourceKernel(a);
     };
     // Every ray starts at the point itself (alpha = 1, beta = 0: the combo's
     // own sun cosine), so its source there is the same for all directions.
