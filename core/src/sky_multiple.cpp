@@ -6,6 +6,7 @@
 #include "sky_solver_impl.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace aerial::detail {
@@ -50,9 +51,35 @@ MsNode azimuthAt(double t) {
 
 }  // namespace
 
-MsNode msZenithNode(int z) { return zenithAt(z + 0.5); }
+// The nodes are asked for in the LUT's inner loops: computed once (pow
+// and cos there were a tenth of the LUT's build).
+MsNode msZenithNode(int z) {
+    static const std::array<MsNode, kMsZeniths> nodes = [] {
+        std::array<MsNode, kMsZeniths> n{};
+        for (int k = 0; k < kMsZeniths; ++k) n[std::size_t(k)] = zenithAt(k + 0.5);
+        return n;
+    }();
+    return nodes[std::size_t(z)];
+}
 
-MsNode msAzimuthNode(int a) { return azimuthAt(a + 0.5); }
+MsNode msAzimuthNode(int a) {
+    static const std::array<MsNode, kMsAzimuths> nodes = [] {
+        std::array<MsNode, kMsAzimuths> n{};
+        for (int k = 0; k < kMsAzimuths; ++k) n[std::size_t(k)] = azimuthAt(k + 0.5);
+        return n;
+    }();
+    return nodes[std::size_t(a)];
+}
+
+/// cos of azimuth node a's angle.
+static double msAzimuthCos(int a) {
+    static const std::array<double, kMsAzimuths> cosines = [] {
+        std::array<double, kMsAzimuths> c{};
+        for (int k = 0; k < kMsAzimuths; ++k) c[std::size_t(k)] = std::cos(msAzimuthNode(k).angle);
+        return c;
+    }();
+    return cosines[std::size_t(a)];
+}
 
 double msCosineOfColumn(int column) {
     const double x = -1.0 + 2.0 * column / (kMsCosines - 1);
@@ -308,7 +335,7 @@ double MultipleScatteringLut::storeMoments(int row, int c, int j, const MsScratc
     double m[kMsAniso] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     for (int a = 0; a < kMsAzimuths; ++a) {
         const MsNode az = msAzimuthNode(a);
-        const double cp = std::cos(az.angle);
+        const double cp = msAzimuthCos(a);
         const double factor[kMsAniso] = {1.0, 1.0, cp, 1.0, cp * cp, cp};
         const std::size_t at = std::size_t(c * kMsCombos + j * kMsAzimuths + a);
         for (int k = 0; k < kMsAniso; ++k)
