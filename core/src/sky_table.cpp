@@ -170,17 +170,29 @@ constexpr double kCapEndDeg = 1.0;  // and none from this one
 /// The column mapping of one row (sky.hpp, "Table mapping", columns), in
 /// half-columns x = 0..N/2 counted from the anti-light point and the
 /// azimuth psi = 0..pi from it: piecewise linear through five knots (in
-/// psi^2 between a0 and a0 + a1),
+/// s(psi^2 - psiC^2), s(y) = y / (y + S^2), between a0 and a0 + a1),
 ///   x:   0, a0,    a0 + a1,                 xE,  N/2
 ///   psi: 0, psiC,  sqrt((G psiC)^2 + D^2),  psiE, pi
 /// where psiC = sqrt(max(c - el, 0) / k) is the onset of the lit sky around
-/// the cap of the earth's shadow in this row, D = max(psiC(0) / 2, 1 deg)
-/// the band's width at the cap's top, G = kSkyCapOnsetGrowth, psiE = min(2
-/// (psiC(0) + D), 3 pi / 4), and (a0, a1, xE) = (3, 12, 25) / 128 of N.
-/// Only psiC depends on the row, so every column keeps its place relative
-/// to the onset from row to row. The band: at the cap's top (psiC = 0) the
-/// height above the onset is k psi^2, so uniform in psi^2 is uniform in it;
-/// lower down the lit sky ramps up over a width that grows with psiC (the
+/// the cap of the earth's shadow in this row, D = max(psiC(0) / 2, min(1
+/// deg, kSkyCapBandPerKink c)) the band's width at the cap's top, G =
+/// kSkyCapOnsetGrowth, psiE = min(2 (psiC(0) + max(psiC(0) / 2, 1 deg)),
+/// 3 pi / 4), and (a0, a1, xE) = (3, 12, 25) / 128 of N. Only psiC depends
+/// on the row, so every column keeps its place relative to the onset from
+/// row to row. The band: at the cap's top (psiC = 0) the height above the
+/// onset is k psi^2, so uniform in psi^2 is uniform in it, up to where the
+/// lit sky levels off: ~100 c from the anti-light point (it rises as psi^2
+/// from ~12 c and halves its deficit by ~100 c, the same in units of c for
+/// any light just set), so s saturates at S = kSkyCapSaturation c there.
+/// For a light 0.002 deg down (c ~ L) that is 0.3 of a 1 deg band, and
+/// uniform in psi^2 it put no column between 0.03 and 0.3 deg: the pixel
+/// 60% low 0.1 deg from the anti-light point at el = c (21% with the
+/// tests' floor; 70% at -0.0005 deg), 1.7% with s. Below the top S grows with psiC
+/// (kSkyCapSaturationGrowth), towards uniform in psi^2 again, and the band
+/// narrows with c below 0.002 deg (kSkyCapBandPerKink), while psiE keeps
+/// its 1 deg floor (narrowed with the band it left 4.8% on the horizon 2
+/// deg from the anti-light point of a light 0.0003 deg down).
+/// Lower down the lit sky ramps up over a width that grows with psiC (the
 /// level lines of the shadow's exit height fan out from the cap's top), so
 /// the band widens with G psiC (G = 1.25, 1.5 and 2 tried: 2 is best at
 /// -0.01 and -0.02 deg, SkyShadowOnset). The last segment, psiE .. pi, is
@@ -196,6 +208,8 @@ struct ColumnMapping {
     double x[5] = {0.0, 0.0, 0.0, 0.0, 0.0};
     double psi[5] = {0.0, 0.0, 0.0, 0.0, kPi};
     double farSlope = 1.0;  // a: the last segment's slope at psiE, relative to its mean
+    double saturation = 0.0;  // S^2 of the band's s(y) = y / (y + S^2), y = psi^2 - psiC^2
+    double bandCoordinate(double y) const { return y / (y + saturation); }
     bool uniform = true;
 
     ColumnMapping(const SkyTable& t, double elevation) {
@@ -205,9 +219,11 @@ struct ColumnMapping {
         if (!(k > 0.0) || !(g > 0.0) || !(c > 0.0) || !(n >= 4.0)) return;
         constexpr double kDeg = kPi / 180.0;
         const double foot = std::min(std::sqrt(c / k), 0.25 * kPi);  // psiC at the horizon
-        const double band = std::max(0.5 * foot, kSkyCapMinBandDeg * kDeg);
-        const double end = std::min(2.0 * (foot + band), 0.75 * kPi);
+        const double wide = std::max(0.5 * foot, kSkyCapMinBandDeg * kDeg);
+        const double band = std::max(0.5 * foot, std::min(kSkyCapMinBandDeg * kDeg, kSkyCapBandPerKink * c));
+        const double end = std::min(2.0 * (foot + wide), 0.75 * kPi);
         const double onset = std::min(std::sqrt(std::max(c - std::max(elevation, 0.0), 0.0) / k), foot);
+        saturation = std::pow(kSkyCapSaturation * c, 2) + std::pow(kSkyCapSaturationGrowth * onset, 2);
         x[1] = kSkyCapInsideShare * n;
         x[2] = x[1] + kSkyCapOnsetShare * n;
         x[3] = x[2] + kSkyCapNearShare * n;
@@ -223,7 +239,8 @@ struct ColumnMapping {
             if (p < psi[m + 1] || m == 3) {
                 if (!(psi[m + 1] > psi[m])) return x[m + 1];
                 const double q = std::min(p, kPi);
-                const double u = m == 1 ? (q * q - psi[1] * psi[1]) / (psi[2] * psi[2] - psi[1] * psi[1])
+                const double u = m == 1 ? bandCoordinate(q * q - psi[1] * psi[1]) /
+                                              bandCoordinate(psi[2] * psi[2] - psi[1] * psi[1])
                                         : (q - psi[m]) / (psi[m + 1] - psi[m]);
                 // The last segment's u = a t + (1 - a) t^2, solved for t without cancellation.
                 const double t =
@@ -240,8 +257,11 @@ struct ColumnMapping {
                 if (!(x[m + 1] > x[m])) return psi[m + 1];
                 const double t = (std::min(h, x[4]) - x[m]) / (x[m + 1] - x[m]);
                 const double u = m == 3 ? t * (farSlope + (1.0 - farSlope) * t) : t;
-                return m == 1 ? std::sqrt(psi[1] * psi[1] + (psi[2] * psi[2] - psi[1] * psi[1]) * u)
-                              : psi[m] + (psi[m + 1] - psi[m]) * u;
+                if (m == 1) {  // s(y) = u s(y2), solved for y
+                    const double y2 = psi[2] * psi[2] - psi[1] * psi[1];
+                    return std::sqrt(psi[1] * psi[1] + u * y2 * saturation / (saturation + y2 * (1.0 - u)));
+                }
+                return psi[m] + (psi[m + 1] - psi[m]) * u;
             }
         return kPi;
     }
@@ -300,8 +320,9 @@ double skyTableAzimuth(const SkyTable& table, double column, double elevation) {
 // columns (the onset on one column in every row): 0.8-1.8% in a dense sweep
 // of the anti-light quarter from -0.3 to -0.01 deg (SkyShadowOnset; 1.9%
 // at -0.01 deg with probes within 3e-4 deg of the kink). Lights less than
-// 0.01 deg down are not yet within 2% (4.7% at -0.005 deg, at the kink
-// straight opposite the light).
+// 0.01 deg down are not yet within 2% (2.8-5.2% from -0.005 to -0.0002
+// deg, just below the kink; see sky.hpp for that and the rows 3-5 deg up
+// opposite a light just set).
 void setSkyTableMapping(SkyTable& table, const AtmosphereParams& air, const glm::dvec3& lightDirection) {
     constexpr double kDeg = kPi / 180.0;
     const glm::dvec3 l = normalizedOr(lightDirection, glm::dvec3(0.0, 1.0, 0.0));
@@ -343,7 +364,9 @@ void setSkyTableMapping(SkyTable& table, const AtmosphereParams& air, const glm:
                 table.bandShare -= kSkyCapRowShare * table.capStrength;
             }
             const double rows = table.elevationCount - 1;
-            auto rowOfKink = [&](double e) {  // the mapping only (no texels copied)
+            // The kink's row with band width e and shadow share b (the
+            // mapping only, no texels copied).
+            auto rowOfKinkWith = [&](double e, double b) {
                 SkyTable t = {};
                 t.azimuthCount = table.azimuthCount;
                 t.elevationCount = table.elevationCount;
@@ -351,11 +374,12 @@ void setSkyTableMapping(SkyTable& table, const AtmosphereParams& air, const glm:
                 t.bandShare = table.bandShare;
                 t.shadowElevation = table.shadowElevation;
                 t.shadowWidth = table.shadowWidth;
-                t.shadowShare = table.shadowShare;
+                t.shadowShare = b;
                 t.capCurvature = table.capCurvature;
                 t.capStrength = table.capStrength;
                 return skyTableRow(t, kink);
             };
+            auto rowOfKink = [&](double e) { return rowOfKinkWith(e, table.shadowShare); };
             const double nominal = table.bandElevation;
             const double target = std::round(rowOfKink(nominal));
             // The row of the kink falls as E grows (the band spreads out).
@@ -366,6 +390,23 @@ void setSkyTableMapping(SkyTable& table, const AtmosphereParams& air, const glm:
                     (rowOfKink(mid) > target ? lo : hi) = mid;
                 }
                 table.bandElevation = 0.5 * (lo + hi);
+            } else if (target > 0.0 && target < rows) {
+                // For a light less than ~0.015 deg down the band hardly
+                // reaches the kink (E from 0.2 to 0.8 deg moves it by 0.7
+                // rows at -0.01 deg, 0.1 at -0.002): the shadow rows' share b
+                // puts a row on it instead (the kink's row grows with b,
+                // ~b/2 of the rows lie below it).
+                auto rowWithShare = [&](double b) { return rowOfKinkWith(table.bandElevation, b); };
+                double goal = std::round(rowWithShare(table.shadowShare));
+                double bLo = 0.0, bHi = table.shadowShare + 0.1;
+                if (rowWithShare(bLo) > goal) goal += 1.0;
+                if (rowWithShare(bLo) <= goal && rowWithShare(bHi) >= goal) {
+                    for (int it = 0; it < 100; ++it) {
+                        const double mid = 0.5 * (bLo + bHi);
+                        (rowWithShare(mid) < goal ? bLo : bHi) = mid;
+                    }
+                    table.shadowShare = 0.5 * (bLo + bHi);
+                }
             }
         }
     }

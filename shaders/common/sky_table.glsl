@@ -43,6 +43,9 @@ const float kSkyCapOnsetShare = 12.0 / 128.0;
 const float kSkyCapNearShare = 10.0 / 128.0;
 const float kSkyCapMinBand = 1.0 * kPi / 180.0;
 const float kSkyCapOnsetGrowth = 2.0;
+const float kSkyCapBandPerKink = 500.0;
+const float kSkyCapSaturation = 150.0;
+const float kSkyCapSaturationGrowth = 3.0;
 const float kSkyCapFarSlope = 0.3;
 const float kSkyCapRowShare = 16.0 / 63.0;
 
@@ -75,22 +78,26 @@ float skyTableMappedRow(float elevation, vec3 band, float w, float b, vec2 cap) 
 
 /// The column (0..columns) of an azimuth `relative` [0, 2 pi) from the light
 /// at elevation el (skyTableColumn, core/src/sky_table.cpp): uniform, or
-/// piecewise linear in the azimuth psi from the anti-light point (in psi^2
-/// between the second and third knot) through the knots x = (0, 3, 15, 25,
-/// 64) / 128 columns, psi = (0, psiC, sqrt((G psiC)^2 + D^2), psiE, pi),
-/// psiC = sqrt(max(c - el, 0) / k) the onset of the lit sky around the cap
-/// of the earth's shadow, D = max(psiC(0) / 2, 1 deg), G =
-/// kSkyCapOnsetGrowth, psiE = min(2 (psiC(0) + D), 3 pi / 4), the last
-/// segment quadratic (psi = psiE + (pi - psiE) (a t + (1 - a) t^2), a = 1 -
-/// g (1 - kSkyCapFarSlope)), each inner psi blended with g towards 2 pi x /
-/// columns.
+/// piecewise linear in the azimuth psi from the anti-light point (in
+/// s(psi^2 - psiC^2) between the second and third knot, s(y) = y / (y +
+/// S^2), S^2 = (kSkyCapSaturation c)^2 + (kSkyCapSaturationGrowth psiC)^2)
+/// through the knots x = (0, 3, 15, 25, 64) / 128 columns, psi = (0, psiC,
+/// sqrt((G psiC)^2 + D^2), psiE, pi), psiC = sqrt(max(c - el, 0) / k) the
+/// onset of the lit sky around the cap of the earth's shadow, D =
+/// max(psiC(0) / 2, min(1 deg, kSkyCapBandPerKink c)), G =
+/// kSkyCapOnsetGrowth, psiE = min(2 (psiC(0) + max(psiC(0) / 2, 1 deg)),
+/// 3 pi / 4), the last segment quadratic (psi = psiE + (pi - psiE) (a t +
+/// (1 - a) t^2), a = 1 - g (1 - kSkyCapFarSlope)), each inner psi blended
+/// with g towards 2 pi x / columns.
 float skyTableColumnAt(float relative, float el, float columns, float c, vec2 cap) {
     if (!skyTableCapActive(cap, c) || !(columns >= 4.0)) return relative / (2.0 * kPi) * columns;
     float k = cap.x, g = min(cap.y, 1.0);
     float foot = min(sqrt(c / k), 0.25 * kPi);
-    float band = max(0.5 * foot, kSkyCapMinBand);
-    float end = min(2.0 * (foot + band), 0.75 * kPi);
+    float band = max(0.5 * foot, min(kSkyCapMinBand, kSkyCapBandPerKink * c));
+    float end = min(2.0 * (foot + max(0.5 * foot, kSkyCapMinBand)), 0.75 * kPi);
     float onset = min(sqrt(max(c - max(el, 0.0), 0.0) / k), foot);
+    float saturation = kSkyCapSaturation * c * kSkyCapSaturation * c +
+                       kSkyCapSaturationGrowth * onset * kSkyCapSaturationGrowth * onset;
     float x1 = kSkyCapInsideShare * columns, x2 = x1 + kSkyCapOnsetShare * columns;
     float x3 = x2 + kSkyCapNearShare * columns, x4 = 0.5 * columns;
     float p1 = g * onset + (1.0 - g) * 2.0 * kPi * x1 / columns;
@@ -103,7 +110,10 @@ float skyTableColumnAt(float relative, float el, float columns, float c, vec2 ca
     else if (psi < p1)
         x = x1 * psi / p1;
     else if (psi < p2)
-        x = x1 + (x2 - x1) * (psi * psi - p1 * p1) / (p2 * p2 - p1 * p1);
+    {
+        float y = psi * psi - p1 * p1, y2 = p2 * p2 - p1 * p1;
+        x = x1 + (x2 - x1) * (y / (y + saturation)) / (y2 / (y2 + saturation));
+    }
     else if (psi < p3)
         x = x2 + (x3 - x2) * (psi - p2) / (p3 - p2);
     else {  // u = a t + (1 - a) t^2 along the last segment, solved for t

@@ -441,7 +441,7 @@ INSTANTIATE_TEST_SUITE_P(SunElevations, SkyOffTexel,
 // within thousandths of a degree (the red channel carries it: the blue is
 // spent on the grazing path to the light), along a parabola that drops to
 // the horizon within 3-16 deg of azimuth; the cap's rows and warped columns
-// follow it. A dense sweep of the anti-light quarter (8 azimuths x 101
+// follow it. A dense sweep of the anti-light quarter (11 azimuths x 101
 // elevations in 0..2.5 x the depression, plus 0.5-2 deg), with the floor of
 // SkyOffTexel: 0.8-1.8% from -0.3 to -0.01 deg (before the cap's rows and
 // columns 2.2-8.7%; before its rows above the kink went cube-root, its
@@ -451,8 +451,15 @@ INSTANTIATE_TEST_SUITE_P(SunElevations, SkyOffTexel,
 // their own weight and tau (shadowEdgeLayers) and the columns beyond the
 // cap's knot psiE crowded towards it: 10 deg of azimuth from the
 // anti-light point just above the horizon, where they were 4.4 deg apart).
-// -0.3, -0.02 and -0.01 deg by default (the two closest to the limit);
-// AERIAL_SKY_SHADOW_ONSET runs every depression. ~40 s a sun; skipped in
+// A light less than 0.01 deg down is not yet within 2%: 2.8% at -0.005 deg,
+// 4.0% at -0.002, 3.5% at -0.0005, 5.2% at -0.0002, each just below the
+// kink 0.2-2 deg from the anti-light point (in the cap's rows below it), so
+// there the bound is 6%, a regression bound: before the onset band's
+// columns saturated at ~150 c (kSkyCapSaturation) and a row was put on the
+// kink by the shadow rows' share, they were 3.2%, 21%, 70% and 83%, at the
+// kink 0.05-0.2 deg from the anti-light point, which the azimuths 179.8 ..
+// 179.95 now probe. -0.3, -0.02, -0.01, -0.002 and -0.0005 deg by default;
+// AERIAL_SKY_SHADOW_ONSET runs every depression. ~50 s a sun; skipped in
 // quick runs.
 class SkyShadowOnset : public ::testing::TestWithParam<double> {};
 
@@ -460,8 +467,8 @@ TEST_P(SkyShadowOnset, WithinTwoPercentOfTheExactIntegral) {
     const double sun = GetParam();
     const bool all = std::getenv("AERIAL_SKY_SHADOW_ONSET") != nullptr;
     if (!all && quick()) GTEST_SKIP() << "quick run";
-    if (!all && sun != -0.3 && sun != -0.02 && sun != -0.01)
-        GTEST_SKIP() << "3 of the depressions by default; set AERIAL_SKY_SHADOW_ONSET for all";
+    if (!all && sun != -0.3 && sun != -0.02 && sun != -0.01 && sun != -0.002 && sun != -0.0005)
+        GTEST_SKIP() << "5 of the depressions by default; set AERIAL_SKY_SHADOW_ONSET for all";
     AtmosphereParams air;
     const glm::dvec3 light = lightAtElevation(sun);
     const std::unique_ptr<SkySolver> solver = singleScatteringSolver(air, light);
@@ -469,10 +476,10 @@ TEST_P(SkyShadowOnset, WithinTwoPercentOfTheExactIntegral) {
     double brightest = 0.0;
     for (const OffTexelProbe& p : offTexelProbes(air, light, sun, t))
         for (int c = 0; c < 3; ++c) brightest = std::max(brightest, p.exact[c]);
-    const double depression = std::max(-sun, 0.01);
+    const double depression = std::max(-sun, 1e-4);
     const double lightAzimuth = reference::azimuthOf(light);
     double worst = 0.0, worstEl = 0.0, worstAz = 0.0;
-    for (double az : {90.0, 150.0, 170.0, 176.0, 178.0, 179.0, 179.5, 180.0}) {
+    for (double az : {90.0, 150.0, 170.0, 176.0, 178.0, 179.0, 179.5, 179.8, 179.9, 179.95, 180.0}) {
         for (int k = 0; k <= 104; ++k) {
             const double el = k <= 100 ? k * depression / 40.0 : (k - 100) * 0.5;
             const glm::dvec3 v = directionFromLight(el, az, lightAzimuth);
@@ -487,11 +494,13 @@ TEST_P(SkyShadowOnset, WithinTwoPercentOfTheExactIntegral) {
     }
     std::printf("[ sky     ] sun %+6.3f deg: worst error %.4f at elevation %.5f, azimuth %.1f deg from the light\n",
                 sun, worst, worstEl, worstAz);
-    EXPECT_LT(worst, 0.02);
+    // Below 0.01 deg a regression bound at the measured level (see above).
+    EXPECT_LT(worst, sun <= -0.01 ? 0.02 : 0.06);
 }
 
 INSTANTIATE_TEST_SUITE_P(SmallDepressions, SkyShadowOnset,
-                         ::testing::Values(-0.3, -0.2, -0.15, -0.1, -0.07, -0.05, -0.03, -0.02, -0.01));
+                         ::testing::Values(-0.3, -0.2, -0.15, -0.1, -0.07, -0.05, -0.03, -0.02, -0.01, -0.005,
+                                           -0.002, -0.0005, -0.0002));
 
 // The texels at the top of the cap of the earth's shadow, straight opposite
 // a light a hundredth of a degree down: there the view ray runs within 1e-7

@@ -168,16 +168,20 @@ double texelAzimuth(int i, double elevation, const SkyTable& table) {
     const double n = table.azimuthCount;
     if (!skyTableColumnsWarped(table)) return 2.0 * kPi * i / n;
     // The column mapping of <aerial/sky.hpp>, written out again: piecewise
-    // linear in the azimuth psi from the anti-light point, in psi^2 between
-    // the second and the third knot, quadratic in the columns after the fourth.
+    // linear in the azimuth psi from the anti-light point, in y / (y + S^2),
+    // y = psi^2 - P^2, between the second and the third knot, quadratic in
+    // the columns after the fourth.
     const double k = table.capCurvature, g = std::min(table.capStrength, 1.0), c = table.shadowElevation;
     const double foot = std::min(std::sqrt(c / k), 0.25 * kPi);
-    const double band = std::max(0.5 * foot, kSkyCapMinBandDeg * kPi / 180.0);
+    const double floorBand = kSkyCapMinBandDeg * kPi / 180.0;
+    const double band = std::max(0.5 * foot, std::min(floorBand, kSkyCapBandPerKink * c));
+    const double wide = std::max(0.5 * foot, floorBand);
     const double onset = std::min(std::sqrt(std::max(c - elevation, 0.0) / k), foot);
+    const double s2 = std::pow(kSkyCapSaturation * c, 2) + std::pow(kSkyCapSaturationGrowth * onset, 2);
     const double xs[5] = {0.0, kSkyCapInsideShare * n, (kSkyCapInsideShare + kSkyCapOnsetShare) * n,
                           (kSkyCapInsideShare + kSkyCapOnsetShare + kSkyCapNearShare) * n, 0.5 * n};
     const double cap[5] = {0.0, onset, std::hypot(kSkyCapOnsetGrowth * onset, band),
-                           std::min(2.0 * (foot + band), 0.75 * kPi), kPi};
+                           std::min(2.0 * (foot + wide), 0.75 * kPi), kPi};
     const double x = std::abs(i - 0.5 * n);
     for (int m = 0; m < 4; ++m) {
         if (x <= xs[m + 1]) {
@@ -187,7 +191,12 @@ double texelAzimuth(int i, double elevation, const SkyTable& table) {
             // The last segment: quadratic, slope a at its start (relative to its mean).
             const double a = 1.0 - g * (1.0 - kSkyCapFarSlope);
             const double u = m == 3 ? a * t + (1.0 - a) * t * t : t;
-            const double psi = m == 1 ? std::sqrt(p0 * p0 + (p1 * p1 - p0 * p0) * u) : p0 + (p1 - p0) * u;
+            double psi = p0 + (p1 - p0) * u;
+            if (m == 1) {  // y / (y + S^2) = u y1 / (y1 + S^2), y1 = p1^2 - p0^2
+                const double y1 = p1 * p1 - p0 * p0;
+                const double y = u * y1 * s2 / (s2 + y1 * (1.0 - u));
+                psi = std::sqrt(p0 * p0 + y);
+            }
             return i <= 0.5 * n ? kPi - psi : kPi + psi;
         }
     }

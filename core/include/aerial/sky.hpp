@@ -109,7 +109,9 @@
 //       that leaves the shadow cylinder exactly at the top of the
 //       atmosphere, about 1.1 L; for a light more than ~6 deg down that ray
 //       is shadowed up to the top and c = 1.1 L), and E is adjusted so that
-//       a row lies exactly on it (the kink's row moves by at most half a row);
+//       a row lies exactly on it (the kink's row moves by at most half a row;
+//       for a light less than ~0.015 deg down, where E hardly moves it, b
+//       is adjusted instead);
 //     - a light 0-1 deg below the horizon also: d = (16/63) g of the rows
 //       (taken from the band's a) between 0 and 2c, half below c uniform in
 //       sqrt(c - el), so uniform in the azimuth of the cap's onset (the
@@ -123,9 +125,14 @@
 //     the texel centres too, for suns from -6 to 90 deg (SkyOffTexel), and
 //     in a dense sweep of the anti-light quarter for suns 0.01-0.3 deg below
 //     the horizon (SkyShadowOnset: 0.8-1.8% from -0.3 to -0.01 deg; 63% at
-//     -0.01 deg before the cap's rows and columns). Not yet within 2%: a
-//     light less than 0.01 deg below the horizon (4.7% at -0.005 deg, at
-//     the kink straight opposite the light);
+//     -0.01 deg before the cap's rows and columns). Not yet within 2%:
+//     a light less than 0.01 deg below the horizon (2.8-5.2% from -0.005
+//     to -0.0002 deg, just below the kink 0.2-2 deg from the anti-light
+//     point; 3.2-83% before the band's saturation, below), and straight
+//     opposite a light 0.004-0.05 deg down, 4-5.5 deg above the horizon
+//     (2.4-5.1%, measured at -0.004 .. -0.05 deg; 1.1% at -0.5: for a
+//     light just set 80% of the rows lie within 2 deg of the horizon,
+//     rows 1.1 and 2 deg apart at 3.7 and 5.7 deg);
 //   * columns i = 0..azimuthCount-1 hold the azimuth relative to the light
 //       phi_i = 2 pi * i / azimuthCount,
 //     measured from the light's azimuth towards east (the same sense as the
@@ -141,7 +148,8 @@
 //     knot) through the knots
 //       x = |i - W/2| = (0, 3, 15, 25, 64) W / 128,
 //       psi = (0, P, sqrt((2 P)^2 + D^2), F2, pi),  P = min(sqrt(max(c - el, 0) / k), F),
-//       F = min(sqrt(c / k), pi/4),  D = max(F / 2, 1 deg),  F2 = min(2 (F + D), 3 pi / 4),
+//       F = min(sqrt(c / k), pi/4),  D = max(F / 2, min(1 deg, 500 c)),
+//       F2 = min(2 (F + max(F / 2, 1 deg)), 3 pi / 4),
 //     except that the last segment is quadratic, psi = F2 + (pi - F2)
 //     (a t + (1 - a) t^2) with t = 0..1 along it and a = 1 - g (1 -
 //     kSkyCapFarSlope) (its columns crowd just beyond F2, where the lit sky
@@ -149,10 +157,13 @@
 //     with g towards 2 pi x / W (skyTableColumn, skyTableAzimuth): the onset lies on column W/2 -+ 3 W / 128
 //     in every row below the cap's top, with 12 columns in the band above it. Only P depends on the row, so
 //     between two rows the onset stays on its column (rows alone could not follow it: 256 x 1024 texels
-//     left 2.4% at -0.05 deg). The band is uniform in psi^2 (at the cap's top the height above the onset is k
-//     psi^2) and widens with P (the 2 in its outer knot is kSkyCapOnsetGrowth): lower down the cap the lit
-//     sky ramps up over an azimuth that grows with P. The knots are mirror-symmetric, so column i still
-//     equals column W - i. The horizon averages then weight row 0 by azimuth;
+//     left 2.4% at -0.05 deg). The band is uniform in s(psi^2 - P^2), s(y) = y / (y + S^2), S^2 =
+//     (kSkyCapSaturation c)^2 + (kSkyCapSaturationGrowth P)^2: uniform in psi^2 where S is wide (at the
+//     cap's top the height above the onset is k psi^2), crowded towards P where the lit sky levels off
+//     within the band (at the cap's top ~100 c from the anti-light point, a sliver of the 1 deg band for a
+//     light just set, c ~ L), and widens with P (the 2 in its outer knot is kSkyCapOnsetGrowth): lower down
+//     the cap the lit sky ramps up over an azimuth that grows with P. The knots are mirror-symmetric, so
+//     column i still equals column W - i. The horizon averages then weight row 0 by azimuth;
 //   * texel (i, j) is stored at index (j * azimuthCount + i) * 3 (RGB, float).
 //   Directions below the horizon use row 0.
 //
@@ -281,6 +292,16 @@ inline constexpr double kSkyCapNearShare = 10.0 / 128.0;
 inline constexpr double kSkyCapMinBandDeg = 1.0;
 /// The onset band's outer knot: sqrt((kSkyCapOnsetGrowth P)^2 + D^2).
 inline constexpr double kSkyCapOnsetGrowth = 2.0;
+/// The band's width D is at most this many times c (below kSkyCapMinBandDeg;
+/// psiE keeps the 1 deg floor).
+inline constexpr double kSkyCapBandPerKink = 500.0;
+/// The band's columns are uniform in s(psi^2 - P^2), s(y) = y / (y + S^2),
+/// S^2 = (kSkyCapSaturation c)^2 + (kSkyCapSaturationGrowth P)^2: at the
+/// cap's top the lit sky rises as psi^2 and levels off ~100 c from the
+/// anti-light point, which for a light just set (c ~ L) is a sliver of the
+/// 1 deg band.
+inline constexpr double kSkyCapSaturation = 150.0;
+inline constexpr double kSkyCapSaturationGrowth = 3.0;
 /// The last segment (psiE .. pi) is quadratic in its columns, with this
 /// slope at psiE relative to its mean (and 2 - it at pi).
 inline constexpr double kSkyCapFarSlope = 0.3;
