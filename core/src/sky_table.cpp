@@ -23,6 +23,12 @@ namespace {
 
 constexpr double kMappingTopDeg = 1.0;   // lights above this elevation [deg]: the plain mapping
 constexpr double kShadowFadeDeg = 0.01;  // the shadow rows fade in over this depression [deg]
+// The horizon band's least width E [deg]. 0.4 left the rows 3-6 deg above
+// the horizon opposite a light 0.005-0.05 deg down 1.1-2 deg apart (80% of
+// the rows within 2 deg of the horizon): 2.5-5.1% there; 0.8: 1.4-1.9%,
+// and the sweeps of the anti-light quarter (SkyShadowOnset) and
+// SkyOffTexel no worse than 0.3 points.
+constexpr double kBandFloorDeg = 0.8;
 constexpr double kDeepestDeg = 18.0;     // depressions beyond this [deg] map as this one
 
 /// The row mapping of a table (sky.hpp) as a function of x = sqrt(elevation):
@@ -309,7 +315,7 @@ double skyTableAzimuth(const SkyTable& table, double column, double elevation) {
 // set light is a band from the horizon to about its depression L above it,
 // whose upper edge is a kink (where the shadow's exit reaches the top of the
 // atmosphere) for a light just set and a broad ramp for a deep one. The
-// numbers (band E = max(1.8 L^0.7, 0.4) deg with 70% of the rows, 15% of
+// numbers (band E = max(1.8 L^0.7, 0.8) deg with 70% of the rows, 15% of
 // them within ~0.25 L of the kink, 5% from L = 6 deg) are fitted against the
 // exact integral (tests/core/test_sky.cpp, SkyOffTexel, and a denser grid of
 // the anti-light quarter: 700 directions per sun): with them the worst error
@@ -317,12 +323,11 @@ double skyTableAzimuth(const SkyTable& table, double column, double elevation) {
 // with the quadratic rows. For a light 0-1 deg below the horizon the cap of
 // the earth's shadow opposite it gets its own rows (uniform in the azimuth
 // of its onset below the kink, crowded at the kink above it) and warped
-// columns (the onset on one column in every row): 0.8-1.8% in a dense sweep
+// columns (the onset on one column in every row): 0.8-1.3% in a dense sweep
 // of the anti-light quarter from -0.3 to -0.01 deg (SkyShadowOnset; 1.9%
 // at -0.01 deg with probes within 3e-4 deg of the kink). Lights less than
-// 0.01 deg down are not yet within 2% (2.8-5.2% from -0.005 to -0.0002
-// deg, just below the kink; see sky.hpp for that and the rows 3-5 deg up
-// opposite a light just set).
+// 0.01 deg down are not yet within 2% (2.5-5.2% from -0.005 to -0.0002
+// deg, just below the kink).
 void setSkyTableMapping(SkyTable& table, const AtmosphereParams& air, const glm::dvec3& lightDirection) {
     constexpr double kDeg = kPi / 180.0;
     const glm::dvec3 l = normalizedOr(lightDirection, glm::dvec3(0.0, 1.0, 0.0));
@@ -333,7 +338,7 @@ void setSkyTableMapping(SkyTable& table, const AtmosphereParams& air, const glm:
     if (!(light < kMappingTopDeg)) return;
     // [deg]; below 18 deg (night) the mapping stays that of 18 deg.
     const double depression = std::clamp(-light, 0.0, kDeepestDeg);
-    table.bandElevation = std::max(1.8 * std::pow(depression, 0.7), 0.4) * kDeg;
+    table.bandElevation = std::max(1.8 * std::pow(depression, 0.7), kBandFloorDeg) * kDeg;
     table.bandShare = 0.7 * std::min(1.0 - light / kMappingTopDeg, 1.0);
     if (depression > 0.0) {
         table.shadowElevation = 1.1 * depression * kDeg;

@@ -94,7 +94,7 @@
 //     - a light above 1 deg: a = b = 0, the quadratic el_j = pi/2 (j / (H - 1))^2
 //       (more rows near the horizon);
 //     - a light below 1 deg: a = 0.7 (fading to 0 at 1 deg) of the rows in a
-//       horizon band of width E = max(1.8 L^0.7, 0.4) deg, L = the light's
+//       horizon band of width E = max(1.8 L^0.7, 0.8) deg, L = the light's
 //       depression below the horizon [deg]: the band between the horizon and
 //       the top of the earth's shadow, whose edge rises to about L above the
 //       horizon opposite the light;
@@ -124,15 +124,15 @@
 //     brightest sky) in every direction tests/core/test_sky.cpp probes, off
 //     the texel centres too, for suns from -6 to 90 deg (SkyOffTexel), and
 //     in a dense sweep of the anti-light quarter for suns 0.01-0.3 deg below
-//     the horizon (SkyShadowOnset: 0.8-1.8% from -0.3 to -0.01 deg; 63% at
+//     the horizon (SkyShadowOnset: 0.8-1.3% from -0.3 to -0.01 deg; 63% at
 //     -0.01 deg before the cap's rows and columns). Not yet within 2%:
-//     a light less than 0.01 deg below the horizon (2.8-5.2% from -0.005
+//     a light less than 0.01 deg below the horizon (2.5-5.2% from -0.005
 //     to -0.0002 deg, just below the kink 0.2-2 deg from the anti-light
-//     point; 3.2-83% before the band's saturation, below), and straight
-//     opposite a light 0.004-0.05 deg down, 4-5.5 deg above the horizon
-//     (2.4-5.1%, measured at -0.004 .. -0.05 deg; 1.1% at -0.5: for a
-//     light just set 80% of the rows lie within 2 deg of the horizon,
-//     rows 1.1 and 2 deg apart at 3.7 and 5.7 deg);
+//     point; 3.2-83% before the band's saturation, below), and 4-6 deg
+//     above the horizon straight opposite a light 0.02-0.3 deg down, where
+//     the rows are 1-2 deg apart (2.9% at 4 deg and 3.2% at 5.6 deg for
+//     -0.03 deg, 2.2% at 6 deg for -0.3; for -0.004 .. -0.02 deg it was
+//     2.4-5.1% while E's floor was 0.4 deg, 1.1-1.9% with 0.8);
 //   * columns i = 0..azimuthCount-1 hold the azimuth relative to the light
 //       phi_i = 2 pi * i / azimuthCount,
 //     measured from the light's azimuth towards east (the same sense as the
