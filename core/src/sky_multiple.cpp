@@ -53,31 +53,27 @@ MsNode azimuthAt(double t) {
 
 // The nodes are asked for in the LUT's inner loops: computed once (pow
 // and cos there were a tenth of the LUT's build).
+template <class T, int N, class F>
+std::array<T, N> tabulate(F&& f) {
+    std::array<T, N> out{};
+    for (int k = 0; k < N; ++k) out[std::size_t(k)] = f(k);
+    return out;
+}
+
 MsNode msZenithNode(int z) {
-    static const std::array<MsNode, kMsZeniths> nodes = [] {
-        std::array<MsNode, kMsZeniths> n{};
-        for (int k = 0; k < kMsZeniths; ++k) n[std::size_t(k)] = zenithAt(k + 0.5);
-        return n;
-    }();
+    static const auto nodes = tabulate<MsNode, kMsZeniths>([](int k) { return zenithAt(k + 0.5); });
     return nodes[std::size_t(z)];
 }
 
 MsNode msAzimuthNode(int a) {
-    static const std::array<MsNode, kMsAzimuths> nodes = [] {
-        std::array<MsNode, kMsAzimuths> n{};
-        for (int k = 0; k < kMsAzimuths; ++k) n[std::size_t(k)] = azimuthAt(k + 0.5);
-        return n;
-    }();
+    static const auto nodes = tabulate<MsNode, kMsAzimuths>([](int k) { return azimuthAt(k + 0.5); });
     return nodes[std::size_t(a)];
 }
 
 /// cos of azimuth node a's angle.
 static double msAzimuthCos(int a) {
-    static const std::array<double, kMsAzimuths> cosines = [] {
-        std::array<double, kMsAzimuths> c{};
-        for (int k = 0; k < kMsAzimuths; ++k) c[std::size_t(k)] = std::cos(msAzimuthNode(k).angle);
-        return c;
-    }();
+    static const auto cosines =
+        tabulate<double, kMsAzimuths>([](int k) { return std::cos(msAzimuthNode(k).angle); });
     return cosines[std::size_t(a)];
 }
 

@@ -170,6 +170,20 @@ double capAzimuth(const AtmosphereParams& air, double depression, double elevati
     return 0.5 * (lo + hi);
 }
 
+/// Where the increasing f crosses `goal` in [lo, hi], by bisection, stopped
+/// once the bracket no longer changes (two neighbouring doubles): a few
+/// dozen steps, where a fixed 100 ran on every solve of a light just below
+/// the horizon.
+template <class F>
+double bisect(F&& f, double lo, double hi, double goal) {
+    for (int it = 0; it < 100; ++it) {
+        const double mid = 0.5 * (lo + hi), oldLo = lo, oldHi = hi;
+        (f(mid) < goal ? lo : hi) = mid;
+        if (lo == oldLo && hi == oldHi) break;
+    }
+    return 0.5 * (lo + hi);
+}
+
 constexpr double kCapTopDeg = 0.5;  // the column warp at full strength up to this depression [deg]
 constexpr double kCapEndDeg = 1.0;  // and none from this one
 
@@ -390,11 +404,7 @@ void setSkyTableMapping(SkyTable& table, const AtmosphereParams& air, const glm:
             // The row of the kink falls as E grows (the band spreads out).
             double lo = 0.5 * nominal, hi = 2.0 * nominal;
             if (rowOfKink(lo) >= target && rowOfKink(hi) <= target && target > 0.0 && target < rows) {
-                for (int it = 0; it < 100; ++it) {
-                    const double mid = 0.5 * (lo + hi);
-                    (rowOfKink(mid) > target ? lo : hi) = mid;
-                }
-                table.bandElevation = 0.5 * (lo + hi);
+                table.bandElevation = bisect([&](double e) { return -rowOfKink(e); }, lo, hi, -target);
             } else if (target > 0.0 && target < rows) {
                 // For a light less than ~0.015 deg down the band hardly
                 // reaches the kink (E from 0.2 to 0.8 deg moves it by 0.7
@@ -405,13 +415,8 @@ void setSkyTableMapping(SkyTable& table, const AtmosphereParams& air, const glm:
                 double goal = std::round(rowWithShare(table.shadowShare));
                 double bLo = 0.0, bHi = table.shadowShare + 0.1;
                 if (rowWithShare(bLo) > goal) goal += 1.0;
-                if (rowWithShare(bLo) <= goal && rowWithShare(bHi) >= goal) {
-                    for (int it = 0; it < 100; ++it) {
-                        const double mid = 0.5 * (bLo + bHi);
-                        (rowWithShare(mid) < goal ? bLo : bHi) = mid;
-                    }
-                    table.shadowShare = 0.5 * (bLo + bHi);
-                }
+                if (rowWithShare(bLo) <= goal && rowWithShare(bHi) >= goal)
+                    table.shadowShare = bisect(rowWithShare, bLo, bHi, goal);
             }
         }
     }
