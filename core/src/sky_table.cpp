@@ -25,10 +25,13 @@ constexpr double kMappingTopDeg = 1.0;   // lights above this elevation [deg]: t
 constexpr double kShadowFadeDeg = 0.01;  // the shadow rows fade in over this depression [deg]
 // The horizon band's least width E [deg]. 0.4 left the rows 3-6 deg above
 // the horizon opposite a light 0.005-0.05 deg down 1.1-2 deg apart (80% of
-// the rows within 2 deg of the horizon): 2.5-5.1% there; 0.8: 1.4-1.9%,
-// and the sweeps of the anti-light quarter (SkyShadowOnset) and
-// SkyOffTexel no worse than 0.3 points.
-constexpr double kBandFloorDeg = 0.8;
+// the rows within 2 deg of the horizon): 2.5-5.1% there; 0.8: 1.4-1.9%
+// there, but 2.9-3.3% 4-6 deg up opposite a light 0.03-0.3 deg down
+// while E was bisected to put a row on the kink (E came out at 0.47 deg at
+// -0.03); with E left at its nominal value (the shadow rows' share puts the
+// row on the kink instead) and a floor of 1.2 deg: 1.0-1.5% up to 6 deg
+// from -0.3 to -0.01 deg (SkyShadowOnset), SkyOffTexel within 0.3 points.
+constexpr double kBandFloorDeg = 1.2;
 constexpr double kDeepestDeg = 18.0;     // depressions beyond this [deg] map as this one
 
 /// The row mapping of a table (sky.hpp) as a function of x = sqrt(elevation):
@@ -329,7 +332,7 @@ double skyTableAzimuth(const SkyTable& table, double column, double elevation) {
 // set light is a band from the horizon to about its depression L above it,
 // whose upper edge is a kink (where the shadow's exit reaches the top of the
 // atmosphere) for a light just set and a broad ramp for a deep one. The
-// numbers (band E = max(1.8 L^0.7, 0.8) deg with 70% of the rows, 15% of
+// numbers (band E = max(1.8 L^0.7, 1.2) deg with 70% of the rows, 15% of
 // them within ~0.25 L of the kink, 5% from L = 6 deg) are fitted against the
 // exact integral (tests/core/test_sky.cpp, SkyOffTexel, and a denser grid of
 // the anti-light quarter: 700 directions per sun): with them the worst error
@@ -338,8 +341,9 @@ double skyTableAzimuth(const SkyTable& table, double column, double elevation) {
 // the earth's shadow opposite it gets its own rows (uniform in the azimuth
 // of its onset below the kink, crowded at the kink above it) and warped
 // columns (the onset on one column in every row): 0.8-1.3% in a dense sweep
-// of the anti-light quarter from -0.3 to -0.01 deg (SkyShadowOnset; 1.9%
-// at -0.01 deg with probes within 3e-4 deg of the kink). Lights less than
+// of the anti-light quarter from -0.3 to -0.01 deg, from the horizon to 6
+// deg up (SkyShadowOnset; 1.9% at -0.01 deg with probes within 3e-4 deg of
+// the kink before the cap's saturating columns). Lights less than
 // 0.01 deg down are not yet within 2% (2.5-5.2% from -0.005 to -0.0002
 // deg, just below the kink).
 void setSkyTableMapping(SkyTable& table, const AtmosphereParams& air, const glm::dvec3& lightDirection) {
@@ -367,8 +371,8 @@ void setSkyTableMapping(SkyTable& table, const AtmosphereParams& air, const glm:
         // 3e-4 deg above it; now at most 1.9% and 1.8% over the whole sweep).
         table.shadowShare *= std::min(depression / kShadowFadeDeg, 1.0);
         // A row exactly on the kink of the shadow opposite the light: the
-        // shadow rows centred there, and the band's width E adjusted (by at
-        // most half a row) so that the kink's row is whole.
+        // shadow rows centred there, and their share b adjusted so that the
+        // kink's row is whole.
         const double kink = shadowKinkElevation(air, depression * kDeg);
         if (kink > 0.0 && table.elevationCount > 1) {
             table.shadowElevation = kink;
@@ -383,13 +387,18 @@ void setSkyTableMapping(SkyTable& table, const AtmosphereParams& air, const glm:
                 table.bandShare -= kSkyCapRowShare * table.capStrength;
             }
             const double rows = table.elevationCount - 1;
-            // The kink's row with band width e and shadow share b (the
-            // mapping only, no texels copied).
-            auto rowOfKinkWith = [&](double e, double b) {
+            // The kink's row with shadow share b (the mapping only, no
+            // texels copied); it grows with b (~b/2 of the rows lie below
+            // the kink). Adjusting the band's width E instead (as before)
+            // hardly moves the kink's row for a light less than ~0.015 deg
+            // down, and elsewhere pulled E down to ~0.5 deg, which left the
+            // rows 4-6 deg up 1-2 deg apart (2.9-3.3% there opposite a light
+            // 0.03-0.3 deg down; now 1.0-1.5%).
+            auto rowOfKink = [&](double b) {
                 SkyTable t = {};
                 t.azimuthCount = table.azimuthCount;
                 t.elevationCount = table.elevationCount;
-                t.bandElevation = e;
+                t.bandElevation = table.bandElevation;
                 t.bandShare = table.bandShare;
                 t.shadowElevation = table.shadowElevation;
                 t.shadowWidth = table.shadowWidth;
@@ -398,26 +407,11 @@ void setSkyTableMapping(SkyTable& table, const AtmosphereParams& air, const glm:
                 t.capStrength = table.capStrength;
                 return skyTableRow(t, kink);
             };
-            auto rowOfKink = [&](double e) { return rowOfKinkWith(e, table.shadowShare); };
-            const double nominal = table.bandElevation;
-            const double target = std::round(rowOfKink(nominal));
-            // The row of the kink falls as E grows (the band spreads out).
-            double lo = 0.5 * nominal, hi = 2.0 * nominal;
-            if (rowOfKink(lo) >= target && rowOfKink(hi) <= target && target > 0.0 && target < rows) {
-                table.bandElevation = bisect([&](double e) { return -rowOfKink(e); }, lo, hi, -target);
-            } else if (target > 0.0 && target < rows) {
-                // For a light less than ~0.015 deg down the band hardly
-                // reaches the kink (E from 0.2 to 0.8 deg moves it by 0.7
-                // rows at -0.01 deg, 0.1 at -0.002): the shadow rows' share b
-                // puts a row on it instead (the kink's row grows with b,
-                // ~b/2 of the rows lie below it).
-                auto rowWithShare = [&](double b) { return rowOfKinkWith(table.bandElevation, b); };
-                double goal = std::round(rowWithShare(table.shadowShare));
-                double bLo = 0.0, bHi = table.shadowShare + 0.1;
-                if (rowWithShare(bLo) > goal) goal += 1.0;
-                if (rowWithShare(bLo) <= goal && rowWithShare(bHi) >= goal)
-                    table.shadowShare = bisect(rowWithShare, bLo, bHi, goal);
-            }
+            double goal = std::round(rowOfKink(table.shadowShare));
+            const double bLo = 0.0, bHi = table.shadowShare + 0.1;
+            if (rowOfKink(bLo) > goal) goal += 1.0;
+            if (goal > 0.0 && goal < rows && rowOfKink(bLo) <= goal && rowOfKink(bHi) >= goal)
+                table.shadowShare = bisect(rowOfKink, bLo, bHi, goal);
         }
     }
 }

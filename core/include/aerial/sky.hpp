@@ -94,7 +94,7 @@
 //     - a light above 1 deg: a = b = 0, the quadratic el_j = pi/2 (j / (H - 1))^2
 //       (more rows near the horizon);
 //     - a light below 1 deg: a = 0.7 (fading to 0 at 1 deg) of the rows in a
-//       horizon band of width E = max(1.8 L^0.7, 0.8) deg, L = the light's
+//       horizon band of width E = max(1.8 L^0.7, 1.2) deg, L = the light's
 //       depression below the horizon [deg]: the band between the horizon and
 //       the top of the earth's shadow, whose edge rises to about L above the
 //       horizon opposite the light;
@@ -108,10 +108,10 @@
 //       c is the kink's elevation straight opposite the light (the view ray
 //       that leaves the shadow cylinder exactly at the top of the
 //       atmosphere, about 1.1 L; for a light more than ~6 deg down that ray
-//       is shadowed up to the top and c = 1.1 L), and E is adjusted so that
-//       a row lies exactly on it (the kink's row moves by at most half a row;
-//       for a light less than ~0.015 deg down, where E hardly moves it, b
-//       is adjusted instead);
+//       is shadowed up to the top and c = 1.1 L), and b is adjusted so that
+//       a row lies exactly on it (adjusting E instead hardly moves the
+//       kink's row for a light less than ~0.015 deg down, and elsewhere
+//       pulled E to ~0.5 deg, leaving the rows 4-6 deg up 1-2 deg apart);
 //     - a light 0-1 deg below the horizon also: d = (16/63) g of the rows
 //       (taken from the band's a) between 0 and 2c, half below c uniform in
 //       sqrt(c - el), so uniform in the azimuth of the cap's onset (the
@@ -123,16 +123,14 @@
 //     single-scattering integral relative to the pixel (floored at 1% of the
 //     brightest sky) in every direction tests/core/test_sky.cpp probes, off
 //     the texel centres too, for suns from -6 to 90 deg (SkyOffTexel), and
-//     in a dense sweep of the anti-light quarter for suns 0.01-0.3 deg below
-//     the horizon (SkyShadowOnset: 0.8-1.3% from -0.3 to -0.01 deg; 63% at
-//     -0.01 deg before the cap's rows and columns). Not yet within 2%:
-//     a light less than 0.01 deg below the horizon (2.5-5.2% from -0.005
+//     in a dense sweep of the anti-light quarter, from the horizon to 6 deg
+//     up, for suns 0.01-0.3 deg below the horizon (SkyShadowOnset: 1.0-1.5%
+//     from -0.3 to -0.01 deg; 63% at -0.01 deg before the cap's rows and
+//     columns; 2.2-3.3% 4-6 deg up straight opposite the light while E was
+//     bisected onto the kink and its floor was 0.8 deg). Not yet within 2%:
+//     a light less than 0.01 deg below the horizon (2.3-5.3% from -0.005
 //     to -0.0002 deg, just below the kink 0.2-2 deg from the anti-light
-//     point; 3.2-83% before the band's saturation, below), and 4-6 deg
-//     above the horizon straight opposite a light 0.02-0.3 deg down, where
-//     the rows are 1-2 deg apart (2.9% at 4 deg and 3.2% at 5.6 deg for
-//     -0.03 deg, 2.2% at 6 deg for -0.3; for -0.004 .. -0.02 deg it was
-//     2.4-5.1% while E's floor was 0.4 deg, 1.1-1.9% with 0.8);
+//     point; 3.2-83% before the band's saturation, below);
 //   * columns i = 0..azimuthCount-1 hold the azimuth relative to the light
 //       phi_i = 2 pi * i / azimuthCount,
 //     measured from the light's azimuth towards east (the same sense as the
