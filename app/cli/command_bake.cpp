@@ -133,7 +133,7 @@ constexpr const char* kRowMapping =
     "row j = EXR line y (y = 0 first) holds the elevation el_j [rad] above the horizon where v(el_j) = "
     "j / (H - 1), v(el) = (1 - a - b - d) sqrt(el / (pi/2)) + a atan(el / E) / atan(pi/2 / E) + "
     "b (atan((el - c) / w) - atan(-c / w)) / (atan((pi/2 - c) / w) - atan(-c / w)) + "
-    "d/2 (1 - sqrt(u)) below c, d/2 (1 + cbrt(u)) above, u = min(|el - c|, c) / c, with E = "
+    "d/2 (1 - u^0.35) below c, d/2 (1 + cbrt(u)) above, u = min(|el - c|, c) / c, with E = "
     "band_elevation_rad, a = band_share, c = shadow_elevation_rad, w = shadow_width_rad, b = shadow_share, "
     "d = (16/63) cap_strength where cap_curvature > 0, else 0 "
     "(row_mapping per step and light; EXR header aerialBandElevationRad, aerialBandShare, "
@@ -154,8 +154,9 @@ constexpr const char* kColumnMapping =
     "F = min(sqrt(c / k), pi/4), D = max(F / 2, min(1 deg, 500 c)), F2 = min(2 (F + max(F / 2, 1 deg)), "
     "3 pi / 4) (the onset of the "
     "lit sky around the cap of the earth's shadow, el = c - k psi^2, on column W/2 -+ 3 W / 128 in "
-    "every row), except from p3 to pi: psi = p3 + (pi - p3) (a t + (1 - a) t^2), t = (x - 25 W / 128) / "
-    "(39 W / 128), a = 1 - 0.7 g";
+    "every row), except from p2 to p3 and from p3 to pi: psi = p + (q - p) (a t + (1 - a) t^2) from p to q, "
+    "t = (x - 15 W / 128) / (10 W / 128), a = 1 - 0.5 g from p2 to p3, t = (x - 25 W / 128) / "
+    "(39 W / 128), a = 1 - 0.7 g from p3 to pi";
 
 constexpr const char* kRadianceMapping =
     "equirectangular over the whole sphere: pixel (x, y) of a W x H image looks along azimuth "

@@ -37,10 +37,10 @@ constexpr double kDeepestDeg = 18.0;     // depressions beyond this [deg] map as
 /// The row mapping of a table (sky.hpp) as a function of x = sqrt(elevation):
 /// v(x) = (1 - a - b - d) x / sqrt(pi/2) + a atan(x^2 / E) / atan(pi/2 / E)
 ///        + b (atan((x^2 - c) / w) - atan(-c / w)) / (atan((pi/2 - c) / w) - atan(-c / w))
-///        + d/2 (1 - sqrt(u)) below c, d/2 (1 + cbrt(u)) above, u = min(|x^2 - c|, c) / c
-///          (the cap's rows, d = kSkyCapRowShare g where the columns are warped:
-///          uniform in the onset's azimuth psiC below c, crowded at the cap's
-///          top above it, where the lit sky switches on within 1e-4 deg),
+///        + d/2 (1 - u^p) below c, d/2 (1 + cbrt(u)) above, u = min(|x^2 - c|, c) / c
+///          (the cap's rows, d = kSkyCapRowShare g where the columns are warped,
+///          p = kSkyCapBelowPower: crowded towards c below it, crowded at the
+///          cap's top above it, where the lit sky switches on within 1e-4 deg),
 /// increasing in x, with v(0) = 0 and v(sqrt(pi/2)) = 1.
 struct RowMapping {
     double plain = 1.0, a = 0.0, e = 1.0, bandNorm = 1.0;
@@ -74,7 +74,7 @@ struct RowMapping {
         if (b > 0.0) v += b * (std::atan((el - c) / w) - shadowLow) * shadowNorm;
         if (d > 0.0) {
             const double u = std::min(std::abs(el - cap), cap) / cap;
-            v += d * 0.5 * (el < cap ? 1.0 - std::sqrt(u) : 1.0 + std::cbrt(u));
+            v += d * 0.5 * (el < cap ? 1.0 - std::pow(u, kSkyCapBelowPower) : 1.0 + std::cbrt(u));
         }
         return v;
     }
@@ -83,7 +83,7 @@ struct RowMapping {
         double g = plain;
         if (d > 0.0 && el != cap && el < 2.0 * cap) {
             const double u = std::abs(el - cap) / cap;
-            g += el < cap ? 0.5 * d * x / std::sqrt(cap * std::abs(el - cap))
+            g += el < cap ? d * kSkyCapBelowPower * x * std::pow(u, kSkyCapBelowPower - 1.0) / cap
                           : d * x / (3.0 * cap * std::cbrt(u * u));
         }
         if (a > 0.0) {
@@ -224,13 +224,19 @@ constexpr double kCapEndDeg = 1.0;  // and none from this one
 /// spacing, where the lit sky beyond the band still climbs steeply near the
 /// horizon (a light 0.01 deg down: the radiance halves between 8.7 and 11
 /// deg from the anti-light point, where linear columns 4.4 deg apart put the
-/// pixel 16% high), its last (at the light's azimuth) 1.7 times it. With the
+/// pixel 16% high), its last (at the light's azimuth) 1.7 times it. The
+/// segment before it is quadratic too (kSkyCapNearSlope): just below the
+/// cap's top the lit sky beside the cap ramps up far beyond the band (at
+/// 0.99 c from 0.07 to 1.5 deg from the anti-light point for a light
+/// 0.0005 deg down), and linear columns 0.3 deg apart there left it 10%
+/// low. With the
 /// strength g < 1 each psi knot is blended towards the uniform azimuth of
 /// its x, g psi + (1 - g) 2 pi x / N, and a towards 1, 1 - g (1 - a).
 struct ColumnMapping {
     double x[5] = {0.0, 0.0, 0.0, 0.0, 0.0};
     double psi[5] = {0.0, 0.0, 0.0, 0.0, kPi};
-    double farSlope = 1.0;  // a: the last segment's slope at psiE, relative to its mean
+    double farSlope = 1.0;    // a: the last segment's slope at psiE, relative to its mean
+    double nearSlope = 1.0;   // the same for the segment before it, at the band's outer knot
     double saturation = 0.0;  // S^2 of the band's s(y) = y / (y + S^2), y = psi^2 - psiC^2
     double bandCoordinate(double y) const { return y / (y + saturation); }
     bool uniform = true;
@@ -254,6 +260,7 @@ struct ColumnMapping {
         const double capPsi[5] = {0.0, onset, std::hypot(kSkyCapOnsetGrowth * onset, band), end, kPi};
         for (int m = 1; m < 4; ++m) psi[m] = g * capPsi[m] + (1.0 - g) * 2.0 * kPi * x[m] / n;
         farSlope = 1.0 - g * (1.0 - kSkyCapFarSlope);
+        nearSlope = 1.0 - g * (1.0 - kSkyCapNearSlope);
         uniform = false;
     }
     double halfColumn(double p) const {  // psi -> x
@@ -265,11 +272,9 @@ struct ColumnMapping {
                 const double u = m == 1 ? bandCoordinate(q * q - psi[1] * psi[1]) /
                                               bandCoordinate(psi[2] * psi[2] - psi[1] * psi[1])
                                         : (q - psi[m]) / (psi[m + 1] - psi[m]);
-                // The last segment's u = a t + (1 - a) t^2, solved for t without cancellation.
-                const double t =
-                    m == 3
-                        ? 2.0 * u / (farSlope + std::sqrt(farSlope * farSlope + 4.0 * (1.0 - farSlope) * u))
-                        : u;
+                // The last two segments' u = a t + (1 - a) t^2, solved for t without cancellation.
+                const double a = m == 3 ? farSlope : nearSlope;
+                const double t = m >= 2 ? 2.0 * u / (a + std::sqrt(a * a + 4.0 * (1.0 - a) * u)) : u;
                 return x[m] + (x[m + 1] - x[m]) * t;
             }
         return x[4];
@@ -279,7 +284,8 @@ struct ColumnMapping {
             if (h < x[m + 1] || m == 3) {
                 if (!(x[m + 1] > x[m])) return psi[m + 1];
                 const double t = (std::min(h, x[4]) - x[m]) / (x[m + 1] - x[m]);
-                const double u = m == 3 ? t * (farSlope + (1.0 - farSlope) * t) : t;
+                const double a = m == 3 ? farSlope : nearSlope;
+                const double u = m >= 2 ? t * (a + (1.0 - a) * t) : t;
                 if (m == 1) {  // s(y) = u s(y2), solved for y
                     const double y2 = psi[2] * psi[2] - psi[1] * psi[1];
                     return std::sqrt(psi[1] * psi[1] + u * y2 * saturation / (saturation + y2 * (1.0 - u)));
@@ -338,13 +344,13 @@ double skyTableAzimuth(const SkyTable& table, double column, double elevation) {
 // the anti-light quarter: 700 directions per sun): with them the worst error
 // of a 128 x 64 table is 0.8-1.6% for suns from -6 to 0 deg, against 3-49%
 // with the quadratic rows. For a light 0-1 deg below the horizon the cap of
-// the earth's shadow opposite it gets its own rows (uniform in the azimuth
-// of its onset below the kink, crowded at the kink above it) and warped
+// the earth's shadow opposite it gets its own rows (crowded towards the
+// kink below it and at the kink above it) and warped
 // columns (the onset on one column in every row): 0.8-1.3% in a dense sweep
 // of the anti-light quarter from -0.3 to -0.01 deg, from the horizon to 6
 // deg up (SkyShadowOnset; 1.9% at -0.01 deg with probes within 3e-4 deg of
 // the kink before the cap's saturating columns). Lights less than
-// 0.01 deg down are not yet within 2% (2.5-5.2% from -0.005 to -0.0002
+// 0.005 deg down are not yet within 2% (3.0-3.9% from -0.002 to -0.0002
 // deg, just below the kink).
 void setSkyTableMapping(SkyTable& table, const AtmosphereParams& air, const glm::dvec3& lightDirection) {
     constexpr double kDeg = kPi / 180.0;

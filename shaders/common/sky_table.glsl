@@ -47,7 +47,9 @@ const float kSkyCapBandPerKink = 500.0;
 const float kSkyCapSaturation = 150.0;
 const float kSkyCapSaturationGrowth = 3.0;
 const float kSkyCapFarSlope = 0.3;
+const float kSkyCapNearSlope = 0.5;
 const float kSkyCapRowShare = 16.0 / 63.0;
+const float kSkyCapBelowPower = 0.35;
 
 /// Whether a table's columns are warped around the cap of the earth's shadow
 /// (skyTableColumnsWarped): cap = (k, g) = (capCurvature, capStrength), c
@@ -56,8 +58,8 @@ bool skyTableCapActive(vec2 cap, float c) { return cap.x > 0.0 && cap.y > 0.0 &&
 
 /// The table's row mapping v(el) in 0..1 (see the file comment); band =
 /// (E, a, c), w and b as there; cap as in skyTableCapActive (the cap's rows,
-/// d = kSkyCapRowShare g, uniform in sqrt(c - el) from 0 to c and in
-/// cbrt(el - c) from c to 2c).
+/// d = kSkyCapRowShare g, uniform in (c - el)^kSkyCapBelowPower from 0 to c
+/// and in cbrt(el - c) from c to 2c).
 float skyTableMappedRow(float elevation, vec3 band, float w, float b, vec2 cap) {
     float el = clamp(elevation, 0.0, 0.5 * kPi);
     float a = band.y;
@@ -71,10 +73,14 @@ float skyTableMappedRow(float elevation, vec3 band, float w, float b, vec2 cap) 
     }
     if (d > 0.0) {
         float u = min(abs(el - band.z), band.z) / band.z;
-        v += d * 0.5 * (el < band.z ? 1.0 - sqrt(u) : 1.0 + pow(u, 1.0 / 3.0));
+        v += d * 0.5 * (el < band.z ? 1.0 - pow(u, kSkyCapBelowPower) : 1.0 + pow(u, 1.0 / 3.0));
     }
     return v;
 }
+
+/// t of u = a t + (1 - a) t^2 (a quadratic segment of the column mapping,
+/// slope a at its start relative to its mean), without cancellation.
+float skyTableQuadraticStep(float u, float a) { return 2.0 * u / (a + sqrt(a * a + 4.0 * (1.0 - a) * u)); }
 
 /// The column (0..columns) of an azimuth `relative` [0, 2 pi) from the light
 /// at elevation el (skyTableColumn, core/src/sky_table.cpp): uniform, or
@@ -86,8 +92,9 @@ float skyTableMappedRow(float elevation, vec3 band, float w, float b, vec2 cap) 
 /// onset of the lit sky around the cap of the earth's shadow, D =
 /// max(psiC(0) / 2, min(1 deg, kSkyCapBandPerKink c)), G =
 /// kSkyCapOnsetGrowth, psiE = min(2 (psiC(0) + max(psiC(0) / 2, 1 deg)),
-/// 3 pi / 4), the last segment quadratic (psi = psiE + (pi - psiE) (a t +
-/// (1 - a) t^2), a = 1 - g (1 - kSkyCapFarSlope)), each inner psi blended
+/// 3 pi / 4), the last two segments quadratic (psi = p + (q - p) (a t +
+/// (1 - a) t^2) from p to q, a = 1 - g (1 - kSkyCapNearSlope) from the
+/// band's outer knot to psiE, 1 - g (1 - kSkyCapFarSlope) beyond), each inner psi blended
 /// with g towards 2 pi x / columns.
 float skyTableColumnAt(float relative, float el, float columns, float c, vec2 cap) {
     if (!skyTableCapActive(cap, c) || !(columns >= 4.0)) return relative / (2.0 * kPi) * columns;
@@ -115,12 +122,9 @@ float skyTableColumnAt(float relative, float el, float columns, float c, vec2 ca
         x = x1 + (x2 - x1) * (y / (y + saturation)) / (y2 / (y2 + saturation));
     }
     else if (psi < p3)
-        x = x2 + (x3 - x2) * (psi - p2) / (p3 - p2);
-    else {  // u = a t + (1 - a) t^2 along the last segment, solved for t
-        float a = 1.0 - g * (1.0 - kSkyCapFarSlope);
-        float u = (min(psi, kPi) - p3) / (kPi - p3);
-        x = x3 + (x4 - x3) * 2.0 * u / (a + sqrt(a * a + 4.0 * (1.0 - a) * u));
-    }
+        x = x2 + (x3 - x2) * skyTableQuadraticStep((psi - p2) / (p3 - p2), 1.0 - g * (1.0 - kSkyCapNearSlope));
+    else
+        x = x3 + (x4 - x3) * skyTableQuadraticStep((min(psi, kPi) - p3) / (kPi - p3), 1.0 - g * (1.0 - kSkyCapFarSlope));
     return relative <= kPi ? x4 - x : x4 + x;
 }
 

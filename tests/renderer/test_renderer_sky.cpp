@@ -145,11 +145,23 @@ TEST_F(SkyVsCpu, SetSunRowMappingMatchesSkyRadiance) {
         air.sunLight = light(sun, glm::dvec3(20.0, 19.0, 18.0), glm::dvec3(0.0));
         const glm::dvec3 flat = glm::normalize(glm::dvec3(sun.x, 0.0, sun.z));
         const glm::dvec3 eye(0, 2, 0);
-        const glm::dvec3 targets[] = {eye - flat * 10.0 + glm::dvec3(0, 0.3, 0),     // the earth's shadow
-                                      eye + flat * 10.0 + glm::dvec3(0, 0.3, 0),     // the afterglow
-                                      eye - flat * 10.0 + glm::dvec3(0, 0.005, 0)};  // along the horizon
-        for (const glm::dvec3& target : targets) {
-            const Camera camera = skyCamera(eye, target, 0.3);
+        struct View {
+            glm::dvec3 target;
+            double fov;  // [rad]
+        };
+        const View views[] = {
+            {eye - flat * 10.0 + glm::dvec3(0, 0.3, 0), 0.3},    // the earth's shadow
+            {eye + flat * 10.0 + glm::dvec3(0, 0.3, 0), 0.3},    // the afterglow
+            {eye - flat * 10.0 + glm::dvec3(0, 0.005, 0), 0.3},  // along the horizon
+            // the rows below the top of the cap of the earth's shadow,
+            // where the lit sky beside the cap ramps up (0.17 x 0.3 deg,
+            // 0.04 deg up, 3 deg from the anti-light point; under one
+            // pixel row in the views above)
+            {eye + 10.0 * glm::dvec3(-flat.x * std::cos(0.05236) + flat.z * std::sin(0.05236), 0.0007,
+                                     -flat.z * std::cos(0.05236) - flat.x * std::sin(0.05236)),
+             0.003}};
+        for (const View& view : views) {
+            const Camera camera = skyCamera(eye, view.target, view.fov);
             const Image image = renderSky(r, camera, air);
             const renderer::CameraFrame f = renderer::cameraFrame(camera);
             std::vector<glm::dvec3> cpu(std::size_t(kWidth) * kHeight);

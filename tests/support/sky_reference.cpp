@@ -144,7 +144,7 @@ double texelElevation(int j, const SkyTable& table) {
         if (d > 0.0) {
             const double c = table.shadowElevation;
             const double u = std::min(std::abs(el - c), c) / c;
-            v += 0.5 * d * (el < c ? 1.0 - std::sqrt(u) : 1.0 + std::pow(u, 1.0 / 3.0));
+            v += 0.5 * d * (el < c ? 1.0 - std::pow(u, kSkyCapBelowPower) : 1.0 + std::pow(u, 1.0 / 3.0));
         }
         if (a > 0.0)
             v += a * std::atan(el / table.bandElevation) / std::atan(0.5 * kPi / table.bandElevation);
@@ -170,7 +170,7 @@ double texelAzimuth(int i, double elevation, const SkyTable& table) {
     // The column mapping of <aerial/sky.hpp>, written out again: piecewise
     // linear in the azimuth psi from the anti-light point, in y / (y + S^2),
     // y = psi^2 - P^2, between the second and the third knot, quadratic in
-    // the columns after the fourth.
+    // the columns after the third.
     const double k = table.capCurvature, g = std::min(table.capStrength, 1.0), c = table.shadowElevation;
     const double foot = std::min(std::sqrt(c / k), 0.25 * kPi);
     const double floorBand = kSkyCapMinBandDeg * kPi / 180.0;
@@ -188,9 +188,9 @@ double texelAzimuth(int i, double elevation, const SkyTable& table) {
             const double p0 = m == 0 ? 0.0 : g * cap[m] + (1.0 - g) * 2.0 * kPi * xs[m] / n;
             const double p1 = m == 3 ? kPi : g * cap[m + 1] + (1.0 - g) * 2.0 * kPi * xs[m + 1] / n;
             const double t = (x - xs[m]) / (xs[m + 1] - xs[m]);
-            // The last segment: quadratic, slope a at its start (relative to its mean).
-            const double a = 1.0 - g * (1.0 - kSkyCapFarSlope);
-            const double u = m == 3 ? a * t + (1.0 - a) * t * t : t;
+            // The last two segments: quadratic, slope a at their start (relative to their mean).
+            const double a = 1.0 - g * (1.0 - (m == 3 ? kSkyCapFarSlope : kSkyCapNearSlope));
+            const double u = m >= 2 ? a * t + (1.0 - a) * t * t : t;
             double psi = p0 + (p1 - p0) * u;
             if (m == 1) {  // y / (y + S^2) = u y1 / (y1 + S^2), y1 = p1^2 - p0^2
                 const double y1 = p1 * p1 - p0 * p0;

@@ -87,7 +87,7 @@
 //       v(el) = (1 - a - b - d) sqrt(el / (pi/2))
 //             + a atan(el / E) / atan(pi/2 / E)
 //             + b (atan((el - c) / w) - atan(-c / w)) / (atan((pi/2 - c) / w) - atan(-c / w))
-//             + d/2 (1 - sqrt(u)) below c, d/2 (1 + cbrt(u)) above, u = min(|el - c|, c) / c,
+//             + d/2 (1 - u^0.35) below c, d/2 (1 + cbrt(u)) above, u = min(|el - c|, c) / c,
 //     E = bandElevation, a = bandShare, c = shadowElevation, w = shadowWidth,
 //     b = shadowShare, carried in the SkyTable and set by the solver from the
 //     light (setSkyTableMapping). The rows go where the light changes fastest:
@@ -114,8 +114,12 @@
 //       pulled E to ~0.5 deg, leaving the rows 4-6 deg up 1-2 deg apart);
 //     - a light 0-1 deg below the horizon also: d = (16/63) g of the rows
 //       (taken from the band's a) between 0 and 2c, half below c uniform in
-//       sqrt(c - el), so uniform in the azimuth of the cap's onset (the
-//       columns below), half above c uniform in cbrt(el - c), crowded at the
+//       (c - el)^0.35 (kSkyCapBelowPower; 0.5 would be uniform in the
+//       azimuth of the cap's onset, the columns below; 0.35 crowds them
+//       towards c, where the lit sky beside the cap ramps up over a width
+//       that grows fast with c - el: at 0.99 c from 0.07 to 1.5 deg from the
+//       anti-light point for a light 0.0005 deg down, against ~0.05 deg at
+//       c), half above c uniform in cbrt(el - c), crowded at the
 //       cap's top where straight opposite the light the lit sky switches on
 //       within a few 1e-4 deg for a light 0.01 deg down; g = capStrength, 1
 //       up to 0.5 deg, fading to 0 at 1 deg;
@@ -124,13 +128,18 @@
 //     brightest sky) in every direction tests/core/test_sky.cpp probes, off
 //     the texel centres too, for suns from -6 to 90 deg (SkyOffTexel), and
 //     in a dense sweep of the anti-light quarter, from the horizon to 6 deg
-//     up, for suns 0.01-0.3 deg below the horizon (SkyShadowOnset: 1.0-1.5%
-//     from -0.3 to -0.01 deg; 63% at -0.01 deg before the cap's rows and
-//     columns; 2.2-3.3% 4-6 deg up straight opposite the light while E was
-//     bisected onto the kink and its floor was 0.8 deg). Not yet within 2%:
-//     a light less than 0.01 deg below the horizon (2.3-5.3% from -0.005
-//     to -0.0002 deg, just below the kink 0.2-2 deg from the anti-light
-//     point; 3.2-83% before the band's saturation, below);
+//     up and within 0.002 c below the kink, for suns 0.01-0.3 deg below
+//     the horizon (SkyShadowOnset: 1.0-1.5% from -0.3 to -0.01 deg; 63% at
+//     -0.01 deg before the cap's rows and columns; 2.2-3.3% 4-6 deg up
+//     straight opposite the light while E was bisected onto the kink and
+//     its floor was 0.8 deg; 2.2% at -0.01 deg 0.98 c up while the cap's
+//     rows below c were uniform in sqrt(c - el) and the columns beyond the
+//     band linear). Not yet within 2%: a light less than 0.005 deg below
+//     the horizon (1.8% at -0.005 deg, 3.0% at -0.002, 3.9% at -0.0005,
+//     3.4% at -0.0002, just below the kink 0.1-1 deg from the anti-light
+//     point; 2.2%, 3.1%, 5.4% and 5.6% on a denser grid from 0.7 c to c;
+//     2.4-10% before the changes just named, 3.2-83% before the band's
+//     saturation, below);
 //   * columns i = 0..azimuthCount-1 hold the azimuth relative to the light
 //       phi_i = 2 pi * i / azimuthCount,
 //     measured from the light's azimuth towards east (the same sense as the
@@ -148,10 +157,13 @@
 //       psi = (0, P, sqrt((2 P)^2 + D^2), F2, pi),  P = min(sqrt(max(c - el, 0) / k), F),
 //       F = min(sqrt(c / k), pi/4),  D = max(F / 2, min(1 deg, 500 c)),
 //       F2 = min(2 (F + max(F / 2, 1 deg)), 3 pi / 4),
-//     except that the last segment is quadratic, psi = F2 + (pi - F2)
-//     (a t + (1 - a) t^2) with t = 0..1 along it and a = 1 - g (1 -
-//     kSkyCapFarSlope) (its columns crowd just beyond F2, where the lit sky
-//     still climbs steeply near the horizon), and each inner psi blended
+//     except that the last two segments are quadratic, psi = p + (q - p)
+//     (a t + (1 - a) t^2) with t = 0..1 along the segment from p to q and
+//     a = 1 - g (1 - kSkyCapNearSlope) from the band's outer knot to F2, a
+//     = 1 - g (1 - kSkyCapFarSlope) from F2 to pi (their columns crowd
+//     at the segment's start: beyond the band just below the cap's top,
+//     where the lit sky beside the cap still ramps up, and beyond F2, where
+//     it still climbs steeply near the horizon), and each inner psi blended
 //     with g towards 2 pi x / W (skyTableColumn, skyTableAzimuth): the onset lies on column W/2 -+ 3 W / 128
 //     in every row below the cap's top, with 12 columns in the band above it. Only P depends on the row, so
 //     between two rows the onset stays on its column (rows alone could not follow it: 256 x 1024 texels
@@ -303,10 +315,17 @@ inline constexpr double kSkyCapSaturationGrowth = 3.0;
 /// The last segment (psiE .. pi) is quadratic in its columns, with this
 /// slope at psiE relative to its mean (and 2 - it at pi).
 inline constexpr double kSkyCapFarSlope = 0.3;
+/// The segment between the band's outer knot and psiE likewise (0.5 and
+/// 0.3 alike: -0.01 deg 2.2% -> 1.2% 0.98 c up, -0.005 deg 2.4% -> 1.9%).
+inline constexpr double kSkyCapNearSlope = 0.5;
 /// The share of the rows in the cap (0 .. c) and as far above it (c .. 2c),
-/// taken from the horizon band's: half uniform in sqrt(c - el) below c,
-/// half in cbrt(el - c) above.
+/// taken from the horizon band's: half uniform in (c - el)^kSkyCapBelowPower
+/// below c, half in cbrt(el - c) above.
 inline constexpr double kSkyCapRowShare = 16.0 / 63.0;
+/// 0.5 (uniform in the onset's azimuth), 0.4, 0.35, 0.3 and 0.25 tried
+/// (SkyShadowOnset, worst of -0.002 .. -0.0002 deg): 10%, 7.4%, 3.9%,
+/// 5.1%, 3.9%; -0.01 .. -0.3 deg unchanged.
+inline constexpr double kSkyCapBelowPower = 0.35;
 
 /// Continuous column (0..azimuthCount, wrapping) of an azimuth `relative`
 /// [rad] from the light's (any value, wrapped into [0, 2 pi)) in the row at
