@@ -20,6 +20,11 @@ namespace aerial::renderer::detail {
 using ShaderReader = std::function<bool(const std::string& path, std::string& text, std::string& error)>;
 
 ShaderReader embeddedShaderReader();
+
+/// The include path of the constants the GLSL shares with aerial_core's C++
+/// (the sky table's column and row mapping, kSkyCap*): written from the C++
+/// by the include resolver, whatever the reader (not a file in shaders/).
+inline constexpr const char* kCoreConstantsPath = "generated/core_constants.glsl";
 ShaderReader directoryShaderReader(const std::string& directory);
 
 /// Expands #include lines; false with `error` on a missing file or an

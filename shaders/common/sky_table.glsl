@@ -37,19 +37,9 @@ vec2 skyAngles(vec3 v, bool accurate) {
     return vec2(a.x == 0.0 && b.x == 0.0 ? 0.0 : atan(a.x, b.x), a.y == 0.0 && b.y == 0.0 ? 0.0 : atan(a.y, b.y));
 }
 
-// The column mapping's constants (aerial/sky.hpp, kSkyCap*).
-const float kSkyCapInsideShare = 3.0 / 128.0;
-const float kSkyCapOnsetShare = 12.0 / 128.0;
-const float kSkyCapNearShare = 10.0 / 128.0;
-const float kSkyCapMinBand = 1.0 * kPi / 180.0;
-const float kSkyCapOnsetGrowth = 2.0;
-const float kSkyCapBandPerKink = 500.0;
-const float kSkyCapSaturation = 150.0;
-const float kSkyCapSaturationGrowth = 3.0;
-const float kSkyCapFarSlope = 0.3;
-const float kSkyCapNearSlope = 0.5;
-const float kSkyCapRowShare = 16.0 / 63.0;
-const float kSkyCapBelowPower = 0.35;
+// The mapping's constants (aerial/sky.hpp, kSkyCap*; kSkyCapMinBand in
+// radians), written from the C++ by the renderer's include resolver.
+#include "generated/core_constants.glsl"
 
 /// Whether a table's columns are warped around the cap of the earth's shadow
 /// (skyTableColumnsWarped): cap = (k, g) = (capCurvature, capStrength), c
