@@ -131,6 +131,20 @@ struct ShadowCylinder {
     }
 };
 
+/// Where the increasing f crosses `goal` in [lo, hi], by bisection, stopped
+/// once the bracket no longer changes (two neighbouring doubles): a few
+/// dozen steps, where a fixed 100 ran on every solve of a light just below
+/// the horizon.
+template <class F>
+double bisect(F&& f, double lo, double hi, double goal) {
+    for (int it = 0; it < 100; ++it) {
+        const double mid = 0.5 * (lo + hi), oldLo = lo, oldHi = hi;
+        (f(mid) < goal ? lo : hi) = mid;
+        if (lo == oldLo && hi == oldHi) break;
+    }
+    return 0.5 * (lo + hi);
+}
+
 /// For a light `depression` [rad] below the horizon, the elevation [rad] of
 /// the kink of the earth's shadow straight opposite the light: the view ray
 /// in the light's vertical plane that leaves the planet's shadow cylinder
@@ -146,13 +160,9 @@ double shadowKinkElevation(const AtmosphereParams& air, double depression) {
     // the anti-light point (beyond the top where the ray never leaves the
     // shadow below it).
     auto exitRadius = [&](double e) { return shadow.exitRadius(e, 0.0); };
-    double lo = depression, hi = depression + 0.2;  // exit above the top at lo, below it at hi
+    const double lo = depression, hi = depression + 0.2;  // exit above the top at lo, below it at hi
     if (!(exitRadius(hi) < shadow.rt)) return -1.0;
-    for (int it = 0; it < 80; ++it) {
-        const double mid = 0.5 * (lo + hi);
-        (exitRadius(mid) > shadow.rt ? lo : hi) = mid;
-    }
-    return 0.5 * (lo + hi);
+    return bisect([&](double e) { return -exitRadius(e); }, lo, hi, -shadow.rt);
 }
 
 /// Azimuth [rad] from the anti-light point at which the onset of the lit
@@ -164,27 +174,9 @@ double capAzimuth(const AtmosphereParams& air, double depression, double elevati
     const ShadowCylinder shadow(air, depression);
     // The exit radius falls as psi grows: the ray leaves the shadow sooner.
     auto exitRadius = [&](double psi) { return shadow.exitRadius(elevation, psi); };
-    double lo = 0.0, hi = 0.5 * kPi;
+    const double lo = 0.0, hi = 0.5 * kPi;
     if (!(exitRadius(lo) > shadow.rt) || exitRadius(hi) > shadow.rt) return -1.0;
-    for (int it = 0; it < 80; ++it) {
-        const double mid = 0.5 * (lo + hi);
-        (exitRadius(mid) > shadow.rt ? lo : hi) = mid;
-    }
-    return 0.5 * (lo + hi);
-}
-
-/// Where the increasing f crosses `goal` in [lo, hi], by bisection, stopped
-/// once the bracket no longer changes (two neighbouring doubles): a few
-/// dozen steps, where a fixed 100 ran on every solve of a light just below
-/// the horizon.
-template <class F>
-double bisect(F&& f, double lo, double hi, double goal) {
-    for (int it = 0; it < 100; ++it) {
-        const double mid = 0.5 * (lo + hi), oldLo = lo, oldHi = hi;
-        (f(mid) < goal ? lo : hi) = mid;
-        if (lo == oldLo && hi == oldHi) break;
-    }
-    return 0.5 * (lo + hi);
+    return bisect([&](double psi) { return -exitRadius(psi); }, lo, hi, -shadow.rt);
 }
 
 constexpr double kCapTopDeg = 0.5;  // the column warp at full strength up to this depression [deg]
