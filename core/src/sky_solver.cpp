@@ -107,6 +107,24 @@ struct SharedTables {
 
 constexpr std::size_t kSharedTables = 4;
 
+/// The atmosphere's tables, from a solver to a snapshot or back (the one
+/// list of what a rebuild writes; the same names on both sides).
+template <class From, class To>
+void copyAtmosphereTables(const From& from, To& to, bool multiple) {
+    to.shellHeight = from.shellHeight;
+    to.horizonCosD = from.horizonCosD;
+    to.horizonCos = from.horizonCos;
+    to.angleScale = from.angleScale;
+    to.layerCurvature = from.layerCurvature;
+    to.depth = from.depth;
+    to.density = from.density;
+    if (multiple) {
+        to.ms = from.ms;
+        to.psiShell = from.psiShell;
+        to.anisoShell = from.anisoShell;
+    }
+}
+
 class SharedTableCache {
 public:
     std::shared_ptr<const SharedTables> find(const AtmosphereParams& key, int layers, int angles,
@@ -978,18 +996,7 @@ bool SkySolver::Impl::adoptSharedTables(const AtmosphereParams& params) {
     if (!t) return false;
     // Same sizes as this solver's (same layers and angles): the copies reuse
     // the vectors' storage.
-    shellHeight = t->shellHeight;
-    horizonCosD = t->horizonCosD;
-    horizonCos = t->horizonCos;
-    angleScale = t->angleScale;
-    layerCurvature = t->layerCurvature;
-    depth = t->depth;
-    density = t->density;
-    if (multiple) {
-        ms = t->ms;
-        psiShell = t->psiShell;
-        anisoShell = t->anisoShell;
-    }
+    copyAtmosphereTables(*t, *this, multiple);
     return true;
 }
 
@@ -1000,18 +1007,7 @@ void SkySolver::Impl::shareTables() const {
     t->angles = angles;
     t->multiple = multiple;
     t->isotropic = desc.isotropicMultipleScattering;
-    t->shellHeight = shellHeight;
-    t->horizonCosD = horizonCosD;
-    t->horizonCos = horizonCos;
-    t->angleScale = angleScale;
-    t->layerCurvature = layerCurvature;
-    t->depth = depth;
-    t->density = density;
-    if (multiple) {
-        t->ms = ms;
-        t->psiShell = psiShell;
-        t->anisoShell = anisoShell;
-    }
+    copyAtmosphereTables(*this, *t, multiple);
     sharedTableCache().insert(std::move(t));
 }
 
