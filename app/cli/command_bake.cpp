@@ -135,7 +135,7 @@ constexpr const char* kRowMapping =
     "b (atan((el - c) / w) - atan(-c / w)) / (atan((pi/2 - c) / w) - atan(-c / w)) + "
     "d/2 (1 - u^0.35) below c, d/2 (1 + cbrt(u)) above, u = min(|el - c|, c) / c, with E = "
     "band_elevation_rad, a = band_share, c = shadow_elevation_rad, w = shadow_width_rad, b = shadow_share, "
-    "d = (16/63) cap_strength where cap_curvature > 0, else 0 "
+    "d = (16/63) cap_strength (1 + clamp((0.01 deg - c) / 0.005 deg, 0, 1)) where cap_curvature > 0, else 0 "
     "(row_mapping per step and light; EXR header aerialBandElevationRad, aerialBandShare, "
     "aerialShadowElevationRad, aerialShadowWidthRad, aerialShadowShare, aerialCapCurvature, "
     "aerialCapStrength; a term is absent when its share is 0). A light above 1 deg has a = b = 0: el_j = "

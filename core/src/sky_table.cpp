@@ -38,7 +38,7 @@ constexpr double kDeepestDeg = 18.0;     // depressions beyond this [deg] map as
 /// v(x) = (1 - a - b - d) x / sqrt(pi/2) + a atan(x^2 / E) / atan(pi/2 / E)
 ///        + b (atan((x^2 - c) / w) - atan(-c / w)) / (atan((pi/2 - c) / w) - atan(-c / w))
 ///        + d/2 (1 - u^p) below c, d/2 (1 + cbrt(u)) above, u = min(|x^2 - c|, c) / c
-///          (the cap's rows, d = kSkyCapRowShare g where the columns are warped,
+///          (the cap's rows, d = skyCapRowShare(c, g) where the columns are warped,
 ///          p = kSkyCapBelowPower: crowded towards c below it, crowded at the
 ///          cap's top above it, where the lit sky switches on within 1e-4 deg),
 /// increasing in x, with v(0) = 0 and v(sqrt(pi/2)) = 1.
@@ -61,7 +61,7 @@ struct RowMapping {
             shadowNorm = 1.0 / (std::atan((0.5 * kPi - c) / w) - shadowLow);
         }
         if (skyTableColumnsWarped(t)) {
-            d = std::min(kSkyCapRowShare * std::min(t.capStrength, 1.0), 1.0 - a - b);
+            d = std::min(skyCapRowShare(t.shadowElevation, t.capStrength), 1.0 - a - b);
             cap = t.shadowElevation;
         }
         plain = (1.0 - a - b - d) / std::sqrt(0.5 * kPi);
@@ -342,8 +342,8 @@ double skyTableAzimuth(const SkyTable& table, double column, double elevation) {
 // of the anti-light quarter from -0.3 to -0.01 deg, from the horizon to 6
 // deg up (SkyShadowOnset; 1.9% at -0.01 deg with probes within 3e-4 deg of
 // the kink before the cap's saturating columns). Lights less than
-// 0.005 deg down are not yet within 2% (3.0-3.9% from -0.002 to -0.0002
-// deg, just below the kink).
+// 0.005 deg down are not yet within 2% (2.3-3.7% from -0.002 to -0.0002
+// deg on a dense grid just below the kink, with the cap's rows doubled).
 void setSkyTableMapping(SkyTable& table, const AtmosphereParams& air, const glm::dvec3& lightDirection) {
     constexpr double kDeg = kPi / 180.0;
     const glm::dvec3 l = normalizedOr(lightDirection, glm::dvec3(0.0, 1.0, 0.0));
@@ -376,13 +376,13 @@ void setSkyTableMapping(SkyTable& table, const AtmosphereParams& air, const glm:
             table.shadowElevation = kink;
             // The cap of the earth's shadow around the anti-light point: its
             // onset el(psi) = c - k psi^2, k fitted where it crosses c / 2;
-            // its rows (kSkyCapRowShare g) come out of the band's.
+            // its rows (skyCapRowShare) come out of the band's.
             const double halfway = capAzimuth(air, depression * kDeg, 0.5 * kink);
             if (halfway > 0.0 && depression < kCapEndDeg) {
                 table.capCurvature = 0.5 * kink / (halfway * halfway);
                 table.capStrength =
                     std::clamp((kCapEndDeg - depression) / (kCapEndDeg - kCapTopDeg), 0.0, 1.0);
-                table.bandShare -= kSkyCapRowShare * table.capStrength;
+                table.bandShare -= skyCapRowShare(kink, table.capStrength);
             }
             const double rows = table.elevationCount - 1;
             // The kink's row with shadow share b (the mapping only, no

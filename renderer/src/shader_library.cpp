@@ -54,6 +54,9 @@ std::string coreConstantsGlsl() {
         {"kSkyCapNearSlope", kSkyCapNearSlope},
         {"kSkyCapRowShare", kSkyCapRowShare},
         {"kSkyCapBelowPower", kSkyCapBelowPower},
+        {"kSkyCapRowBoost", kSkyCapRowBoost},
+        {"kSkyCapBoostStart", kSkyCapBoostStartDeg * kPi / 180.0},  // [rad]
+        {"kSkyCapBoostFull", kSkyCapBoostFullDeg * kPi / 180.0},    // [rad]
     };
     std::string out = "// Generated from aerial_core's constants (shader_library.cpp, coreConstantsGlsl).\n";
     for (const auto& c : constants)

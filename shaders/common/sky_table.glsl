@@ -48,12 +48,14 @@ bool skyTableCapActive(vec2 cap, float c) { return cap.x > 0.0 && cap.y > 0.0 &&
 
 /// The table's row mapping v(el) in 0..1 (see the file comment); band =
 /// (E, a, c), w and b as there; cap as in skyTableCapActive (the cap's rows,
-/// d = kSkyCapRowShare g, uniform in (c - el)^kSkyCapBelowPower from 0 to c
+/// d = kSkyCapRowShare g (times the boost of skyCapRowShare), uniform in (c - el)^kSkyCapBelowPower from 0 to c
 /// and in cbrt(el - c) from c to 2c).
 float skyTableMappedRow(float elevation, vec3 band, float w, float b, vec2 cap) {
     float el = clamp(elevation, 0.0, 0.5 * kPi);
     float a = band.y;
-    float d = skyTableCapActive(cap, band.z) ? kSkyCapRowShare * min(cap.y, 1.0) : 0.0;
+    float boost = 1.0 + (kSkyCapRowBoost - 1.0) *
+                            clamp((kSkyCapBoostStart - band.z) / (kSkyCapBoostStart - kSkyCapBoostFull), 0.0, 1.0);
+    float d = skyTableCapActive(cap, band.z) ? kSkyCapRowShare * boost * clamp(cap.y, 0.0, 1.0) : 0.0;
     if (a <= 0.0 && b <= 0.0 && d <= 0.0) return sqrt(el / (0.5 * kPi));
     float v = (1.0 - a - b - d) * sqrt(el / (0.5 * kPi));
     if (a > 0.0) v += a * preciseAtan2(el, band.x) / preciseAtan2(0.5 * kPi, band.x);

@@ -138,7 +138,8 @@ double texelElevation(int j, const SkyTable& table) {
     // The mapping of <aerial/sky.hpp>, written out again: v(el) in 0..1.
     const double a = table.bandElevation > 0.0 ? table.bandShare : 0.0;
     const double b = table.shadowWidth > 0.0 ? table.shadowShare : 0.0;
-    const double d = skyTableColumnsWarped(table) ? kSkyCapRowShare * std::min(table.capStrength, 1.0) : 0.0;
+    const double d =
+        skyTableColumnsWarped(table) ? skyCapRowShare(table.shadowElevation, table.capStrength) : 0.0;
     auto mapped = [&](double el) {
         double v = (1.0 - a - b - d) * std::sqrt(el / (0.5 * kPi));
         if (d > 0.0) {

@@ -113,6 +113,8 @@
 //       kink's row for a light less than ~0.015 deg down, and elsewhere
 //       pulled E to ~0.5 deg, leaving the rows 4-6 deg up 1-2 deg apart);
 //     - a light 0-1 deg below the horizon also: d = (16/63) g of the rows
+//       (twice that for c below 0.005 deg, fading in from 0.01 deg:
+//       skyCapRowShare)
 //       (taken from the band's a) between 0 and 2c, half below c uniform in
 //       (c - el)^0.35 (kSkyCapBelowPower; 0.5 would be uniform in the
 //       azimuth of the cap's onset, the columns below; 0.35 crowds them
@@ -134,12 +136,13 @@
 //     straight opposite the light while E was bisected onto the kink and
 //     its floor was 0.8 deg; 2.2% at -0.01 deg 0.98 c up while the cap's
 //     rows below c were uniform in sqrt(c - el) and the columns beyond the
-//     band linear). Not yet within 2%: a light less than 0.005 deg below
-//     the horizon (1.8% at -0.005 deg, 3.0% at -0.002, 3.9% at -0.0005,
-//     3.4% at -0.0002, just below the kink 0.1-1 deg from the anti-light
-//     point; 2.2%, 3.1%, 5.4% and 5.6% on a denser grid from 0.7 c to c;
-//     2.4-10% before the changes just named, 3.2-83% before the band's
-//     saturation, below);
+//     band linear; -0.005 deg 1.8%). Not yet within 2%: a light less than
+//     0.005 deg below the horizon (1.6% at -0.002 deg, 2.0% at -0.0005,
+//     1.8% at -0.0002 in that sweep, but 2.3%, 2.6% and 3.7% on a denser
+//     grid from 0.7 c to c, just below the kink 0.04-0.4 deg from the
+//     anti-light point; 3.1-5.6% there before the cap's rows were doubled,
+//     2.4-10% before they crowded towards c and the columns beyond the
+//     band went quadratic, 3.2-83% before the band's saturation, below);
 //   * columns i = 0..azimuthCount-1 hold the azimuth relative to the light
 //       phi_i = 2 pi * i / azimuthCount,
 //     measured from the light's azimuth towards east (the same sense as the
@@ -326,6 +329,23 @@ inline constexpr double kSkyCapRowShare = 16.0 / 63.0;
 /// (SkyShadowOnset, worst of -0.002 .. -0.0002 deg): 10%, 7.4%, 3.9%,
 /// 5.1%, 3.9%; -0.01 .. -0.3 deg unchanged.
 inline constexpr double kSkyCapBelowPower = 0.35;
+/// For a light just set the cap's share grows by up to kSkyCapRowBoost, as
+/// the kink's elevation c falls from kSkyCapBoostStartDeg to
+/// kSkyCapBoostFullDeg (c ~ L there), taken from the band's share too:
+/// below c the lit sky beside the cap ramps up over a width that grows from
+/// ~0.3 to ~1.5 deg within 1% of c, which the rows between 0.94 c and
+/// 0.98 c did not follow (densest grid below the kink: -0.0005 deg 5.4% ->
+/// 2.6%, -0.0002 5.6% -> 3.7%, -0.002 3.1% -> 2.2%, -0.005 2.2% -> 1.7%).
+inline constexpr double kSkyCapRowBoost = 2.0;
+inline constexpr double kSkyCapBoostStartDeg = 0.01;
+inline constexpr double kSkyCapBoostFullDeg = 0.005;
+/// The cap's share of the rows, d = kSkyCapRowShare g times the boost, for
+/// the kink's elevation c [rad] and the cap's strength g.
+inline double skyCapRowShare(double c, double g) {
+    const double t = (kSkyCapBoostStartDeg - c * 180.0 / kPi) / (kSkyCapBoostStartDeg - kSkyCapBoostFullDeg);
+    const double boost = 1.0 + (kSkyCapRowBoost - 1.0) * (t > 1.0 ? 1.0 : t > 0.0 ? t : 0.0);
+    return kSkyCapRowShare * boost * (g > 1.0 ? 1.0 : g > 0.0 ? g : 0.0);
+}
 
 /// Continuous column (0..azimuthCount, wrapping) of an azimuth `relative`
 /// [rad] from the light's (any value, wrapped into [0, 2 pi)) in the row at
