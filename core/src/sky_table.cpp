@@ -221,9 +221,9 @@ constexpr double kCapEndDeg = 1.0;  // and none from this one
 /// cap's top the lit sky beside the cap ramps up far beyond the band (at
 /// 0.99 c from 0.07 to 1.5 deg from the anti-light point for a light
 /// 0.0005 deg down), and linear columns 0.3 deg apart there left it 10%
-/// low. With the
-/// strength g < 1 each psi knot is blended towards the uniform azimuth of
-/// its x, g psi + (1 - g) 2 pi x / N, and a towards 1, 1 - g (1 - a).
+/// low. With the strength g < 1 each psi knot is blended towards the
+/// uniform azimuth of its x, g psi + (1 - g) 2 pi x / N, and each a
+/// towards 1, 1 - g (1 - a).
 struct ColumnMapping {
     double x[5] = {0.0, 0.0, 0.0, 0.0, 0.0};
     double psi[5] = {0.0, 0.0, 0.0, 0.0, kPi};

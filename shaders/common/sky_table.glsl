@@ -48,8 +48,9 @@ bool skyTableCapActive(vec2 cap, float c) { return cap.x > 0.0 && cap.y > 0.0 &&
 
 /// The table's row mapping v(el) in 0..1 (see the file comment); band =
 /// (E, a, c), w and b as there; cap as in skyTableCapActive (the cap's rows,
-/// d = kSkyCapRowShare g (times the boost of skyCapRowShare), uniform in (c - el)^kSkyCapBelowPower from 0 to c
-/// and in cbrt(el - c) from c to 2c).
+/// d = kSkyCapRowShare g times the boost of skyCapRowShare (aerial/sky.hpp),
+/// uniform in (c - el)^kSkyCapBelowPower from 0 to c and in cbrt(el - c)
+/// from c to 2c).
 float skyTableMappedRow(float elevation, vec3 band, float w, float b, vec2 cap) {
     float el = clamp(elevation, 0.0, 0.5 * kPi);
     float a = band.y;

@@ -436,7 +436,7 @@ INSTANTIATE_TEST_SUITE_P(SunElevations, SkyOffTexel,
                          ::testing::Values(-6.0, -5.0, -4.0, -3.0, -2.0, -1.5, -1.0, -0.5, 0.0, 0.5, 1.0, 2.0,
                                            3.0, 5.0, 10.0, 30.0, 60.0, 90.0));
 
-// A light 0.01-0.3 deg below the horizon (sky.hpp, "Table mapping"):
+// A light 0.0002-0.3 deg below the horizon (sky.hpp, "Table mapping"):
 // opposite it the lit sky around the cap of the earth's shadow switches on
 // within thousandths of a degree (the red channel carries it: the blue is
 // spent on the grazing path to the light), along a parabola that drops to
