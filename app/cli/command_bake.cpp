@@ -147,16 +147,16 @@ constexpr const char* kColumnMapping =
     "the light's azimuth towards east; the azimuth wraps (column W = column 0) and column i equals column "
     "W - i. Where cap_curvature k > 0 and cap_strength g > 0 (a light less than 1 deg below the horizon) "
     "the columns of the row at elevation el are instead piecewise linear in psi = |pi - phi| (in "
-    "s(psi^2 - p1^2), s(y) = y / (y + S^2), S^2 = (150 c)^2 + (3 P)^2, between p1 and p2) through the "
-    "knots x = |i - W/2| = (0, 3, 15, 25, 64) W / 128 at psi = (0, p1, p2, p3, pi), p_m = g q_m + "
+    "s(psi^2 - p1^2)^0.7, s(y) = y / (y + S^2), S^2 = (150 c)^2 + (3 P)^2, between p1 and p2) through the "
+    "knots x = |i - W/2| = (0, 3, 15, 28, 64) W / 128 at psi = (0, p1, p2, p3, pi), p_m = g q_m + "
     "(1 - g) 2 pi x_m / W with q1 = P, q2 = sqrt((2 P)^2 + D^2), q3 = F2, P = min(sqrt(max(c - el, 0) / k), "
     "F), "
     "F = min(sqrt(c / k), pi/4), D = max(F / 2, min(1 deg, 500 c)), F2 = min(2 (F + max(F / 2, 1 deg)), "
     "3 pi / 4) (the onset of the "
     "lit sky around the cap of the earth's shadow, el = c - k psi^2, on column W/2 -+ 3 W / 128 in "
     "every row), except from p2 to p3 and from p3 to pi: psi = p + (q - p) (a t + (1 - a) t^2) from p to q, "
-    "t = (x - 15 W / 128) / (10 W / 128), a = 1 - 0.5 g from p2 to p3, t = (x - 25 W / 128) / "
-    "(39 W / 128), a = 1 - 0.7 g from p3 to pi";
+    "t = (x - 15 W / 128) / (13 W / 128), a = 1 - 0.75 g from p2 to p3, t = (x - 28 W / 128) / "
+    "(36 W / 128), a = 1 - 0.8 g from p3 to pi";
 
 constexpr const char* kRadianceMapping =
     "equirectangular over the whole sphere: pixel (x, y) of a W x H image looks along azimuth "

@@ -185,14 +185,15 @@ constexpr double kCapEndDeg = 1.0;  // and none from this one
 /// The column mapping of one row (sky.hpp, "Table mapping", columns), in
 /// half-columns x = 0..N/2 counted from the anti-light point and the
 /// azimuth psi = 0..pi from it: piecewise linear through five knots (in
-/// s(psi^2 - psiC^2), s(y) = y / (y + S^2), between a0 and a0 + a1),
+/// s(psi^2 - psiC^2)^q, s(y) = y / (y + S^2), q = kSkyCapBandPower,
+/// between a0 and a0 + a1),
 ///   x:   0, a0,    a0 + a1,                 xE,  N/2
 ///   psi: 0, psiC,  sqrt((G psiC)^2 + D^2),  psiE, pi
 /// where psiC = sqrt(max(c - el, 0) / k) is the onset of the lit sky around
 /// the cap of the earth's shadow in this row, D = max(psiC(0) / 2, min(1
 /// deg, kSkyCapBandPerKink c)) the band's width at the cap's top, G =
 /// kSkyCapOnsetGrowth, psiE = min(2 (psiC(0) + max(psiC(0) / 2, 1 deg)),
-/// 3 pi / 4), and (a0, a1, xE) = (3, 12, 25) / 128 of N. Only psiC depends
+/// 3 pi / 4), and (a0, a1, xE) = (3, 12, 28) / 128 of N. Only psiC depends
 /// on the row, so every column keeps its place relative to the onset from
 /// row to row. The band: at the cap's top (psiC = 0) the height above the
 /// onset is k psi^2, so uniform in psi^2 is uniform in it, up to where the
@@ -206,24 +207,26 @@ constexpr double kCapEndDeg = 1.0;  // and none from this one
 /// (kSkyCapSaturationGrowth), towards uniform in psi^2 again, and the band
 /// narrows with c below 0.002 deg (kSkyCapBandPerKink), while psiE keeps
 /// its 1 deg floor (narrowed with the band it left 4.8% on the horizon 2
-/// deg from the anti-light point of a light 0.0003 deg down).
+/// deg from the anti-light point of a light 0.0003 deg down). The power q
+/// crowds the band's first columns at the onset, where the lit sky starts
+/// as the square of the height above it.
 /// Lower down the lit sky ramps up over a width that grows with psiC (the
 /// level lines of the shadow's exit height fan out from the cap's top), so
 /// the band widens with G psiC (G = 1.25, 1.5 and 2 tried: 2 is best at
 /// -0.01 and -0.02 deg, SkyShadowOnset). The last segment, psiE .. pi, is
 /// quadratic: psi = psiE + (pi - psiE) (a t + (1 - a) t^2), t = 0..1 along
-/// it, a = kSkyCapFarSlope: its first columns lie at 0.3 of its mean
+/// it, a = kSkyCapFarSlope: its first columns lie at 0.2 of its mean
 /// spacing, where the lit sky beyond the band still climbs steeply near the
 /// horizon (a light 0.01 deg down: the radiance halves between 8.7 and 11
 /// deg from the anti-light point, where linear columns 4.4 deg apart put the
-/// pixel 16% high), its last (at the light's azimuth) 1.7 times it. The
+/// pixel 16% high), its last (at the light's azimuth) 1.8 times it. The
 /// segment before it is quadratic too (kSkyCapNearSlope): just below the
 /// cap's top the lit sky beside the cap ramps up far beyond the band (at
 /// 0.99 c from 0.07 to 1.5 deg from the anti-light point for a light
 /// 0.0005 deg down), and linear columns 0.3 deg apart there left it 10%
-/// low. With the strength g < 1 each psi knot is blended towards the
-/// uniform azimuth of its x, g psi + (1 - g) 2 pi x / N, and each a
-/// towards 1, 1 - g (1 - a).
+/// low (its first columns lie at kSkyCapNearSlope = 0.25 of its mean). With the strength g < 1 each psi knot
+/// is blended towards the uniform azimuth of its x, g psi + (1 - g) 2 pi x / N, and each a towards 1, 1 - g
+/// (1 - a).
 struct ColumnMapping {
     double x[5] = {0.0, 0.0, 0.0, 0.0, 0.0};
     double psi[5] = {0.0, 0.0, 0.0, 0.0, kPi};
@@ -261,8 +264,9 @@ struct ColumnMapping {
             if (p < psi[m + 1] || m == 3) {
                 if (!(psi[m + 1] > psi[m])) return x[m + 1];
                 const double q = std::min(p, kPi);
-                const double u = m == 1 ? bandCoordinate(q * q - psi[1] * psi[1]) /
-                                              bandCoordinate(psi[2] * psi[2] - psi[1] * psi[1])
+                const double u = m == 1 ? std::pow(bandCoordinate(q * q - psi[1] * psi[1]) /
+                                                       bandCoordinate(psi[2] * psi[2] - psi[1] * psi[1]),
+                                                   kSkyCapBandPower)
                                         : (q - psi[m]) / (psi[m + 1] - psi[m]);
                 // The last two segments' u = a t + (1 - a) t^2, solved for t without cancellation.
                 const double a = m == 3 ? farSlope : nearSlope;
@@ -277,9 +281,10 @@ struct ColumnMapping {
                 if (!(x[m + 1] > x[m])) return psi[m + 1];
                 const double t = (std::min(h, x[4]) - x[m]) / (x[m + 1] - x[m]);
                 const double a = m == 3 ? farSlope : nearSlope;
-                const double u = m >= 2 ? t * (a + (1.0 - a) * t) : t;
-                if (m == 1) {  // s(y) = u s(y2), solved for y
+                double u = m >= 2 ? t * (a + (1.0 - a) * t) : t;
+                if (m == 1) {  // s(y) = u^(1/q) s(y2), solved for y
                     const double y2 = psi[2] * psi[2] - psi[1] * psi[1];
+                    u = std::pow(u, 1.0 / kSkyCapBandPower);
                     return std::sqrt(psi[1] * psi[1] + u * y2 * saturation / (saturation + y2 * (1.0 - u)));
                 }
                 return psi[m] + (psi[m + 1] - psi[m]) * u;

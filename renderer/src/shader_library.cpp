@@ -50,6 +50,7 @@ std::string coreConstantsGlsl() {
         {"kSkyCapBandPerKink", kSkyCapBandPerKink},
         {"kSkyCapSaturation", kSkyCapSaturation},
         {"kSkyCapSaturationGrowth", kSkyCapSaturationGrowth},
+        {"kSkyCapBandPower", kSkyCapBandPower},
         {"kSkyCapFarSlope", kSkyCapFarSlope},
         {"kSkyCapNearSlope", kSkyCapNearSlope},
         {"kSkyCapRowShare", kSkyCapRowShare},

@@ -78,9 +78,10 @@ float skyTableQuadraticStep(float u, float a) { return 2.0 * u / (a + sqrt(a * a
 /// The column (0..columns) of an azimuth `relative` [0, 2 pi) from the light
 /// at elevation el (skyTableColumn, core/src/sky_table.cpp): uniform, or
 /// piecewise linear in the azimuth psi from the anti-light point (in
-/// s(psi^2 - psiC^2) between the second and third knot, s(y) = y / (y +
-/// S^2), S^2 = (kSkyCapSaturation c)^2 + (kSkyCapSaturationGrowth psiC)^2)
-/// through the knots x = (0, 3, 15, 25, 64) / 128 columns, psi = (0, psiC,
+/// s(psi^2 - psiC^2)^kSkyCapBandPower between the second and third knot,
+/// s(y) = y / (y + S^2), S^2 = (kSkyCapSaturation c)^2 +
+/// (kSkyCapSaturationGrowth psiC)^2) through the knots x = (0, 3, 15, 28,
+/// 64) / 128 columns, psi = (0, psiC,
 /// sqrt((G psiC)^2 + D^2), psiE, pi), psiC = sqrt(max(c - el, 0) / k) the
 /// onset of the lit sky around the cap of the earth's shadow, D =
 /// max(psiC(0) / 2, min(1 deg, kSkyCapBandPerKink c)), G =
@@ -112,7 +113,7 @@ float skyTableColumnAt(float relative, float el, float columns, float c, vec2 ca
     else if (psi < p2)
     {
         float y = psi * psi - p1 * p1, y2 = p2 * p2 - p1 * p1;
-        x = x1 + (x2 - x1) * (y / (y + saturation)) / (y2 / (y2 + saturation));
+        x = x1 + (x2 - x1) * pow((y / (y + saturation)) / (y2 / (y2 + saturation)), kSkyCapBandPower);
     }
     else if (psi < p3)
         x = x2 + (x3 - x2) * skyTableQuadraticStep((psi - p2) / (p3 - p2), 1.0 - g * (1.0 - kSkyCapNearSlope));

@@ -169,7 +169,7 @@ double texelAzimuth(int i, double elevation, const SkyTable& table) {
     const double n = table.azimuthCount;
     if (!skyTableColumnsWarped(table)) return 2.0 * kPi * i / n;
     // The column mapping of <aerial/sky.hpp>, written out again: piecewise
-    // linear in the azimuth psi from the anti-light point, in y / (y + S^2),
+    // linear in the azimuth psi from the anti-light point, in (y / (y + S^2))^q,
     // y = psi^2 - P^2, between the second and the third knot, quadratic in
     // the columns after the third.
     const double k = table.capCurvature, g = std::min(table.capStrength, 1.0), c = table.shadowElevation;
@@ -193,9 +193,9 @@ double texelAzimuth(int i, double elevation, const SkyTable& table) {
             const double a = 1.0 - g * (1.0 - (m == 3 ? kSkyCapFarSlope : kSkyCapNearSlope));
             const double u = m >= 2 ? a * t + (1.0 - a) * t * t : t;
             double psi = p0 + (p1 - p0) * u;
-            if (m == 1) {  // y / (y + S^2) = u y1 / (y1 + S^2), y1 = p1^2 - p0^2
-                const double y1 = p1 * p1 - p0 * p0;
-                const double y = u * y1 * s2 / (s2 + y1 * (1.0 - u));
+            if (m == 1) {  // (y / (y + S^2))^q = u (y1 / (y1 + S^2))^q, y1 = p1^2 - p0^2
+                const double y1 = p1 * p1 - p0 * p0, r = std::pow(u, 1.0 / kSkyCapBandPower);
+                const double y = r * y1 * s2 / (s2 + y1 * (1.0 - r));
                 psi = std::sqrt(p0 * p0 + y);
             }
             return i <= 0.5 * n ? kPi - psi : kPi + psi;

@@ -136,13 +136,17 @@
 //     straight opposite the light while E was bisected onto the kink and
 //     its floor was 0.8 deg; 2.2% at -0.01 deg 0.98 c up while the cap's
 //     rows below c were uniform in sqrt(c - el) and the columns beyond the
-//     band linear; -0.005 deg 1.8%). Not yet within 2%: a light less than
-//     0.005 deg below the horizon (1.6% at -0.002 deg, 2.0% at -0.0005,
-//     1.8% at -0.0002 in that sweep, but 2.3%, 2.6% and 3.7% on a denser
-//     grid from 0.7 c to c, just below the kink 0.04-0.4 deg from the
-//     anti-light point; 3.1-5.6% there before the cap's rows were doubled,
-//     2.4-10% before they crowded towards c and the columns beyond the
-//     band went quadratic, 3.2-83% before the band's saturation, below);
+//     band linear; -0.005 deg 1.8%), and on a denser grid just below the
+//     kink (0.7 c .. c x 0.005-8 deg from the anti-light point, in the
+//     sweep too) down to -0.001 deg (1.2% at -0.01 and -0.005 deg, 1.6% at
+//     -0.002 and -0.001). Not yet within 2%: a light less than 0.001 deg
+//     below the horizon (on the densest grid 2.15% at -0.0005 deg, 0.97 c
+//     up 0.4 deg from the anti-light point, and 2.5% at -0.0002, 0.999 c
+//     up 0.04 deg from it; 2.6% and 3.7% before the band's columns crowded
+//     at the onset and the segment beyond it got 13 columns, 3.1-5.6% before
+//     the cap's rows were doubled, 2.4-10% before they crowded towards c and
+//     the columns beyond the band went quadratic, 3.2-83% before the band's
+//     saturation, below);
 //   * columns i = 0..azimuthCount-1 hold the azimuth relative to the light
 //       phi_i = 2 pi * i / azimuthCount,
 //     measured from the light's azimuth towards east (the same sense as the
@@ -156,7 +160,7 @@
 //     thousandths of a degree. The columns of the row at elevation el are
 //     then piecewise linear in psi (in psi^2 between the second and third
 //     knot) through the knots
-//       x = |i - W/2| = (0, 3, 15, 25, 64) W / 128,
+//       x = |i - W/2| = (0, 3, 15, 28, 64) W / 128,
 //       psi = (0, P, sqrt((2 P)^2 + D^2), F2, pi),  P = min(sqrt(max(c - el, 0) / k), F),
 //       F = min(sqrt(c / k), pi/4),  D = max(F / 2, min(1 deg, 500 c)),
 //       F2 = min(2 (F + max(F / 2, 1 deg)), 3 pi / 4),
@@ -170,9 +174,10 @@
 //     with g towards 2 pi x / W (skyTableColumn, skyTableAzimuth): the onset lies on column W/2 -+ 3 W / 128
 //     in every row below the cap's top, with 12 columns in the band above it. Only P depends on the row, so
 //     between two rows the onset stays on its column (rows alone could not follow it: 256 x 1024 texels
-//     left 2.4% at -0.05 deg). The band is uniform in s(psi^2 - P^2), s(y) = y / (y + S^2), S^2 =
-//     (kSkyCapSaturation c)^2 + (kSkyCapSaturationGrowth P)^2: uniform in psi^2 where S is wide (at the
-//     cap's top the height above the onset is k psi^2), crowded towards P where the lit sky levels off
+//     left 2.4% at -0.05 deg). The band is uniform in s(psi^2 - P^2)^q, s(y) = y / (y + S^2), S^2 =
+//     (kSkyCapSaturation c)^2 + (kSkyCapSaturationGrowth P)^2, q = kSkyCapBandPower (0.7): uniform in
+//     (psi^2 - P^2)^q where S is wide (at the cap's top the height above the onset is k psi^2, and the
+//     lit sky starts as its square: the columns crowd at P), crowded towards P where the lit sky levels off
 //     within the band (at the cap's top ~100 c from the anti-light point, a sliver of the 1 deg band for a
 //     light just set, c ~ L), and widens with P (the 2 in its outer knot is kSkyCapOnsetGrowth): lower down
 //     the cap the lit sky ramps up over an azimuth that grows with P. The knots are mirror-symmetric, so
@@ -301,7 +306,7 @@ double skyTableElevation(const SkyTable& table, double row);
 /// and the knot psiE; and the band's least width [deg].
 inline constexpr double kSkyCapInsideShare = 3.0 / 128.0;
 inline constexpr double kSkyCapOnsetShare = 12.0 / 128.0;
-inline constexpr double kSkyCapNearShare = 10.0 / 128.0;
+inline constexpr double kSkyCapNearShare = 13.0 / 128.0;
 inline constexpr double kSkyCapMinBandDeg = 1.0;
 /// The onset band's outer knot: sqrt((kSkyCapOnsetGrowth P)^2 + D^2).
 inline constexpr double kSkyCapOnsetGrowth = 2.0;
@@ -315,12 +320,33 @@ inline constexpr double kSkyCapBandPerKink = 500.0;
 /// 1 deg band.
 inline constexpr double kSkyCapSaturation = 150.0;
 inline constexpr double kSkyCapSaturationGrowth = 3.0;
+/// The band's columns are uniform in (s(y) / s(y2))^kSkyCapBandPower (y2
+/// at its outer knot): they crowd at the onset P. At the cap's top the lit
+/// sky starts as ~y^2 over the band's first column (a light 0.001 deg
+/// down: within 0.0015 deg^2 of y, where s is ~one column), which linear
+/// columns rounded off (1.2-1.4% on the rows' centres, 2.4% between them,
+/// 0.9995 c, 0.03 deg from the anti-light point). 0.6, 0.65, 0.7, 0.75
+/// and 0.8 tried (the densest grid, worst of -0.01 .. -0.0002 deg): 0.7 is
+/// best (0.6 leaves the band's outer end too coarse at -0.0002 deg, 0.8
+/// the onset at -0.001 .. -0.005 deg).
+inline constexpr double kSkyCapBandPower = 0.7;
 /// The last segment (psiE .. pi) is quadratic in its columns, with this
-/// slope at psiE relative to its mean (and 2 - it at pi).
-inline constexpr double kSkyCapFarSlope = 0.3;
+/// slope at psiE relative to its mean (and 2 - it at pi). 0.3 until the
+/// segment gave 3 of its 39 columns to the one before it (below): with 36
+/// it left the horizon 4 deg from the anti-light point of a light 0.0005
+/// deg down 2.3% off; 0.2: 1.5%.
+inline constexpr double kSkyCapFarSlope = 0.2;
 /// The segment between the band's outer knot and psiE likewise (0.5 and
 /// 0.3 alike: -0.01 deg 2.2% -> 1.2% 0.98 c up, -0.005 deg 2.4% -> 1.9%).
-inline constexpr double kSkyCapNearSlope = 0.5;
+/// Just below the cap's top of a light less than 0.005 deg down (0.99 c)
+/// the lit sky beside the cap levels off 0.2-0.4 deg from the anti-light
+/// point, just beyond the band, where 10 columns at slope 0.5 were 0.13 deg
+/// apart: 3.7% low at -0.0002 deg. 13 columns (3 from the last segment;
+/// kSkyCapNearShare was 10 / 128) at slope 0.25: 1.6-1.8%; 16 columns
+/// left the last segment too coarse, slope 0.15 the lower rows (0.97 c).
+/// Rows instead (a third of the cap's rows more, out of the plain share)
+/// left the sky 5 deg up opposite the light 3.4% off.
+inline constexpr double kSkyCapNearSlope = 0.25;
 /// The share of the rows in the cap (0 .. c) and as far above it (c .. 2c),
 /// taken from the horizon band's: half uniform in (c - el)^kSkyCapBelowPower
 /// below c, half in cbrt(el - c) above.
@@ -336,6 +362,10 @@ inline constexpr double kSkyCapBelowPower = 0.35;
 /// ~0.3 to ~1.5 deg within 1% of c, which the rows between 0.94 c and
 /// 0.98 c did not follow (densest grid below the kink: -0.0005 deg 5.4% ->
 /// 2.6%, -0.0002 5.6% -> 3.7%, -0.002 3.1% -> 2.2%, -0.005 2.2% -> 1.7%).
+/// More (2.5, 3) out of the plain share left the upper sky too few rows
+/// (3.4% 5 deg up opposite a light 0.0002 deg down at 2.5, 12% 0.5-1.5 deg
+/// up at 3), and more of the cap's rows below c than above it made the
+/// cap's top worse (-0.0002 deg: 2.5% -> 3.7% with 0.65 of them below).
 inline constexpr double kSkyCapRowBoost = 2.0;
 inline constexpr double kSkyCapBoostStartDeg = 0.01;
 inline constexpr double kSkyCapBoostFullDeg = 0.005;
