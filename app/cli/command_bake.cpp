@@ -49,10 +49,10 @@
 //       layout's file name ("layout").
 //
 // Radiance in a world direction v (unit): for each light,
-//   el = asin(max(v.y, 0)), j = (H - 1) v(el)   (v: the row mapping, kRowMapping;
+//   el = asin(max(v.y, 0)), j = (H - 1) v(el)   (v: the row mapping, rowMappingText;
 //                                                  (H - 1) sqrt(el / (pi/2)) above 1 deg)
 //   phi = (atan2(v.x, -v.z) - light_azimuth_rad) mod 2 pi,  i = W phi / (2 pi)
-//                                                 (kColumnMapping: warped by cap_curvature)
+//                                                 (columnMappingText: warped by cap_curvature)
 //   I_R, I_M, I_ms = bilinear(i, j), the azimuth wrapping;  mu = dot(v, light)
 //   L += E (3/(16 pi) (1 + mu^2) I_R + P_CS(mu, g) I_M + I_ms),
 // E = illuminance_space_rgb of that light, g = parameters.atmosphere.mie.
@@ -129,34 +129,73 @@ constexpr const char* kChannelNames[kChannelCount] = {"rayleigh.R", "rayleigh.G"
                                                       "mie.R",      "mie.G",      "mie.B",
                                                       "multiple.R", "multiple.G", "multiple.B"};
 
-constexpr const char* kRowMapping =
-    "row j = EXR line y (y = 0 first) holds the elevation el_j [rad] above the horizon where v(el_j) = "
-    "j / (H - 1), v(el) = (1 - a - b - d) sqrt(el / (pi/2)) + a atan(el / E) / atan(pi/2 / E) + "
-    "b (atan((el - c) / w) - atan(-c / w)) / (atan((pi/2 - c) / w) - atan(-c / w)) + "
-    "d/2 (1 - u^0.35) below c, d/2 (1 + cbrt(u)) above, u = min(|el - c|, c) / c, with E = "
-    "band_elevation_rad, a = band_share, c = shadow_elevation_rad, w = shadow_width_rad, b = shadow_share, "
-    "d = (16/63) cap_strength (1 + clamp((0.01 deg - c) / 0.005 deg, 0, 1)) where cap_curvature > 0, else 0 "
-    "(row_mapping per step and light; EXR header aerialBandElevationRad, aerialBandShare, "
-    "aerialShadowElevationRad, aerialShadowWidthRad, aerialShadowShare, aerialCapCurvature, "
-    "aerialCapStrength; a term is absent when its share is 0). A light above 1 deg has a = b = 0: el_j = "
-    "pi/2 * (j / (H - 1))^2 (quadratic: more rows near "
-    "the horizon); a low or set light crowds rows towards the horizon and the earth's shadow. Directions "
-    "below the horizon use row 0";
-constexpr const char* kColumnMapping =
-    "column i = EXR pixel x holds the azimuth relative to the light phi_i = 2 pi i / W rad, measured from "
-    "the light's azimuth towards east; the azimuth wraps (column W = column 0) and column i equals column "
-    "W - i. Where cap_curvature k > 0 and cap_strength g > 0 (a light less than 1 deg below the horizon) "
-    "the columns of the row at elevation el are instead piecewise linear in psi = |pi - phi| (in "
-    "s(psi^2 - p1^2)^0.7, s(y) = y / (y + S^2), S^2 = (150 c)^2 + (3 P)^2, between p1 and p2) through the "
-    "knots x = |i - W/2| = (0, 3, 15, 28, 64) W / 128 at psi = (0, p1, p2, p3, pi), p_m = g q_m + "
-    "(1 - g) 2 pi x_m / W with q1 = P, q2 = sqrt((2 P)^2 + D^2), q3 = F2, P = min(sqrt(max(c - el, 0) / k), "
-    "F), "
-    "F = min(sqrt(c / k), pi/4), D = max(F / 2, min(1 deg, 500 c)), F2 = min(2 (F + max(F / 2, 1 deg)), "
-    "3 pi / 4) (the onset of the "
-    "lit sky around the cap of the earth's shadow, el = c - k psi^2, on column W/2 -+ 3 W / 128 in "
-    "every row), except from p2 to p3 and from p3 to pi: psi = p + (q - p) (a t + (1 - a) t^2) from p to q, "
-    "t = (x - 15 W / 128) / (13 W / 128), a = 1 - 0.75 g from p2 to p3, t = (x - 28 W / 128) / "
-    "(36 W / 128), a = 1 - 0.8 g from p3 to pi";
+/// A mapping constant as the manifest's text writes it (%g).
+std::string constantText(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", value);
+    return text;
+}
+
+/// The row mapping in words, its constants from <aerial/sky.hpp>.
+std::string rowMappingText() {
+    const std::string boostStart = constantText(kSkyCapBoostStartDeg);
+    const std::string boostRange = constantText(kSkyCapBoostStartDeg - kSkyCapBoostFullDeg);
+    const std::string logScale = constantText(kSkyCapLogScale);
+    return "row j = EXR line y (y = 0 first) holds the elevation el_j [rad] above the horizon where v(el_j) "
+           "= "
+           "j / (H - 1), v(el) = (1 - a - b - d) sqrt(el / (pi/2)) + a atan(el / E) / atan(pi/2 / E) + "
+           "b (atan((el - c) / w) - atan(-c / w)) / (atan((pi/2 - c) / w) - atan(-c / w)) + "
+           "d/2 (1 - B(u)) below c, d/2 (1 + cbrt(u)) above, u = min(|el - c|, c) / c, B(u) = (1 - m) u^" +
+           constantText(kSkyCapBelowPower) + " + m ln(1 + u / " + logScale + ") / ln(1 + 1 / " + logScale +
+           "), m = clamp((" + boostStart + " deg - c) / " + boostRange +
+           " deg, 0, 1), with E = band_elevation_rad, a = band_share, c = shadow_elevation_rad, w = "
+           "shadow_width_rad, b = shadow_share, d = " +
+           constantText(kSkyCapRowShare) + " cap_strength (1 + " + constantText(kSkyCapRowBoost - 1.0) +
+           " m) where cap_curvature > 0, else 0 "
+           "(row_mapping per step and light; EXR header aerialBandElevationRad, aerialBandShare, "
+           "aerialShadowElevationRad, aerialShadowWidthRad, aerialShadowShare, aerialCapCurvature, "
+           "aerialCapStrength; a term is absent when its share is 0). A light above 1 deg has a = b = 0: "
+           "el_j = "
+           "pi/2 * (j / (H - 1))^2 (quadratic: more rows near "
+           "the horizon); a low or set light crowds rows towards the horizon and the earth's shadow. "
+           "Directions "
+           "below the horizon use row 0";
+}
+
+/// The column mapping in words, its constants from <aerial/sky.hpp>.
+std::string columnMappingText() {
+    const double x1 = 128.0 * kSkyCapInsideShare, x2 = x1 + 128.0 * kSkyCapOnsetShare;
+    const double x3 = x2 + 128.0 * kSkyCapNearShare;
+    return "column i = EXR pixel x holds the azimuth relative to the light phi_i = 2 pi i / W rad, measured "
+           "from the light's azimuth towards east; the azimuth wraps (column W = column 0) and column i "
+           "equals "
+           "column W - i. Where cap_curvature k > 0 and cap_strength g > 0 (a light less than 1 deg below "
+           "the "
+           "horizon) the columns of the row at elevation el are instead piecewise linear in psi = |pi - phi| "
+           "(in s(psi^2 - p1^2)^" +
+           constantText(kSkyCapBandPower) + ", s(y) = y / (y + S^2), S^2 = (" +
+           constantText(kSkyCapSaturation) + " c)^2 + (" + constantText(kSkyCapSaturationGrowth) +
+           " P)^2 + (" + constantText(kSkyCapSaturationFloorDeg) +
+           " deg)^2, between p1 and p2) through the knots x = |i - W/2| = (0, " + constantText(x1) + ", " +
+           constantText(x2) + ", " + constantText(x3) +
+           ", 64) W / 128 at psi = (0, p1, p2, p3, pi), p_m = g q_m + (1 - g) 2 pi x_m / W with q1 = P, q2 = "
+           "sqrt((" +
+           constantText(kSkyCapOnsetGrowth) +
+           " P)^2 + D^2), q3 = F2, P = min(sqrt(max(c - el, 0) / k), F), "
+           "F = min(sqrt(c / k), pi/4), D = max(F / 2, min(" +
+           constantText(kSkyCapMinBandDeg) + " deg, " + constantText(kSkyCapBandPerKink) +
+           " c)), F2 = min(2 (F + max(F / 2, " + constantText(kSkyCapMinBandDeg) +
+           " deg)), 3 pi / 4) (the onset of the lit sky around the cap of the earth's shadow, el = c - k "
+           "psi^2, "
+           "on column W/2 -+ " +
+           constantText(x1) +
+           " W / 128 in every row), except from p2 to p3 and from p3 to pi: psi = p + (q - p) "
+           "(a t + (1 - a) t^2) from p to q, t = (x - " +
+           constantText(x2) + " W / 128) / (" + constantText(x3 - x2) + " W / 128), a = 1 - " +
+           constantText(1.0 - kSkyCapNearSlope) + " g from p2 to p3, t = (x - " + constantText(x3) +
+           " W / 128) / (" + constantText(64.0 - x3) + " W / 128), a = 1 - " +
+           constantText(1.0 - kSkyCapFarSlope) + " g from p3 to pi";
+}
 
 constexpr const char* kRadianceMapping =
     "equirectangular over the whole sphere: pixel (x, y) of a W x H image looks along azimuth "
@@ -215,7 +254,7 @@ void writeSkyExr(const fs::path& path, const SkyTable& table, const char* light,
                           Imf::V3dAttribute(Imath::V3d(table.lightDirection.x, table.lightDirection.y,
                                                        table.lightDirection.z)));
             header.insert("aerialMapping",
-                          Imf::StringAttribute(std::string(kRowMapping) + "; " + kColumnMapping));
+                          Imf::StringAttribute(rowMappingText() + "; " + columnMappingText()));
             header.insert("aerialBandElevationRad", Imf::DoubleAttribute(table.bandElevation));
             header.insert("aerialBandShare", Imf::DoubleAttribute(table.bandShare));
             header.insert("aerialShadowElevationRad", Imf::DoubleAttribute(table.shadowElevation));
@@ -432,8 +471,8 @@ int runBake(const BakeOptions& options) {
           {"compression", options.compression},
           {"channels", Json(std::vector<std::string>(std::begin(kChannelNames), std::end(kChannelNames)))},
           {"pixel", "pixel (x, y) = texel (column i = x, row j = y); y = 0 is the first line in the file"},
-          {"rows", kRowMapping},
-          {"columns", kColumnMapping},
+          {"rows", rowMappingText()},
+          {"columns", columnMappingText()},
           {"world_azimuth",
            "from north (-Z) towards east (+X): direction = (cos(el) sin(az), sin(el), -cos(el) cos(az)); "
            "light_azimuth_rad per step and light"},

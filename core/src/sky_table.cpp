@@ -37,15 +37,23 @@ constexpr double kDeepestDeg = 18.0;     // depressions beyond this [deg] map as
 /// The row mapping of a table (sky.hpp) as a function of x = sqrt(elevation):
 /// v(x) = (1 - a - b - d) x / sqrt(pi/2) + a atan(x^2 / E) / atan(pi/2 / E)
 ///        + b (atan((x^2 - c) / w) - atan(-c / w)) / (atan((pi/2 - c) / w) - atan(-c / w))
-///        + d/2 (1 - u^p) below c, d/2 (1 + cbrt(u)) above, u = min(|x^2 - c|, c) / c
+///        + d/2 (1 - B(u)) below c, d/2 (1 + cbrt(u)) above, u = min(|x^2 - c|, c) / c
 ///          (the cap's rows, d = skyCapRowShare(c, g) where the columns are warped,
-///          p = kSkyCapBelowPower: crowded towards c below it, crowded at the
+///          B = skyCapBelowRow, u^kSkyCapBelowPower going logarithmic with the
+///          boost: crowded towards c below it, crowded at the
 ///          cap's top above it, where the lit sky switches on within 1e-4 deg),
 /// increasing in x, with v(0) = 0 and v(sqrt(pi/2)) = 1.
 struct RowMapping {
     double plain = 1.0, a = 0.0, e = 1.0, bandNorm = 1.0;
     double b = 0.0, c = 0.0, w = 1.0, shadowLow = 0.0, shadowNorm = 1.0;
-    double d = 0.0, cap = 1.0;
+    double d = 0.0, cap = 1.0, logMix = 0.0;
+    /// The cap's rows below c as a function of u = (c - el) / c, 0..1
+    /// (skyCapBelowRow), and its derivative.
+    double belowMap(double u) const { return skyCapBelowRow(u, logMix); }
+    double belowSlope(double u) const {
+        return (1.0 - logMix) * kSkyCapBelowPower * std::pow(u, kSkyCapBelowPower - 1.0) +
+               logMix / ((u + kSkyCapLogScale) * std::log1p(1.0 / kSkyCapLogScale));
+    }
 
     explicit RowMapping(const SkyTable& t) {
         if (t.bandElevation > 0.0 && t.bandShare > 0.0) {
@@ -63,6 +71,7 @@ struct RowMapping {
         if (skyTableColumnsWarped(t)) {
             d = std::min(skyCapRowShare(t.shadowElevation, t.capStrength), 1.0 - a - b);
             cap = t.shadowElevation;
+            logMix = skyCapBoostFraction(cap);
         }
         plain = (1.0 - a - b - d) / std::sqrt(0.5 * kPi);
     }
@@ -74,7 +83,7 @@ struct RowMapping {
         if (b > 0.0) v += b * (std::atan((el - c) / w) - shadowLow) * shadowNorm;
         if (d > 0.0) {
             const double u = std::min(std::abs(el - cap), cap) / cap;
-            v += d * 0.5 * (el < cap ? 1.0 - std::pow(u, kSkyCapBelowPower) : 1.0 + std::cbrt(u));
+            v += d * 0.5 * (el < cap ? 1.0 - belowMap(u) : 1.0 + std::cbrt(u));
         }
         return v;
     }
@@ -83,8 +92,7 @@ struct RowMapping {
         double g = plain;
         if (d > 0.0 && el != cap && el < 2.0 * cap) {
             const double u = std::abs(el - cap) / cap;
-            g += el < cap ? d * kSkyCapBelowPower * x * std::pow(u, kSkyCapBelowPower - 1.0) / cap
-                          : d * x / (3.0 * cap * std::cbrt(u * u));
+            g += el < cap ? d * x * belowSlope(u) / cap : d * x / (3.0 * cap * std::cbrt(u * u));
         }
         if (a > 0.0) {
             const double r = el / e;
@@ -247,7 +255,8 @@ struct ColumnMapping {
         const double band = std::max(0.5 * foot, std::min(kSkyCapMinBandDeg * kDeg, kSkyCapBandPerKink * c));
         const double end = std::min(2.0 * (foot + wide), 0.75 * kPi);
         const double onset = std::min(std::sqrt(std::max(c - std::max(elevation, 0.0), 0.0) / k), foot);
-        saturation = std::pow(kSkyCapSaturation * c, 2) + std::pow(kSkyCapSaturationGrowth * onset, 2);
+        saturation = std::pow(kSkyCapSaturation * c, 2) + std::pow(kSkyCapSaturationGrowth * onset, 2) +
+                     std::pow(kSkyCapSaturationFloorDeg * kDeg, 2);
         x[1] = kSkyCapInsideShare * n;
         x[2] = x[1] + kSkyCapOnsetShare * n;
         x[3] = x[2] + kSkyCapNearShare * n;
@@ -346,9 +355,9 @@ double skyTableAzimuth(const SkyTable& table, double column, double elevation) {
 // columns (the onset on one column in every row): 0.8-1.3% in a dense sweep
 // of the anti-light quarter from -0.3 to -0.01 deg, from the horizon to 6
 // deg up (SkyShadowOnset; 1.9% at -0.01 deg with probes within 3e-4 deg of
-// the kink before the cap's saturating columns). Lights less than
-// 0.005 deg down are not yet within 2% (2.3-3.7% from -0.002 to -0.0002
-// deg on a dense grid just below the kink, with the cap's rows doubled).
+// the kink before the cap's saturating columns); for lights 0.005-0.0002
+// deg down the cap's rows are doubled and below c logarithmic, 1.2-1.8%
+// there on a dense grid just below the kink (sky.hpp).
 void setSkyTableMapping(SkyTable& table, const AtmosphereParams& air, const glm::dvec3& lightDirection) {
     constexpr double kDeg = kPi / 180.0;
     const glm::dvec3 l = normalizedOr(lightDirection, glm::dvec3(0.0, 1.0, 0.0));

@@ -50,11 +50,13 @@ std::string coreConstantsGlsl() {
         {"kSkyCapBandPerKink", kSkyCapBandPerKink},
         {"kSkyCapSaturation", kSkyCapSaturation},
         {"kSkyCapSaturationGrowth", kSkyCapSaturationGrowth},
+        {"kSkyCapSaturationFloor", kSkyCapSaturationFloorDeg * kPi / 180.0},  // [rad]
         {"kSkyCapBandPower", kSkyCapBandPower},
         {"kSkyCapFarSlope", kSkyCapFarSlope},
         {"kSkyCapNearSlope", kSkyCapNearSlope},
         {"kSkyCapRowShare", kSkyCapRowShare},
         {"kSkyCapBelowPower", kSkyCapBelowPower},
+        {"kSkyCapLogScale", kSkyCapLogScale},
         {"kSkyCapRowBoost", kSkyCapRowBoost},
         {"kSkyCapBoostStart", kSkyCapBoostStartDeg * kPi / 180.0},  // [rad]
         {"kSkyCapBoostFull", kSkyCapBoostFullDeg * kPi / 180.0},    // [rad]

@@ -49,13 +49,14 @@ bool skyTableCapActive(vec2 cap, float c) { return cap.x > 0.0 && cap.y > 0.0 &&
 /// The table's row mapping v(el) in 0..1 (see the file comment); band =
 /// (E, a, c), w and b as there; cap as in skyTableCapActive (the cap's rows,
 /// d = kSkyCapRowShare g times the boost of skyCapRowShare (aerial/sky.hpp),
-/// uniform in (c - el)^kSkyCapBelowPower from 0 to c and in cbrt(el - c)
-/// from c to 2c).
+/// uniform in (c - el)^kSkyCapBelowPower from 0 to c, blending into ln(1 + u
+/// / kSkyCapLogScale), u = (c - el) / c, with the boost (skyCapBelowRow), and
+/// in cbrt(el - c) from c to 2c).
 float skyTableMappedRow(float elevation, vec3 band, float w, float b, vec2 cap) {
     float el = clamp(elevation, 0.0, 0.5 * kPi);
     float a = band.y;
-    float boost = 1.0 + (kSkyCapRowBoost - 1.0) *
-                            clamp((kSkyCapBoostStart - band.z) / (kSkyCapBoostStart - kSkyCapBoostFull), 0.0, 1.0);
+    float boostFraction = clamp((kSkyCapBoostStart - band.z) / (kSkyCapBoostStart - kSkyCapBoostFull), 0.0, 1.0);
+    float boost = 1.0 + (kSkyCapRowBoost - 1.0) * boostFraction;
     float d = skyTableCapActive(cap, band.z) ? kSkyCapRowShare * boost * clamp(cap.y, 0.0, 1.0) : 0.0;
     if (a <= 0.0 && b <= 0.0 && d <= 0.0) return sqrt(el / (0.5 * kPi));
     float v = (1.0 - a - b - d) * sqrt(el / (0.5 * kPi));
@@ -66,7 +67,9 @@ float skyTableMappedRow(float elevation, vec3 band, float w, float b, vec2 cap) 
     }
     if (d > 0.0) {
         float u = min(abs(el - band.z), band.z) / band.z;
-        v += d * 0.5 * (el < band.z ? 1.0 - pow(u, kSkyCapBelowPower) : 1.0 + pow(u, 1.0 / 3.0));
+        float below = mix(pow(u, kSkyCapBelowPower), log(1.0 + u / kSkyCapLogScale) / log(1.0 + 1.0 / kSkyCapLogScale),
+                          boostFraction);
+        v += d * 0.5 * (el < band.z ? 1.0 - below : 1.0 + pow(u, 1.0 / 3.0));
     }
     return v;
 }
@@ -80,7 +83,7 @@ float skyTableQuadraticStep(float u, float a) { return 2.0 * u / (a + sqrt(a * a
 /// piecewise linear in the azimuth psi from the anti-light point (in
 /// s(psi^2 - psiC^2)^kSkyCapBandPower between the second and third knot,
 /// s(y) = y / (y + S^2), S^2 = (kSkyCapSaturation c)^2 +
-/// (kSkyCapSaturationGrowth psiC)^2) through the knots x = (0, 3, 15, 28,
+/// (kSkyCapSaturationGrowth psiC)^2 + kSkyCapSaturationFloor^2) through the knots x = (0, 3, 15, 28,
 /// 64) / 128 columns, psi = (0, psiC,
 /// sqrt((G psiC)^2 + D^2), psiE, pi), psiC = sqrt(max(c - el, 0) / k) the
 /// onset of the lit sky around the cap of the earth's shadow, D =
@@ -98,7 +101,8 @@ float skyTableColumnAt(float relative, float el, float columns, float c, vec2 ca
     float end = min(2.0 * (foot + max(0.5 * foot, kSkyCapMinBand)), 0.75 * kPi);
     float onset = min(sqrt(max(c - max(el, 0.0), 0.0) / k), foot);
     float saturation = kSkyCapSaturation * c * kSkyCapSaturation * c +
-                       kSkyCapSaturationGrowth * onset * kSkyCapSaturationGrowth * onset;
+                       kSkyCapSaturationGrowth * onset * kSkyCapSaturationGrowth * onset +
+                       kSkyCapSaturationFloor * kSkyCapSaturationFloor;
     float x1 = kSkyCapInsideShare * columns, x2 = x1 + kSkyCapOnsetShare * columns;
     float x3 = x2 + kSkyCapNearShare * columns, x4 = 0.5 * columns;
     float p1 = g * onset + (1.0 - g) * 2.0 * kPi * x1 / columns;

@@ -130,7 +130,10 @@ TEST_F(SkyVsCpu, SetSunRowMappingMatchesSkyRadiance) {
     // horizon. Error per pixel and channel relative to max(|cpu|, 1e-3 of
     // the brightest CPU value in the image): the shadow side is dark, and
     // there float rounding of the row alone is relative.
-    for (const double depression : {1.5, 0.07}) {
+    // And one 0.002 deg below it, whose cap's rows below the kink are
+    // logarithmic (skyCapBelowRow) and whose band's columns saturate at the
+    // floor (kSkyCapSaturationFloorDeg), seen also at the cap's top.
+    for (const double depression : {1.5, 0.07, 0.002}) {
         const double t = std::tan(depression * kPi / 180.0);
         const glm::dvec3 sun = glm::normalize(glm::dvec3(0.3, -t * std::hypot(0.3, 0.9), -0.9));
         const SkyPair sky = solveSky(AtmosphereParams{}, sun, moonDirection());
@@ -159,7 +162,14 @@ TEST_F(SkyVsCpu, SetSunRowMappingMatchesSkyRadiance) {
             // pixel row in the views above)
             {eye + 10.0 * glm::dvec3(-flat.x * std::cos(0.05236) + flat.z * std::sin(0.05236), 0.0007,
                                      -flat.z * std::cos(0.05236) - flat.x * std::sin(0.05236)),
-             0.003}};
+             0.003},
+            // the top of the cap of a light just set, where the lit sky
+            // beside it ramps up (0.004 x 0.007 deg around 0.98 c up, 0.25
+            // deg from the anti-light point)
+            {eye + 10.0 * glm::dvec3(-flat.x * std::cos(4.4e-3) + flat.z * std::sin(4.4e-3),
+                                     0.98 * sky.sun.shadowElevation,
+                                     -flat.z * std::cos(4.4e-3) - flat.x * std::sin(4.4e-3)),
+             1.2e-4}};
         for (const View& view : views) {
             const Camera camera = skyCamera(eye, view.target, view.fov);
             const Image image = renderSky(r, camera, air);
@@ -183,7 +193,7 @@ TEST_F(SkyVsCpu, SetSunRowMappingMatchesSkyRadiance) {
                             std::fabs(image.at(x, y, c) - want) / std::max(std::fabs(want), 1e-3 * brightest);
                         worst = std::max(worst, std::isfinite(error) ? error : 1e30);
                     }
-            std::printf("[ measured ] set sun (-%.2f deg): max error %.3g\n", depression, worst);
+            std::printf("[ measured ] set sun (-%g deg): max error %.3g\n", depression, worst);
             EXPECT_LT(worst, 1e-3) << depression;
         }
     }

@@ -145,7 +145,14 @@ double texelElevation(int j, const SkyTable& table) {
         if (d > 0.0) {
             const double c = table.shadowElevation;
             const double u = std::min(std::abs(el - c), c) / c;
-            v += 0.5 * d * (el < c ? 1.0 - std::pow(u, kSkyCapBelowPower) : 1.0 + std::pow(u, 1.0 / 3.0));
+            // Below c: u^p blending into ln(1 + u / s) / ln(1 + 1 / s) as the boost comes in.
+            const double m = std::clamp(
+                (kSkyCapBoostStartDeg - c * 180.0 / kPi) / (kSkyCapBoostStartDeg - kSkyCapBoostFullDeg), 0.0,
+                1.0);
+            const double below =
+                (1.0 - m) * std::pow(u, kSkyCapBelowPower) +
+                m * std::log(1.0 + u / kSkyCapLogScale) / std::log(1.0 + 1.0 / kSkyCapLogScale);
+            v += 0.5 * d * (el < c ? 1.0 - below : 1.0 + std::pow(u, 1.0 / 3.0));
         }
         if (a > 0.0)
             v += a * std::atan(el / table.bandElevation) / std::atan(0.5 * kPi / table.bandElevation);
@@ -178,7 +185,8 @@ double texelAzimuth(int i, double elevation, const SkyTable& table) {
     const double band = std::max(0.5 * foot, std::min(floorBand, kSkyCapBandPerKink * c));
     const double wide = std::max(0.5 * foot, floorBand);
     const double onset = std::min(std::sqrt(std::max(c - elevation, 0.0) / k), foot);
-    const double s2 = std::pow(kSkyCapSaturation * c, 2) + std::pow(kSkyCapSaturationGrowth * onset, 2);
+    const double s2 = std::pow(kSkyCapSaturation * c, 2) + std::pow(kSkyCapSaturationGrowth * onset, 2) +
+                      std::pow(kSkyCapSaturationFloorDeg * kPi / 180.0, 2);
     const double xs[5] = {0.0, kSkyCapInsideShare * n, (kSkyCapInsideShare + kSkyCapOnsetShare) * n,
                           (kSkyCapInsideShare + kSkyCapOnsetShare + kSkyCapNearShare) * n, 0.5 * n};
     const double cap[5] = {0.0, onset, std::hypot(kSkyCapOnsetGrowth * onset, band),

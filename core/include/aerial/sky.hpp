@@ -121,7 +121,9 @@
 //       towards c, where the lit sky beside the cap ramps up over a width
 //       that grows fast with c - el: at 0.99 c from 0.07 to 1.5 deg from the
 //       anti-light point for a light 0.0005 deg down, against ~0.05 deg at
-//       c), half above c uniform in cbrt(el - c), crowded at the
+//       c; blending into uniform in ln(1 + u / 5e-4), u = (c - el) / c, as
+//       the boost comes in, kSkyCapLogScale), half above c uniform in
+//       cbrt(el - c), crowded at the
 //       cap's top where straight opposite the light the lit sky switches on
 //       within a few 1e-4 deg for a light 0.01 deg down; g = capStrength, 1
 //       up to 0.5 deg, fading to 0 at 1 deg;
@@ -138,15 +140,18 @@
 //     rows below c were uniform in sqrt(c - el) and the columns beyond the
 //     band linear; -0.005 deg 1.8%), and on a denser grid just below the
 //     kink (0.7 c .. c x 0.005-8 deg from the anti-light point, in the
-//     sweep too) down to -0.001 deg (1.2% at -0.01 and -0.005 deg, 1.6% at
-//     -0.002 and -0.001). Not yet within 2%: a light less than 0.001 deg
-//     below the horizon (on the densest grid 2.15% at -0.0005 deg, 0.97 c
-//     up 0.4 deg from the anti-light point, and 2.5% at -0.0002, 0.999 c
-//     up 0.04 deg from it; 2.6% and 3.7% before the band's columns crowded
-//     at the onset and the segment beyond it got 13 columns, 3.1-5.6% before
-//     the cap's rows were doubled, 2.4-10% before they crowded towards c and
-//     the columns beyond the band went quadratic, 3.2-83% before the band's
-//     saturation, below);
+//     sweep too) down to -0.0002 deg (1.2% at -0.01 and -0.005 deg, 1.6% at
+//     -0.002, 1.2-1.8% from -0.001 to -0.0002 deg; 2.15% at -0.0005 deg and
+//     2.5% at -0.0002 before the cap's rows below c went logarithmic for a
+//     light less than 0.005 deg down and the band's saturation got its floor
+//     (kSkyCapLogScale, kSkyCapSaturationFloorDeg), 2.6% and 3.7% before
+//     the band's columns crowded at the onset and the segment beyond it got
+//     13 columns, 3.1-5.6% before the cap's rows were doubled, 2.4-10%
+//     before they crowded towards c and the columns beyond the band went
+//     quadratic, 3.2-83% before the band's saturation, below). Closer to
+//     the horizon still the cap shrinks faster than the rows follow it:
+//     -0.0001 deg 2.6%, -0.00005 deg 4.5% (a few hundredths of a second of
+//     a sunset, 1e-4 deg tall);
 //   * columns i = 0..azimuthCount-1 hold the azimuth relative to the light
 //       phi_i = 2 pi * i / azimuthCount,
 //     measured from the light's azimuth towards east (the same sense as the
@@ -195,6 +200,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <cmath>
 #include <memory>
 #include <vector>
 
@@ -320,6 +326,14 @@ inline constexpr double kSkyCapBandPerKink = 500.0;
 /// 1 deg band.
 inline constexpr double kSkyCapSaturation = 150.0;
 inline constexpr double kSkyCapSaturationGrowth = 3.0;
+/// And S^2 gains (kSkyCapSaturationFloorDeg)^2 [deg^2]: for a light less
+/// than 0.001 deg down the lit sky at the cap's top levels off ~0.15 deg
+/// from the anti-light point (~750 c), and with S = 150 c (0.03 deg at
+/// -0.0002 deg) the band's last column spanned 0.08-0.2 deg there: 2.5% at
+/// the kink 0.1 deg out. 0.015, 0.02, 0.025, 0.03, 0.04, 0.06 deg tried
+/// (SkyShadowOnset at -0.0002 deg): 1.8, 1.6, 1.6, 1.8, 1.8, 3.2%; lights
+/// 0.002 deg and more down (150 c >= 0.3 deg) hardly see it.
+inline constexpr double kSkyCapSaturationFloorDeg = 0.02;
 /// The band's columns are uniform in (s(y) / s(y2))^kSkyCapBandPower (y2
 /// at its outer knot): they crowd at the onset P. At the cap's top the lit
 /// sky starts as ~y^2 over the band's first column (a light 0.001 deg
@@ -371,10 +385,36 @@ inline constexpr double kSkyCapBoostStartDeg = 0.01;
 inline constexpr double kSkyCapBoostFullDeg = 0.005;
 /// The cap's share of the rows, d = kSkyCapRowShare g times the boost, for
 /// the kink's elevation c [rad] and the cap's strength g.
-inline double skyCapRowShare(double c, double g) {
+/// Below c the cap's rows go from uniform in u^kSkyCapBelowPower (u = (c -
+/// el) / c) to uniform in ln(1 + u / kSkyCapLogScale) as the boost comes in
+/// (skyCapBoostFraction): for a light less than 0.005 deg down the lit sky
+/// beside the cap changes its shape about as ln u, from ~0.05 deg wide at
+/// 0.9998 c to 1.5 deg at 0.97 c, and u^0.35 put one row in 3.6e-4 <= u <=
+/// 2.6e-3 and one in 0.019 <= u <= 0.036 (densest grid: -0.0002 deg 2.5%
+/// at 0.999 c, -0.0005 deg 2.2% at 0.97 c). With ln(1 + u / 5e-4) the 16
+/// rows below c are ~1.6x apart in u from 3e-4 to 0.2 (-0.0002 deg 1.9%,
+/// -0.0005 1.4%, before the saturation's floor below). 3e-4, 2e-4 and
+/// 1e-3 tried (worst of -0.005 .. -0.0002 deg: 1.94, 1.96, 1.91%); the
+/// log alone also for c above 0.01 deg (8
+/// rows below c): too few rows low in the cap (-0.01 deg 2.5-3.1% at 0.3 c,
+/// 8 deg out).
+inline constexpr double kSkyCapLogScale = 5e-4;
+/// 0..1, how far the cap's rows are boosted for the kink's elevation c
+/// [rad]: 0 above kSkyCapBoostStartDeg, 1 below kSkyCapBoostFullDeg.
+inline double skyCapBoostFraction(double c) {
     const double t = (kSkyCapBoostStartDeg - c * 180.0 / kPi) / (kSkyCapBoostStartDeg - kSkyCapBoostFullDeg);
-    const double boost = 1.0 + (kSkyCapRowBoost - 1.0) * (t > 1.0 ? 1.0 : t > 0.0 ? t : 0.0);
+    return t > 1.0 ? 1.0 : t > 0.0 ? t : 0.0;
+}
+inline double skyCapRowShare(double c, double g) {
+    const double boost = 1.0 + (kSkyCapRowBoost - 1.0) * skyCapBoostFraction(c);
     return kSkyCapRowShare * boost * (g > 1.0 ? 1.0 : g > 0.0 ? g : 0.0);
+}
+/// The cap's rows below c: 0 at u = (c - el) / c = 0 (the kink) to 1 at u = 1
+/// (the horizon), (1 - m) u^kSkyCapBelowPower + m ln(1 + u / kSkyCapLogScale)
+/// / ln(1 + 1 / kSkyCapLogScale) for the boost fraction m.
+inline double skyCapBelowRow(double u, double m) {
+    return (1.0 - m) * std::pow(u, kSkyCapBelowPower) +
+           m * std::log1p(u / kSkyCapLogScale) / std::log1p(1.0 / kSkyCapLogScale);
 }
 
 /// Continuous column (0..azimuthCount, wrapping) of an azimuth `relative`
