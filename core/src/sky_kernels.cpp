@@ -10,6 +10,7 @@
 // errno paths block the vectoriser). The four kernels are compiled for
 // AVX-512, AVX2 and the baseline (target_clones, chosen at load time).
 #include "sky_kernels.hpp"
+#include "sky_multiple.hpp"
 
 #include <algorithm>
 #include <bit>
@@ -368,6 +369,82 @@ AERIAL_INLINE void shellAniso(int count, int nc, float alpha, float beta, int n,
     }
 }
 
+/// Node interval of position t in [0, nodes] among the view nodes 0, 0.5,
+/// 1.5, .., nodes - 0.5, nodes (sky_multiple.hpp, kMsViewZeniths): the
+/// lower node's index and the fraction towards the next.
+AERIAL_INLINE void viewInterval(float t, int nodes, int& index, float& fraction) {
+    const float last = float(nodes) - 0.5f;
+    if (!(t > 0.5f)) {
+        index = 0;
+        fraction = maxZero(t) * 2.0f;
+    } else if (t >= last) {
+        index = nodes;
+        fraction = std::min((t - last) * 2.0f, 1.0f);
+    } else {
+        const float k = std::floor(t - 0.5f);
+        index = static_cast<int>(k) + 1;
+        fraction = t - 0.5f - k;
+    }
+}
+
+/// Cosines of the view nodes' azimuths from the light (1, the azimuth
+/// nodes', -1), falling.
+struct ViewAzimuths {
+    float cosine[kMsViewAzimuths];
+    ViewAzimuths() {
+        cosine[0] = 1.0f;
+        for (int a = 0; a < kMsAzimuths; ++a) cosine[a + 1] = float(std::cos(msAzimuthNode(a).angle));
+        cosine[kMsViewAzimuths - 1] = -1.0f;
+    }
+};
+
+/// Mie's last scattering of the second and third orders' fields where their
+/// l <= 2 series misses it (sky_multiple.hpp, "Mie's last scattering"):
+/// adds W_M Psi C(v) per column, C / Psi (`views`, the shell's first plane,
+/// planes `stride` apart) bilinear between the view nodes, in the zenith
+/// position of the view at the shell (`viewUp`, the same for every column)
+/// and in the cosine of its azimuth from the light's horizontal (per
+/// column, from shellAniso's `across`), and linear between the LUT columns
+/// (`column`).
+AERIAL_INLINE void shellViews(int count, int nc, const float* __restrict views, std::size_t stride,
+                              float viewUp, const float wm[3], const float* __restrict across,
+                              const float* __restrict column, const float* __restrict psi,
+                              float* __restrict acc) {
+    static const ViewAzimuths nodes;
+    // cos theta = -sign(x) x^2, t = (x + 1) kMsZeniths / 2 (msZenithNode).
+    const float root = fastSqrt(minNonNegative(std::abs(viewUp), 1.0f));
+    const float x = viewUp > 0.0f ? -root : root;
+    int iz = 0;
+    float fz = 0.0f;
+    viewInterval((x + 1.0f) * 0.5f * float(kMsZeniths), kMsZeniths, iz, fz);
+    const float sinV = fastSqrt(maxZero(1.0f - viewUp * viewUp));
+    const float invSinV = sinV > 1e-6f ? 1.0f / sinV : 0.0f;
+    const std::size_t lower = std::size_t(iz) * kMsViewAzimuths * 3, upper = lower + kMsViewAzimuths * 3;
+    for (int i = 0; i < count; ++i) {
+        const float cosPhi = sinV > 1e-6f ? std::clamp(across[i] * invSinV, -1.0f, 1.0f) : 1.0f;
+        int ia = 0;
+        for (int a = 1; a < kMsViewAzimuths - 1; ++a) ia += cosPhi < nodes.cosine[a] ? 1 : 0;
+        const float fa = (nodes.cosine[ia] - cosPhi) / (nodes.cosine[ia] - nodes.cosine[ia + 1]);
+        const float col = column[i];
+        const int ic = static_cast<int>(col);
+        const float fc = col - float(ic);
+        // The four nodes' planes (channel 0) and their bilinear weights.
+        const float* p00 = views + (lower + std::size_t(ia) * 3) * stride + std::size_t(ic);
+        const float* p01 = p00 + 3 * stride;
+        const float* p10 = views + (upper + std::size_t(ia) * 3) * stride + std::size_t(ic);
+        const float* p11 = p10 + 3 * stride;
+        const float w00 = (1.0f - fz) * (1.0f - fa), w01 = (1.0f - fz) * fa, w10 = fz * (1.0f - fa),
+                    w11 = fz * fa;
+        for (int c = 0; c < 3; ++c) {
+            const std::size_t o = std::size_t(c) * stride;
+            const float lo = w00 * p00[o] + w01 * p01[o] + w10 * p10[o] + w11 * p11[o];
+            const float hi = w00 * p00[o + 1] + w01 * p01[o + 1] + w10 * p10[o + 1] + w11 * p11[o + 1];
+            acc[std::size_t(c) * nc + std::size_t(i)] +=
+                wm[c] * psi[std::size_t(c) * nc + std::size_t(i)] * (lo + fc * (hi - lo));
+        }
+    }
+}
+
 /// A layer's multiple scattering for every column: msA Psi(a) + msB Psi(b)
 /// (Psi linear along the layer, weighted by the layer's sigma_s T shape,
 /// Mie's weights times its isotropic share `mieShare`; the anisotropy is
@@ -438,7 +515,7 @@ AERIAL_INLINE void lightAtShell(const SkyKernelArgs& a, int j, float maxU) {
             const int before =
                 j == a.layers ? (j - 1) / stride * stride : j - stride;  // evaluated neighbours
             const int after = std::min(j + stride, a.layers);
-            float kq[3], kd[3];
+            float kq[3], kd[3], km[3];
             for (int c = 0; c < 3; ++c) {
                 // Shell i's weights: msB of the layer below, msA of the one above.
                 auto weight = [&](int i, int x) {
@@ -454,10 +531,33 @@ AERIAL_INLINE void lightAtShell(const SkyKernelArgs& a, int j, float maxU) {
                 }
                 kq[c] = wr * a.rayleighBand2 + wm * a.mieBand2;
                 kd[c] = wm * a.mieBand1;
+                km[c] = wm;
             }
             shellAniso(kMsSkyColumns, nc, alpha, beta, n, a.aniso + std::size_t(j) * n, rows * n,
                        j == 0 ? a.viewUp0 : a.layer[j - 1].viewUp, a.nuA, a.nuB, kq, kd, a.msCosPhi,
                        r + 10 * nc, a.anisoPoly, r + 13 * nc, r + 14 * nc, a.acc + 6 * nc);
+            const int viewStride = 2 * stride;
+            if (a.views != nullptr && (j % viewStride == 0 || j == a.layers)) {
+                const int vBefore = j == a.layers ? (j - 1) / viewStride * viewStride : j - viewStride;
+                const int vAfter = std::min(j + viewStride, a.layers);
+                for (int c = 0; c < 3; ++c) {
+                    auto weight = [&](int i) {
+                        return (i > 0 ? a.layer[i - 1].msB[3 + c] : 0.0f) +
+                               (i < a.layers ? a.layer[i].msA[3 + c] : 0.0f);
+                    };
+                    float wm = weight(j);
+                    for (int i = std::max(vBefore + 1, 1); i < vAfter; ++i) {
+                        if (i == j) continue;
+                        wm += (i < j ? float(i - vBefore) / float(j - vBefore)
+                                     : float(vAfter - i) / float(vAfter - j)) *
+                              weight(i);
+                    }
+                    km[c] = wm;
+                }
+                const float viewUp = j == 0 ? a.viewUp0 : a.layer[j - 1].viewUp;
+                shellViews(kMsSkyColumns, nc, a.views + std::size_t(j) * kMsViews * 3 * n, std::size_t(n),
+                           viewUp, km, r + 14 * nc, r + 13 * nc, r + 10 * nc, a.acc + 6 * nc);
+            }
         }
     }
 }

@@ -136,6 +136,11 @@ struct SkyKernelArgs {
     /// [kMsAniso * 3][layers + 1][psiCosines] (D_u, D_s, B_0, B_u, B_s, B_us, each rgb);
     /// null: none (isotropic, or single scattering only).
     const float* aniso;
+    /// What the series misses of Mie's last scattering of the second and third
+    /// orders' field, C_v / Psi at the view nodes (sky_multiple.hpp),
+    /// resampled at the shells, [layers + 1][kMsViews * 3][psiCosines]; null
+    /// with aniso.
+    const float* views;
     float viewUp0;   // the view ray's zenith cosine at the viewer (sin of the row's elevation)
     float nuA, nuB;  // the view ray's cosine to the light: nuA + nuB cos(phi)
     float rayleighBand2, mieBand1, mieBand2;  // MultipleScatteringLut's Legendre factors

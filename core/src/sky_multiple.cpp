@@ -49,6 +49,15 @@ MsNode azimuthAt(double t) {
     return {kPi * std::pow(u, kMsAzimuthPower), kMsAzimuthPower * std::pow(u, kMsAzimuthPower - 1.0) * du};
 }
 
+/// The view nodes' positions in the zenith and azimuth mappings: the
+/// poles / 0 and pi, and the nodes' midpoints between them.
+double viewZenithPosition(int iz) {
+    return iz == 0 ? 0.0 : (iz == kMsViewZeniths - 1 ? double(kMsZeniths) : iz - 0.5);
+}
+double viewAzimuthPosition(int ia) {
+    return ia == 0 ? 0.0 : (ia == kMsViewAzimuths - 1 ? double(kMsAzimuths) : ia - 0.5);
+}
+
 }  // namespace
 
 // The nodes are asked for in the LUT's inner loops: computed once (pow
@@ -110,6 +119,7 @@ MultipleScatteringLut::MultipleScatteringLut() {
     fms_.assign(std::size_t(kMsRows) * 3, 0.0);
     groundSky_.assign(std::size_t(kMsCosines) * 3, 0.0);
     aniso_.assign(std::size_t(kMsRows) * kMsCosines * kMsAniso * 3, 0.0f);
+    viewMatrix_.assign(std::size_t(kMsViews) * kMsDirections, 0.0f);
     phaseR_.assign(std::size_t(kMsZeniths) * kMsCombos, float(0.25 / kPi));
     phaseM_.assign(phaseR_.size(), float(0.25 / kPi));
     comboP_.assign(kMsCombos, 0.0f);
@@ -129,6 +139,11 @@ MultipleScatteringLut::MultipleScatteringLut() {
 void MultipleScatteringLut::setAtmosphere(const AtmosphereParams& air, bool isotropic) {
     air_ = air;
     isotropic_ = isotropic;
+    // The build's field and views of Mie's last scattering (releaseViews).
+    if (!isotropic) {
+        field_.assign(std::size_t(kMsRows) * 3 * kMsDirections * kMsCosines, 0.0f);
+        views_.assign(std::size_t(kMsRows) * kMsViews * 3 * kMsCosines, 0.0f);
+    }
     buildPhases();
     density_ = densityConstants(air);
     const double top = std::max(air.atmosphereRadius - air.planetRadius, 0.0);
@@ -229,6 +244,65 @@ void MultipleScatteringLut::buildPhases() {
                 phaseR_[at] = float(sumR / sumW);
                 phaseM_[at] = float(sumM / sumW);
             }
+        }
+    }
+    buildViewMatrix();
+}
+
+// The quadrature of Mie's last scattering towards each view node v:
+// K[v][d] = 4 pi w_z w_a times Mie's phase outside the straight-on cone
+// (P_M' = P_M where the angle exceeds kMsStraightOnConeDeg, 0 within it:
+// that share goes straight on along the view ray), averaged over direction
+// d's cell and its mirror (the field is the same in both), so that
+// integral P_M'(omega . v) L(omega) d omega = sum_d K[v][d] L(d).
+void MultipleScatteringLut::buildViewMatrix() {
+    const double g = std::isfinite(air_.mieAnisotropy) ? std::clamp(air_.mieAnisotropy, -0.999, 0.999) : 0.0;
+    const double coneCos = std::cos(kMsStraightOnConeDeg * kPi / 180.0);
+    // Cornette-Shanks (miePhase) as k (1 + mu^2) / (1 + g^2 - 2 g mu)^1.5.
+    const double k = 3.0 / (8.0 * kPi) * (1.0 - g * g) / (2.0 + g * g);
+    constexpr int n = kMsPhaseSubsamples;
+    struct Sub {
+        double cosT, sinT, cosP, sinP, weight;
+    };
+    std::vector<Sub> sub(std::size_t(kMsDirections) * n * n);
+    for (int z = 0; z < kMsZeniths; ++z)
+        for (int a = 0; a < kMsAzimuths; ++a)
+            for (int i = 0; i < n; ++i)
+                for (int q = 0; q < n; ++q) {
+                    const MsNode zz = zenithAt(z + (i + 0.5) / n), aa = azimuthAt(a + (q + 0.5) / n);
+                    sub[((std::size_t(z) * kMsAzimuths + std::size_t(a)) * n + std::size_t(i)) * n +
+                        std::size_t(q)] = {zz.angle, std::sqrt(std::max(1.0 - zz.angle * zz.angle, 0.0)),
+                                           std::cos(aa.angle), std::sin(aa.angle), zz.weight * aa.weight};
+                }
+    for (int v = 0; v < kMsViews; ++v) {
+        const int iz = v / kMsViewAzimuths, ia = v % kMsViewAzimuths;
+        float* row = viewMatrix_.data() + std::size_t(v) * kMsDirections;
+        if ((iz == 0 || iz == kMsViewZeniths - 1) && ia > 0) {  // a pole: the same for every azimuth
+            const float* first = row - std::size_t(ia) * kMsDirections;
+            std::copy(first, first + kMsDirections, row);
+            continue;
+        }
+        const double cv = zenithAt(viewZenithPosition(iz)).angle;
+        const double sv = std::sqrt(std::max(1.0 - cv * cv, 0.0));
+        const double phiV = azimuthAt(viewAzimuthPosition(ia)).angle;
+        const double cpv = sv * std::cos(phiV), spv = sv * std::sin(phiV);
+        for (int d = 0; d < kMsDirections; ++d) {
+            double sumP = 0.0, sumW = 0.0;
+            const Sub* x = sub.data() + std::size_t(d) * n * n;
+            for (int q = 0; q < n * n; ++q) {
+                // The direction and its mirror: cos(phi -+ phi_v).
+                const double base = x[q].cosT * cv, along = x[q].sinT * x[q].cosP * cpv,
+                             across = x[q].sinT * x[q].sinP * spv;
+                for (const double mu : {base + along + across, base + along - across}) {
+                    if (mu <= coneCos) {
+                        const double e = 1.0 + g * g - 2.0 * g * mu;
+                        sumP += x[q].weight * (1.0 + mu * mu) / (e * std::sqrt(e));
+                    }
+                }
+                sumW += 2.0 * x[q].weight;
+            }
+            const MsNode zn = msZenithNode(d / kMsAzimuths), an = msAzimuthNode(d % kMsAzimuths);
+            row[d] = float(4.0 * kPi * zn.weight * an.weight * k * sumP / sumW);
         }
     }
 }
@@ -369,6 +443,8 @@ void MultipleScatteringLut::buildSecondOrderRow(int row, MsScratch& s) {
     // (integral L_1 cos d omega).
     const bool groundRow = row == 0;
     if (groundRow) std::fill(s.groundSky.begin(), s.groundSky.end(), 0.0);
+    // L_1 per direction for Mie's last scattering (none with isotropic phases).
+    float* field = isotropic_ ? nullptr : field_.data() + std::size_t(row) * 3 * kMsDirections * kMsCosines;
     double albedoPi[3];
     for (int c = 0; c < 3; ++c) albedoPi[c] = std::clamp(air_.groundAlbedo[c], 0.0, 1.0) / kPi;
     for (int z = 0; z < kMsZeniths; ++z) {
@@ -456,6 +532,11 @@ void MultipleScatteringLut::buildSecondOrderRow(int row, MsScratch& s) {
                     double(phR[m]) * s.acc[at] + double(phM[m]) * s.accMie[at] + s.ground[at] * albedoPi[c];
                 for (int k = 0; k < kMsAniso; ++k) s.moment[std::size_t(k) * channel + at] += f[k] * l1;
                 if (skyward) s.groundSky[at] += 4.0 * kPi * cosT * l1;
+                if (field != nullptr) {
+                    const int j = m / kMsAzimuths, a = m % kMsAzimuths;
+                    field[(std::size_t(c) * kMsDirections + std::size_t(z * kMsAzimuths + a)) * kMsCosines +
+                          std::size_t(j)] = float(l1 / wz);
+                }
             }
         }
     }
@@ -480,6 +561,60 @@ void MultipleScatteringLut::buildSecondOrderRow(int row, MsScratch& s) {
                 for (int a = 0; a < kMsAzimuths; ++a)
                     e += msAzimuthNode(a).weight * s.groundSky[std::size_t(c * kMsCombos + j * kMsAzimuths + a)];
                 groundSky_[std::size_t(j) * 3 + c] = std::isfinite(e) ? std::max(e, 0.0) : 0.0;
+            }
+        }
+    }
+}
+
+// C_v = (integral P_M' L over the sphere) - (1 - f_s) J - (the l <= 2
+// series of Mie's remainder for L), at every view node v and sun column:
+// what the series (and its window) miss of Mie's last scattering of the
+// field L = L_1 + L_2 / (1 - f_ms) whose moments the series uses (field_,
+// aniso_, both complete once the third order's row is), J = J_2 + J_3 / (1 -
+// f_ms) its mean.
+void MultipleScatteringLut::storeViews(int row) {
+    const double m1 = mieBand1(), m2 = mieBand2(), isotropicShare = 1.0 - mieStraightOn();
+    constexpr int block = 16;  // sun columns per register block
+    static_assert(kMsCosines % block == 0);
+    for (int c = 0; c < 3; ++c) {
+        const double scale = 1.0 / (1.0 - fms_[std::size_t(row) * 3 + std::size_t(c)]);
+        const float* field =
+            field_.data() + (std::size_t(row) * 3 + std::size_t(c)) * kMsDirections * kMsCosines;
+        for (int v = 0; v < kMsViews; ++v) {
+            const int iz = v / kMsViewAzimuths, ia = v % kMsViewAzimuths;
+            float* out = views_.data() +
+                         ((std::size_t(row) * kMsViews + std::size_t(v)) * 3 + std::size_t(c)) * kMsCosines;
+            if ((iz == 0 || iz == kMsViewZeniths - 1) && ia > 0) {
+                // A pole: the same for every azimuth.
+                const float* first = out - std::size_t(ia) * 3 * kMsCosines;
+                std::copy(first, first + kMsCosines, out);
+                continue;
+            }
+            float sum[kMsCosines];
+            const float* k = viewMatrix_.data() + std::size_t(v) * kMsDirections;
+            for (int j0 = 0; j0 < kMsCosines; j0 += block) {
+                float acc[block] = {};
+                for (int d = 0; d < kMsDirections; ++d) {
+                    const float w = k[d];
+                    const float* __restrict l = field + std::size_t(d) * kMsCosines + std::size_t(j0);
+                    for (int j = 0; j < block; ++j) acc[j] += w * l[j];
+                }
+                std::copy(acc, acc + block, sum + j0);
+            }
+            const double vu = zenithAt(viewZenithPosition(iz)).angle;
+            const double phi = azimuthAt(viewAzimuthPosition(ia)).angle;
+            const double vs = std::sqrt(std::max(1.0 - vu * vu, 0.0)) * std::cos(phi);
+            for (int j = 0; j < kMsCosines; ++j) {
+                const std::size_t at = (std::size_t(row) * kMsCosines + std::size_t(j)) * 3 + std::size_t(c);
+                // D_u, D_s, B_0, B_u, B_s, B_us, channels 3 apart (storeMoments).
+                const float* m = aniso_.data() +
+                                 (std::size_t(row) * kMsCosines + std::size_t(j)) * kMsAniso * 3 +
+                                 std::size_t(c);
+                const double series = m1 * (m[0] * vu + m[3] * vs) +
+                                      m2 * (m[6] + m[9] * vu * vu + m[12] * vs * vs + m[15] * vu * vs);
+                const double mean = order_[0][at] + scale * order_[1][at];
+                const double value = sum[j] - isotropicShare * mean - series;
+                out[j] = std::isfinite(value) ? float(value) : 0.0f;
             }
         }
     }
@@ -577,6 +712,16 @@ void MultipleScatteringLut::buildOrderRow(int row, int order, MsScratch& s) {
         }
         for (std::size_t at = 0; at < s.orderAcc.size(); ++at) s.orderAcc[at] += s.acc[at];
         if (moments) {
+            // L_2 into the field of Mie's last scattering, times the tail's 1 / (1 - f_ms) as its moments.
+            float* field = field_.data() + std::size_t(row) * 3 * kMsDirections * kMsCosines;
+            for (int c = 0; c < 3; ++c) {
+                const double scale = 1.0 / ((1.0 - fms_[std::size_t(row) * 3 + c]) * node.weight);
+                for (int m = 0; m < kMsCombos; ++m)
+                    field[(std::size_t(c) * kMsDirections + std::size_t(z * kMsAzimuths + m % kMsAzimuths)) *
+                              kMsCosines +
+                          std::size_t(m / kMsAzimuths)] +=
+                        float(scale * s.acc[std::size_t(c * kMsCombos + m)]);
+            }
             const std::size_t channel = std::size_t(3) * kMsCombos;
             const double f[kMsAniso] = {
                 1.0, s.cosT, s.sinT, s.cosT * s.cosT, s.sinT * s.sinT, s.cosT * s.sinT};
@@ -603,9 +748,16 @@ void MultipleScatteringLut::buildOrderRow(int row, int order, MsScratch& s) {
             }
         }
     }
+    if (moments) storeViews(row);
 }
 
-void MultipleScatteringLut::resample(const double* heights, int count, float* out, float* aniso) const {
+void MultipleScatteringLut::releaseViews() {
+    std::vector<float>().swap(field_);
+    std::vector<float>().swap(views_);
+}
+
+void MultipleScatteringLut::resample(const double* heights, int count, float* out, float* aniso,
+                                     float* mie) const {
     for (int k = 0; k < count; ++k) {
         const double h = heights[k];
         int i = 0;
@@ -623,6 +775,20 @@ void MultipleScatteringLut::resample(const double* heights, int count, float* ou
                     const double x = aniso_[((std::size_t(i) * kMsCosines + j) * kMsAniso + n) * 3 + c];
                     const double y = aniso_[(((std::size_t(i) + 1) * kMsCosines + j) * kMsAniso + n) * 3 + c];
                     aniso[(std::size_t(n * 3 + c) * count + k) * kMsCosines + std::size_t(j)] =
+                        float(std::clamp((x + f * (y - x)) / psi, -kMsAnisoRatio, kMsAnisoRatio));
+                }
+                if (mie == nullptr) continue;
+                for (int v = 0; v < kMsViews; ++v) {
+                    const auto at = [&](int row) {
+                        if (views_.empty()) return 0.0;  // released (releaseViews) or isotropic
+                        return double(
+                            views_[((std::size_t(row) * kMsViews + std::size_t(v)) * 3 + std::size_t(c)) *
+                                       kMsCosines +
+                                   std::size_t(j)]);
+                    };
+                    const double x = at(i), y = at(i + 1);
+                    mie[((std::size_t(k) * kMsViews + std::size_t(v)) * 3 + std::size_t(c)) * kMsCosines +
+                        std::size_t(j)] =
                         float(std::clamp((x + f * (y - x)) / psi, -kMsAnisoRatio, kMsAnisoRatio));
                 }
             }

@@ -120,10 +120,52 @@
 //   and 0.046 at -2 deg; the whole e^(f tau_M) without the window, "delta-M
 //   extinction" with f_s = f, 1.2x in red at -2 deg). Rows whose share stays
 //   under 0.5% of their single scattering (above ~7 deg) leave it out
-//   (sky_solver.cpp, kStraightOnFloor): it costs ~3% of the solve. What
-//   is left at -6 deg is the series' backward lobe: for a field from the
-//   sunlit air towards the sun it sends ~0.3 of the isotropic radiance back
-//   (the phase: 0.06), the anti-solar horizon 1.12x in red.
+//   (sky_solver.cpp, kStraightOnFloor): it costs ~3% of the solve.
+//   Mie's last scattering. The series still missed most of what Mie's
+//   peak does with a peaked field: at a point in the earth's shadow in
+//   twilight the sunlit air is a band a few degrees above the horizon
+//   towards the sun, and Mie's peak (half its light within ~25 deg) sends
+//   it on towards a viewer who looks at the sun's side of the horizon; the
+//   window reconstructs that band as a lobe as wide as (1 + cos)^2. At the
+//   ground, for the sun 6.4 deg down (mu_s = -0.11), Mie's remainder
+//   towards the horizon under the sun came to 5.1 J_2 in blue by quadrature
+//   of L_1 over the 96 directions, and to 1.6 J_2 by the series; straight
+//   opposite, -0.81 and -0.71 J_2. Against the path tracer at 262144 paths
+//   (converged to ~1%; at the 16384 of the test the twilight references
+//   move by up to 6%) the sun's side of the horizon was 12% too dark in
+//   blue at -6 deg and 5.5% at -2 deg, the anti-solar horizon 6% too
+//   bright in red at -6 deg. So the LUT also keeps, for the field whose
+//   moments the series uses, L = L_1 + L_2 / (1 - f_ms) (field_), what the
+//   series misses at kMsViews view nodes v (the 12 zenith nodes and the
+//   two poles x the 4 azimuth nodes, 0 and pi):
+//     C_v = integral P_M'(omega . v) L(omega) d omega - (1 - f_s) J - A_M(v),
+//   with P_M' Mie's phase outside the straight-on cone (its share within
+//   goes along the view ray, above), J = J_2 + J_3 / (1 - f_ms) the
+//   field's mean and A_M(v) the series with the coefficients above; the
+//   integral over the 96 directions, with the phase averaged over each
+//   direction's cell and its mirror (viewMatrix_, once per g: Mie's peak is
+//   narrower than the cells). The sky solver adds sigma_M C(v) at every
+//   eighth shell of each view ray (with the skipped shells' weights, as A_X
+//   at every fourth), bilinear between the view nodes (the view's zenith
+//   position at the shell, the cosine of its azimuth from the sun's
+//   horizontal) and linear between the sun-cosine columns (sky_kernels.cpp,
+//   shellViews). The series stays for Rayleigh (exact to l = 2) and carries
+//   Mie's part of the later orders. Against the path tracer (262144
+//   paths, seed 11) the worst per sun went from -6: 0.122, -2: 0.055, 0:
+//   0.042, +2: 0.027, +10: 0.013, +30: 0.013, +90: 0.013 to 0.042, 0.030,
+//   0.027, 0.023, 0.019, 0.016, 0.014 (with L_1 alone: 0.054 at -6 deg;
+//   every fourth shell instead of eighth: the same to 0.001; every
+//   sixteenth: 0.070 at -6 deg). Tried first and left: the window replaced
+//   by a Henyey-Greenstein lobe fitted to the field's first (or first and
+//   second) moments, whose convolution with Mie's is closed: -6 deg 0.095,
+//   but -2 deg 0.064 (the lobe is round, the field a band); a straight-on
+//   cone of 0 to 15 deg moved the sun's side of the horizon by 0.3%. Cost
+//   (2 threads, best of 15, the old and new library run alternately, three
+//   times): the per-sun solve +0.03 to +0.05 ms (0.58-0.97 -> 0.63-1.01 ms;
+//   sun -0.5 deg, the slowest, 0.96 -> 0.99-1.01), the LUT's rebuild after
+//   a change of the atmosphere 6.9 -> 8.7-8.9 ms, and 2.3 ms more where
+//   Mie's g changes (viewMatrix_, on one thread). Its fields and views
+//   (~2.3 MB) are freed once resampled (releaseViews).
 //
 // Discretisation (documented in <aerial/sky.hpp>):
 //  * rows: kMsRows heights, the shells of kMsLayers equal-mass layers from
@@ -178,6 +220,13 @@ inline constexpr int kMsPhaseSubsamples = 8;    // per cell side, for the cell-a
 inline constexpr double kMsPsiFloor = 1e-30;    // 1/sr, below any sky that shows (resample)
 inline constexpr double kMsAnisoRatio = 100.0;  // |A_n / Psi| at most (resample)
 inline constexpr double kMsStraightOnConeDeg = 6.0;  // Mie's straight-on share ("Mie's truncation")
+/// The field's directions (one side of the sun's vertical plane), and the
+/// view nodes of Mie's last scattering ("Mie's last scattering"): the
+/// poles and the zenith nodes, times 0, the azimuth nodes and pi from the sun.
+inline constexpr int kMsDirections = kMsZeniths * kMsAzimuths;
+inline constexpr int kMsViewZeniths = kMsZeniths + 2;
+inline constexpr int kMsViewAzimuths = kMsAzimuths + 2;
+inline constexpr int kMsViews = kMsViewZeniths * kMsViewAzimuths;
 
 /// A quadrature node: a zenith cosine or an azimuth [rad], and its weight.
 struct MsNode {
@@ -232,7 +281,15 @@ public:
     /// 1.3x between columns 1.2 deg apart): out[c][k][kMsCosines] = -ln Psi
     /// (Psi floored at kMsPsiFloor), and the anisotropy relative to Psi,
     /// aniso[n * 3 + c][k][kMsCosines] = A_n / Psi (clamped to +-kMsAnisoRatio).
-    void resample(const double* heights, int count, float* out, float* aniso) const;
+    /// With `mie` (non-null where anisotropic()) also what the series misses
+    /// of Mie's last scattering at the view nodes, relative to Psi:
+    /// mie[k][v][c][kMsCosines] = C_v / Psi (clamped to +-kMsAnisoRatio), v =
+    /// iz * kMsViewAzimuths + ia ("Mie's last scattering").
+    void resample(const double* heights, int count, float* out, float* aniso, float* mie) const;
+    /// Frees what only the build and resample use (the fields and views of
+    /// Mie's last scattering, ~2.3 MB): a solver's shared snapshot copies
+    /// the LUT. setAtmosphere allocates them again.
+    void releaseViews();
     /// Whether the anisotropic remainder is in use (not isotropic, see setAtmosphere).
     bool anisotropic() const { return !isotropic_; }
     /// The Legendre coefficients 3 g_1 / (4 pi) and 5 g_2 / (4 pi) of Rayleigh
@@ -257,6 +314,8 @@ private:
     void segmentDepths(int i, const MsScratch& s, double scatter[3], double tau[3],
                        double* mieScatter = nullptr) const;
     void buildPhases();
+    void buildViewMatrix();
+    void storeViews(int row);
 
     AtmosphereParams air_;
     MsScratch groundScratch_;
@@ -278,6 +337,9 @@ private:
     double mieStraightOn_ = 0.0;          // f_s (mieStraightOn)
     std::vector<float> phaseR_, phaseM_;  // cell-averaged first phases [kMsZeniths][kMsCombos]
     std::vector<float> aniso_;            // [kMsRows][kMsCosines][kMsAniso][3]
+    std::vector<float> viewMatrix_;       // [kMsViews][kMsDirections] (buildViewMatrix)
+    std::vector<float> views_;            // C_v [kMsRows][kMsViews][3][kMsCosines]
+    std::vector<float> field_;            // L_1 + L_2 / (1 - f_ms) [kMsRows][3][kMsDirections][kMsCosines]
 };
 
 }  // namespace aerial::detail

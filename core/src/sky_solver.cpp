@@ -100,7 +100,7 @@ struct SharedTables {
     int layers = 0, angles = 0;
     bool multiple = false, isotropic = false;
     std::vector<double> shellHeight, horizonCosD;
-    std::vector<float> horizonCos, angleScale, layerCurvature, depth, psiShell, anisoShell;
+    std::vector<float> horizonCos, angleScale, layerCurvature, depth, psiShell, anisoShell, viewShell;
     DensityConstants density;
     MultipleScatteringLut ms;
 };
@@ -122,6 +122,7 @@ void copyAtmosphereTables(const From& from, To& to, bool multiple) {
         to.ms = from.ms;
         to.psiShell = from.psiShell;
         to.anisoShell = from.anisoShell;
+        to.viewShell = from.viewShell;
     }
 }
 
@@ -287,6 +288,7 @@ SkySolver::Impl::Impl(const SkySolverDesc& d) : desc(d) {
     multiple = !desc.singleScatteringOnly;
     psiShell.assign(std::size_t(3) * (layers + 1) * kMsCosines, 0.0f);
     anisoShell.assign(std::size_t(kMsAniso) * 3 * (layers + 1) * kMsCosines, 0.0f);
+    viewShell.assign(std::size_t(kMsViews) * 3 * (layers + 1) * kMsCosines, 0.0f);
     scratch.resize(std::size_t(desc.threadCount));
     for (Scratch& s : scratch) {
         s.crossing.assign(std::size_t(layers) + 1, 0.0);
@@ -358,7 +360,9 @@ void SkySolver::Impl::run(bool rebuild, int rowBegin, int rowEnd) {
             while (ready.load(std::memory_order_acquire) < std::max(order - 2, 1) * msRows) std::this_thread::yield();
             ms.buildOrderRow(index % msRows, order, msScratch[std::size_t(worker)]);
             if (psiRowsDone.fetch_add(1, std::memory_order_acq_rel) + 1 == orderItems) {
-                ms.resample(shellHeight.data(), layers + 1, psiShell.data(), anisoShell.data());
+                ms.resample(shellHeight.data(), layers + 1, psiShell.data(), anisoShell.data(),
+                            ms.anisotropic() ? viewShell.data() : nullptr);
+                ms.releaseViews();
                 psiReady.store(true, std::memory_order_release);
             }
             return;
@@ -633,6 +637,7 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
     k.psi = multiple ? psiShell.data() : nullptr;
     k.psiCosines = kMsCosines;
     k.aniso = multiple && ms.anisotropic() ? anisoShell.data() : nullptr;
+    k.views = k.aniso != nullptr ? viewShell.data() : nullptr;
     k.anisoPoly = s.anisoPoly.data();
     k.viewUp0 = float(sinEl);
     k.nuA = float(sinEl * sinL);

@@ -73,6 +73,7 @@ struct SkySolver::Impl {
     detail::MultipleScatteringLut ms;
     std::vector<float> psiShell;    // [3][layers + 1][kMsCosines]
     std::vector<float> anisoShell;  // [kMsAniso * 3][layers + 1][kMsCosines]
+    std::vector<float> viewShell;   // [layers + 1][kMsViews * 3][kMsCosines]
 
     // Light-dependent state.
     glm::dvec3 light{0.0, 1.0, 0.0};

@@ -59,26 +59,32 @@
 // back; of that share, f_s, the phase within 6 deg of straight on (0.12 at
 // g = 0.8), is carried exactly along the view ray, the e^(f_s tau_M) above,
 // and the remainder read through the moments' Fejer window; sky_multiple.hpp,
-// "Mie's truncation"). Hillaire's isotropic phases left the horizon
-// opposite a low sun 7-13% too dark against the path tracer (sun -2 to +10
-// deg). The third order's field L_2 adds its moments the same way (and the
-// later orders theirs, as L_2's times the tail's 1 / (1 - f_ms)); the
-// sources of the third and later orders stay isotropic. The LUT
-// (MultipleScatteringTable) has 25 heights (the shells of 24 equal-mass
-// layers from the ground to the top) x 64 sun cosines (mu = sign(x) x^2, x
-// uniform in [-1, 1]: dense near the horizon). It depends only on the
-// atmosphere and is cached with the optical-depth table. Along a view ray it
-// is taken at each shell (height of the shell, the sun's zenith cosine where
-// the ray crosses it; geometric between the LUT's sun-cosine columns, as
-// Psi falls about exponentially with the sun's depression in twilight),
-// linear within a layer, times the layer's exact integral of beta_X T(viewer -> s).
-// That integral is done for 16 azimuths from the light (0, 12, ... 180 deg)
-// and spread into the table's columns by Catmull-Rom in ln I_ms (smooth in
-// azimuth: the sun's cosine at a shell is alpha + beta cos(phi)); against
-// integrating every column this changes the pixel by at most 0.12% (sun -6
-// to 90 deg, 20000 random directions each) and cuts the multiple
-// scattering's share of the solve from ~75% of the single scattering's cost
-// to ~20%.
+// "Mie's truncation"). What that series still misses of Mie's last
+// scattering of the second and third orders' field (in twilight a band of
+// sunlit air above the horizon towards the sun, which Mie's peak sends on
+// towards the viewer: the sun's side of the horizon was 12% too dark in blue
+// at sun -6 deg) is kept by quadrature over the 96 directions at 74 view
+// directions per height and sun cosine and interpolated between them along
+// each view ray (sky_multiple.hpp, "Mie's last scattering"). Hillaire's
+// isotropic phases left the horizon opposite a low sun 7-13% too dark
+// against the path tracer (sun -2 to +10 deg). The third order's field L_2
+// adds its moments the same way (and the later orders theirs, as L_2's times
+// the tail's 1 / (1 - f_ms)); the sources of the third and later orders stay
+// isotropic. The LUT (MultipleScatteringTable) has 25 heights (the shells of
+// 24 equal-mass layers from the ground to the top) x 64 sun cosines (mu =
+// sign(x) x^2, x uniform in [-1, 1]: dense near the horizon). It depends
+// only on the atmosphere and is cached with the optical-depth table. Along a
+// view ray it is taken at each shell (height of the shell, the sun's zenith
+// cosine where the ray crosses it; geometric between the LUT's sun-cosine
+// columns, as Psi falls about exponentially with the sun's depression in
+// twilight), linear within a layer, times the layer's exact integral of
+// beta_X T(viewer -> s). That integral is done for 16 azimuths from the
+// light (0, 12, ... 180 deg) and spread into the table's columns by
+// Catmull-Rom in ln I_ms (smooth in azimuth: the sun's cosine at a shell is
+// alpha + beta cos(phi)); against integrating every column this changes the
+// pixel by at most 0.12% (sun -6 to 90 deg, 20000 random directions each)
+// and cuts the multiple scattering's share of the solve from ~75% of the
+// single scattering's cost to ~20%.
 //
 // Table mapping (the one contract between the solver and every sampler):
 //   * rows j = 0..elevationCount-1 hold the elevation el_j with
