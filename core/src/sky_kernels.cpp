@@ -445,6 +445,28 @@ AERIAL_INLINE void shellViews(int count, int nc, const float* __restrict views, 
     }
 }
 
+/// Shell j's multiple-scattering weights in channel c, Rayleigh's and
+/// Mie's (msB of the layer below, msA of the one above), each with its
+/// share of the skipped shells' between its evaluated neighbours `stride`
+/// apart (linear between them).
+AERIAL_INLINE void stridedShellWeights(const SkyKernelArgs& a, int j, int stride, int c, float& wr,
+                                       float& wm) {
+    auto weight = [&](int i, int x) {
+        return (i > 0 ? a.layer[i - 1].msB[x] : 0.0f) + (i < a.layers ? a.layer[i].msA[x] : 0.0f);
+    };
+    const int before = j == a.layers ? (j - 1) / stride * stride : j - stride;  // evaluated neighbours
+    const int after = std::min(j + stride, a.layers);
+    wr = weight(j, c);
+    wm = weight(j, 3 + c);
+    for (int i = std::max(before + 1, 1); i < after; ++i) {
+        if (i == j) continue;
+        const float share =
+            i < j ? float(i - before) / float(j - before) : float(after - i) / float(after - j);
+        wr += share * weight(i, c);
+        wm += share * weight(i, 3 + c);
+    }
+}
+
 /// A layer's multiple scattering for every column: msA Psi(a) + msB Psi(b)
 /// (Psi linear along the layer, weighted by the layer's sigma_s T shape,
 /// Mie's weights times its isotropic share `mieShare`; the anisotropy is
@@ -512,51 +534,32 @@ AERIAL_INLINE void lightAtShell(const SkyKernelArgs& a, int j, float maxU) {
         const int stride = kAnisoShellStride;
         const bool evaluated = j % stride == 0 || j == a.layers;
         if (a.aniso != nullptr && evaluated) {
-            const int before =
-                j == a.layers ? (j - 1) / stride * stride : j - stride;  // evaluated neighbours
-            const int after = std::min(j + stride, a.layers);
-            float kq[3], kd[3], km[3];
+            float kq[3], kd[3];
             for (int c = 0; c < 3; ++c) {
-                // Shell i's weights: msB of the layer below, msA of the one above.
-                auto weight = [&](int i, int x) {
-                    return (i > 0 ? a.layer[i - 1].msB[x] : 0.0f) + (i < a.layers ? a.layer[i].msA[x] : 0.0f);
-                };
-                float wr = weight(j, c), wm = weight(j, 3 + c);
-                for (int i = std::max(before + 1, 1); i < after; ++i) {
-                    if (i == j) continue;
-                    const float share =
-                        i < j ? float(i - before) / float(j - before) : float(after - i) / float(after - j);
-                    wr += share * weight(i, c);
-                    wm += share * weight(i, 3 + c);
-                }
+                float wr = 0.0f, wm = 0.0f;
+                stridedShellWeights(a, j, stride, c, wr, wm);
                 kq[c] = wr * a.rayleighBand2 + wm * a.mieBand2;
                 kd[c] = wm * a.mieBand1;
-                km[c] = wm;
             }
             shellAniso(kMsSkyColumns, nc, alpha, beta, n, a.aniso + std::size_t(j) * n, rows * n,
                        j == 0 ? a.viewUp0 : a.layer[j - 1].viewUp, a.nuA, a.nuB, kq, kd, a.msCosPhi,
                        r + 10 * nc, a.anisoPoly, r + 13 * nc, r + 14 * nc, a.acc + 6 * nc);
             const int viewStride = 2 * stride;
             if (a.views != nullptr && (j % viewStride == 0 || j == a.layers)) {
-                const int vBefore = j == a.layers ? (j - 1) / viewStride * viewStride : j - viewStride;
-                const int vAfter = std::min(j + viewStride, a.layers);
+                float km[3];
+                bool mie = false;
                 for (int c = 0; c < 3; ++c) {
-                    auto weight = [&](int i) {
-                        return (i > 0 ? a.layer[i - 1].msB[3 + c] : 0.0f) +
-                               (i < a.layers ? a.layer[i].msA[3 + c] : 0.0f);
-                    };
-                    float wm = weight(j);
-                    for (int i = std::max(vBefore + 1, 1); i < vAfter; ++i) {
-                        if (i == j) continue;
-                        wm += (i < j ? float(i - vBefore) / float(j - vBefore)
-                                     : float(vAfter - i) / float(vAfter - j)) *
-                              weight(i);
-                    }
-                    km[c] = wm;
+                    float wr = 0.0f;
+                    stridedShellWeights(a, j, viewStride, c, wr, km[c]);
+                    // Shells where Mie's weight is under kViewMieFloor of the
+                    // scattering's (high above a haze) leave it out.
+                    mie = mie || km[c] > kViewMieFloor * (wr + km[c]);
                 }
-                const float viewUp = j == 0 ? a.viewUp0 : a.layer[j - 1].viewUp;
-                shellViews(kMsSkyColumns, nc, a.views + std::size_t(j) * kMsViews * 3 * n, std::size_t(n),
-                           viewUp, km, r + 14 * nc, r + 13 * nc, r + 10 * nc, a.acc + 6 * nc);
+                if (mie) {
+                    const float viewUp = j == 0 ? a.viewUp0 : a.layer[j - 1].viewUp;
+                    shellViews(kMsSkyColumns, nc, a.views + std::size_t(j) * kMsViews * 3 * n, std::size_t(n),
+                               viewUp, km, r + 14 * nc, r + 13 * nc, r + 10 * nc, a.acc + 6 * nc);
+                }
             }
         }
     }

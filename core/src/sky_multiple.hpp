@@ -146,7 +146,8 @@
 //   direction's cell and its mirror (viewMatrix_, once per g: Mie's peak is
 //   narrower than the cells). The sky solver adds sigma_M C(v) at every
 //   eighth shell of each view ray (with the skipped shells' weights, as A_X
-//   at every fourth), bilinear between the view nodes (the view's zenith
+//   at every fourth; not where Mie's weight is under kViewMieFloor of the
+//   scattering's), bilinear between the view nodes (the view's zenith
 //   position at the shell, the cosine of its azimuth from the sun's
 //   horizontal) and linear between the sun-cosine columns (sky_kernels.cpp,
 //   shellViews). The series stays for Rayleigh (exact to l = 2) and carries
@@ -160,12 +161,12 @@
 //   second) moments, whose convolution with Mie's is closed: -6 deg 0.095,
 //   but -2 deg 0.064 (the lobe is round, the field a band); a straight-on
 //   cone of 0 to 15 deg moved the sun's side of the horizon by 0.3%. Cost
-//   (2 threads, best of 15, the old and new library run alternately, three
-//   times): the per-sun solve +0.03 to +0.05 ms (0.58-0.97 -> 0.63-1.01 ms;
-//   sun -0.5 deg, the slowest, 0.96 -> 0.99-1.01), the LUT's rebuild after
-//   a change of the atmosphere 6.9 -> 8.7-8.9 ms, and 2.3 ms more where
-//   Mie's g changes (viewMatrix_, on one thread). Its fields and views
-//   (~2.3 MB) are freed once resampled (releaseViews).
+//   (2 threads, best of 15, the old and new library run alternately): the
+//   per-sun solve +0.01 to +0.05 ms (0.57-0.96 -> 0.60-0.99 ms; at sun -0.5
+//   deg, the slowest, 0.93-1.00 -> 0.96-0.99 over five runs of each), the
+//   LUT's rebuild after a change of the atmosphere 6.9 -> 8.7-9.0 ms, and
+//   2.3 ms more where Mie's g changes (viewMatrix_, on one thread). Its
+//   fields and views (~2.3 MB) are freed once resampled (releaseViews).
 //
 // Discretisation (documented in <aerial/sky.hpp>):
 //  * rows: kMsRows heights, the shells of kMsLayers equal-mass layers from
