@@ -73,64 +73,104 @@ struct SunCase {
 const SunCase kSuns[] = {{-6.0, 0.05, 262144}, {-2.0, 0.05, 131072}, {0.0, 0.05, 131072}, {2.0, 0.05, 16384},
                          {10.0, 0.05, 16384},  {30.0, 0.05, 16384},  {90.0, 0.05, 16384}};
 
-TEST(SkyMultiple, TotalRadianceAgainstPathTracer) {
-    const AtmosphereParams air;
-    const reference::MultipleScatteringTracer tracer(air);
+/// The worst error of the solver's total radiance against the tracer's
+/// multiple scattering plus the exact single scattering, over 13 directions
+/// (the horizon included) for a sun `sunElevation` deg up, `paths` paths per
+/// direction; prints its line of the report.
+double worstAgainstTracer(const AtmosphereParams& air, const reference::MultipleScatteringTracer& tracer,
+                          SkySolver& solver, double sunElevation, int paths) {
     SkyReferenceSettings single;
     single.viewSteps = 512;
     single.lightSteps = 128;
+    const glm::dvec3 light = direction(sunElevation, 0.0);
+    solver.solve(air, light);
+    struct Probe {
+        double el, az;
+        glm::dvec3 solver, ref, ms;
+    };
+    std::vector<Probe> probes;
+    double brightest = 0.0;
+    for (double el : {0.0, 2.0, 10.0, 45.0, 90.0}) {
+        for (double az : {0.0, 90.0, 180.0}) {
+            if (el == 90.0 && az > 0.0) continue;
+            if (sunElevation == 0.0 && el == 0.0 && az == 180.0) continue;  // the knife edge (above)
+            const glm::dvec3 v = direction(el, az);
+            Probe p{el, az, skyRadiance(solver.table(), air.mieAnisotropy, v, glm::dvec3(1.0)),
+                    glm::dvec3(0.0), glm::dvec3(0.0)};
+            p.ms = tracer.multipleScattering(v, light, paths, 1234 + probes.size());
+            p.ref = referenceSkyRadiance(air, v, light, glm::dvec3(1.0), single) + p.ms;
+            for (int c = 0; c < 3; ++c) brightest = std::max(brightest, p.ref[c]);
+            probes.push_back(p);
+        }
+    }
+    double worst = 0.0;
+    const Probe* at = nullptr;
+    int channel = 0;
+    for (const Probe& p : probes) {
+        for (int c = 0; c < 3; ++c) {
+            const double err = std::abs(p.solver[c] - p.ref[c]) / std::max(p.ref[c], 0.01 * brightest);
+            if (err > worst) {
+                worst = err;
+                at = &p;
+                channel = c;
+            }
+        }
+    }
+    if (at == nullptr) {
+        ADD_FAILURE() << "no probe compared at sun " << sunElevation;
+        return INFINITY;
+    }
+    std::printf(
+        "[ sky ms  ] %+6.1f   | %9.3f   | (%4.0f, %4.0f)                   | %c       | %.4g / %.4g | "
+        "%.2f\n",
+        sunElevation, worst, at->el, at->az, "RGB"[channel], at -> solver[channel], at -> ref[channel],
+        at -> ms[channel] / at -> ref[channel]);
+    return worst;
+}
+
+constexpr char kReportHeader[] =
+    "[ sky ms  ] sun elev | worst error | at (elev, azimuth from the sun) | channel | "
+    "solver / reference total | multiple / total (ref)\n";
+
+TEST(SkyMultiple, TotalRadianceAgainstPathTracer) {
+    const AtmosphereParams air;
+    const reference::MultipleScatteringTracer tracer(air);
     // Fewer paths add Monte Carlo noise the tolerances were not measured
     // with; AERIAL_MS_PATHS sets another count (for every sun) for a report.
     const char* pathsEnv = std::getenv("AERIAL_MS_PATHS");
     SkySolver solver;
-    std::printf(
-        "[ sky ms  ] sun elev | worst error | at (elev, azimuth from the sun) | channel | "
-        "solver / reference total | multiple / total (ref)\n");
+    std::printf("%s", kReportHeader);
     for (const SunCase& sun : kSuns) {
         if (quick() && sun.elevation != -2.0 && sun.elevation != 10.0 && sun.elevation != 90.0) continue;
-        const glm::dvec3 light = direction(sun.elevation, 0.0);
         const int paths = pathsEnv != nullptr ? std::clamp(std::atoi(pathsEnv), 256, 1 << 20) : sun.paths;
-        solver.solve(air, light);
-        struct Probe {
-            double el, az;
-            glm::dvec3 solver, ref, ms;
-        };
-        std::vector<Probe> probes;
-        double brightest = 0.0;
-        for (double el : {0.0, 2.0, 10.0, 45.0, 90.0}) {
-            for (double az : {0.0, 90.0, 180.0}) {
-                if (el == 90.0 && az > 0.0) continue;
-                if (sun.elevation == 0.0 && el == 0.0 && az == 180.0) continue;  // the knife edge (above)
-                const glm::dvec3 v = direction(el, az);
-                Probe p{el, az, skyRadiance(solver.table(), air.mieAnisotropy, v, glm::dvec3(1.0)),
-                        glm::dvec3(0.0), glm::dvec3(0.0)};
-                p.ms = tracer.multipleScattering(v, light, paths, 1234 + probes.size());
-                p.ref = referenceSkyRadiance(air, v, light, glm::dvec3(1.0), single) + p.ms;
-                for (int c = 0; c < 3; ++c) brightest = std::max(brightest, p.ref[c]);
-                probes.push_back(p);
-            }
-        }
-        double worst = 0.0;
-        const Probe* at = nullptr;
-        int channel = 0;
-        for (const Probe& p : probes) {
-            for (int c = 0; c < 3; ++c) {
-                const double err = std::abs(p.solver[c] - p.ref[c]) / std::max(p.ref[c], 0.01 * brightest);
-                if (err > worst) {
-                    worst = err;
-                    at = &p;
-                    channel = c;
-                }
-            }
-        }
-        ASSERT_NE(at, nullptr);
-        std::printf(
-            "[ sky ms  ] %+6.1f   | %9.3f   | (%4.0f, %4.0f)                   | %c       | %.4g / %.4g | "
-            "%.2f\n",
-            sun.elevation, worst, at->el, at->az, "RGB"[channel], at -> solver[channel], at -> ref[channel],
-            at -> ms[channel] / at -> ref[channel]);
-        EXPECT_LT(worst, sun.tolerance) << "sun " << sun.elevation;
+        EXPECT_LT(worstAgainstTracer(air, tracer, solver, sun.elevation, paths), sun.tolerance)
+            << "sun " << sun.elevation;
     }
+}
+
+// hazy_sunset's air (Mie 2.2e-5 /m, extinction 2.6e-5 /m, scale height 1600
+// m, g = 0.86): the 5% goal is not met in a haze this thick, so these are
+// regression bounds a little above the measured worst (65536 paths, these
+// seeds): -6: 0.151, -2: 0.234, +10: 0.049. Before Mie's last scattering at
+// the view nodes (131072 paths, seed 11) they were 0.48, 0.23 and 0.099; now
+// 0.143, 0.233, 0.049 there. What is left at -2 deg is the sun's side of
+// the horizon, red 1.23x: the straight-on cone (sky_multiple.hpp, "Mie's
+// truncation"), which carries the cone's share along the view ray itself;
+// at 0, 3 and 10 deg instead of 6 it read -0.09, -0.02 and +0.80 there.
+TEST(SkyMultiple, HazyAirAgainstPathTracer) {
+    if (quick()) GTEST_SKIP() << "65536 paths per direction: release builds only";
+    AtmosphereParams air;
+    air.mieScattering = glm::dvec3(2.2e-5);
+    air.mieExtinction = glm::dvec3(2.6e-5);
+    air.mieScaleHeight = 1600.0;
+    air.mieAnisotropy = 0.86;
+    const reference::MultipleScatteringTracer tracer(air);
+    SkySolver solver;
+    std::printf("%s", kReportHeader);
+    const SunCase hazy[] = {{-6.0, 0.17, 65536}, {-2.0, 0.26, 65536}, {10.0, 0.06, 65536}};
+    for (const SunCase& sun : hazy)
+        EXPECT_LT(worstAgainstTracer(air, tracer, solver, sun.elevation, sun.paths), sun.tolerance)
+            << "sun " << sun.elevation;
 }
 
 // The LUT's own assumption made true: with isotropic phase functions at
