@@ -412,6 +412,7 @@ AERIAL_INLINE void shellViews(int count, int nc, const float* __restrict views, 
                               float* __restrict acc) {
     static const ViewAzimuths nodes;
     // cos theta = -sign(x) x^2, t = (x + 1) kMsZeniths / 2 (msZenithNode).
+    static_assert(kMsZenithPower == 2.0, "the view's zenith position inverts x^2 by a square root");
     const float root = fastSqrt(minNonNegative(std::abs(viewUp), 1.0f));
     const float x = viewUp > 0.0f ? -root : root;
     int iz = 0;

@@ -49,13 +49,19 @@ MsNode azimuthAt(double t) {
     return {kPi * std::pow(u, kMsAzimuthPower), kMsAzimuthPower * std::pow(u, kMsAzimuthPower - 1.0) * du};
 }
 
-/// The view nodes' positions in the zenith and azimuth mappings: the
-/// poles / 0 and pi, and the nodes' midpoints between them.
-double viewZenithPosition(int iz) {
-    return iz == 0 ? 0.0 : (iz == kMsViewZeniths - 1 ? double(kMsZeniths) : iz - 0.5);
-}
-double viewAzimuthPosition(int ia) {
-    return ia == 0 ? 0.0 : (ia == kMsViewAzimuths - 1 ? double(kMsAzimuths) : ia - 0.5);
+/// View node v's direction in the point's frame: its zenith cosine and
+/// sine, and its azimuth from the sun's horizontal. The poles and 0 / pi sit
+/// at the mappings' ends, the others on the zenith and azimuth nodes.
+struct ViewNode {
+    double cosT, sinT, phi;
+};
+
+ViewNode viewNodeAt(int v) {
+    const int iz = v / kMsViewAzimuths, ia = v % kMsViewAzimuths;
+    const double tz = iz == 0 ? 0.0 : (iz == kMsViewZeniths - 1 ? double(kMsZeniths) : iz - 0.5);
+    const double ta = ia == 0 ? 0.0 : (ia == kMsViewAzimuths - 1 ? double(kMsAzimuths) : ia - 0.5);
+    const double c = zenithAt(tz).angle;
+    return {c, std::sqrt(std::max(1.0 - c * c, 0.0)), azimuthAt(ta).angle};
 }
 
 }  // namespace
@@ -77,6 +83,12 @@ MsNode msZenithNode(int z) {
 MsNode msAzimuthNode(int a) {
     static const auto nodes = tabulate<MsNode, kMsAzimuths>([](int k) { return azimuthAt(k + 0.5); });
     return nodes[std::size_t(a)];
+}
+
+/// View node v's direction (viewNodeAt), computed once.
+static const ViewNode& msViewNode(int v) {
+    static const auto nodes = tabulate<ViewNode, kMsViews>(viewNodeAt);
+    return nodes[std::size_t(v)];
 }
 
 /// cos of azimuth node a's angle.
@@ -282,9 +294,8 @@ void MultipleScatteringLut::buildViewMatrix() {
             std::copy(first, first + kMsDirections, row);
             continue;
         }
-        const double cv = zenithAt(viewZenithPosition(iz)).angle;
-        const double sv = std::sqrt(std::max(1.0 - cv * cv, 0.0));
-        const double phiV = azimuthAt(viewAzimuthPosition(ia)).angle;
+        const ViewNode& node = msViewNode(v);
+        const double cv = node.cosT, sv = node.sinT, phiV = node.phi;
         const double cpv = sv * std::cos(phiV), spv = sv * std::sin(phiV);
         for (int d = 0; d < kMsDirections; ++d) {
             double sumP = 0.0, sumW = 0.0;
@@ -601,9 +612,8 @@ void MultipleScatteringLut::storeViews(int row) {
                 }
                 std::copy(acc, acc + block, sum + j0);
             }
-            const double vu = zenithAt(viewZenithPosition(iz)).angle;
-            const double phi = azimuthAt(viewAzimuthPosition(ia)).angle;
-            const double vs = std::sqrt(std::max(1.0 - vu * vu, 0.0)) * std::cos(phi);
+            const ViewNode& node = msViewNode(v);
+            const double vu = node.cosT, vs = node.sinT * std::cos(node.phi);
             for (int j = 0; j < kMsCosines; ++j) {
                 const std::size_t at = (std::size_t(row) * kMsCosines + std::size_t(j)) * 3 + std::size_t(c);
                 // D_u, D_s, B_0, B_u, B_s, B_us, channels 3 apart (storeMoments).

@@ -136,8 +136,9 @@
 //   blue at -6 deg and 5.5% at -2 deg, the anti-solar horizon 6% too
 //   bright in red at -6 deg. So the LUT also keeps, for the field whose
 //   moments the series uses, L = L_1 + L_2 / (1 - f_ms) (field_), what the
-//   series misses at kMsViews view nodes v (the 12 zenith nodes and the
-//   two poles x the 4 azimuth nodes, 0 and pi):
+//   series misses at kMsViews view nodes v (14 zenith positions: the 12
+//   zenith nodes and the two poles; times 6 azimuths: 0, the 4 azimuth
+//   nodes and pi):
 //     C_v = integral P_M'(omega . v) L(omega) d omega - (1 - f_s) J - A_M(v),
 //   with P_M' Mie's phase outside the straight-on cone (its share within
 //   goes along the view ray, above), J = J_2 + J_3 / (1 - f_ms) the
