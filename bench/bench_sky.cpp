@@ -6,6 +6,13 @@
 //       full cost), 0 reuses them (parameters unchanged, only the sun moves);
 //       multiple 0 = single scattering only (SkySolverDesc::singleScatteringOnly).
 //       Wall time.
+//   BM_SkyKeyedHaze/tolerance:T
+//       one solve of a haze that thickens by 0.1% per solve (hazy_sunset's
+//       afternoon haze evaluated once per minute of its day), with
+//       SkySolverDesc::multipleScatteringTolerance T x 1e-4 (0: the LUT is
+//       rebuilt at every solve; 25: the default, kept while the sky moves
+//       by under 0.25%); all threads, wall time. The counter `builds` is
+//       the share of solves that rebuilt the LUT.
 //   BM_SkyReferenceSolve
 //       the brute-force double-precision reference (tests/support) on 4 of
 //       the 64 rows (260 directions, 1000 x 200 steps each); the counters give
@@ -24,6 +31,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <vector>
 
 namespace {
 
@@ -53,6 +61,45 @@ void BM_SkySolve(benchmark::State& state) {
 BENCHMARK(BM_SkySolve)
     ->ArgNames({"layers", "threads", "rebuild", "multiple"})
     ->ArgsProduct({{32}, {1, 0}, {1, 0}, {0, 1}})
+    ->Unit(benchmark::kMicrosecond)
+    ->UseRealTime();
+
+void BM_SkyKeyedHaze(benchmark::State& state) {
+    aerial::SkySolverDesc desc;
+    desc.multipleScatteringTolerance = double(state.range(0)) * 1e-4;
+    aerial::SkySolver solver(desc);
+    aerial::AtmosphereParams air;
+    air.mieScattering = glm::dvec3(1.2e-5);
+    air.mieExtinction = glm::dvec3(1.4e-5);
+    air.mieScaleHeight = 1600.0;
+    air.mieAnisotropy = 0.86;
+    solver.solve(air, sunAt(10.0));
+    std::vector<float> lut = solver.multipleScatteringTable().psi;
+    double builds = 0.0, solves = 0.0;
+    int k = 0;
+    for (auto _ : state) {
+        // Thickening from 1.2e-5 and starting again after 50% (as a day does).
+        const double grow = std::pow(1.001, double(k++ % 400));
+        aerial::AtmosphereParams now = air;
+        now.mieScattering *= grow;
+        now.mieExtinction *= grow;
+        solver.solve(now, sunAt(20.0 - 0.05 * (k % 400)));
+        benchmark::DoNotOptimize(solver.table().rayleigh.data());
+        state.PauseTiming();
+        if (solver.multipleScatteringTable().psi != lut) {
+            builds += 1.0;
+            lut = solver.multipleScatteringTable().psi;
+        }
+        solves += 1.0;
+        state.ResumeTiming();
+    }
+    state.counters["builds"] = solves > 0.0 ? builds / solves : 0.0;
+    state.counters["threads"] = double(solver.desc().threadCount);
+}
+BENCHMARK(BM_SkyKeyedHaze)
+    ->ArgName("tolerance")
+    ->Arg(0)
+    ->Arg(25)
     ->Unit(benchmark::kMicrosecond)
     ->UseRealTime();
 

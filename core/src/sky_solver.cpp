@@ -80,8 +80,80 @@ namespace {
 
 constexpr int kDefaultOpticalDepthAngles = 128;
 /// A row sums the straight-on share of Mie's forward peak (solveRow) where
-/// it reaches this fraction of the row's single scattering.
+/// it reaches this fraction of the row's single scattering (fading in from
+/// half of it).
 constexpr double kStraightOnFloor = 5e-3;
+
+// Multiple scattering in a drifting atmosphere. A keyed atmosphere (a haze
+// that thickens towards dusk) changes a little at every evaluation, and
+// rebuilding the LUT each time is most of the solve (~9 ms on two threads
+// against ~1 ms for a sun). The sky depends smoothly on the coefficients,
+// so while the shells stay where they were (the same radii, viewer height,
+// scale heights and ozone profile) and the coefficients drift so little
+// from those the LUT was built for that the sky moves by at most
+// desc.multipleScatteringTolerance of the pixel, the solve rebuilds the
+// optical depths (the single scattering stays exact) and keeps the LUT.
+// The drift is measured from the LUT's own atmosphere, so the error does
+// not accumulate. The estimate is linear in each coefficient's relative
+// change (g: absolute), with the largest change of the sky relative to the
+// pixel (floored at 1% of the brightest sky) per unit change, measured over
+// suns from -6 to 90 deg in the default air, hazy_sunset's and
+// desert_dusk's (largest at -6 to 0 deg, where the sky is mostly multiple
+// scattering; tests/core/test_sky_multiple.cpp, DriftingAtmosphere*):
+// Rayleigh 0.83, 0.98, 0.69; ozone 0.85, 0.95, 0.97; ground albedo 0.51,
+// 0.68, 0.68. Mie's grow with its vertical optical depth tau_M (0.005,
+// 0.042, 0.14 in those airs): its scattering and extinction together 0.12,
+// 0.34, 0.85, as 0.15 + 6 tau_M; the extinction alone 0.14, 0.66, 1.4, as
+// 0.2 + 12 tau_M (so that a haze's scattering and extinction moving
+// together count once, Mie is its common change plus the extinction's
+// change beyond it); g 0.58, 5.5 (g = 0.86), 3.5 (g = 0.7), as 0.6 + 3
+// tau_M / (1 - g)^2.
+constexpr double kMsDriftRayleigh = 1.0;
+constexpr double kMsDriftOzone = 1.0;
+constexpr double kMsDriftAlbedo = 0.7;
+
+/// The largest relative change over the channels from `built` to `now`
+/// (signed per channel in `out`); +inf from 0 to anything else.
+double relativeDrift(const glm::dvec3& built, const glm::dvec3& now, glm::dvec3* out = nullptr) {
+    double worst = 0.0;
+    for (int c = 0; c < 3; ++c) {
+        const double r = built[c] == now[c] ? 0.0
+                         : built[c] > 0.0   ? (now[c] - built[c]) / built[c]
+                                            : INFINITY;
+        if (out) (*out)[c] = r;
+        worst = std::max(worst, std::abs(r));
+    }
+    return worst;
+}
+
+/// The estimated change of the sky (relative to the pixel) if the LUT
+/// built for `built` is kept for `now`; +inf where it cannot be kept.
+double msDriftEstimate(const AtmosphereParams& built, const AtmosphereParams& now) {
+    auto same = [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+    if (!same(built.planetRadius, now.planetRadius) || !same(built.atmosphereRadius, now.atmosphereRadius) ||
+        !same(built.viewerHeight, now.viewerHeight) ||
+        !same(built.rayleighScaleHeight, now.rayleighScaleHeight) ||
+        !same(built.mieScaleHeight, now.mieScaleHeight) ||
+        !same(built.ozoneCenterHeight, now.ozoneCenterHeight) || !same(built.ozoneWidth, now.ozoneWidth))
+        return INFINITY;
+    glm::dvec3 scatter(0.0), extinction(0.0);
+    if (!std::isfinite(relativeDrift(built.mieScattering, now.mieScattering, &scatter) +
+                       relativeDrift(built.mieExtinction, now.mieExtinction, &extinction)))
+        return INFINITY;  // from 0 to anything else (and inf - inf below would be NaN)
+    const double tauM = std::max({built.mieExtinction[0], built.mieExtinction[1], built.mieExtinction[2]}) *
+                        built.mieScaleHeight;
+    const double g = std::clamp(built.mieAnisotropy, -0.999, 0.999);
+    double mie = 0.0;
+    for (int c = 0; c < 3; ++c)
+        mie = std::max(mie, (0.15 + 6.0 * tauM) * std::abs(scatter[c]) +
+                                (0.2 + 12.0 * tauM) * std::abs(extinction[c] - scatter[c]));
+    const double estimate =
+        kMsDriftRayleigh * relativeDrift(built.rayleighScattering, now.rayleighScattering) +
+        kMsDriftOzone * relativeDrift(built.ozoneAbsorption, now.ozoneAbsorption) +
+        kMsDriftAlbedo * relativeDrift(built.groundAlbedo, now.groundAlbedo) + mie +
+        (0.6 + 3.0 * tauM / ((1.0 - g) * (1.0 - g))) * std::abs(built.mieAnisotropy - now.mieAnisotropy);
+    return std::isnan(estimate) ? INFINITY : estimate;
+}
 
 // Shared atmosphere tables. The optical-depth table and the multiple
 // scattering's LUT depend only on the AtmosphereParams and on the solver's
@@ -92,7 +164,8 @@ constexpr double kStraightOnFloor = 5e-3;
 // and of the editor's sky preview; so every rebuild leaves an immutable
 // snapshot here (the last kSharedTables, keyed by the parameters' bytes and
 // those settings), and a solver whose atmosphere changed adopts a matching
-// snapshot instead of building it again. The snapshot holds exactly what a
+// snapshot instead of building it again (of several for the same key, the
+// one whose LUT is nearest, within the solver's own tolerance). The snapshot holds exactly what a
 // rebuild writes, so a solve that adopts it is bit-identical to one that
 // builds (SkyMultiple.SharedAtmosphereTablesAreBitIdentical).
 struct SharedTables {
@@ -101,6 +174,7 @@ struct SharedTables {
     bool multiple = false, isotropic = false;
     std::vector<double> shellHeight, horizonCosD;
     std::vector<float> horizonCos, angleScale, layerCurvature, depth, psiShell, anisoShell, viewShell;
+    AtmosphereParams msAir;  // the atmosphere the LUT was built for (sanitized)
     DensityConstants density;
     MultipleScatteringLut ms;
 };
@@ -123,19 +197,28 @@ void copyAtmosphereTables(const From& from, To& to, bool multiple) {
         to.psiShell = from.psiShell;
         to.anisoShell = from.anisoShell;
         to.viewShell = from.viewShell;
+        to.msAir = from.msAir;
     }
 }
 
 class SharedTableCache {
 public:
-    std::shared_ptr<const SharedTables> find(const AtmosphereParams& key, int layers, int angles,
-                                             bool multiple, bool isotropic) {
+    /// Of the snapshots for these parameters and settings, the one whose
+    /// LUT is nearest theirs (see msDriftEstimate), if within `tolerance`.
+    std::shared_ptr<const SharedTables> find(const AtmosphereParams& key, const AtmosphereParams& air,
+                                             int layers, int angles, bool multiple, bool isotropic,
+                                             double tolerance) {
         const std::lock_guard<std::mutex> lock(mutex_);
-        for (const std::shared_ptr<const SharedTables>& e : entries_)
-            if (e->layers == layers && e->angles == angles && e->multiple == multiple &&
-                e->isotropic == isotropic && std::memcmp(&e->key, &key, sizeof key) == 0)
-                return e;
-        return nullptr;
+        std::shared_ptr<const SharedTables> best;
+        double nearest = INFINITY;
+        for (const std::shared_ptr<const SharedTables>& e : entries_) {
+            if (e->layers != layers || e->angles != angles || e->multiple != multiple ||
+                e->isotropic != isotropic || std::memcmp(&e->key, &key, sizeof key) != 0)
+                continue;
+            const double drift = multiple ? msDriftEstimate(e->msAir, air) : 0.0;
+            if (drift <= tolerance && (!best || drift < nearest)) best = e, nearest = drift;
+        }
+        return best;
     }
     void insert(std::shared_ptr<const SharedTables> tables) {
         const std::lock_guard<std::mutex> lock(mutex_);
@@ -245,6 +328,8 @@ SkySolver::Impl::Impl(const SkySolverDesc& d) : desc(d) {
                                   : kDefaultOpticalDepthAngles;
     if (desc.threadCount <= 0) desc.threadCount = int(std::max(1u, std::thread::hardware_concurrency()));
     desc.threadCount = std::min(desc.threadCount, 256);
+    desc.multipleScatteringTolerance =
+        desc.multipleScatteringTolerance > 0.0 ? std::min(desc.multipleScatteringTolerance, 0.05) : 0.0;
 
     azimuthCount = desc.azimuthCount;
     elevationCount = desc.elevationCount;
@@ -334,7 +419,7 @@ SkySolver::Impl::Impl(const SkySolverDesc& d) : desc(d) {
 // yielding) until all of that is done.
 void SkySolver::Impl::run(bool rebuild, int rowBegin, int rowEnd) {
     const int depthRows = rebuild ? layers + 1 : 0;
-    const int msRows = rebuild && multiple ? kMsRows : 0;
+    const int msRows = rebuild && msPending ? kMsRows : 0;
     const int orderItems = msRows * (kMsLastOrder - 1);  // orders 2..kMsLastOrder
     depthRowsDone.store(0);  // published to the workers by the pool's dispatch
     msDepthRowsDone.store(0);
@@ -649,9 +734,12 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
     // Rows whose straight-on share stays below kStraightOnFloor of their
     // single scattering (e^(f tau_M) - 1 at the far end: all but the rows
     // within a few degrees of the horizon) leave it out, the cost of
-    // summing it.
-    k.straightOn = multiple && std::expm1(straight * std::max({mieDepth[0], mieDepth[1], mieDepth[2]})) >
-                                   kStraightOnFloor;
+    // summing it; it fades in from half the floor to the floor, so that
+    // the sky stays continuous in the air and the light (with a cut, a 0.5%
+    // step as g crossed 0.8001 at sun -2 deg, 6.5 deg up).
+    const double straightRatio = std::expm1(straight * std::max({mieDepth[0], mieDepth[1], mieDepth[2]}));
+    k.straightOn = multiple && straightRatio > 0.5 * kStraightOnFloor;
+    const double straightFade = std::min(straightRatio / (0.5 * kStraightOnFloor) - 1.0, 1.0);
     k.shells = s.shells.data();
     k.acc = s.acc.data();
     skyKernel(k);
@@ -665,8 +753,9 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
             const double mu = sinEl * sinL + cosEl * cosL * s.cosPhi[i];
             const double pr = rayleighPhase(mu), pm = miePhase(mu, air.mieAnisotropy);
             for (std::size_t c = 0; c < 3; ++c)
-                s.acc[(6 + c) * n + std::size_t(i)] += float(pr * s.acc[(9 + c) * n + std::size_t(i)] +
-                                                             pm * s.acc[(12 + c) * n + std::size_t(i)]);
+                s.acc[(6 + c) * n + std::size_t(i)] +=
+                    float(straightFade * (pr * s.acc[(9 + c) * n + std::size_t(i)] +
+                                          pm * s.acc[(12 + c) * n + std::size_t(i)]));
         }
     }
     SkyTable& out = tables[1 - front];
@@ -943,7 +1032,13 @@ void SkySolver::Impl::setAtmosphere(const AtmosphereParams& params) {
         return;
     }
     buildLayers();
-    if (multiple) ms.setAtmosphere(air, desc.isotropicMultipleScattering);
+    msPending = multiple && (forceRebuild || !msValid ||
+                             !(msDriftEstimate(msAir, air) <= desc.multipleScatteringTolerance));
+    if (msPending) {
+        msValid = false;
+        ms.setAtmosphere(air, desc.isotropicMultipleScattering);
+        msAir = air;
+    }
     depthPending = true;
 }
 
@@ -996,12 +1091,16 @@ void SkySolver::Impl::publish() {
 }
 
 bool SkySolver::Impl::adoptSharedTables(const AtmosphereParams& params) {
+    // A snapshot whose LUT was kept from a drifted atmosphere only where
+    // this solver would have kept it too (its tolerance may be 0).
     const std::shared_ptr<const SharedTables> t =
-        sharedTableCache().find(params, layers, angles, multiple, desc.isotropicMultipleScattering);
+        sharedTableCache().find(params, air, layers, angles, multiple, desc.isotropicMultipleScattering,
+                                desc.multipleScatteringTolerance);
     if (!t) return false;
     // Same sizes as this solver's (same layers and angles): the copies reuse
     // the vectors' storage.
     copyAtmosphereTables(*t, *this, multiple);
+    msValid = multiple;
     return true;
 }
 
@@ -1029,6 +1128,8 @@ void SkySolver::solve(const AtmosphereParams& air, const glm::dvec3& lightDirect
         m.cachedAir = m.rawAir;
         m.cacheValid = true;
         m.depthPending = false;
+        m.msValid = m.multiple;
+        m.msPending = false;
         m.forceRebuild = false;
         m.shareTables();
     }
@@ -1052,6 +1153,8 @@ bool SkySolver::continueSolve(int rows) {
         m.cachedAir = m.rawAir;
         m.cacheValid = true;
         m.depthPending = false;
+        m.msValid = m.multiple;
+        m.msPending = false;
         m.forceRebuild = false;
         m.shareTables();
         --rows;

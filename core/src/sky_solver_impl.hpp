@@ -74,6 +74,12 @@ struct SkySolver::Impl {
     std::vector<float> psiShell;    // [3][layers + 1][kMsCosines]
     std::vector<float> anisoShell;  // [kMsAniso * 3][layers + 1][kMsCosines]
     std::vector<float> viewShell;   // [layers + 1][kMsViews * 3][kMsCosines]
+    // The (sanitized) atmosphere the LUT and the three above were built
+    // for, which a drifting atmosphere may reuse (sky_solver.cpp,
+    // "Multiple scattering in a drifting atmosphere").
+    bool msValid = false;
+    bool msPending = false;  // the running rebuild builds the LUT too
+    AtmosphereParams msAir;
 
     // Light-dependent state.
     glm::dvec3 light{0.0, 1.0, 0.0};

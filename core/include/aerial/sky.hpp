@@ -246,6 +246,16 @@ struct SkySolverDesc {
     /// order); for validation against a path tracer with isotropic phases.
     /// Default false: the real phases (sky.hpp, "Multiple scattering").
     bool isotropicMultipleScattering = false;
+    /// The multiple-scattering LUT is kept while the atmosphere's heights
+    /// (radii, viewer height, scale heights, ozone profile) stay the same
+    /// and its coefficients drift so little from those the LUT was built
+    /// for that the sky moves by at most this fraction of the pixel (floored
+    /// at 1% of the brightest sky; estimated per coefficient, sky_solver.cpp):
+    /// a keyed haze then rebuilds the LUT (~9 ms on two threads) every few
+    /// tenths of a percent of its change instead of at every evaluation. The
+    /// single scattering is always exact. 0: the LUT is rebuilt on any
+    /// change. Clamped to 0..0.05; default 0.0025.
+    double multipleScatteringTolerance = 0.0025;
 };
 
 /// The multiple-scattering LUT Psi_ms (Hillaire 2020, eq. 10) of the cached
@@ -501,10 +511,14 @@ glm::dvec3 horizonFogRadiance(const SkyTable& table, double mieAnisotropy, const
 /// in the constructor); allocates nothing per solve. Single-threaded,
 /// multi-threaded and amortised solves give bit-identical tables. The
 /// optical-depth table and the Psi_ms LUT are kept while the AtmosphereParams stay bitwise equal,
-/// so a moving sun only re-solves the hemisphere; and they are shared between solvers in
+/// so a moving sun only re-solves the hemisphere; the LUT alone is also kept while the
+/// atmosphere drifts within SkySolverDesc::multipleScatteringTolerance (a keyed haze), so
+/// its result then depends on the atmosphere the LUT was built for (at most that far off;
+/// tolerance 0 for exact results); and they are shared between solvers in
 /// the process (the last four atmospheres built, by any solver with the same layer count,
 /// optical-depth angles and multiple-scattering settings), so the moon's solver adopts
-/// what the sun's built for the same air instead of building it again (bit-identical). Earth shadow: where
+/// what the sun's built for the same air instead of building it again (bit-identical;
+/// a solver adopts a kept LUT only within its own tolerance). Earth shadow: where
 /// the ray from a point to the light hits the planet, that point is unlit (the transmittance to the light is
 /// 0), also for a light below the horizon.
 class SkySolver {
@@ -533,8 +547,9 @@ public:
     /// another solver has built them (benchmarks, tests).
     void invalidateCache();
 
-    /// A copy of the Psi_ms LUT of the last atmosphere built (empty before
-    /// the first solve and with singleScatteringOnly).
+    /// A copy of the Psi_ms LUT in use: built for the last atmosphere, or
+    /// kept from an earlier one (multipleScatteringTolerance); empty before
+    /// the first solve and with singleScatteringOnly.
     MultipleScatteringTable multipleScatteringTable() const;
 
     /// The last completed table (zeros, generation 0, before the first).
