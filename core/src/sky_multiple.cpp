@@ -766,9 +766,9 @@ void MultipleScatteringLut::releaseViews() {
     std::vector<float>().swap(views_);
 }
 
-void MultipleScatteringLut::resample(const double* heights, int count, float* out, float* aniso,
-                                     float* mie) const {
-    for (int k = 0; k < count; ++k) {
+void MultipleScatteringLut::resample(const double* heights, int count, int kBegin, int kEnd, float* out,
+                                     float* aniso, float* mie) const {
+    for (int k = std::max(kBegin, 0); k < std::min(kEnd, count); ++k) {
         const double h = heights[k];
         int i = 0;
         while (i + 2 < kMsRows && height_[std::size_t(i) + 1] < h) ++i;

@@ -287,7 +287,10 @@ public:
     /// of Mie's last scattering at the view nodes, relative to Psi:
     /// mie[k][v][c][kMsCosines] = C_v / Psi (clamped to +-kMsAnisoRatio), v =
     /// iz * kMsViewAzimuths + ia ("Mie's last scattering").
-    void resample(const double* heights, int count, float* out, float* aniso, float* mie) const;
+    /// Writes the shells kBegin..kEnd-1 of the count (the rest untouched:
+    /// the shells go to threads apart).
+    void resample(const double* heights, int count, int kBegin, int kEnd, float* out, float* aniso,
+                  float* mie) const;
     /// Frees what only the build and resample use (the fields and views of
     /// Mie's last scattering, ~2.3 MB): a solver's shared snapshot copies
     /// the LUT. setAtmosphere allocates them again.

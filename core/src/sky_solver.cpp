@@ -414,16 +414,18 @@ SkySolver::Impl::Impl(const SkySolverDesc& d) : desc(d) {
 
 // One dispatch. With `rebuild`, the first items build the optical-depth rows
 // (the solver's, then the multiple-scattering LUT's), then the LUT's rows of
-// each scattering order (the thread that finishes the last row resamples
-// Psi_ms at the shells); the rest solve sky rows, which wait (briefly,
-// yielding) until all of that is done.
+// each scattering order, then Psi_ms at each shell (the thread that
+// resamples the last frees what only the build needed); the rest solve sky
+// rows, which wait (briefly, yielding) until all of that is done.
 void SkySolver::Impl::run(bool rebuild, int rowBegin, int rowEnd) {
     const int depthRows = rebuild ? layers + 1 : 0;
     const int msRows = rebuild && msPending ? kMsRows : 0;
     const int orderItems = msRows * (kMsLastOrder - 1);  // orders 2..kMsLastOrder
+    const int resampleItems = msRows > 0 ? layers + 1 : 0;
     depthRowsDone.store(0);  // published to the workers by the pool's dispatch
     msDepthRowsDone.store(0);
     psiRowsDone.store(0);
+    resampleDone.store(0);
     psiReady.store(msRows == 0);
     auto item = [&](int index, int worker) {
         if (index < depthRows) {
@@ -444,21 +446,71 @@ void SkySolver::Impl::run(bool rebuild, int rowBegin, int rowEnd) {
             const std::atomic<int>& ready = order == 2 ? msDepthRowsDone : psiRowsDone;
             while (ready.load(std::memory_order_acquire) < std::max(order - 2, 1) * msRows) std::this_thread::yield();
             ms.buildOrderRow(index % msRows, order, msScratch[std::size_t(worker)]);
-            if (psiRowsDone.fetch_add(1, std::memory_order_acq_rel) + 1 == orderItems) {
-                ms.resample(shellHeight.data(), layers + 1, psiShell.data(), anisoShell.data(),
-                            ms.anisotropic() ? viewShell.data() : nullptr);
+            psiRowsDone.fetch_add(1, std::memory_order_acq_rel);
+            return;
+        }
+        index -= orderItems;
+        if (index < resampleItems) {
+            // Psi_ms at the shells, a shell per item, once the last order is done.
+            while (psiRowsDone.load(std::memory_order_acquire) < orderItems) std::this_thread::yield();
+            resampleShell(index);
+            if (resampleDone.fetch_add(1, std::memory_order_acq_rel) + 1 == resampleItems) {
                 ms.releaseViews();
                 psiReady.store(true, std::memory_order_release);
             }
             return;
         }
-        index -= orderItems;
+        index -= resampleItems;
         while (depthRowsDone.load(std::memory_order_acquire) < depthRows ||
                !psiReady.load(std::memory_order_acquire))
             std::this_thread::yield();
         solveRow(rowBegin + index, scratch[std::size_t(worker)]);
     };
-    pool->run(depthRows + msRows + orderItems + (rowEnd - rowBegin), item);
+    pool->run(depthRows + msRows + orderItems + resampleItems + (rowEnd - rowBegin), item);
+}
+
+// An amortised rebuild's steps (continueSolve): the same items as run()'s,
+// in dependency order, each step one dispatch. With 5 of the LUT's 25 rows a
+// step, on two threads (the whole rebuild in one solve ~9 ms): the depths
+// 0.11 ms, each step of the LUT's orders 0.27-0.64 ms, its resampling 0.5
+// ms, and continueSolve's last step, the snapshot for other solvers, 0.8.
+constexpr int kMsStageRows = 5;
+constexpr int kMsStageChunks = (kMsRows + kMsStageRows - 1) / kMsStageRows;
+
+void SkySolver::Impl::resampleShell(int k) {
+    ms.resample(shellHeight.data(), layers + 1, k, k + 1, psiShell.data(), anisoShell.data(),
+                ms.anisotropic() ? viewShell.data() : nullptr);
+}
+
+int SkySolver::Impl::rebuildStages() const {
+    return 1 + (msPending ? (kMsLastOrder - 1) * kMsStageChunks + 1 : 0);
+}
+
+void SkySolver::Impl::runStage(int stage) {
+    if (stage == 0) {
+        const int depthRows = layers + 1;
+        auto item = [&](int index, int worker) {
+            if (index < depthRows)
+                buildDepthRow(index, scratch[std::size_t(worker)]);
+            else
+                ms.buildDepthRow(index - depthRows, msScratch[std::size_t(worker)]);
+        };
+        pool->run(depthRows + (msPending ? kMsRows : 0), item);
+        return;
+    }
+    if (stage + 1 == rebuildStages()) {
+        auto item = [&](int k, int) { resampleShell(k); };
+        pool->run(layers + 1, item);
+        ms.releaseViews();
+        return;
+    }
+    const int order = 2 + (stage - 1) / kMsStageChunks;
+    const int first = (stage - 1) % kMsStageChunks * kMsStageRows;
+    const int count = std::min(kMsStageRows, kMsRows - first);
+    auto item = [&](int index, int worker) {
+        ms.buildOrderRow(first + index, order, msScratch[std::size_t(worker)]);
+    };
+    pool->run(count, item);
 }
 
 // Shells of equal mixed mass between the viewer and the top (see the file
@@ -1142,14 +1194,20 @@ void SkySolver::beginSolve(const AtmosphereParams& air, const glm::dvec3& lightD
     m.setLight(lightDirection);
     m.amortised = true;
     m.nextRow = 0;
+    m.nextStage = 0;
 }
 
 bool SkySolver::continueSolve(int rows) {
     Impl& m = *impl_;
     if (!m.amortised) return true;
     rows = std::max(rows, 1);
-    if (m.depthPending) {
-        m.run(true, 0, 0);
+    // The rebuild, a step per row of the budget; offering the snapshot to
+    // other solvers (a copy of ~2 MB) is its last.
+    for (; m.depthPending && rows > 0; --rows) {
+        if (m.nextStage < m.rebuildStages()) {
+            m.runStage(m.nextStage++);
+            continue;
+        }
         m.cachedAir = m.rawAir;
         m.cacheValid = true;
         m.depthPending = false;
@@ -1157,8 +1215,8 @@ bool SkySolver::continueSolve(int rows) {
         m.msPending = false;
         m.forceRebuild = false;
         m.shareTables();
-        --rows;
     }
+    if (m.depthPending) return false;
     const int end = std::min(m.nextRow + rows, m.elevationCount);
     m.run(false, m.nextRow, end);
     m.nextRow = end;

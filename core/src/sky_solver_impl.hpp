@@ -99,6 +99,7 @@ struct SkySolver::Impl {
     bool amortised = false;
     bool depthPending = false;
     int nextRow = 0;
+    int nextStage = 0;  // of the atmosphere's rebuild, in steps (runStage)
 
     // Threads: per-worker scratch and the pool (last: its threads stop first).
     std::vector<Scratch> scratch;              // [threads], 0 = the caller
@@ -106,6 +107,7 @@ struct SkySolver::Impl {
     std::atomic<int> depthRowsDone{0};         // optical-depth rows finished in the running dispatch
     std::atomic<int> msDepthRowsDone{0};
     std::atomic<int> psiRowsDone{0};
+    std::atomic<int> resampleDone{0};   // shells of Psi_ms resampled in the running dispatch
     std::atomic<bool> psiReady{false};  // psiShell resampled in the running dispatch
     std::optional<detail::WorkerPool> pool;
 
@@ -120,6 +122,12 @@ struct SkySolver::Impl {
     void shadowEdgeLayers(Scratch& s, double r0, double sinEl, bool straightOn);
     void spreadMultiple(Scratch& s) const;
     void run(bool rebuild, int rowBegin, int rowEnd);
+    // The atmosphere's rebuild in steps for an amortised solve: stage 0 the
+    // optical-depth rows (the solver's and the LUT's), then each scattering
+    // order's LUT rows in kMsStageRows chunks (the last resamples Psi_ms).
+    int rebuildStages() const;
+    void resampleShell(int k);  // Psi_ms at shell k
+    void runStage(int stage);
     void publish();
     // The atmosphere's tables shared between solvers (sky_solver.cpp,
     // "Shared atmosphere tables"): adopt a snapshot built by another solver
