@@ -101,8 +101,9 @@
 //   is the single scattering along the view ray itself, bright and sharply
 //   peaked at the horizon, which no l <= 2 field can carry. So the narrow
 //   part of the peak, f_s = the phase's share within kMsStraightOnConeDeg
-//   (6 deg: 0.12 at g = 0.8; the horizon's single scattering changes over a
-//   few degrees), is taken as going straight on, exactly: along each view
+//   (4.5 deg: 0.072 at g = 0.8, 0.13 at 0.86; the horizon's single
+//   scattering changes over a few degrees), is taken as going straight on,
+//   exactly (the cone's width: "Mie's last scattering", below): along each view
 //   ray the light that reaches s keeps f_s of Mie's scattering, i.e. sees
 //   e^(f_s tau_M(viewer -> s)) more transmittance (tau_M Mie's scattering
 //   depth), which the sky solver adds as a straight-on share of the single
@@ -119,8 +120,9 @@
 //   form, carried in the single channels, f_s of 0.05 and 0.15 gave 0.053
 //   and 0.046 at -2 deg; the whole e^(f tau_M) without the window, "delta-M
 //   extinction" with f_s = f, 1.2x in red at -2 deg). Rows whose share stays
-//   under 0.5% of their single scattering (above ~7 deg) leave it out
-//   (sky_solver.cpp, kStraightOnFloor): it costs ~3% of the solve.
+//   under 0.5% of their single scattering (above ~7 deg) leave it out,
+//   fading it in from half that (sky_solver.cpp, kStraightOnFloor): it
+//   costs ~3% of the solve.
 //   Mie's last scattering. The series still missed most of what Mie's
 //   peak does with a peaked field: at a point in the earth's shadow in
 //   twilight the sunlit air is a band a few degrees above the horizon
@@ -168,6 +170,23 @@
 //   LUT's rebuild after a change of the atmosphere 6.9 -> 8.7-9.0 ms, and
 //   2.3 ms more where Mie's g changes (viewMatrix_, on one thread). Its
 //   fields and views (~2.3 MB) are freed once resampled (releaseViews).
+//   The straight-on cone's width, with the views in place (worst per sun
+//   against the path tracer, seed 11; the default air at 262144 paths for
+//   -6, -2, 0, +2, +10, +30, +90 deg, hazy_sunset's at 131072 for -6, -2,
+//   0, +2, +10, +45 deg):
+//     2 deg:   0.043 0.030 0.025 0.020 0.016 0.014 0.016 | 0.168 0.080 0.093 0.063 0.062 0.040
+//     3 deg:   0.042 0.029 0.025 0.021 0.020 0.017 0.018 | 0.160 0.079 0.070 0.072 0.087 0.063
+//     4 deg:   0.043 0.034 0.022 0.018 0.016 0.015 0.016 | 0.137 0.075 0.066 0.046 0.053 0.080
+//     4.5 deg: 0.043 0.030 0.024 0.018 0.016 0.012 0.014 | 0.136 0.080 0.067 0.039 0.044 0.032
+//     5 deg:   0.043 0.030 0.025 0.020 0.016 0.012 0.014 | 0.143 0.123 0.068 0.047 0.041 0.035
+//     6 deg:   0.042 0.030 0.027 0.023 0.019 0.016 0.014 | 0.143 0.233 0.131 0.085 0.049 0.051
+//     8 deg:   0.047 0.049 0.040 0.037 0.032 0.024 0.017 | 0.167 0.485 0.293 0.179 0.107 0.073
+//   A wider cone carries light the peak turns by a few degrees along the
+//   view ray itself: in the haze (g = 0.86, whose peak is narrower) the
+//   sun's side of the horizon at -2 deg came out 1.23x in red at 6 deg.
+//   4.5 deg is as good in the default air and 0.08 against 0.23 at -2 deg
+//   in the haze; in desert_dusk's (g = 0.7, 65536 paths) -2, 0, +10 deg
+//   read 0.170, 0.180, 0.063 against 0.184, 0.190, 0.061 at 6 deg.
 //
 // Discretisation (documented in <aerial/sky.hpp>):
 //  * rows: kMsRows heights, the shells of kMsLayers equal-mass layers from
@@ -221,7 +240,7 @@ inline constexpr int kMsAniso = 6;      // D_u, D_s, B_0, B_u, B_s, B_us (the ph
 inline constexpr int kMsPhaseSubsamples = 8;    // per cell side, for the cell-averaged phases
 inline constexpr double kMsPsiFloor = 1e-30;    // 1/sr, below any sky that shows (resample)
 inline constexpr double kMsAnisoRatio = 100.0;  // |A_n / Psi| at most (resample)
-inline constexpr double kMsStraightOnConeDeg = 6.0;  // Mie's straight-on share ("Mie's truncation")
+inline constexpr double kMsStraightOnConeDeg = 4.5;  // Mie's straight-on share ("Mie's truncation")
 /// The field's directions (one side of the sun's vertical plane), and the
 /// view nodes of Mie's last scattering ("Mie's last scattering"): the
 /// poles and the zenith nodes, times 0, the azimuth nodes and pi from the sun.

@@ -164,13 +164,13 @@ const double kSuns[] = {-6.0, -2.0, -0.5, 0.0, 2.0, 10.0, 90.0};
 
 // For every air and coefficient: the largest drift at which the LUT is
 // kept (bisection), and there the sky against the exact one. Measured
-// worst 0.13-0.25% (Rayleigh and ozone at -6 deg, the albedo at +90, Mie's
-// extinction at -0.5); the drifts kept come out at 0.25% (Rayleigh,
-// ozone), 0.36% (albedo), 0.25-1.4% (Mie's scattering and extinction
-// together), 0.13-0.95% (Mie's extinction alone) and 0.00035-0.0025 in g.
+// worst 0.10-0.235% (Rayleigh and ozone at -6 deg, the albedo at +90, Mie's
+// extinction at -0.5); the drifts kept come out at 0.225% (Rayleigh,
+// ozone), 0.33% (albedo), 0.25-1.4% (Mie's scattering and extinction
+// together), 0.13-0.68% (Mie's extinction alone) and 0.00035-0.0025 in g.
 // With the estimate's Mie terms not growing with Mie's optical depth
-// (tau_M = 0 in them) hazy_sunset's air came out at 0.57% (the haze), 0.82%
-// (its extinction) and 2.3% (g), desert_dusk's at 1.4%, 1.7% and 1.4%.
+// (tau_M = 0 in them) hazy_sunset's air came out at 0.61% (the haze), 0.60%
+// (its extinction) and 2.2% (g), desert_dusk's at 1.5%, 1.2% and 1.5%.
 TEST(SkyDrift, KeptLutStaysWithinTheTolerance) {
     std::printf("[ sky drift ] air          | coefficient                   | kept up to | worst error\n");
     for (const NamedAir& air : airs()) {
@@ -315,8 +315,9 @@ TEST(SkyDrift, AmortisedRebuildInSteps) {
 
 // The straight-on share of Mie's peak fades in with its size (sky_solver.cpp,
 // kStraightOnFloor): the sky is continuous in g. Measured largest step
-// between neighbours 0.0005 apart 0.00043 of the pixel; with the share cut
-// off below the floor 0.0042 (at g = 0.8001, sun -2 deg, 6.5 deg up).
+// between neighbours 0.0005 apart 0.00032 of the pixel; with the share cut
+// off below the floor 0.0042 (at g = 0.8001, sun -2 deg, 6.5 deg up, with
+// the straight-on cone at 6 deg).
 TEST(SkyDrift, ContinuousInMieAnisotropy) {
     const glm::dvec3 sun = direction(-2.0, 0.0);
     AtmosphereParams air;
