@@ -146,8 +146,9 @@ std::string rowMappingText() {
            "j / (H - 1), v(el) = (1 - a - b - d) sqrt(el / (pi/2)) + a atan(el / E) / atan(pi/2 / E) + "
            "b (atan((el - c) / w) - atan(-c / w)) / (atan((pi/2 - c) / w) - atan(-c / w)) + "
            "d/2 (1 - B(u)) below c, d/2 (1 + cbrt(u)) above, u = min(|el - c|, c) / c, B(u) = (1 - m) u^" +
-           constantText(kSkyCapBelowPower) + " + m ln(1 + u / " + logScale + ") / ln(1 + 1 / " + logScale +
-           "), m = clamp((" + boostStart + " deg - c) / " + boostRange +
+           constantText(kSkyCapBelowPower) + " + m ln(1 + u / s) / ln(1 + 1 / s), s = min(" + logScale +
+           ", " + constantText(kSkyCapLogScalePerKink) + " c), m = clamp((" + boostStart + " deg - c) / " +
+           boostRange +
            " deg, 0, 1), with E = band_elevation_rad, a = band_share, c = shadow_elevation_rad, w = "
            "shadow_width_rad, b = shadow_share, d = " +
            constantText(kSkyCapRowShare) + " cap_strength (1 + " + constantText(kSkyCapRowBoost - 1.0) +
@@ -166,17 +167,25 @@ std::string rowMappingText() {
 std::string columnMappingText() {
     const double x1 = 128.0 * kSkyCapInsideShare, x2 = x1 + 128.0 * kSkyCapOnsetShare;
     const double x3 = x2 + 128.0 * kSkyCapNearShare;
+    const double y1 = 128.0 * kSkyCapInsideShareSet, y2 = y1 + 128.0 * kSkyCapOnsetShareSet;
+    const double y3 = y2 + 128.0 * kSkyCapNearShare;
+    // For a light just set (the boost fraction m of the row mapping) the
+    // shares and the band's knot blend linearly towards the *Set constants
+    // (skyCapShape).
+    const std::string blend =
+        ". For a light just set the " + constantText(kSkyCapOnsetGrowth) +
+        " in q2 and the knots x1, x2, x3 blend linearly with the row mapping's m towards " +
+        constantText(kSkyCapOnsetGrowthSet) + " and (" + constantText(y1) + ", " + constantText(y2) + ", " +
+        constantText(y3) + ") W / 128 (t then runs between the blended knots)";
     return "column i = EXR pixel x holds the azimuth relative to the light phi_i = 2 pi i / W rad, measured "
            "from the light's azimuth towards east; the azimuth wraps (column W = column 0) and column i "
            "equals "
            "column W - i. Where cap_curvature k > 0 and cap_strength g > 0 (a light less than 1 deg below "
            "the "
            "horizon) the columns of the row at elevation el are instead piecewise linear in psi = |pi - phi| "
-           "(in s(psi^2 - p1^2)^" +
-           constantText(kSkyCapBandPower) + ", s(y) = y / (y + S^2), S^2 = (" +
-           constantText(kSkyCapSaturation) + " c)^2 + (" + constantText(kSkyCapSaturationGrowth) +
-           " P)^2 + (" + constantText(kSkyCapSaturationFloorDeg) +
-           " deg)^2, between p1 and p2) through the knots x = |i - W/2| = (0, " + constantText(x1) + ", " +
+           "(in ln(1 + (psi^2 - p1^2) / Y0), Y0 = (" +
+           constantText(kSkyCapBandScale) + " c)^2 + (" + constantText(kSkyCapBandOnsetScale) +
+           " P)^2, between p1 and p2) through the knots x = |i - W/2| = (0, " + constantText(x1) + ", " +
            constantText(x2) + ", " + constantText(x3) +
            ", 64) W / 128 at psi = (0, p1, p2, p3, pi), p_m = g q_m + (1 - g) 2 pi x_m / W with q1 = P, q2 = "
            "sqrt((" +
@@ -194,7 +203,7 @@ std::string columnMappingText() {
            constantText(x2) + " W / 128) / (" + constantText(x3 - x2) + " W / 128), a = 1 - " +
            constantText(1.0 - kSkyCapNearSlope) + " g from p2 to p3, t = (x - " + constantText(x3) +
            " W / 128) / (" + constantText(64.0 - x3) + " W / 128), a = 1 - " +
-           constantText(1.0 - kSkyCapFarSlope) + " g from p3 to pi";
+           constantText(1.0 - kSkyCapFarSlope) + " g from p3 to pi" + blend;
 }
 
 constexpr const char* kRadianceMapping =

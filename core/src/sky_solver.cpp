@@ -731,12 +731,18 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
         const double b2 = r0 * (sinEl - sinL * mu);
         if (a2 > kShadowAxisA2) {
             if (!halfQuadraticRoots(a2, b2, c2, lo, hi)) hi = lo;  // empty
-        } else if (c2 > -2.0e-3 * rg) {
+        } else if (c2 > -2.0e-9 * rg) {
             // Parallel to the axis, outside the cylinder or on its surface: a
-            // viewer less than 1 mm inside it (c2 ~ -2 Rg depth) counts as on
+            // viewer less than 1 nm inside it (c2 ~ -2 Rg depth) counts as on
             // it, and on it counts as lit, the limit of the neighbouring
             // directions (for a light exactly on the horizon, the anti-light
-            // horizon texel would otherwise be dark by rounding alone).
+            // horizon texel would otherwise be dark by rounding alone: c2 ~
+            // -0.01 m^2 there). With 1 mm a light less than ~0.001 deg down
+            // (the viewer at the ground ~Rg L^2 / 2 inside) lit the rows
+            // within ~1e-12 rad below the cap's top straight opposite it,
+            // the full lit sky where the exact integral is dark (the cap's
+            // logarithmic rows reach 1e-6 c there: SkyShadowOnset, -0.00005
+            // deg, 185%).
             hi = lo;
         }
         if (mu > 0.0)

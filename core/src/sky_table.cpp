@@ -46,13 +46,13 @@ constexpr double kDeepestDeg = 18.0;     // depressions beyond this [deg] map as
 struct RowMapping {
     double plain = 1.0, a = 0.0, e = 1.0, bandNorm = 1.0;
     double b = 0.0, c = 0.0, w = 1.0, shadowLow = 0.0, shadowNorm = 1.0;
-    double d = 0.0, cap = 1.0, logMix = 0.0;
+    double d = 0.0, cap = 1.0, logMix = 0.0, logScale = kSkyCapLogScale;
     /// The cap's rows below c as a function of u = (c - el) / c, 0..1
     /// (skyCapBelowRow), and its derivative.
-    double belowMap(double u) const { return skyCapBelowRow(u, logMix); }
+    double belowMap(double u) const { return skyCapBelowRow(u, logMix, logScale); }
     double belowSlope(double u) const {
         return (1.0 - logMix) * kSkyCapBelowPower * std::pow(u, kSkyCapBelowPower - 1.0) +
-               logMix / ((u + kSkyCapLogScale) * std::log1p(1.0 / kSkyCapLogScale));
+               logMix / ((u + logScale) * std::log1p(1.0 / logScale));
     }
 
     explicit RowMapping(const SkyTable& t) {
@@ -72,6 +72,7 @@ struct RowMapping {
             d = std::min(skyCapRowShare(t.shadowElevation, t.capStrength), 1.0 - a - b);
             cap = t.shadowElevation;
             logMix = skyCapBoostFraction(cap);
+            logScale = skyCapShape(cap).logScale;
         }
         plain = (1.0 - a - b - d) / std::sqrt(0.5 * kPi);
     }
@@ -193,31 +194,29 @@ constexpr double kCapEndDeg = 1.0;  // and none from this one
 /// The column mapping of one row (sky.hpp, "Table mapping", columns), in
 /// half-columns x = 0..N/2 counted from the anti-light point and the
 /// azimuth psi = 0..pi from it: piecewise linear through five knots (in
-/// s(psi^2 - psiC^2)^q, s(y) = y / (y + S^2), q = kSkyCapBandPower,
-/// between a0 and a0 + a1),
+/// ln(1 + (psi^2 - psiC^2) / Y0), Y0 = (kSkyCapBandScale c)^2 +
+/// (kSkyCapBandOnsetScale psiC)^2, between a0 and a0 + a1),
 ///   x:   0, a0,    a0 + a1,                 xE,  N/2
 ///   psi: 0, psiC,  sqrt((G psiC)^2 + D^2),  psiE, pi
 /// where psiC = sqrt(max(c - el, 0) / k) is the onset of the lit sky around
 /// the cap of the earth's shadow in this row, D = max(psiC(0) / 2, min(1
 /// deg, kSkyCapBandPerKink c)) the band's width at the cap's top, G =
 /// kSkyCapOnsetGrowth, psiE = min(2 (psiC(0) + max(psiC(0) / 2, 1 deg)),
-/// 3 pi / 4), and (a0, a1, xE) = (3, 12, 28) / 128 of N. Only psiC depends
-/// on the row, so every column keeps its place relative to the onset from
-/// row to row. The band: at the cap's top (psiC = 0) the height above the
-/// onset is k psi^2, so uniform in psi^2 is uniform in it, up to where the
-/// lit sky levels off: ~100 c from the anti-light point (it rises as psi^2
-/// from ~12 c and halves its deficit by ~100 c, the same in units of c for
-/// any light just set), so s saturates at S = kSkyCapSaturation c there.
-/// For a light 0.002 deg down (c ~ L) that is 0.3 of a 1 deg band, and
-/// uniform in psi^2 it put no column between 0.03 and 0.3 deg: the pixel
-/// 60% low 0.1 deg from the anti-light point at el = c (21% with the
-/// tests' floor; 70% at -0.0005 deg), 1.7% with s. Below the top S grows with psiC
-/// (kSkyCapSaturationGrowth), towards uniform in psi^2 again, and the band
-/// narrows with c below 0.002 deg (kSkyCapBandPerKink), while psiE keeps
-/// its 1 deg floor (narrowed with the band it left 4.8% on the horizon 2
-/// deg from the anti-light point of a light 0.0003 deg down). The power q
-/// crowds the band's first columns at the onset, where the lit sky starts
-/// as the square of the height above it.
+/// 3 pi / 4), and (a0, a1, xE) = (3, 12, 28) / 128 of N; for a light just
+/// set a0, a1 and G blend towards 2 / 128, 20 / 128 and 6 (SkyCapShape).
+/// Only psiC depends on the row, so every column keeps its place relative
+/// to the onset from row to row. The band: at the cap's top (psiC = 0) the
+/// height above the onset is k psi^2; the lit sky switches on ~10 c from
+/// the anti-light point (as ~psi^5 for a light just set) and levels off
+/// over ~100-1000 c, so the band is geometric in psi^2 beyond ~10 c. (For
+/// a light 0.002 deg down (c ~ L) uniform in psi^2 put no column between
+/// 0.03 and 0.3 deg: the pixel 60% low 0.1 deg from the anti-light point at
+/// el = c; then uniform in s(y)^0.7, s(y) = y / (y + (150 c)^2), 1.7%, but
+/// 3-15% at the cap's top of a light 0.0002-0.00002 deg down, sky.hpp.)
+/// Below the top Y0 grows with psiC, and the band narrows with c below
+/// 0.002 deg (kSkyCapBandPerKink), while psiE keeps its 1 deg floor
+/// (narrowed with the band it left 4.8% on the horizon 2 deg from the
+/// anti-light point of a light 0.0003 deg down).
 /// Lower down the lit sky ramps up over a width that grows with psiC (the
 /// level lines of the shadow's exit height fan out from the cap's top), so
 /// the band widens with G psiC (G = 1.25, 1.5 and 2 tried: 2 is best at
@@ -240,8 +239,7 @@ struct ColumnMapping {
     double psi[5] = {0.0, 0.0, 0.0, 0.0, kPi};
     double farSlope = 1.0;    // a: the last segment's slope at psiE, relative to its mean
     double nearSlope = 1.0;   // the same for the segment before it, at the band's outer knot
-    double saturation = 0.0;  // S^2 of the band's s(y) = y / (y + S^2), y = psi^2 - psiC^2
-    double bandCoordinate(double y) const { return y / (y + saturation); }
+    double bandScale = 1.0;   // Y0 of the band's ln(1 + y / Y0), y = psi^2 - psiC^2
     bool uniform = true;
 
     ColumnMapping(const SkyTable& t, double elevation) {
@@ -251,17 +249,17 @@ struct ColumnMapping {
         if (!(k > 0.0) || !(g > 0.0) || !(c > 0.0) || !(n >= 4.0)) return;
         constexpr double kDeg = kPi / 180.0;
         const double foot = std::min(std::sqrt(c / k), 0.25 * kPi);  // psiC at the horizon
+        const SkyCapShape shape = skyCapShape(c);
         const double wide = std::max(0.5 * foot, kSkyCapMinBandDeg * kDeg);
         const double band = std::max(0.5 * foot, std::min(kSkyCapMinBandDeg * kDeg, kSkyCapBandPerKink * c));
         const double end = std::min(2.0 * (foot + wide), 0.75 * kPi);
         const double onset = std::min(std::sqrt(std::max(c - std::max(elevation, 0.0), 0.0) / k), foot);
-        saturation = std::pow(kSkyCapSaturation * c, 2) + std::pow(kSkyCapSaturationGrowth * onset, 2) +
-                     std::pow(kSkyCapSaturationFloorDeg * kDeg, 2);
-        x[1] = kSkyCapInsideShare * n;
-        x[2] = x[1] + kSkyCapOnsetShare * n;
+        bandScale = std::pow(kSkyCapBandScale * c, 2) + std::pow(kSkyCapBandOnsetScale * onset, 2);
+        x[1] = shape.insideShare * n;
+        x[2] = x[1] + shape.onsetShare * n;
         x[3] = x[2] + kSkyCapNearShare * n;
         x[4] = 0.5 * n;
-        const double capPsi[5] = {0.0, onset, std::hypot(kSkyCapOnsetGrowth * onset, band), end, kPi};
+        const double capPsi[5] = {0.0, onset, std::hypot(shape.onsetGrowth * onset, band), end, kPi};
         for (int m = 1; m < 4; ++m) psi[m] = g * capPsi[m] + (1.0 - g) * 2.0 * kPi * x[m] / n;
         farSlope = 1.0 - g * (1.0 - kSkyCapFarSlope);
         nearSlope = 1.0 - g * (1.0 - kSkyCapNearSlope);
@@ -273,9 +271,8 @@ struct ColumnMapping {
             if (p < psi[m + 1] || m == 3) {
                 if (!(psi[m + 1] > psi[m])) return x[m + 1];
                 const double q = std::min(p, kPi);
-                const double u = m == 1 ? std::pow(bandCoordinate(q * q - psi[1] * psi[1]) /
-                                                       bandCoordinate(psi[2] * psi[2] - psi[1] * psi[1]),
-                                                   kSkyCapBandPower)
+                const double u = m == 1 ? std::log1p((q * q - psi[1] * psi[1]) / bandScale) /
+                                              std::log1p((psi[2] * psi[2] - psi[1] * psi[1]) / bandScale)
                                         : (q - psi[m]) / (psi[m + 1] - psi[m]);
                 // The last two segments' u = a t + (1 - a) t^2, solved for t without cancellation.
                 const double a = m == 3 ? farSlope : nearSlope;
@@ -291,10 +288,10 @@ struct ColumnMapping {
                 const double t = (std::min(h, x[4]) - x[m]) / (x[m + 1] - x[m]);
                 const double a = m == 3 ? farSlope : nearSlope;
                 double u = m >= 2 ? t * (a + (1.0 - a) * t) : t;
-                if (m == 1) {  // s(y) = u^(1/q) s(y2), solved for y
+                if (m == 1) {  // ln(1 + y / Y0) = u ln(1 + y2 / Y0), solved for y
                     const double y2 = psi[2] * psi[2] - psi[1] * psi[1];
-                    u = std::pow(u, 1.0 / kSkyCapBandPower);
-                    return std::sqrt(psi[1] * psi[1] + u * y2 * saturation / (saturation + y2 * (1.0 - u)));
+                    return std::sqrt(psi[1] * psi[1] +
+                                     bandScale * std::expm1(u * std::log1p(y2 / bandScale)));
                 }
                 return psi[m] + (psi[m + 1] - psi[m]) * u;
             }

@@ -48,15 +48,17 @@ std::string coreConstantsGlsl() {
         {"kSkyCapMinBand", kSkyCapMinBandDeg * kPi / 180.0},  // [rad]
         {"kSkyCapOnsetGrowth", kSkyCapOnsetGrowth},
         {"kSkyCapBandPerKink", kSkyCapBandPerKink},
-        {"kSkyCapSaturation", kSkyCapSaturation},
-        {"kSkyCapSaturationGrowth", kSkyCapSaturationGrowth},
-        {"kSkyCapSaturationFloor", kSkyCapSaturationFloorDeg * kPi / 180.0},  // [rad]
-        {"kSkyCapBandPower", kSkyCapBandPower},
+        {"kSkyCapBandScale", kSkyCapBandScale},
+        {"kSkyCapBandOnsetScale", kSkyCapBandOnsetScale},
         {"kSkyCapFarSlope", kSkyCapFarSlope},
         {"kSkyCapNearSlope", kSkyCapNearSlope},
         {"kSkyCapRowShare", kSkyCapRowShare},
         {"kSkyCapBelowPower", kSkyCapBelowPower},
         {"kSkyCapLogScale", kSkyCapLogScale},
+        {"kSkyCapLogScalePerKink", kSkyCapLogScalePerKink},
+        {"kSkyCapInsideShareSet", kSkyCapInsideShareSet},
+        {"kSkyCapOnsetShareSet", kSkyCapOnsetShareSet},
+        {"kSkyCapOnsetGrowthSet", kSkyCapOnsetGrowthSet},
         {"kSkyCapRowBoost", kSkyCapRowBoost},
         {"kSkyCapBoostStart", kSkyCapBoostStartDeg * kPi / 180.0},  // [rad]
         {"kSkyCapBoostFull", kSkyCapBoostFullDeg * kPi / 180.0},    // [rad]

@@ -50,7 +50,8 @@ bool skyTableCapActive(vec2 cap, float c) { return cap.x > 0.0 && cap.y > 0.0 &&
 /// (E, a, c), w and b as there; cap as in skyTableCapActive (the cap's rows,
 /// d = kSkyCapRowShare g times the boost of skyCapRowShare (aerial/sky.hpp),
 /// uniform in (c - el)^kSkyCapBelowPower from 0 to c, blending into ln(1 + u
-/// / kSkyCapLogScale), u = (c - el) / c, with the boost (skyCapBelowRow), and
+/// / s), s = min(kSkyCapLogScale, kSkyCapLogScalePerKink c), u = (c - el) / c,
+/// with the boost (skyCapBelowRow), and
 /// in cbrt(el - c) from c to 2c).
 float skyTableMappedRow(float elevation, vec3 band, float w, float b, vec2 cap) {
     float el = clamp(elevation, 0.0, 0.5 * kPi);
@@ -67,7 +68,8 @@ float skyTableMappedRow(float elevation, vec3 band, float w, float b, vec2 cap) 
     }
     if (d > 0.0) {
         float u = min(abs(el - band.z), band.z) / band.z;
-        float below = mix(pow(u, kSkyCapBelowPower), log(1.0 + u / kSkyCapLogScale) / log(1.0 + 1.0 / kSkyCapLogScale),
+        float logScale = clamp(kSkyCapLogScalePerKink * band.z, 0.0, kSkyCapLogScale);
+        float below = mix(pow(u, kSkyCapBelowPower), log(1.0 + u / logScale) / log(1.0 + 1.0 / logScale),
                           boostFraction);
         v += d * 0.5 * (el < band.z ? 1.0 - below : 1.0 + pow(u, 1.0 / 3.0));
     }
@@ -81,10 +83,11 @@ float skyTableQuadraticStep(float u, float a) { return 2.0 * u / (a + sqrt(a * a
 /// The column (0..columns) of an azimuth `relative` [0, 2 pi) from the light
 /// at elevation el (skyTableColumn, core/src/sky_table.cpp): uniform, or
 /// piecewise linear in the azimuth psi from the anti-light point (in
-/// s(psi^2 - psiC^2)^kSkyCapBandPower between the second and third knot,
-/// s(y) = y / (y + S^2), S^2 = (kSkyCapSaturation c)^2 +
-/// (kSkyCapSaturationGrowth psiC)^2 + kSkyCapSaturationFloor^2) through the knots x = (0, 3, 15, 28,
-/// 64) / 128 columns, psi = (0, psiC,
+/// ln(1 + (psi^2 - psiC^2) / Y0) between the second and third knot, Y0 =
+/// (kSkyCapBandScale c)^2 + (kSkyCapBandOnsetScale psiC)^2) through the
+/// knots x = (0, 3, 15, 28, 64) / 128 columns (blended with m towards (0,
+/// 2, 22, 35, 64) / 128 for a light just set, as G towards
+/// kSkyCapOnsetGrowthSet: skyCapShape, m the boost fraction), psi = (0, psiC,
 /// sqrt((G psiC)^2 + D^2), psiE, pi), psiC = sqrt(max(c - el, 0) / k) the
 /// onset of the lit sky around the cap of the earth's shadow, D =
 /// max(psiC(0) / 2, min(1 deg, kSkyCapBandPerKink c)), G =
@@ -100,13 +103,16 @@ float skyTableColumnAt(float relative, float el, float columns, float c, vec2 ca
     float band = max(0.5 * foot, min(kSkyCapMinBand, kSkyCapBandPerKink * c));
     float end = min(2.0 * (foot + max(0.5 * foot, kSkyCapMinBand)), 0.75 * kPi);
     float onset = min(sqrt(max(c - max(el, 0.0), 0.0) / k), foot);
-    float saturation = kSkyCapSaturation * c * kSkyCapSaturation * c +
-                       kSkyCapSaturationGrowth * onset * kSkyCapSaturationGrowth * onset +
-                       kSkyCapSaturationFloor * kSkyCapSaturationFloor;
-    float x1 = kSkyCapInsideShare * columns, x2 = x1 + kSkyCapOnsetShare * columns;
+    // The shares and the band's knot for a light just set (skyCapShape): m the boost fraction.
+    float m = clamp((kSkyCapBoostStart - c) / (kSkyCapBoostStart - kSkyCapBoostFull), 0.0, 1.0);
+    float growth = mix(kSkyCapOnsetGrowth, kSkyCapOnsetGrowthSet, m);
+    float bandScale = kSkyCapBandScale * c * kSkyCapBandScale * c +
+                      kSkyCapBandOnsetScale * onset * kSkyCapBandOnsetScale * onset;
+    float x1 = mix(kSkyCapInsideShare, kSkyCapInsideShareSet, m) * columns;
+    float x2 = x1 + mix(kSkyCapOnsetShare, kSkyCapOnsetShareSet, m) * columns;
     float x3 = x2 + kSkyCapNearShare * columns, x4 = 0.5 * columns;
     float p1 = g * onset + (1.0 - g) * 2.0 * kPi * x1 / columns;
-    float p2 = g * length(vec2(kSkyCapOnsetGrowth * onset, band)) + (1.0 - g) * 2.0 * kPi * x2 / columns;
+    float p2 = g * length(vec2(growth * onset, band)) + (1.0 - g) * 2.0 * kPi * x2 / columns;
     float p3 = g * end + (1.0 - g) * 2.0 * kPi * x3 / columns;
     float psi = relative <= kPi ? kPi - relative : relative - kPi;
     float x;
@@ -117,7 +123,7 @@ float skyTableColumnAt(float relative, float el, float columns, float c, vec2 ca
     else if (psi < p2)
     {
         float y = psi * psi - p1 * p1, y2 = p2 * p2 - p1 * p1;
-        x = x1 + (x2 - x1) * pow((y / (y + saturation)) / (y2 / (y2 + saturation)), kSkyCapBandPower);
+        x = x1 + (x2 - x1) * log(1.0 + y / bandScale) / log(1.0 + y2 / bandScale);
     }
     else if (psi < p3)
         x = x2 + (x3 - x2) * skyTableQuadraticStep((psi - p2) / (p3 - p2), 1.0 - g * (1.0 - kSkyCapNearSlope));

@@ -131,8 +131,8 @@ TEST_F(SkyVsCpu, SetSunRowMappingMatchesSkyRadiance) {
     // the brightest CPU value in the image): the shadow side is dark, and
     // there float rounding of the row alone is relative.
     // And one 0.002 deg below it, whose cap's rows below the kink are
-    // logarithmic (skyCapBelowRow) and whose band's columns saturate at the
-    // floor (kSkyCapSaturationFloorDeg), seen also at the cap's top.
+    // logarithmic (skyCapBelowRow) and whose columns have the shares of a
+    // light just set (SkyCapShape), seen also at the cap's top.
     for (const double depression : {1.5, 0.07, 0.002}) {
         const double t = std::tan(depression * kPi / 180.0);
         const glm::dvec3 sun = glm::normalize(glm::dvec3(0.3, -t * std::hypot(0.3, 0.9), -0.9));

@@ -149,9 +149,9 @@ double texelElevation(int j, const SkyTable& table) {
             const double m = std::clamp(
                 (kSkyCapBoostStartDeg - c * 180.0 / kPi) / (kSkyCapBoostStartDeg - kSkyCapBoostFullDeg), 0.0,
                 1.0);
-            const double below =
-                (1.0 - m) * std::pow(u, kSkyCapBelowPower) +
-                m * std::log(1.0 + u / kSkyCapLogScale) / std::log(1.0 + 1.0 / kSkyCapLogScale);
+            const double s = std::min(kSkyCapLogScale, kSkyCapLogScalePerKink * c);
+            const double below = (1.0 - m) * std::pow(u, kSkyCapBelowPower) +
+                                 m * std::log(1.0 + u / s) / std::log(1.0 + 1.0 / s);
             v += 0.5 * d * (el < c ? 1.0 - below : 1.0 + std::pow(u, 1.0 / 3.0));
         }
         if (a > 0.0)
@@ -176,7 +176,7 @@ double texelAzimuth(int i, double elevation, const SkyTable& table) {
     const double n = table.azimuthCount;
     if (!skyTableColumnsWarped(table)) return 2.0 * kPi * i / n;
     // The column mapping of <aerial/sky.hpp>, written out again: piecewise
-    // linear in the azimuth psi from the anti-light point, in (y / (y + S^2))^q,
+    // linear in the azimuth psi from the anti-light point, in ln(1 + y / Y0),
     // y = psi^2 - P^2, between the second and the third knot, quadratic in
     // the columns after the third.
     const double k = table.capCurvature, g = std::min(table.capStrength, 1.0), c = table.shadowElevation;
@@ -185,11 +185,17 @@ double texelAzimuth(int i, double elevation, const SkyTable& table) {
     const double band = std::max(0.5 * foot, std::min(floorBand, kSkyCapBandPerKink * c));
     const double wide = std::max(0.5 * foot, floorBand);
     const double onset = std::min(std::sqrt(std::max(c - elevation, 0.0) / k), foot);
-    const double s2 = std::pow(kSkyCapSaturation * c, 2) + std::pow(kSkyCapSaturationGrowth * onset, 2) +
-                      std::pow(kSkyCapSaturationFloorDeg * kPi / 180.0, 2);
-    const double xs[5] = {0.0, kSkyCapInsideShare * n, (kSkyCapInsideShare + kSkyCapOnsetShare) * n,
-                          (kSkyCapInsideShare + kSkyCapOnsetShare + kSkyCapNearShare) * n, 0.5 * n};
-    const double cap[5] = {0.0, onset, std::hypot(kSkyCapOnsetGrowth * onset, band),
+    // A light just set blends the shares and the band's knot towards the
+    // *Set constants by the boost fraction m.
+    const double boost = std::clamp(
+        (kSkyCapBoostStartDeg - c * 180.0 / kPi) / (kSkyCapBoostStartDeg - kSkyCapBoostFullDeg), 0.0, 1.0);
+    const double inside = kSkyCapInsideShare + boost * (kSkyCapInsideShareSet - kSkyCapInsideShare);
+    const double onsetShare = kSkyCapOnsetShare + boost * (kSkyCapOnsetShareSet - kSkyCapOnsetShare);
+    const double growth = kSkyCapOnsetGrowth + boost * (kSkyCapOnsetGrowthSet - kSkyCapOnsetGrowth);
+    const double y0 = std::pow(kSkyCapBandScale * c, 2) + std::pow(kSkyCapBandOnsetScale * onset, 2);
+    const double xs[5] = {0.0, inside * n, (inside + onsetShare) * n,
+                          (inside + onsetShare + kSkyCapNearShare) * n, 0.5 * n};
+    const double cap[5] = {0.0, onset, std::hypot(growth * onset, band),
                            std::min(2.0 * (foot + wide), 0.75 * kPi), kPi};
     const double x = std::abs(i - 0.5 * n);
     for (int m = 0; m < 4; ++m) {
@@ -201,10 +207,9 @@ double texelAzimuth(int i, double elevation, const SkyTable& table) {
             const double a = 1.0 - g * (1.0 - (m == 3 ? kSkyCapFarSlope : kSkyCapNearSlope));
             const double u = m >= 2 ? a * t + (1.0 - a) * t * t : t;
             double psi = p0 + (p1 - p0) * u;
-            if (m == 1) {  // (y / (y + S^2))^q = u (y1 / (y1 + S^2))^q, y1 = p1^2 - p0^2
-                const double y1 = p1 * p1 - p0 * p0, r = std::pow(u, 1.0 / kSkyCapBandPower);
-                const double y = r * y1 * s2 / (s2 + y1 * (1.0 - r));
-                psi = std::sqrt(p0 * p0 + y);
+            if (m == 1) {  // ln(1 + y / Y0) = u ln(1 + y1 / Y0), y1 = p1^2 - p0^2
+                const double y1 = p1 * p1 - p0 * p0;
+                psi = std::sqrt(p0 * p0 + y0 * (std::exp(u * std::log(1.0 + y1 / y0)) - 1.0));
             }
             return i <= 0.5 * n ? kPi - psi : kPi + psi;
         }

@@ -127,8 +127,9 @@
 //       towards c, where the lit sky beside the cap ramps up over a width
 //       that grows fast with c - el: at 0.99 c from 0.07 to 1.5 deg from the
 //       anti-light point for a light 0.0005 deg down, against ~0.05 deg at
-//       c; blending into uniform in ln(1 + u / 5e-4), u = (c - el) / c, as
-//       the boost comes in, kSkyCapLogScale), half above c uniform in
+//       c; blending into uniform in ln(1 + u / s), u = (c - el) / c, s =
+//       min(5e-4, 3 c), as the boost comes in, kSkyCapLogScale,
+//       kSkyCapLogScalePerKink), half above c uniform in
 //       cbrt(el - c), crowded at the
 //       cap's top where straight opposite the light the lit sky switches on
 //       within a few 1e-4 deg for a light 0.01 deg down; g = capStrength, 1
@@ -154,10 +155,16 @@
 //     the band's columns crowded at the onset and the segment beyond it got
 //     13 columns, 3.1-5.6% before the cap's rows were doubled, 2.4-10%
 //     before they crowded towards c and the columns beyond the band went
-//     quadratic, 3.2-83% before the band's saturation, below). Closer to
-//     the horizon still the cap shrinks faster than the rows follow it:
-//     -0.0001 deg 2.6%, -0.00005 deg 4.5% (a few hundredths of a second of
-//     a sunset, 1e-4 deg tall);
+//     quadratic, 3.2-83% before the band's saturation, below). That grid
+//     stopped at 0.99976 c and 0.005 deg from the anti-light point; taken
+//     on to 0.999996 c and 0.0005 deg (the cap's top of a light just set,
+//     where the lit sky switches on within ~10-1000 c of the anti-light
+//     point) it found 1.9% at -0.001 deg, 3.4% at -0.0002, 5.1% at
+//     -0.0001, 6.9% at -0.00005 and 15% at -0.00002 (a few hundredths of
+//     a second of a sunset, the cap 2e-5 deg tall), until the band went
+//     logarithmic and a light just set got more of the band's columns
+//     (kSkyCapBandScale, SkyCapShape): 0.4-1.5% from -0.002 to -0.00002 deg
+//     (SkyShadowOnset, AERIAL_SKY_SHADOW_ONSET);
 //   * columns i = 0..azimuthCount-1 hold the azimuth relative to the light
 //       phi_i = 2 pi * i / azimuthCount,
 //     measured from the light's azimuth towards east (the same sense as the
@@ -185,13 +192,13 @@
 //     with g towards 2 pi x / W (skyTableColumn, skyTableAzimuth): the onset lies on column W/2 -+ 3 W / 128
 //     in every row below the cap's top, with 12 columns in the band above it. Only P depends on the row, so
 //     between two rows the onset stays on its column (rows alone could not follow it: 256 x 1024 texels
-//     left 2.4% at -0.05 deg). The band is uniform in s(psi^2 - P^2)^q, s(y) = y / (y + S^2), S^2 =
-//     (kSkyCapSaturation c)^2 + (kSkyCapSaturationGrowth P)^2, q = kSkyCapBandPower (0.7): uniform in
-//     (psi^2 - P^2)^q where S is wide (at the cap's top the height above the onset is k psi^2, and the
-//     lit sky starts as its square: the columns crowd at P), crowded towards P where the lit sky levels off
-//     within the band (at the cap's top ~100 c from the anti-light point, a sliver of the 1 deg band for a
-//     light just set, c ~ L), and widens with P (the 2 in its outer knot is kSkyCapOnsetGrowth): lower down
-//     the cap the lit sky ramps up over an azimuth that grows with P. The knots are mirror-symmetric, so
+//     left 2.4% at -0.05 deg). The band is uniform in ln(1 + (psi^2 - P^2) / Y0), Y0 =
+//     (kSkyCapBandScale c)^2 + (kSkyCapBandOnsetScale P)^2 (10 c and P): geometric in the height above the
+//     onset beyond Y0, where the lit sky at the cap's top switches on (~10 c from the anti-light point) and
+//     levels off (~100-1000 c), and widens with P (the 2 in its outer knot is kSkyCapOnsetGrowth): lower down
+//     the cap the lit sky ramps up over an azimuth that grows with P. For a light just set (c below 0.01
+//     deg, the boost fraction m of the rows) the shares and G blend towards 2 columns inside the cap, 20 in
+//     the band and G = 6 (SkyCapShape). The knots are mirror-symmetric, so
 //     column i still equals column W - i. The horizon averages then weight row 0 by azimuth;
 //   * texel (i, j) is stored at index (j * azimuthCount + i) * 3 (RGB, float).
 //   Directions below the horizon use row 0.
@@ -335,31 +342,22 @@ inline constexpr double kSkyCapOnsetGrowth = 2.0;
 /// The band's width D is at most this many times c (below kSkyCapMinBandDeg;
 /// psiE keeps the 1 deg floor).
 inline constexpr double kSkyCapBandPerKink = 500.0;
-/// The band's columns are uniform in s(psi^2 - P^2), s(y) = y / (y + S^2),
-/// S^2 = (kSkyCapSaturation c)^2 + (kSkyCapSaturationGrowth P)^2: at the
-/// cap's top the lit sky rises as psi^2 and levels off ~100 c from the
-/// anti-light point, which for a light just set (c ~ L) is a sliver of the
-/// 1 deg band.
-inline constexpr double kSkyCapSaturation = 150.0;
-inline constexpr double kSkyCapSaturationGrowth = 3.0;
-/// And S^2 gains (kSkyCapSaturationFloorDeg)^2 [deg^2]: for a light less
-/// than 0.001 deg down the lit sky at the cap's top levels off ~0.15 deg
-/// from the anti-light point (~750 c), and with S = 150 c (0.03 deg at
-/// -0.0002 deg) the band's last column spanned 0.08-0.2 deg there: 2.5% at
-/// the kink 0.1 deg out. 0.015, 0.02, 0.025, 0.03, 0.04, 0.06 deg tried
-/// (SkyShadowOnset at -0.0002 deg): 1.8, 1.6, 1.6, 1.8, 1.8, 3.2%; lights
-/// 0.002 deg and more down (150 c >= 0.3 deg) hardly see it.
-inline constexpr double kSkyCapSaturationFloorDeg = 0.02;
-/// The band's columns are uniform in (s(y) / s(y2))^kSkyCapBandPower (y2
-/// at its outer knot): they crowd at the onset P. At the cap's top the lit
-/// sky starts as ~y^2 over the band's first column (a light 0.001 deg
-/// down: within 0.0015 deg^2 of y, where s is ~one column), which linear
-/// columns rounded off (1.2-1.4% on the rows' centres, 2.4% between them,
-/// 0.9995 c, 0.03 deg from the anti-light point). 0.6, 0.65, 0.7, 0.75
-/// and 0.8 tried (the densest grid, worst of -0.01 .. -0.0002 deg): 0.7 is
-/// best (0.6 leaves the band's outer end too coarse at -0.0002 deg, 0.8
-/// the onset at -0.001 .. -0.005 deg).
-inline constexpr double kSkyCapBandPower = 0.7;
+/// The band's columns are uniform in ln(1 + y / Y0), y = psi^2 - P^2, Y0
+/// = (kSkyCapBandScale c)^2 + (kSkyCapBandOnsetScale P)^2: geometric in
+/// the height above the onset beyond Y0. At the cap's top the lit sky
+/// switches on as ~psi^5 ~10 c from the anti-light point and levels off
+/// over ~100-1000 c, and below it it ramps up over ~10 P: two decades of
+/// azimuth in the band's 12-20 columns. Until this change the band was
+/// uniform in s(y)^q, s(y) = y / (y + S^2), S^2 = (150 c)^2 + (3 P)^2 +
+/// (0.02 deg)^2, q = 0.7 (crowded at the onset, saturating at ~150 c):
+/// on a grid up to 0.999996 c and from 0.0005 deg from the anti-light point
+/// it left 1.9% at -0.001 deg, 3.4% at -0.0002, 5.1% at -0.0001, 6.9% at
+/// -0.00005 and 15% at -0.00002 at the cap's top (with q = 1.15, S^2 =
+/// (150 c)^2 + (3 P)^2 + (0.03 D)^2 and the shares below still 1.5-2.1%);
+/// the logarithm, with the shares below: 0.4-1.2% there. 5, 10 and 20 c
+/// alike; kSkyCapBandOnsetScale 0.5, 1 and 3: 1.5%, 1.2%, 2.5%.
+inline constexpr double kSkyCapBandScale = 10.0;
+inline constexpr double kSkyCapBandOnsetScale = 1.0;
 /// The last segment (psiE .. pi) is quadratic in its columns, with this
 /// slope at psiE relative to its mean (and 2 - it at pi). 0.3 until the
 /// segment gave 3 of its 39 columns to the one before it (below): with 36
@@ -421,16 +419,47 @@ inline double skyCapBoostFraction(double c) {
     const double t = (kSkyCapBoostStartDeg - c * 180.0 / kPi) / (kSkyCapBoostStartDeg - kSkyCapBoostFullDeg);
     return t > 1.0 ? 1.0 : t > 0.0 ? t : 0.0;
 }
+/// For a light just set the column mapping's shares and the band's outer
+/// knot change with the boost fraction m (skyCapBoostFraction), from the
+/// constants above at m = 0 to these at m = 1: 20 columns in the band (2
+/// from inside the cap, whose single scattering is dark, and 6 from the last
+/// segment), its outer knot at 6 P (2, 3 and 4 tried: just below the cap's
+/// top the lit sky ramps up over ~10 P), and the cap's rows below c
+/// logarithmic on the scale min(kSkyCapLogScale, 3 c) (1, 3 and 10 c
+/// tried; 1 c misplaced the first row): with 5e-4 for any c the first row
+/// below c lay at ~35 P of the cap's top for a light 0.0002 deg down (c ~
+/// 3.5e-6 rad), 70 P at -0.00005 deg. Without them (the band logarithmic):
+/// 4.2% at -0.00002 deg.
+inline constexpr double kSkyCapInsideShareSet = 2.0 / 128.0;
+inline constexpr double kSkyCapOnsetShareSet = 20.0 / 128.0;
+inline constexpr double kSkyCapOnsetGrowthSet = 6.0;
+inline constexpr double kSkyCapLogScalePerKink = 3.0;
+/// The column mapping's shape for the kink's elevation c [rad] (above).
+struct SkyCapShape {
+    double insideShare = kSkyCapInsideShare;  ///< of the columns, each side
+    double onsetShare = kSkyCapOnsetShare;
+    double onsetGrowth = kSkyCapOnsetGrowth;
+    double logScale = kSkyCapLogScale;  ///< of the cap's rows below c (skyCapBelowRow)
+};
+inline SkyCapShape skyCapShape(double c) {
+    const double m = skyCapBoostFraction(c);
+    SkyCapShape s;
+    s.insideShare = kSkyCapInsideShare + m * (kSkyCapInsideShareSet - kSkyCapInsideShare);
+    s.onsetShare = kSkyCapOnsetShare + m * (kSkyCapOnsetShareSet - kSkyCapOnsetShare);
+    s.onsetGrowth = kSkyCapOnsetGrowth + m * (kSkyCapOnsetGrowthSet - kSkyCapOnsetGrowth);
+    const double scale = kSkyCapLogScalePerKink * c;
+    s.logScale = scale > 0.0 && scale < kSkyCapLogScale ? scale : kSkyCapLogScale;
+    return s;
+}
 inline double skyCapRowShare(double c, double g) {
     const double boost = 1.0 + (kSkyCapRowBoost - 1.0) * skyCapBoostFraction(c);
     return kSkyCapRowShare * boost * (g > 1.0 ? 1.0 : g > 0.0 ? g : 0.0);
 }
 /// The cap's rows below c: 0 at u = (c - el) / c = 0 (the kink) to 1 at u = 1
-/// (the horizon), (1 - m) u^kSkyCapBelowPower + m ln(1 + u / kSkyCapLogScale)
-/// / ln(1 + 1 / kSkyCapLogScale) for the boost fraction m.
-inline double skyCapBelowRow(double u, double m) {
-    return (1.0 - m) * std::pow(u, kSkyCapBelowPower) +
-           m * std::log1p(u / kSkyCapLogScale) / std::log1p(1.0 / kSkyCapLogScale);
+/// (the horizon), (1 - m) u^kSkyCapBelowPower + m ln(1 + u / s) / ln(1 + 1 /
+/// s) for the boost fraction m and the log scale s (SkyCapShape::logScale).
+inline double skyCapBelowRow(double u, double m, double s) {
+    return (1.0 - m) * std::pow(u, kSkyCapBelowPower) + m * std::log1p(u / s) / std::log1p(1.0 / s);
 }
 
 /// Continuous column (0..azimuthCount, wrapping) of an azimuth `relative`
