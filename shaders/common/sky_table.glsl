@@ -46,6 +46,12 @@ vec2 skyAngles(vec3 v, bool accurate) {
 /// the shadow's elevation.
 bool skyTableCapActive(vec2 cap, float c) { return cap.x > 0.0 && cap.y > 0.0 && c > 0.0; }
 
+/// 0..1, how far a light just set boosts the cap's rows and reshapes its
+/// columns, for the kink's elevation c (skyCapBoostFraction).
+float skyCapBoostFraction(float c) {
+    return clamp((kSkyCapBoostStart - c) / (kSkyCapBoostStart - kSkyCapBoostFull), 0.0, 1.0);
+}
+
 /// The table's row mapping v(el) in 0..1 (see the file comment); band =
 /// (E, a, c), w and b as there; cap as in skyTableCapActive (the cap's rows,
 /// d = kSkyCapRowShare g times the boost of skyCapRowShare (aerial/sky.hpp),
@@ -56,7 +62,7 @@ bool skyTableCapActive(vec2 cap, float c) { return cap.x > 0.0 && cap.y > 0.0 &&
 float skyTableMappedRow(float elevation, vec3 band, float w, float b, vec2 cap) {
     float el = clamp(elevation, 0.0, 0.5 * kPi);
     float a = band.y;
-    float boostFraction = clamp((kSkyCapBoostStart - band.z) / (kSkyCapBoostStart - kSkyCapBoostFull), 0.0, 1.0);
+    float boostFraction = skyCapBoostFraction(band.z);
     float boost = 1.0 + (kSkyCapRowBoost - 1.0) * boostFraction;
     float d = skyTableCapActive(cap, band.z) ? kSkyCapRowShare * boost * clamp(cap.y, 0.0, 1.0) : 0.0;
     if (a <= 0.0 && b <= 0.0 && d <= 0.0) return sqrt(el / (0.5 * kPi));
@@ -104,7 +110,7 @@ float skyTableColumnAt(float relative, float el, float columns, float c, vec2 ca
     float end = min(2.0 * (foot + max(0.5 * foot, kSkyCapMinBand)), 0.75 * kPi);
     float onset = min(sqrt(max(c - max(el, 0.0), 0.0) / k), foot);
     // The shares and the band's knot for a light just set (skyCapShape): m the boost fraction.
-    float m = clamp((kSkyCapBoostStart - c) / (kSkyCapBoostStart - kSkyCapBoostFull), 0.0, 1.0);
+    float m = skyCapBoostFraction(c);
     float growth = mix(kSkyCapOnsetGrowth, kSkyCapOnsetGrowthSet, m);
     float bandScale = kSkyCapBandScale * c * kSkyCapBandScale * c +
                       kSkyCapBandOnsetScale * onset * kSkyCapBandOnsetScale * onset;

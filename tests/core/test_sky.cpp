@@ -471,23 +471,19 @@ INSTANTIATE_TEST_SUITE_P(SunElevations, SkyOffTexel,
 // (SkyCapShape), and the lights 0.0001-0.00002 deg down joined the sweep.
 // History:
 // before the cap's rows below c went logarithmic for c < 0.01 deg
-// (kSkyCapLogScale) and the band's saturation got its floor
-// (kSkyCapSaturationFloorDeg), -0.0005 deg 2.0% (2.15%) and -0.0002 2.5%
+// (kSkyCapLogScale) and the band's saturation got its floor (0.02 deg,
+// gone with the saturation), -0.0005 deg 2.0% (2.15%) and -0.0002 2.5%
 // (2.5%), there a 3% regression bound; before the band's columns crowded at the
-// onset (kSkyCapBandPower) and the segment beyond it got 13 columns
-// (kSkyCapNearShare, kSkyCapNearSlope) the still denser grid gave 2.3%,
-// 2.4%, 2.6% and 3.7% at -0.002, -0.001, -0.0005 and -0.0002 deg; before
-// the cap's rows were doubled for c < 0.005 deg (kSkyCapRowBoost) the
-// sweep without the denser grid gave 3.0%, 3.9% and 3.4% at -0.002, -0.0005
-// and -0.0002 (the still denser grid 3.1%, 5.4%, 5.6%); with the cap's
-// rows below c uniform in sqrt(c - el) and linear columns beyond its band
-// 4.9%, 10.2% and 9.8% (-0.005 deg: 2.4%); before the onset band's
-// columns saturated at ~150 c (kSkyCapSaturation) and a row was put on the
-// kink by the shadow rows' share, 3.2%, 21%, 70% and 83%, at the
-// kink 0.05-0.2 deg from the anti-light point, which the azimuths 179.8 ..
-// 179.95 now probe. -0.3, -0.02, -0.01, -0.002, -0.0005, -0.0002 and
-// -0.00002 deg by default; AERIAL_SKY_SHADOW_ONSET runs every depression.
-// ~35 s a sun; skipped in quick runs.
+// onset (power 0.7, since replaced by the logarithm, kSkyCapBandScale) and the segment beyond it got 13
+// columns (kSkyCapNearShare, kSkyCapNearSlope) the still denser grid gave 2.3%, 2.4%, 2.6% and 3.7% at
+// -0.002, -0.001, -0.0005 and -0.0002 deg; before the cap's rows were doubled for c < 0.005 deg
+// (kSkyCapRowBoost) the sweep without the denser grid gave 3.0%, 3.9% and 3.4% at -0.002, -0.0005 and -0.0002
+// (the still denser grid 3.1%, 5.4%, 5.6%); with the cap's rows below c uniform in sqrt(c - el) and linear
+// columns beyond its band 4.9%, 10.2% and 9.8% (-0.005 deg: 2.4%); before the onset band's columns saturated
+// at ~150 c (since replaced by the logarithm) and a row was put on the kink by the shadow rows' share, 3.2%,
+// 21%, 70% and 83%, at the kink 0.05-0.2 deg from the anti-light point, which the azimuths 179.8 .. 179.95
+// now probe. -0.3, -0.02, -0.01, -0.002, -0.0005, -0.0002 and -0.00002 deg by default;
+// AERIAL_SKY_SHADOW_ONSET runs every depression. ~35 s a sun; skipped in quick runs.
 class SkyShadowOnset : public ::testing::TestWithParam<double> {};
 
 TEST_P(SkyShadowOnset, WithinTwoPercentOfTheExactIntegral) {

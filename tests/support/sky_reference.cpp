@@ -131,6 +131,15 @@ SkySample singleScattering(const AtmosphereParams& air, const glm::dvec3& view, 
 
 double azimuthOf(const glm::dvec3& direction) { return std::atan2(direction.x, -direction.z); }
 
+namespace {
+/// The boost fraction of a light just set (skyCapBoostFraction), written
+/// out again: 0 above a kink at kSkyCapBoostStartDeg, 1 below kSkyCapBoostFullDeg.
+double boostFraction(double c) {
+    return std::clamp((kSkyCapBoostStartDeg - c * 180.0 / kPi) / (kSkyCapBoostStartDeg - kSkyCapBoostFullDeg),
+                      0.0, 1.0);
+}
+}  // namespace
+
 double texelElevation(int j, const SkyTable& table) {
     const int h = table.elevationCount;
     if (h <= 1) return 0.0;
@@ -146,9 +155,7 @@ double texelElevation(int j, const SkyTable& table) {
             const double c = table.shadowElevation;
             const double u = std::min(std::abs(el - c), c) / c;
             // Below c: u^p blending into ln(1 + u / s) / ln(1 + 1 / s) as the boost comes in.
-            const double m = std::clamp(
-                (kSkyCapBoostStartDeg - c * 180.0 / kPi) / (kSkyCapBoostStartDeg - kSkyCapBoostFullDeg), 0.0,
-                1.0);
+            const double m = boostFraction(c);
             const double s = std::min(kSkyCapLogScale, kSkyCapLogScalePerKink * c);
             const double below = (1.0 - m) * std::pow(u, kSkyCapBelowPower) +
                                  m * std::log(1.0 + u / s) / std::log(1.0 + 1.0 / s);
@@ -187,8 +194,7 @@ double texelAzimuth(int i, double elevation, const SkyTable& table) {
     const double onset = std::min(std::sqrt(std::max(c - elevation, 0.0) / k), foot);
     // A light just set blends the shares and the band's knot towards the
     // *Set constants by the boost fraction m.
-    const double boost = std::clamp(
-        (kSkyCapBoostStartDeg - c * 180.0 / kPi) / (kSkyCapBoostStartDeg - kSkyCapBoostFullDeg), 0.0, 1.0);
+    const double boost = boostFraction(c);
     const double inside = kSkyCapInsideShare + boost * (kSkyCapInsideShareSet - kSkyCapInsideShare);
     const double onsetShare = kSkyCapOnsetShare + boost * (kSkyCapOnsetShareSet - kSkyCapOnsetShare);
     const double growth = kSkyCapOnsetGrowth + boost * (kSkyCapOnsetGrowthSet - kSkyCapOnsetGrowth);

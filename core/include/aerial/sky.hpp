@@ -151,7 +151,7 @@
 //     -0.002, 1.2-1.8% from -0.001 to -0.0002 deg; 2.15% at -0.0005 deg and
 //     2.5% at -0.0002 before the cap's rows below c went logarithmic for a
 //     light less than 0.005 deg down and the band's saturation got its floor
-//     (kSkyCapLogScale, kSkyCapSaturationFloorDeg), 2.6% and 3.7% before
+//     (kSkyCapLogScale; the floor, 0.02 deg, went with the saturation), 2.6% and 3.7% before
 //     the band's columns crowded at the onset and the segment beyond it got
 //     13 columns, 3.1-5.6% before the cap's rows were doubled, 2.4-10%
 //     before they crowded towards c and the columns beyond the band went
