@@ -116,6 +116,10 @@ AERIAL_INLINE void depthNode(int n, float t2, float w, float rg, float rg2, cons
 /// alpha + beta cos(phi) -> mapped column of that table row -> the record
 /// tau rgb, T = e^-tau rgb, sqrt(tau) rgb and the margin above the shell's
 /// horizon cosine (negative: the light is below it, the lookup clamped).
+/// Without kShadow (no shell of the row has the light below its horizon in
+/// any column, SkyKernelArgs::shadow) neither the roots nor the margins are
+/// needed (curvatureFactor's first case only) and are not written.
+template <bool kShadow>
 AERIAL_INLINE void skyShell(int nc, float alpha, float beta, float ch, float scale, float knee, float maxU,
                             const float* __restrict t0, const float* __restrict t1,
                             const float* __restrict t2, const float* __restrict cosPhi,
@@ -138,10 +142,12 @@ AERIAL_INLINE void skyShell(int nc, float alpha, float beta, float ch, float sca
         tr0[i] = expNeg(d0);
         tr1[i] = expNeg(d1);
         tr2[i] = expNeg(d2);
-        root0[i] = fastSqrt(d0);
-        root1[i] = fastSqrt(d1);
-        root2[i] = fastSqrt(d2);
-        margins[i] = margin;
+        if constexpr (kShadow) {
+            root0[i] = fastSqrt(d0);
+            root1[i] = fastSqrt(d1);
+            root2[i] = fastSqrt(d2);
+            margins[i] = margin;
+        }
     }
 }
 
@@ -207,7 +213,7 @@ AERIAL_INLINE float curvatureFactor(float cubic, int shadowed, float tauA, float
 /// weights (LayerConstants::straightP, straightQ) into so0..so5: the single
 /// scattering that Mie's narrow forward peak scatters on along the view ray
 /// towards the viewer (sky_multiple.hpp, "Mie's truncation").
-template <bool kStraight>
+template <bool kStraight, bool kShadow>
 AERIAL_INLINE void skyLayer(
     int nc, const LayerConstants& k, const float* __restrict sIn, const float* __restrict sOut,
     const float* __restrict tauA0, const float* __restrict tauA1, const float* __restrict tauA2,
@@ -240,12 +246,6 @@ AERIAL_INLINE void skyLayer(
         const float hi = minNonNegative(sOut[i], s1);
         const int overlap = std::bit_cast<int>(maxZero(hi - lo));  // > 0 where they overlap
         const float lit = std::bit_cast<float>(overlap > 0 ? 0 : 0x3f800000);
-        // Sign bit set where a stencil shell has the light below its horizon.
-        // (Loaded into locals first: a bit_cast of the array element itself
-        // makes GCC lose the restrict information and the loop stays scalar.)
-        const float marginA = mA[i], marginB = mB[i], marginC = mC[i], marginD = mD[i];
-        const int shadowed = std::bit_cast<int>(marginA) | std::bit_cast<int>(marginB) |
-                             std::bit_cast<int>(marginC) | std::bit_cast<int>(marginD);
         const float x0 = wA * tauA0[i] + wB * tauB0[i] + wC * tauC0[i] + wD * tauD0[i];
         const float x1 = wA * tauA1[i] + wB * tauB1[i] + wC * tauC1[i] + wD * tauD1[i];
         const float x2 = wA * tauA2[i] + wB * tauB2[i] + wC * tauC2[i] + wD * tauD2[i];
@@ -253,9 +253,22 @@ AERIAL_INLINE void skyLayer(
         exponentialMoments(tA0[i], tB0[i], tauB0[i] - tauA0[i], a1, a2);
         exponentialMoments(tA1[i], tB1[i], tauB1[i] - tauA1[i], b1, b2);
         exponentialMoments(tA2[i], tB2[i], tauB2[i] - tauA2[i], c1, c2);
-        const float g0 = lit * curvatureFactor(x0, shadowed, tauA0[i], tauB0[i], rA0[i], rB0[i], curv);
-        const float g1 = lit * curvatureFactor(x1, shadowed, tauA1[i], tauB1[i], rA1[i], rB1[i], curv);
-        const float g2 = lit * curvatureFactor(x2, shadowed, tauA2[i], tauB2[i], rA2[i], rB2[i], curv);
+        float g0, g1, g2;
+        if constexpr (kShadow) {
+            // Sign bit set where a stencil shell has the light below its horizon.
+            // (Loaded into locals first: a bit_cast of the array element itself
+            // makes GCC lose the restrict information and the loop stays scalar.)
+            const float marginA = mA[i], marginB = mB[i], marginC = mC[i], marginD = mD[i];
+            const int shadowed = std::bit_cast<int>(marginA) | std::bit_cast<int>(marginB) |
+                                 std::bit_cast<int>(marginC) | std::bit_cast<int>(marginD);
+            g0 = lit * curvatureFactor(x0, shadowed, tauA0[i], tauB0[i], rA0[i], rB0[i], curv);
+            g1 = lit * curvatureFactor(x1, shadowed, tauA1[i], tauB1[i], rA1[i], rB1[i], curv);
+            g2 = lit * curvatureFactor(x2, shadowed, tauA2[i], tauB2[i], rA2[i], rB2[i], curv);
+        } else {
+            g0 = lit * curvatureFactor(x0, 0, 0.0f, 0.0f, 0.0f, 0.0f, curv);
+            g1 = lit * curvatureFactor(x1, 0, 0.0f, 0.0f, 0.0f, 0.0f, curv);
+            g2 = lit * curvatureFactor(x2, 0, 0.0f, 0.0f, 0.0f, 0.0f, curv);
+        }
         a1 *= g0;
         a2 *= g0;
         b1 *= g1;
@@ -446,25 +459,20 @@ AERIAL_INLINE void shellViews(int count, int nc, const float* __restrict views, 
     }
 }
 
-/// Shell j's multiple-scattering weights in channel c, Rayleigh's and
-/// Mie's (msB of the layer below, msA of the one above), each with its
-/// share of the skipped shells' between its evaluated neighbours `stride`
-/// apart (linear between them).
-AERIAL_INLINE void stridedShellWeights(const SkyKernelArgs& a, int j, int stride, int c, float& wr,
-                                       float& wm) {
-    auto weight = [&](int i, int x) {
-        return (i > 0 ? a.layer[i - 1].msB[x] : 0.0f) + (i < a.layers ? a.layer[i].msA[x] : 0.0f);
-    };
-    const int before = j == a.layers ? (j - 1) / stride * stride : j - stride;  // evaluated neighbours
-    const int after = std::min(j + stride, a.layers);
-    wr = weight(j, c);
-    wm = weight(j, 3 + c);
+/// Shell j's multiple-scattering weights (sum[0..2] Rayleigh rgb, 3..5
+/// Mie's) from the per-shell weights `w` ([layers + 1][6]: msB of the layer
+/// below plus msA of the one above), each with its share of the skipped
+/// shells' between its evaluated neighbours `stride` apart (linear between
+/// them).
+void stridedShellWeights(const float* w, int layers, int j, int stride, float sum[6]) {
+    const int before = j == layers ? (j - 1) / stride * stride : j - stride;  // evaluated neighbours
+    const int after = std::min(j + stride, layers);
+    for (int x = 0; x < 6; ++x) sum[x] = w[6 * j + x];
     for (int i = std::max(before + 1, 1); i < after; ++i) {
         if (i == j) continue;
         const float share =
             i < j ? float(i - before) / float(j - before) : float(after - i) / float(after - j);
-        wr += share * weight(i, c);
-        wm += share * weight(i, 3 + c);
+        for (int x = 0; x < 6; ++x) sum[x] += share * w[6 * i + x];
     }
 }
 
@@ -507,6 +515,7 @@ AERIAL_INLINE void edgeChannel(int n, const float* __restrict tauS, const float*
 
 /// The light at shell j (0: the viewer's, j > 0: the upper shell of layer
 /// j - 1) into its record slot.
+template <bool kShadow>
 AERIAL_INLINE void lightAtShell(const SkyKernelArgs& a, int j, float maxU) {
     const int nc = a.columns;
     const int na = a.angles;
@@ -519,8 +528,8 @@ AERIAL_INLINE void lightAtShell(const SkyKernelArgs& a, int j, float maxU) {
     const float* t1 = a.depth + (rows + std::size_t(j)) * na;
     const float* t2 = a.depth + (2 * rows + std::size_t(j)) * na;
     float* r = a.shells + std::size_t(j % kShellSlots) * kShellRecord * nc;
-    skyShell(nc, alpha, beta, ch, scale, a.knee, maxU, t0, t1, t2, a.cosPhi, r, r + nc, r + 2 * nc,
-             r + 3 * nc, r + 4 * nc, r + 5 * nc, r + 6 * nc, r + 7 * nc, r + 8 * nc, r + 9 * nc);
+    skyShell<kShadow>(nc, alpha, beta, ch, scale, a.knee, maxU, t0, t1, t2, a.cosPhi, r, r + nc, r + 2 * nc,
+                      r + 3 * nc, r + 4 * nc, r + 5 * nc, r + 6 * nc, r + 7 * nc, r + 8 * nc, r + 9 * nc);
     if (a.psi != nullptr) {
         const int n = a.psiCosines;
         const float* p0 = a.psi + std::size_t(j) * n;
@@ -532,35 +541,15 @@ AERIAL_INLINE void lightAtShell(const SkyKernelArgs& a, int j, float maxU) {
         // only, each also with its share of the skipped shells' weights
         // (linear between the evaluated ones): A_X, a correction of a few tens
         // of percent, is smooth along the ray, and this divides its cost.
-        const int stride = kAnisoShellStride;
-        const bool evaluated = j % stride == 0 || j == a.layers;
-        if (a.aniso != nullptr && evaluated) {
-            float kq[3], kd[3];
-            for (int c = 0; c < 3; ++c) {
-                float wr = 0.0f, wm = 0.0f;
-                stridedShellWeights(a, j, stride, c, wr, wm);
-                kq[c] = wr * a.rayleighBand2 + wm * a.mieBand2;
-                kd[c] = wm * a.mieBand1;
-            }
+        const float* w = a.msWeights + std::size_t(j) * kMsShellWeights;
+        if (a.aniso != nullptr && w[9] != 0.0f) {
             shellAniso(kMsSkyColumns, nc, alpha, beta, n, a.aniso + std::size_t(j) * n, rows * n,
-                       j == 0 ? a.viewUp0 : a.layer[j - 1].viewUp, a.nuA, a.nuB, kq, kd, a.msCosPhi,
+                       j == 0 ? a.viewUp0 : a.layer[j - 1].viewUp, a.nuA, a.nuB, w, w + 3, a.msCosPhi,
                        r + 10 * nc, a.anisoPoly, r + 13 * nc, r + 14 * nc, a.acc + 6 * nc);
-            const int viewStride = 2 * stride;
-            if (a.views != nullptr && (j % viewStride == 0 || j == a.layers)) {
-                float km[3];
-                bool mie = false;
-                for (int c = 0; c < 3; ++c) {
-                    float wr = 0.0f;
-                    stridedShellWeights(a, j, viewStride, c, wr, km[c]);
-                    // Shells where Mie's weight is under kViewMieFloor of the
-                    // scattering's (high above a haze) leave it out.
-                    mie = mie || km[c] > kViewMieFloor * (wr + km[c]);
-                }
-                if (mie) {
-                    const float viewUp = j == 0 ? a.viewUp0 : a.layer[j - 1].viewUp;
-                    shellViews(kMsSkyColumns, nc, a.views + std::size_t(j) * kMsViews * 3 * n, std::size_t(n),
-                               viewUp, km, r + 14 * nc, r + 13 * nc, r + 10 * nc, a.acc + 6 * nc);
-                }
+            if (a.views != nullptr && w[9] > 1.0f) {
+                const float viewUp = j == 0 ? a.viewUp0 : a.layer[j - 1].viewUp;
+                shellViews(kMsSkyColumns, nc, a.views + std::size_t(j) * kMsViews * 3 * n, std::size_t(n),
+                           viewUp, w + 6, r + 14 * nc, r + 13 * nc, r + 10 * nc, a.acc + 6 * nc);
             }
         }
     }
@@ -629,7 +618,8 @@ AERIAL_HOT_KERNEL void layerExpKernel(int n, const float* __restrict tau, float*
 /// kShellSlots slots (shell j in slot j % kShellSlots): layer l's stencil
 /// spans shells l-1 .. l+2 (0 .. 3 for the first layer, see layerStencil),
 /// so shell l + 2 replaces shell l - 2 before layer l >= 2.
-AERIAL_HOT_KERNEL void skyKernel(const SkyKernelArgs& a) {
+template <bool kShadow>
+AERIAL_INLINE void skyRow(const SkyKernelArgs& a) {
     const int nc = a.columns;
     const int nl = a.layers;
     const float maxU = float(a.angles - 1) - 1e-3f;
@@ -638,9 +628,9 @@ AERIAL_HOT_KERNEL void skyKernel(const SkyKernelArgs& a) {
     const bool straight = a.psi != nullptr && a.straightOn;
     for (int i = 0; i < (straight ? 15 : 9) * nc; ++i)
         acc[i] = 0.0f;  // before the shells: shellAniso adds to it
-    for (int j = 0; j <= std::min(nl, kShellSlots - 1); ++j) lightAtShell(a, j, maxU);
+    for (int j = 0; j <= std::min(nl, kShellSlots - 1); ++j) lightAtShell<kShadow>(a, j, maxU);
     for (int l = 0; l < nl; ++l) {
-        if (l >= 2 && l + 2 <= nl) lightAtShell(a, l + 2, maxU);
+        if (l >= 2 && l + 2 <= nl) lightAtShell<kShadow>(a, l + 2, maxU);
         const LayerConstants& k = a.layer[l];
         const float* lo = shell(l);
         const float* up = shell(l + 1);
@@ -648,21 +638,61 @@ AERIAL_HOT_KERNEL void skyKernel(const SkyKernelArgs& a) {
         const float* d = shell(k.stencilD);
         float* so = acc + 9 * nc;  // the straight-on share (with a.straightOn only)
         if (straight) {
-            skyLayer<true>(nc, k, a.shadowIn, a.shadowOut, lo, lo + nc, lo + 2 * nc, lo + 3 * nc, lo + 4 * nc,
-                           lo + 5 * nc, lo + 6 * nc, lo + 7 * nc, lo + 8 * nc, up, up + nc, up + 2 * nc,
-                           up + 3 * nc, up + 4 * nc, up + 5 * nc, up + 6 * nc, up + 7 * nc, up + 8 * nc, c,
-                           c + nc, c + 2 * nc, d, d + nc, d + 2 * nc, lo + 9 * nc, up + 9 * nc, c + 9 * nc,
-                           d + 9 * nc, acc, acc + nc, acc + 2 * nc, acc + 3 * nc, acc + 4 * nc, acc + 5 * nc,
-                           so, so + nc, so + 2 * nc, so + 3 * nc, so + 4 * nc, so + 5 * nc);
+            skyLayer<true, kShadow>(nc, k, a.shadowIn, a.shadowOut, lo, lo + nc, lo + 2 * nc, lo + 3 * nc,
+                                    lo + 4 * nc, lo + 5 * nc, lo + 6 * nc, lo + 7 * nc, lo + 8 * nc, up,
+                                    up + nc, up + 2 * nc, up + 3 * nc, up + 4 * nc, up + 5 * nc, up + 6 * nc,
+                                    up + 7 * nc, up + 8 * nc, c, c + nc, c + 2 * nc, d, d + nc, d + 2 * nc,
+                                    lo + 9 * nc, up + 9 * nc, c + 9 * nc, d + 9 * nc, acc, acc + nc,
+                                    acc + 2 * nc, acc + 3 * nc, acc + 4 * nc, acc + 5 * nc, so, so + nc,
+                                    so + 2 * nc, so + 3 * nc, so + 4 * nc, so + 5 * nc);
         } else {
-            skyLayer<false>(nc, k, a.shadowIn, a.shadowOut, lo, lo + nc, lo + 2 * nc, lo + 3 * nc,
-                            lo + 4 * nc, lo + 5 * nc, lo + 6 * nc, lo + 7 * nc, lo + 8 * nc, up, up + nc,
-                            up + 2 * nc, up + 3 * nc, up + 4 * nc, up + 5 * nc, up + 6 * nc, up + 7 * nc,
-                            up + 8 * nc, c, c + nc, c + 2 * nc, d, d + nc, d + 2 * nc, lo + 9 * nc,
-                            up + 9 * nc, c + 9 * nc, d + 9 * nc, acc, acc + nc, acc + 2 * nc, acc + 3 * nc,
-                            acc + 4 * nc, acc + 5 * nc, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr);
+            skyLayer<false, kShadow>(nc, k, a.shadowIn, a.shadowOut, lo, lo + nc, lo + 2 * nc, lo + 3 * nc,
+                                     lo + 4 * nc, lo + 5 * nc, lo + 6 * nc, lo + 7 * nc, lo + 8 * nc, up,
+                                     up + nc, up + 2 * nc, up + 3 * nc, up + 4 * nc, up + 5 * nc, up + 6 * nc,
+                                     up + 7 * nc, up + 8 * nc, c, c + nc, c + 2 * nc, d, d + nc, d + 2 * nc,
+                                     lo + 9 * nc, up + 9 * nc, c + 9 * nc, d + 9 * nc, acc, acc + nc,
+                                     acc + 2 * nc, acc + 3 * nc, acc + 4 * nc, acc + 5 * nc, nullptr, nullptr,
+                                     nullptr, nullptr, nullptr, nullptr);
         }
         if (a.psi != nullptr) msLayer(nc, k, lo, up, a.mieIsotropicShare, acc + 6 * nc);
+    }
+}
+
+AERIAL_HOT_KERNEL void skyKernel(const SkyKernelArgs& a) {
+    if (a.shadow)
+        skyRow<true>(a);
+    else
+        skyRow<false>(a);
+}
+
+void msShellWeights(const LayerConstants* layer, int layers, float rayleighBand2, float mieBand1,
+                    float mieBand2, float* scratch, float* out) {
+    for (int i = 0; i <= layers; ++i)
+        for (int x = 0; x < 6; ++x)
+            scratch[6 * i + x] = (i > 0 ? layer[i - 1].msB[x] : 0.0f) + (i < layers ? layer[i].msA[x] : 0.0f);
+    constexpr int stride = kAnisoShellStride, viewStride = 2 * kAnisoShellStride;
+    for (int j = 0; j <= layers; ++j) {
+        float* w = out + std::size_t(j) * kMsShellWeights;
+        const bool evaluated = j % stride == 0 || j == layers;
+        w[9] = 0.0f;
+        if (!evaluated) continue;
+        w[9] = 1.0f;
+        float sum[6];
+        stridedShellWeights(scratch, layers, j, stride, sum);
+        for (int c = 0; c < 3; ++c) {
+            w[c] = sum[c] * rayleighBand2 + sum[3 + c] * mieBand2;
+            w[3 + c] = sum[3 + c] * mieBand1;
+        }
+        if (j % viewStride != 0 && j != layers) continue;
+        stridedShellWeights(scratch, layers, j, viewStride, sum);
+        bool mie = false;
+        for (int c = 0; c < 3; ++c) {
+            w[6 + c] = sum[3 + c];
+            // Shells where Mie's weight is under kViewMieFloor of the
+            // scattering's (high above a haze) leave it out.
+            mie = mie || sum[3 + c] > kViewMieFloor * (sum[c] + sum[3 + c]);
+        }
+        if (mie) w[9] = 2.0f;
     }
 }
 

@@ -93,7 +93,7 @@ struct LayerConstants {
     float alpha, beta, horizonCos, angleScale;  // upper shell: light cosine alpha + beta cos(phi), table row
     float start, end;                           // layer extent along the view ray
     float p[6], q[6];                           // weight p + q t: R rgb, M rgb
-    float msA[6], msB[6];    // multiple scattering: sigma_X T weights at a and b, R rgb, M rgb
+    float msA[6], msB[6];  // multiple scattering: sigma_X T weights at a and b, R rgb, M rgb
     float straightP[6],
         straightQ[6];        // the straight-on share's weight (p + q t) (e^(f tau_M) - 1), see skyLayer
     float viewUp;            // the view ray's zenith cosine at the upper shell
@@ -113,6 +113,11 @@ constexpr int kAnisoShellStride = 4;
 /// came to 13 at most in the default air and 16 in hazy_sunset's, so what
 /// is left out stays under 1% of that shell's multiple scattering.
 constexpr float kViewMieFloor = 5e-4f;
+/// Floats per shell of msShellWeights' output: the anisotropy's
+/// K_q = W_R r2 + W_M m2 and K_d = W_M m1 (rgb each; shellAniso), Mie's view
+/// weight W_M (rgb; shellViews), and a flag: 0 no anisotropy at this shell,
+/// 1 the anisotropy, 2 the anisotropy and the views.
+constexpr int kMsShellWeights = 10;
 /// Shell records kept at a time: a layer's stencil spans four shells.
 constexpr int kShellSlots = 4;
 /// Multiple scattering is integrated along the view rays of this many
@@ -152,8 +157,15 @@ struct SkyKernelArgs {
     float rayleighBand2, mieBand1, mieBand2;  // MultipleScatteringLut's Legendre factors
     float mieIsotropicShare;                  // 1 - f_s: Mie's isotropic share of Psi (MultipleScatteringLut)
     bool straightOn;                          // sum the straight-on share (acc 9..14; with psi only)
-    float* anisoPoly;                         // [9][psiCosines] scratch of shellAniso
-    float* shells;  // [kShellSlots][kShellRecord][columns] scratch: the light at the shells in use
+    /// Whether any shell of the row may have the light below its horizon in
+    /// some column (its margin alpha + beta cos(phi) - horizonCos negative):
+    /// false skips the roots and margins (curvatureFactor's first case), which
+    /// then change nothing.
+    bool shadow;
+    /// [layers + 1][kMsShellWeights] the multiple scattering's weights per shell (msShellWeights).
+    const float* msWeights;
+    float* anisoPoly;  // [9][psiCosines] scratch of shellAniso
+    float* shells;     // [kShellSlots][kShellRecord][columns] scratch: the light at the shells in use
     /// [15][columns]: R rgb, M rgb, multiple rgb (with psi; its first
     /// kMsSkyColumns entries per channel only, at msCosPhi; columns >= kMsSkyColumns),
     /// and with straightOn the straight-on share of the single scattering, R rgb, M rgb
@@ -167,14 +179,26 @@ struct SkyKernelArgs {
 /// (Rayleigh rgb, Mie rgb), and with `psi` the multiple scattering of each
 /// layer, msA Psi(a) + msB Psi(b) (multiple rgb; with `aniso`, each
 /// scatterer's sigma_X A_X(v) added to its Psi, per shell) at the
-/// kMsSkyColumns azimuths msCosPhi. `columns` is a multiple of 16 (no scalar tail).
+/// kMsSkyColumns azimuths msCosPhi. `columns` is a multiple of 8 (no scalar tail), at least kMsSkyColumns.
 void skyKernel(const SkyKernelArgs& a);
+
+/// The weights with which each shell of a row adds the multiple
+/// scattering's view dependence (kMsShellWeights per shell, `out`
+/// [layers + 1][kMsShellWeights]): the layers on both sides weight a
+/// shell's A_R, A_M by W_R, W_M (msB of the layer below, msA of the one
+/// above); an evaluated shell (every kAnisoShellStride-th and the last)
+/// also takes its share of the skipped shells' weights, linear between the
+/// evaluated ones; the views the same at every second evaluated shell,
+/// where Mie's weight is at least kViewMieFloor of the scattering's.
+/// Once per row (`scratch` [6 (layers + 1)]).
+void msShellWeights(const LayerConstants* layer, int layers, float rayleighBand2, float mieBand1,
+                    float mieBand2, float* scratch, float* out);
 
 /// The multiple scattering's spread from its kMsSkyColumns azimuths into
 /// the table's columns (sky_solver.cpp, spreadMultiple): per column
 /// out = exp(sum of 4 weights x ln value at 4 indices), Catmull-Rom in ln.
 struct SpreadKernelArgs {
-    int count;              // columns, a multiple of 16
+    int count;              // columns, a multiple of 8
     const int* index;       // [4][count] azimuths 0..kMsSkyColumns-1 (mirrored at the ends)
     const float* weight;    // [4][count]
     const float* logValue;  // [kMsSkyColumns] ln of the azimuths' values, in [-69, 60]
@@ -183,7 +207,7 @@ struct SpreadKernelArgs {
 void spreadKernel(const SpreadKernelArgs& a);
 
 struct EdgeKernelArgs {
-    int count;              // lit pieces, a multiple of 16 (those past the real ones: any finite values)
+    int count;              // lit pieces, a multiple of 8 (those past the real ones: any finite values)
     int stride;             // >= count: distance between the channels' arrays
     const float* tauStart;  // [3][stride] optical depth to the light at the piece's start, rgb
     const float* tauMid;    // [3][stride] ... at its middle

@@ -255,9 +255,10 @@ void spreadStencil(double phi, int i, int padded, int* index, float* weight) {
 }
 
 /// (1 - e^-tau) / tau, the mean transmittance across a layer of optical
-/// depth tau >= 0, by its series where the quotient would cancel.
-double layerShape(double tau) {
-    return tau < 1e-2 ? 1.0 - tau * (0.5 - tau * (1.0 / 6.0 - tau / 24.0)) : -std::expm1(-tau) / tau;
+/// depth tau >= 0 given its transmittance e^-tau, by its series where the
+/// quotient would cancel.
+double layerShape(double tau, double transmittance) {
+    return tau < 1e-2 ? 1.0 - tau * (0.5 - tau * (1.0 / 6.0 - tau / 24.0)) : (1.0 - transmittance) / tau;
 }
 
 /// Distance along a ray from radius r0 with zenith cosine mu >= 0 to the
@@ -336,7 +337,7 @@ SkySolver::Impl::Impl(const SkySolverDesc& d) : desc(d) {
     layers = desc.layerCount;
     angles = desc.opticalDepthAngles;
     columns = azimuthCount / 2 + 1;
-    paddedColumns = (columns + 15) / 16 * 16;
+    paddedColumns = (columns + 7) / 8 * 8;
 
     shellHeight.assign(std::size_t(layers) + 1, 0.0);
     horizonCos.assign(std::size_t(layers) + 1, 0.0f);
@@ -345,6 +346,8 @@ SkySolver::Impl::Impl(const SkySolverDesc& d) : desc(d) {
     angleScale.assign(std::size_t(layers) + 1, 0.0f);
     depth.assign(std::size_t(3) * (layers + 1) * angles, 0.0f);
     cosPhi.assign(std::size_t(columns), 1.0);
+    cosHalfPhi.assign(std::size_t(columns), 1.0);
+    sinHalfPhi.assign(std::size_t(columns), 0.0);
     rowElevation.assign(std::size_t(elevationCount), 0.0);
     cosPhiF.assign(std::size_t(paddedColumns), 1.0f);  // padding: a harmless direction
     msCosPhiF.assign(std::size_t(kMsSkyColumns), 1.0f);
@@ -360,6 +363,8 @@ SkySolver::Impl::Impl(const SkySolverDesc& d) : desc(d) {
     for (int i = 0; i < columns; ++i) {
         phi[std::size_t(i)] = 2.0 * kPi * i / azimuthCount;
         cosPhi[std::size_t(i)] = std::cos(phi[std::size_t(i)]);
+        cosHalfPhi[std::size_t(i)] = std::cos(0.5 * phi[std::size_t(i)]);
+        sinHalfPhi[std::size_t(i)] = std::sin(0.5 * phi[std::size_t(i)]);
         cosPhiF[std::size_t(i)] = float(cosPhi[std::size_t(i)]);
         spreadStencil(phi[std::size_t(i)], i, paddedColumns, spreadIndex.data(), spreadWeight.data());
     }
@@ -387,6 +392,8 @@ SkySolver::Impl::Impl(const SkySolverDesc& d) : desc(d) {
         s.shadowOut.assign(std::size_t(paddedColumns), -1.0f);
         s.acc.assign(std::size_t(15) * paddedColumns, 0.0f);
         s.anisoPoly.assign(std::size_t(9) * kMsCosines, 0.0f);
+        s.msWeights.assign(std::size_t(layers + 1) * kMsShellWeights, 0.0f);
+        s.msWeightScratch.assign(std::size_t(layers + 1) * 6, 0.0f);
         const std::size_t pieces = std::size_t(2) * paddedColumns;
         s.edgeCrossing.assign(std::size_t(layers) + 1, 0.0f);
         s.edgeTauStart.assign(3 * pieces, 0.0f);
@@ -395,15 +402,17 @@ SkySolver::Impl::Impl(const SkySolverDesc& d) : desc(d) {
         s.edgeT0.assign(pieces, 0.0f);
         s.edgeDt.assign(pieces, 0.0f);
         s.edgeKappa.assign(6 * pieces, 0.0f);
-        s.edgeWeight.assign(12 * pieces, 0.0f);
         s.edgeOut.assign(6 * pieces, 0.0f);
-        s.edgeLayerKappa.assign(std::size_t(6) * layers, 0.0);
-        s.edgeLayerNorm.assign(std::size_t(6) * layers, 1.0);
+        s.edgeLayerKappa.assign(std::size_t(6) * layers, 0.0f);
+        s.edgeLayerWeight.assign(std::size_t(12) * layers, 0.0f);
         s.edgeLayerReady.assign(std::size_t(layers), 0);
         s.edgeColumn.assign(pieces, 0);
+        s.edgeLayer.assign(pieces, 0);
         s.depthRow.resize(angles);
         s.rowPhi.assign(std::size_t(columns), 0.0);
         s.rowCosPhi.assign(std::size_t(columns), 1.0);
+        s.rowCosHalfPhi.assign(std::size_t(columns), 1.0);
+        s.rowSinHalfPhi.assign(std::size_t(columns), 0.0);
         s.rowCosPhiF.assign(std::size_t(paddedColumns), 1.0f);
         s.rowSpreadIndex.assign(std::size_t(4) * paddedColumns, 0);
         s.rowSpreadWeight.assign(std::size_t(4) * paddedColumns, 0.0f);
@@ -444,7 +453,8 @@ void SkySolver::Impl::run(bool rebuild, int rowBegin, int rowEnd) {
             // Order n's rows wait for the LUT's optical depths (n = 2) or for every row of order n - 1.
             const int order = 2 + index / msRows;
             const std::atomic<int>& ready = order == 2 ? msDepthRowsDone : psiRowsDone;
-            while (ready.load(std::memory_order_acquire) < std::max(order - 2, 1) * msRows) std::this_thread::yield();
+            while (ready.load(std::memory_order_acquire) < std::max(order - 2, 1) * msRows)
+                std::this_thread::yield();
             ms.buildOrderRow(index % msRows, order, msScratch[std::size_t(worker)]);
             psiRowsDone.fetch_add(1, std::memory_order_acq_rel);
             return;
@@ -553,6 +563,8 @@ void SkySolver::Impl::rowColumns(double elevation, Scratch& s) const {
     if (uniform) {
         s.phi = phi.data();
         s.cosPhi = cosPhi.data();
+        s.cosHalfPhi = cosHalfPhi.data();
+        s.sinHalfPhi = sinHalfPhi.data();
         s.cosPhiF = cosPhiF.data();
         s.spreadIndex = spreadIndex.data();
         s.spreadWeight = spreadWeight.data();
@@ -564,10 +576,14 @@ void SkySolver::Impl::rowColumns(double elevation, Scratch& s) const {
         s.rowPhi[std::size_t(i)] = p;
         s.rowCosPhi[std::size_t(i)] = std::cos(p);
         s.rowCosPhiF[std::size_t(i)] = float(s.rowCosPhi[std::size_t(i)]);
+        s.rowCosHalfPhi[std::size_t(i)] = std::cos(0.5 * p);
+        s.rowSinHalfPhi[std::size_t(i)] = std::sin(0.5 * p);
         spreadStencil(p, i, paddedColumns, s.rowSpreadIndex.data(), s.rowSpreadWeight.data());
     }
     s.phi = s.rowPhi.data();
     s.cosPhi = s.rowCosPhi.data();
+    s.cosHalfPhi = s.rowCosHalfPhi.data();
+    s.sinHalfPhi = s.rowSinHalfPhi.data();
     s.cosPhiF = s.rowCosPhiF.data();
     s.spreadIndex = s.rowSpreadIndex.data();
     s.spreadWeight = s.rowSpreadWeight.data();
@@ -621,43 +637,46 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
     // keeps going towards the viewer, so beside the single scattering's
     // weight beta_X T(viewer -> s) the layer carries beta_X T (e^(f tau_M) - 1),
     // tau_M Mie's scattering depth from the viewer to s. Over the layer that
-    // is T(viewer -> a) e^(f tau_M(viewer -> a)) beta_X m_X (1 - e^-tau') / tau'
-    // with tau' = tau - f tau_M(layer) >= 0, less the layer's own weight; the
-    // factor before the layer is formed in one exponent, never above 1 (the
-    // extinction's depth is at least Mie's scattering depth; clamped for air
-    // that says otherwise), so a haze of any thickness neither overflows nor
-    // turns 0 * inf into NaN.
+    // is T'(viewer -> a) beta_X m_X (1 - e^-tau') / tau' with tau' = tau - f
+    // tau_M(layer) >= 0 (the extinction's depth is at least Mie's scattering
+    // depth; clamped for air that says otherwise) and T' = T e^(f tau_M) the
+    // product of the layers' e^-tau' before it, less the layer's own weight.
+    // T' never rises along the ray, so a haze of any thickness neither
+    // overflows nor turns 0 * inf into NaN; e^-tau' = e^-tau e^(f tau_M(layer))
+    // costs one exp per layer (per channel only where Mie's scattering is
+    // coloured), the solve's only transcendental per layer but layerExpKernel's.
     const double straight = multiple ? ms.mieStraightOn() : 0.0;
     double mieDepth[3] = {0.0, 0.0, 0.0};
+    double straightView[3] = {1.0, 1.0, 1.0};  // T'(viewer -> a)
+    const bool greyMie =
+        air.mieScattering[0] == air.mieScattering[1] && air.mieScattering[1] == air.mieScattering[2];
     const double sinL = sinLight, cosL = cosLight;
     for (int l = 0; l < layers; ++l) {
         const double a = s.crossing[std::size_t(l)], b = s.crossing[std::size_t(l) + 1];
         LayerConstants& lc = s.layer[std::size_t(l)];
         const double mass[2] = {s.mass[std::size_t(3 * l)], s.mass[std::size_t(3 * l + 1)]};
         const float* profile[2] = {&s.nodeR[std::size_t(4 * l)], &s.nodeM[std::size_t(4 * l)]};
+        double straightGain = 1.0;  // e^(f tau_M(layer)), grey Mie: the same in every channel
         for (int c = 0; c < 3; ++c) {
             const std::size_t at = std::size_t(3 * l + c);
             const double tau = s.layerDepth[at];
             const double layerT = s.layerT[at];
             // (1 - e^-tau) / tau, by its series where it would cancel.
-            const double g =
-                tau < 1e-2 ? 1.0 - tau * (0.5 - tau * (1.0 / 6.0 - tau / 24.0)) : (1.0 - layerT) / tau;
+            const double g = layerShape(tau, layerT);
             // e^(-tau t_g); the nodes are symmetric (t_3 = 1 - t_0, t_2 = 1 - t_1).
             const double e0 = s.nodeT0[at], e1 = s.nodeT1[at];
             const double e[4] = {e0, e1, e1 > 0.0 ? layerT / e1 : 0.0, e0 > 0.0 ? layerT / e0 : 0.0};
             const double beta[2] = {air.rayleighScattering[c], air.mieScattering[c]};
             const double mieLayer = air.mieScattering[c] * mass[1];
-            // (1 - e^-tau) / tau and (1 - e^-tau') / tau' alike in double, so
-            // that their difference is the straight-on share alone.
-            const double straightT =
-                straight > 0.0 && viewT[c] > 0.0
-                    ? std::exp(std::min(std::log(viewT[c]) + straight * mieDepth[c], 0.0))
-                    : 0.0;
-            const double straightExtra =
-                straightT > 0.0 ? std::max(straightT * layerShape(std::max(tau - straight * mieLayer, 0.0)) -
-                                               viewT[c] * layerShape(tau),
-                                           0.0)
-                                : 0.0;
+            double straightExtra = 0.0;
+            if (straight > 0.0) {
+                const double x = straight * mieLayer;
+                if (c == 0 || !greyMie) straightGain = std::exp(std::min(x, 80.0));
+                const double tauS = std::max(tau - x, 0.0);
+                const double layerS = std::min(layerT * straightGain, 1.0);  // e^-tau'
+                straightExtra = std::max(straightView[c] * layerShape(tauS, layerS) - viewT[c] * g, 0.0);
+                straightView[c] *= layerS;
+            }
             mieDepth[c] += mieLayer;
             for (int p = 0; p < 2; ++p) {
                 double num = 0.0, den = 0.0;
@@ -725,9 +744,8 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
             continue;
         }
         double lo = -INFINITY, hi = INFINITY;
-        const double halfPhi = 0.5 * s.phi[i];
-        const double a2 = oneMinusCosFromParts(towardsAnti, cosCos, std::cos(halfPhi)) *
-                          oneMinusCosFromParts(towardsLight, cosCos, std::sin(halfPhi));
+        const double a2 = oneMinusCosFromParts(towardsAnti, cosCos, s.cosHalfPhi[i]) *
+                          oneMinusCosFromParts(towardsLight, cosCos, s.sinHalfPhi[i]);
         const double b2 = r0 * (sinEl - sinL * mu);
         if (a2 > kShadowAxisA2) {
             if (!halfQuadraticRoots(a2, b2, c2, lo, hi)) hi = lo;  // empty
@@ -789,6 +807,10 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
     k.mieBand1 = float(ms.mieBand1());
     k.mieBand2 = float(ms.mieBand2());
     k.mieIsotropicShare = float(1.0 - straight);
+    if (k.aniso != nullptr)
+        msShellWeights(s.layer.data(), layers, k.rayleighBand2, k.mieBand1, k.mieBand2,
+                       s.msWeightScratch.data(), s.msWeights.data());
+    k.msWeights = s.msWeights.data();
     // Rows whose straight-on share stays below kStraightOnFloor of their
     // single scattering (e^(f tau_M) - 1 at the far end: all but the rows
     // within a few degrees of the horizon) leave it out, the cost of
@@ -797,6 +819,13 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
     // step as g crossed 0.8001 at sun -2 deg, 6.5 deg up).
     const double straightRatio = std::expm1(straight * std::max({mieDepth[0], mieDepth[1], mieDepth[2]}));
     k.straightOn = multiple && straightRatio > 0.5 * kStraightOnFloor;
+    // The light below some shell's horizon in some column: alpha + beta cos(phi)
+    // is at least alpha - |beta| (with a margin for the kernel's rounding).
+    k.shadow = sinL - horizonCos[0] < 1e-6f;
+    for (int l = 0; l < layers && !k.shadow; ++l) {
+        const LayerConstants& lc = s.layer[std::size_t(l)];
+        k.shadow = lc.alpha - std::abs(lc.beta) - lc.horizonCos < 1e-6f;
+    }
     const double straightFade = std::min(straightRatio / (0.5 * kStraightOnFloor) - 1.0, 1.0);
     k.shells = s.shells.data();
     k.acc = s.acc.data();
@@ -930,15 +959,19 @@ void SkySolver::Impl::shadowEdgeLayers(Scratch& s, double r0, double sinEl, bool
         const int iu = int(u);
         return Lookup{std::size_t(row) * angles + std::size_t(iu), u - iu};
     };
-    auto depthAt = [&](const Lookup& q, int c) {
-        const float* at = depth.data() + std::size_t(c) * rows * angles + q.at;
+    const std::size_t plane = rows * std::size_t(angles);  // a channel's optical depths
+    auto depthAt = [&](const Lookup& q, const float* channel) {
+        const float* at = channel + q.at;
         return at[0] + q.f * (double(at[1]) - at[0]);
     };
-    // The view's weight's fall and scale of layer l (the same in every column).
+    // The view's weight's fall kappa and its weights A = W kappa / (1 - e^-kappa)
+    // (the single scattering's, then the straight-on share's) of layer l,
+    // the same in every column.
     std::fill(s.edgeLayerReady.begin(), s.edgeLayerReady.end(), 0);
     auto layerWeights = [&](int l) {
         if (s.edgeLayerReady[std::size_t(l)]) return;
         s.edgeLayerReady[std::size_t(l)] = 1;
+        const LayerConstants& lc = s.layer[std::size_t(l)];
         const float* profile[2] = {&s.nodeR[std::size_t(4 * l)], &s.nodeM[std::size_t(4 * l)]};
         for (int x = 0; x < 2; ++x) {
             const double first = profile[x][0], last = profile[x][3];
@@ -947,9 +980,12 @@ void SkySolver::Impl::shadowEdgeLayers(Scratch& s, double r0, double sinEl, bool
             for (int c = 0; c < 3; ++c) {
                 // >= 0: the rows rise, so density and transmittance fall.
                 const double kappa = std::max(double(s.layerDepth[std::size_t(3 * l + c)]) + fall, 0.0);
-                const std::size_t at = std::size_t(6 * l + 3 * x + c);
-                s.edgeLayerKappa[at] = kappa;
-                s.edgeLayerNorm[at] = kappa > 1e-6 ? kappa / -std::expm1(-kappa) : 1.0 + 0.5 * kappa;
+                const int k = 3 * x + c;
+                const double norm = kappa > 1e-6 ? kappa / -std::expm1(-kappa) : 1.0 + 0.5 * kappa;
+                s.edgeLayerKappa[std::size_t(6 * l + k)] = float(kappa);
+                s.edgeLayerWeight[std::size_t(12 * l + k)] = float((lc.p[k] + 0.5 * double(lc.q[k])) * norm);
+                s.edgeLayerWeight[std::size_t(12 * l + 6 + k)] =
+                    float((lc.straightP[k] + 0.5 * double(lc.straightQ[k])) * norm);
             }
         }
     };
@@ -983,30 +1019,27 @@ void SkySolver::Impl::shadowEdgeLayers(Scratch& s, double r0, double sinEl, bool
         const double litMargin = std::max(alpha + beta * s.cosPhi[i] - horizonCos[std::size_t(shell)], 0.0);
         const Lookup lit = lookup(shell, litMargin), midA = lookup(l, midMargin),
                      midB = lookup(l + 1, midMargin);
-        const Lookup grazeA{std::size_t(l) * angles, 0.0}, grazeB{(std::size_t(l) + 1) * angles, 0.0};
+        // The grazing rays: the first entry of each shell's row.
+        const std::size_t grazeA = std::size_t(l) * angles, grazeB = grazeA + std::size_t(angles);
+        float* tauEdgeOut = edgeAtStart ? s.edgeTauStart.data() : s.edgeTauEnd.data();
+        float* tauLitOut = edgeAtStart ? s.edgeTauEnd.data() : s.edgeTauStart.data();
         for (int c = 0; c < 3; ++c) {
-            const double tauLit = depthAt(lit, c);
-            const double ga = depthAt(grazeA, c), ma = depthAt(midA, c);
-            const double tauEdge = ga + fEdge * (depthAt(grazeB, c) - ga);
-            const double tauMid = ma + fMid * (depthAt(midB, c) - ma);
-            s.edgeTauStart[std::size_t(c * cap + n)] = float(edgeAtStart ? tauEdge : tauLit);
-            s.edgeTauMid[std::size_t(c * cap + n)] = float(tauMid);
-            s.edgeTauEnd[std::size_t(c * cap + n)] = float(edgeAtStart ? tauLit : tauEdge);
+            const float* channel = depth.data() + std::size_t(c) * plane;
+            const double ga = channel[grazeA], ma = depthAt(midA, channel);
+            const std::size_t at = std::size_t(c * cap + n);
+            tauEdgeOut[at] = float(ga + fEdge * (double(channel[grazeB]) - ga));
+            tauLitOut[at] = float(depthAt(lit, channel));
+            s.edgeTauMid[at] = float(ma + fMid * (depthAt(midB, channel) - ma));
         }
         // The view's weight A e^(-kappa t), A = W kappa / (1 - e^-kappa).
         layerWeights(l);
-        const LayerConstants& lc = s.layer[std::size_t(l)];
-        for (int k = 0; k < 6; ++k) {
-            const std::size_t at = std::size_t(6 * l + k);
-            const double norm = s.edgeLayerNorm[at];
-            s.edgeKappa[std::size_t(k * cap + n)] = float(s.edgeLayerKappa[at]);
-            s.edgeWeight[std::size_t(k * cap + n)] = float((lc.p[k] + 0.5 * double(lc.q[k])) * norm);
-            s.edgeWeight[std::size_t((6 + k) * cap + n)] =
-                float((lc.straightP[k] + 0.5 * double(lc.straightQ[k])) * norm);
-        }
-        s.edgeT0[std::size_t(n)] = float((double(from) - s0) / len);
-        s.edgeDt[std::size_t(n)] = float((double(to) - double(from)) / len);
+        for (int k = 0; k < 6; ++k)
+            s.edgeKappa[std::size_t(k * cap + n)] = s.edgeLayerKappa[std::size_t(6 * l + k)];
+        const double invLen = 1.0 / len;
+        s.edgeT0[std::size_t(n)] = float((double(from) - s0) * invLen);
+        s.edgeDt[std::size_t(n)] = float((double(to) - double(from)) * invLen);
         s.edgeColumn[std::size_t(n)] = i;
+        s.edgeLayer[std::size_t(n)] = l;
         ++n;
     };
     // The layer whose inside (start, end) holds s, or -1.
@@ -1023,10 +1056,10 @@ void SkySolver::Impl::shadowEdgeLayers(Scratch& s, double r0, double sinEl, bool
         if (lOut >= 0) piece(i, lOut, sOut, crossing[lOut + 1], true);
     }
     if (n == 0) return;
-    // n rounded up to 16 go through the kernel; the slots past n hold
+    // n rounded up to 8 go through the kernel; the slots past n hold
     // earlier rows' (or the initial) finite values and are not read.
     EdgeKernelArgs e{};
-    e.count = std::min((n + 15) / 16 * 16, cap);
+    e.count = std::min((n + 7) / 8 * 8, cap);
     e.stride = cap;
     e.tauStart = s.edgeTauStart.data();
     e.tauMid = s.edgeTauMid.data();
@@ -1037,11 +1070,12 @@ void SkySolver::Impl::shadowEdgeLayers(Scratch& s, double r0, double sinEl, bool
     e.out = s.edgeOut.data();
     edgeKernel(e);
     const int planes = straightOn ? 12 : 6;  // with the straight-on share (skyKernel's acc 9..14)
-    for (int m = 0; m < n; ++m) {
-        const int i = s.edgeColumn[std::size_t(m)];
-        for (int k = 0; k < planes; ++k)
-            s.acc[std::size_t((k < 6 ? k : k + 3) * paddedColumns + i)] +=
-                s.edgeWeight[std::size_t(k * cap + m)] * s.edgeOut[std::size_t((k % 6) * cap + m)];
+    for (int k = 0; k < planes; ++k) {
+        float* acc = s.acc.data() + std::size_t(k < 6 ? k : k + 3) * paddedColumns;
+        const float* out = s.edgeOut.data() + std::size_t(k % 6) * cap;
+        const float* weight = s.edgeLayerWeight.data() + k;
+        for (int m = 0; m < n; ++m)
+            acc[s.edgeColumn[std::size_t(m)]] += weight[12 * s.edgeLayer[std::size_t(m)]] * out[m];
     }
 }
 

@@ -28,34 +28,39 @@ struct SkySolver::Impl {
         std::vector<float> shadowIn, shadowOut;                 // [padded columns]
         std::vector<float> acc;                                 // [9 padded columns]
         std::vector<float> anisoPoly;                           // [9][kMsCosines] shellAniso's scratch
+        std::vector<float> msWeights;        // [layers + 1][kMsShellWeights] (msShellWeights)
+        std::vector<float> msWeightScratch;  // [layers + 1][6]
         // Lit pieces of the layers cut by a shadow edge (shadowEdgeLayers), at most 2 per column.
-        std::vector<float> edgeCrossing;              // [layers + 1]
+        std::vector<float> edgeCrossing;                          // [layers + 1]
         std::vector<float> edgeTauStart, edgeTauMid, edgeTauEnd;  // [3][2 padded columns]
         std::vector<float> edgeT0, edgeDt;                        // [2 padded columns]
         std::vector<float> edgeKappa, edgeOut;                    // [6][2 padded columns]
-        std::vector<float> edgeWeight;  // [12][2 padded columns]: the weights, then the straight-on share's
-        // Per layer of the row: the view's weight's fall kappa and its scale
-        // kappa / (1 - e^-kappa), [layers][6] (R rgb, M rgb), once a piece needs them.
-        std::vector<double> edgeLayerKappa, edgeLayerNorm;
-        std::vector<unsigned char> edgeLayerReady;    // [layers]
-        std::vector<int> edgeColumn;                  // [2 padded columns]
-        detail::DepthRowScratch depthRow;             // optical-depth rows
+        // Per layer of the row, once a piece needs them: the view's weight's
+        // fall kappa [layers][6] (R rgb, M rgb) and its weights
+        // W kappa / (1 - e^-kappa) [layers][12] (then the straight-on share's).
+        std::vector<float> edgeLayerKappa, edgeLayerWeight;
+        std::vector<unsigned char> edgeLayerReady;  // [layers]
+        std::vector<int> edgeColumn, edgeLayer;     // [2 padded columns] each piece's column and layer
+        detail::DepthRowScratch depthRow;           // optical-depth rows
         // The row's column azimuths (rowColumns): the shared uniform ones, or
         // this row's own where the column mapping warps it.
-        std::vector<double> rowPhi, rowCosPhi;  // [columns]
-        std::vector<float> rowCosPhiF;          // [padded columns]
-        std::vector<int> rowSpreadIndex;        // [4][padded columns]
-        std::vector<float> rowSpreadWeight;     // [4][padded columns]
-        const double* phi = nullptr;            // [columns] azimuth of each column from the light
-        const double* cosPhi = nullptr;         // [columns]
-        const float* cosPhiF = nullptr;         // [padded columns]
-        const int* spreadIndex = nullptr;       // [4][padded columns]
-        const float* spreadWeight = nullptr;    // [4][padded columns]
+        std::vector<double> rowPhi, rowCosPhi;             // [columns]
+        std::vector<double> rowCosHalfPhi, rowSinHalfPhi;  // [columns] cos and sin of phi / 2
+        std::vector<float> rowCosPhiF;                     // [padded columns]
+        std::vector<int> rowSpreadIndex;                   // [4][padded columns]
+        std::vector<float> rowSpreadWeight;                // [4][padded columns]
+        const double* phi = nullptr;                       // [columns] azimuth of each column from the light
+        const double* cosPhi = nullptr;                    // [columns]
+        const double* cosHalfPhi = nullptr;                // [columns] cos(phi / 2) (planet_shadow.hpp)
+        const double* sinHalfPhi = nullptr;                // [columns] sin(phi / 2)
+        const float* cosPhiF = nullptr;                    // [padded columns]
+        const int* spreadIndex = nullptr;                  // [4][padded columns]
+        const float* spreadWeight = nullptr;               // [4][padded columns]
     };
 
     SkySolverDesc desc;
     int azimuthCount = 0, elevationCount = 0, layers = 0, angles = 0, columns = 0;
-    int paddedColumns = 0;  // columns rounded up to 16: the kernels run no scalar tail
+    int paddedColumns = 0;  // columns rounded up to 8: no scalar tail on AVX2 (a vector epilogue on AVX-512)
 
     // Atmosphere-dependent state (the optical-depth table and the layers).
     bool cacheValid = false;
@@ -84,7 +89,8 @@ struct SkySolver::Impl {
     // Light-dependent state.
     glm::dvec3 light{0.0, 1.0, 0.0};
     double lightAzimuth = 0.0, sinLight = 1.0, cosLight = 0.0;
-    std::vector<double> phi, cosPhi;   // [columns] the uniform columns' azimuths
+    std::vector<double> phi, cosPhi;             // [columns] the uniform columns' azimuths
+    std::vector<double> cosHalfPhi, sinHalfPhi;  // [columns] cos and sin of their halves
     std::vector<double> rowElevation;  // [elevationCount] the rows' elevations (the table's mapping)
     std::vector<float> cosPhiF;        // [padded columns]
     std::vector<float> msCosPhiF;      // [kMsSkyColumns] the multiple scattering's azimuths (sky_kernels.hpp)
