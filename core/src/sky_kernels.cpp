@@ -6,8 +6,11 @@
 // Everything here is plain arithmetic over contiguous float arrays, written
 // so that GCC vectorises it: no calls (helpers are forced inline, so they
 // are compiled for the calling kernel's target clone), no float compares in
-// loop bodies (clamps on the bit patterns), no std::sqrt or std::exp (their
-// errno paths block the vectoriser). The four kernels are compiled for
+// loop bodies (clamps on the bit patterns; the file is also compiled with
+// -fno-trapping-math, core/CMakeLists.txt, so that the double loop of
+// edgePieceKernel vectorises with its compares), no std::exp (its errno path
+// blocks the vectoriser; std::sqrt has none here, the file being compiled
+// with -fno-math-errno). The kernels are compiled for
 // AVX-512, AVX2 and the baseline (target_clones, chosen at load time).
 #include "sky_kernels.hpp"
 #include "sky_multiple.hpp"
@@ -76,17 +79,11 @@ AERIAL_INLINE float expNeg(float x) {
     return p * std::bit_cast<float>(bits);
 }
 
-/// sqrt(x) for x > 0 (relative error < 1e-5) by Newton steps on the
-/// reciprocal root: plain arithmetic, so that loops over it vectorise
-/// (std::sqrt keeps an errno branch that blocks GCC's vectoriser).
-AERIAL_INLINE float fastSqrt(float x) {
-    float y = std::bit_cast<float>(0x5f375a86 - (std::bit_cast<int>(x) >> 1));
-    const float half = 0.5f * x;
-    y = y * (1.5f - half * y * y);
-    y = y * (1.5f - half * y * y);
-    y = y * (1.5f - half * y * y);
-    return x * y;
-}
+/// sqrt(x) for x >= 0 that vectorises (the packed square root): this file
+/// is compiled with -fno-math-errno (core/CMakeLists.txt), so std::sqrt
+/// has no errno branch to block GCC's vectoriser. (The Newton steps on the
+/// reciprocal root it replaced took 12 instructions and 1e-7 of precision.)
+AERIAL_INLINE float vecSqrt(float x) { return std::sqrt(x); }
 
 /// One quadrature node of depthKernel for every ray: the falling piece
 /// (d = len1 t^2 from the perigee) and the rising piece (d = start2 + len2 t^2).
@@ -101,8 +98,8 @@ AERIAL_INLINE void depthNode(int n, float t2, float w, float rg, float rg2, cons
         const float d2 = start2[m] + len2[m] * t2;
         const float num1 = q[m] + d1 * d1;  // r^2 - Rg^2
         const float num2 = q[m] + d2 * d2;
-        const float h1 = maxZero(num1 / (fastSqrt(rg2 + num1) + rg));
-        const float h2 = maxZero(num2 / (fastSqrt(rg2 + num2) + rg));
+        const float h1 = maxZero(num1 / (vecSqrt(rg2 + num1) + rg));
+        const float h2 = maxZero(num2 / (vecSqrt(rg2 + num2) + rg));
         const float ds1 = len1[m] * w, ds2 = len2[m] * w;
         outR[m] += onR * (ds1 * expNeg(h1 * invR) + ds2 * expNeg(h2 * invR));
         outM[m] += onM * (ds1 * expNeg(h1 * invM) + ds2 * expNeg(h2 * invM));
@@ -143,9 +140,9 @@ AERIAL_INLINE void skyShell(int nc, float alpha, float beta, float ch, float sca
         tr1[i] = expNeg(d1);
         tr2[i] = expNeg(d2);
         if constexpr (kShadow) {
-            root0[i] = fastSqrt(d0);
-            root1[i] = fastSqrt(d1);
-            root2[i] = fastSqrt(d2);
+            root0[i] = vecSqrt(d0);
+            root1[i] = vecSqrt(d1);
+            root2[i] = vecSqrt(d2);
             margins[i] = margin;
         }
     }
@@ -305,7 +302,7 @@ AERIAL_INLINE void shellPsi(int nc, float alpha, float beta, int n, const float*
     const float maxU = float(n - 1) - 1e-3f;
     for (int i = 0; i < nc; ++i) {
         const float mu = alpha + beta * cosPhi[i];
-        const float root = fastSqrt(minNonNegative(std::abs(mu), 1.0f));
+        const float root = vecSqrt(minNonNegative(std::abs(mu), 1.0f));
         const float x = std::bit_cast<float>(std::bit_cast<int>(root) |
                                              (std::bit_cast<int>(mu) & static_cast<int>(0x80000000u)));
         const float u = minNonNegative(maxZero((x + 1.0f) * scale), maxU);
@@ -357,10 +354,10 @@ AERIAL_INLINE void shellAniso(int count, int nc, float alpha, float beta, int n,
             p2[j] = kq[c] * bs[j];
         }
     }
-    const float vsMax = fastSqrt(maxZero(1.0f - vu2) + 1e-30f);
+    const float vsMax = vecSqrt(maxZero(1.0f - vu2) + 1e-30f);
     for (int i = 0; i < count; ++i) {
         const float mu = alpha + beta * cosPhi[i];
-        const float sinS = fastSqrt(maxZero(1.0f - mu * mu) + 1e-8f);
+        const float sinS = vecSqrt(maxZero(1.0f - mu * mu) + 1e-8f);
         const float vs = (nuA + nuB * cosPhi[i] - vu * mu) / sinS;
         across[i] = vs < -vsMax ? -vsMax : (vs > vsMax ? vsMax : vs);
     }
@@ -426,12 +423,12 @@ AERIAL_INLINE void shellViews(int count, int nc, const float* __restrict views, 
     static const ViewAzimuths nodes;
     // cos theta = -sign(x) x^2, t = (x + 1) kMsZeniths / 2 (msZenithNode).
     static_assert(kMsZenithPower == 2.0, "the view's zenith position inverts x^2 by a square root");
-    const float root = fastSqrt(minNonNegative(std::abs(viewUp), 1.0f));
+    const float root = vecSqrt(minNonNegative(std::abs(viewUp), 1.0f));
     const float x = viewUp > 0.0f ? -root : root;
     int iz = 0;
     float fz = 0.0f;
     viewInterval((x + 1.0f) * 0.5f * float(kMsZeniths), kMsZeniths, iz, fz);
-    const float sinV = fastSqrt(maxZero(1.0f - viewUp * viewUp));
+    const float sinV = vecSqrt(maxZero(1.0f - viewUp * viewUp));
     const float invSinV = sinV > 1e-6f ? 1.0f / sinV : 0.0f;
     const std::size_t lower = std::size_t(iz) * kMsViewAzimuths * 3, upper = lower + kMsViewAzimuths * 3;
     for (int i = 0; i < count; ++i) {
@@ -510,6 +507,58 @@ AERIAL_INLINE void edgeChannel(int n, const float* __restrict tauS, const float*
         exponentialMoments(e0, e1, kh + tm - ts, f1a, f2a);
         exponentialMoments(e1, e2, kh + te - tm, f1b, f2b);
         out[i] = h * (f1a + f1b);
+    }
+}
+
+/// edgePieceKernel's loop (restrict parameters, as skyShell).
+AERIAL_INLINE void edgePieces(int n, std::size_t stride, const double* __restrict from,
+                              const double* __restrict to, const double* __restrict mu,
+                              const double* __restrict litQ, const double* __restrict tangentA,
+                              const double* __restrict tangentInv, const double* __restrict start,
+                              const double* __restrict invLength, const int* __restrict layer,
+                              const int* __restrict edgeAtStart, double tangent2, double viewTwice,
+                              double rg2, double lightAtViewer, double knee, double maxU, int angles,
+                              const float* __restrict angleScale, const float* __restrict depth,
+                              std::size_t plane, float* __restrict tauStart, float* __restrict tauMid,
+                              float* __restrict tauEnd, float* __restrict t0, float* __restrict dt) {
+    for (int m = 0; m < n; ++m) {
+        const double a = from[m], b = to[m];
+        const bool atStart = edgeAtStart[m] != 0;
+        const double edge = atStart ? a : b, middle = 0.5 * (a + b);
+        // r^2 - Rg^2 along the view ray; the tangent lengths.
+        const double zMid2 = std::max(tangent2 + middle * (viewTwice + middle), 0.0);
+        const double zMid = std::sqrt(zMid2), rMid = std::sqrt(zMid2 + rg2);
+        const double zEdge = std::sqrt(std::max(tangent2 + edge * (viewTwice + edge), 0.0));
+        const double za = tangentA[m], zInv = tangentInv[m];
+        const double fEdge = std::min(std::max((zEdge - za) * zInv, 0.0), 1.0);
+        const double fMid = std::min(std::max((zMid - za) * zInv, 0.0), 1.0);
+        // The light's zenith cosine at the middle, (r0 sinL + s mu) / r, above
+        // the horizon's there, -z / r; mapped.
+        const double midMargin = std::max((lightAtViewer + middle * mu[m] + zMid) / rMid, 0.0);
+        const double midQ = midMargin / (midMargin + knee);
+        const int l = layer[m];
+        const int lit = atStart ? l + 1 : l;
+        const double uLit = std::min(litQ[m] * double(angleScale[lit]), maxU);
+        const double uA = std::min(midQ * double(angleScale[l]), maxU);
+        const double uB = std::min(midQ * double(angleScale[l + 1]), maxU);
+        const int iLit = int(uLit), iA = int(uA), iB = int(uB);
+        const double fLit = uLit - iLit, fA = uA - iA, fB = uB - iB;
+        const int rowA = l * angles, rowB = rowA + angles;
+        const int atLit = lit * angles + iLit, atA = rowA + iA, atB = rowB + iB;
+        for (int c = 0; c < 3; ++c) {
+            const float* ch = depth + std::size_t(c) * plane;
+            const double ga = ch[rowA], gb = ch[rowB];
+            const double tauEdge = ga + fEdge * (gb - ga);
+            const double tauLit = ch[atLit] + fLit * (double(ch[atLit + 1]) - ch[atLit]);
+            const double ma = ch[atA] + fA * (double(ch[atA + 1]) - ch[atA]);
+            const double mb = ch[atB] + fB * (double(ch[atB + 1]) - ch[atB]);
+            const std::size_t at = std::size_t(c) * stride + std::size_t(m);
+            tauStart[at] = float(atStart ? tauEdge : tauLit);
+            tauEnd[at] = float(atStart ? tauLit : tauEdge);
+            tauMid[at] = float(ma + fMid * (mb - ma));
+        }
+        t0[m] = float((a - start[m]) * invLength[m]);
+        dt[m] = float((b - a) * invLength[m]);
     }
 }
 
@@ -595,7 +644,7 @@ AERIAL_HOT_KERNEL void nodeKernel(const NodeKernelArgs& a) {
     float* __restrict outO = a.ozone;
     for (int n = 0; n < a.count; ++n) {
         const float dr2 = s[n] * (a.twoR0Mu + s[n]);  // r^2 - r0^2
-        const float h = maxZero(a.viewerHeight + dr2 / (fastSqrt(a.r0 * a.r0 + dr2) + a.r0));
+        const float h = maxZero(a.viewerHeight + dr2 / (vecSqrt(a.r0 * a.r0 + dr2) + a.r0));
         outR[n] = k.rayleighOn * expNeg(h * k.invRayleighH);
         outM[n] = k.mieOn * expNeg(h * k.invMieH);
         outO[n] = k.ozoneOn * maxZero(1.0f - std::abs(h - k.ozoneCenter) * k.ozoneInvHalfWidth);
@@ -625,7 +674,7 @@ AERIAL_INLINE void skyRow(const SkyKernelArgs& a) {
     const float maxU = float(a.angles - 1) - 1e-3f;
     float* acc = a.acc;
     auto shell = [&](int j) { return a.shells + std::size_t(j % kShellSlots) * kShellRecord * nc; };
-    const bool straight = a.psi != nullptr && a.straightOn;
+    const bool straight = a.straightOn;
     for (int i = 0; i < (straight ? 15 : 9) * nc; ++i)
         acc[i] = 0.0f;  // before the shells: shellAniso adds to it
     for (int j = 0; j <= std::min(nl, kShellSlots - 1); ++j) lightAtShell<kShadow>(a, j, maxU);
@@ -637,7 +686,9 @@ AERIAL_INLINE void skyRow(const SkyKernelArgs& a) {
         const float* c = shell(k.stencilC);
         const float* d = shell(k.stencilD);
         float* so = acc + 9 * nc;  // the straight-on share (with a.straightOn only)
-        if (straight) {
+        if (!a.layerLit[l]) {
+            // the earth's shadow overlaps the layer in every column: nothing to add
+        } else if (straight) {
             skyLayer<true, kShadow>(nc, k, a.shadowIn, a.shadowOut, lo, lo + nc, lo + 2 * nc, lo + 3 * nc,
                                     lo + 4 * nc, lo + 5 * nc, lo + 6 * nc, lo + 7 * nc, lo + 8 * nc, up,
                                     up + nc, up + 2 * nc, up + 3 * nc, up + 4 * nc, up + 5 * nc, up + 6 * nc,
@@ -694,6 +745,16 @@ void msShellWeights(const LayerConstants* layer, int layers, float rayleighBand2
         }
         if (mie) w[9] = 2.0f;
     }
+}
+
+AERIAL_HOT_KERNEL void edgePieceKernel(const EdgePieceArgs& a) {
+    const std::size_t stride = std::size_t(a.stride);
+    edgePieces(a.count, stride, a.from, a.to, a.mu, a.litQ, a.tangentA, a.tangentInv, a.start, a.invLength,
+               a.layer, a.edgeAtStart, a.tangent2, a.viewTwice, a.planetRadius2, a.lightAtViewer, a.knee,
+               a.maxU, a.angles, a.angleScale, a.depth, a.plane, a.tauStart, a.tauMid, a.tauEnd, a.t0, a.dt);
+    for (std::size_t k = 0; k < 6; ++k)
+        for (int m = 0; m < a.count; ++m)
+            a.kappa[k * stride + std::size_t(m)] = a.layerKappa[6 * a.layer[m] + int(k)];
 }
 
 /// The lit pieces of the layers cut by an edge of the earth's shadow (see
@@ -780,7 +841,7 @@ AERIAL_INLINE void sourceColumns(int n, float alpha, float beta, float scale, fl
         const float mu = alpha * p[i] + beta * q[i];
         const int bits = std::bit_cast<int>(mu);
         const float magnitude = minNonNegative(std::bit_cast<float>(bits & 0x7fffffff), 1.0f);
-        const float root = fastSqrt(magnitude);
+        const float root = vecSqrt(magnitude);
         const float x = std::bit_cast<float>(std::bit_cast<int>(root) | (bits & int(0x80000000u)));
         const float u = minNonNegative(maxZero((x + 1.0f) * scale), maxU);
         const int iu = static_cast<int>(u);

@@ -138,7 +138,11 @@ struct SkyKernelArgs {
     const float* shadowIn;                          // [columns]
     const float* shadowOut;                         // [columns]
     const LayerConstants* layer;                    // [layers]
-    const float* depth;                             // [3][layers + 1][angles] optical depth to the light
+    /// [layers] 0 where the earth's shadow overlaps the layer in every
+    /// column (shadowIn, shadowOut; padding aside): its single scattering is
+    /// 0 there, and the kernel skips it (its multiple scattering stays).
+    const unsigned char* layerLit;
+    const float* depth;  ///< [3][layers + 1][angles] optical depth to the light
     /// Multiple scattering: Psi_ms resampled at the shells, [3][layers + 1][psiCosines]
     /// (sky_multiple.hpp, column mapping msColumnOfCosine); null: single scattering only.
     const float* psi;
@@ -156,7 +160,7 @@ struct SkyKernelArgs {
     float nuA, nuB;  // the view ray's cosine to the light: nuA + nuB cos(phi)
     float rayleighBand2, mieBand1, mieBand2;  // MultipleScatteringLut's Legendre factors
     float mieIsotropicShare;                  // 1 - f_s: Mie's isotropic share of Psi (MultipleScatteringLut)
-    bool straightOn;                          // sum the straight-on share (acc 9..14; with psi only)
+    bool straightOn;                          // sum the straight-on share (acc 9..14)
     /// Whether any shell of the row may have the light below its horizon in
     /// some column (its margin alpha + beta cos(phi) - horizonCos negative):
     /// false skips the roots and margins (curvatureFactor's first case), which
@@ -205,6 +209,49 @@ struct SpreadKernelArgs {
     float* out;             // [count]
 };
 void spreadKernel(const SpreadKernelArgs& a);
+
+struct EdgePieceArgs {
+    int count;   // lit pieces (shadowEdgeLayers)
+    int stride;  // >= count: distance between the channels' output arrays
+    // Per piece:
+    const double* from;  // [count] its start and end along the view ray [m]
+    const double* to;    // [count]
+    const double* mu;    // [count] the view ray's cosine to the light
+    const double* litQ;  // [count] the light's margin above the lit shell's horizon, mapped x / (x + knee)
+    const double* tangentA;    // [count] the tangent length z = sqrt(r^2 - Rg^2) of its layer's lower shell
+    const double* tangentInv;  // [count] 1 / (z_b - z_a) of its layer, 0 where z_b <= z_a
+    const double* start;       // [count] its layer's start along the view ray
+    const double* invLength;   // [count] 1 / its layer's length
+    const int* layer;          // [count] its layer l (shells l and l + 1)
+    /// [count] 1: the piece starts at the shadow's edge (its lit shell l + 1), 0: ends there (l)
+    const int* edgeAtStart;
+    // The row and the atmosphere:
+    double tangent2;   // r0^2 - Rg^2 at the viewer
+    double viewTwice;  // 2 r0 sin(elevation)
+    double planetRadius2;
+    double lightAtViewer;  // r0 sinL
+    double knee, maxU;     // the optical-depth table's mapping (opticalDepthRow)
+    int angles;
+    const float* angleScale;  // [layers + 1]
+    const float* depth;       // [3][layers + 1][angles]
+    std::size_t plane;        // (layers + 1) angles
+    const float* layerKappa;  // [layers][6] (shadowEdgeLayers)
+    // Out, as edgeKernel takes them:
+    float* tauStart;  // [3][stride]
+    float* tauMid;
+    float* tauEnd;
+    float* t0;     // [count]
+    float* dt;     // [count]
+    float* kappa;  // [6][stride]
+};
+
+/// The optical depths to the light at the start, middle and end of each
+/// lit piece (sky_solver.cpp, shadowEdgeLayers: at the shadow's edge the
+/// grazing rays' of the layer's shells, linear in the tangent length; at the
+/// middle the table's rows of both shells at the point's own margin, linear
+/// in the tangent length; at the lit shell the table's), the piece's extent
+/// in its layer's t and the view weight's fall, in double precision.
+void edgePieceKernel(const EdgePieceArgs& a);
 
 struct EdgeKernelArgs {
     int count;              // lit pieces, a multiple of 8 (those past the real ones: any finite values)

@@ -11,6 +11,7 @@
 #include <aerial/sky.hpp>
 
 #include <atomic>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -28,8 +29,9 @@ struct SkySolver::Impl {
         std::vector<float> shadowIn, shadowOut;                 // [padded columns]
         std::vector<float> acc;                                 // [9 padded columns]
         std::vector<float> anisoPoly;                           // [9][kMsCosines] shellAniso's scratch
-        std::vector<float> msWeights;        // [layers + 1][kMsShellWeights] (msShellWeights)
-        std::vector<float> msWeightScratch;  // [layers + 1][6]
+        std::vector<float> msWeights;         // [layers + 1][kMsShellWeights] (msShellWeights)
+        std::vector<float> msWeightScratch;   // [layers + 1][6]
+        std::vector<unsigned char> layerLit;  // [layers] (SkyKernelArgs::layerLit)
         // Lit pieces of the layers cut by a shadow edge (shadowEdgeLayers), at most 2 per column.
         std::vector<float> edgeCrossing;                          // [layers + 1]
         std::vector<float> edgeTauStart, edgeTauMid, edgeTauEnd;  // [3][2 padded columns]
@@ -39,9 +41,13 @@ struct SkySolver::Impl {
         // fall kappa [layers][6] (R rgb, M rgb) and its weights
         // W kappa / (1 - e^-kappa) [layers][12] (then the straight-on share's).
         std::vector<float> edgeLayerKappa, edgeLayerWeight;
+        std::vector<double> edgeLayerTangent;       // [layers][2] z at the lower shell, 1 / (z_b - z_a)
         std::vector<unsigned char> edgeLayerReady;  // [layers]
         std::vector<int> edgeColumn, edgeLayer;     // [2 padded columns] each piece's column and layer
-        detail::DepthRowScratch depthRow;           // optical-depth rows
+        std::vector<int> pieceAtStart;  // [2 padded columns] and the rest of edgePieceKernel's inputs
+        std::vector<double> pieceFrom, pieceTo, pieceMu, pieceLitQ, pieceTangentA, pieceTangentInv,
+            pieceStart, pieceInvLength;
+        detail::DepthRowScratch depthRow;  // optical-depth rows
         // The row's column azimuths (rowColumns): the shared uniform ones, or
         // this row's own where the column mapping warps it.
         std::vector<double> rowPhi, rowCosPhi;             // [columns]
@@ -92,11 +98,21 @@ struct SkySolver::Impl {
     std::vector<double> phi, cosPhi;             // [columns] the uniform columns' azimuths
     std::vector<double> cosHalfPhi, sinHalfPhi;  // [columns] cos and sin of their halves
     std::vector<double> rowElevation;  // [elevationCount] the rows' elevations (the table's mapping)
-    std::vector<float> cosPhiF;        // [padded columns]
-    std::vector<float> msCosPhiF;      // [kMsSkyColumns] the multiple scattering's azimuths (sky_kernels.hpp)
-    std::vector<int> spreadIndex;      // [4][padded columns] spreadMultiple's Catmull-Rom stencil
-    std::vector<float> spreadWeight;   // [4][padded columns] and weights
+    // Rows whose multiple scattering is integrated, and the others', taken
+    // between those in elevation (planMultipleRows, "Multiple scattering
+    // between rows" in sky_solver.cpp).
+    std::vector<int> rowOrder;               // [elevationCount] the integrated rows first, then the others
+    std::vector<unsigned char> msRowSolved;  // [elevationCount] 1: integrated
+    std::vector<int> msRowNode;      // [elevationCount][4] the integrated rows an other row is taken from
+    std::vector<float> msRowWeight;  // [elevationCount][4] and their weights
+    std::vector<float> msRowValue;   // [elevationCount][3][kMsSkyColumns] an integrated row's azimuths
+    std::unique_ptr<std::atomic<int>[]> msRowDone;  // [elevationCount] msRowValue written in this solve
+    std::vector<float> cosPhiF;                     // [padded columns]
+    std::vector<float> msCosPhiF;     // [kMsSkyColumns] the multiple scattering's azimuths (sky_kernels.hpp)
+    std::vector<int> spreadIndex;     // [4][padded columns] spreadMultiple's Catmull-Rom stencil
+    std::vector<float> spreadWeight;  // [4][padded columns] and weights
 
+    std::vector<double> publishAzimuths;  // [columns] row 0's column azimuths (publish)
     // Double-buffered output: tables[front] is published.
     SkyTable tables[2];
     int front = 0;
@@ -122,6 +138,7 @@ struct SkySolver::Impl {
     void setAtmosphere(const AtmosphereParams& params);
     void setLight(const glm::dvec3& direction);
     void buildLayers();
+    void planMultipleRows();
     void buildDepthRow(int row, Scratch& s);
     void rowColumns(double elevation, Scratch& s) const;
     void solveRow(int row, Scratch& s);

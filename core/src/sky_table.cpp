@@ -32,7 +32,7 @@ constexpr double kShadowFadeDeg = 0.01;  // the shadow rows fade in over this de
 // row on the kink instead) and a floor of 1.2 deg: 1.0-1.5% up to 6 deg
 // from -0.3 to -0.01 deg (SkyShadowOnset), SkyOffTexel within 0.3 points.
 constexpr double kBandFloorDeg = 1.2;
-constexpr double kDeepestDeg = 18.0;     // depressions beyond this [deg] map as this one
+constexpr double kDeepestDeg = 18.0;  // depressions beyond this [deg] map as this one
 
 /// The row mapping of a table (sky.hpp) as a function of x = sqrt(elevation):
 /// v(x) = (1 - a - b - d) x / sqrt(pi/2) + a atan(x^2 / E) / atan(pi/2 / E)
@@ -237,9 +237,9 @@ constexpr double kCapEndDeg = 1.0;  // and none from this one
 struct ColumnMapping {
     double x[5] = {0.0, 0.0, 0.0, 0.0, 0.0};
     double psi[5] = {0.0, 0.0, 0.0, 0.0, kPi};
-    double farSlope = 1.0;    // a: the last segment's slope at psiE, relative to its mean
-    double nearSlope = 1.0;   // the same for the segment before it, at the band's outer knot
-    double bandScale = 1.0;   // Y0 of the band's ln(1 + y / Y0), y = psi^2 - psiC^2
+    double farSlope = 1.0;   // a: the last segment's slope at psiE, relative to its mean
+    double nearSlope = 1.0;  // the same for the segment before it, at the band's outer knot
+    double bandScale = 1.0;  // Y0 of the band's ln(1 + y / Y0), y = psi^2 - psiC^2
     bool uniform = true;
 
     ColumnMapping(const SkyTable& t, double elevation) {
@@ -434,18 +434,12 @@ double skyTableRow(const SkyTable& table, double elevation) {
     return std::clamp((h - 1) * v, 0.0, double(h - 1));
 }
 
-double skyTableElevation(const SkyTable& table, double row) {
-    const int h = table.elevationCount;
-    if (h <= 1) return 0.0;
-    const double v = std::clamp(row / (h - 1), 0.0, 1.0);
-    const RowMapping map(table);
-    if (map.quadratic()) return 0.5 * kPi * v * v;
-    if (v >= 1.0) return 0.5 * kPi;
-    if (v <= 0.0) return 0.0;
-    // Newton in x = sqrt(el), kept inside a shrinking bracket (bisection
-    // where a step would leave it); v(x) is increasing.
-    double lo = 0.0, hi = std::sqrt(0.5 * kPi);
-    double x = v * hi;
+namespace {
+
+/// x = sqrt(el) of mapped position v in (0, 1) (map(x) = v) by Newton kept
+/// inside the bracket [lo, hi] (bisection where a step would leave it),
+/// starting at x; v(x) is increasing.
+double rowRoot(const RowMapping& map, double v, double lo, double hi, double x) {
     for (int it = 0; it < 100; ++it) {
         const double f = map(x) - v;
         if (f == 0.0) break;
@@ -469,7 +463,49 @@ double skyTableElevation(const SkyTable& table, double row) {
         x = 0.5 * (lo + hi);
         (map(x) < v ? lo : hi) = x;
     }
+    return x;
+}
+
+}  // namespace
+
+double skyTableElevation(const SkyTable& table, double row) {
+    const int h = table.elevationCount;
+    if (h <= 1) return 0.0;
+    const double v = std::clamp(row / (h - 1), 0.0, 1.0);
+    const RowMapping map(table);
+    if (map.quadratic()) return 0.5 * kPi * v * v;
+    if (v >= 1.0) return 0.5 * kPi;
+    if (v <= 0.0) return 0.0;
+    const double top = std::sqrt(0.5 * kPi);
+    const double x = rowRoot(map, v, 0.0, top, v * top);
     return std::min(x * x, 0.5 * kPi);
+}
+
+void skyTableElevations(const SkyTable& table, int count, double* out) {
+    const int h = table.elevationCount;
+    const RowMapping map(table);
+    if (h <= 1 || map.quadratic()) {
+        for (int j = 0; j < count; ++j) out[j] = skyTableElevation(table, double(j));
+        return;
+    }
+    const double top = std::sqrt(0.5 * kPi);
+    double before = 0.0, last = 0.0;  // x of the two rows before
+    for (int j = 0; j < count; ++j) {
+        const double v = std::clamp(double(j) / (h - 1), 0.0, 1.0);
+        if (!(v > 0.0) || !(v < 1.0)) {
+            out[j] = v >= 1.0 ? 0.5 * kPi : 0.0;
+            before = last;
+            last = v >= 1.0 ? top : 0.0;
+            continue;
+        }
+        // The rows rise: the row before bounds it below, and a step as
+        // long as the last is the first guess.
+        const double guess = j >= 2 ? std::min(last + (last - before), top) : v * top;
+        const double x = rowRoot(map, v, last, top, std::max(guess, last));
+        out[j] = std::min(x * x, 0.5 * kPi);
+        before = last;
+        last = x;
+    }
 }
 
 SkySample sampleSkyTable(const SkyTable& table, const glm::dvec3& viewDirection) {
@@ -599,7 +635,8 @@ SkyTable skyHorizonRow(const SkyTable& table) {
     row.generation = table.generation;
     const std::size_t n = std::size_t(std::max(table.azimuthCount, 0)) * 3;
     auto first = [&](const std::vector<float>& v) {
-        return v.size() >= n ? std::vector<float>(v.begin(), v.begin() + std::ptrdiff_t(n)) : std::vector<float>();
+        return v.size() >= n ? std::vector<float>(v.begin(), v.begin() + std::ptrdiff_t(n))
+                             : std::vector<float>();
     };
     row.rayleigh = first(table.rayleigh);
     row.mie = first(table.mie);

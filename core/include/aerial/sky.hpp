@@ -253,6 +253,12 @@ struct SkySolverDesc {
     /// order); for validation against a path tracer with isotropic phases.
     /// Default false: the real phases (sky.hpp, "Multiple scattering").
     bool isotropicMultipleScattering = false;
+    /// True: every row integrates its multiple scattering along its view
+    /// rays; for comparisons and benchmarks. Default false: where the rows lie
+    /// less than 6 deg apart, every second row takes it from its neighbours
+    /// (a cubic in elevation; sky_solver.cpp, "Multiple scattering between
+    /// rows"), which moves the pixel by under 0.25%.
+    bool multipleScatteringEveryRow = false;
     /// The multiple-scattering LUT is kept while the atmosphere's heights
     /// (radii, viewer height, scale heights, ozone profile) stay the same
     /// and its coefficients drift so little from those the LUT was built
@@ -328,6 +334,10 @@ double skyTableRow(const SkyTable& table, double elevation);
 /// Elevation [rad] of a continuous row (0..elevationCount-1), the inverse of
 /// skyTableRow; row elevationCount-1 is exactly pi/2.
 double skyTableElevation(const SkyTable& table, double row);
+/// skyTableElevation of the whole rows 0..count-1 (the same to within
+/// 1e-13 of the mapped position; each row's root is started from the row
+/// before, a fraction of the cost).
+void skyTableElevations(const SkyTable& table, int count, double* out);
 
 /// The column mapping's constants (sky.hpp, "Table mapping", columns): the
 /// shares of azimuthCount (each side of the anti-light point) inside the cap
