@@ -30,8 +30,10 @@
 // for the kernel's target clone (a call would run the baseline code).
 #if defined(__GNUC__)
 #define AERIAL_INLINE inline __attribute__((always_inline))
+#define AERIAL_LAMBDA_INLINE __attribute__((always_inline))
 #else
 #define AERIAL_INLINE inline
+#define AERIAL_LAMBDA_INLINE
 #endif
 
 namespace aerial::detail {
@@ -113,10 +115,12 @@ AERIAL_INLINE void depthNode(int n, float t2, float w, float rg, float rg2, cons
 /// alpha + beta cos(phi) -> mapped column of that table row -> the record
 /// tau rgb, T = e^-tau rgb, sqrt(tau) rgb and the margin above the shell's
 /// horizon cosine (negative: the light is below it, the lookup clamped).
-/// Without kShadow (no shell of the row has the light below its horizon in
-/// any column, SkyKernelArgs::shadow) neither the roots nor the margins are
-/// needed (curvatureFactor's first case only) and are not written.
-template <bool kShadow>
+/// Without kRoots (no layer next to the shell has a shell with the light
+/// below its horizon in its stencil, SkyKernelArgs::shellRoots) the roots
+/// are not needed (curvatureFactor's first case) and not written; without
+/// kMargins (none in the whole row, SkyKernelArgs::shadow) neither are the
+/// margins.
+template <bool kRoots, bool kMargins>
 AERIAL_INLINE void skyShell(int nc, float alpha, float beta, float ch, float scale, float knee, float maxU,
                             const float* __restrict t0, const float* __restrict t1,
                             const float* __restrict t2, const float* __restrict cosPhi,
@@ -139,12 +143,12 @@ AERIAL_INLINE void skyShell(int nc, float alpha, float beta, float ch, float sca
         tr0[i] = expNeg(d0);
         tr1[i] = expNeg(d1);
         tr2[i] = expNeg(d2);
-        if constexpr (kShadow) {
+        if constexpr (kRoots) {
             root0[i] = vecSqrt(d0);
             root1[i] = vecSqrt(d1);
             root2[i] = vecSqrt(d2);
-            margins[i] = margin;
         }
+        if constexpr (kMargins) margins[i] = margin;
     }
 }
 
@@ -489,7 +493,7 @@ AERIAL_INLINE void msLayer(int nc, const LayerConstants& k, const float* __restr
     }
 }
 
-/// One channel and scatterer of edgeKernel (a helper, as skyLayer, so that
+/// One channel and scatterer of edgePieceKernel's integrals (a helper, as skyLayer, so that
 /// GCC vectorises it): two halves per piece, tau linear in each through its
 /// value at the middle; half k covers t = t0 + h (k .. k + 1), h = dt / 2,
 /// where e^(-kappa t - tau) = E_k e^(-(kappa h + tau_(k+1) - tau_k) u),
@@ -564,7 +568,7 @@ AERIAL_INLINE void edgePieces(int n, std::size_t stride, const double* __restric
 
 /// The light at shell j (0: the viewer's, j > 0: the upper shell of layer
 /// j - 1) into its record slot.
-template <bool kShadow>
+template <bool kShadowRow>
 AERIAL_INLINE void lightAtShell(const SkyKernelArgs& a, int j, float maxU) {
     const int nc = a.columns;
     const int na = a.angles;
@@ -577,8 +581,17 @@ AERIAL_INLINE void lightAtShell(const SkyKernelArgs& a, int j, float maxU) {
     const float* t1 = a.depth + (rows + std::size_t(j)) * na;
     const float* t2 = a.depth + (2 * rows + std::size_t(j)) * na;
     float* r = a.shells + std::size_t(j % kShellSlots) * kShellRecord * nc;
-    skyShell<kShadow>(nc, alpha, beta, ch, scale, a.knee, maxU, t0, t1, t2, a.cosPhi, r, r + nc, r + 2 * nc,
-                      r + 3 * nc, r + 4 * nc, r + 5 * nc, r + 6 * nc, r + 7 * nc, r + 8 * nc, r + 9 * nc);
+    auto record = [&]<bool kRoots, bool kMargins>() AERIAL_LAMBDA_INLINE {
+        skyShell<kRoots, kMargins>(nc, alpha, beta, ch, scale, a.knee, maxU, t0, t1, t2, a.cosPhi, r, r + nc,
+                                   r + 2 * nc, r + 3 * nc, r + 4 * nc, r + 5 * nc, r + 6 * nc, r + 7 * nc,
+                                   r + 8 * nc, r + 9 * nc);
+    };
+    if (!kShadowRow)
+        record.template operator()<false, false>();
+    else if (a.shellRoots[j])
+        record.template operator()<true, true>();
+    else
+        record.template operator()<false, true>();
     if (a.psi != nullptr) {
         const int n = a.psiCosines;
         const float* p0 = a.psi + std::size_t(j) * n;
@@ -667,7 +680,7 @@ AERIAL_HOT_KERNEL void layerExpKernel(int n, const float* __restrict tau, float*
 /// kShellSlots slots (shell j in slot j % kShellSlots): layer l's stencil
 /// spans shells l-1 .. l+2 (0 .. 3 for the first layer, see layerStencil),
 /// so shell l + 2 replaces shell l - 2 before layer l >= 2.
-template <bool kShadow>
+template <bool kShadowRow>
 AERIAL_INLINE void skyRow(const SkyKernelArgs& a) {
     const int nc = a.columns;
     const int nl = a.layers;
@@ -677,33 +690,40 @@ AERIAL_INLINE void skyRow(const SkyKernelArgs& a) {
     const bool straight = a.straightOn;
     for (int i = 0; i < (straight ? 15 : 9) * nc; ++i)
         acc[i] = 0.0f;  // before the shells: shellAniso adds to it
-    for (int j = 0; j <= std::min(nl, kShellSlots - 1); ++j) lightAtShell<kShadow>(a, j, maxU);
+    for (int j = 0; j <= std::min(nl, kShellSlots - 1); ++j) lightAtShell<kShadowRow>(a, j, maxU);
     for (int l = 0; l < nl; ++l) {
-        if (l >= 2 && l + 2 <= nl) lightAtShell<kShadow>(a, l + 2, maxU);
+        if (l >= 2 && l + 2 <= nl) lightAtShell<kShadowRow>(a, l + 2, maxU);
         const LayerConstants& k = a.layer[l];
         const float* lo = shell(l);
         const float* up = shell(l + 1);
         const float* c = shell(k.stencilC);
         const float* d = shell(k.stencilD);
         float* so = acc + 9 * nc;  // the straight-on share (with a.straightOn only)
+        // The layer's integral, in the variant it needs (skyLayer): with the
+        // straight-on share or not, with shells in the earth's shadow in its
+        // stencil or not.
+        auto layer = [&]<bool kStraight, bool kShadow>() AERIAL_LAMBDA_INLINE {
+            skyLayer<kStraight, kShadow>(
+                nc, k, a.shadowIn, a.shadowOut, lo, lo + nc, lo + 2 * nc, lo + 3 * nc, lo + 4 * nc,
+                lo + 5 * nc, lo + 6 * nc, lo + 7 * nc, lo + 8 * nc, up, up + nc, up + 2 * nc, up + 3 * nc,
+                up + 4 * nc, up + 5 * nc, up + 6 * nc, up + 7 * nc, up + 8 * nc, c, c + nc, c + 2 * nc, d,
+                d + nc, d + 2 * nc, lo + 9 * nc, up + 9 * nc, c + 9 * nc, d + 9 * nc, acc, acc + nc,
+                acc + 2 * nc, acc + 3 * nc, acc + 4 * nc, acc + 5 * nc, so, so + nc, so + 2 * nc, so + 3 * nc,
+                so + 4 * nc, so + 5 * nc);
+        };
+        const bool shadowLayer = kShadowRow && a.layerShadow[l];
         if (!a.layerLit[l]) {
             // the earth's shadow overlaps the layer in every column: nothing to add
         } else if (straight) {
-            skyLayer<true, kShadow>(nc, k, a.shadowIn, a.shadowOut, lo, lo + nc, lo + 2 * nc, lo + 3 * nc,
-                                    lo + 4 * nc, lo + 5 * nc, lo + 6 * nc, lo + 7 * nc, lo + 8 * nc, up,
-                                    up + nc, up + 2 * nc, up + 3 * nc, up + 4 * nc, up + 5 * nc, up + 6 * nc,
-                                    up + 7 * nc, up + 8 * nc, c, c + nc, c + 2 * nc, d, d + nc, d + 2 * nc,
-                                    lo + 9 * nc, up + 9 * nc, c + 9 * nc, d + 9 * nc, acc, acc + nc,
-                                    acc + 2 * nc, acc + 3 * nc, acc + 4 * nc, acc + 5 * nc, so, so + nc,
-                                    so + 2 * nc, so + 3 * nc, so + 4 * nc, so + 5 * nc);
+            if (shadowLayer)
+                layer.template operator()<true, true>();
+            else
+                layer.template operator()<true, false>();
         } else {
-            skyLayer<false, kShadow>(nc, k, a.shadowIn, a.shadowOut, lo, lo + nc, lo + 2 * nc, lo + 3 * nc,
-                                     lo + 4 * nc, lo + 5 * nc, lo + 6 * nc, lo + 7 * nc, lo + 8 * nc, up,
-                                     up + nc, up + 2 * nc, up + 3 * nc, up + 4 * nc, up + 5 * nc, up + 6 * nc,
-                                     up + 7 * nc, up + 8 * nc, c, c + nc, c + 2 * nc, d, d + nc, d + 2 * nc,
-                                     lo + 9 * nc, up + 9 * nc, c + 9 * nc, d + 9 * nc, acc, acc + nc,
-                                     acc + 2 * nc, acc + 3 * nc, acc + 4 * nc, acc + 5 * nc, nullptr, nullptr,
-                                     nullptr, nullptr, nullptr, nullptr);
+            if (shadowLayer)
+                layer.template operator()<false, true>();
+            else
+                layer.template operator()<false, false>();
         }
         if (a.psi != nullptr) msLayer(nc, k, lo, up, a.mieIsotropicShare, acc + 6 * nc);
     }
@@ -755,17 +775,12 @@ AERIAL_HOT_KERNEL void edgePieceKernel(const EdgePieceArgs& a) {
     for (std::size_t k = 0; k < 6; ++k)
         for (int m = 0; m < a.count; ++m)
             a.kappa[k * stride + std::size_t(m)] = a.layerKappa[6 * a.layer[m] + int(k)];
-}
-
-/// The lit pieces of the layers cut by an edge of the earth's shadow (see
-/// sky_kernels.hpp), channel by channel (edgeChannel).
-AERIAL_HOT_KERNEL void edgeKernel(const EdgeKernelArgs& a) {
-    const int n = a.count;
-    const std::size_t m = std::size_t(a.stride);
+    // The integrals, channel by channel (edgeChannel).
+    const int n = std::min((a.count + 7) / 8 * 8, a.stride);
     for (std::size_t x = 0; x < 6; ++x) {
         const std::size_t c = x % 3;
-        edgeChannel(n, a.tauStart + c * m, a.tauMid + c * m, a.tauEnd + c * m, a.t0, a.dt, a.kappa + x * m,
-                    a.out + x * m);
+        edgeChannel(n, a.tauStart + c * stride, a.tauMid + c * stride, a.tauEnd + c * stride, a.t0, a.dt,
+                    a.kappa + x * stride, a.out + x * stride);
     }
 }
 

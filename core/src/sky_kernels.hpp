@@ -164,8 +164,13 @@ struct SkyKernelArgs {
     /// Whether any shell of the row may have the light below its horizon in
     /// some column (its margin alpha + beta cos(phi) - horizonCos negative):
     /// false skips the roots and margins (curvatureFactor's first case), which
-    /// then change nothing.
+    /// then change nothing. Where it is true, per layer (layerShadow
+    /// [layers]) whether a shell of its stencil may, and per shell
+    /// (shellRoots [layers + 1]) whether a layer beside it may: the others
+    /// skip them too.
     bool shadow;
+    const unsigned char* layerShadow;
+    const unsigned char* shellRoots;
     /// [layers + 1][kMsShellWeights] the multiple scattering's weights per shell (msShellWeights).
     const float* msWeights;
     float* anisoPoly;  // [9][psiCosines] scratch of shellAniso
@@ -235,42 +240,31 @@ struct EdgePieceArgs {
     const float* angleScale;  // [layers + 1]
     const float* depth;       // [3][layers + 1][angles]
     std::size_t plane;        // (layers + 1) angles
-    const float* layerKappa;  // [layers][6] (shadowEdgeLayers)
-    // Out, as edgeKernel takes them:
-    float* tauStart;  // [3][stride]
+    const float* layerKappa;  // [layers][6] (shadowEdgeLayers): the fall of the view's weight e^(-kappa t)
+    // Scratch, [3][stride] each: the optical depth to the light at each
+    // piece's start, middle and end; [stride]: its start and length in its
+    // layer's t = (s - s0) / (s1 - s0); [6][stride] its kappa.
+    float* tauStart;
     float* tauMid;
     float* tauEnd;
-    float* t0;     // [count]
-    float* dt;     // [count]
-    float* kappa;  // [6][stride]
-};
-
-/// The optical depths to the light at the start, middle and end of each
-/// lit piece (sky_solver.cpp, shadowEdgeLayers: at the shadow's edge the
-/// grazing rays' of the layer's shells, linear in the tangent length; at the
-/// middle the table's rows of both shells at the point's own margin, linear
-/// in the tangent length; at the lit shell the table's), the piece's extent
-/// in its layer's t and the view weight's fall, in double precision.
-void edgePieceKernel(const EdgePieceArgs& a);
-
-struct EdgeKernelArgs {
-    int count;              // lit pieces, a multiple of 8 (those past the real ones: any finite values)
-    int stride;             // >= count: distance between the channels' arrays
-    const float* tauStart;  // [3][stride] optical depth to the light at the piece's start, rgb
-    const float* tauMid;    // [3][stride] ... at its middle
-    const float* tauEnd;    // [3][stride] ... at its end
-    const float* t0;        // [count] start of the piece in its layer's t = (s - s0) / (s1 - s0)
-    const float* dt;        // [count] its length in t
-    const float* kappa;     // [6][stride] the fall of the view's weight e^(-kappa t), >= 0: R rgb, M rgb
-    float* out;             // [6][stride] the piece's shape integrals: R rgb, M rgb
+    float* t0;
+    float* dt;
+    float* kappa;
+    float* out;  // [6][stride] out: the pieces' shape integrals, R rgb, M rgb
 };
 
 /// The lit pieces of the layers that an edge of the earth's shadow cuts
-/// (sky_solver.cpp, shadowEdgeLayers): for each, the integral over it of
-/// e^(-kappa t) e^(-tau(t)), the view's weight's shape times the light's
-/// transmittance, as two halves with tau linear in each (through tau at the
-/// piece's middle), in closed form (exponentialMoments).
-void edgeKernel(const EdgeKernelArgs& a);
+/// (sky_solver.cpp, shadowEdgeLayers). First, in double precision, the
+/// optical depths to the light at each piece's start, middle and end: at the
+/// shadow's edge the grazing rays' of the layer's shells, linear in the
+/// tangent length; at the middle the table's rows of both shells at the
+/// point's own margin, linear in the tangent length; at the lit shell the
+/// table's. Then for each the integral over it of e^(-kappa t) e^(-tau(t)),
+/// the view's weight's shape times the light's transmittance, as two halves
+/// with tau linear in each (through tau at the piece's middle), in closed
+/// form (exponentialMoments); `count` rounded up to 8 of them (those past
+/// the real ones keep earlier, finite values; stride >= that).
+void edgePieceKernel(const EdgePieceArgs& a);
 
 struct MsCrossingArgs {
     int count;                                 // combinations of sun cosine and azimuth, a multiple of 16

@@ -404,6 +404,9 @@ SkySolver::Impl::Impl(const SkySolverDesc& d) : desc(d) {
         s.anisoPoly.assign(std::size_t(9) * kMsCosines, 0.0f);
         s.msWeights.assign(std::size_t(layers + 1) * kMsShellWeights, 0.0f);
         s.layerLit.assign(std::size_t(layers), 1);
+        s.layerShadow.assign(std::size_t(layers), 0);
+        s.shellShadow.assign(std::size_t(layers) + 1, 0);
+        s.shellRoots.assign(std::size_t(layers) + 1, 0);
         s.msWeightScratch.assign(std::size_t(layers + 1) * 6, 0.0f);
         const std::size_t pieces = std::size_t(2) * paddedColumns;
         s.edgeCrossing.assign(std::size_t(layers) + 1, 0.0f);
@@ -852,13 +855,28 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
     // step as g crossed 0.8001 at sun -2 deg, 6.5 deg up).
     const double straightRatio = std::expm1(straight * std::max({mieDepth[0], mieDepth[1], mieDepth[2]}));
     k.straightOn = multiple && straightRatio > 0.5 * kStraightOnFloor;
-    // The light below some shell's horizon in some column: alpha + beta cos(phi)
+    // The light below a shell's horizon in some column: alpha + beta cos(phi)
     // is at least alpha - |beta| (with a margin for the kernel's rounding).
-    k.shadow = sinL - horizonCos[0] < 1e-6f;
-    for (int l = 0; l < layers && !k.shadow; ++l) {
+    // A layer needs the shadowed case if a shell of its stencil may be
+    // shadowed, and a shell its roots if a layer beside it does.
+    unsigned char* shellShadow = s.shellShadow.data();
+    shellShadow[0] = sinL - horizonCos[0] < 1e-6f;
+    for (int l = 0; l < layers; ++l) {
         const LayerConstants& lc = s.layer[std::size_t(l)];
-        k.shadow = lc.alpha - std::abs(lc.beta) - lc.horizonCos < 1e-6f;
+        shellShadow[l + 1] = lc.alpha - std::abs(lc.beta) - lc.horizonCos < 1e-6f;
     }
+    k.shadow = false;
+    for (int l = 0; l < layers; ++l) {
+        const LayerConstants& lc = s.layer[std::size_t(l)];
+        s.layerShadow[std::size_t(l)] =
+            shellShadow[l] | shellShadow[l + 1] | shellShadow[lc.stencilC] | shellShadow[lc.stencilD];
+        k.shadow = k.shadow || s.layerShadow[std::size_t(l)];
+    }
+    for (int j = 0; j <= layers; ++j)
+        s.shellRoots[std::size_t(j)] =
+            (j > 0 && s.layerShadow[std::size_t(j) - 1]) || (j < layers && s.layerShadow[std::size_t(j)]);
+    k.layerShadow = s.layerShadow.data();
+    k.shellRoots = s.shellRoots.data();
     const double straightFade = std::min(straightRatio / (0.5 * kStraightOnFloor) - 1.0, 1.0);
     k.shells = s.shells.data();
     k.acc = s.acc.data();
@@ -987,7 +1005,7 @@ void SkySolver::Impl::spreadMultiple(Scratch& s) const {
 //    between (at the piece's middle) the table's rows of the layer's two
 //    shells at the point's own margin above its horizon, interpolated
 //    linearly in the tangent length sqrt(r^2 - Rg^2) (at the edge, margin 0,
-//    that is the grazing value). tau is linear in each half (edgeKernel).
+//    that is the grazing value). tau is linear in each half (edgePieceKernel).
 //    Along a ray looking away from the light the optical depth rises and
 //    bulges above its chord (by 0.03 at the middle of the piece above,
 //    where tau = 10..11): taken log-linear through the ends, as before, it
@@ -1116,20 +1134,8 @@ void SkySolver::Impl::shadowEdgeLayers(Scratch& s, double r0, double sinEl, bool
     p.t0 = s.edgeT0.data();
     p.dt = s.edgeDt.data();
     p.kappa = s.edgeKappa.data();
+    p.out = s.edgeOut.data();
     edgePieceKernel(p);
-    // n rounded up to 8 go through the kernel; the slots past n hold
-    // earlier rows' (or the initial) finite values and are not read.
-    EdgeKernelArgs e{};
-    e.count = std::min((n + 7) / 8 * 8, cap);
-    e.stride = cap;
-    e.tauStart = s.edgeTauStart.data();
-    e.tauMid = s.edgeTauMid.data();
-    e.tauEnd = s.edgeTauEnd.data();
-    e.t0 = s.edgeT0.data();
-    e.dt = s.edgeDt.data();
-    e.kappa = s.edgeKappa.data();
-    e.out = s.edgeOut.data();
-    edgeKernel(e);
     // Into the row's accumulators: R rgb, M rgb, and with the straight-on
     // share (skyKernel's acc 9..14) the same integrals with its weights.
     const std::size_t stride = std::size_t(paddedColumns), outStride = std::size_t(cap);

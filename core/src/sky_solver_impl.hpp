@@ -32,6 +32,8 @@ struct SkySolver::Impl {
         std::vector<float> msWeights;         // [layers + 1][kMsShellWeights] (msShellWeights)
         std::vector<float> msWeightScratch;   // [layers + 1][6]
         std::vector<unsigned char> layerLit;  // [layers] (SkyKernelArgs::layerLit)
+        std::vector<unsigned char> layerShadow, shellShadow,
+            shellRoots;  // [layers], [layers + 1] (SkyKernelArgs)
         // Lit pieces of the layers cut by a shadow edge (shadowEdgeLayers), at most 2 per column.
         std::vector<float> edgeCrossing;                          // [layers + 1]
         std::vector<float> edgeTauStart, edgeTauMid, edgeTauEnd;  // [3][2 padded columns]
