@@ -517,9 +517,8 @@ AERIAL_INLINE void edgeChannel(int n, const float* __restrict tauS, const float*
 /// edgePieceKernel's loop (restrict parameters, as skyShell).
 AERIAL_INLINE void edgePieces(int n, std::size_t stride, const double* __restrict from,
                               const double* __restrict to, const double* __restrict mu,
-                              const double* __restrict litQ, const double* __restrict tangentA,
-                              const double* __restrict tangentInv, const double* __restrict start,
-                              const double* __restrict invLength, const int* __restrict layer,
+                              const double* __restrict litQ, const double* __restrict layerTangent,
+                              const double* __restrict layerExtent, const int* __restrict layer,
                               const int* __restrict edgeAtStart, double tangent2, double viewTwice,
                               double rg2, double lightAtViewer, double knee, double maxU, int angles,
                               const float* __restrict angleScale, const float* __restrict depth,
@@ -533,14 +532,14 @@ AERIAL_INLINE void edgePieces(int n, std::size_t stride, const double* __restric
         const double zMid2 = std::max(tangent2 + middle * (viewTwice + middle), 0.0);
         const double zMid = std::sqrt(zMid2), rMid = std::sqrt(zMid2 + rg2);
         const double zEdge = std::sqrt(std::max(tangent2 + edge * (viewTwice + edge), 0.0));
-        const double za = tangentA[m], zInv = tangentInv[m];
+        const int l = layer[m];
+        const double za = layerTangent[2 * l], zInv = layerTangent[2 * l + 1];
         const double fEdge = std::min(std::max((zEdge - za) * zInv, 0.0), 1.0);
         const double fMid = std::min(std::max((zMid - za) * zInv, 0.0), 1.0);
         // The light's zenith cosine at the middle, (r0 sinL + s mu) / r, above
         // the horizon's there, -z / r; mapped.
         const double midMargin = std::max((lightAtViewer + middle * mu[m] + zMid) / rMid, 0.0);
         const double midQ = midMargin / (midMargin + knee);
-        const int l = layer[m];
         const int lit = atStart ? l + 1 : l;
         const double uLit = std::min(litQ[m] * double(angleScale[lit]), maxU);
         const double uA = std::min(midQ * double(angleScale[l]), maxU);
@@ -561,8 +560,8 @@ AERIAL_INLINE void edgePieces(int n, std::size_t stride, const double* __restric
             tauEnd[at] = float(atStart ? tauLit : tauEdge);
             tauMid[at] = float(ma + fMid * (mb - ma));
         }
-        t0[m] = float((a - start[m]) * invLength[m]);
-        dt[m] = float((b - a) * invLength[m]);
+        t0[m] = float((a - layerExtent[2 * l]) * layerExtent[2 * l + 1]);
+        dt[m] = float((b - a) * layerExtent[2 * l + 1]);
     }
 }
 
@@ -769,9 +768,9 @@ void msShellWeights(const LayerConstants* layer, int layers, float rayleighBand2
 
 AERIAL_HOT_KERNEL void edgePieceKernel(const EdgePieceArgs& a) {
     const std::size_t stride = std::size_t(a.stride);
-    edgePieces(a.count, stride, a.from, a.to, a.mu, a.litQ, a.tangentA, a.tangentInv, a.start, a.invLength,
-               a.layer, a.edgeAtStart, a.tangent2, a.viewTwice, a.planetRadius2, a.lightAtViewer, a.knee,
-               a.maxU, a.angles, a.angleScale, a.depth, a.plane, a.tauStart, a.tauMid, a.tauEnd, a.t0, a.dt);
+    edgePieces(a.count, stride, a.from, a.to, a.mu, a.litQ, a.layerTangent, a.layerExtent, a.layer,
+               a.edgeAtStart, a.tangent2, a.viewTwice, a.planetRadius2, a.lightAtViewer, a.knee, a.maxU,
+               a.angles, a.angleScale, a.depth, a.plane, a.tauStart, a.tauMid, a.tauEnd, a.t0, a.dt);
     for (std::size_t k = 0; k < 6; ++k)
         for (int m = 0; m < a.count; ++m)
             a.kappa[k * stride + std::size_t(m)] = a.layerKappa[6 * a.layer[m] + int(k)];

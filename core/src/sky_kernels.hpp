@@ -223,11 +223,7 @@ struct EdgePieceArgs {
     const double* to;    // [count]
     const double* mu;    // [count] the view ray's cosine to the light
     const double* litQ;  // [count] the light's margin above the lit shell's horizon, mapped x / (x + knee)
-    const double* tangentA;    // [count] the tangent length z = sqrt(r^2 - Rg^2) of its layer's lower shell
-    const double* tangentInv;  // [count] 1 / (z_b - z_a) of its layer, 0 where z_b <= z_a
-    const double* start;       // [count] its layer's start along the view ray
-    const double* invLength;   // [count] 1 / its layer's length
-    const int* layer;          // [count] its layer l (shells l and l + 1)
+    const int* layer;    // [count] its layer l (shells l and l + 1)
     /// [count] 1: the piece starts at the shadow's edge (its lit shell l + 1), 0: ends there (l)
     const int* edgeAtStart;
     // The row and the atmosphere:
@@ -240,7 +236,10 @@ struct EdgePieceArgs {
     const float* angleScale;  // [layers + 1]
     const float* depth;       // [3][layers + 1][angles]
     std::size_t plane;        // (layers + 1) angles
-    const float* layerKappa;  // [layers][6] (shadowEdgeLayers): the fall of the view's weight e^(-kappa t)
+    // Per layer (shadowEdgeLayers):
+    const float* layerKappa;     // [layers][6] the fall of the view's weight e^(-kappa t)
+    const double* layerTangent;  // [layers][2] z = sqrt(r^2 - Rg^2) at the lower shell, 1 / (z_b - z_a) or 0
+    const double* layerExtent;   // [layers][2] the layer's start along the view ray, 1 / its length
     // Scratch, [3][stride] each: the optical depth to the light at each
     // piece's start, middle and end; [stride]: its start and length in its
     // layer's t = (s - s0) / (s1 - s0); [6][stride] its kappa.

@@ -420,13 +420,12 @@ SkySolver::Impl::Impl(const SkySolverDesc& d) : desc(d) {
         s.edgeLayerKappa.assign(std::size_t(6) * layers, 0.0f);
         s.edgeLayerWeight.assign(std::size_t(12) * layers, 0.0f);
         s.edgeLayerTangent.assign(std::size_t(2) * layers, 0.0);
+        s.edgeLayerExtent.assign(std::size_t(2) * layers, 0.0);
         s.edgeLayerReady.assign(std::size_t(layers), 0);
         s.edgeColumn.assign(pieces, 0);
         s.edgeLayer.assign(pieces, 0);
         s.pieceAtStart.assign(pieces, 0);
-        for (auto* v : {&s.pieceFrom, &s.pieceTo, &s.pieceMu, &s.pieceLitQ, &s.pieceTangentA,
-                        &s.pieceTangentInv, &s.pieceStart, &s.pieceInvLength})
-            v->assign(pieces, 0.0);
+        for (auto* v : {&s.pieceFrom, &s.pieceTo, &s.pieceMu, &s.pieceLitQ}) v->assign(pieces, 0.0);
         s.depthRow.resize(angles);
         s.rowPhi.assign(std::size_t(columns), 0.0);
         s.rowCosPhi.assign(std::size_t(columns), 1.0);
@@ -1057,6 +1056,10 @@ void SkySolver::Impl::shadowEdgeLayers(Scratch& s, double r0, double sinEl, bool
         const double zb = -horizonCosD[std::size_t(l) + 1] * (rg + shellHeight[std::size_t(l) + 1]);
         s.edgeLayerTangent[std::size_t(2 * l)] = za;
         s.edgeLayerTangent[std::size_t(2 * l + 1)] = zb > za ? 1.0 / (zb - za) : 0.0;
+        // Its extent along the view ray.
+        const double s0 = crossing[l];
+        s.edgeLayerExtent[std::size_t(2 * l)] = s0;
+        s.edgeLayerExtent[std::size_t(2 * l + 1)] = 1.0 / (double(crossing[l + 1]) - s0);
     };
     int n = 0;
     // One lit piece of layer l, from s = from to s = to, in column i whose
@@ -1064,18 +1067,13 @@ void SkySolver::Impl::shadowEdgeLayers(Scratch& s, double r0, double sinEl, bool
     // margin mapped, q); `edgeAtStart`: the start is the shadow's edge (else
     // the end is). edgePieceKernel takes it from here.
     auto piece = [&](int i, double mu, double litQ, int l, float from, float to, bool edgeAtStart) {
-        const double s0 = crossing[l], len = double(crossing[l + 1]) - s0;
-        if (!(len > 0.0)) return;
+        if (!(double(crossing[l + 1]) - crossing[l] > 0.0)) return;
         layerWeights(l);
         const std::size_t m = std::size_t(n++);
         s.pieceFrom[m] = from;
         s.pieceTo[m] = to;
         s.pieceMu[m] = mu;
         s.pieceLitQ[m] = litQ;
-        s.pieceTangentA[m] = s.edgeLayerTangent[std::size_t(2 * l)];
-        s.pieceTangentInv[m] = s.edgeLayerTangent[std::size_t(2 * l + 1)];
-        s.pieceStart[m] = s0;
-        s.pieceInvLength[m] = 1.0 / len;
         s.edgeColumn[m] = i;
         s.edgeLayer[m] = l;
         s.pieceAtStart[m] = edgeAtStart ? 1 : 0;
@@ -1111,10 +1109,6 @@ void SkySolver::Impl::shadowEdgeLayers(Scratch& s, double r0, double sinEl, bool
     p.to = s.pieceTo.data();
     p.mu = s.pieceMu.data();
     p.litQ = s.pieceLitQ.data();
-    p.tangentA = s.pieceTangentA.data();
-    p.tangentInv = s.pieceTangentInv.data();
-    p.start = s.pieceStart.data();
-    p.invLength = s.pieceInvLength.data();
     p.layer = s.edgeLayer.data();
     p.edgeAtStart = s.pieceAtStart.data();
     p.tangent2 = r0Tangent2;
@@ -1128,6 +1122,8 @@ void SkySolver::Impl::shadowEdgeLayers(Scratch& s, double r0, double sinEl, bool
     p.depth = depth.data();
     p.plane = rows * std::size_t(angles);
     p.layerKappa = s.edgeLayerKappa.data();
+    p.layerTangent = s.edgeLayerTangent.data();
+    p.layerExtent = s.edgeLayerExtent.data();
     p.tauStart = s.edgeTauStart.data();
     p.tauMid = s.edgeTauMid.data();
     p.tauEnd = s.edgeTauEnd.data();

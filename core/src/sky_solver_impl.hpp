@@ -43,12 +43,13 @@ struct SkySolver::Impl {
         // fall kappa [layers][6] (R rgb, M rgb) and its weights
         // W kappa / (1 - e^-kappa) [layers][12] (then the straight-on share's).
         std::vector<float> edgeLayerKappa, edgeLayerWeight;
-        std::vector<double> edgeLayerTangent;       // [layers][2] z at the lower shell, 1 / (z_b - z_a)
+        // [layers][2]: z at the lower shell and 1 / (z_b - z_a); the layer's
+        // start along the view ray and 1 / its length.
+        std::vector<double> edgeLayerTangent, edgeLayerExtent;
         std::vector<unsigned char> edgeLayerReady;  // [layers]
         std::vector<int> edgeColumn, edgeLayer;     // [2 padded columns] each piece's column and layer
         std::vector<int> pieceAtStart;  // [2 padded columns] and the rest of edgePieceKernel's inputs
-        std::vector<double> pieceFrom, pieceTo, pieceMu, pieceLitQ, pieceTangentA, pieceTangentInv,
-            pieceStart, pieceInvLength;
+        std::vector<double> pieceFrom, pieceTo, pieceMu, pieceLitQ;
         detail::DepthRowScratch depthRow;  // optical-depth rows
         // The row's column azimuths (rowColumns): the shared uniform ones, or
         // this row's own where the column mapping warps it.

@@ -1043,6 +1043,29 @@ TEST(SkyTableSampling, RadianceAppliesBothPhaseFunctions) {
     EXPECT_EQ(sampleSkyTable(SkyTable{}, dir).rayleigh, glm::dvec3(0.0));
 }
 
+// skyTableElevations (each row's root started from the row before, as the
+// solver uses it) gives every row the elevation skyTableElevation gives it
+// alone, rising from row to row: for lights above, just below (the cap's
+// logarithmic rows) and well below the horizon.
+TEST(SkyTableSampling, RowElevationsOfAWholeTable) {
+    const AtmosphereParams air;
+    for (double sun : {30.0, 0.5, -0.00002, -0.002, -0.3, -1.5, -6.0}) {
+        SkyTable t;
+        t.azimuthCount = 128;
+        t.elevationCount = 64;
+        setSkyTableMapping(t, air, lightAtElevation(sun));
+        std::vector<double> all(std::size_t(t.elevationCount), -1.0);
+        skyTableElevations(t, t.elevationCount, all.data());
+        for (int j = 0; j < t.elevationCount; ++j) {
+            const double one = skyTableElevation(t, double(j));
+            EXPECT_NEAR(all[std::size_t(j)], one, 1e-12 + 1e-9 * one) << "sun " << sun << " row " << j;
+            if (j > 0) {
+                EXPECT_GT(all[std::size_t(j)], all[std::size_t(j) - 1]) << "sun " << sun << " row " << j;
+            }
+        }
+    }
+}
+
 TEST(SkyTableSampling, RowMappingFollowsTheLight) {
     // Above 1 deg: the plain quadratic mapping, exactly.
     SkyTable t = syntheticTable(128, 64);
