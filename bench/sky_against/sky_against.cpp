@@ -55,19 +55,20 @@ int main(int argc, char** argv) {
         lib.solver = create(threads, std::atoi(argv[i + 1]));
         libs.push_back(lib);
     }
-    const double suns[] = {-6.0, -4.0, -2.0, -1.0, -0.5, -0.1, -0.002, 0.0, 0.5, 2.0, 10.0, 30.0, 90.0};
+    const double suns[] = {-6.0,     -4.0, -2.0, -1.0, -0.5, -0.1, -0.002,
+                           -0.00002, 0.0,  0.5,  2.0,  10.0, 30.0, 90.0};
     const std::size_t ns = sizeof suns / sizeof suns[0], nl = libs.size();
     std::vector<double> best(ns * nl, 1e30);
     for (int r = 0; r < rounds; ++r)
         for (std::size_t s = 0; s < ns; ++s)
             for (std::size_t l = 0; l < nl; ++l)
                 best[s * nl + l] = std::min(best[s * nl + l], libs[l].solve(libs[l].solver, suns[s]));
-    std::printf("best of %d solves [ms], %s threads\n%8s", rounds, threads == 0 ? "all" : argv[1], "sun");
+    std::printf("best of %d solves [ms], %s threads\n%9s", rounds, threads == 0 ? "all" : argv[1], "sun");
     for (const Library& lib : libs) std::printf(" %16s", lib.name.c_str());
     std::printf("  each / the first\n");
     std::vector<double> worst(nl, 0.0);
     for (std::size_t s = 0; s < ns; ++s) {
-        std::printf("%8.3f", suns[s]);
+        std::printf("%9.5f", suns[s]);
         for (std::size_t l = 0; l < nl; ++l) std::printf(" %16.3f", best[s * nl + l]);
         for (std::size_t l = 1; l < nl; ++l) {
             const double ratio = best[s * nl + l] / best[s * nl];
@@ -76,7 +77,7 @@ int main(int argc, char** argv) {
         }
         std::printf("\n");
     }
-    std::printf("%8s", "worst");
+    std::printf("%9s", "worst");
     for (std::size_t l = 0; l < nl; ++l) std::printf(" %16s", "");
     for (std::size_t l = 1; l < nl; ++l) std::printf(" %5.2f", worst[l]);
     std::printf("\n");

@@ -1,7 +1,10 @@
 // sky_kernels.cpp — the sky solver's hot loops (sky_kernels.hpp): optical
 // depths to the light for a row of the optical-depth table, densities at
-// the view-ray nodes, layer transmittances, and the per-texel integral of a
-// sky row (the light at each shell, then each layer in closed form).
+// the view-ray nodes, layer transmittances, the per-texel integral of a
+// sky row (the light at each shell, then each layer in closed form), and
+// the per-column parts of a row around it: its columns' half-angles and
+// multiple-scattering stencils, the earth's shadow along their rays, the
+// straight-on share's phases.
 //
 // Everything here is plain arithmetic over contiguous float arrays, written
 // so that GCC vectorises it: no calls (helpers are forced inline, so they
@@ -11,18 +14,23 @@
 // edgePieceKernel vectorises with its compares), no std::exp (its errno path
 // blocks the vectoriser; std::sqrt has none here, the file being compiled
 // with -fno-math-errno). The kernels are compiled for
-// AVX-512, AVX2 and the baseline (target_clones, chosen at load time).
+// x86-64-v4, x86-64-v3 and the baseline (target_clones, chosen at load
+// time): the levels rather than "avx512f" and "avx2", which leave out FMA
+// (the polynomials, exp's and the moments', then take a multiply and an
+// add each: ~10% of the whole solve on an AVX2 machine).
 #include "sky_kernels.hpp"
+#include "planet_shadow.hpp"
 #include "sky_multiple.hpp"
 
 #include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__) && \
     !defined(__SANITIZE_THREAD__)  // sanitizers and ifunc resolvers do not mix
-#define AERIAL_HOT_KERNEL __attribute__((target_clones("avx512f", "avx2", "default")))
+#define AERIAL_HOT_KERNEL __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #else
 #define AERIAL_HOT_KERNEL
 #endif
@@ -660,6 +668,170 @@ AERIAL_HOT_KERNEL void nodeKernel(const NodeKernelArgs& a) {
         outR[n] = k.rayleighOn * expNeg(h * k.invRayleighH);
         outM[n] = k.mieOn * expNeg(h * k.invMieH);
         outO[n] = k.ozoneOn * maxZero(1.0f - std::abs(h - k.ozoneCenter) * k.ozoneInvHalfWidth);
+    }
+}
+
+AERIAL_HOT_KERNEL void halfAngleKernel(int n, const double* __restrict phi, double* __restrict cosHalf,
+                                       double* __restrict sinHalf, double* __restrict cosPhi,
+                                       float* __restrict cosPhiF) {
+    // pi / 2 as the sum of two doubles: pi / 2 - h is then exact to an ulp
+    // of the result even where h is within an ulp of pi / 2 (the
+    // anti-light point, where cos(phi / 2) is all the precision there is).
+    constexpr double kHalfPiHi = 1.5707963267948966, kHalfPiLo = 6.123233995736766e-17;
+    // (-1)^t / (2t + 1)! and (-1)^t / (2t)!.
+    constexpr double kSinTaylor[9] = {1.0,
+                                      -1.0 / 6.0,
+                                      1.0 / 120.0,
+                                      -1.0 / 5040.0,
+                                      1.0 / 362880.0,
+                                      -1.0 / 39916800.0,
+                                      1.0 / 6227020800.0,
+                                      -1.0 / 1307674368000.0,
+                                      1.0 / 355687428096000.0};
+    constexpr double kCosTaylor[10] = {1.0,
+                                       -0.5,
+                                       1.0 / 24.0,
+                                       -1.0 / 720.0,
+                                       1.0 / 40320.0,
+                                       -1.0 / 3628800.0,
+                                       1.0 / 479001600.0,
+                                       -1.0 / 87178291200.0,
+                                       1.0 / 20922789888000.0,
+                                       -1.0 / 6402373705728000.0};
+    for (int i = 0; i < n; ++i) {
+        const double h = 0.5 * std::min(std::max(phi[i], 0.0), 2.0 * kHalfPiHi);
+        const bool upper = h > 0.5 * kHalfPiHi;
+        const double a = upper ? (kHalfPiHi - h) + kHalfPiLo : h;  // in [0, pi / 4]
+        const double z = a * a;
+        // Taylor to a^17 and a^18 (Horner in a^2): the first terms left out are below 1e-19.
+        double ps = kSinTaylor[8], pc = kCosTaylor[9];
+        for (int t = 7; t >= 0; --t) ps = ps * z + kSinTaylor[t];
+        for (int t = 8; t >= 0; --t) pc = pc * z + kCosTaylor[t];
+        const double sa = a * ps, ca = pc;
+        const double c = upper ? sa : ca, s = upper ? ca : sa;
+        cosHalf[i] = c;
+        sinHalf[i] = s;
+        cosPhi[i] = (c - s) * (c + s);
+        cosPhiF[i] = float(cosPhi[i]);
+    }
+}
+
+namespace {
+
+/// straightOnKernel's loop (restrict parameters, as skyShell); `so` the
+/// straight-on share's first plane, `out` the multiple scattering's.
+AERIAL_INLINE void straightOnColumns(int n, const double* __restrict cosPhi, const float* __restrict so,
+                                     float* __restrict out, std::size_t stride, const StraightOnArgs& a) {
+    constexpr double kPiD = 3.141592653589793;
+    const double g = a.g, g2 = g * g, nuA = a.nuA, nuB = a.nuB, fade = a.fade;
+    for (int i = 0; i < n; ++i) {
+        const double mu = std::min(std::max(nuA + nuB * cosPhi[i], -1.0), 1.0);
+        const double pr = 3.0 / (16.0 * kPiD) * (1.0 + mu * mu);
+        const double denom = std::max(1.0 + g2 - 2.0 * g * mu, 1e-12);
+        const double pm =
+            3.0 / (8.0 * kPiD) * (1.0 - g2) * (1.0 + mu * mu) / ((2.0 + g2) * denom * std::sqrt(denom));
+        for (std::size_t c = 0; c < 3; ++c)
+            out[c * stride + std::size_t(i)] += float(
+                fade * (pr * so[c * stride + std::size_t(i)] + pm * so[(3 + c) * stride + std::size_t(i)]));
+    }
+}
+
+/// shadowSpanKernel's loop (restrict parameters, as skyShell): the
+/// interval of the cylinder's quadratic (halfQuadraticRoots' roots where
+/// the ray is not along the axis), cut to x . l < 0 (behind the planet:
+/// r0 sinL + s mu < 0) and to the ray. Branch-free (selects), so that it
+/// vectorises.
+AERIAL_INLINE void shadowSpans(int n, const double* __restrict cosPhi, const double* __restrict cosHalfPhi,
+                               const double* __restrict sinHalfPhi, const ShadowSpanArgs& a,
+                               float* __restrict in, float* __restrict out) {
+    constexpr double kInf = std::numeric_limits<double>::infinity();
+    const double sinEl = a.sinEl, sinL = a.sinL, r0 = a.r0, c2 = a.c2, length = a.viewLength;
+    const double nuA = a.sinEl * a.sinL, nuB = a.cosEl * a.cosL;
+    const double ta = a.towardsAnti, tl = a.towardsLight;
+    const double cc = a.cosCos, lightAtViewer = r0 * sinL;
+    // x . l is linear in s: a light above the horizon and lit at the ray's
+    // end means no shadow (-inf: never, for a light below it).
+    const double litEnd = sinL >= 0.0 ? 0.0 : kInf;
+    const double muZero = sinL < 0.0 ? 1.0 : 0.0;  // mu = 0: in the shadow's half-space if the light is down
+    const double axisHi = c2 > a.parallelLit ? -kInf : kInf;  // along the axis: lit, or all in it
+    for (int i = 0; i < n; ++i) {
+        const double mu = nuA + nuB * cosPhi[i];
+        const bool litBoth = lightAtViewer + length * mu >= litEnd;
+        const double ch = cosHalfPhi[i], sh = sinHalfPhi[i];
+        const double a2 = oneMinusCosFromParts(ta, cc, ch) * oneMinusCosFromParts(tl, cc, sh);
+        const double b2 = r0 * (sinEl - sinL * mu);
+        const double disc = b2 * b2 - a2 * c2;
+        const bool roots = disc > 0.0 && a2 > 0.0;
+        const double q = -(b2 + std::copysign(std::sqrt(std::max(disc, 0.0)), b2));
+        const double r1 = q / a2, r2 = c2 / q;
+        const bool axis = !(a2 > kShadowAxisA2);
+        double lo = axis || !roots ? -kInf : std::min(r1, r2);
+        double hi = axis ? axisHi : (roots ? std::max(r1, r2) : -kInf);
+        const double bound = -lightAtViewer / mu;
+        hi = mu > 0.0 ? std::min(hi, bound) : hi;
+        lo = mu < 0.0 ? std::max(lo, bound) : lo;
+        hi = mu == 0.0 && muZero == 0.0 ? lo : hi;
+        lo = std::max(lo, 0.0);
+        hi = std::min(hi, length);
+        const bool shadow = hi > lo && !litBoth;
+        in[i] = float(shadow ? lo : -1.0);   // selected in double: GCC does not vectorise a
+        out[i] = float(shadow ? hi : -1.0);  // double compare's mask on floats
+    }
+}
+
+/// spreadStencilKernel's stencil for a block of positions.
+AERIAL_INLINE void spreadStencilBlock(int n, const float* __restrict position, int padded,
+                                      int* __restrict index, float* __restrict weight) {
+    constexpr int kK = kMsSkyColumns;
+    for (int i = 0; i < n; ++i) {
+        const float u = position[i];
+        const int k = std::min(int(u), kK - 2);
+        const float f = u - float(k);
+        // Written out (an inner loop over the four keeps GCC from vectorising).
+        const int first = k - 1, last = k + 2;  // only these two can leave 0..K-1
+        index[i] = first < 0 ? -first : first;
+        index[padded + i] = k;
+        index[2 * padded + i] = k + 1;
+        index[3 * padded + i] = last > kK - 1 ? 2 * (kK - 1) - last : last;
+        weight[i] = 0.5f * f * (-1.0f + f * (2.0f - f));
+        weight[padded + i] = 1.0f + 0.5f * f * f * (-5.0f + 3.0f * f);
+        weight[2 * padded + i] = 0.5f * f * (1.0f + f * (4.0f - 3.0f * f));
+        weight[3 * padded + i] = 0.5f * f * f * (f - 1.0f);
+    }
+}
+
+}  // namespace
+
+AERIAL_HOT_KERNEL void straightOnKernel(const StraightOnArgs& a) {
+    straightOnColumns(a.count, a.cosPhi, a.acc + 9 * std::size_t(a.stride), a.acc + 6 * std::size_t(a.stride),
+                      std::size_t(a.stride), a);
+}
+
+AERIAL_HOT_KERNEL void shadowSpanKernel(const ShadowSpanArgs& a) {
+    // A light above the horizon that lights the end of every column's ray
+    // (mu >= nuA - |nuB|): no shadow in the row.
+    if (a.sinL >= 0.0 &&
+        a.r0 * a.sinL + a.viewLength * (a.sinEl * a.sinL - std::abs(a.cosEl * a.cosL)) >= 0.0) {
+        std::fill(a.in, a.in + a.count, -1.0f);
+        std::fill(a.out, a.out + a.count, -1.0f);
+        return;
+    }
+    shadowSpans(a.count, a.cosPhi, a.cosHalfPhi, a.sinHalfPhi, a, a.in, a.out);
+}
+
+AERIAL_HOT_KERNEL void spreadStencilKernel(int n, const double* __restrict phi, int padded,
+                                           int* __restrict index, float* __restrict weight) {
+    constexpr int kK = kMsSkyColumns;  // positions 0 .. kK - 1
+    constexpr double kPiD = 3.141592653589793;
+    // The positions in double, the stencil in float (what it is stored as):
+    // one type per loop, which GCC vectorises; in blocks of kBlock.
+    constexpr int kBlock = 64;
+    float position[kBlock];
+    for (int b = 0; b < n; b += kBlock) {
+        const int m = std::min(n - b, kBlock);
+        for (int i = 0; i < m; ++i)
+            position[i] = float(std::min(std::max(phi[b + i] / kPiD, 0.0), 1.0) * (kK - 1));
+        spreadStencilBlock(m, position, padded, index + b, weight + b);
     }
 }
 

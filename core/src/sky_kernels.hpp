@@ -3,8 +3,9 @@
 // plain structs that carry their inputs. sky_solver.cpp prepares those
 // inputs per row in double precision and calls these once per row.
 //
-// The kernels are compiled for AVX-512, AVX2 and the baseline
-// (target_clones, chosen at load time; no global -march needed). Their
+// The kernels are compiled for x86-64-v4 (AVX-512), x86-64-v3 (AVX2 with
+// FMA) and the baseline (target_clones, chosen at load time; no global
+// -march needed). Their
 // helpers live in sky_kernels.cpp, forced inline, so that each clone runs
 // vector code throughout. A call costs one indirect jump per row.
 #pragma once
@@ -87,6 +88,64 @@ void segmentNodeDensities(const double* crossing, int segments, double h0, doubl
 /// Per-row transmittances of the layers: e^-tau, e^(-tau t_0), e^(-tau t_1).
 void layerExpKernel(int n, const float* __restrict tau, float* __restrict layerT, float* __restrict nodeT0,
                     float* __restrict nodeT1);
+
+/// cos(phi / 2), sin(phi / 2) and cos phi = (c - s)(c + s) (without
+/// cancellation) of n azimuths phi in [0, pi] (clamped), cos phi also as
+/// float: a row's own columns where the column mapping warps it. Within 2
+/// ulp of std::cos and std::sin (their Taylor series on [0, pi/4], the
+/// upper half mirrored about pi/4), and vectorised where libm's sincos
+/// is not.
+void halfAngleKernel(int n, const double* __restrict phi, double* __restrict cosHalf,
+                     double* __restrict sinHalf, double* __restrict cosPhi, float* __restrict cosPhiF);
+
+/// Where each column's view ray of a row lies in the planet's shadow
+/// (sky_solver.cpp, solveRow): the cylinder of radius Rg around the light's
+/// axis behind the planet, with 1 - mu^2 from the angles and the roots
+/// without cancellation (planet_shadow.hpp); [in, out] along the ray, both
+/// -1 where it has no shadow.
+struct ShadowSpanArgs {
+    int count = 0;
+    const double* cosPhi = nullptr;  // per column: cos phi, cos(phi / 2), sin(phi / 2)
+    const double* cosHalfPhi = nullptr;
+    const double* sinHalfPhi = nullptr;
+    double sinEl = 0.0, cosEl = 1.0;  // the row's view elevation
+    double sinL = 0.0, cosL = 1.0;    // the light's
+    double r0 = 0.0;                  // the viewer's radius [m]
+    double viewLength = 0.0;          // to the top of the atmosphere [m]
+    double towardsAnti = 0.0;         // sin((el + lambda) / 2), lambda the light's elevation
+    double towardsLight = 0.0;        // sin((el - lambda) / 2)
+    double cosCos = 0.0;              // cos el cos lambda
+    double c2 = 0.0;                  // (r0 cosL)^2 - Rg^2
+    double parallelLit = 0.0;         // a ray along the axis is lit where c2 exceeds this
+    float* in = nullptr;
+    float* out = nullptr;
+};
+void shadowSpanKernel(const ShadowSpanArgs& a);
+
+/// The straight-on share of a row (skyKernel's acc 9..14: Rayleigh rgb,
+/// Mie rgb, phase-less) into its multiple scattering (acc 6..8), times
+/// `fade` and the phases of each column's angle to the light, mu = nuA +
+/// nuB cos phi: rayleighPhase and miePhase (Cornette-Shanks, g clamped to
+/// +-0.999 by the caller) as atmosphere.cpp has them. Channels `stride`
+/// apart.
+struct StraightOnArgs {
+    int count = 0;
+    int stride = 0;
+    const double* cosPhi = nullptr;
+    double nuA = 0.0, nuB = 0.0;
+    double g = 0.0;
+    double fade = 1.0;
+    float* acc = nullptr;
+};
+void straightOnKernel(const StraightOnArgs& a);
+
+/// spreadMultiple's stencil (sky_solver.cpp) for n columns at azimuths
+/// phi [rad, 0..pi] from the light: u = phi (K - 1) / pi in units of the K
+/// = kMsSkyColumns azimuths; Catmull-Rom through the azimuths k - 1 .. k + 2
+/// around it, mirrored at 0 and K - 1. index and weight are [4][padded]
+/// (the padding keeps what it holds).
+void spreadStencilKernel(int n, const double* __restrict phi, int padded, int* __restrict index,
+                         float* __restrict weight);
 
 /// Per-layer constants of a sky row.
 struct LayerConstants {

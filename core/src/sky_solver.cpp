@@ -54,9 +54,8 @@
 // solves are bit-identical. No allocation happens after construction but
 // the snapshot of a rebuilt atmosphere's tables (below). The
 // hot loops work on contiguous float arrays (sky_kernels.hpp) and are
-// compiled for AVX-512, AVX2 and the baseline (target_clones, chosen at load
-// time): no global -march needed.
-#include "planet_shadow.hpp"
+// compiled for x86-64-v4, x86-64-v3 and the baseline (target_clones, chosen
+// at load time): no global -march needed.
 #include "sky_solver_impl.hpp"
 
 #include <aerial/limits.hpp>
@@ -236,24 +235,6 @@ SharedTableCache& sharedTableCache() {
     return cache;
 }
 
-// spreadMultiple's stencil for column i at azimuth phi [rad, 0..pi] from
-// the light: u = phi (K - 1) / pi in units of the K azimuths; Catmull-Rom
-// through the azimuths k - 1 .. k + 2 around it, mirrored at 0 and K - 1
-// (padding: weight 0). index and weight are [4][padded].
-void spreadStencil(double phi, int i, int padded, int* index, float* weight) {
-    constexpr int kK = kMsSkyColumns;
-    const double u = std::clamp(phi / kPi, 0.0, 1.0) * (kK - 1);
-    const int k = std::min(int(u), kK - 2);
-    const double f = u - k;
-    const double w[4] = {0.5 * f * (-1.0 + f * (2.0 - f)), 1.0 + 0.5 * f * f * (-5.0 + 3.0 * f),
-                         0.5 * f * (1.0 + f * (4.0 - 3.0 * f)), 0.5 * f * f * (f - 1.0)};
-    for (int m = 0; m < 4; ++m) {
-        const int at = k - 1 + m;
-        index[m * padded + i] = at < 0 ? -at : (at > kK - 1 ? 2 * (kK - 1) - at : at);
-        weight[m * padded + i] = float(w[m]);
-    }
-}
-
 /// (1 - e^-tau) / tau, the mean transmittance across a layer of optical
 /// depth tau >= 0 given its transmittance e^-tau, by its series where the
 /// quotient would cancel.
@@ -376,8 +357,8 @@ SkySolver::Impl::Impl(const SkySolverDesc& d) : desc(d) {
         cosHalfPhi[std::size_t(i)] = std::cos(0.5 * phi[std::size_t(i)]);
         sinHalfPhi[std::size_t(i)] = std::sin(0.5 * phi[std::size_t(i)]);
         cosPhiF[std::size_t(i)] = float(cosPhi[std::size_t(i)]);
-        spreadStencil(phi[std::size_t(i)], i, paddedColumns, spreadIndex.data(), spreadWeight.data());
     }
+    spreadStencilKernel(columns, phi.data(), paddedColumns, spreadIndex.data(), spreadWeight.data());
     for (SkyTable& t : tables) {
         t.azimuthCount = azimuthCount;
         t.elevationCount = elevationCount;
@@ -589,16 +570,11 @@ void SkySolver::Impl::rowColumns(double elevation, Scratch& s) const {
         return;
     }
     skyTableAzimuths(back, elevation, columns, s.rowPhi.data());
-    for (int i = 0; i < columns; ++i) {
-        const double p = std::min(s.rowPhi[std::size_t(i)], kPi);
-        s.rowPhi[std::size_t(i)] = p;
-        const double c = std::cos(0.5 * p), sn = std::sin(0.5 * p);
-        s.rowCosHalfPhi[std::size_t(i)] = c;
-        s.rowSinHalfPhi[std::size_t(i)] = sn;
-        s.rowCosPhi[std::size_t(i)] = (c - sn) * (c + sn);  // cos p, without cancellation
-        s.rowCosPhiF[std::size_t(i)] = float(s.rowCosPhi[std::size_t(i)]);
-        spreadStencil(p, i, paddedColumns, s.rowSpreadIndex.data(), s.rowSpreadWeight.data());
-    }
+    for (int i = 0; i < columns; ++i) s.rowPhi[std::size_t(i)] = std::min(s.rowPhi[std::size_t(i)], kPi);
+    spreadStencilKernel(columns, s.rowPhi.data(), paddedColumns, s.rowSpreadIndex.data(),
+                        s.rowSpreadWeight.data());
+    halfAngleKernel(columns, s.rowPhi.data(), s.rowCosHalfPhi.data(), s.rowSinHalfPhi.data(),
+                    s.rowCosPhi.data(), s.rowCosPhiF.data());
     s.phi = s.rowPhi.data();
     s.cosPhi = s.rowCosPhi.data();
     s.cosHalfPhi = s.rowCosHalfPhi.data();
@@ -755,50 +731,35 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
     const double towardsAnti = std::sin(0.5 * (elevation + lightElevation));
     const double towardsLight = std::sin(0.5 * (elevation - lightElevation));
     const double cosCos = std::cos(elevation) * cosL;
-    for (int i = 0; i < columns; ++i) {
-        const double mu = sinEl * sinL + cosEl * cosL * s.cosPhi[i];
-        // x . l is linear in s: lit at both ends of the ray means no shadow.
-        if (sinL >= 0.0 && r0 * sinL + viewLength * mu >= 0.0) {
-            s.shadowIn[std::size_t(i)] = -1.0f;
-            s.shadowOut[std::size_t(i)] = -1.0f;
-            continue;
-        }
-        double lo = -INFINITY, hi = INFINITY;
-        const double a2 = oneMinusCosFromParts(towardsAnti, cosCos, s.cosHalfPhi[i]) *
-                          oneMinusCosFromParts(towardsLight, cosCos, s.sinHalfPhi[i]);
-        const double b2 = r0 * (sinEl - sinL * mu);
-        if (a2 > kShadowAxisA2) {
-            if (!halfQuadraticRoots(a2, b2, c2, lo, hi)) hi = lo;  // empty
-        } else if (c2 > -2.0e-9 * rg) {
-            // Parallel to the axis, outside the cylinder or on its surface: a
-            // viewer less than 1 nm inside it (c2 ~ -2 Rg depth) counts as on
-            // it, and on it counts as lit, the limit of the neighbouring
-            // directions (for a light exactly on the horizon, the anti-light
-            // horizon texel would otherwise be dark by rounding alone: c2 ~
-            // -0.01 m^2 there). With 1 mm a light less than ~0.001 deg down
-            // (the viewer at the ground ~Rg L^2 / 2 inside) lit the rows
-            // within ~1e-12 rad below the cap's top straight opposite it,
-            // the full lit sky where the exact integral is dark (the cap's
-            // logarithmic rows reach 1e-6 c there: SkyShadowOnset, -0.00005
-            // deg, 185%).
-            hi = lo;
-        }
-        if (mu > 0.0)
-            hi = std::min(hi, -r0 * sinL / mu);
-        else if (mu < 0.0)
-            lo = std::max(lo, -r0 * sinL / mu);
-        else if (!(sinL < 0.0))
-            hi = lo;
-        lo = std::max(lo, 0.0);
-        hi = std::min(hi, viewLength);
-        if (hi > lo) {
-            s.shadowIn[std::size_t(i)] = float(lo);
-            s.shadowOut[std::size_t(i)] = float(hi);
-        } else {
-            s.shadowIn[std::size_t(i)] = -1.0f;
-            s.shadowOut[std::size_t(i)] = -1.0f;
-        }
-    }
+    ShadowSpanArgs span{};
+    span.count = columns;
+    span.cosPhi = s.cosPhi;
+    span.cosHalfPhi = s.cosHalfPhi;
+    span.sinHalfPhi = s.sinHalfPhi;
+    span.sinEl = sinEl;
+    span.cosEl = cosEl;
+    span.sinL = sinL;
+    span.cosL = cosL;
+    span.r0 = r0;
+    span.viewLength = viewLength;
+    span.towardsAnti = towardsAnti;
+    span.towardsLight = towardsLight;
+    span.cosCos = cosCos;
+    span.c2 = c2;
+    // Parallel to the axis, outside the cylinder or on its surface: a
+    // viewer less than 1 nm inside it (c2 ~ -2 Rg depth) counts as on it,
+    // and on it counts as lit, the limit of the neighbouring directions
+    // (for a light exactly on the horizon, the anti-light horizon texel
+    // would otherwise be dark by rounding alone: c2 ~ -0.01 m^2 there).
+    // With 1 mm a light less than ~0.001 deg down (the viewer at the ground
+    // ~Rg L^2 / 2 inside) lit the rows within ~1e-12 rad below the cap's
+    // top straight opposite it, the full lit sky where the exact integral
+    // is dark (the cap's logarithmic rows reach 1e-6 c there:
+    // SkyShadowOnset, -0.00005 deg, 185%).
+    span.parallelLit = -2.0e-9 * rg;
+    span.in = s.shadowIn.data();
+    span.out = s.shadowOut.data();
+    shadowSpanKernel(span);
 
     // The layers that the shadow overlaps in every column (as skyLayer tells
     // overlap, in float): skyKernel leaves their single scattering out.
@@ -911,15 +872,18 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
     if (k.straightOn) {
         // The straight-on share, phase-less as the single scattering, with
         // the phases of each column's angle to the light.
-        const std::size_t n = std::size_t(paddedColumns);
-        for (int i = 0; i < columns; ++i) {
-            const double mu = sinEl * sinL + cosEl * cosL * s.cosPhi[i];
-            const double pr = rayleighPhase(mu), pm = miePhase(mu, air.mieAnisotropy);
-            for (std::size_t c = 0; c < 3; ++c)
-                s.acc[(6 + c) * n + std::size_t(i)] +=
-                    float(straightFade * (pr * s.acc[(9 + c) * n + std::size_t(i)] +
-                                          pm * s.acc[(12 + c) * n + std::size_t(i)]));
-        }
+        // (rayleighPhase and miePhase, in a kernel that vectorises.)
+        const double g = air.mieAnisotropy;
+        StraightOnArgs so{};
+        so.count = columns;
+        so.stride = paddedColumns;
+        so.cosPhi = s.cosPhi;
+        so.nuA = sinEl * sinL;
+        so.nuB = cosEl * cosL;
+        so.g = std::isfinite(g) ? std::clamp(g, -0.999, 0.999) : 0.0;
+        so.fade = straightFade;
+        so.acc = s.acc.data();
+        straightOnKernel(so);
     }
     SkyTable& out = tables[1 - front];
     for (int i = 0; i < columns; ++i) {
@@ -1039,7 +1003,12 @@ void SkySolver::Impl::shadowEdgeLayers(Scratch& s, double r0, double sinEl, bool
                 // >= 0: the rows rise, so density and transmittance fall.
                 const double kappa = std::max(double(s.layerDepth[std::size_t(3 * l + c)]) + fall, 0.0);
                 const int k = 3 * x + c;
-                const double norm = kappa > 1e-6 ? kappa / -std::expm1(-kappa) : 1.0 + 0.5 * kappa;
+                // kappa / (1 - e^-kappa), by its series where that cancels
+                // (truncation < 1e-12 below 0.05; std::exp is a third of
+                // std::expm1's cost, which was 2% of a solve here).
+                const double norm = kappa > 0.05
+                                        ? kappa / (1.0 - std::exp(-kappa))
+                                        : 1.0 + kappa * (0.5 + kappa * (1.0 / 12.0 - kappa * kappa / 720.0));
                 s.edgeLayerKappa[std::size_t(6 * l + k)] = float(kappa);
                 s.edgeLayerWeight[std::size_t(12 * l + k)] = float((lc.p[k] + 0.5 * double(lc.q[k])) * norm);
                 s.edgeLayerWeight[std::size_t(12 * l + 6 + k)] =
