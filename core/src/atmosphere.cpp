@@ -4,6 +4,8 @@
 // defaults and ozone tent).
 #include <aerial/atmosphere.hpp>
 
+#include "phase.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -32,18 +34,10 @@ constexpr std::array<double, 4> kGaussWeight = {0.3626837833783620, 0.3137066458
 
 }  // namespace
 
-double rayleighPhase(double mu) {
-    mu = clampUnit(mu);
-    return 3.0 / (16.0 * kPi) * (1.0 + mu * mu);
-}
+double rayleighPhase(double mu) { return detail::rayleighPhaseOf(clampUnit(mu)); }
 
 double miePhase(double mu, double g) {
-    mu = clampUnit(mu);
-    g = std::isfinite(g) ? std::clamp(g, -0.999, 0.999) : 0.0;
-    const double g2 = g * g;
-    // 1 + g^2 - 2 g mu >= (1 - |g|)^2 >= 1e-6: never zero for |g| <= 0.999.
-    const double denom = std::max(1.0 + g2 - 2.0 * g * mu, 1e-12);
-    return 3.0 / (8.0 * kPi) * (1.0 - g2) * (1.0 + mu * mu) / ((2.0 + g2) * denom * std::sqrt(denom));
+    return detail::miePhaseOf(clampUnit(mu), std::isfinite(g) ? std::clamp(g, -0.999, 0.999) : 0.0);
 }
 
 double rayleighDensity(const AtmosphereParams& air, double height) {

@@ -125,9 +125,9 @@ void shadowSpanKernel(const ShadowSpanArgs& a);
 /// The straight-on share of a row (skyKernel's acc 9..14: Rayleigh rgb,
 /// Mie rgb, phase-less) into its multiple scattering (acc 6..8), times
 /// `fade` and the phases of each column's angle to the light, mu = nuA +
-/// nuB cos phi: rayleighPhase and miePhase (Cornette-Shanks, g clamped to
-/// +-0.999 by the caller) as atmosphere.cpp has them. Channels `stride`
-/// apart.
+/// nuB cos phi: rayleighPhaseOf and miePhaseOf (phase.hpp, what
+/// rayleighPhase and miePhase compute; g clamped to +-0.999 by the
+/// caller). Channels `stride` apart.
 struct StraightOnArgs {
     int count = 0;
     int stride = 0;

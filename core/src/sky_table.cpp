@@ -48,14 +48,8 @@ struct RowMapping {
     double b = 0.0, c = 0.0, w = 1.0, shadowLow = 0.0, shadowNorm = 1.0;
     double d = 0.0, cap = 1.0, logMix = 0.0, logScale = kSkyCapLogScale, logNorm = 1.0;
     /// The cap's rows below c as a function of u = (c - el) / c, 0..1
-    /// (skyCapBelowRow: the same value, its terms skipped where their
-    /// weight is 0, as it is but for lights 0.005-0.01 deg down), and its
-    /// derivative.
-    double belowMap(double u) const {
-        if (logMix == 0.0) return std::pow(u, kSkyCapBelowPower);
-        if (logMix == 1.0) return std::log1p(u / logScale) / logNorm;
-        return skyCapBelowRow(u, logMix, logScale);
-    }
+    /// (skyCapBelowRow), and its derivative.
+    double belowMap(double u) const { return skyCapBelowRow(u, logMix, logScale, logNorm); }
     double belowSlope(double u) const {
         const double power = logMix == 1.0 ? 0.0 : kSkyCapBelowPower * std::pow(u, kSkyCapBelowPower - 1.0);
         return (1.0 - logMix) * power + logMix / ((u + logScale) * logNorm);

@@ -468,8 +468,16 @@ inline double skyCapRowShare(double c, double g) {
 /// The cap's rows below c: 0 at u = (c - el) / c = 0 (the kink) to 1 at u = 1
 /// (the horizon), (1 - m) u^kSkyCapBelowPower + m ln(1 + u / s) / ln(1 + 1 /
 /// s) for the boost fraction m and the log scale s (SkyCapShape::logScale).
+/// The terms whose weight is 0 are skipped (the same value: m is 0 or 1
+/// but for kinks 0.005-0.01 deg up); `logNorm` = ln(1 + 1 / s), for a caller
+/// that evaluates many u with one s.
+inline double skyCapBelowRow(double u, double m, double s, double logNorm) {
+    if (m == 0.0) return std::pow(u, kSkyCapBelowPower);
+    if (m == 1.0) return std::log1p(u / s) / logNorm;
+    return (1.0 - m) * std::pow(u, kSkyCapBelowPower) + m * std::log1p(u / s) / logNorm;
+}
 inline double skyCapBelowRow(double u, double m, double s) {
-    return (1.0 - m) * std::pow(u, kSkyCapBelowPower) + m * std::log1p(u / s) / std::log1p(1.0 / s);
+    return skyCapBelowRow(u, m, s, std::log1p(1.0 / s));
 }
 
 /// Continuous column (0..azimuthCount, wrapping) of an azimuth `relative`
