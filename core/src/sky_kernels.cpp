@@ -96,6 +96,20 @@ AERIAL_INLINE float expNeg(float x) {
 /// reciprocal root it replaced took 12 instructions and 1e-7 of precision.)
 AERIAL_INLINE float vecSqrt(float x) { return std::sqrt(x); }
 
+/// The two entries of a lookup pair (tablePairs).
+AERIAL_INLINE float pairLow(std::uint64_t pair) {
+    return std::bit_cast<float>(static_cast<std::uint32_t>(pair));
+}
+AERIAL_INLINE float pairHigh(std::uint64_t pair) {
+    return std::bit_cast<float>(static_cast<std::uint32_t>(pair >> 32));
+}
+
+/// Linear interpolation in a lookup pair: a + f (b - a), as from the table.
+AERIAL_INLINE float pairAt(std::uint64_t pair, float f) {
+    const float a = pairLow(pair), b = pairHigh(pair);
+    return a + f * (b - a);
+}
+
 /// One quadrature node of depthKernel for every ray: the falling piece
 /// (d = len1 t^2 from the perigee) and the rising piece (d = start2 + len2 t^2).
 AERIAL_INLINE void depthNode(int n, float t2, float w, float rg, float rg2, const DensityConstants& k,
@@ -131,8 +145,8 @@ AERIAL_INLINE void depthNode(int n, float t2, float w, float rg, float rg2, cons
 /// margins.
 template <bool kRoots, bool kMargins>
 AERIAL_INLINE void skyShell(int nc, float alpha, float beta, float ch, float scale, float knee, float maxU,
-                            const float* __restrict t0, const float* __restrict t1,
-                            const float* __restrict t2, const float* __restrict cosPhi,
+                            const std::uint64_t* __restrict t0, const std::uint64_t* __restrict t1,
+                            const std::uint64_t* __restrict t2, const float* __restrict cosPhi,
                             float* __restrict tau0, float* __restrict tau1, float* __restrict tau2,
                             float* __restrict tr0, float* __restrict tr1, float* __restrict tr2,
                             float* __restrict root0, float* __restrict root1, float* __restrict root2,
@@ -143,9 +157,9 @@ AERIAL_INLINE void skyShell(int nc, float alpha, float beta, float ch, float sca
         const float u = minNonNegative(x / (x + knee) * scale, maxU);
         const int iu = static_cast<int>(u);
         const float f = u - float(iu);
-        const float d0 = t0[iu] + f * (t0[iu + 1] - t0[iu]);
-        const float d1 = t1[iu] + f * (t1[iu + 1] - t1[iu]);
-        const float d2 = t2[iu] + f * (t2[iu + 1] - t2[iu]);
+        const float d0 = pairAt(t0[iu], f);
+        const float d1 = pairAt(t1[iu], f);
+        const float d2 = pairAt(t2[iu], f);
         tau0[i] = d0;
         tau1[i] = d1;
         tau2[i] = d2;
@@ -307,8 +321,8 @@ AERIAL_INLINE void skyLayer(
 /// u = (x + 1) / 2 (n - 1) (sky_multiple.hpp) -> interpolation of -ln Psi
 /// (MultipleScatteringLut::resample: geometric in Psi); the column u of
 /// each sky column into `column` (shellAniso's lookups).
-AERIAL_INLINE void shellPsi(int nc, float alpha, float beta, int n, const float* __restrict psi0,
-                            const float* __restrict psi1, const float* __restrict psi2,
+AERIAL_INLINE void shellPsi(int nc, float alpha, float beta, int n, const std::uint64_t* __restrict psi0,
+                            const std::uint64_t* __restrict psi1, const std::uint64_t* __restrict psi2,
                             const float* __restrict cosPhi, float* __restrict out0, float* __restrict out1,
                             float* __restrict out2, float* __restrict column) {
     const float scale = 0.5f * float(n - 1);
@@ -322,9 +336,9 @@ AERIAL_INLINE void shellPsi(int nc, float alpha, float beta, int n, const float*
         column[i] = u;
         const int iu = static_cast<int>(u);
         const float f = u - float(iu);
-        out0[i] = expNeg(psi0[iu] + f * (psi0[iu + 1] - psi0[iu]));
-        out1[i] = expNeg(psi1[iu] + f * (psi1[iu + 1] - psi1[iu]));
-        out2[i] = expNeg(psi2[iu] + f * (psi2[iu + 1] - psi2[iu]));
+        out0[i] = expNeg(pairAt(psi0[iu], f));
+        out1[i] = expNeg(pairAt(psi1[iu], f));
+        out2[i] = expNeg(pairAt(psi2[iu], f));
     }
 }
 
@@ -530,7 +544,7 @@ AERIAL_INLINE void edgePieces(int n, std::size_t stride, const double* __restric
                               const double* __restrict layerExtent, const int* __restrict layer,
                               const int* __restrict edgeAtStart, double tangent2, double viewTwice,
                               double rg2, double lightAtViewer, double knee, double maxU, int angles,
-                              const float* __restrict angleScale, const float* __restrict depth,
+                              const float* __restrict angleScale, const std::uint64_t* __restrict depth,
                               std::size_t plane, float* __restrict tauStart, float* __restrict tauMid,
                               float* __restrict tauEnd, float* __restrict t0, float* __restrict dt) {
     for (int m = 0; m < n; ++m) {
@@ -557,17 +571,22 @@ AERIAL_INLINE void edgePieces(int n, std::size_t stride, const double* __restric
         const double fLit = uLit - iLit, fA = uA - iA, fB = uB - iB;
         const int rowA = l * angles, rowB = rowA + angles;
         const int atLit = lit * angles + iLit, atA = rowA + iA, atB = rowB + iB;
+        // Linear in a lookup pair (tablePairs), in double.
+        auto at = [](std::uint64_t pair, double f) {
+            const double lo = pairLow(pair), hi = pairHigh(pair);
+            return lo + f * (hi - lo);
+        };
         for (int c = 0; c < 3; ++c) {
-            const float* ch = depth + std::size_t(c) * plane;
-            const double ga = ch[rowA], gb = ch[rowB];
+            const std::uint64_t* ch = depth + std::size_t(c) * plane;
+            const double ga = pairLow(ch[rowA]), gb = pairLow(ch[rowB]);
             const double tauEdge = ga + fEdge * (gb - ga);
-            const double tauLit = ch[atLit] + fLit * (double(ch[atLit + 1]) - ch[atLit]);
-            const double ma = ch[atA] + fA * (double(ch[atA + 1]) - ch[atA]);
-            const double mb = ch[atB] + fB * (double(ch[atB + 1]) - ch[atB]);
-            const std::size_t at = std::size_t(c) * stride + std::size_t(m);
-            tauStart[at] = float(atStart ? tauEdge : tauLit);
-            tauEnd[at] = float(atStart ? tauLit : tauEdge);
-            tauMid[at] = float(ma + fMid * (mb - ma));
+            const double tauLit = at(ch[atLit], fLit);
+            const double ma = at(ch[atA], fA);
+            const double mb = at(ch[atB], fB);
+            const std::size_t out = std::size_t(c) * stride + std::size_t(m);
+            tauStart[out] = float(atStart ? tauEdge : tauLit);
+            tauEnd[out] = float(atStart ? tauLit : tauEdge);
+            tauMid[out] = float(ma + fMid * (mb - ma));
         }
         t0[m] = float((a - layerExtent[2 * l]) * layerExtent[2 * l + 1]);
         dt[m] = float((b - a) * layerExtent[2 * l + 1]);
@@ -585,9 +604,9 @@ AERIAL_INLINE void lightAtShell(const SkyKernelArgs& a, int j, float maxU) {
     const float beta = j == 0 ? a.beta0 : a.layer[j - 1].beta;
     const float ch = j == 0 ? a.horizonCos0 : a.layer[j - 1].horizonCos;
     const float scale = j == 0 ? a.angleScale0 : a.layer[j - 1].angleScale;
-    const float* t0 = a.depth + std::size_t(j) * na;
-    const float* t1 = a.depth + (rows + std::size_t(j)) * na;
-    const float* t2 = a.depth + (2 * rows + std::size_t(j)) * na;
+    const std::uint64_t* t0 = a.depthPairs + std::size_t(j) * na;
+    const std::uint64_t* t1 = a.depthPairs + (rows + std::size_t(j)) * na;
+    const std::uint64_t* t2 = a.depthPairs + (2 * rows + std::size_t(j)) * na;
     float* r = a.shells + std::size_t(j % kShellSlots) * kShellRecord * nc;
     auto record = [&]<bool kRoots, bool kMargins>() AERIAL_LAMBDA_INLINE {
         skyShell<kRoots, kMargins>(nc, alpha, beta, ch, scale, a.knee, maxU, t0, t1, t2, a.cosPhi, r, r + nc,
@@ -602,9 +621,9 @@ AERIAL_INLINE void lightAtShell(const SkyKernelArgs& a, int j, float maxU) {
         record.template operator()<false, true>();
     if (a.psi != nullptr) {
         const int n = a.psiCosines;
-        const float* p0 = a.psi + std::size_t(j) * n;
-        const float* p1 = a.psi + (rows + std::size_t(j)) * n;
-        const float* p2 = a.psi + (2 * rows + std::size_t(j)) * n;
+        const std::uint64_t* p0 = a.psi + std::size_t(j) * n;
+        const std::uint64_t* p1 = a.psi + (rows + std::size_t(j)) * n;
+        const std::uint64_t* p2 = a.psi + (2 * rows + std::size_t(j)) * n;
         shellPsi(kMsSkyColumns, alpha, beta, n, p0, p1, p2, a.msCosPhi, r + 10 * nc, r + 11 * nc, r + 12 * nc,
                  r + 13 * nc);
         // The anisotropy at every kAnisoShellStride-th shell (and the last)
@@ -653,6 +672,14 @@ AERIAL_HOT_KERNEL void depthKernel(const DepthKernelArgs& a) {
             depthNode(n, t * t, w, a.planetRadius, a.planetRadius2, k, q, len1, start2, len2, outR, outM,
                       outO);
         }
+    }
+}
+
+void tablePairs(const float* table, int count, std::uint64_t* pairs) {
+    for (int a = 0; a < count; ++a) {
+        const float next = table[std::min(a + 1, count - 1)];
+        pairs[a] = std::uint64_t(std::bit_cast<std::uint32_t>(table[a])) |
+                   (std::uint64_t(std::bit_cast<std::uint32_t>(next)) << 32);
     }
 }
 
@@ -939,7 +966,7 @@ AERIAL_HOT_KERNEL void edgePieceKernel(const EdgePieceArgs& a) {
     const std::size_t stride = std::size_t(a.stride);
     edgePieces(a.count, stride, a.from, a.to, a.mu, a.litQ, a.layerTangent, a.layerExtent, a.layer,
                a.edgeAtStart, a.tangent2, a.viewTwice, a.planetRadius2, a.lightAtViewer, a.knee, a.maxU,
-               a.angles, a.angleScale, a.depth, a.plane, a.tauStart, a.tauMid, a.tauEnd, a.t0, a.dt);
+               a.angles, a.angleScale, a.depthPairs, a.plane, a.tauStart, a.tauMid, a.tauEnd, a.t0, a.dt);
     for (std::size_t k = 0; k < 6; ++k)
         for (int m = 0; m < a.count; ++m)
             a.kappa[k * stride + std::size_t(m)] = a.layerKappa[6 * a.layer[m] + int(k)];

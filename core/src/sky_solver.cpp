@@ -173,6 +173,7 @@ struct SharedTables {
     bool multiple = false, isotropic = false;
     std::vector<double> shellHeight, horizonCosD;
     std::vector<float> horizonCos, angleScale, layerCurvature, depth, psiShell, anisoShell, viewShell;
+    std::vector<std::uint64_t> depthPairs, psiPairs;
     AtmosphereParams msAir;  // the atmosphere the LUT was built for (sanitized)
     DensityConstants density;
     MultipleScatteringLut ms;
@@ -190,10 +191,12 @@ void copyAtmosphereTables(const From& from, To& to, bool multiple) {
     to.angleScale = from.angleScale;
     to.layerCurvature = from.layerCurvature;
     to.depth = from.depth;
+    to.depthPairs = from.depthPairs;
     to.density = from.density;
     if (multiple) {
         to.ms = from.ms;
         to.psiShell = from.psiShell;
+        to.psiPairs = from.psiPairs;
         to.anisoShell = from.anisoShell;
         to.viewShell = from.viewShell;
         to.msAir = from.msAir;
@@ -328,6 +331,7 @@ SkySolver::Impl::Impl(const SkySolverDesc& d) : desc(d) {
     layerCurvature.assign(std::size_t(layers), 0.0f);
     angleScale.assign(std::size_t(layers) + 1, 0.0f);
     depth.assign(std::size_t(3) * (layers + 1) * angles, 0.0f);
+    depthPairs.assign(depth.size(), 0);
     cosPhi.assign(std::size_t(columns), 1.0);
     cosHalfPhi.assign(std::size_t(columns), 1.0);
     sinHalfPhi.assign(std::size_t(columns), 0.0);
@@ -368,6 +372,7 @@ SkySolver::Impl::Impl(const SkySolverDesc& d) : desc(d) {
     }
     multiple = !desc.singleScatteringOnly;
     psiShell.assign(std::size_t(3) * (layers + 1) * kMsCosines, 0.0f);
+    psiPairs.assign(psiShell.size(), 0);
     anisoShell.assign(std::size_t(kMsAniso) * 3 * (layers + 1) * kMsCosines, 0.0f);
     viewShell.assign(std::size_t(kMsViews) * 3 * (layers + 1) * kMsCosines, 0.0f);
     scratch.resize(std::size_t(desc.threadCount));
@@ -489,6 +494,9 @@ constexpr int kMsStageChunks = (kMsRows + kMsStageRows - 1) / kMsStageRows;
 void SkySolver::Impl::resampleShell(int k) {
     ms.resample(shellHeight.data(), layers + 1, k, k + 1, psiShell.data(), anisoShell.data(),
                 ms.anisotropic() ? viewShell.data() : nullptr);
+    const std::size_t plane = std::size_t(layers + 1) * kMsCosines, at = std::size_t(k) * kMsCosines;
+    for (std::size_t c = 0; c < 3; ++c)
+        tablePairs(psiShell.data() + c * plane + at, kMsCosines, psiPairs.data() + c * plane + at);
 }
 
 int SkySolver::Impl::rebuildStages() const {
@@ -550,6 +558,8 @@ void SkySolver::Impl::buildDepthRow(int row, Scratch& s) {
     float* out = depth.data() + std::size_t(row) * angles;
     opticalDepthRow(air, density, shellHeight[std::size_t(row)], horizonCosD[std::size_t(row)], angles,
                     s.depthRow, out, out + plane, out + 2 * plane);
+    for (std::size_t c = 0; c < 3; ++c)
+        tablePairs(out + c * plane, angles, depthPairs.data() + std::size_t(row) * angles + c * plane);
 }
 
 // The azimuths of a row's columns 0..azimuthCount/2 (skyTableAzimuth): the
@@ -789,9 +799,9 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
     k.shadowOut = s.shadowOut.data();
     k.layer = s.layer.data();
     k.layerLit = s.layerLit.data();
-    k.depth = depth.data();
+    k.depthPairs = depthPairs.data();
     const bool msSolved = multiple && msRowSolved[std::size_t(row)] != 0;
-    k.psi = msSolved ? psiShell.data() : nullptr;
+    k.psi = msSolved ? psiPairs.data() : nullptr;
     k.psiCosines = kMsCosines;
     k.aniso = msSolved && ms.anisotropic() ? anisoShell.data() : nullptr;
     k.views = k.aniso != nullptr ? viewShell.data() : nullptr;
@@ -885,25 +895,22 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
         so.acc = s.acc.data();
         straightOnKernel(so);
     }
+    // Columns 0..columns-1 from the accumulators (never below 0, rounding,
+    // and never NaN), then their mirrors azimuthCount - i.
     SkyTable& out = tables[1 - front];
-    for (int i = 0; i < columns; ++i) {
-        const std::size_t at0 = (std::size_t(row) * azimuthCount + i) * 3;
-        const std::size_t at1 = (std::size_t(row) * azimuthCount + (azimuthCount - i) % azimuthCount) * 3;
-        for (int c = 0; c < 3; ++c) {
-            // Never below 0 (rounding) and never NaN.
-            const float r = s.acc[std::size_t(c * paddedColumns + i)];
-            const float m = s.acc[std::size_t((3 + c) * paddedColumns + i)];
-            const float x = s.acc[std::size_t((6 + c) * paddedColumns + i)];
-            const float vr = r > 0.0f ? r : 0.0f;
-            const float vm = m > 0.0f ? m : 0.0f;
-            const float vx = x > 0.0f ? x : 0.0f;
-            out.multiple[at0 + c] = vx;
-            out.multiple[at1 + c] = vx;
-            out.rayleigh[at0 + c] = vr;
-            out.rayleigh[at1 + c] = vr;
-            out.mie[at0 + c] = vm;
-            out.mie[at1 + c] = vm;
-        }
+    const std::size_t rowAt = std::size_t(row) * azimuthCount * 3;
+    float* planes[3] = {out.rayleigh.data() + rowAt, out.mie.data() + rowAt, out.multiple.data() + rowAt};
+    for (std::size_t x = 0; x < 3; ++x) {
+        float* __restrict texel = planes[x];
+        const float* __restrict from = s.acc.data() + 3 * x * std::size_t(paddedColumns);
+        const std::size_t n = std::size_t(paddedColumns);
+        for (int i = 0; i < columns; ++i)
+            for (std::size_t c = 0; c < 3; ++c) {
+                const float v = from[c * n + std::size_t(i)];
+                texel[3 * std::size_t(i) + c] = v > 0.0f ? v : 0.0f;
+            }
+        for (int i = 1; 2 * i < azimuthCount; ++i)
+            std::copy_n(texel + 3 * std::size_t(i), 3, texel + 3 * std::size_t(azimuthCount - i));
     }
 }
 
@@ -1086,7 +1093,7 @@ void SkySolver::Impl::shadowEdgeLayers(Scratch& s, double r0, double sinEl, bool
     p.maxU = double(angles - 1) - 1e-3;
     p.angles = angles;
     p.angleScale = angleScale.data();
-    p.depth = depth.data();
+    p.depthPairs = depthPairs.data();
     p.plane = rows * std::size_t(angles);
     p.layerKappa = s.edgeLayerKappa.data();
     p.layerTangent = s.edgeLayerTangent.data();

@@ -81,13 +81,15 @@ struct SkySolver::Impl {
     std::vector<double> horizonCosD;            // [layers + 1]
     std::vector<float> layerCurvature;          // [layers] tanh(lambda / 4) / 3, see curvatureFactor
     std::vector<float> depth;                   // [3][layers + 1][angles]
+    std::vector<std::uint64_t> depthPairs;      // the same as lookup pairs (tablePairs)
     detail::DensityConstants density;
     // Multiple scattering (sky_multiple.hpp): the LUT and Psi_ms at the shells.
     bool multiple = true;
     detail::MultipleScatteringLut ms;
-    std::vector<float> psiShell;    // [3][layers + 1][kMsCosines]
-    std::vector<float> anisoShell;  // [kMsAniso * 3][layers + 1][kMsCosines]
-    std::vector<float> viewShell;   // [layers + 1][kMsViews * 3][kMsCosines]
+    std::vector<float> psiShell;          // [3][layers + 1][kMsCosines]
+    std::vector<std::uint64_t> psiPairs;  // the same as lookup pairs (tablePairs)
+    std::vector<float> anisoShell;        // [kMsAniso * 3][layers + 1][kMsCosines]
+    std::vector<float> viewShell;         // [layers + 1][kMsViews * 3][kMsCosines]
     // The (sanitized) atmosphere the LUT and the three above were built
     // for, which a drifting atmosphere may reuse (sky_solver.cpp,
     // "Multiple scattering in a drifting atmosphere").
