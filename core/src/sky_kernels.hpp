@@ -213,7 +213,7 @@ struct SkyKernelArgs {
     /// 0 there, and the kernel skips it (its multiple scattering stays).
     const unsigned char* layerLit;
     /// [3][layers + 1][angles] the optical depth to the light as lookup
-    /// pairs (tablePairs: each entry's value and the step to the next)
+    /// pairs (tablePairs: each entry with the next one)
     const std::uint64_t* depthPairs;
     /// Multiple scattering: Psi_ms resampled at the shells, [3][layers + 1][psiCosines]
     /// (sky_multiple.hpp, column mapping msColumnOfCosine); null: single scattering only.
