@@ -164,15 +164,17 @@ double msDriftEstimate(const AtmosphereParams& built, const AtmosphereParams& no
 // snapshot here (the last kSharedTables, keyed by the parameters' bytes and
 // those settings), and a solver whose atmosphere changed adopts a matching
 // snapshot instead of building it again (of several for the same key, the
-// one whose LUT is nearest, within the solver's own tolerance). The snapshot holds exactly what a
-// rebuild writes, so a solve that adopts it is bit-identical to one that
-// builds (SkyMultiple.SharedAtmosphereTablesAreBitIdentical).
+// one whose LUT is nearest, within the solver's own tolerance). The snapshot
+// holds exactly what a rebuild leaves for the solves after it (the tables as
+// lookup pairs, not the floats they were paired from), so a solve that adopts
+// it is bit-identical to one that builds
+// (SkyMultiple.SharedAtmosphereTablesAreBitIdentical).
 struct SharedTables {
     AtmosphereParams key;  // as given to solve(), compared bytewise
     int layers = 0, angles = 0;
     bool multiple = false, isotropic = false;
     std::vector<double> shellHeight, horizonCosD;
-    std::vector<float> horizonCos, angleScale, layerCurvature, depth, psiShell, anisoShell, viewShell;
+    std::vector<float> horizonCos, angleScale, layerCurvature, anisoShell, viewShell;
     std::vector<std::uint64_t> depthPairs, psiPairs;
     AtmosphereParams msAir;  // the atmosphere the LUT was built for (sanitized)
     DensityConstants density;
@@ -190,12 +192,10 @@ void copyAtmosphereTables(const From& from, To& to, bool multiple) {
     to.horizonCos = from.horizonCos;
     to.angleScale = from.angleScale;
     to.layerCurvature = from.layerCurvature;
-    to.depth = from.depth;
     to.depthPairs = from.depthPairs;
     to.density = from.density;
     if (multiple) {
         to.ms = from.ms;
-        to.psiShell = from.psiShell;
         to.psiPairs = from.psiPairs;
         to.anisoShell = from.anisoShell;
         to.viewShell = from.viewShell;
@@ -330,8 +330,7 @@ SkySolver::Impl::Impl(const SkySolverDesc& d) : desc(d) {
     horizonCosD.assign(std::size_t(layers) + 1, 0.0);
     layerCurvature.assign(std::size_t(layers), 0.0f);
     angleScale.assign(std::size_t(layers) + 1, 0.0f);
-    depth.assign(std::size_t(3) * (layers + 1) * angles, 0.0f);
-    depthPairs.assign(depth.size(), 0);
+    depthPairs.assign(std::size_t(3) * (layers + 1) * angles, 0);
     cosPhi.assign(std::size_t(columns), 1.0);
     cosHalfPhi.assign(std::size_t(columns), 1.0);
     sinHalfPhi.assign(std::size_t(columns), 0.0);
@@ -413,6 +412,7 @@ SkySolver::Impl::Impl(const SkySolverDesc& d) : desc(d) {
         s.pieceAtStart.assign(pieces, 0);
         for (auto* v : {&s.pieceFrom, &s.pieceTo, &s.pieceMu, &s.pieceLitQ}) v->assign(pieces, 0.0);
         s.depthRow.resize(angles);
+        s.depthOut.assign(std::size_t(3) * angles, 0.0f);
         s.rowPhi.assign(std::size_t(columns), 0.0);
         s.rowCosPhi.assign(std::size_t(columns), 1.0);
         s.rowCosHalfPhi.assign(std::size_t(columns), 1.0);
@@ -554,12 +554,12 @@ void SkySolver::Impl::buildLayers() {
 // Row `row` of the optical-depth table: transmittance from shell `row`
 // towards each tabulated light zenith cosine.
 void SkySolver::Impl::buildDepthRow(int row, Scratch& s) {
-    const std::size_t plane = std::size_t(layers + 1) * angles;
-    float* out = depth.data() + std::size_t(row) * angles;
+    const std::size_t plane = std::size_t(layers + 1) * angles, n = std::size_t(angles);
+    float* out = s.depthOut.data();
     opticalDepthRow(air, density, shellHeight[std::size_t(row)], horizonCosD[std::size_t(row)], angles,
-                    s.depthRow, out, out + plane, out + 2 * plane);
+                    s.depthRow, out, out + n, out + 2 * n);
     for (std::size_t c = 0; c < 3; ++c)
-        tablePairs(out + c * plane, angles, depthPairs.data() + std::size_t(row) * angles + c * plane);
+        tablePairs(out + c * n, angles, depthPairs.data() + std::size_t(row) * n + c * plane);
 }
 
 // The azimuths of a row's columns 0..azimuthCount/2 (skyTableAzimuth): the

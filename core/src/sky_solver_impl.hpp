@@ -51,6 +51,7 @@ struct SkySolver::Impl {
         std::vector<int> pieceAtStart;  // [2 padded columns] and the rest of edgePieceKernel's inputs
         std::vector<double> pieceFrom, pieceTo, pieceMu, pieceLitQ;
         detail::DepthRowScratch depthRow;  // optical-depth rows
+        std::vector<float> depthOut;       // [3][angles] a row of the table before tablePairs
         // The row's column azimuths (rowColumns): the shared uniform ones, or
         // this row's own where the column mapping warps it.
         std::vector<double> rowPhi, rowCosPhi;             // [columns]
@@ -80,14 +81,15 @@ struct SkySolver::Impl {
     std::vector<float> horizonCos, angleScale;  // [layers + 1]
     std::vector<double> horizonCosD;            // [layers + 1]
     std::vector<float> layerCurvature;          // [layers] tanh(lambda / 4) / 3, see curvatureFactor
-    std::vector<float> depth;                   // [3][layers + 1][angles]
-    std::vector<std::uint64_t> depthPairs;      // the same as lookup pairs (tablePairs)
+    std::vector<std::uint64_t> depthPairs;      // [3][layers + 1][angles] as lookup pairs (tablePairs)
     detail::DensityConstants density;
     // Multiple scattering (sky_multiple.hpp): the LUT and Psi_ms at the shells.
     bool multiple = true;
     detail::MultipleScatteringLut ms;
-    std::vector<float> psiShell;          // [3][layers + 1][kMsCosines]
-    std::vector<std::uint64_t> psiPairs;  // the same as lookup pairs (tablePairs)
+    std::vector<std::uint64_t> psiPairs;  // [3][layers + 1][kMsCosines] as lookup pairs (tablePairs)
+    // [3][layers + 1][kMsCosines] resampleShell's output before tablePairs
+    // (only its shell's part is read, just after it is written; not shared).
+    std::vector<float> psiShell;
     std::vector<float> anisoShell;        // [kMsAniso * 3][layers + 1][kMsCosines]
     std::vector<float> viewShell;         // [layers + 1][kMsViews * 3][kMsCosines]
     // The (sanitized) atmosphere the LUT and the three above were built
@@ -135,7 +137,7 @@ struct SkySolver::Impl {
     std::atomic<int> msDepthRowsDone{0};
     std::atomic<int> psiRowsDone{0};
     std::atomic<int> resampleDone{0};   // shells of Psi_ms resampled in the running dispatch
-    std::atomic<bool> psiReady{false};  // psiShell resampled in the running dispatch
+    std::atomic<bool> psiReady{false};  // psiPairs resampled in the running dispatch
     std::optional<detail::WorkerPool> pool;
 
     explicit Impl(const SkySolverDesc& d);
