@@ -565,10 +565,18 @@ void SkySolver::Impl::buildDepthRow(int row, Scratch& s) {
 // The azimuths of a row's columns 0..azimuthCount/2 (skyTableAzimuth): the
 // uniform ones, or where the column mapping warps the row (around the cap
 // of the earth's shadow opposite a light just set) the row's own, with their
-// cosines and spreadMultiple's stencil.
+// cosines and spreadMultiple's stencil. A warped row's azimuths reach pi
+// before its last column in most rows of a light 0-0.5 deg down (the
+// columns crowd into the cap; 2-3 at pi in 44-51 of the 64 rows): the row
+// is solved for its distinct columns only, the first at pi standing for
+// the rest (solveRow copies it), which brings its 65 columns to 64 lanes
+// instead of 72 (every column's integral is its own, so the table is the
+// same to the bit).
 void SkySolver::Impl::rowColumns(double elevation, Scratch& s) const {
     const SkyTable& back = tables[1 - front];
     const bool uniform = !skyTableColumnsWarped(back);
+    s.rowColumnCount = columns;
+    s.rowStride = paddedColumns;
     if (uniform) {
         s.phi = phi.data();
         s.cosPhi = cosPhi.data();
@@ -580,10 +588,19 @@ void SkySolver::Impl::rowColumns(double elevation, Scratch& s) const {
         return;
     }
     skyTableAzimuths(back, elevation, columns, s.rowPhi.data());
-    for (int i = 0; i < columns; ++i) s.rowPhi[std::size_t(i)] = std::min(s.rowPhi[std::size_t(i)], kPi);
-    spreadStencilKernel(columns, s.rowPhi.data(), paddedColumns, s.rowSpreadIndex.data(),
+    for (int i = 0; i < columns; ++i) {
+        s.rowPhi[std::size_t(i)] = std::min(s.rowPhi[std::size_t(i)], kPi);
+        if (s.rowPhi[std::size_t(i)] == kPi) {
+            s.rowColumnCount = i + 1;
+            break;
+        }
+    }
+    // (Never under the multiple scattering's azimuths, which the kernel
+    // keeps in the same records.)
+    s.rowStride = (std::max(s.rowColumnCount, kMsSkyColumns) + 7) / 8 * 8;
+    spreadStencilKernel(s.rowColumnCount, s.rowPhi.data(), s.rowStride, s.rowSpreadIndex.data(),
                         s.rowSpreadWeight.data());
-    halfAngleKernel(columns, s.rowPhi.data(), s.rowCosHalfPhi.data(), s.rowSinHalfPhi.data(),
+    halfAngleKernel(s.rowColumnCount, s.rowPhi.data(), s.rowCosHalfPhi.data(), s.rowSinHalfPhi.data(),
                     s.rowCosPhi.data(), s.rowCosPhiF.data());
     s.phi = s.rowPhi.data();
     s.cosPhi = s.rowCosPhi.data();
@@ -742,7 +759,7 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
     const double towardsLight = std::sin(0.5 * (elevation - lightElevation));
     const double cosCos = std::cos(elevation) * cosL;
     ShadowSpanArgs span{};
-    span.count = columns;
+    span.count = s.rowColumnCount;
     span.cosPhi = s.cosPhi;
     span.cosHalfPhi = s.cosHalfPhi;
     span.sinHalfPhi = s.sinHalfPhi;
@@ -776,7 +793,7 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
     for (int l = 0; l < layers; ++l) {
         const float s0 = s.layer[std::size_t(l)].start, s1 = s.layer[std::size_t(l)].end;
         unsigned char lit = 0;
-        for (int i = 0; i < columns && !lit; ++i) {
+        for (int i = 0; i < s.rowColumnCount && !lit; ++i) {
             const float lo = std::max(s.shadowIn[std::size_t(i)], s0);
             const float hi = std::min(s.shadowOut[std::size_t(i)], s1);
             lit = !(hi - lo > 0.0f);
@@ -785,7 +802,7 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
     }
 
     SkyKernelArgs k{};
-    k.columns = paddedColumns;
+    k.columns = s.rowStride;
     k.layers = layers;
     k.angles = angles;
     k.knee = float(kAngleKnee);
@@ -856,7 +873,7 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
         // The row's multiple scattering at the kMsSkyColumns azimuths: its
         // own, kept for the rows between, or theirs (planMultipleRows).
         float* value = &msRowValue[std::size_t(row) * 3 * kMsSkyColumns];
-        const std::size_t n = std::size_t(paddedColumns);
+        const std::size_t n = std::size_t(s.rowStride);
         if (msSolved) {
             for (std::size_t c = 0; c < 3; ++c)
                 std::copy_n(&s.acc[(6 + c) * n], kMsSkyColumns, value + c * kMsSkyColumns);
@@ -885,8 +902,8 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
         // (rayleighPhase and miePhase, in a kernel that vectorises.)
         const double g = air.mieAnisotropy;
         StraightOnArgs so{};
-        so.count = columns;
-        so.stride = paddedColumns;
+        so.count = s.rowColumnCount;
+        so.stride = s.rowStride;
         so.cosPhi = s.cosPhi;
         so.nuA = sinEl * sinL;
         so.nuB = cosEl * cosL;
@@ -896,19 +913,23 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
         straightOnKernel(so);
     }
     // Columns 0..columns-1 from the accumulators (never below 0, rounding,
-    // and never NaN), then their mirrors azimuthCount - i.
+    // and never NaN; those after the row's distinct ones copies of its last),
+    // then their mirrors azimuthCount - i.
     SkyTable& out = tables[1 - front];
     const std::size_t rowAt = std::size_t(row) * azimuthCount * 3;
     float* planes[3] = {out.rayleigh.data() + rowAt, out.mie.data() + rowAt, out.multiple.data() + rowAt};
     for (std::size_t x = 0; x < 3; ++x) {
         float* __restrict texel = planes[x];
-        const float* __restrict from = s.acc.data() + 3 * x * std::size_t(paddedColumns);
-        const std::size_t n = std::size_t(paddedColumns);
-        for (int i = 0; i < columns; ++i)
+        const std::size_t n = std::size_t(s.rowStride);
+        const float* __restrict from = s.acc.data() + 3 * x * n;
+        const int distinct = s.rowColumnCount;
+        for (int i = 0; i < distinct; ++i)
             for (std::size_t c = 0; c < 3; ++c) {
                 const float v = from[c * n + std::size_t(i)];
                 texel[3 * std::size_t(i) + c] = v > 0.0f ? v : 0.0f;
             }
+        for (int i = distinct; i < columns; ++i)
+            std::copy_n(texel + 3 * std::size_t(distinct - 1), 3, texel + 3 * std::size_t(i));
         for (int i = 1; 2 * i < azimuthCount; ++i)
             std::copy_n(texel + 3 * std::size_t(i), 3, texel + 3 * std::size_t(azimuthCount - i));
     }
@@ -926,7 +947,7 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
 void SkySolver::Impl::spreadMultiple(Scratch& s) const {
     constexpr int kK = kMsSkyColumns;
     for (int c = 0; c < 3; ++c) {
-        float* x = &s.acc[std::size_t((6 + c) * paddedColumns)];
+        float* x = &s.acc[std::size_t((6 + c) * s.rowStride)];
         float value[kK], logValue[kK];
         bool positive = true;
         for (int k = 0; k < kK; ++k) {
@@ -938,7 +959,7 @@ void SkySolver::Impl::spreadMultiple(Scratch& s) const {
         }
         if (positive) {
             SpreadKernelArgs a{};
-            a.count = paddedColumns;
+            a.count = s.rowStride;
             a.index = s.spreadIndex;
             a.weight = s.spreadWeight;
             a.logValue = logValue;
@@ -946,7 +967,7 @@ void SkySolver::Impl::spreadMultiple(Scratch& s) const {
             spreadKernel(a);
             continue;
         }
-        for (int i = 0; i < columns; ++i) {  // linear between the two nearest
+        for (int i = 0; i < s.rowColumnCount; ++i) {  // linear between the two nearest
             const double u = s.phi[i] / kPi * (kK - 1);
             const int k = std::min(int(u), kK - 2);
             const float f = float(u - k);
@@ -1066,7 +1087,7 @@ void SkySolver::Impl::shadowEdgeLayers(Scratch& s, double r0, double sinEl, bool
         const double x = std::max(alpha + beta * s.cosPhi[i] - horizonCos[std::size_t(k)], 0.0);
         return x / (x + kAngleKnee);
     };
-    for (int i = 0; i < columns; ++i) {
+    for (int i = 0; i < s.rowColumnCount; ++i) {
         const float sIn = s.shadowIn[std::size_t(i)], sOut = s.shadowOut[std::size_t(i)];
         if (!(sOut > sIn)) continue;  // no shadow in this column
         const int lIn = layerOf(sIn), lOut = layerOf(sOut);
@@ -1108,7 +1129,7 @@ void SkySolver::Impl::shadowEdgeLayers(Scratch& s, double r0, double sinEl, bool
     edgePieceKernel(p);
     // Into the row's accumulators: R rgb, M rgb, and with the straight-on
     // share (skyKernel's acc 9..14) the same integrals with its weights.
-    const std::size_t stride = std::size_t(paddedColumns), outStride = std::size_t(cap);
+    const std::size_t stride = std::size_t(s.rowStride), outStride = std::size_t(cap);
     for (int m = 0; m < n; ++m) {
         float* acc = s.acc.data() + s.edgeColumn[std::size_t(m)];
         const float* out = s.edgeOut.data() + m;

@@ -66,6 +66,12 @@ struct SkySolver::Impl {
         const float* cosPhiF = nullptr;                    // [padded columns]
         const int* spreadIndex = nullptr;                  // [4][padded columns]
         const float* spreadWeight = nullptr;               // [4][padded columns]
+        // The row's distinct columns (rowColumns: a warped row's last ones
+        // may all lie at the anti-light point, copies of the first there) and
+        // that count rounded up to 8, the stride of the row's accumulators
+        // and shell records.
+        int rowColumnCount = 0;
+        int rowStride = 0;
     };
 
     SkySolverDesc desc;
