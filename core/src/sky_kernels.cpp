@@ -609,7 +609,7 @@ AERIAL_INLINE void lightAtShell(const SkyKernelArgs& a, int j, float maxU) {
     const std::uint64_t* t2 = a.depthPairs + (2 * rows + std::size_t(j)) * na;
     float* r = a.shells + std::size_t(j % kShellSlots) * kShellRecord * nc;
     auto record = [&]<bool kRoots, bool kMargins>() AERIAL_LAMBDA_INLINE {
-        skyShell<kRoots, kMargins>(nc, alpha, beta, ch, scale, a.knee, maxU, t0, t1, t2, a.cosPhi, r, r + nc,
+        skyShell<kRoots, kMargins>(a.litColumns, alpha, beta, ch, scale, a.knee, maxU, t0, t1, t2, a.cosPhi, r, r + nc,
                                    r + 2 * nc, r + 3 * nc, r + 4 * nc, r + 5 * nc, r + 6 * nc, r + 7 * nc,
                                    r + 8 * nc, r + 9 * nc);
     };
@@ -899,7 +899,7 @@ AERIAL_INLINE void skyRow(const SkyKernelArgs& a) {
         // stencil or not.
         auto layer = [&]<bool kStraight, bool kShadow>() AERIAL_LAMBDA_INLINE {
             skyLayer<kStraight, kShadow>(
-                nc, k, a.shadowIn, a.shadowOut, lo, lo + nc, lo + 2 * nc, lo + 3 * nc, lo + 4 * nc,
+                a.litColumns, k, a.shadowIn, a.shadowOut, lo, lo + nc, lo + 2 * nc, lo + 3 * nc, lo + 4 * nc,
                 lo + 5 * nc, lo + 6 * nc, lo + 7 * nc, lo + 8 * nc, up, up + nc, up + 2 * nc, up + 3 * nc,
                 up + 4 * nc, up + 5 * nc, up + 6 * nc, up + 7 * nc, up + 8 * nc, c, c + nc, c + 2 * nc, d,
                 d + nc, d + 2 * nc, lo + 9 * nc, up + 9 * nc, c + 9 * nc, d + 9 * nc, acc, acc + nc,

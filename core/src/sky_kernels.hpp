@@ -198,7 +198,11 @@ constexpr int kShellSlots = 4;
 constexpr int kMsSkyColumns = 16;
 
 struct SkyKernelArgs {
-    int columns;
+    int columns;  // the stride of the records and the accumulators (a multiple of 8)
+    /// Columns whose single scattering is integrated, a multiple of 8 up to
+    /// `columns`: those after it lie in the earth's shadow along the whole
+    /// view ray (it would add +0 there; their accumulators stay 0).
+    int litColumns;
     int layers;
     int angles;
     float knee;

@@ -801,8 +801,21 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
         s.layerLit[std::size_t(l)] = lit;
     }
 
+    // The columns after the last that is lit somewhere along its ray (the
+    // shadow spans the whole ray, every layer overlapped, so that the
+    // kernel would add +0 in each): in a row below the top of the earth's
+    // shadow opposite a light set 1-6 deg, 10-28 of its 65 columns.
+    int litColumns = s.rowColumnCount;
+    const float rayStart = s.layer[0].start, rayEnd = s.layer[std::size_t(layers) - 1].end;
+    bool layersOpen = true;  // every layer of positive length in float (none that the kernel counts lit)
+    for (int l = 0; l < layers; ++l) layersOpen = layersOpen && s.layer[std::size_t(l)].end > s.layer[std::size_t(l)].start;
+    while (layersOpen && litColumns > 0 && s.shadowIn[std::size_t(litColumns) - 1] <= rayStart &&
+           s.shadowOut[std::size_t(litColumns) - 1] >= rayEnd)
+        --litColumns;
+
     SkyKernelArgs k{};
     k.columns = s.rowStride;
+    k.litColumns = std::min((litColumns + 7) / 8 * 8, s.rowStride);
     k.layers = layers;
     k.angles = angles;
     k.knee = float(kAngleKnee);
