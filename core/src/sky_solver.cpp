@@ -63,6 +63,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -236,6 +237,14 @@ private:
 SharedTableCache& sharedTableCache() {
     static SharedTableCache cache;
     return cache;
+}
+
+/// v > 0 ? v : 0 (so never NaN, nor below 0) on the bit pattern: the same
+/// value for every input, in integer operations that GCC vectorises (a float
+/// compare blocks it under -ftrapping-math).
+inline float positiveOrZero(float v) {
+    const std::int32_t b = std::bit_cast<std::int32_t>(v);
+    return std::bit_cast<float>(b > 0 && b <= 0x7f800000 ? b : 0);  // above +inf: NaN
 }
 
 /// (1 - e^-tau) / tau, the mean transmittance across a layer of optical
@@ -936,15 +945,19 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
         const std::size_t n = std::size_t(s.rowStride);
         const float* __restrict from = s.acc.data() + 3 * x * n;
         const int distinct = s.rowColumnCount;
-        for (int i = 0; i < distinct; ++i)
-            for (std::size_t c = 0; c < 3; ++c) {
-                const float v = from[c * n + std::size_t(i)];
-                texel[3 * std::size_t(i) + c] = v > 0.0f ? v : 0.0f;
-            }
-        for (int i = distinct; i < columns; ++i)
-            std::copy_n(texel + 3 * std::size_t(distinct - 1), 3, texel + 3 * std::size_t(i));
-        for (int i = 1; 2 * i < azimuthCount; ++i)
-            std::copy_n(texel + 3 * std::size_t(i), 3, texel + 3 * std::size_t(azimuthCount - i));
+        for (std::size_t i = 0; i < std::size_t(distinct); ++i) {
+            const float r = from[i], g = from[n + i], b = from[2 * n + i];
+            texel[3 * i] = positiveOrZero(r);
+            texel[3 * i + 1] = positiveOrZero(g);
+            texel[3 * i + 2] = positiveOrZero(b);
+        }
+        // (Element by element: std::copy_n of 3 floats is a call to memmove,
+        // 2% of a solve.)
+        auto copyTexel = [texel](std::size_t source, std::size_t to) {
+            for (std::size_t c = 0; c < 3; ++c) texel[3 * to + c] = texel[3 * source + c];
+        };
+        for (int i = distinct; i < columns; ++i) copyTexel(std::size_t(distinct - 1), std::size_t(i));
+        for (int i = 1; 2 * i < azimuthCount; ++i) copyTexel(std::size_t(i), std::size_t(azimuthCount - i));
     }
 }
 
