@@ -563,8 +563,11 @@ TEST(SkyMultiple, RowsBetweenMatchEveryRowIntegrated) {
     };
     double worst = 0.0;
     for (const AtmosphereParams& air : {AtmosphereParams{}, hazy}) {
-        for (double sun : {-6.0, -2.0, -0.5, -0.2, -0.05, -0.005, 0.0, 2.0, 10.0, 45.0, 90.0}) {
-            if (quick() && sun != -0.5 && sun != 10.0) continue;
+        // Down to a light just set, where the cap's rows crowd at the horizon
+        // (2.2% at -0.00002 deg with nodes crowded on one side).
+        for (double sun :
+             {-6.0, -2.0, -0.5, -0.2, -0.05, -0.005, -0.0005, -0.00002, 0.0, 2.0, 10.0, 45.0, 90.0}) {
+            if (quick() && sun != -0.5 && sun != -0.00002 && sun != 10.0) continue;
             const glm::dvec3 light = direction(sun, 23.0);
             between.solve(air, light);
             integrated.solve(air, light);
@@ -586,7 +589,7 @@ TEST(SkyMultiple, RowsBetweenMatchEveryRowIntegrated) {
                                     std::abs(got[c] - refs[n][c]) / std::max(refs[n][c], 0.01 * brightest));
             }
             std::printf(
-                "[ sky ms  ] %s air, sun %+6.3f: rows between against every row integrated, worst %.4f\n",
+                "[ sky ms  ] %s air, sun %+9.5f: rows between against every row integrated, worst %.4f\n",
                 air.mieAnisotropy == hazy.mieAnisotropy ? "hazy_sunset's" : "default", sun, here);
             worst = std::max(worst, here);
             EXPECT_LT(here, 0.004) << "sun " << sun;
