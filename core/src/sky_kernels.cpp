@@ -609,9 +609,9 @@ AERIAL_INLINE void lightAtShell(const SkyKernelArgs& a, int j, float maxU) {
     const std::uint64_t* t2 = a.depthPairs + (2 * rows + std::size_t(j)) * na;
     float* r = a.shells + std::size_t(j % kShellSlots) * kShellRecord * nc;
     auto record = [&]<bool kRoots, bool kMargins>() AERIAL_LAMBDA_INLINE {
-        skyShell<kRoots, kMargins>(a.litColumns, alpha, beta, ch, scale, a.knee, maxU, t0, t1, t2, a.cosPhi, r, r + nc,
-                                   r + 2 * nc, r + 3 * nc, r + 4 * nc, r + 5 * nc, r + 6 * nc, r + 7 * nc,
-                                   r + 8 * nc, r + 9 * nc);
+        skyShell<kRoots, kMargins>(a.litColumns, alpha, beta, ch, scale, a.knee, maxU, t0, t1, t2, a.cosPhi,
+                                   r, r + nc, r + 2 * nc, r + 3 * nc, r + 4 * nc, r + 5 * nc, r + 6 * nc,
+                                   r + 7 * nc, r + 8 * nc, r + 9 * nc);
     };
     if (!kShadowRow)
         record.template operator()<false, false>();

@@ -817,7 +817,8 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
     int litColumns = s.rowColumnCount;
     const float rayStart = s.layer[0].start, rayEnd = s.layer[std::size_t(layers) - 1].end;
     bool layersOpen = true;  // every layer of positive length in float (none that the kernel counts lit)
-    for (int l = 0; l < layers; ++l) layersOpen = layersOpen && s.layer[std::size_t(l)].end > s.layer[std::size_t(l)].start;
+    for (int l = 0; l < layers; ++l)
+        layersOpen = layersOpen && s.layer[std::size_t(l)].end > s.layer[std::size_t(l)].start;
     while (layersOpen && litColumns > 0 && s.shadowIn[std::size_t(litColumns) - 1] <= rayStart &&
            s.shadowOut[std::size_t(litColumns) - 1] >= rayEnd)
         --litColumns;

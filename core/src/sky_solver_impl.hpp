@@ -96,8 +96,8 @@ struct SkySolver::Impl {
     // [3][layers + 1][kMsCosines] resampleShell's output before tablePairs
     // (only its shell's part is read, just after it is written; not shared).
     std::vector<float> psiShell;
-    std::vector<float> anisoShell;        // [kMsAniso * 3][layers + 1][kMsCosines]
-    std::vector<float> viewShell;         // [layers + 1][kMsViews * 3][kMsCosines]
+    std::vector<float> anisoShell;  // [kMsAniso * 3][layers + 1][kMsCosines]
+    std::vector<float> viewShell;   // [layers + 1][kMsViews * 3][kMsCosines]
     // The (sanitized) atmosphere the LUT and the three above were built
     // for, which a drifting atmosphere may reuse (sky_solver.cpp,
     // "Multiple scattering in a drifting atmosphere").
