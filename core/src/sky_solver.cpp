@@ -580,7 +580,9 @@ void SkySolver::Impl::buildDepthRow(int row, Scratch& s) {
 // is solved for its distinct columns only, the first at pi standing for
 // the rest (solveRow copies it), which brings its 65 columns to 64 lanes
 // instead of 72 (every column's integral is its own, so the table is the
-// same to the bit).
+// same to the bit). The lanes past a row's distinct columns hold what an
+// earlier row left there (finite azimuths, shadow spans and stencils); the
+// kernels compute them like padding and nothing reads them back.
 void SkySolver::Impl::rowColumns(double elevation, Scratch& s) const {
     const SkyTable& back = tables[1 - front];
     const bool uniform = !skyTableColumnsWarped(back);
