@@ -176,7 +176,9 @@ std::string columnMappingText() {
         ". For a light just set the " + constantText(kSkyCapOnsetGrowth) +
         " in q2 and the knots x1, x2, x3 blend linearly with the row mapping's m towards " +
         constantText(kSkyCapOnsetGrowthSet) + " and (" + constantText(y1) + ", " + constantText(y2) + ", " +
-        constantText(y3) + ") W / 128 (t then runs between the blended knots)";
+        constantText(y3) +
+        ") W / 128, each rounded to the nearest whole column (t then runs between "
+        "the rounded knots)";
     return "column i = EXR pixel x holds the azimuth relative to the light phi_i = 2 pi i / W rad, measured "
            "from the light's azimuth towards east; the azimuth wraps (column W = column 0) and column i "
            "equals "

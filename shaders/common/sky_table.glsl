@@ -93,7 +93,8 @@ float skyTableQuadraticStep(float u, float a) { return 2.0 * u / (a + sqrt(a * a
 /// (kSkyCapBandScale c)^2 + (kSkyCapBandOnsetScale psiC)^2) through the
 /// knots x = (0, 3, 15, 28, 64) / 128 columns (blended with m towards (0,
 /// 2, 22, 35, 64) / 128 for a light just set, as G towards
-/// kSkyCapOnsetGrowthSet: skyCapShape, m the boost fraction), psi = (0, psiC,
+/// kSkyCapOnsetGrowthSet: skyCapShape, m the boost fraction; the blended
+/// knots rounded to whole columns), psi = (0, psiC,
 /// sqrt((G psiC)^2 + D^2), psiE, pi), psiC = sqrt(max(c - el, 0) / k) the
 /// onset of the lit sky around the cap of the earth's shadow, D =
 /// max(psiC(0) / 2, min(1 deg, kSkyCapBandPerKink c)), G =
@@ -114,9 +115,12 @@ float skyTableColumnAt(float relative, float el, float columns, float c, vec2 ca
     float growth = mix(kSkyCapOnsetGrowth, kSkyCapOnsetGrowthSet, m);
     float bandScale = kSkyCapBandScale * c * kSkyCapBandScale * c +
                       kSkyCapBandOnsetScale * onset * kSkyCapBandOnsetScale * onset;
-    float x1 = mix(kSkyCapInsideShare, kSkyCapInsideShareSet, m) * columns;
-    float x2 = x1 + mix(kSkyCapOnsetShare, kSkyCapOnsetShareSet, m) * columns;
-    float x3 = x2 + kSkyCapNearShare * columns, x4 = 0.5 * columns;
+    // The knots on whole columns (a knot inside a texel put a kink in its
+    // bilinear filter: skyTableColumn in sky_table.cpp).
+    float inside = mix(kSkyCapInsideShare, kSkyCapInsideShareSet, m);
+    float onsetEnd = inside + mix(kSkyCapOnsetShare, kSkyCapOnsetShareSet, m);
+    float x1 = floor(inside * columns + 0.5), x2 = floor(onsetEnd * columns + 0.5);
+    float x3 = floor((onsetEnd + kSkyCapNearShare) * columns + 0.5), x4 = 0.5 * columns;
     float p1 = g * onset + (1.0 - g) * 2.0 * kPi * x1 / columns;
     float p2 = g * length(vec2(growth * onset, band)) + (1.0 - g) * 2.0 * kPi * x2 / columns;
     float p3 = g * end + (1.0 - g) * 2.0 * kPi * x3 / columns;

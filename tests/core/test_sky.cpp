@@ -551,6 +551,58 @@ INSTANTIATE_TEST_SUITE_P(SmallDepressions, SkyShadowOnset,
                          ::testing::Values(-0.3, -0.2, -0.15, -0.1, -0.07, -0.05, -0.03, -0.02, -0.01, -0.005,
                                            -0.002, -0.001, -0.0005, -0.0002, -0.0001, -0.00005, -0.00002));
 
+// The horizon beside the foot of the cap of the earth's shadow of a light
+// 0.005-0.01 deg down, where the column mapping's shares blend towards those
+// of a light just set (skyCapShape): rows 0-4 at quarter rows x 5-11 deg
+// from the anti-light point (0.5 deg apart), where the lit sky beside the
+// cap climbs along the horizon and the band's outer knot and psiE lie.
+// With the blended knots between columns (x = 16.4 and 29.4 at -0.009 deg)
+// the bilinear filter ran straight across the kink of the mapping inside a
+// texel: 2.7% at -0.007 deg, 2.8% at -0.009, 3.3% at -0.0055 (SkyShadowOnset's
+// azimuths jump from 170 to 176 deg and missed it), texels exact to 0.3%.
+class SkyCapFoot : public ::testing::TestWithParam<double> {};
+
+TEST_P(SkyCapFoot, HorizonWithinTwoPercentOfTheExactIntegral) {
+    if (quick()) GTEST_SKIP() << "quick run";
+    const double sun = GetParam();
+    AtmosphereParams air;
+    const glm::dvec3 light = lightAtElevation(sun);
+    const std::unique_ptr<SkySolver> solver = singleScatteringSolver(air, light);
+    const SkyTable& t = solver->table();
+    ASSERT_TRUE(skyTableColumnsWarped(t)) << sun;
+    const double lightAzimuth = reference::azimuthOf(light);
+    double brightest = 0.0;  // towards the light, where the sky is brightest (TexelsAtTheTopOfTheCapAreExact)
+    for (double el : {0.0, 1.0, 2.0})
+        for (double az : {0.0, 10.0, 30.0}) {
+            const glm::dvec3 v = directionFromLight(el, az, lightAzimuth);
+            const glm::dvec3 r =
+                radiance(referenceSkyIntegrals(air, v, light), dot3(v, light), air.mieAnisotropy);
+            brightest = std::max({brightest, r.x, r.y, r.z});
+        }
+    double worst = 0.0, worstEl = 0.0, worstPsi = 0.0;
+    for (int q = 0; q <= 16; ++q) {
+        const double el = skyTableElevation(t, 0.25 * q) / kDeg;
+        for (int k = 0; k <= 12; ++k) {
+            const double psi = 5.0 + 0.5 * k;
+            const glm::dvec3 v = directionFromLight(el, 180.0 - psi, lightAzimuth);
+            const glm::dvec3 exact =
+                radiance(referenceSkyIntegrals(air, v, light), dot3(v, light), air.mieAnisotropy);
+            const glm::dvec3 got = skyRadiance(t, air.mieAnisotropy, v, glm::dvec3(1.0));
+            for (int c = 0; c < 3; ++c) {
+                const double err = std::abs(got[c] - exact[c]) / std::max(exact[c], 0.01 * brightest);
+                if (err > worst) worst = err, worstEl = el, worstPsi = psi;
+            }
+        }
+    }
+    std::printf(
+        "[ sky     ] sun %+.5g deg: worst error %.4f at elevation %.5f deg, %.1f deg from the anti-light "
+        "point\n",
+        sun, worst, worstEl, worstPsi);
+    EXPECT_LT(worst, 0.02);
+}
+
+INSTANTIATE_TEST_SUITE_P(LightsJustSet, SkyCapFoot, ::testing::Values(-0.0055, -0.007, -0.009, -0.0095));
+
 // The texels at the top of the cap of the earth's shadow, straight opposite
 // a light a hundredth of a degree down: there the view ray runs within 1e-7
 // rad of the axis of the planet's shadow cylinder, and the lit sky switches

@@ -132,8 +132,10 @@ TEST_F(SkyVsCpu, SetSunRowMappingMatchesSkyRadiance) {
     // there float rounding of the row alone is relative.
     // And one 0.002 deg below it, whose cap's rows below the kink are
     // logarithmic (skyCapBelowRow) and whose columns have the shares of a
-    // light just set (SkyCapShape), seen also at the cap's top.
-    for (const double depression : {1.5, 0.07, 0.002}) {
+    // light just set (SkyCapShape), seen also at the cap's top. And one
+    // 0.007 deg below it, whose shares are blended halfway and rounded to
+    // whole columns (the knots at x = 2.4, 19.2 and 32.2 otherwise).
+    for (const double depression : {1.5, 0.07, 0.002, 0.007}) {
         const double t = std::tan(depression * kPi / 180.0);
         const glm::dvec3 sun = glm::normalize(glm::dvec3(0.3, -t * std::hypot(0.3, 0.9), -0.9));
         const SkyPair sky = solveSky(AtmosphereParams{}, sun, moonDirection());

@@ -198,7 +198,9 @@
 //     levels off (~100-1000 c), and widens with P (the 2 in its outer knot is kSkyCapOnsetGrowth): lower down
 //     the cap the lit sky ramps up over an azimuth that grows with P. For a light just set (c below 0.01
 //     deg, the boost fraction m of the rows) the shares and G blend towards 2 columns inside the cap, 20 in
-//     the band and G = 6 (SkyCapShape). The knots are mirror-symmetric, so
+//     the band and G = 6 (SkyCapShape), each blended knot x rounded to a whole column (a knot inside a
+//     texel bent the bilinear filter's line in it: 4-8% off between the texels on the horizon 7-8 deg
+//     from the anti-light point of a light 0.006-0.0095 deg down). The knots are mirror-symmetric, so
 //     column i still equals column W - i. The horizon averages then weight row 0 by azimuth;
 //   * texel (i, j) is stored at index (j * azimuthCount + i) * 3 (RGB, float).
 //   Directions below the horizon use row 0.
