@@ -397,6 +397,36 @@ void forLightsJustSet(const AtmosphereParams& air, Check&& check) {
     }
 }
 
+// The worst channel's error of the table's radiance in direction v against
+// the exact single scattering, relative to the exact radiance floored at
+// `floor` (for unit illuminance).
+double flooredError(const SkyTable& t, const AtmosphereParams& air, const glm::dvec3& v,
+                    const glm::dvec3& light, double floor) {
+    const glm::dvec3 exact =
+        radiance(referenceSkyIntegrals(air, v, light), dot3(v, light), air.mieAnisotropy);
+    const glm::dvec3 got = skyRadiance(t, air.mieAnisotropy, v, glm::dvec3(1.0));
+    double worst = 0.0;
+    for (int c = 0; c < 3; ++c)
+        worst = std::max(worst, std::abs(got[c] - exact[c]) / std::max(exact[c], floor));
+    return worst;
+}
+
+// The brightest channel of the exact radiance towards a light at or just
+// below the horizon (0-2 deg up, 0-30 deg from it), where its sky is
+// brightest: the floor of the error metric around the earth's shadow.
+double brightestTowardsTheLight(const AtmosphereParams& air, const glm::dvec3& light) {
+    const double lightAzimuth = reference::azimuthOf(light);
+    double brightest = 0.0;
+    for (double el : {0.0, 1.0, 2.0})
+        for (double az : {0.0, 10.0, 30.0}) {
+            const glm::dvec3 v = directionFromLight(el, az, lightAzimuth);
+            const glm::dvec3 r =
+                radiance(referenceSkyIntegrals(air, v, light), dot3(v, light), air.mieAnisotropy);
+            brightest = std::max({brightest, r.x, r.y, r.z});
+        }
+    return brightest;
+}
+
 class SkyOffTexel : public ::testing::TestWithParam<double> {};
 
 TEST_P(SkyOffTexel, WithinTwoPercentOfTheExactIntegral) {
@@ -511,13 +541,8 @@ TEST_P(SkyShadowOnset, WithinTwoPercentOfTheExactIntegral) {
                               : k <= 112 ? (k - 100) * 0.5
                                          : kink * (1.0 - std::ldexp(1.0, -(k - 111)));
             const glm::dvec3 v = directionFromLight(el, az, lightAzimuth);
-            const glm::dvec3 exact =
-                radiance(referenceSkyIntegrals(air, v, light), dot3(v, light), air.mieAnisotropy);
-            const glm::dvec3 got = skyRadiance(t, air.mieAnisotropy, v, glm::dvec3(1.0));
-            for (int c = 0; c < 3; ++c) {
-                const double err = std::abs(got[c] - exact[c]) / std::max(exact[c], 0.01 * brightest);
-                if (err > worst) worst = err, worstEl = el, worstAz = az;
-            }
+            const double err = flooredError(t, air, v, light, 0.01 * brightest);
+            if (err > worst) worst = err, worstEl = el, worstAz = az;
         }
     }
     // And a denser grid just below the kink, where the lit sky beside the
@@ -531,13 +556,8 @@ TEST_P(SkyShadowOnset, WithinTwoPercentOfTheExactIntegral) {
         const double el = kink * (1.0 - std::pow(2.0, -m / 4.0));
         for (double psi = 0.0005; psi < 8.0; psi *= 1.2) {
             const glm::dvec3 v = directionFromLight(el, 180.0 - psi, lightAzimuth);
-            const glm::dvec3 exact =
-                radiance(referenceSkyIntegrals(air, v, light), dot3(v, light), air.mieAnisotropy);
-            const glm::dvec3 got = skyRadiance(t, air.mieAnisotropy, v, glm::dvec3(1.0));
-            for (int c = 0; c < 3; ++c) {
-                const double err = std::abs(got[c] - exact[c]) / std::max(exact[c], 0.01 * brightest);
-                if (err > worst) worst = err, worstEl = el, worstAz = 180.0 - psi;
-            }
+            const double err = flooredError(t, air, v, light, 0.01 * brightest);
+            if (err > worst) worst = err, worstEl = el, worstAz = 180.0 - psi;
         }
     }
     std::printf(
@@ -571,27 +591,15 @@ TEST_P(SkyCapFoot, HorizonWithinTwoPercentOfTheExactIntegral) {
     const SkyTable& t = solver->table();
     ASSERT_TRUE(skyTableColumnsWarped(t)) << sun;
     const double lightAzimuth = reference::azimuthOf(light);
-    double brightest = 0.0;  // towards the light, where the sky is brightest (TexelsAtTheTopOfTheCapAreExact)
-    for (double el : {0.0, 1.0, 2.0})
-        for (double az : {0.0, 10.0, 30.0}) {
-            const glm::dvec3 v = directionFromLight(el, az, lightAzimuth);
-            const glm::dvec3 r =
-                radiance(referenceSkyIntegrals(air, v, light), dot3(v, light), air.mieAnisotropy);
-            brightest = std::max({brightest, r.x, r.y, r.z});
-        }
+    const double brightest = brightestTowardsTheLight(air, light);
     double worst = 0.0, worstEl = 0.0, worstPsi = 0.0;
     for (int q = 0; q <= 16; ++q) {
         const double el = skyTableElevation(t, 0.25 * q) / kDeg;
         for (int k = 0; k <= 12; ++k) {
             const double psi = 5.0 + 0.5 * k;
             const glm::dvec3 v = directionFromLight(el, 180.0 - psi, lightAzimuth);
-            const glm::dvec3 exact =
-                radiance(referenceSkyIntegrals(air, v, light), dot3(v, light), air.mieAnisotropy);
-            const glm::dvec3 got = skyRadiance(t, air.mieAnisotropy, v, glm::dvec3(1.0));
-            for (int c = 0; c < 3; ++c) {
-                const double err = std::abs(got[c] - exact[c]) / std::max(exact[c], 0.01 * brightest);
-                if (err > worst) worst = err, worstEl = el, worstPsi = psi;
-            }
+            const double err = flooredError(t, air, v, light, 0.01 * brightest);
+            if (err > worst) worst = err, worstEl = el, worstPsi = psi;
         }
     }
     std::printf(
@@ -617,15 +625,7 @@ TEST(SkySolver, TexelsAtTheTopOfTheCapAreExact) {
     AtmosphereParams air;
     forLightsJustSet(air, [&](double sun, const glm::dvec3& light, const SkyTable& t) {
         ASSERT_TRUE(skyTableColumnsWarped(t)) << sun;
-        const double lightAzimuth = reference::azimuthOf(light);
-        double brightest = 0.0;  // towards the light, where the sky is brightest
-        for (double el : {0.0, 1.0, 2.0})
-            for (double az : {0.0, 10.0, 30.0}) {
-                const glm::dvec3 v = directionFromLight(el, az, lightAzimuth);
-                const glm::dvec3 r =
-                    radiance(referenceSkyIntegrals(air, v, light), dot3(v, light), air.mieAnisotropy);
-                brightest = std::max({brightest, r.x, r.y, r.z});
-            }
+        const double brightest = brightestTowardsTheLight(air, light);
         const double c = t.shadowElevation;
         int rows = 0, lit = 0;
         for (int j = 1; j < t.elevationCount; ++j) {
