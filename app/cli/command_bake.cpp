@@ -177,8 +177,8 @@ std::string columnMappingText() {
         " in q2 and the knots x1, x2, x3 blend linearly with the row mapping's m towards " +
         constantText(kSkyCapOnsetGrowthSet) + " and (" + constantText(y1) + ", " + constantText(y2) + ", " +
         constantText(y3) +
-        ") W / 128, each rounded to the nearest whole column (t then runs between "
-        "the rounded knots)";
+        ") W / 128, each rounded to the nearest whole column where that keeps it above the knot before it "
+        "(t then runs between the rounded knots)";
     return "column i = EXR pixel x holds the azimuth relative to the light phi_i = 2 pi i / W rad, measured "
            "from the light's azimuth towards east; the azimuth wraps (column W = column 0) and column i "
            "equals "

@@ -332,7 +332,11 @@ SkySolver::Impl::Impl(const SkySolverDesc& d) : desc(d) {
     layers = desc.layerCount;
     angles = desc.opticalDepthAngles;
     columns = azimuthCount / 2 + 1;
-    paddedColumns = (columns + 7) / 8 * 8;
+    // At least the multiple scattering's azimuths, which the kernels keep in
+    // the same per-column records (a warped row's stride is at least that
+    // many: rowColumns): narrower tables (azimuthCount < 30) overran the
+    // scratch records for a light 0-1 deg down.
+    paddedColumns = (std::max(columns, kMsSkyColumns) + 7) / 8 * 8;
 
     shellHeight.assign(std::size_t(layers) + 1, 0.0);
     horizonCos.assign(std::size_t(layers) + 1, 0.0f);

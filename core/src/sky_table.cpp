@@ -264,9 +264,14 @@ struct ColumnMapping {
         const double end = std::min(2.0 * (foot + wide), 0.75 * kPi);
         const double onset = std::min(std::sqrt(std::max(c - std::max(elevation, 0.0), 0.0) / k), foot);
         bandScale = std::pow(kSkyCapBandScale * c, 2) + std::pow(kSkyCapBandOnsetScale * onset, 2);
-        x[1] = std::round(shape.insideShare * n);
-        x[2] = std::round((shape.insideShare + shape.onsetShare) * n);
-        x[3] = std::round((shape.insideShare + shape.onsetShare + kSkyCapNearShare) * n);
+        // On whole columns where that keeps each knot above the one before
+        // it (tables under ~32 columns keep a knot that rounds onto it).
+        const double share[3] = {shape.insideShare, shape.insideShare + shape.onsetShare,
+                                 shape.insideShare + shape.onsetShare + kSkyCapNearShare};
+        for (int m = 1; m < 4; ++m) {
+            const double whole = std::round(share[m - 1] * n);
+            x[m] = whole > x[m - 1] ? whole : share[m - 1] * n;
+        }
         x[4] = 0.5 * n;
         const double capPsi[5] = {0.0, onset, std::hypot(shape.onsetGrowth * onset, band), end, kPi};
         for (int m = 1; m < 4; ++m) psi[m] = g * capPsi[m] + (1.0 - g) * 2.0 * kPi * x[m] / n;

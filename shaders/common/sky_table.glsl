@@ -86,6 +86,13 @@ float skyTableMappedRow(float elevation, vec3 band, float w, float b, vec2 cap) 
 /// slope a at its start relative to its mean), without cancellation.
 float skyTableQuadraticStep(float u, float a) { return 2.0 * u / (a + sqrt(a * a + 4.0 * (1.0 - a) * u)); }
 
+/// A column knot x on the nearest whole column where that keeps it above the
+/// knot before it.
+float skyTableWholeKnot(float x, float before) {
+    float whole = floor(x + 0.5);
+    return whole > before ? whole : x;
+}
+
 /// The column (0..columns) of an azimuth `relative` [0, 2 pi) from the light
 /// at elevation el (skyTableColumn, core/src/sky_table.cpp): uniform, or
 /// piecewise linear in the azimuth psi from the anti-light point (in
@@ -119,8 +126,10 @@ float skyTableColumnAt(float relative, float el, float columns, float c, vec2 ca
     // bilinear filter: skyTableColumn in sky_table.cpp).
     float inside = mix(kSkyCapInsideShare, kSkyCapInsideShareSet, m);
     float onsetEnd = inside + mix(kSkyCapOnsetShare, kSkyCapOnsetShareSet, m);
-    float x1 = floor(inside * columns + 0.5), x2 = floor(onsetEnd * columns + 0.5);
-    float x3 = floor((onsetEnd + kSkyCapNearShare) * columns + 0.5), x4 = 0.5 * columns;
+    // (where that keeps each above the one before it, as in sky_table.cpp)
+    float x1 = skyTableWholeKnot(inside * columns, 0.0);
+    float x2 = skyTableWholeKnot(onsetEnd * columns, x1);
+    float x3 = skyTableWholeKnot((onsetEnd + kSkyCapNearShare) * columns, x2), x4 = 0.5 * columns;
     float p1 = g * onset + (1.0 - g) * 2.0 * kPi * x1 / columns;
     float p2 = g * length(vec2(growth * onset, band)) + (1.0 - g) * 2.0 * kPi * x2 / columns;
     float p3 = g * end + (1.0 - g) * 2.0 * kPi * x3 / columns;

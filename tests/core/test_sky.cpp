@@ -611,6 +611,36 @@ TEST_P(SkyCapFoot, HorizonWithinTwoPercentOfTheExactIntegral) {
 
 INSTANTIATE_TEST_SUITE_P(LightsJustSet, SkyCapFoot, ::testing::Values(-0.0055, -0.007, -0.009, -0.0095));
 
+// Narrow tables (4-16 columns) for a light just set, whose columns are
+// warped: the solver with its multiple scattering keeps 16 azimuths in the
+// same per-column records, which overran them below 30 columns (a heap
+// overflow in spreadMultiple; a crash at 4-12 columns), and knots rounded
+// onto the one before them made the mapping lose its inverse. Runs in quick
+// runs too (the sanitizers see any overrun). Every texel finite and the
+// column mapping inverted to 1e-9 rad.
+TEST(SkySolver, NarrowTablesForALightJustSet) {
+    AtmosphereParams air;
+    for (int columns : {4, 8, 12, 16})
+        for (double sun : {-0.3, -0.007}) {
+            SkySolverDesc desc;
+            desc.azimuthCount = columns;
+            desc.elevationCount = 8;
+            SkySolver solver(desc);
+            const glm::dvec3 light = lightAtElevation(sun);
+            solver.solve(air, light);
+            const SkyTable& t = solver.table();
+            ASSERT_TRUE(skyTableColumnsWarped(t)) << columns << " " << sun;
+            EXPECT_TRUE(allFinite(t.rayleigh) && allFinite(t.mie) && allFinite(t.multiple))
+                << columns << " " << sun;
+            for (int k = 0; k < 360; ++k) {
+                const double phi = 2.0 * kPi * (k + 0.5) / 360.0;
+                const double col = skyTableColumn(t, phi, 0.001 * kDeg);
+                EXPECT_NEAR(std::remainder(skyTableAzimuth(t, col, 0.001 * kDeg) - phi, 2.0 * kPi), 0.0, 1e-9)
+                    << columns << " columns, sun " << sun << ", azimuth " << phi / kDeg;
+            }
+        }
+}
+
 // The texels at the top of the cap of the earth's shadow, straight opposite
 // a light a hundredth of a degree down: there the view ray runs within 1e-7
 // rad of the axis of the planet's shadow cylinder, and the lit sky switches

@@ -199,9 +199,12 @@ double texelAzimuth(int i, double elevation, const SkyTable& table) {
     const double onsetShare = kSkyCapOnsetShare + boost * (kSkyCapOnsetShareSet - kSkyCapOnsetShare);
     const double growth = kSkyCapOnsetGrowth + boost * (kSkyCapOnsetGrowthSet - kSkyCapOnsetGrowth);
     const double y0 = std::pow(kSkyCapBandScale * c, 2) + std::pow(kSkyCapBandOnsetScale * onset, 2);
-    // The blended knots rounded to whole columns.
-    const double xs[5] = {0.0, std::round(inside * n), std::round((inside + onsetShare) * n),
-                          std::round((inside + onsetShare + kSkyCapNearShare) * n), 0.5 * n};
+    // The blended knots rounded to whole columns, each where that keeps it
+    // above the knot before it.
+    double xs[5] = {0.0, inside * n, (inside + onsetShare) * n, (inside + onsetShare + kSkyCapNearShare) * n,
+                    0.5 * n};
+    for (int m = 1; m <= 3; ++m)
+        if (std::round(xs[m]) > xs[m - 1]) xs[m] = std::round(xs[m]);
     const double cap[5] = {0.0, onset, std::hypot(growth * onset, band),
                            std::min(2.0 * (foot + wide), 0.75 * kPi), kPi};
     const double x = std::abs(i - 0.5 * n);
