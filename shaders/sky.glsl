@@ -134,15 +134,19 @@ vec3 starRadiance(vec3 v) {
 
 // Airglow (core's aerial/night_sky.hpp is the reference and documents the
 // model): kAirglowZenithRadiance times the van Rhijn factor of a shell 90 km
-// up, dimmed like the stars; faded in with them (frame.nightSky).
-const vec3 kAirglowZenithRadiance = vec3(2.6e-5, 3.5e-5, 4.2e-5);
+// up, dimmed like the stars, with kAirglowScatteredFill of what the air
+// scatters out of the line of sight scattered back in. Physical, so always
+// on (by day it is 1e-9 of the sky); frame.nightSky only switches it off
+// with the stars (FrameDesc::stars).
+const vec3 kAirglowZenithRadiance = vec3(1.15 * 4.5e-8, 0.98 * 4.5e-8, 0.75 * 4.5e-8);
 const float kAirglowShell = 6360000.0 / (6360000.0 + 90000.0);  // Rg / (Rg + h)
+const float kAirglowScatteredFill = 0.5;
 
 vec3 airglowRadiance(vec3 v) {
     if (!(frame.nightSky > 0.0) || v.y <= 0.0) return vec3(0.0);
     float vanRhijn = inversesqrt(1.0 - kAirglowShell * kAirglowShell * (1.0 - v.y * v.y));
-    vec3 transmittance = pow(frame.starTransmittance, vec3(airMass(v.y)));
-    return frame.nightSky * kAirglowZenithRadiance * vanRhijn * transmittance;
+    vec3 direct = pow(frame.starTransmittance, vec3(airMass(v.y)));
+    return kAirglowZenithRadiance * vanRhijn * (direct + kAirglowScatteredFill * (1.0 - direct));
 }
 
 void main() {

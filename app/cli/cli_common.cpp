@@ -355,6 +355,13 @@ Json lightToJson(const LightState& light) {
             {"illuminance_rgb", toJson(light.illuminance)}};
 }
 
+Json lightReportToJson(const LightReport& light) {
+    const HorizontalIlluminance& e = light.horizontalIlluminanceLux;
+    return {{"horizontal_illuminance_lux",
+             {{"sun", e.sun}, {"sky", e.sky}, {"moon", e.moon}, {"night", e.night}, {"total", e.total}}},
+            {"zenith_luminance_cd_m2", light.zenithLuminance}};
+}
+
 Json stateToJson(const PresetState& state) {
     Json volumes = Json::array();
     for (const FogVolume& v : state.volumes) volumes.push_back(parametersToJson(v));

@@ -7,6 +7,7 @@
 #include <aerial/evaluate.hpp>
 #include <aerial/fog_query.hpp>
 #include <aerial/param_table.hpp>
+#include <aerial/photometry.hpp>
 #include <aerial/preset.hpp>
 #include <aerial/sky.hpp>
 
@@ -157,6 +158,11 @@ std::string formatParam(const ParamDesc& param, const void* object);
 /// A sun or moon: elevation/azimuth [deg], direction, illuminated fraction,
 /// phase, illuminance above the atmosphere, transmittance, illuminance.
 Json lightToJson(const LightState& light);
+
+/// A LightReport (aerial/photometry.hpp) as `aerial eval --json` prints it:
+/// {"horizontal_illuminance_lux": {"sun", "sky", "moon", "night", "total"},
+///  "zenith_luminance_cd_m2"}.
+Json lightReportToJson(const LightReport& light);
 
 /// The whole evaluated state: time, sun, moon, parameters, volumes,
 /// emitters (with their lightning flash multiplier), cloud volumes.

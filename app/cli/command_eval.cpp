@@ -14,12 +14,17 @@
 //            zenith through east), "phase_irradiance", "illuminance_space_rgb",
 //            "transmittance_rgb", "illuminance_rgb"},
 //    "moon": {...},
+//    "light": {"horizontal_illuminance_lux": {"sun", "sky", "moon", "night",
+//              "total"}, "zenith_luminance_cd_m2"} (aerial/photometry.hpp: the
+//              sky tables solved for this moment, 128 x 64),
 //    "parameters": {every global parameter, nested as in the preset file},
 //    "volumes": [{every volume parameter}], "emitters": [{every emitter
 //    parameter, "flash"}], "cloud_volumes": [{every cloud volume parameter}]}
 // Keyed values are applied; emitter intensities include the lightning flash.
 // Without --json: a readable summary, one parameter per line with its unit.
 #include "cli_common.hpp"
+
+#include <aerial/photometry.hpp>
 
 #include <cstdio>
 #include <memory>
@@ -65,10 +70,14 @@ int runEval(const EvalOptions& options) {
     const std::string name = preset.name;
     const CompiledPreset compiled(std::move(preset));
     const PresetState state = compiled.evaluate(t);
+    SkyTables tables;
+    tables.solve(state);
+    const LightReport light = lightReport(state, tables.sun(), tables.moon());
 
     if (options.json) {
         Json out = {{"preset", {{"file", options.preset}, {"name", name}}}};
         out.update(stateToJson(state));
+        out["light"] = lightReportToJson(light);
         printJson(out);
         return kExitOk;
     }
@@ -76,6 +85,10 @@ int runEval(const EvalOptions& options) {
                 formatTime(state.timeHours).c_str());
     printLight("sun", state.sunLight);
     printLight("moon", state.moonLight);
+    const HorizontalIlluminance& lux = light.horizontalIlluminanceLux;
+    std::printf("light  on the ground %.4g lx (sun %.4g, sky %.4g, moon %.4g, night sky %.4g); "
+                "zenith %.4g cd/m^2\n",
+                lux.total, lux.sun, lux.sky, lux.moon, lux.night, light.zenithLuminance);
     std::printf("\nparameters\n");
     printParameters(ParamScope::Global, state.environment, "  ");
     for (const FogVolume& v : state.volumes) {

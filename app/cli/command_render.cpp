@@ -327,7 +327,7 @@ int runRender(const RenderOptions& options) {
     // The preset's exposure, fully adapted (one frame): manual EV100, or
     // metered from this frame and clamped; --exposure adds to it.
     const ExposureParams& exposure = state.environment.exposure;
-    const double averageLuminance = meterAverageLuminance(image.pixels, image.channels);
+    const double averageLuminance = meterAverageLuminance(image.pixels, image.channels, image.width, image.height);
     const double ev100 = targetEv100(exposure, averageLuminance);
     const double displayEv = std::log2(radianceScale(exposure, ev100)) + exposureEv;
     if (display) display->setExposureEv(displayEv);

@@ -487,7 +487,7 @@ void Editor::layout() {
         ImGui::SetNextWindowPos(ImVec2(w - rightW, menuH));
         ImGui::SetNextWindowSize(ImVec2(rightW, middleH));
         if (beginPanel("Inspector", view_.inspectorCollapsed))
-            drawInspector(doc_, edit_, playback_.timeHours, sky_.state, actions_, status_);
+            drawInspector(doc_, edit_, playback_.timeHours, sky_.state, sky_.light, actions_, status_);
         ImGui::End();
     }
 

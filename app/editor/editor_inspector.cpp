@@ -453,13 +453,15 @@ void drawMeshRow(const FogVolume& v, const ActionTable& actions) {
     ImGui::SameLine();
     ImGui::TextUnformatted(v.mesh.empty() ? "(no file)" : v.mesh.c_str());
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("The glTF file of the volume's closed mesh, relative to the preset's folder; "
-                          "its position, rotation and half extents (as scale) place it");
+        ImGui::SetTooltip(
+            "The glTF file of the volume's closed mesh, relative to the preset's folder; "
+            "its position, rotation and half extents (as scale) place it");
     if (v.meshData)
         ImGui::TextDisabled("%zu triangles, %.3g m^3 before scaling", v.meshData->triangleCount(),
                             v.meshData->enclosedVolume());
     else
-        ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "No mesh: choose a closed glTF mesh (draws nothing)");
+        ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f),
+                           "No mesh: choose a closed glTF mesh (draws nothing)");
 }
 
 }  // namespace
@@ -472,7 +474,7 @@ int keyAllChangedAt(Document& doc, double timeHours) {
 }
 
 void drawInspector(Document& doc, EditState& edit, double timeHours, const PresetState& state,
-                   const ActionTable& actions, std::string& status) {
+                   const LightReport& light, const ActionTable& actions, std::string& status) {
     const Preset& preset = doc.preset();
     ImGui::PushItemWidth(-std::min(190.0f, ImGui::GetWindowWidth() * 0.48f));
     if (ImGui::Button("Key all changed"))
@@ -541,6 +543,12 @@ void drawInspector(Document& doc, EditState& edit, double timeHours, const Prese
                             state.sunLight.body.azimuth * kDegrees);
                 ImGui::Text("Moon elevation %.2f deg, lit %.0f%%", state.moonLight.body.elevation * kDegrees,
                             state.moonLight.body.illuminatedFraction * 100.0);
+                // The light as a meter reads it, to check against the outdoors
+                // (clear noon ~100 000 lx, civil dusk ~3 lx, full moon ~0.25 lx).
+                const HorizontalIlluminance& lux = light.horizontalIlluminanceLux;
+                ImGui::Text("On the ground %.3g lx: sun %.3g, sky %.3g, moon %.3g, night sky %.3g", lux.total,
+                            lux.sun, lux.sky, lux.moon, lux.night);
+                ImGui::Text("Zenith %.3g cd/m^2", light.zenithLuminance);
                 const double rise = sunriseHours(where), set = sunsetHours(where);
                 ImGui::Text("Sunrise %s, noon %s, sunset %s, day %.1f h",
                             formatClock(rise, ClockResolution::Minutes).c_str(),
@@ -616,7 +624,8 @@ void drawInspector(Document& doc, EditState& edit, double timeHours, const Prese
             const bool lightning = emitter && preset.emitters[i].kind == EmitterKind::Lightning;
             for (const ParamDesc& p : paramTable(scope)) {
                 if (p.type == ParamType::String) {  // id and name above; a mesh volume's file
-                    if (scope == ParamScope::Volume && p.path == "mesh") drawMeshRow(preset.volumes[i], actions);
+                    if (scope == ParamScope::Volume && p.path == "mesh")
+                        drawMeshRow(preset.volumes[i], actions);
                     continue;
                 }
                 if (emitter && !lightning && lightningOnly(p.path)) continue;

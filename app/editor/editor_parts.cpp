@@ -93,6 +93,7 @@ bool SkyService::solve() {
     sunSolver->solve(air, sun);
     moonSolver->solve(air, moon);
     solveMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    light = lightReport(state, sunSolver->table(), moonSolver->table());
     solvedAir = air;
     solvedSun = sun;
     solvedMoon = moon;

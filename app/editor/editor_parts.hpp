@@ -33,6 +33,7 @@
 #include "viewport/scene_hits.hpp"
 
 #include <aerial/evaluate.hpp>
+#include <aerial/photometry.hpp>
 #include <aerial/renderer/display.hpp>
 #include <aerial/renderer/renderer.hpp>
 #include <aerial/sky.hpp>
@@ -113,6 +114,9 @@ struct SkyService {
     bool valid = false;
     AtmosphereParams solvedAir{};
     glm::dvec3 solvedSun{0.0}, solvedMoon{0.0};
+    /// The light of the solved moment in lux and cd/m^2 (aerial/photometry.hpp),
+    /// what the Lights panel shows; updated with every solve.
+    LightReport light;
     double solveMs = 0.0;          ///< the last solve [ms]
     std::uint64_t generation = 0;  ///< counts solves (what the sky preview compares)
 

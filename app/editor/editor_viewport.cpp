@@ -159,7 +159,7 @@ void Editor::meterViewport() {
     if (exposure.mode == ExposureMode::Automatic) {
         // Every 4th pixel is plenty for a 64-bin histogram.
         const renderer::Image image = view_.renderer->readColour();
-        average = meterAverageLuminance(image.pixels, image.channels, 4);
+        average = meterAverageLuminance(image.pixels, image.channels, image.width, image.height, 4);
     }
     view_.exposure.meter(exposure, average);
 }
@@ -506,7 +506,7 @@ bool Editor::screenshot(const std::string& path, std::string& error) {
     // The settled exposure of this frame (what the viewport adapts to).
     const ExposureParams& exposure = sky_.state.environment.exposure;
     ViewExposure settled;
-    settled.meter(exposure, meterAverageLuminance(image.pixels, image.channels));
+    settled.meter(exposure, meterAverageLuminance(image.pixels, image.channels, image.width, image.height));
     settled.settle();
     view_.display->setExposureEv(settled.displayEv(exposure, view_.exposureEv));
     const bool ok = extension == ".exr" ? renderer::writeExr(image, path, error)

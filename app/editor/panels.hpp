@@ -32,7 +32,7 @@ void drawSkyPreview(SkyPreview& preview, const SkyService& sky, const ViewportSt
 /// The inspector of the selection, generated from the parameter table;
 /// `state` is the preset evaluated at `timeHours`.
 void drawInspector(Document& doc, EditState& edit, double timeHours, const PresetState& state,
-                   const ActionTable& actions, std::string& status);
+                   const LightReport& light, const ActionTable& actions, std::string& status);
 
 /// The timeline: playback controls, ruler, keys and the selected parameter's curve.
 void drawTimeline(Document& doc, EditState& edit, Playback& playback, const ActionTable& actions,

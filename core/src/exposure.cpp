@@ -7,9 +7,8 @@
 namespace aerial {
 namespace {
 
-constexpr double kMeterCalibration = 12.5;  // K, reflected-light meter
+constexpr double kMeterCalibration = 12.5;  // K, reflected-light meter (ISO 2720)
 constexpr double kIsoSpeed = 100.0;         // S, EV100
-constexpr double kSaturationFactor = 1.2;   // 78 / (q S) * S / 100 with q = 0.65
 
 double positiveOrZero(double x) { return (std::isfinite(x) && x > 0.0) ? x : 0.0; }
 
@@ -29,7 +28,8 @@ double ev100FromAverageLuminance(double averageLuminance) {
 
 double exposureScale(double ev100) {
     const double ev = std::isnan(ev100) ? 0.0 : std::clamp(ev100, -60.0, 60.0);
-    return 1.0 / (kSaturationFactor * std::exp2(ev));
+    // The luminance the meter reads at this EV, L = K 2^EV / S, lands on kMiddleGrey.
+    return kMiddleGrey * kIsoSpeed / (kMeterCalibration * std::exp2(ev));
 }
 
 double adaptEv100(double currentEv100, double targetEv100, double dt, double speedUp, double speedDown) {
@@ -100,6 +100,28 @@ double meterAverageLuminance(std::span<const float> pixels, int channels, std::s
         const std::size_t stride = std::size_t(channels) * std::max<std::size_t>(step, 1);
         for (std::size_t i = 0; i + 2 < pixels.size(); i += stride) {
             histogram.add(luminance({pixels[i], pixels[i + 1], pixels[i + 2]}) * kNitsPerRadianceUnit);
+        }
+    }
+    return histogram.averageLuminance(kMeterLowFraction, kMeterHighFraction) / kNitsPerRadianceUnit;
+}
+
+double meterAverageLuminance(std::span<const float> pixels, int channels, int width, int height,
+                             std::size_t step) {
+    LuminanceHistogram histogram;
+    const std::size_t w = width > 0 ? std::size_t(width) : 0;
+    const std::size_t h = height > 0 ? std::size_t(height) : 0;
+    if (channels < 3 || w == 0 || h == 0 || pixels.size() < w * h * std::size_t(channels))
+        return meterAverageLuminance(pixels, channels, step);
+    const std::size_t s = std::max<std::size_t>(step, 1);
+    const double scale = 1.0 / double(h);  // distances in frame heights, so any aspect meters alike
+    const double spread = 2.0 * kMeterCentreRadius * kMeterCentreRadius;
+    for (std::size_t y = 0; y < h; y += s) {
+        const double dy = (double(y) + 0.5 - kMeterCentreHeight * double(h)) * scale;
+        for (std::size_t x = 0; x < w; x += s) {
+            const double dx = (double(x) + 0.5 - 0.5 * double(w)) * scale;
+            const double weight = kMeterOutsideWeight + std::exp(-(dx * dx + dy * dy) / spread);
+            const float* p = pixels.data() + (y * w + x) * std::size_t(channels);
+            histogram.add(luminance({p[0], p[1], p[2]}) * kNitsPerRadianceUnit, weight);
         }
     }
     return histogram.averageLuminance(kMeterLowFraction, kMeterHighFraction) / kNitsPerRadianceUnit;

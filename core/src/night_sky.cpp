@@ -33,7 +33,10 @@ glm::dvec3 airglowRadiance(const glm::dvec3& v, const glm::dvec3& zenithTransmit
     const double mu = v.y / length;
     const double x = relativeAirMass(mu);
     glm::dvec3 t;
-    for (int c = 0; c < 3; ++c) t[c] = std::pow(unitOrZero(zenithTransmittance[c]), x);
+    for (int c = 0; c < 3; ++c) {
+        const double direct = std::pow(unitOrZero(zenithTransmittance[c]), x);
+        t[c] = direct + kAirglowScatteredFill * (1.0 - direct);
+    }
     return kAirglowZenithRadiance * airglowVanRhijn(mu) * t;
 }
 

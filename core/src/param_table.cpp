@@ -299,9 +299,10 @@ const std::vector<ParamDesc>& globalTable() {
         scalar(
             G, "moon.intensity", "Moon intensity", "", {0, 1e5, 1e-6, 10}, kDefaultMoonIntensity, true, true,
             [](void* o) { return &env(o).moon.intensity; },
-            "Moon intensity at full phase (scaled by the phase law), 0..1e5. Default 0.05 = "
-            "2.5e-3 x the default sun: artistic; the physical full-moon / sun ratio is "
-            "~2.5e-6 (0.00005 here)."),
+            "Moon illuminance above the atmosphere at full phase (scaled by the phase law) "
+            "[5000 lx], 0..1e5. Default 0.00005 = 0.25 lx, the physical moon (2.5e-6 x the "
+            "default sun); the exposure makes a moonlit night readable. Version-1 presets "
+            "held 1000x this and are converted on load."),
         // Global height fog (height_fog.hpp).
         scalar(
             G, "fog.density_per_m", "Fog density", "1/m", {0, 10, 1e-6, 0.1}, 0.0, true, true,

@@ -13,10 +13,10 @@
 #include <aerial/param_table.hpp>
 
 #include <algorithm>
-#include <filesystem>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
 #include <iterator>
 #include <set>
 
@@ -306,6 +306,20 @@ public:
         }
     }
 
+    // Version 1 kept the moon 1000x brighter than the physical moon
+    // (preset.hpp, kVersion1MoonScale); version 2 keeps it physical. A moon
+    // intensity the file gives, and every key of its track, is converted;
+    // one the file leaves out takes version 2's (physical) default.
+    void migrateVersion1(Preset& preset, std::int32_t root) const {
+        const std::int32_t moon = member(root, "moon");
+        if (moon >= 0 && nodes_[std::size_t(moon)].kind == JNode::Object && member(moon, "intensity") >= 0)
+            preset.environment.moon.intensity /= kVersion1MoonScale;
+        for (Track& track : preset.tracks) {
+            if (track.target.scope != ParamScope::Global || track.target.param != "moon.intensity") continue;
+            for (TrackKey& key : track.keys) key.value /= kVersion1MoonScale;
+        }
+    }
+
     static bool isGlobalGroup(sv path) {
         for (const ParamDesc& p : paramTable(ParamScope::Global))
             if (p.path.size() > path.size() && p.path.substr(0, path.size()) == path &&
@@ -452,7 +466,9 @@ public:
         if (!expectKind(root, "", JNode::Object)) return;
         const std::int32_t version = member(root, "version");
         if (version < 0) {
-            error(root, "/version", "missing \"version\" (this library reads version 1)");
+            error(root, "/version",
+                  "missing \"version\" (this library reads versions 1 to " + std::to_string(kPresetVersion) +
+                      ")");
             return;
         }
         const JNode& v = nodes_[std::size_t(version)];
@@ -472,6 +488,7 @@ public:
             error(version, "/version", "unsupported version " + formatDouble(v.asDouble()));
             return;
         }
+        const int fileVersion = int(v.asDouble());
         for (std::int32_t c = nodes_[0].firstChild; c >= 0; c = nodes_[std::size_t(c)].nextSibling) {
             const JNode& n = nodes_[std::size_t(c)];
             const std::string at = pointerJoin("", n.key);
@@ -501,6 +518,7 @@ public:
                 warnUnknown(c, at);
             }
         }
+        if (fileVersion < 2) migrateVersion1(preset, root);
     }
 
     void checkDuplicateKeys() {
@@ -569,7 +587,8 @@ void detail::readPresetTree(sv text, const std::string& file, const std::vector<
         if (reader.errors.empty()) {
             // Mesh volumes: their files, relative to the preset's folder.
             const std::filesystem::path folder = std::filesystem::path(file).parent_path();
-            reader.addValidation(resolveFogMeshes(preset, file.empty() || file[0] == '<' ? "" : folder.string()));
+            reader.addValidation(
+                resolveFogMeshes(preset, file.empty() || file[0] == '<' ? "" : folder.string()));
         }
     }
     reader.finish();

@@ -141,10 +141,10 @@ FrameBlock makeFrameBlock(const Camera& camera, const CameraFrame& view, const P
                   (in.moon.valid && in.moon.table
                        ? skyIrradiance(*in.moon.table, g, colourOf(moon.illuminanceSpace))
                        : glm::dvec3(0.0));
-    // The night sky (stars and airglow) fades in as the sun sets.
+    // The airglow is physical (1e-9 of a day sky), so it is on whenever the
+    // night sky is (sky.glsl gates it the same way).
     const double nightSky = frame.stars ? starVisibility(sun.body.elevation) : 0.0;
-    const glm::dvec3 airglow =
-        nightSky > 0.0 ? nightSky * airglowIrradiance(state.zenithTransmittance) : glm::dvec3(0.0);
+    const glm::dvec3 airglow = nightSky > 0.0 ? airglowIrradiance(state.zenithTransmittance) : glm::dvec3(0.0);
     fb.skyAmbient = toVec3(colourOf(ambient + airglow));
     // Below the cloud deck: the clear sky (and the airglow) through its gaps
     // and the deck's underside (OvercastLight::groundIrradiance).

@@ -26,11 +26,15 @@ TEST(Exposure, MeterAndScaleAreTheClosedForms) {
     EXPECT_NEAR(aerial::ev100FromAverageLuminance(0.0), -37.0, 1e-12);
     EXPECT_NEAR(aerial::ev100FromAverageLuminance(std::nan("")), -37.0, 1e-12);
     for (double l : {1e-6, 0.01, 1.0, 37.0, 1e5}) {
-        // The average luminance lands on K / (1.2 S) whatever the scene.
+        // The metered luminance lands on middle grey whatever the scene.
         const double exposed = l * aerial::exposureScale(aerial::ev100FromAverageLuminance(l));
-        EXPECT_NEAR(exposed, 12.5 / 120.0, 1e-12) << l;
+        EXPECT_NEAR(exposed, 0.18, 1e-12) << l;
     }
-    EXPECT_DOUBLE_EQ(aerial::exposureScale(0.0), 1.0 / 1.2);
+    EXPECT_DOUBLE_EQ(aerial::exposureScale(0.0), 0.18 * 100.0 / 12.5);
+    // Sunny 16 (EV100 15): a grey card (18 %) in 100 000 lx, L = E 0.18 / pi,
+    // renders within a third of a stop of middle grey.
+    const double card = 100000.0 * 0.18 / 3.14159265358979323846;
+    EXPECT_NEAR(std::log2(card * aerial::exposureScale(15.0) / 0.18), 0.0, 0.5);
     EXPECT_TRUE(std::isfinite(aerial::exposureScale(std::numeric_limits<double>::infinity())));
     EXPECT_GT(aerial::exposureScale(-std::numeric_limits<double>::infinity()), 0.0);
 }
@@ -92,20 +96,20 @@ TEST(Exposure, HistogramAverageMatchesTheSortedPixels) {
 }
 
 TEST(Exposure, PresetExposureMetersTheFrameInCandelas) {
-    // A frame of two luminances [radiance units]: 80 % at 0.2, 20 % at 4
-    // (a lamp). The 10-90 % band holds 0.2 with weight 0.7 and 4 with weight
-    // 0.1; bins are half a stop, so within a quarter stop of the geometric
-    // mean of the band. (The histogram ends at 2^16 cd/m^2 = 13 units.)
+    // A frame of two luminances [radiance units]: 50 % at 0.2, 50 % at 4
+    // (a bright sky). The 10-60 % band holds 0.2 with weight 0.4 and 4 with
+    // weight 0.1; bins are half a stop, so within a quarter stop of the
+    // geometric mean of the band. (The histogram ends at 2^16 cd/m^2 = 13 units.)
     std::vector<float> rgba;
     for (int i = 0; i < 1000; ++i) {
-        const float v = i % 5 == 0 ? 4.0f : 0.2f;
+        const float v = i % 2 == 0 ? 4.0f : 0.2f;
         rgba.insert(rgba.end(), {v, v, v, 1.0f});
     }
-    const double band = (0.7 * std::log2(0.2 * 5000.0) + 0.1 * std::log2(4.0 * 5000.0)) / 0.8;
+    const double band = (0.4 * std::log2(0.2 * 5000.0) + 0.1 * std::log2(4.0 * 5000.0)) / 0.5;
     const double average = aerial::meterAverageLuminance(rgba, 4);
     EXPECT_NEAR(std::log2(average * aerial::kNitsPerRadianceUnit), band, 0.25);
-    // Every 5th pixel sees only the lamp: step samples whole pixels.
-    EXPECT_NEAR(std::log2(aerial::meterAverageLuminance(rgba, 4, 5)), 2.0, 0.25);
+    // Every 2nd pixel sees only the sky: step samples whole pixels.
+    EXPECT_NEAR(std::log2(aerial::meterAverageLuminance(rgba, 4, 2)), 2.0, 0.25);
     EXPECT_TRUE(std::isfinite(aerial::meterAverageLuminance({}, 4)));
     EXPECT_TRUE(std::isfinite(aerial::meterAverageLuminance(rgba, 2)));  // not RGB: empty
 
@@ -117,9 +121,32 @@ TEST(Exposure, PresetExposureMetersTheFrameInCandelas) {
     p.mode = aerial::ExposureMode::Manual;
     p.ev100 = 11.0;
     EXPECT_EQ(aerial::targetEv100(p, average), 11.0);
-    // The scale: 5000 cd/m^2 per unit over 1.2 x 2^(EV - compensation).
+    // The scale: 5000 cd/m^2 per unit times 0.18 S / (K 2^(EV - compensation)).
     p.compensationEv = 2.0;
-    EXPECT_NEAR(aerial::radianceScale(p, 11.0), 5000.0 / (1.2 * std::exp2(9.0)), 1e-12);
+    EXPECT_NEAR(aerial::radianceScale(p, 11.0), 5000.0 * 1.44 / std::exp2(9.0), 1e-12);
+}
+
+// A camera's centre-weighted meter: a landscape frame whose top 55 % is a
+// sky 16x brighter than the ground meters near the ground (within half a
+// stop), where the unweighted meter sits almost a stop up; a small bright light
+// (a campfire: 2 % of the frame at 10 000x) does not move it.
+TEST(Exposure, CentreWeightedMeterReadsTheSubjectNotTheSky) {
+    const int w = 64, h = 36;
+    std::vector<float> rgba;
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            const bool fire = std::abs(x - w / 2) < 3 && std::abs(y - 2 * h / 3) < 3;
+            const float v = fire ? 1000.0f : y < h * 55 / 100 ? 1.6f : 0.1f;
+            rgba.insert(rgba.end(), {v, v, v, 1.0f});
+        }
+    }
+    const double weighted = std::log2(aerial::meterAverageLuminance(rgba, 4, w, h) / 0.1);
+    const double plain = std::log2(aerial::meterAverageLuminance(rgba, 4) / 0.1);
+    EXPECT_LT(weighted, 0.5) << weighted;
+    EXPECT_GT(weighted, -0.25) << weighted;
+    EXPECT_GT(plain, weighted + 0.5) << plain;
+    // A size that does not match the pixels falls back to the plain meter.
+    EXPECT_DOUBLE_EQ(aerial::meterAverageLuminance(rgba, 4, w + 1, h), aerial::meterAverageLuminance(rgba, 4));
 }
 
 TEST(Exposure, ThePresetBlockLoadsValidatesAndKeysTheCompensation) {

@@ -2,6 +2,7 @@
 // and an independent quadrature: the van Rhijn factor of a thin shell, the
 // Kasten-Young air mass, and the irradiance as a fine Simpson integral over
 // the elevation angle (not the library's midpoint rule in mu).
+#include <aerial/exposure.hpp>
 #include <aerial/night_sky.hpp>
 
 #include <gtest/gtest.h>
@@ -26,16 +27,21 @@ TEST(NightSky, VanRhijnAndAirMassClosedForms) {
 
 TEST(NightSky, RadianceFollowsTheModelAndIsZeroBelowTheHorizon) {
     const glm::dvec3 t(0.7, 0.8, 0.9);
+    // L0 V(mu) (T + f (1 - T)), T = T_zenith^X(mu).
+    const auto seen = [](double direct) {
+        return direct + aerial::kAirglowScatteredFill * (1.0 - direct);
+    };
     const glm::dvec3 zenith = aerial::airglowRadiance({0.0, 1.0, 0.0}, t);
     for (int c = 0; c < 3; ++c)
         EXPECT_NEAR(zenith[c],
-                    aerial::kAirglowZenithRadiance[c] * std::pow(t[c], aerial::relativeAirMass(1.0)), 1e-18);
+                    aerial::kAirglowZenithRadiance[c] * seen(std::pow(t[c], aerial::relativeAirMass(1.0))),
+                    1e-20);
     const glm::dvec3 low = aerial::airglowRadiance({0.0, 0.2, 0.9798}, t);  // not unit: normalised
     const double mu = 0.2 / std::sqrt(0.04 + 0.9798 * 0.9798);
     EXPECT_NEAR(low.y,
                 aerial::kAirglowZenithRadiance.y * aerial::airglowVanRhijn(mu) *
-                    std::pow(0.8, aerial::relativeAirMass(mu)),
-                1e-15);
+                    seen(std::pow(0.8, aerial::relativeAirMass(mu))),
+                1e-20);
     EXPECT_EQ(aerial::airglowRadiance({0.0, -0.1, 1.0}, t), glm::dvec3(0.0));
     EXPECT_EQ(aerial::airglowRadiance({std::nan(""), 1.0, 0.0}, t), glm::dvec3(0.0));
     const double inf = std::numeric_limits<double>::infinity();
@@ -64,6 +70,29 @@ TEST(NightSky, IrradianceIsTheCosineWeightedIntegral) {
             EXPECT_GT(e.y, kPi * aerial::kAirglowZenithRadiance.y);
         }
     }
+}
+
+// The dark sky as it is measured (Leinert et al. 1998; Benn and Ellison
+// 1998): 21.6-22.0 mag/arcsec^2 in V at the zenith, L = 10.8e4 10^(-0.4 m)
+// cd/m^2 = 1.7-2.5e-4 cd/m^2, through a clear sea-level zenith (T ~ 0.87 in
+// green), and its horizon not an orange band: the colour near the horizon
+// (2 deg up) keeps blue at least half of red, where extinction alone (T^38)
+// leaves 1 %.
+TEST(NightSky, ZenithAsMeasuredAndNoOrangeHorizon) {
+    const glm::dvec3 t(0.905, 0.868, 0.830);  // the default air's zenith transmittance
+    const double nits = aerial::kNitsPerRadianceUnit;
+    const auto y = [](const glm::dvec3& c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; };
+    const double zenith = y(aerial::airglowRadiance({0.0, 1.0, 0.0}, t)) * nits;
+    EXPECT_GE(zenith, 10.8e4 * std::pow(10.0, -0.4 * 22.0)) << zenith;
+    EXPECT_LE(zenith, 10.8e4 * std::pow(10.0, -0.4 * 21.6)) << zenith;
+    const glm::dvec3 low = aerial::airglowRadiance({std::cos(0.035), std::sin(0.035), 0.0}, t);
+    const glm::dvec3 top = aerial::airglowRadiance({0.0, 1.0, 0.0}, t);
+    EXPECT_GT((low.z / low.x) / (top.z / top.x), 0.5);
+    // Starlight and airglow together give 1-2 mlx outdoors; the natural sky
+    // here (airglow, zodiacal light, unresolved stars) gives its share.
+    const double lux = y(aerial::airglowIrradiance(t)) * nits;
+    EXPECT_GE(lux, 0.5e-3) << lux;
+    EXPECT_LE(lux, 2.0e-3) << lux;
 }
 
 }  // namespace

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <map>
 #include <set>
 #include <string>
@@ -268,9 +270,9 @@ TEST(ParamTable, CoversEveryParameterTheIssueLists) {
 TEST(ParamTable, LightDefaults) {
     const aerial::Environment env;
     EXPECT_EQ(env.sun.intensity, 20.0);
-    // The moon's artistic default is documented relative to the sun.
-    EXPECT_NEAR(env.moon.intensity / env.sun.intensity, 2.5e-3, 1e-12);
-    EXPECT_GT(env.moon.intensity / env.sun.intensity, aerial::kPhysicalMoonToSunRatio);
+    // The moon is physical: full moon -12.7 mag against the sun's -26.7,
+    // 10^(-0.4 x 14) = 2.5e-6 of its illuminance.
+    EXPECT_NEAR(env.moon.intensity / env.sun.intensity, std::pow(10.0, -0.4 * 14.0), 0.05e-6);
     const glm::dvec3 e = env.sun.illuminance();
     EXPECT_EQ(e, glm::dvec3(20.0));
 }

@@ -441,6 +441,31 @@ TEST(Preset, MissingFieldsTakeTableDefaults) {
     EXPECT_EQ(r.preset->environment.moon.intensity, aerial::kDefaultMoonIntensity);
 }
 
+// Version 1 kept the moon 1000x brighter than the physical moon; loading it
+// gives version 2's physical values (the intensity and every key of its
+// track), a moon the file leaves out the physical default, and a version-2
+// file is read as written.
+TEST(Preset, VersionOneMoonIsMadePhysical) {
+    const char* v1 = R"({"version": 1, "moon": {"intensity": 0.05},
+        "tracks": [{"param": "moon.intensity", "keys": [{"time_h": 1, "value": 0.04}, {"time_h": 5, "value": 0.08}]}]})";
+    const aerial::PresetLoadResult r = aerial::parsePreset(v1);
+    ASSERT_TRUE(r.ok()) << joinIssues(r.errors);
+    EXPECT_DOUBLE_EQ(r.preset->environment.moon.intensity, 5e-5);
+    ASSERT_EQ(r.preset->tracks.size(), 1u);
+    EXPECT_DOUBLE_EQ(r.preset->tracks[0].keys[0].value.x, 4e-5);
+    EXPECT_DOUBLE_EQ(r.preset->tracks[0].keys[1].value.x, 8e-5);
+    // 0.25 lx at full phase above the atmosphere: Aerial's unit is 5000 lx.
+    EXPECT_NEAR(aerial::kDefaultMoonIntensity * 5000.0, 0.25, 1e-12);
+    const aerial::PresetLoadResult unset = aerial::parsePreset(R"({"version": 1})");
+    ASSERT_TRUE(unset.ok());
+    EXPECT_EQ(unset.preset->environment.moon.intensity, aerial::kDefaultMoonIntensity);
+    const aerial::PresetLoadResult v2 = aerial::parsePreset(R"({"version": 2, "moon": {"intensity": 0.05}})");
+    ASSERT_TRUE(v2.ok());
+    EXPECT_EQ(v2.preset->environment.moon.intensity, 0.05);
+    const aerial::PresetLoadResult v3 = aerial::parsePreset(R"({"version": 3})");
+    EXPECT_FALSE(v3.ok());
+}
+
 TEST(Preset, MangledInputNeverCrashes) {
     // Truncations and byte flips of a valid preset: the loader returns a
     // preset or errors, never crashes, and never a preset with errors.

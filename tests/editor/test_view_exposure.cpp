@@ -68,10 +68,10 @@ TEST(ViewExposure, DisplayStopsAreTheRadianceScaleAndTheOffset) {
     ViewExposure e;
     e.meter(p, luminanceForEv(15.0));
     e.settle();
-    const double expected = std::log2(kNitsPerRadianceUnit / (1.2 * std::exp2(15.0 - 1.5))) - 0.5;
+    const double expected = std::log2(kNitsPerRadianceUnit * 1.44 / std::exp2(15.0 - 1.5)) - 0.5;
     EXPECT_NEAR(e.displayEv(p, -0.5), expected, 1e-12);
-    // The metered average lands on 0.104 x 2^compensation after the scale.
-    EXPECT_NEAR(luminanceForEv(15.0) * std::exp2(e.displayEv(p, 0.0)), 12.5 / 120.0 * std::exp2(1.5), 1e-12);
+    // The metered average lands on middle grey (0.18) x 2^compensation after the scale.
+    EXPECT_NEAR(luminanceForEv(15.0) * std::exp2(e.displayEv(p, 0.0)), 0.18 * std::exp2(1.5), 1e-12);
     EXPECT_TRUE(std::isfinite(e.displayEv(p, std::nan(""))));
 }
 

@@ -17,20 +17,26 @@
 //   double scale = aerial::exposureScale(ev - compensationEv);  // multiplies radiance
 //
 // Formulas (Lagarde and de Rousiers 2014, "Moving Frostbite to Physically
-// Based Rendering", section 4.6; the same in Unreal's and HDRP's cameras):
+// Based Rendering", section 4.6; ISO 2720 and ISO 12232):
 //   * luminance of a linear Rec.709 colour Y = 0.2126 R + 0.7152 G + 0.0722 B;
 //   * the EV100 that exposes an average luminance L to middle grey (reflected-
 //     light meter, calibration K = 12.5, ISO S = 100): EV100 = log2(L S / K);
-//   * the scale from EV100 to the value that saturates the sensor
-//     (saturation-based speed, q = 0.65): H = 1 / (1.2 * 2^EV100), so that a
-//     pixel at the average luminance maps to K / (1.2 S) = 0.104, a middle
-//     grey before the display transform's curve;
+//   * the scale from EV100 to the display transform's scene-linear input, as
+//     a photographer's camera calibrates it (ISO 12232's standard output
+//     sensitivity: the metered luminance is rendered as middle grey):
+//     kMiddleGrey S / (K 2^EV100), so a pixel at the metered luminance maps
+//     to 0.18 and a sunny-16 noon (EV100 15) renders a grey card in full sun
+//     (~5700 cd/m^2) at ~0.25;
 //   * adaptation: an exponential approach to the target at `speed` per
 //     second, faster when the scene gets brighter (a pupil closes faster than
 //     it opens), 1 - exp(-dt * speed) of the gap closed in dt seconds;
-//   * the average of a frame is taken in log2 luminance over a histogram,
-//     between two percentiles (Unreal: 10 % and 90 %), so a small bright sun
-//     or a dark corner does not swing the exposure.
+//   * the meter: centre-weighted, as a camera's (a pixel counts 1 within
+//     ~kMeterCentreRadius frame heights of the centre, kMeterOutsideWeight
+//     at the edges: the bright sky at the top of a landscape frame counts
+//     less, as a photographer would meter the subject); its average is
+//     taken in log2 luminance over a histogram, between two percentiles
+//     (Unreal: 10 % and 90 %), so a small bright sun, a campfire or a dark
+//     corner does not swing the exposure.
 // Units: the physical formulas take luminance in cd/m^2. Aerial's radiance
 // unit is kNitsPerRadianceUnit cd/m^2: the default sun intensity 20 lights
 // the ground like the ~100 000 lx of a clear noon, so one unit of
@@ -58,8 +64,9 @@ double luminance(const glm::dvec3& linearRec709);
 /// luminances are clamped to [2^-40, 2^40] first (so 0 gives -37).
 double ev100FromAverageLuminance(double averageLuminance);
 
-/// Multiplier on radiance for an EV100: 1 / (1.2 * 2^ev100); the EV100 is
-/// clamped to [-60, 60] (NaN counts as 0).
+/// Multiplier on radiance [cd/m^2] for an EV100: kMiddleGrey * 100 / (12.5 *
+/// 2^ev100) = 1.44 / 2^ev100 (see "Formulas"); the EV100 is clamped to
+/// [-60, 60] (NaN counts as 0).
 double exposureScale(double ev100);
 
 /// One adaptation step from `currentEv100` towards `targetEv100` over `dt`
@@ -123,9 +130,19 @@ struct ExposureParams {
     double adaptDownPerSecond = 1.0;
 };
 
+/// Where the metered luminance lands before the display transform: the
+/// scene-linear middle grey, 18 %.
+inline constexpr double kMiddleGrey = 0.18;
+/// The centre weighting of meterAverageLuminance with a frame size: a
+/// pixel's weight is kMeterOutsideWeight + exp(-r^2 / (2 R^2)), r its
+/// distance from the frame's centre in frame heights, R this radius.
+inline constexpr double kMeterCentreRadius = 0.25;
+inline constexpr double kMeterCentreHeight = 0.62;
+inline constexpr double kMeterOutsideWeight = 0.1;
+
 /// The band of the metering histogram that counts (Unreal's defaults).
 inline constexpr double kMeterLowFraction = 0.10;
-inline constexpr double kMeterHighFraction = 0.90;
+inline constexpr double kMeterHighFraction = 0.60;
 
 /// The average luminance [radiance units] of a frame as the automatic
 /// exposure meters it: luminance() of every `step`-th pixel (of `channels`
@@ -133,6 +150,14 @@ inline constexpr double kMeterHighFraction = 0.90;
 /// [-16, 16], averaged between kMeterLowFraction and kMeterHighFraction.
 /// Non-finite pixels count as black; an empty frame gives 2^-16 cd/m^2.
 double meterAverageLuminance(std::span<const float> pixels, int channels, std::size_t step = 1);
+
+/// The same, centre-weighted as a camera meters (kMeterCentreRadius,
+/// kMeterOutsideWeight) over a frame of width x height pixels stored row by
+/// row (either row order: the weight is symmetric); what the editor and
+/// `aerial render` meter with. Falls back to the unweighted meter when the
+/// size does not match the pixels.
+double meterAverageLuminance(std::span<const float> pixels, int channels, int width, int height,
+                             std::size_t step = 1);
 
 /// The EV100 the exposure asks for, before adaptation and compensation:
 /// Manual, p.ev100; Automatic, ev100FromAverageLuminance of the average
@@ -142,7 +167,7 @@ double targetEv100(const ExposureParams& p, double averageLuminance);
 /// What multiplies radiance [units] to give the display transform's
 /// scene-linear input, at this EV100 with the preset's compensation:
 /// kNitsPerRadianceUnit * exposureScale(ev100 - compensationEv). The
-/// metered average lands on 0.104, just under middle grey.
+/// metered average lands on kMiddleGrey.
 double radianceScale(const ExposureParams& p, double ev100);
 
 }  // namespace aerial

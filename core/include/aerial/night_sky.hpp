@@ -8,22 +8,33 @@
 //   glm::dvec3 L = aerial::airglowRadiance(viewDirection, state.zenithTransmittance);
 //   glm::dvec3 E = aerial::airglowIrradiance(state.zenithTransmittance);  // on an upward surface
 //
-// Model:
-//   * the zenith radiance above the atmosphere is the constant
-//     kAirglowZenithRadiance, a documented artistic value: the natural
-//     moonless sky (airglow with the zodiacal light and the unresolved
-//     stars) is ~22 mag/arcsec^2 in V, ~1.7e-4 cd/m^2 (Leinert et al. 1998,
-//     "The 1997 reference of diffuse night sky brightness"); Aerial's
-//     default moon is 1000x the physical moon (preset.hpp), so the airglow
-//     is scaled by the same 1000 to keep a moonlit and a moonless sky in
-//     their real ratio (~16x): 0.17 cd/m^2 = 3.4e-5 radiance units
-//     (aerial/exposure.hpp: 5000 cd/m^2 per unit), slightly blue-green;
+// Model (all physical: radiance in Aerial's unit, 5000 cd/m^2, aerial/exposure.hpp):
+//   * the natural moonless sky (airglow with the zodiacal light and the
+//     unresolved stars) is 21.6-22.0 mag/arcsec^2 in V at the zenith, 1.7-2.5e-4
+//     cd/m^2 (Leinert et al. 1998, "The 1997 reference of diffuse night sky
+//     brightness"; Benn and Ellison 1998, La Palma). kAirglowZenithRadiance,
+//     above the atmosphere, is 2.25e-4 cd/m^2, so the zenith seen through the
+//     default air is 2.1e-4 cd/m^2 (21.8 mag/arcsec^2) and an upward surface
+//     gets ~1.3 mlx (outdoors: 1-2 mlx with the stars);
+//   * its colour is the spectrum integrated with the CIE 1931 observer and
+//     converted to linear Rec.709 with the sun as white, as the sky is: a
+//     solar-like continuum (zodiacal light, starlight) reddened by B-V ~ +0.15
+//     (the dark sky's B-V is ~0.8 against the sun's 0.65) plus the airglow's
+//     lines (O I 557.7 and 630.0 nm, Na D 589 nm): a pale warm grey,
+//     (1.15, 0.98, 0.75) x its luminance;
 //   * a thin emitting shell at kAirglowHeight is seen obliquely towards the
 //     horizon: the van Rhijn factor V(mu) = 1 / sqrt(1 - (Rg / (Rg + h))^2
 //     (1 - mu^2)) (x6 at the horizon for h = 90 km), mu the view's sine of
 //     elevation (the viewer at the ground, Rg = 6360 km);
-//   * the lower atmosphere dims it like the stars: T_zenith^X(mu), X the
-//     Kasten-Young (1989) relative air mass;
+//   * the lower atmosphere dims it like the stars, T = T_zenith^X(mu) with X
+//     the Kasten-Young (1989) relative air mass, but the shell lights the
+//     whole sky, so air that scatters its light out of a line of sight also
+//     scatters the rest of the shell's light into it: a uniform source seen
+//     through a scattering layer keeps much of its radiance (Garstang 1989,
+//     "Night-sky brightness at observatories and sites"; the horizon is not
+//     reddened into an orange band). Of the extinguished share, the fraction
+//     kAirglowScatteredFill comes back in the source's colour:
+//     L = L0 V(mu) (T + f (1 - T));
 //   * nothing below the horizon.
 #pragma once
 
@@ -31,10 +42,14 @@
 
 namespace aerial {
 
-/// Airglow radiance at the zenith above the atmosphere [radiance units], RGB.
-inline constexpr glm::dvec3 kAirglowZenithRadiance{2.6e-5, 3.5e-5, 4.2e-5};
+/// Airglow radiance at the zenith above the atmosphere [radiance units], RGB:
+/// 2.25e-4 cd/m^2 of luminance in the colour above (see the header).
+inline constexpr glm::dvec3 kAirglowZenithRadiance{1.15 * 4.5e-8, 0.98 * 4.5e-8, 0.75 * 4.5e-8};
 /// Height of the emitting layer [m].
 inline constexpr double kAirglowHeight = 90000.0;
+/// Share of the airglow scattered out of a line of sight that the rest of
+/// the shell scatters back into it (see the header), 0..1.
+inline constexpr double kAirglowScatteredFill = 0.5;
 
 /// Kasten and Young (1989) relative optical air mass for a direction of
 /// sine of elevation mu (1 at the zenith, ~38 at the horizon; mu clamped to
@@ -47,7 +62,8 @@ double relativeAirMass(double mu);
 double airglowVanRhijn(double mu);
 
 /// Airglow radiance seen along a unit view direction (world, +Y up):
-/// kAirglowZenithRadiance V(mu) T_zenith^X(mu); 0 below the horizon.
+/// kAirglowZenithRadiance V(mu) (T + f (1 - T)), T = T_zenith^X(mu), f =
+/// kAirglowScatteredFill; 0 below the horizon.
 glm::dvec3 airglowRadiance(const glm::dvec3& viewDirection, const glm::dvec3& zenithTransmittance);
 
 /// Irradiance of the airglow on an upward surface, integral of

@@ -65,20 +65,26 @@
 namespace aerial {
 
 /// The preset file format this library writes and the newest it reads.
-constexpr int kPresetVersion = 1;
+/// Version 2: the moon's intensity is physical (version 1's is converted
+/// on load: divided by kVersion1MoonScale).
+constexpr int kPresetVersion = 2;
 
-/// Default sun intensity (dimensionless scale of the renderer's radiance
-/// unit): 20, as in common Nishita implementations (e.g. the GPU Gems 2 /
-/// scratchapixel skies), so a daylight sky lands near 1 after exposure.
+/// Default sun intensity [illuminance unit = 5000 lx, aerial/exposure.hpp]:
+/// 20, the ~100 000 lx of a clear noon above the atmosphere's losses.
 constexpr double kDefaultSunIntensity = 20.0;
-/// Physical ratio of full-moon to sun illuminance at the ground, ~0.25 lx
-/// / ~100 000 lx = 2.5e-6. Documented for reference; not used as default.
+/// Ratio of the full moon's illuminance to the sun's, both above the
+/// atmosphere: ~0.25 lx / ~100 000 lx = 2.5e-6 (the full moon is
+/// magnitude -12.7 against the sun's -26.7; Krisciunas and Schaefer 1991).
 constexpr double kPhysicalMoonToSunRatio = 2.5e-6;
-/// Default moon intensity at full phase: an artistic 0.05 = 2.5e-3 of the
-/// default sun (1000x the physical ratio), so moonlit scenes read without
-/// a separate night exposure. Set it to kDefaultSunIntensity *
-/// kPhysicalMoonToSunRatio (5e-5) for a physical moon.
-constexpr double kDefaultMoonIntensity = 0.05;
+/// Default moon intensity at full phase: the physical moon, 5e-5 of the
+/// illuminance unit = 0.25 lx at the zenith above the atmosphere (a high
+/// full moon gives 0.1-0.3 lx on the ground). How bright a moonlit night
+/// reads is the exposure's job (a camera at EV100 -3 sees a moonlit
+/// landscape), not the moon's.
+constexpr double kDefaultMoonIntensity = kDefaultSunIntensity * kPhysicalMoonToSunRatio;
+/// Version-1 presets kept the moon at 1000x the physical ratio (0.05 by
+/// default); loading one divides its moon intensity and keys by this.
+constexpr double kVersion1MoonScale = 1000.0;
 
 /// A sun or moon as the preset describes it, above the atmosphere.
 /// Illuminance (RGB) = colour * intensity; the moon's is further scaled by
@@ -98,7 +104,7 @@ struct Environment {
     Location location;
     AtmosphereParams atmosphere;
     LightParams sun;
-    /// Artistic moon default: slightly cool, kDefaultMoonIntensity.
+    /// The physical moon, slightly cool: kDefaultMoonIntensity.
     LightParams moon{glm::dvec3(0.85, 0.92, 1.0), kDefaultMoonIntensity};
     HeightFogParams fog;
     /// Where the global fog's in-scattered colour comes from.
