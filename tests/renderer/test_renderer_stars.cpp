@@ -7,6 +7,7 @@
 #include "gl_fixture.hpp"
 
 #include <aerial/atmosphere.hpp>
+#include <aerial/clouds.hpp>
 #include <aerial/evaluate.hpp>
 #include <aerial/exposure.hpp>
 #include <aerial/night_sky.hpp>
@@ -314,6 +315,73 @@ TEST_F(Stars, EveryPixelMatchesTheCpuCopy) {
     EXPECT_GE(starPixels, 12);
     EXPECT_GE(fadingViews, 1);
     EXPECT_LE(worst, 1e-3);
+}
+
+// Stars behind a cloud: the cloud pass draws over the sky as L T + S
+// (cloud_pass.cpp), so a star there keeps T of its radiance. A thin, still
+// deck (wind 0) at two instants 72 s apart: the clouds and the airglow are
+// the same, the stars moved by ~2 pixels, so the difference of the frames
+// is T (stars(t1) - stars(t2)); against the CPU copy times the cloud pass's
+// transmittance output T, within 5 % of each pixel's difference where the
+// cloud passes 5-95 % (the lit march refines its steps; the transmittance
+// mode does not), on at least 5 such star pixels.
+TEST_F(Stars, BehindACloudTheyKeepItsTransmittance) {
+    renderer::Renderer r(rendererDesc());
+    ASSERT_TRUE(r.valid()) << r.error();
+    const double fov = 0.2;
+    const double sigma = std::min(0.6 * fov / kStarsHeight, 0.0015);
+    auto cloudy = [](double t) {
+        PresetState air = night(t);
+        CloudParams& c = air.environment.clouds;
+        c.coverage = 1.0;
+        c.densityPerM = 1e-3;
+        c.windMPerS = glm::dvec2(0.0);
+        return air;
+    };
+    const double t1 = 1.0, t2 = 1.0 + 0.02;
+    const StarSky air1 = starSky(cloudy(t1)), air2 = starSky(cloudy(t2));
+    const double peak = air1.starIlluminance / (kTwoPi * sigma * sigma);
+    const StarViews views = starViews(air1, fieldStars());
+    int partly = 0;
+    double worst = 0.0, meanT = 0.0;
+    ASSERT_GE(views.count, 2u);
+    renderer::FrameDesc f;
+    f.sunDiscRadius = f.moonDiscRadius = 0.0;
+    f.width = kStarsWidth;
+    f.height = kStarsHeight;
+    f.precision = renderer::ColourPrecision::Float;
+    f.cloudSteps = 16;
+    f.passes.scene = f.passes.globalFog = f.passes.volumes = false;
+    f.passes.emitters = f.passes.transparent = f.passes.particles = false;
+    {
+        const renderer::Camera cam = camera(glm::normalize(views.look[1]), fov);  // the brightest star shown
+        r.render(cam, cloudy(t1), f);
+        const renderer::Image a = r.readColour();
+        r.render(cam, cloudy(t2), f);
+        const renderer::Image b = r.readColour();
+        f.passes.sky = false;
+        f.cloudOutput = renderer::CloudOutput::Transmittance;
+        r.render(cam, cloudy(t1), f);
+        const renderer::Image transmittance = r.readColour();
+        const renderer::CameraFrame cf = renderer::cameraFrame(cam);
+        for (int y = 0; y < kStarsHeight; ++y) {
+            for (int x = 0; x < kStarsWidth; ++x) {
+                const glm::dvec3 v = glm::normalize(renderer::farRayAtPixel(cf, x, y, kStarsWidth, kStarsHeight));
+                const glm::dvec3 airglow = airglowRadiance(v, air1.zenithTransmittance);
+                const double cpu = starRadiance(v, air1, sigma, airglow).g - starRadiance(v, air2, sigma, airglow).g;
+                const double t = transmittance.at(x, y, 0);
+                if (std::abs(cpu) < 1e-2 * peak || t < 0.05 || t > 0.95) continue;
+                const double gpu = double(a.at(x, y, 1)) - double(b.at(x, y, 1));
+                worst = std::max(worst, std::abs(gpu - t * cpu) / std::abs(cpu));
+                meanT += t;
+                ++partly;
+            }
+        }
+    }
+    std::printf("stars behind the deck: %d pixels (mean T %.2f), worst |GPU - T CPU| = %.3f of the star\n", partly,
+                partly > 0 ? meanT / partly : 0.0, worst);
+    EXPECT_GE(partly, 5);
+    EXPECT_LE(worst, 0.05);
 }
 
 // The Kasten-Young dimming T_zenith^X(z) against core's exact slant
