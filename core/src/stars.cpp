@@ -44,12 +44,15 @@ double limitingMagnitude(double backgroundNits) {
     return std::max(starMagnitudeFromIlluminance(thresholdLux), kNoStarMagnitude);
 }
 
-double extinctedMagnitude(double magnitude, double zenithTransmittanceV, double mu, double cloudTransmittance) {
-    if (!std::isfinite(magnitude) || !(mu > 0.0) || !(zenithTransmittanceV > 0.0) || !(cloudTransmittance > 0.0))
+double extinctedMagnitude(double magnitude, double zenithTransmittanceV, double mu,
+                          double cloudTransmittance) {
+    if (!std::isfinite(magnitude) || !(mu > 0.0) || !(zenithTransmittanceV > 0.0) ||
+        !(cloudTransmittance > 0.0))
         return kHiddenStarMagnitude;
     const double t = std::min(zenithTransmittanceV, 1.0);
     const double cloud = std::min(cloudTransmittance, 1.0);
-    const double seen = magnitude - 2.5 * (relativeAirMass(std::min(mu, 1.0)) * std::log10(t) + std::log10(cloud));
+    const double seen =
+        magnitude - 2.5 * (relativeAirMass(std::min(mu, 1.0)) * std::log10(t) + std::log10(cloud));
     return std::isfinite(seen) ? std::min(seen, kHiddenStarMagnitude) : kHiddenStarMagnitude;
 }
 

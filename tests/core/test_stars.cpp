@@ -80,7 +80,8 @@ TEST(Stars, ExtinctionCloudsAndFade) {
     const double mu30 = 0.5;
     EXPECT_NEAR(aerial::extinctedMagnitude(3.0, 0.8, mu30),
                 3.0 - 2.5 * aerial::relativeAirMass(mu30) * std::log10(0.8), 1e-12);
-    EXPECT_NEAR(aerial::extinctedMagnitude(3.0, 0.8, 1.0, 0.1) - aerial::extinctedMagnitude(3.0, 0.8, 1.0), 2.5,
+    EXPECT_NEAR(aerial::extinctedMagnitude(3.0, 0.8, 1.0, 0.1) - aerial::extinctedMagnitude(3.0, 0.8, 1.0),
+                2.5,
                 1e-12);  // a cloud of optical depth ln 10
     EXPECT_EQ(aerial::extinctedMagnitude(3.0, 0.8, -0.1), aerial::kHiddenStarMagnitude);
     EXPECT_EQ(aerial::extinctedMagnitude(3.0, 0.8, 1.0, 0.0), aerial::kHiddenStarMagnitude);
@@ -117,7 +118,8 @@ TEST(Stars, FieldCountsFollowTheRealSky) {
 class StarsOverClearSummerDay : public ::testing::Test {
 protected:
     static aerial::CompiledPreset dated(const char* date) {
-        aerial::PresetLoadResult loaded = aerial::loadPreset(AERIAL_SOURCE_DIR "/presets/clear_summer_day.json");
+        aerial::PresetLoadResult loaded =
+            aerial::loadPreset(AERIAL_SOURCE_DIR "/presets/clear_summer_day.json");
         EXPECT_TRUE(loaded.ok());
         aerial::Preset preset = loaded.ok() ? *loaded.preset : aerial::Preset{};
         preset.environment.location.date = date;
@@ -145,9 +147,10 @@ protected:
         }
         double nits(const glm::dvec3& v) const {
             const double g = state.environment.atmosphere.mieAnisotropy;
-            const glm::dvec3 radiance = aerial::skyRadiance(sun.table(), g, v, state.sunLight.illuminanceSpace) +
-                                        aerial::skyRadiance(moon.table(), g, v, state.moonLight.illuminanceSpace) +
-                                        aerial::airglowRadiance(v, state.zenithTransmittance);
+            const glm::dvec3 radiance =
+                aerial::skyRadiance(sun.table(), g, v, state.sunLight.illuminanceSpace) +
+                aerial::skyRadiance(moon.table(), g, v, state.moonLight.illuminanceSpace) +
+                aerial::airglowRadiance(v, state.zenithTransmittance);
             return aerial::luminance(radiance) * aerial::kNitsPerRadianceUnit;
         }
         /// The faintest magnitude above the atmosphere seen towards v.
@@ -196,8 +199,8 @@ TEST_F(StarsOverClearSummerDay, MoonlessNightShowsSixthMagnitudeAndTheMoonFewer)
     const Sky moonless(dark);
     const double zenithDark = moonless.limit({0.0, 1.0, 0.0});
     std::printf("new moon: zenith %.3g cd/m^2 (%.2f mag/arcsec^2), limiting magnitude %.2f\n",
-                moonless.nits({0.0, 1.0, 0.0}), aerial::skyBrightnessFromLuminance(moonless.nits({0.0, 1.0, 0.0})),
-                zenithDark);
+                moonless.nits({0.0, 1.0, 0.0}),
+                aerial::skyBrightnessFromLuminance(moonless.nits({0.0, 1.0, 0.0})), zenithDark);
     EXPECT_GE(zenithDark, 5.5);
 
     const aerial::CompiledPreset fullMoon = dated("2025-06-11");

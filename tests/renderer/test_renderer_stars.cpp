@@ -110,7 +110,8 @@ glm::dvec3 worldFromCelestial(const CelestialFrame& f, const glm::dvec3& c) {
 
 /// How much of a star of magnitude m shows towards v (above the horizon)
 /// against the sky radiance `background` there: sky.glsl's fade.
-double shownFraction(double magnitude, const glm::dvec3& v, const StarSky& air, const glm::dvec3& background) {
+double shownFraction(double magnitude, const glm::dvec3& v, const StarSky& air,
+                     const glm::dvec3& background) {
     const double nits = luminance(background) * kNitsPerRadianceUnit;
     return starThresholdFade(extinctedMagnitude(magnitude, air.zenithTransmittance.y, v.y),
                              limitingMagnitude(nits));
@@ -201,7 +202,7 @@ protected:
         PresetState air;
         air.sunLight.illuminance = air.sunLight.illuminanceSpace = glm::dvec3(0.0);
         air.moonLight.illuminance = air.moonLight.illuminanceSpace = glm::dvec3(0.0);
-        air.sunLight.body.elevation = -0.5;  // below -10 deg: every star (kStarIlluminance)
+        air.sunLight.body.elevation = -0.5;  // below -10 deg: the airglow at full strength
         air.environment.fog.density = 0.0;
         air.environment.location = Location{};
         air.timeHours = timeHours;  // the celestial frame: celestialFrame(Location{}, timeHours)
@@ -249,7 +250,8 @@ StarViews starViews(const StarSky& air, const std::vector<FieldStar>& field) {
     for (const FieldStar& s : field) {
         const glm::dvec3 v = worldFromCelestial(air.celestial, s.celestial);
         if (v.y < std::sin(5.0 * kTwoPi / 360.0)) continue;
-        const double f = shownFraction(s.magnitude, v, air, air.nightSky * airglowRadiance(v, air.zenithTransmittance));
+        const double f =
+            shownFraction(s.magnitude, v, air, air.nightSky * airglowRadiance(v, air.zenithTransmittance));
         if (f > 0.0) shown.push_back({s.magnitude, v});
         if (f > 0.0 && f < 1.0 && std::abs(f - 0.5) < nearestHalf) {
             nearestHalf = std::abs(f - 0.5);
@@ -257,7 +259,8 @@ StarViews starViews(const StarSky& air, const std::vector<FieldStar>& field) {
         }
     }
     std::sort(shown.begin(), shown.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-    for (std::size_t k = 0; k < std::min<std::size_t>(3, shown.size()); ++k) views.look[views.count++] = shown[k].second;
+    for (std::size_t k = 0; k < std::min<std::size_t>(3, shown.size()); ++k)
+        views.look[views.count++] = shown[k].second;
     if (nearestHalf < 0.5) {
         views.look[views.count++] = fading;
         views.fading = true;
@@ -309,9 +312,10 @@ TEST_F(Stars, EveryPixelMatchesTheCpuCopy) {
             }
         }
     }
-    std::printf("stars: %d pixels above 0.1%% of the peak (%d views of a fading star); worst |GPU - CPU| = "
-                "%.2e of the peak\n",
-                starPixels, fadingViews, worst);
+    std::printf(
+        "stars: %d pixels above 0.1%% of the peak (%d views of a fading star); worst |GPU - CPU| = "
+        "%.2e of the peak\n",
+        starPixels, fadingViews, worst);
     EXPECT_GE(starPixels, 12);
     EXPECT_GE(fadingViews, 1);
     EXPECT_LE(worst, 1e-3);
@@ -366,9 +370,11 @@ TEST_F(Stars, BehindACloudTheyKeepItsTransmittance) {
         const renderer::CameraFrame cf = renderer::cameraFrame(cam);
         for (int y = 0; y < kStarsHeight; ++y) {
             for (int x = 0; x < kStarsWidth; ++x) {
-                const glm::dvec3 v = glm::normalize(renderer::farRayAtPixel(cf, x, y, kStarsWidth, kStarsHeight));
+                const glm::dvec3 v =
+                    glm::normalize(renderer::farRayAtPixel(cf, x, y, kStarsWidth, kStarsHeight));
                 const glm::dvec3 airglow = airglowRadiance(v, air1.zenithTransmittance);
-                const double cpu = starRadiance(v, air1, sigma, airglow).g - starRadiance(v, air2, sigma, airglow).g;
+                const double cpu =
+                    starRadiance(v, air1, sigma, airglow).g - starRadiance(v, air2, sigma, airglow).g;
                 const double t = transmittance.at(x, y, 0);
                 if (std::abs(cpu) < 1e-2 * peak || t < 0.05 || t > 0.95) continue;
                 const double gpu = double(a.at(x, y, 1)) - double(b.at(x, y, 1));
@@ -378,8 +384,8 @@ TEST_F(Stars, BehindACloudTheyKeepItsTransmittance) {
             }
         }
     }
-    std::printf("stars behind the deck: %d pixels (mean T %.2f), worst |GPU - T CPU| = %.3f of the star\n", partly,
-                partly > 0 ? meanT / partly : 0.0, worst);
+    std::printf("stars behind the deck: %d pixels (mean T %.2f), worst |GPU - T CPU| = %.3f of the star\n",
+                partly, partly > 0 ? meanT / partly : 0.0, worst);
     EXPECT_GE(partly, 5);
     EXPECT_LE(worst, 0.05);
 }
@@ -458,13 +464,14 @@ TEST(StarsField, CountsFollowTheModel) {
     const std::vector<FieldStar> field = fieldStars();
     for (double m : {1.0, 3.0, 5.0, 6.0, 6.5}) {
         const double expected = starFieldCount(m);
-        const auto n = std::count_if(field.begin(), field.end(), [m](const FieldStar& s) { return s.magnitude < m; });
+        const auto n =
+            std::count_if(field.begin(), field.end(), [m](const FieldStar& s) { return s.magnitude < m; });
         std::printf("field: %ld stars brighter than %.1f (expected %.0f)\n", long(n), m, expected);
         EXPECT_NEAR(double(n), expected, 4.0 * std::sqrt(expected) + 1.0) << m;
     }
-    const auto brightest = std::min_element(field.begin(), field.end(), [](const FieldStar& a, const FieldStar& b) {
-        return a.magnitude < b.magnitude;
-    });
+    const auto brightest =
+        std::min_element(field.begin(), field.end(),
+                         [](const FieldStar& a, const FieldStar& b) { return a.magnitude < b.magnitude; });
     ASSERT_NE(brightest, field.end());
     EXPECT_LT(brightest->magnitude, -0.5);  // ~1 star at -1.5 expected
 }
