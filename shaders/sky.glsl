@@ -23,15 +23,27 @@
 //   pole with sidereal time. The sphere is cut into kStarColumns x kStarRows
 //   equal-area cells in (right ascension, sin declination); a cell holds a
 //   star with probability kStarProbability, at a hashed place in the middle
-//   70 % of the cell (~8400 stars, half above the horizon), with relative flux u^kStarFluxExponent (u uniform: many
-//   faint, few bright) and a hashed tint. Each star is a Gaussian of radius
-//   sigma (0.6 pixel, at most 0.0015 rad: frame_block.hpp) normalised to its flux, E_star / (2 pi sigma^2)
-//   at the centre, summed over the pixel's cell and its 8 neighbours
-//   (stars within a few cells of the pole, where cells are narrow, can be cut off), and dimmed by
-//   T_zenith^X(z) with the Kasten-Young air mass X (within 2 % of the exact
-//   slant transmittance above 10 deg elevation); none below the horizon.
-//   tests/renderer/test_renderer_stars.cpp holds a CPU copy of this
-//   function and compares every pixel.
+//   70 % of the cell (~8400 stars, half above the horizon), with a hashed
+//   tint and the V magnitude m = max(-1.5, 6.5 + 2 log10(1 - u)) of a uniform
+//   hash u, so the counts follow the real sky's (aerial/stars.hpp,
+//   starFieldMagnitude: ~15 stars brighter than 1, ~4700 than 6). Its flux is
+//   frame.starIlluminance (the -1.5 star's illuminance) x 10^(-0.4 (m + 1.5)).
+//   Each star is a Gaussian of radius sigma (0.6 pixel, at most 0.0015 rad:
+//   frame_block.hpp) normalised to its flux, E_star / (2 pi sigma^2) at the
+//   centre, summed over the pixel's cell and its 8 neighbours (stars within a
+//   few cells of the pole, where cells are narrow, can be cut off), and
+//   dimmed by T_zenith^X(z) with the Kasten-Young air mass X (within 2 % of
+//   the exact slant transmittance above 10 deg elevation); none below the
+//   horizon. A star shows as a person would see it: its magnitude after the
+//   extinction, m - 2.5 X log10(T_zenith.g) (V ~ green), against the
+//   naked-eye limiting magnitude of the pixel's sky (the sun's and moon's
+//   sky and the airglow, luminance x frame.starNitsPerUnit cd/m^2; Hecht's
+//   law with Schaefer 1990's night constants, aerial/stars.hpp,
+//   limitingMagnitude: frame.starDarkLimit - 5 log10(1 + sqrt(K B))), faded
+//   over 0.5 mag across the limit (starThresholdFade). Clouds are drawn over
+//   the sky later and pass it (stars included) on through their
+//   transmittance. tests/renderer/test_renderer_stars.cpp holds a CPU copy
+//   of this function and compares every pixel.
 //
 // Table mapping and lookup: common/sky_table.glsl.
 #include "common/frame.glsl"
@@ -97,9 +109,33 @@ float airMass(float mu) {
     return 1.0 / (mu + 0.50572 * pow(96.07995 - zenithDeg, -1.6364));
 }
 
-vec3 starRadiance(vec3 v) {
+// Hecht's law (aerial/stars.hpp): K = 10^-1.9 per nanolambert, 1 nL =
+// 1e-5 / pi cd/m^2; the field's brightest and faintest magnitudes.
+const float kHechtK = 0.0125892541;
+const float kNitsPerNanolambert = 3.18309886e-6;
+const float kStarBrightest = -1.5;
+const float kStarFaintest = 6.5;
+const float kStarFade = 0.5;
+const float kLog10Of2 = 0.30102999566;
+
+/// Naked-eye limiting magnitude (V, at the eye) against a sky of radiance
+/// `background` (stars.hpp, limitingMagnitude).
+float starLimitingMagnitude(vec3 background) {
+    float nits = max(dot(background, vec3(0.2126, 0.7152, 0.0722)), 0.0) * frame.starNitsPerUnit;
+    return frame.starDarkLimit - 5.0 * kLog10Of2 * log2(1.0 + sqrt(kHechtK * nits / kNitsPerNanolambert));
+}
+
+/// The stars towards v seen against the sky radiance `background` there.
+vec3 starRadiance(vec3 v, vec3 background) {
     float illuminance = frame.starIlluminance;
-    if (!(illuminance > 0.0) || v.y <= 0.0) return vec3(0.0);
+    if (!(illuminance > 0.0) || v.y <= 0.0 || !(frame.starTransmittance.g > 0.0)) return vec3(0.0);
+    // Every star is at least kStarBrightest + the extinction: none shows
+    // where the limit is brighter than that by half the fade.
+    float mu = v.y;
+    float x = airMass(mu);
+    float extinction = -2.5 * x * kLog10Of2 * log2(min(frame.starTransmittance.g, 1.0));
+    float limit = starLimitingMagnitude(background);
+    if (!(limit - extinction > kStarBrightest - 0.5 * kStarFade)) return vec3(0.0);
     float sigma = frame.starSigma;
     vec3 c = vec3(dot(v, frame.starAxisX), dot(v, frame.starAxisY), dot(v, frame.starPole));
     float u = fract(atan(c.y, c.x) / kTwoPi + 1.0);
@@ -118,17 +154,22 @@ vec3 starRadiance(vec3 v) {
             uint h2 = starHash(h1);
             uint h3 = starHash(h2);
             uint h4 = starHash(h3);
+            // 1 - u of a 24-bit hash is exact in float and > 0.
+            float magnitude = max(kStarBrightest, kStarFaintest + 2.0 * kLog10Of2 * log2(1.0 - starUnit(h3)));
+            float f = clamp((limit - magnitude - extinction) / kStarFade + 0.5, 0.0, 1.0);
+            if (!(f > 0.0)) continue;
             float ra = kTwoPi * (float(i) + 0.15 + 0.7 * starUnit(h1)) / float(kStarColumns);
             float sinDec = (float(j) + 0.15 + 0.7 * starUnit(h2)) / float(kStarRows) * 2.0 - 1.0;
             float cosDec = sqrt(max(1.0 - sinDec * sinDec, 0.0));
             vec3 s = vec3(cosDec * cos(ra), cosDec * sin(ra), sinDec);
             vec3 d = c - s;
-            float weight = pow(starUnit(h3), kStarFluxExponent) * exp(-dot(d, d) / (2.0 * sigma * sigma));
+            float flux = exp2(-0.4 / kLog10Of2 * (magnitude - kStarBrightest)) * f * f * (3.0 - 2.0 * f);
+            float weight = flux * exp(-dot(d, d) / (2.0 * sigma * sigma));
             vec3 tint = mix(vec3(1.0, 0.82, 0.64), vec3(0.72, 0.84, 1.0), starUnit(h4));
             sum += weight * tint;
         }
     }
-    vec3 transmittance = pow(frame.starTransmittance, vec3(airMass(v.y)));
+    vec3 transmittance = pow(frame.starTransmittance, vec3(x));
     return sum * (illuminance / (kTwoPi * sigma * sigma)) * transmittance;
 }
 
@@ -151,8 +192,8 @@ vec3 airglowRadiance(vec3 v) {
 
 void main() {
     vec3 v = normalize(vFarRay);
-    vec3 radiance = skyRadiance(v, true);
-    radiance += starRadiance(v) + airglowRadiance(v);
+    vec3 radiance = skyRadiance(v, true) + airglowRadiance(v);
+    radiance += starRadiance(v, radiance);
     radiance += lightDisc(v, frame.sunDiscDirection, frame.sunDiscChord, frame.sunIlluminance,
                           frame.sunDiscInverseSolidAngle);
     radiance += moonDisc(v);

@@ -11,7 +11,18 @@
 //              "sun": {"radiance_rgb", "rayleigh", "mie"}, "moon": {...}},
 //    "reference": {"radiance_rgb", "sun": {...}, "moon": {...}},
 //    "relative_difference_rgb": table / reference - 1 per channel (null
-//        where the reference is 0), "max_abs_relative_difference"}
+//        where the reference is 0), "max_abs_relative_difference",
+//    "stars": {"background_cd_m2", "background_mag_arcsec2",
+//              "limiting_magnitude", "limiting_magnitude_at_eye",
+//              "extinction_mag"}}
+// "stars" (aerial/stars.hpp): the clear sky behind the stars (the table's
+// radiance plus airglowRadiance, which the sky pass fades in from sun +2
+// to -10 deg, renderer::starVisibility) as a luminance
+// and a V surface brightness; the naked-eye limiting magnitude against it
+// at the eye, and for a star's magnitude above the atmosphere (the first
+// plus the extinction T_zenith^X in V towards the direction): a star of
+// the field shows there when brighter than "limiting_magnitude". Null
+// below the horizon.
 // "rayleigh" and "mie" are the phase-less integrals I_R, I_M; radiance =
 // E (P_R I_R + P_M I_M) with E the light's illuminance above the atmosphere.
 // Below the horizon the table repeats its horizon row while the reference
@@ -19,7 +30,10 @@
 #include "cli_common.hpp"
 
 #include <aerial/atmosphere.hpp>
+#include <aerial/exposure.hpp>
+#include <aerial/night_sky.hpp>
 #include <aerial/sky_reference.hpp>
+#include <aerial/stars.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -82,6 +96,33 @@ LightSample referenceSample(const AtmosphereParams& air, const glm::dvec3& v, co
     return out;
 }
 
+/// The stars' view of the sky towards v (aerial/stars.hpp).
+struct StarSample {
+    double backgroundNits = 0.0;
+    double limitAtEye = 0.0;
+    double extinction = 0.0;  ///< [mag]
+    bool aboveHorizon = false;
+};
+
+StarSample starSample(const PresetState& state, const glm::dvec3& v, const glm::dvec3& tableRadiance) {
+    StarSample out;
+    const glm::dvec3 background = tableRadiance + airglowRadiance(v, state.zenithTransmittance);
+    out.backgroundNits = luminance(background) * kNitsPerRadianceUnit;
+    out.limitAtEye = limitingMagnitude(out.backgroundNits);
+    out.aboveHorizon = v.y > 0.0;
+    out.extinction = extinctedMagnitude(0.0, state.zenithTransmittance.y, v.y);
+    return out;
+}
+
+Json starsToJson(const StarSample& s) {
+    const bool shown = s.aboveHorizon && s.extinction < kHiddenStarMagnitude;
+    return {{"background_cd_m2", s.backgroundNits},
+            {"background_mag_arcsec2", skyBrightnessFromLuminance(s.backgroundNits)},
+            {"limiting_magnitude", shown ? Json(s.limitAtEye - s.extinction) : Json(nullptr)},
+            {"limiting_magnitude_at_eye", s.aboveHorizon ? Json(s.limitAtEye) : Json(nullptr)},
+            {"extinction_mag", shown ? Json(s.extinction) : Json(nullptr)}};
+}
+
 int runSky(const SkyOptions& options) {
     const double t = parseTimeOfDay(options.time, "--time");
     const glm::dvec3 v = parseDirection(options.direction, "--dir");
@@ -103,6 +144,7 @@ int runSky(const SkyOptions& options) {
     const glm::dvec3 single = tableSun.single + tableMoon.single;
     const glm::dvec3 multiple = tableSun.multiple + tableMoon.multiple;
     const glm::dvec3 exact = exactSun.radiance + exactMoon.radiance;
+    const StarSample stars = starSample(state, v, table);
 
     Json relative = Json::array();
     double maxRelative = 0.0;
@@ -142,7 +184,8 @@ int runSky(const SkyOptions& options) {
                      {"sun", sampleToJson(exactSun)},
                      {"moon", sampleToJson(exactMoon)}}},
                    {"relative_difference_rgb", relative},
-                   {"max_abs_relative_difference", maxRelative}});
+                   {"max_abs_relative_difference", maxRelative},
+                   {"stars", starsToJson(stars)}});
         return kExitOk;
     }
     std::printf("%s at %s, towards (%.4f, %.4f, %.4f): elevation %.3f deg, azimuth %.3f deg\n", name.c_str(),
@@ -162,6 +205,13 @@ int runSky(const SkyOptions& options) {
             std::printf(" %+11.3f%%", relative[std::size_t(c)].get<double>() * 100.0);
     }
     std::printf("\n");
+    std::printf("  stars: sky behind %.3g cd/m^2 (%.2f mag/arcsec^2)", stars.backgroundNits,
+                skyBrightnessFromLuminance(stars.backgroundNits));
+    if (stars.aboveHorizon && stars.extinction < kHiddenStarMagnitude)
+        std::printf(", limiting magnitude %.2f (%.2f at the eye, extinction %.2f mag)\n",
+                    stars.limitAtEye - stars.extinction, stars.limitAtEye, stars.extinction);
+    else
+        std::printf(", no stars below the horizon\n");
     if (v.y < 0.0)
         std::printf(
             "  (below the horizon: the table repeats its horizon row, the exact integral runs to the "

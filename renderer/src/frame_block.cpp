@@ -5,9 +5,11 @@
 #include "sky_textures.hpp"
 
 #include <aerial/evaluate.hpp>
+#include <aerial/exposure.hpp>
 #include <aerial/finite.hpp>
 #include <aerial/night_sky.hpp>
 #include <aerial/sky.hpp>
+#include <aerial/stars.hpp>
 #include <aerial/sun.hpp>
 
 #include <glm/geometric.hpp>
@@ -56,8 +58,8 @@ glm::dvec3 unitOr(const glm::dvec3& v, const glm::dvec3& fallback) {
     return glm::normalize(v / m);
 }
 
-double frameStarIlluminance(const PresetState& state, const FrameDesc& frame) {
-    return frame.stars ? kStarIlluminance * starVisibility(state.sunLight.body.elevation) : 0.0;
+double frameStarIlluminance(const PresetState& /*state*/, const FrameDesc& frame) {
+    return frame.stars ? kStarIlluminance : 0.0;
 }
 
 FrameBlock makeFrameBlock(const Camera& camera, const CameraFrame& view, const PresetState& state,
@@ -194,8 +196,9 @@ FrameBlock makeFrameBlock(const Camera& camera, const CameraFrame& view, const P
     fb.moonTableCapCurvature = float(in.moon.capCurvature);
     fb.moonTableCapStrength = float(in.moon.capStrength);
 
-    // Stars: the celestial frame, the brightest star's illuminance and the
-    // Gaussian radius of a star, sigma = 0.6 pixel (vertical angle / rows).
+    // Stars: the celestial frame, the brightest star's illuminance, the
+    // Gaussian radius of a star, sigma = 0.6 pixel (vertical angle / rows),
+    // and what the limiting magnitude needs (aerial/stars.hpp).
     const double starE = nonNegative(frameStarIlluminance(state, frame), 1e30);
     CelestialFrame celestial;
     glm::dvec3 zenithTransmittance(1.0);
@@ -213,6 +216,8 @@ FrameBlock makeFrameBlock(const Camera& camera, const CameraFrame& view, const P
     fb.starSigma = static_cast<float>(starSigma);
     fb.starPole = toVec3(unitOr(celestial.pole, {0.0, 1.0, 0.0}));
     fb.starTransmittance = toVec3(glm::clamp(colourOf(zenithTransmittance), 0.0, 1.0));
+    fb.starNitsPerUnit = static_cast<float>(kNitsPerRadianceUnit);
+    fb.starDarkLimit = static_cast<float>(limitingMagnitude(0.0));
     return fb;
 }
 

@@ -55,8 +55,8 @@ struct FrameBlockInputs {
 /// narrower than a pixel.
 constexpr double kStarMaxSigma = 0.0015;
 
-/// Brightest star's illuminance this frame: kStarIlluminance times the night
-/// fade of the state's sun, 0 with FrameDesc::stars off.
+/// Brightest star's illuminance this frame: kStarIlluminance, 0 with
+/// FrameDesc::stars off (which stars show is decided per pixel, sky.glsl).
 double frameStarIlluminance(const PresetState& state, const FrameDesc& frame);
 
 /// The std140 block of one frame: camera matrices and rays, lights (sanitised:

@@ -76,9 +76,9 @@ struct FrameBlock {
     Vec3 starAxisY;
     float starSigma = 0.0f;  ///< Gaussian radius of a star [rad]
     Vec3 starPole;
-    float padPole = 0.0f;
+    float starNitsPerUnit = 0.0f;  ///< [cd/m^2] per radiance unit (kNitsPerRadianceUnit)
     Vec3 starTransmittance;
-    float padStarTransmittance = 0.0f;
+    float starDarkLimit = 0.0f;  ///< limitingMagnitude(0) (aerial/stars.hpp): the black sky's limit [mag]
     Vec3 sunHorizonMultiple;  ///< horizon average of I_ms [1/sr]
     float padSunMultiple = 0.0f;
     Vec3 moonHorizonMultiple;
@@ -159,6 +159,8 @@ static_assert(offsetof(FrameBlock, starAxisY) == 432);
 static_assert(offsetof(FrameBlock, starSigma) == 444);
 static_assert(offsetof(FrameBlock, starPole) == 448);
 static_assert(offsetof(FrameBlock, starTransmittance) == 464);
+static_assert(offsetof(FrameBlock, starNitsPerUnit) == 460);
+static_assert(offsetof(FrameBlock, starDarkLimit) == 476);
 static_assert(offsetof(FrameBlock, sunHorizonMultiple) == 480);
 static_assert(offsetof(FrameBlock, moonHorizonMultiple) == 496);
 static_assert(offsetof(FrameBlock, sunDiscDirection) == 512);

@@ -54,6 +54,9 @@
 //   starIlluminance     the brightest star's illuminance (0 = no stars)
 //   starSigma           a star's Gaussian radius [rad]
 //   starTransmittance   transmittance viewer -> space at the zenith (rgb)
+//   starNitsPerUnit     cd/m^2 per radiance unit (aerial/exposure.hpp)
+//   starDarkLimit       naked-eye limiting magnitude on a black sky
+//                       (aerial::limitingMagnitude(0), aerial/stars.hpp)
 //
 // Linear depth (the frame's R32F texture): normalised linear eye depth,
 // z_view / far, 0 at the camera and 1 at the far plane (sky pixels hold 1),
@@ -113,9 +116,9 @@ layout(std140, binding = 0) uniform FrameBlock {
     vec3 starAxisY;
     float starSigma;
     vec3 starPole;
-    float padPole;
+    float starNitsPerUnit;
     vec3 starTransmittance;
-    float padStarTransmittance;
+    float starDarkLimit;
     vec3 sunHorizonMultiple;
     float padSunMultiple;
     vec3 moonHorizonMultiple;

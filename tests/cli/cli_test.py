@@ -341,6 +341,43 @@ class Sky(unittest.TestCase):
         self.assertEqual(code, 0, err)
         self.assertIn("exact integral", out)
         self.assertIn("relative difference", out)
+        self.assertIn("limiting magnitude", out)
+
+    def dated_clear_summer_day(self, date):
+        with open(preset("clear_summer_day")) as f:
+            p = json.load(f)
+        p["location"]["date"] = date
+        path = os.path.join(WORK, "clear_summer_day_" + date + ".json")
+        with open(path, "w") as f:
+            json.dump(p, f)
+        return path
+
+    def evening_time(self, path, elevation_deg):
+        """The time at which the sun sinks through elevation_deg (bisection on `aerial eval`)."""
+        lo, hi = 12.0, 23.99
+        for _ in range(24):
+            mid = 0.5 * (lo + hi)
+            e = run_json(self, "eval", path, "--time", "%.6f" % mid)["sun"]["elevation_deg"]
+            lo, hi = (mid, hi) if e > elevation_deg else (lo, mid)
+        return 0.5 * (lo + hi)
+
+    def test_stars_limiting_magnitude(self):
+        """Issue 48: the naked-eye limiting magnitude at the zenith, clear_summer_day dated
+        2025-06-25 (new moon, 45 N): <= 1.5 with the sun at -6 deg, >= 5.5 at midnight (sun
+        below -18 deg, the natural sky of 21.6-22 mag/arcsec^2); the background's surface
+        brightness is its luminance in V mag/arcsec^2 (L = 10.8e4 10^(-0.4 S) cd/m^2); null
+        below the horizon."""
+        path = self.dated_clear_summer_day("2025-06-25")
+        civil = run_json(self, "sky", path, "--time", "%.6f" % self.evening_time(path, -6.0), "--dir", "0,1,0")
+        stars = civil["stars"]
+        self.assertAlmostEqual(stars["background_mag_arcsec2"],
+                               -2.5 * math.log10(stars["background_cd_m2"] / 1.08e5), delta=1e-9)
+        self.assertLessEqual(stars["limiting_magnitude"], 1.5, stars)
+        self.assertGreater(stars["limiting_magnitude_at_eye"], stars["limiting_magnitude"])  # extinction
+        below = run_json(self, "sky", path, "--time", "00:00", "--dir", "0,-1,0")["stars"]
+        self.assertIsNone(below["limiting_magnitude"])
+        night = run_json(self, "sky", path, "--time", "00:00", "--dir", "0,1,0")["stars"]
+        self.assertGreaterEqual(night["limiting_magnitude"], 5.5, night)
 
 
 class Fog(unittest.TestCase):

@@ -9,9 +9,11 @@
 #include "gpu_types.hpp"
 
 #include <aerial/evaluate.hpp>
+#include <aerial/exposure.hpp>
 #include <aerial/night_sky.hpp>
 #include <aerial/preset.hpp>
 #include <aerial/renderer/renderer.hpp>
+#include <aerial/stars.hpp>
 #include <aerial/sun.hpp>
 
 #include <gtest/gtest.h>
@@ -250,7 +252,7 @@ TEST(FrameBlock, FogFieldsAndRadianceCap) {
     EXPECT_FLOAT_EQ(full.fogFalloff, 0.02f);
 }
 
-TEST(FrameBlock, StarsFollowTheSunAndTheSwitch) {
+TEST(FrameBlock, StarsFollowTheSwitchAndTheAirglowTheSun) {
     const renderer::Camera camera = testCamera();
     PresetState night = testState();
     night.sunLight.body.elevation = -0.5;  // below -10 deg
@@ -266,15 +268,23 @@ TEST(FrameBlock, StarsFollowTheSunAndTheSwitch) {
     expectNear3(fb.starPole, sky.pole, 1e-6, "pole");
     expectNear3(fb.starTransmittance, night.zenithTransmittance, 1e-7, "zenith transmittance");
     EXPECT_FLOAT_EQ(fb.starSigma, float(std::min(0.6 * camera.verticalFov / inputs.height, 0.0015)));
+    // The brightest star (-1.5 mag) and what the sky pass's limiting
+    // magnitude needs (aerial/stars.hpp).
+    EXPECT_NEAR(renderer::kStarIlluminance, starIlluminanceLux(kStarFieldBrightest) / kNitsPerRadianceUnit,
+                1e-6 * renderer::kStarIlluminance);
+    EXPECT_FLOAT_EQ(fb.starNitsPerUnit, float(kNitsPerRadianceUnit));
+    EXPECT_FLOAT_EQ(fb.starDarkLimit, float(limitingMagnitude(0.0)));
 
     renderer::FrameDesc off;
     off.stars = false;
     EXPECT_EQ(blockFor(night, off, inputs).starIlluminance, 0.0f);
-    EXPECT_EQ(blockFor(testState(), {}, inputs).starIlluminance, 0.0f);  // day
+    // Which stars show is decided per pixel by the sky's limiting magnitude
+    // (sky.glsl): the illuminance is the same by day; the airglow fades.
+    EXPECT_FLOAT_EQ(blockFor(testState(), {}, inputs).starIlluminance, float(renderer::kStarIlluminance));
+    EXPECT_EQ(blockFor(testState(), {}, inputs).nightSky, 0.0f);  // day
     PresetState dusk = night;
-    dusk.sunLight.body.elevation = -4.0 * kPiD / 180.0;  // half way through the fade
-    EXPECT_NEAR(blockFor(dusk, {}, inputs).starIlluminance, 0.5 * renderer::kStarIlluminance,
-                1e-6 * renderer::kStarIlluminance);
+    dusk.sunLight.body.elevation = -4.0 * kPiD / 180.0;  // half way through the airglow's fade
+    EXPECT_FLOAT_EQ(blockFor(dusk, {}, inputs).starIlluminance, float(renderer::kStarIlluminance));
     EXPECT_FLOAT_EQ(blockFor(dusk, {}, inputs).nightSky, 0.5f);
 
     // The airglow lights the scene with the stars: its irradiance joins the
@@ -402,7 +412,9 @@ TEST(FrameBlock, Std140OffsetsMatchTheGlslBlocks) {
                   AERIAL_OFFSET(FrameBlock, starAxisY),
                   AERIAL_OFFSET(FrameBlock, starSigma),
                   AERIAL_OFFSET(FrameBlock, starPole),
+                  AERIAL_OFFSET(FrameBlock, starNitsPerUnit),
                   AERIAL_OFFSET(FrameBlock, starTransmittance),
+                  AERIAL_OFFSET(FrameBlock, starDarkLimit),
                   AERIAL_OFFSET(FrameBlock, sunHorizonMultiple),
                   AERIAL_OFFSET(FrameBlock, moonHorizonMultiple),
                   AERIAL_OFFSET(FrameBlock, sunDiscDirection),

@@ -102,14 +102,15 @@ struct RendererDesc {
 /// development build).
 std::string defaultShaderDirectory();
 
-/// Illuminance of the brightest procedural star for the default sun (20):
-/// about 1000x the physical ratio of Sirius to the sun (~1e-10), the same
-/// artistic factor as the default moon (preset.hpp), so the stars read next
-/// to a moonlit sky.
-constexpr double kStarIlluminance = 2e-6;
+/// Illuminance of the brightest procedural star (V magnitude -1.5, Sirius):
+/// aerial::starIlluminanceLux(-1.5) = 1.01e-5 lx in illuminance units of
+/// kNitsPerRadianceUnit lx (aerial/stars.hpp, exposure.hpp). Each star of
+/// the field has its magnitude's share of it (shaders/sky.glsl).
+constexpr double kStarIlluminance = 2.022384e-9;
 
-/// Night fade of the stars: 0 with the sun above +2 deg, 1 below -10 deg
-/// (nautical twilight), smoothstep between.
+/// Night fade of the airglow: 0 with the sun above +2 deg, 1 below -10 deg
+/// (nautical twilight), smoothstep between. The stars show by the sky's
+/// limiting magnitude instead (aerial/stars.hpp).
 double starVisibility(double sunElevation);
 
 enum class ColourPrecision {
@@ -257,9 +258,9 @@ struct FrameDesc {
     /// the GPU after every pass (for benchmarks, not for an interactive
     /// frame).
     bool gpuTimers = false;
-    /// Stars in the sky pass: the brightest star's illuminance is
-    /// kStarIlluminance * starVisibility(sun elevation) of the state; false
-    /// hides them (the editor's View > Stars).
+    /// Stars (and the airglow) in the sky pass: each star shows when it is
+    /// brighter than the naked-eye limiting magnitude of the sky behind it
+    /// (aerial/stars.hpp); false hides them (the editor's View > Stars).
     bool stars = true;
     /// Angular radius of the sun disc [rad]; 0 hides it. Default 0.2666 deg.
     double sunDiscRadius = 0.004653;
