@@ -61,7 +61,7 @@ int runFog(const FogOptions& options) {
     const FogQueryResult r = scene.query(from, to, crossed);
     const glm::dvec3 delta = to - from;
     const double length = std::sqrt(delta.x * delta.x + delta.y * delta.y + delta.z * delta.z);
-    const glm::dvec3 fogColour = scene.fogColour(delta);
+    const glm::dvec3 fogColour = scene.fogColour(delta, length);
 
     if (options.json) {
         Json volumes = Json::array();
