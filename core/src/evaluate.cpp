@@ -302,12 +302,14 @@ FogSceneDesc fogSceneDesc(const PresetState& state, const SkyTable& sunSky, cons
     desc.volumes = state.volumes;
     desc.emitters = state.emitters;
     desc.mieAnisotropy = state.environment.atmosphere.mieAnisotropy;
-    desc.lights[0] = {state.sunLight.body.direction, state.sunLight.illuminanceSpace, sunSky.horizonRayleigh,
-                      sunSky.horizonMie, sunSky.horizonMultiple, skyHorizonRow(sunSky),
+    desc.lights[0] = {state.sunLight.body.direction, state.sunLight.illuminanceSpace,
+                      sunSky.horizonRayleigh,        sunSky.horizonMie,
+                      sunSky.horizonMultiple,        skyHorizonRow(sunSky),
                       state.sunLight.illuminance};
     desc.lights[1] = {state.moonLight.body.direction, state.moonLight.illuminanceSpace,
-                      moonSky.horizonRayleigh, moonSky.horizonMie, moonSky.horizonMultiple,
-                      skyHorizonRow(moonSky), state.moonLight.illuminance};
+                      moonSky.horizonRayleigh,        moonSky.horizonMie,
+                      moonSky.horizonMultiple,        skyHorizonRow(moonSky),
+                      state.moonLight.illuminance};
     desc.skyLight = fogSkyLight(state, sunSky, moonSky, overcast);
     desc.directVisibility = fogDirectVisibility(overcast);
     return desc;

@@ -42,8 +42,8 @@ double miePhaseFirstMoment(double g) {
 }
 
 double fogHorizonWeight(double distance, double horizonDistance) {
-    const double d = (std::isfinite(horizonDistance) && horizonDistance > 0.0) ? horizonDistance
-                                                                                : kFogHorizonDistance;
+    const double d =
+        (std::isfinite(horizonDistance) && horizonDistance > 0.0) ? horizonDistance : kFogHorizonDistance;
     if (!(distance > 0.0)) return 0.0;
     return -std::expm1(-distance / d);
 }

@@ -95,9 +95,11 @@ TEST(FogLight, SkyBandsMatchAFinerQuadrature) {
     // Within 2% of a_0 (the sun's aureole low in the sky, 07:00, is the
     // coarse grid's hardest case: 1.3% on a_1's component towards the sun).
     const double scale = luminance(l0);
-    std::printf("[ measured ] sky bands at 07:00: a_0 %.5g (finer %.5g), a_1 (%.4g %.4g %.4g) (finer %.4g %.4g %.4g)\n",
-                luminance(bands.l0), scale, luminance(bands.l1[0]), luminance(bands.l1[1]),
-                luminance(bands.l1[2]), luminance(l1[0]), luminance(l1[1]), luminance(l1[2]));
+    std::printf(
+        "[ measured ] sky bands at 07:00: a_0 %.5g (finer %.5g), a_1 (%.4g %.4g %.4g) (finer %.4g %.4g "
+        "%.4g)\n",
+        luminance(bands.l0), scale, luminance(bands.l1[0]), luminance(bands.l1[1]), luminance(bands.l1[2]),
+        luminance(l1[0]), luminance(l1[1]), luminance(l1[2]));
     EXPECT_NEAR(luminance(bands.l0), scale, 0.01 * scale);
     for (int k = 0; k < 3; ++k) EXPECT_NEAR(luminance(bands.l1[k]), luminance(l1[k]), 0.02 * scale) << k;
     EXPECT_NEAR(luminance(e), luminance(irradiance), 0.01 * luminance(irradiance));
@@ -118,8 +120,8 @@ TEST(FogLight, OneLightThroughThePhase) {
     const double p = 3.0 / (8.0 * kPiD) * (1.0 - 0.36) * (1.0 + mu * mu) /
                      ((2.0 + 0.36) * std::pow(1.0 + 0.36 - 1.2 * mu, 1.5));
     const double k1 = 3.0 * 0.6 * 4.36 / (5.0 * 2.36);
-    const glm::dvec3 expected = 0.5 * p * glm::dvec3(2.0, 3.0, 4.0) + glm::dvec3(0.1, 0.2, 0.3) +
-                                k1 * v.y * glm::dvec3(0.05);
+    const glm::dvec3 expected =
+        0.5 * p * glm::dvec3(2.0, 3.0, 4.0) + glm::dvec3(0.1, 0.2, 0.3) + k1 * v.y * glm::dvec3(0.05);
     const glm::dvec3 lit = scene.fogColour(v, 0.0);
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(lit[c], expected[c], 1e-12 * expected[c]);
     // A segment of 300 m: the lit colour, 6% of the way to the (here black) horizon.
@@ -157,36 +159,37 @@ TEST(FogLight, TwilightValleyFogIsNotASpotlight) {
 }
 
 TEST(FogLight, FarFogAtNoonMeetsTheSkysHorizon) {
-  for (bool clouds : {true, false}) {
-    PresetState state = presetState("foggy_valley_morning.json", 12.0);
-    if (!clouds) state.environment.clouds.coverage = 0.0;  // the sky table alone behind the fog
-    Solved s(state);
-    const FogScene scene(fogSceneDesc(s.state, s.sun.table(), s.moon.table()));
-    if (!clouds) {
-        EXPECT_EQ(scene.desc().overcastCover, 0.0);
+    for (bool clouds : {true, false}) {
+        PresetState state = presetState("foggy_valley_morning.json", 12.0);
+        if (!clouds) state.environment.clouds.coverage = 0.0;  // the sky table alone behind the fog
+        Solved s(state);
+        const FogScene scene(fogSceneDesc(s.state, s.sun.table(), s.moon.table()));
+        if (!clouds) {
+            EXPECT_EQ(scene.desc().overcastCover, 0.0);
+        }
+        const double g = s.state.environment.atmosphere.mieAnisotropy;
+        for (double azimuth = 0.0; azimuth < 2.0 * kPiD; azimuth += 0.25 * kPiD) {
+            const FogQueryResult q = levelQuery(scene, azimuth, 20000.0);
+            ASSERT_LT(q.transmittance.x, 0.1);  // the fog hides the object
+            // The object's colour with a black object, against the sky table's
+            // horizon right behind it (what the sky shows there; the clouds'
+            // deck, where the preset has one, is what covers it).
+            const glm::dvec3 v(std::sin(azimuth), 0.0, -std::cos(azimuth));
+            const glm::dvec3 clearSky = skyRadiance(s.sun.table(), g, v, s.state.sunLight.illuminanceSpace) +
+                                        skyRadiance(s.moon.table(), g, v, s.state.moonLight.illuminanceSpace);
+            const FogSceneDesc& d = scene.desc();
+            const glm::dvec3 behind =
+                (1.0 - d.overcastCover) * clearSky + d.overcastCover * d.overcastRadiance;
+            const glm::dvec3 object = q.inScatter;  // a black object: the fog alone
+            const double error = std::fabs(luminance(object) / luminance(behind) - 1.0);
+            std::printf(
+                "[ measured ] noon, %s, 20 km at azimuth %3.0f deg: fogged %.4g, horizon %.4g (clear %.4g), "
+                "off by %.1f%%\n",
+                clouds ? "clouds" : "clear", azimuth * 180.0 / kPiD, luminance(object), luminance(behind),
+                luminance(clearSky), 100.0 * error);
+            EXPECT_LT(error, 0.10) << azimuth;
+        }
     }
-    const double g = s.state.environment.atmosphere.mieAnisotropy;
-    for (double azimuth = 0.0; azimuth < 2.0 * kPiD; azimuth += 0.25 * kPiD) {
-        const FogQueryResult q = levelQuery(scene, azimuth, 20000.0);
-        ASSERT_LT(q.transmittance.x, 0.1);  // the fog hides the object
-        // The object's colour with a black object, against the sky table's
-        // horizon right behind it (what the sky shows there; the clouds'
-        // deck, where the preset has one, is what covers it).
-        const glm::dvec3 v(std::sin(azimuth), 0.0, -std::cos(azimuth));
-        const glm::dvec3 clearSky = skyRadiance(s.sun.table(), g, v, s.state.sunLight.illuminanceSpace) +
-                                    skyRadiance(s.moon.table(), g, v, s.state.moonLight.illuminanceSpace);
-        const FogSceneDesc& d = scene.desc();
-        const glm::dvec3 behind =
-            (1.0 - d.overcastCover) * clearSky + d.overcastCover * d.overcastRadiance;
-        const glm::dvec3 object = q.inScatter;  // a black object: the fog alone
-        const double error = std::fabs(luminance(object) / luminance(behind) - 1.0);
-        std::printf("[ measured ] noon, %s, 20 km at azimuth %3.0f deg: fogged %.4g, horizon %.4g (clear %.4g), "
-                    "off by %.1f%%\n",
-                    clouds ? "clouds" : "clear", azimuth * 180.0 / kPiD, luminance(object), luminance(behind),
-                    luminance(clearSky), 100.0 * error);
-        EXPECT_LT(error, 0.10) << azimuth;
-    }
-  }
 }
 
 }  // namespace

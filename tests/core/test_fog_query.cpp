@@ -92,9 +92,9 @@ glm::dvec3 referenceHorizonColour(const FogSceneDesc& desc, const glm::dvec3& v)
 /// 3 g (4 + g^2) / (5 (2 + g^2))) blended into the horizon by 1 - exp(-s / D).
 glm::dvec3 referenceFogColour(const FogSceneDesc& desc, const glm::dvec3& v, double distance) {
     const double g = desc.mieAnisotropy;
-    glm::dvec3 lit = desc.skyLight.l0 + 3.0 * g * (4.0 + g * g) / (5.0 * (2.0 + g * g)) *
-                                            (desc.skyLight.l1[0] * v.x + desc.skyLight.l1[1] * v.y +
-                                             desc.skyLight.l1[2] * v.z);
+    glm::dvec3 lit = desc.skyLight.l0 +
+                     3.0 * g * (4.0 + g * g) / (5.0 * (2.0 + g * g)) *
+                         (desc.skyLight.l1[0] * v.x + desc.skyLight.l1[1] * v.y + desc.skyLight.l1[2] * v.z);
     lit = glm::max(lit, glm::dvec3(0.0));
     for (const aerial::FogLight& light : desc.lights) {
         const double mu = glm::dot(v, glm::normalize(light.direction));
@@ -485,7 +485,8 @@ TEST(FogQuery, GlobalFogColourModes) {
             const FogQueryResult r = scene.query(from, to);
             EXPECT_TRUE(near(r.inScatter, colour * (1.0 - t), 1e-12)) << int(mode);
             EXPECT_TRUE(near(scene.fogColour(delta, glm::length(delta)), sky, 1e-12));  // always the sky's
-            EXPECT_TRUE(near(scene.fogColour(delta), referenceHorizonColour(desc, glm::normalize(delta)), 1e-12));
+            EXPECT_TRUE(
+                near(scene.fogColour(delta), referenceHorizonColour(desc, glm::normalize(delta)), 1e-12));
         }
     }
 }
