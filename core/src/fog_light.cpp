@@ -77,12 +77,18 @@ glm::dvec3 addUniformSkyLight(FogSkyLight& sky, const glm::dvec3& radiance) {
 }
 
 glm::dvec3 addAirglowLight(FogSkyLight& sky, const glm::dvec3& zenithTransmittance) {
+    // The airglow depends on the elevation alone: whole rings (a_1's x and z vanish).
     glm::dvec3 irradiance(0.0);
-    forUpperHemisphere([&](const glm::dvec3& w, double dw) {
-        const glm::dvec3 L = airglowRadiance(w, zenithTransmittance);
-        accumulate(sky, w, L, dw);
-        irradiance += L * (w.y * dw);
-    });
+    constexpr int kAirglowRings = 64;
+    for (int j = 0; j < kAirglowRings; ++j) {
+        const double mu = (j + 0.5) / kAirglowRings;
+        const double dw = 2.0 * kPi / kAirglowRings;
+        const glm::dvec3 L =
+            airglowRadiance(glm::dvec3(std::sqrt(1.0 - mu * mu), mu, 0.0), zenithTransmittance);
+        sky.l0 += L * (dw / (4.0 * kPi));
+        sky.l1[1] += L * (mu * 3.0 * dw / (4.0 * kPi));
+        irradiance += L * (mu * dw);
+    }
     return irradiance;
 }
 

@@ -12,6 +12,7 @@
 #include <aerial/evaluate.hpp>
 #include <aerial/fog_light.hpp>
 #include <aerial/fog_query.hpp>
+#include <aerial/night_sky.hpp>
 #include <aerial/preset.hpp>
 #include <aerial/sky.hpp>
 
@@ -103,6 +104,28 @@ TEST(FogLight, SkyBandsMatchAFinerQuadrature) {
     EXPECT_NEAR(luminance(bands.l0), scale, 0.01 * scale);
     for (int k = 0; k < 3; ++k) EXPECT_NEAR(luminance(bands.l1[k]), luminance(l1[k]), 0.02 * scale) << k;
     EXPECT_NEAR(luminance(e), luminance(irradiance), 0.01 * luminance(irradiance));
+}
+
+TEST(FogLight, AirglowAndUniformBands) {
+    // The airglow's irradiance against night_sky.hpp's own quadrature; a
+    // uniform hemisphere L: a_0 = L / 2, a_1 = (0, 3 L / 4, 0), E = pi L;
+    // the ground below it the mirror image.
+    const glm::dvec3 t(0.8, 0.85, 0.9);
+    FogSkyLight night;
+    const glm::dvec3 e = addAirglowLight(night, t);
+    const glm::dvec3 reference = airglowIrradiance(t);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(e[c], reference[c], 0.01 * reference[c]) << c;
+    EXPECT_EQ(night.l1[0], glm::dvec3(0.0));
+    EXPECT_EQ(night.l1[2], glm::dvec3(0.0));
+    FogSkyLight uniform;
+    const glm::dvec3 L(0.2, 0.3, 0.4);
+    const glm::dvec3 eu = addUniformSkyLight(uniform, L);
+    addGroundLight(uniform, glm::dvec3(1.0), kPiD * L);
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(eu[c], kPiD * L[c], 1e-15);
+        EXPECT_NEAR(uniform.l0[c], L[c], 1e-15);    // the whole sphere at L
+        EXPECT_NEAR(uniform.l1[1][c], 0.0, 1e-15);  // from above and below alike
+    }
 }
 
 TEST(FogLight, OneLightThroughThePhase) {
