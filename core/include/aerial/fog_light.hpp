@@ -10,7 +10,7 @@
 // composited as L <- L T + L_fog (1 - T) (fog_query.hpp).
 //  * L_lit(v), the fog lit by the light that reaches it (Hillaire 2020,
 //    "A Scalable and Production Ready Sky and Atmosphere Rendering
-//    Technique", section 5.3: the aerial perspective's in-scattering is the
+//    Technique", its aerial-perspective volume: the in-scattering is the
 //    sun's transmitted light times the phase, plus the multiply scattered
 //    light; Unreal's exponential height fog likewise scatters the
 //    directional light and the sky light):
@@ -57,7 +57,10 @@
 // blend: the same colour for every fog of one sight line, so the CPU
 // queries (a segment), the analytic passes (the pixel's scene point), the
 // froxels (the pixel's depth), transparent objects and particles (the
-// fragment) agree.
+// fragment) agree. The price: dense fog close by in front of a far object
+// takes some of the horizon's colour, though its light was scattered near
+// the viewer (w weighs the sight line's length, not where along it the fog
+// scattered; that integral has no closed form for the exponential fog).
 #pragma once
 
 #include <aerial/sky.hpp>
