@@ -51,6 +51,8 @@ void main() {
         tau = maskedExponentialDepth(ivec2(gl_FragCoord.xy), volume.density, volume.falloff, height - tIn * rate,
                                      rate, length(farRay), tIn, tOut);
     }
-    outColour = fogInScatterTransmittance(volume.colourMode, volume.colour, normalize(farRay), tau);
+    // The fog colour of the pixel's whole sight line, to its scene point (fog_light.hpp).
+    float sceneDistance = texelFetch(uLinearDepth, ivec2(gl_FragCoord.xy), 0).r * length(farRay);
+    outColour = fogInScatterTransmittance(volume.colourMode, volume.colour, normalize(farRay), sceneDistance, tau);
 }
 #endif

@@ -37,6 +37,8 @@ void main() {
         sum += b * exp(min(-c * height, 80.0));
     }
     float tau = min(sum * dt * length(farRay), kMaxOpticalDepth);
-    outColour = fogInScatterTransmittance(volume.colourMode, volume.colour, normalize(farRay), tau);
+    // The fog colour of the pixel's whole sight line, to its scene point (fog_light.hpp).
+    float sceneDistance = texelFetch(uLinearDepth, ivec2(gl_FragCoord.xy), 0).r * length(farRay);
+    outColour = fogInScatterTransmittance(volume.colourMode, volume.colour, normalize(farRay), sceneDistance, tau);
 }
 #endif

@@ -9,8 +9,9 @@
 //     sky is fogged up to the far plane)
 // Output (location 0), blended with glBlendFunc(GL_ONE, GL_SRC_ALPHA):
 //   rgb = L_fog(v) (1 - T), a = T, T = exp(-integral f), so the target becomes
-//   L = L_scene T + L_fog (1 - T); L_fog is the horizon average with the
-//   per-pixel phase functions (FogScene::fogColour) in colour mode "sky".
+//   L = L_scene T + L_fog (1 - T); L_fog(v, s) is the light that reaches
+//   the fog blended into the horizon with the scene point's distance s
+//   (FogScene::fogColour, aerial/fog_light.hpp) in colour mode "sky".
 // Subtract volumes (frame.subtractActive): the integral runs over the
 // segment minus the pixel's subtract union (common/subtract.glsl), the sum
 // over the gaps; without them the plain integral, bit for bit as before.
@@ -36,6 +37,7 @@ void main() {
                                      frame.eye.y - frame.fogBaseHeight, vFarRay.y, length(vFarRay), 0.0,
                                      depth01);
     }
-    outColour = fogInScatterTransmittance(frame.fogColourMode, frame.fogColour, normalize(vFarRay), tau);
+    outColour = fogInScatterTransmittance(frame.fogColourMode, frame.fogColour, normalize(vFarRay),
+                                          depth01 * length(vFarRay), tau);
 }
 #endif

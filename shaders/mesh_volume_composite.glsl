@@ -34,6 +34,8 @@ void main() {
     float tRef = meshVolumeReference(farRay);
     float tau = sums.x + sums.y * meshVolumeDepth(pixel, farRay, 0.0, tRef);
     tau = tau > 0.0 ? min(tau, kMaxOpticalDepth) : 0.0;  // rounding may leave a tiny negative; NaN -> 0
-    outColour = fogInScatterTransmittance(volume.colourMode, volume.colour, normalize(farRay), tau);
+    // The fog colour of the pixel's whole sight line, to its scene point (fog_light.hpp).
+    float sceneDistance = texelFetch(uLinearDepth, ivec2(gl_FragCoord.xy), 0).r * length(farRay);
+    outColour = fogInScatterTransmittance(volume.colourMode, volume.colour, normalize(farRay), sceneDistance, tau);
 }
 #endif

@@ -2,17 +2,20 @@
 // [--json]`: the CPU fog query a game makes for a transparent object
 // (FogScene, fog_query.hpp) between a camera (--from) and the object (--to).
 //
-// The scene is built from the evaluated state: global height fog, the fog
-// volumes and the emitters (keyed values and lightning flashes applied), and
-// two fog lights, the sun and the moon, each with its illuminance above the
-// atmosphere, the horizon averages (horizonRayleigh / horizonMie) of its
-// sky table (SkySolver, 128 x 64) and its horizon row (the fog takes the sky
-// behind it: horizonSkySample in <aerial/sky.hpp>).
+// The scene is built from the evaluated state (aerial::fogSceneDesc): global
+// height fog, the fog volumes and the emitters (keyed values and lightning
+// flashes applied), and the light that reaches the fog (aerial/fog_light.hpp):
+// the sun and the moon, each with the illuminance that reaches the viewer,
+// the sky tables' (SkySolver, 128 x 64) spherical-harmonic bands, and for
+// far fog each light's horizon (its averages and row: horizonSkySample in
+// <aerial/sky.hpp>).
 //
 // --json:
 //   {"preset": {"file", "name"}, "time_h", "time", "from", "to", "length_m",
 //    "transmittance_rgb", "in_scatter_rgb",        // L = L_object T + S
-//    "global_fog": {"optical_depth", "transmittance", "fog_colour_rgb"},
+//    "global_fog": {"optical_depth", "transmittance", "fog_colour_rgb",
+//                   "lit_fog_colour_rgb", "horizon_fog_colour_rgb", "horizon_weight"},
+//                   // L_fog = (1 - w) lit + w horizon (aerial/fog_light.hpp)
 //    "emitter_in_scatter_rgb",
 //    "volumes": [{"index", "id", "name", "entry_m", "exit_m", "optical_depth",
 //                 "transmittance", "colour_rgb"}],   // back to front
@@ -61,7 +64,10 @@ int runFog(const FogOptions& options) {
     const FogQueryResult r = scene.query(from, to, crossed);
     const glm::dvec3 delta = to - from;
     const double length = std::sqrt(delta.x * delta.x + delta.y * delta.y + delta.z * delta.z);
-    const glm::dvec3 fogColour = scene.fogColour(delta);
+    const glm::dvec3 fogColour = scene.fogColour(delta, length);
+    const glm::dvec3 litColour = scene.fogColour(delta, 0.0);
+    const glm::dvec3 horizonColour = scene.fogColour(delta);
+    const double horizonWeight = fogHorizonWeight(length, scene.desc().horizonDistance);
 
     if (options.json) {
         Json volumes = Json::array();
@@ -88,7 +94,10 @@ int runFog(const FogOptions& options) {
                    {"global_fog",
                     {{"optical_depth", r.globalOpticalDepth},
                      {"transmittance", std::exp(-r.globalOpticalDepth)},
-                     {"fog_colour_rgb", toJson(fogColour)}}},
+                     {"fog_colour_rgb", toJson(fogColour)},
+                     {"lit_fog_colour_rgb", toJson(litColour)},
+                     {"horizon_fog_colour_rgb", toJson(horizonColour)},
+                     {"horizon_weight", horizonWeight}}},
                    {"emitter_in_scatter_rgb", toJson(r.emitterInScatter)},
                    {"volumes", volumes},
                    {"lights",
@@ -105,6 +114,9 @@ int runFog(const FogOptions& options) {
                 r.emitterInScatter.y, r.emitterInScatter.z);
     std::printf("  %-24s optical depth %.6g, fog colour (%.6g, %.6g, %.6g)\n", "global fog",
                 r.globalOpticalDepth, fogColour.x, fogColour.y, fogColour.z);
+    std::printf("  %-24s lit (%.6g, %.6g, %.6g), horizon (%.6g, %.6g, %.6g), horizon weight %.4g\n",
+                "  fog colour", litColour.x, litColour.y, litColour.z, horizonColour.x, horizonColour.y,
+                horizonColour.z, horizonWeight);
     if (crossed.empty()) std::printf("  no fog volume crossed\n");
     for (const VolumeContribution& c : crossed) {
         const FogVolume& v = state.volumes.at(c.volumeIndex);

@@ -258,6 +258,32 @@ OvercastLight overcastLight(const PresetState& state, const SkyTable& sunSky, co
     return out;
 }
 
+double fogDirectVisibility(const OvercastLight& overcast) {
+    const double c = overcast.overcast.skyCover;
+    return std::isfinite(c) ? 1.0 - std::clamp(c, 0.0, 1.0) : 1.0;
+}
+
+FogSkyLight fogSkyLight(const PresetState& state, const SkyTable& sunSky, const SkyTable& moonSky,
+                        const OvercastLight& overcast) {
+    FogSkyLight sky;
+    const double clear = fogDirectVisibility(overcast);
+    const AtmosphereParams& air = state.environment.atmosphere;
+    const double g = std::isnan(air.mieAnisotropy) ? 0.0 : std::clamp(air.mieAnisotropy, -0.999, 0.999);
+    glm::dvec3 down = addSkyTableLight(sky, sunSky, g, state.sunLight.illuminanceSpace, clear);
+    down += addSkyTableLight(sky, moonSky, g, state.moonLight.illuminanceSpace, clear);
+    FogSkyLight night;
+    down += clear * addAirglowLight(night, state.zenithTransmittance);
+    sky.l0 += clear * night.l0;
+    for (int k = 0; k < 3; ++k) sky.l1[k] += clear * night.l1[k];
+    if (clear < 1.0) down += addUniformSkyLight(sky, (1.0 - clear) * overcast.radiance);
+    for (const LightState* l : {&state.sunLight, &state.moonLight}) {
+        const double mu = l->body.direction.y;
+        if (mu > 0.0 && std::isfinite(mu)) down += clear * std::min(mu, 1.0) * l->illuminance;
+    }
+    addGroundLight(sky, air.groundAlbedo, down);
+    return sky;
+}
+
 FogSceneDesc fogSceneDesc(const PresetState& state, const SkyTable& sunSky, const SkyTable& moonSky) {
     // Without clouds the overcast changes nothing (and its sky irradiance is not needed).
     const bool clouds = prepareClouds(state).active();
@@ -276,11 +302,16 @@ FogSceneDesc fogSceneDesc(const PresetState& state, const SkyTable& sunSky, cons
     desc.volumes = state.volumes;
     desc.emitters = state.emitters;
     desc.mieAnisotropy = state.environment.atmosphere.mieAnisotropy;
-    desc.lights[0] = {state.sunLight.body.direction, state.sunLight.illuminanceSpace, sunSky.horizonRayleigh,
-                      sunSky.horizonMie, sunSky.horizonMultiple, skyHorizonRow(sunSky)};
+    desc.lights[0] = {state.sunLight.body.direction, state.sunLight.illuminanceSpace,
+                      sunSky.horizonRayleigh,        sunSky.horizonMie,
+                      sunSky.horizonMultiple,        skyHorizonRow(sunSky),
+                      state.sunLight.illuminance};
     desc.lights[1] = {state.moonLight.body.direction, state.moonLight.illuminanceSpace,
-                      moonSky.horizonRayleigh, moonSky.horizonMie, moonSky.horizonMultiple,
-                      skyHorizonRow(moonSky)};
+                      moonSky.horizonRayleigh,        moonSky.horizonMie,
+                      moonSky.horizonMultiple,        skyHorizonRow(moonSky),
+                      state.moonLight.illuminance};
+    desc.skyLight = fogSkyLight(state, sunSky, moonSky, overcast);
+    desc.directVisibility = fogDirectVisibility(overcast);
     return desc;
 }
 

@@ -86,6 +86,12 @@ struct PreparedLight {
     SkyTable horizon;  // the row (if any) and the sanitised averages (horizonSkySample)
 };
 
+/// A light's illuminance that reaches the fog, times the clouds' visibility.
+struct DirectLight {
+    glm::dvec3 direction{0.0, 1.0, 0.0};
+    glm::dvec3 illuminance{0.0};
+};
+
 /// Non-finite or negative entries of a table row become 0.
 void sanitiseRow(std::vector<float>& row) {
     for (float& x : row)
@@ -100,6 +106,11 @@ struct FogScene::Impl {
     detail::VolumeBvh bvh;
     std::array<PreparedLight, 2> lights;
     std::size_t lightCount = 0;
+    std::array<DirectLight, 2> direct;
+    std::size_t directCount = 0;
+    FogSkyLight skyLight;
+    double firstMoment = 0.0;
+    double horizonDistance = kFogHorizonDistance;
     double mieAnisotropy = 0.0;
     FogColourMode heightFogColourMode = FogColourMode::Sky;
     glm::dvec3 heightFogColour{1.0};
@@ -134,7 +145,22 @@ struct FogScene::Impl {
                 lights[lightCount++] = p;
             }
         }
+        const double visibility =
+            std::isfinite(desc.directVisibility) ? std::clamp(desc.directVisibility, 0.0, 1.0) : 1.0;
+        for (const FogLight& light : desc.lights) {
+            const glm::dvec3 e = detail::sanitiseColour(light.reaching) * visibility;
+            if (glm::dot(e, e) > 0.0) direct[directCount++] = {detail::safeDirection(light.direction), e};
+        }
+        skyLight.l0 = detail::sanitiseColour(desc.skyLight.l0);
+        for (int k = 0; k < 3; ++k) {
+            const glm::dvec3& l1 = desc.skyLight.l1[k];
+            skyLight.l1[k] = isFinite(l1) ? glm::clamp(l1, -1.0e30, 1.0e30) : glm::dvec3(0.0);
+        }
+        horizonDistance = (std::isfinite(desc.horizonDistance) && desc.horizonDistance > 0.0)
+                              ? desc.horizonDistance
+                              : kFogHorizonDistance;
         mieAnisotropy = std::isnan(desc.mieAnisotropy) ? 0.0 : std::clamp(desc.mieAnisotropy, -0.999, 0.999);
+        firstMoment = miePhaseFirstMoment(mieAnisotropy);
         heightFogColourMode = desc.heightFogColourMode;
         heightFogColour = detail::sanitiseColour(desc.heightFogColour);
         overcastCover = std::isfinite(desc.overcastCover) ? std::clamp(desc.overcastCover, 0.0, 1.0) : 0.0;
@@ -155,8 +181,28 @@ struct FogScene::Impl {
         }
     }
 
-    /// L_fog(v) for a unit (sanitised) direction.
-    glm::dvec3 fogColourUnit(const glm::dvec3& v) const {
+    /// L_fog(v, s) for a unit (sanitised) direction and a sight line of
+    /// length s (fog_light.hpp).
+    glm::dvec3 fogColourUnit(const glm::dvec3& v, double distance) const {
+        const double w = fogHorizonWeight(distance, horizonDistance);
+        glm::dvec3 colour(0.0);
+        if (w < 1.0) colour = (1.0 - w) * litColour(v);
+        if (w > 0.0) colour += w * horizonColour(v);
+        return colour;
+    }
+
+    /// L_lit(v): the lights that reach the fog through its phase, and the sky's bands.
+    glm::dvec3 litColour(const glm::dvec3& v) const {
+        glm::dvec3 colour = fogSkyInScatter(skyLight, firstMoment, v);
+        for (std::size_t k = 0; k < directCount; ++k) {
+            const double mu = std::clamp(glm::dot(v, direct[k].direction), -1.0, 1.0);
+            colour += direct[k].illuminance * miePhase(mu, mieAnisotropy);
+        }
+        return colour;
+    }
+
+    /// L_horizon(v): the sky behind far fog, under the overcast.
+    glm::dvec3 horizonColour(const glm::dvec3& v) const {
         glm::dvec3 colour(0.0);
         for (std::size_t k = 0; k < lightCount; ++k) {
             const PreparedLight& l = lights[k];
@@ -305,7 +351,7 @@ struct FogScene::Impl {
             needFogColour = needFogColour || hits.size() > 0;
         }
         const glm::dvec3 fogColour =
-            needFogColour ? fogColourUnit(detail::safeDirection(delta)) : glm::dvec3(0.0);
+            needFogColour ? fogColourUnit(detail::safeDirection(delta), length) : glm::dvec3(0.0);
 
         double transmittance = std::exp(-tauGlobal);
         glm::dvec3 inScatter =
@@ -362,8 +408,8 @@ void FogScene::queryBatch(const FogSegment* segments, FogQueryResult* results, s
     }
 }
 
-glm::dvec3 FogScene::fogColour(const glm::dvec3& viewDirection) const {
-    return impl_->fogColourUnit(detail::safeDirection(viewDirection));
+glm::dvec3 FogScene::fogColour(const glm::dvec3& viewDirection, double distance) const {
+    return impl_->fogColourUnit(detail::safeDirection(viewDirection), std::isnan(distance) ? 0.0 : distance);
 }
 
 const FogSceneDesc& FogScene::desc() const { return impl_->desc; }

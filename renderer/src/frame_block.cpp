@@ -7,6 +7,7 @@
 #include <aerial/evaluate.hpp>
 #include <aerial/exposure.hpp>
 #include <aerial/finite.hpp>
+#include <aerial/fog_light.hpp>
 #include <aerial/night_sky.hpp>
 #include <aerial/sky.hpp>
 #include <aerial/stars.hpp>
@@ -160,6 +161,24 @@ FrameBlock makeFrameBlock(const Camera& camera, const CameraFrame& view, const P
         std::isfinite(overcast.horizonCover) ? std::clamp(overcast.horizonCover, 0.0, 1.0) : 0.0);
     fb.overcastRadiance = toVec3(deck);
     fb.overcastSkyCover = static_cast<float>(skyCover);
+
+    // The light that reaches the fog (aerial/fog_light.hpp), as FogScene
+    // takes it (fogSceneDesc): the same core functions of the same inputs.
+    {
+        const SkyTable empty;
+        const FogSkyLight fogSky =
+            fogSkyLight(state, in.sun.valid && in.sun.table ? *in.sun.table : empty,
+                        in.moon.valid && in.moon.table ? *in.moon.table : empty, in.overcast);
+        fb.fogSkyL0 = toVec3(colourOf(fogSky.l0));
+        const auto band = [](const glm::dvec3& v) {
+            return isFinite(v) ? toVec3(glm::clamp(v, -1e30, 1e30)) : Vec3{};
+        };
+        fb.fogSkyL1x = band(fogSky.l1[0]);
+        fb.fogSkyL1y = band(fogSky.l1[1]);
+        fb.fogSkyL1z = band(fogSky.l1[2]);
+        fb.fogDirectVisibility = static_cast<float>(fogDirectVisibility(in.overcast));
+        fb.fogHorizonDistance = static_cast<float>(kFogHorizonDistance);
+    }
 
     // Without the global fog pass, the transparent meshes and particles get
     // no global fog either (they read the same density).

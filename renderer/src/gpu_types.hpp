@@ -117,6 +117,18 @@ struct FrameBlock {
     float sunTableCapStrength = 0.0f;
     float moonTableCapCurvature = 0.0f;
     float moonTableCapStrength = 0.0f;
+    // The light that reaches the fog (aerial/fog_light.hpp): the sky's two
+    // spherical-harmonic bands a_0, a_1 (fogSkyLight), the clouds' mean
+    // visibility of the sun and moon (fogDirectVisibility) and D of the
+    // blend into the horizon [m].
+    Vec3 fogSkyL0;
+    float fogHorizonDistance = 0.0f;
+    Vec3 fogSkyL1x;
+    float fogDirectVisibility = 0.0f;
+    Vec3 fogSkyL1y;
+    float padFogSkyL1y = 0.0f;
+    Vec3 fogSkyL1z;
+    float padFogSkyL1z = 0.0f;
 };
 static_assert(offsetof(FrameBlock, clipFromWorld) == 0);
 static_assert(offsetof(FrameBlock, eye) == 64);
@@ -179,7 +191,13 @@ static_assert(offsetof(FrameBlock, overcastRadiance) == 624);
 static_assert(offsetof(FrameBlock, overcastSkyCover) == 636);
 static_assert(offsetof(FrameBlock, sunTableCapCurvature) == 640);
 static_assert(offsetof(FrameBlock, moonTableCapStrength) == 652);
-static_assert(sizeof(FrameBlock) == 656);
+static_assert(offsetof(FrameBlock, fogSkyL0) == 656);
+static_assert(offsetof(FrameBlock, fogHorizonDistance) == 668);
+static_assert(offsetof(FrameBlock, fogSkyL1x) == 672);
+static_assert(offsetof(FrameBlock, fogDirectVisibility) == 684);
+static_assert(offsetof(FrameBlock, fogSkyL1y) == 688);
+static_assert(offsetof(FrameBlock, fogSkyL1z) == 704);
+static_assert(sizeof(FrameBlock) == 720);
 
 /// shaders/common/volume.glsl, VolumeBlock (binding 1): one fog volume.
 struct VolumeBlock {
@@ -355,8 +373,8 @@ struct FroxelBlock {
     std::int32_t gridSize[3] = {0, 0, 0};  ///< froxels x, y, slices
     std::int32_t volumeCount = 0;          ///< VolumeBlocks in the froxel volume buffer
     float pixelsPerFroxel = 8.0f;
-    float z0 = 4.0f;      ///< [m]
-    float farM = 0.0f;    ///< [m]
+    float z0 = 4.0f;        ///< [m]
+    float farM = 0.0f;      ///< [m]
     float logScale = 0.0f;  ///< ln(1 + farM / z0)
     float castIsMoon = 0.0f;
     float sceneShadows = 0.0f;

@@ -1,6 +1,8 @@
-// common/atmosphere.glsl — phase functions, the sky's fog colour and the
-// analytic exponential-fog integral, mirroring the CPU reference in core/
-// (core/src/atmosphere.cpp, core/src/height_fog.cpp, core/src/fog_query.cpp).
+// common/atmosphere.glsl — phase functions, the fog's colour (the light
+// that reaches it blended into the sky's horizon far away, the model of
+// core/include/aerial/fog_light.hpp) and the analytic exponential-fog
+// integral, mirroring the CPU reference in core/ (core/src/atmosphere.cpp,
+// core/src/height_fog.cpp, core/src/fog_light.cpp, core/src/fog_query.cpp).
 //
 // Papers: Nishita et al. 1993 (single scattering; Rayleigh and
 // Cornette-Shanks phase functions), Wenzel 2006 section 6.4 (analytic
@@ -154,26 +156,69 @@ float overcastCoverTowards(vec3 r) {
     return mix(frame.overcastCover, frame.overcastSkyCover, smoothstep(0.0, 0.5, r.y));
 }
 
-/// The sky's fog colour in direction v (unit) (FogScene::fogColour): the
-/// clear sky's under the overcast.
-vec3 skyFogColourFrom(HorizonSkies h, vec3 v) { return underOvercast(clearSkyFogColourFrom(h, v)); }
+/// The horizon's colour behind far fog in direction v (unit): the clear
+/// sky's under the overcast (L_horizon of aerial/fog_light.hpp).
+vec3 horizonFogColourFrom(HorizonSkies h, vec3 v) { return underOvercast(clearSkyFogColourFrom(h, v)); }
 
-vec3 skyFogColour(vec3 v) { return skyFogColourFrom(horizonSkies(v), v); }
+/// k_1(g), the Cornette-Shanks phase's mean cosine (miePhaseFirstMoment).
+float miePhaseFirstMoment(float g) {
+    g = clamp(g, -0.999, 0.999);
+    return 3.0 * g * (4.0 + g * g) / (5.0 * (2.0 + g * g));
+}
 
-/// Colour of fog in a colour mode (0 sky, 1 tinted, 2 custom; FogColourMode).
-vec3 fogColourFor(float mode, vec3 colour, vec3 v) {
+/// The sky dome's light scattered by fog of anisotropy g towards -v:
+/// max(a_0 + k_1(g) a_1 . v, 0) (fogSkyInScatter).
+vec3 fogSkyInScatter(vec3 v, float g) {
+    vec3 l1 = frame.fogSkyL1x * v.x + frame.fogSkyL1y * v.y + frame.fogSkyL1z * v.z;
+    return max(frame.fogSkyL0 + miePhaseFirstMoment(g) * l1, vec3(0.0));
+}
+
+/// One light's illuminance that reaches the fog (its <light>Illuminance)
+/// through the fog's phase, without the clouds' visibility.
+vec3 fogDirectLight(vec3 v, float g, bool moon) {
+    return moon ? frame.moonIlluminance * miePhase(dot(v, frame.moonDirection), g)
+                : frame.sunIlluminance * miePhase(dot(v, frame.sunDirection), g);
+}
+
+/// L_lit(v) (fog_light.hpp): both lights through the phase, times the
+/// clouds' mean visibility, plus the sky dome's light.
+vec3 litFogColour(vec3 v, float g) {
+    return frame.fogDirectVisibility * (fogDirectLight(v, g, false) + fogDirectLight(v, g, true)) +
+           fogSkyInScatter(v, g);
+}
+
+/// w(s) = 1 - exp(-s / D), the horizon's share of the fog's colour at
+/// distance s [m] (fogHorizonWeight).
+float fogHorizonWeight(float s) {
+    return s > 0.0 ? oneMinusExp(s / max(frame.fogHorizonDistance, 1e-6)) : 0.0;
+}
+
+/// The fog colour L_fog(v, s) of colour mode "sky" for a sight line of
+/// length s [m] in direction v (unit) (FogScene::fogColour):
+/// (1 - w) L_lit(v) + w L_horizon(v).
+vec3 skyFogColour(vec3 v, float s) {
+    float w = fogHorizonWeight(s);
+    vec3 colour = vec3(0.0);
+    if (w < 1.0) colour = (1.0 - w) * litFogColour(v, frame.mieAnisotropy);
+    if (w > 0.0) colour += w * horizonFogColourFrom(horizonSkies(v), v);
+    return colour;
+}
+
+/// Colour of fog in a colour mode (0 sky, 1 tinted, 2 custom; FogColourMode)
+/// for a sight line of length s [m].
+vec3 fogColourFor(float mode, vec3 colour, vec3 v, float s) {
     if (mode > 1.5) return colour;
-    vec3 sky = skyFogColour(v);
+    vec3 sky = skyFogColour(v, s);
     return mode > 0.5 ? colour * sky : sky;
 }
 
-/// The fog between the eye and a point, ready to composite (the contract of
-/// fog_query.hpp): rgb = S = L_fog(v) (1 - T), with the fog colour of
-/// `colourMode` (fogColourFor) capped at frame.radianceCap, a = T = exp(-tau).
-/// Radiance L behind the fog becomes L T + S; a fog pass outputs it as is,
-/// blended with glBlendFunc(GL_ONE, GL_SRC_ALPHA).
-vec4 fogInScatterTransmittance(float colourMode, vec3 colour, vec3 v, float tau) {
-    vec3 fogColour = min(fogColourFor(colourMode, colour, v), vec3(frame.radianceCap));
+/// The fog between the eye and a point at distance s [m], ready to composite
+/// (the contract of fog_query.hpp): rgb = S = L_fog(v, s) (1 - T), with the
+/// fog colour of `colourMode` (fogColourFor) capped at frame.radianceCap,
+/// a = T = exp(-tau). Radiance L behind the fog becomes L T + S; a fog pass
+/// outputs it as is, blended with glBlendFunc(GL_ONE, GL_SRC_ALPHA).
+vec4 fogInScatterTransmittance(float colourMode, vec3 colour, vec3 v, float s, float tau) {
+    vec3 fogColour = min(fogColourFor(colourMode, colour, v, s), vec3(frame.radianceCap));
     return vec4(fogColour * oneMinusExp(tau), exp(-tau));
 }
 
@@ -188,8 +233,9 @@ float globalFogOpticalDepth(vec3 d) {
 /// `view` = point - eye, optical depth tau; at the eye itself the colour is
 /// taken along the view direction.
 vec4 globalFogTowards(vec3 view, float tau) {
-    return fogInScatterTransmittance(frame.fogColourMode, frame.fogColour,
-                                     length(view) > 0.0 ? normalize(view) : frame.forward, tau);
+    float s = length(view);
+    return fogInScatterTransmittance(frame.fogColourMode, frame.fogColour, s > 0.0 ? normalize(view) : frame.forward,
+                                     s, tau);
 }
 
 #endif

@@ -57,6 +57,14 @@
 //   starNitsPerUnit     cd/m^2 per radiance unit (aerial/exposure.hpp)
 //   starDarkLimit       naked-eye limiting magnitude on a black sky
 //                       (aerial::limitingMagnitude(0), aerial/stars.hpp)
+//   fogSkyL0, fogSkyL1x/y/z  the light reaching the fog from the sky dome,
+//                       the ground and the night sky: its spherical-harmonic
+//                       bands a_0, a_1 (aerial/fog_light.hpp, fogSkyLight)
+//   fogDirectVisibility the clouds' mean visibility of the sun and moon for
+//                       the fog (fogDirectVisibility); the fog's direct light
+//                       is <light>Illuminance times it
+//   fogHorizonDistance  D [m]: fog at distance s takes the horizon's colour
+//                       with weight 1 - exp(-s / D)
 //
 // Linear depth (the frame's R32F texture): normalised linear eye depth,
 // z_view / far, 0 at the camera and 1 at the far plane (sky pixels hold 1),
@@ -145,6 +153,14 @@ layout(std140, binding = 0) uniform FrameBlock {
     float sunTableCapStrength;
     float moonTableCapCurvature;
     float moonTableCapStrength;
+    vec3 fogSkyL0;
+    float fogHorizonDistance;
+    vec3 fogSkyL1x;
+    float fogDirectVisibility;
+    vec3 fogSkyL1y;
+    float padFogSkyL1y;
+    vec3 fogSkyL1z;
+    float padFogSkyL1z;
 } frame;
 
 // Ray from the eye to the far plane at normalised device coordinates ndc

@@ -55,45 +55,22 @@ vec3 froxelFarRay(ivec2 ij) {
     return farRayAtNdc(pixel * frame.viewportTexel * 2.0 - 1.0);
 }
 
-/// The fog colour of direction v split into the part the shadows dim (the
-/// casting light's single scattering, phase applied) and the whole
-/// (skyFogColour, capped as fogInScatterTransmittance); with the custom
-/// phase the casting light's Mie part takes the fog's anisotropy.
-void froxelFogColours(vec3 v, out vec3 shadowable, out vec3 all) {
-    HorizonSkies h = horizonSkies(v);
-    vec3 sky = clearSkyFogColourFrom(h, v);
-    float g = frame.mieAnisotropy;
-    vec3 light, rayleigh, mie;
-    float mu;
-    if (froxel.castIsMoon > 0.5) {
-        mu = dot(v, frame.moonDirection);
-        light = frame.moonIlluminanceSpace;
-        rayleigh = h.moonRayleigh;
-        mie = h.moonMie;
-    } else {
-        mu = dot(v, frame.sunDirection);
-        light = frame.sunIlluminanceSpace;
-        rayleigh = h.sunRayleigh;
-        mie = h.sunMie;
-    }
-    vec3 single = light * (rayleighPhase(mu) * rayleigh + miePhase(mu, g) * mie);
-    if (froxel.customPhase > 0.5) {  // the fog's own anisotropy in place of the atmosphere's
-        vec3 custom = light * (rayleighPhase(mu) * rayleigh + miePhase(mu, froxel.anisotropy) * mie);
-        sky = max(sky - single, vec3(0.0)) + custom;
-        single = custom;
-    }
-    // The cloud deck (underOvercast): with the cloud shadow in the grid the
-    // casting light's single scattering is dimmed per froxel, and the deck
-    // replaces only the rest of the sky's light; without it both are blended,
-    // as in the analytic fog's colour.
-    if (frame.overcastCover > 0.0) {
-        if (froxel.cloudShadows > 0.5) {
-            sky = underOvercast(max(sky - single, vec3(0.0))) + single;
-        } else {
-            sky = underOvercast(sky);
-            single *= 1.0 - frame.overcastCover;
-        }
-    }
+/// The fog colour L_fog(v, s) of a sight line of length s [m] in direction v
+/// (aerial/fog_light.hpp; skyFogColour) split into the part the shadows dim
+/// (the casting light's share of the lit fog, (1 - w) L_cast P(v.l, g)) and
+/// the whole (capped as fogInScatterTransmittance). With the custom phase
+/// the lit fog takes the fog's own anisotropy. With the cloud shadow in the
+/// grid the casting light is dimmed per froxel (V) instead of by the clouds'
+/// mean visibility.
+void froxelFogColours(vec3 v, float s, out vec3 shadowable, out vec3 all) {
+    float g = froxel.customPhase > 0.5 ? froxel.anisotropy : frame.mieAnisotropy;
+    bool moon = froxel.castIsMoon > 0.5;
+    float w = fogHorizonWeight(s);
+    vec3 castLight = fogDirectLight(v, g, moon) * (froxel.cloudShadows > 0.5 ? 1.0 : frame.fogDirectVisibility);
+    vec3 lit = castLight + frame.fogDirectVisibility * fogDirectLight(v, g, !moon) + fogSkyInScatter(v, g);
+    vec3 sky = (1.0 - w) * lit;
+    if (w > 0.0) sky += w * horizonFogColourFrom(horizonSkies(v), v);
+    vec3 single = (1.0 - w) * castLight;
     vec3 capped = min(sky, vec3(frame.radianceCap));
     vec3 share = vec3(1.0);
     for (int c = 0; c < 3; ++c) share[c] = sky[c] > 0.0 ? capped[c] / sky[c] : 0.0;
@@ -113,7 +90,7 @@ bool froxelsActive() { return froxel.gridSize.x > 0; }
 /// the ray eye + t farRay of the pixel at fragCoord, ready to composite as
 /// fogInScatterTransmittance's answer (rgb = S, a = T: L <- L T + S): the
 /// integrated grid at the pixel's screen position and depth (trilinear),
-/// with the fog colours of the pixel's own direction,
+/// with the fog colours of the pixel's own direction and distance,
 ///   S = LitSky x L_cast(v) + Sky x (L_fog(v) - L_cast(v)) + Own,
 /// and beyond the grid's far depth the global height fog in closed form
 /// (unshadowed), behind the grid. The opaque pixels (froxel_apply.glsl),
@@ -128,7 +105,8 @@ vec4 froxelFog(vec2 fragCoord, float z, vec3 farRay) {
     vec3 sky = texture(uFroxelSky, uvw).rgb;
     vec3 own = texture(uFroxelOwn, uvw).rgb;
     vec3 shadowable, all;
-    froxelFogColours(v, shadowable, all);
+    float sightLength = z / frame.farDistance * length(farRay);  // to the point, for the horizon blend
+    froxelFogColours(v, sightLength, shadowable, all);
     vec3 inScatter = litSky.rgb * shadowable + sky * max(all - shadowable, vec3(0.0)) + own;
     float transmittance = clamp(litSky.a, 0.0, 1.0);
     if (z > froxel.farM) {  // the global fog behind the grid, in closed form
@@ -137,7 +115,7 @@ vec4 froxelFog(vec2 fragCoord, float z, vec3 farRay) {
         vec3 d = (z / frame.farDistance - start) * farRay;
         float tau = exponentialOpticalDepth(froxel.globalFog * frame.fogDensity, frame.fogFalloff,
                                             o.y - frame.fogBaseHeight, d.y, length(d));
-        vec4 rest = fogInScatterTransmittance(frame.fogColourMode, frame.fogColour, v, tau);
+        vec4 rest = fogInScatterTransmittance(frame.fogColourMode, frame.fogColour, v, sightLength, tau);
         inScatter += transmittance * rest.rgb;
         transmittance *= rest.a;
     }

@@ -429,6 +429,29 @@ class Fog(unittest.TestCase):
         self.assertEqual(entries, sorted(entries, reverse=True))
         self.assertEqual(set(r["lights"]), {"sun", "moon"})
 
+    def test_twilight_valley_fog_is_lit_by_what_reaches_it(self):
+        # Sun 11 deg below the horizon: the valley fog over 100 m is lit by
+        # the sky dome (aerial/fog_light.hpp), not painted with the glowing
+        # horizon towards the set sun (that made it 54x brighter towards the
+        # sun's azimuth than away from it).
+        def luminance(rgb):
+            return 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2]
+
+        def level(azimuth):
+            return run_json(self, "fog", preset("foggy_valley_morning"), "--time", "05:30", "--from=0,2,0",
+                            "--to=%.6f,2,%.6f" % (100 * math.sin(azimuth), -100 * math.cos(azimuth)))
+
+        sun = level(0.0)["lights"]["sun"]["direction"]
+        self.assertLess(sun[1], -0.17)
+        towards_azimuth = math.atan2(sun[0], -sun[2])
+        r = level(towards_azimuth)
+        towards = luminance(r["in_scatter_rgb"])
+        away = luminance(level(towards_azimuth + math.pi)["in_scatter_rgb"])
+        self.assertGreater(away, 0.0)
+        self.assertLessEqual(towards / away, 3.0, (towards, away))
+        # 100 m is 2% of the way to the horizon's colour (w = 1 - exp(-s / 5 km)).
+        self.assertAlmostEqual(r["global_fog"]["horizon_weight"], 1.0 - math.exp(-100.0 / 5000.0), delta=1e-9)
+
 
 class BakeRadiance(unittest.TestCase):
     """The per-step RGB radiance EXR: a sky texture any engine reads."""

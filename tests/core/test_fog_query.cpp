@@ -76,7 +76,8 @@ double referenceMiePhase(double mu, double g) {
            ((2.0 + g * g) * std::pow(1.0 + g * g - 2.0 * g * mu, 1.5));
 }
 
-glm::dvec3 referenceFogColour(const FogSceneDesc& desc, const glm::dvec3& v) {
+/// The far fog's colour: the lights' horizons (no horizon row here).
+glm::dvec3 referenceHorizonColour(const FogSceneDesc& desc, const glm::dvec3& v) {
     glm::dvec3 colour(0.0);
     for (const aerial::FogLight& light : desc.lights) {
         const double mu = glm::dot(v, glm::normalize(light.direction));
@@ -84,6 +85,23 @@ glm::dvec3 referenceFogColour(const FogSceneDesc& desc, const glm::dvec3& v) {
                                        referenceMiePhase(mu, desc.mieAnisotropy) * light.horizonMie);
     }
     return colour;
+}
+
+/// L_fog(v, s) of fog_light.hpp written out: the lit fog (the reaching
+/// light through the phase, the sky's bands with the phase's mean cosine
+/// 3 g (4 + g^2) / (5 (2 + g^2))) blended into the horizon by 1 - exp(-s / D).
+glm::dvec3 referenceFogColour(const FogSceneDesc& desc, const glm::dvec3& v, double distance) {
+    const double g = desc.mieAnisotropy;
+    glm::dvec3 lit = desc.skyLight.l0 +
+                     3.0 * g * (4.0 + g * g) / (5.0 * (2.0 + g * g)) *
+                         (desc.skyLight.l1[0] * v.x + desc.skyLight.l1[1] * v.y + desc.skyLight.l1[2] * v.z);
+    lit = glm::max(lit, glm::dvec3(0.0));
+    for (const aerial::FogLight& light : desc.lights) {
+        const double mu = glm::dot(v, glm::normalize(light.direction));
+        lit += desc.directVisibility * light.reaching * referenceMiePhase(mu, g);
+    }
+    const double w = 1.0 - std::exp(-distance / desc.horizonDistance);
+    return (1.0 - w) * lit + w * referenceHorizonColour(desc, v);
 }
 
 struct ReferenceResult {
@@ -98,7 +116,7 @@ ReferenceResult referenceQuery(const FogSceneDesc& desc, const glm::dvec3& from,
     const glm::dvec3 delta = to - from;
     const double length = glm::length(delta);
     const glm::dvec3 view = length > 0.0 ? delta / length : glm::dvec3(0, 1, 0);
-    const glm::dvec3 fogColour = referenceFogColour(desc, view);
+    const glm::dvec3 fogColour = referenceFogColour(desc, view, length);
 
     std::vector<VolumeContribution> hits;
     for (std::size_t i = 0; i < desc.volumes.size(); ++i) {
@@ -180,10 +198,18 @@ public:
                           {3.0, 2.8, 2.5},
                           {0.02, 0.05, 0.12},
                           {0.04, 0.04, 0.04}};
+        desc.lights[0].reaching = {2.0, 1.7, 1.2};
         desc.lights[1] = {glm::normalize(glm::dvec3(-0.5, 0.2, 0.6)),
                           {0.01, 0.01, 0.02},
                           {0.02, 0.05, 0.12},
                           {0.04, 0.04, 0.04}};
+        desc.lights[1].reaching = {0.004, 0.004, 0.008};
+        desc.skyLight.l0 = {0.03, 0.05, 0.09};
+        desc.skyLight.l1[0] = {0.01, 0.012, 0.015};
+        desc.skyLight.l1[1] = {0.02, 0.03, 0.06};
+        desc.skyLight.l1[2] = {-0.01, -0.01, -0.02};
+        desc.directVisibility = uniform(0.3, 1.0);
+        desc.horizonDistance = uniform(500.0, 5000.0);
         std::normal_distribution<double> n(0.0, 1.0);
         for (std::size_t i = 0; i < volumeCount; ++i) {
             FogVolume v;
@@ -429,12 +455,12 @@ TEST(FogQuery, WithoutVolumesEqualsGlobalFogAlone) {
         const glm::dvec3 delta = to - from;
         const double tau = aerial::heightFogOpticalDepth(desc.heightFog, from, delta);
         const double t = std::exp(-tau);
-        const glm::dvec3 colour = referenceFogColour(desc, glm::normalize(delta));
+        const glm::dvec3 colour = referenceFogColour(desc, glm::normalize(delta), glm::length(delta));
         const FogQueryResult r = scene.query(from, to);
         // 1e-12 relative: same formula, independent phase functions.
         EXPECT_TRUE(near(r.transmittance, glm::dvec3(t), 1e-12));
         EXPECT_TRUE(near(r.inScatter, colour * (1.0 - t), 1e-12));
-        EXPECT_TRUE(near(scene.fogColour(delta), colour, 1e-12));
+        EXPECT_TRUE(near(scene.fogColour(delta, glm::length(delta)), colour, 1e-12));
         EXPECT_EQ(r.globalOpticalDepth, tau);
     }
 }
@@ -452,13 +478,15 @@ TEST(FogQuery, GlobalFogColourModes) {
             const auto [from, to] = maker.segment(desc, q);
             const glm::dvec3 delta = to - from;
             const double t = std::exp(-aerial::heightFogOpticalDepth(desc.heightFog, from, delta));
-            const glm::dvec3 sky = referenceFogColour(desc, glm::normalize(delta));
+            const glm::dvec3 sky = referenceFogColour(desc, glm::normalize(delta), glm::length(delta));
             const glm::dvec3 colour = mode == FogColourMode::Sky      ? sky
                                       : mode == FogColourMode::Tinted ? tint * sky
                                                                       : tint;
             const FogQueryResult r = scene.query(from, to);
             EXPECT_TRUE(near(r.inScatter, colour * (1.0 - t), 1e-12)) << int(mode);
-            EXPECT_TRUE(near(scene.fogColour(delta), sky, 1e-12));  // always the sky's
+            EXPECT_TRUE(near(scene.fogColour(delta, glm::length(delta)), sky, 1e-12));  // always the sky's
+            EXPECT_TRUE(
+                near(scene.fogColour(delta), referenceHorizonColour(desc, glm::normalize(delta)), 1e-12));
         }
     }
 }

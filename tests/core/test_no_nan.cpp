@@ -210,6 +210,12 @@ TEST(NoNaN, FogSceneQueries) {
                           glm::dvec3(s.pick(0, 1))};
         desc.lights[1] = {glm::dvec3(0, 0, 0), glm::dvec3(s.pick(0, 1)), glm::dvec3(0.1), glm::dvec3(0.1)};
         desc.mieAnisotropy = s.pick(-0.999, 0.999, false);
+        desc.lights[0].reaching = glm::dvec3(s.pick(0, 20), s.pick(0, 20), s.pick(0, 20));
+        desc.lights[1].reaching = glm::dvec3(s.pick(0, 1));
+        desc.skyLight.l0 = glm::dvec3(s.pick(0, 1), s.pick(0, 1), s.pick(0, 1));
+        for (glm::dvec3& l1 : desc.skyLight.l1) l1 = glm::dvec3(s.pick(-1, 1), s.pick(-1, 1), s.pick(-1, 1));
+        desc.directVisibility = s.pick(0, 1);
+        desc.horizonDistance = s.pick(0, 1e4);
         const aerial::FogScene fog(desc);
         std::vector<aerial::VolumeContribution> parts;
         std::vector<aerial::FogSegment> batch;
@@ -226,6 +232,7 @@ TEST(NoNaN, FogSceneQueries) {
             for (const aerial::VolumeContribution& p : parts)
                 ASSERT_TRUE(finite(p.opticalDepth) && finite(p.colour));
             ASSERT_TRUE(finite(fog.fogColour(s.vec(-1, 1))));
+            ASSERT_TRUE(finite(fog.fogColour(s.vec(-1, 1), s.pick(0, 1e5))));
         }
         std::vector<aerial::FogQueryResult> results(batch.size());
         fog.queryBatch(batch.data(), results.data(), batch.size());

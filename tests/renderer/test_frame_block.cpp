@@ -429,7 +429,13 @@ TEST(FrameBlock, Std140OffsetsMatchTheGlslBlocks) {
                   AERIAL_OFFSET(FrameBlock, moonTableShadowShare),
                   AERIAL_OFFSET(FrameBlock, groundAmbient),
                   AERIAL_OFFSET(FrameBlock, overcastRadiance),
-                  AERIAL_OFFSET(FrameBlock, overcastSkyCover)},
+                  AERIAL_OFFSET(FrameBlock, overcastSkyCover),
+                  AERIAL_OFFSET(FrameBlock, fogSkyL0),
+                  AERIAL_OFFSET(FrameBlock, fogHorizonDistance),
+                  AERIAL_OFFSET(FrameBlock, fogSkyL1x),
+                  AERIAL_OFFSET(FrameBlock, fogDirectVisibility),
+                  AERIAL_OFFSET(FrameBlock, fogSkyL1y),
+                  AERIAL_OFFSET(FrameBlock, fogSkyL1z)},
                  sizeof(FrameBlock));
     expectLayout(
         "common/volume.glsl", "VolumeBlock",

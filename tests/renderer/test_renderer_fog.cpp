@@ -56,12 +56,14 @@ TEST_F(FogVsCpu, GlobalHeightFog) {
 
 // The sun 3 deg below the horizon: the horizon row behind the fog varies by
 // orders of magnitude in azimuth (the glow towards the sun, the earth's
-// shadow opposite), and the fog takes the sky behind it (horizonSkySample).
-// Looking towards the sun, across and away, the GPU matches the CPU.
+// shadow opposite); far fog takes the sky behind it (horizonSkySample),
+// near fog the light that reaches it (aerial/fog_light.hpp). Looking
+// towards the sun, across and away, the GPU matches the CPU.
 class FogVsCpuAtTwilight : public FogVsCpu {
 protected:
     FogVsCpuAtTwilight()
-        : FogVsCpu(glm::normalize(glm::dvec3(0.6, -0.0524, -0.8)), glm::normalize(glm::dvec3(-0.6, 0.2, 0.5))) {}
+        : FogVsCpu(glm::normalize(glm::dvec3(0.6, -0.0524, -0.8)),
+                   glm::normalize(glm::dvec3(-0.6, 0.2, 0.5))) {}
 };
 
 TEST_F(FogVsCpuAtTwilight, GlobalFogTakesTheSkyBehindIt) {
@@ -70,9 +72,10 @@ TEST_F(FogVsCpuAtTwilight, GlobalFogTakesTheSkyBehindIt) {
     // A set sun's sky is dim: brighter light makes the in-scattering as large
     // as the scene behind it, so the tolerance (relative to the larger) bites.
     air.sunLight.illuminanceSpace *= 30.0;
+    air.sunLight.illuminance = glm::dvec3(0.0);  // below the horizon nothing of it reaches the fog
     const double sunAzimuth = std::atan2(0.6, 0.8);
     const FogScene scene(aerial::fogSceneDesc(air, sky_->sun, sky_->moon));
-    glm::dvec3 towards(0.0), away(0.0);
+    glm::dvec3 towards(0.0), away(0.0), nearTowards(0.0), nearAway(0.0);
     for (double turn : {0.0, 0.5 * kPi, kPi}) {
         const double az = sunAzimuth + turn;
         const glm::dvec3 target(100.0 * std::sin(az), 18.0, -100.0 * std::cos(az));
@@ -82,9 +85,15 @@ TEST_F(FogVsCpuAtTwilight, GlobalFogTakesTheSkyBehindIt) {
         EXPECT_LT(c.maxError, kTolerance) << name;
         const glm::dvec3 level(std::sin(az), 0.0, -std::cos(az));
         (turn == 0.0 ? towards : away) = scene.fogColour(level);
+        (turn == 0.0 ? nearTowards : nearAway) = scene.fogColour(level, 100.0);
     }
-    // The point of it: towards the glow the fog is far brighter than opposite.
+    // The point of it: towards the glow far fog is far brighter than
+    // opposite; fog 100 m away, lit by the sky dome (brighter on the sun's
+    // side: its forward scattering), much less so.
+    std::printf("[ measured ] twilight fog, red towards / away the sun: far %.3g, 100 m %.3g\n",
+                towards.r / away.r, nearTowards.r / nearAway.r);
     EXPECT_GT(towards.r, 10.0 * away.r);
+    EXPECT_LT(nearTowards.r / nearAway.r, 0.25 * towards.r / away.r);
 }
 
 TEST_F(FogVsCpu, GlobalFogHorizontalRaysAndUniformFog) {

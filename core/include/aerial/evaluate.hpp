@@ -128,11 +128,26 @@ struct OvercastLight {
 };
 OvercastLight overcastLight(const PresetState& state, const SkyTable& sunSky, const SkyTable& moonSky);
 
+/// The light of the sky dome at the fog of a state (fog_light.hpp): the
+/// bands of both sky tables (the lights' illuminance above the atmosphere,
+/// the atmosphere's anisotropy) and the airglow, times 1 - skyCover, plus
+/// the deck's underside (overcast.radiance) times skyCover, plus the
+/// ground's reflection (the atmosphere's groundAlbedo) of that sky's and
+/// the lights' irradiance (LightState::illuminance times the zenith cosine,
+/// times 1 - skyCover). The renderer's fog and FogScene both take it from here.
+FogSkyLight fogSkyLight(const PresetState& state, const SkyTable& sunSky, const SkyTable& moonSky,
+                        const OvercastLight& overcast);
+/// The clouds' mean visibility of the sun and the moon for the fog: 1 -
+/// overcast.overcast.skyCover (1 without clouds).
+double fogDirectVisibility(const OvercastLight& overcast);
+
 /// The fog of a state for CPU fog queries (FogScene): global fog with the
 /// preset's fog colour mode, volumes, emitters (flashes applied), the two
-/// fog lights — direction, illuminance above the atmosphere and the horizon
-/// averages of the sky tables solved for this state's sun and moon — and
-/// the overcast (overcastLight: horizonCover and the deck's radiance).
+/// fog lights — direction, illuminance above the atmosphere, the horizon
+/// averages of the sky tables solved for this state's sun and moon and the
+/// illuminance that reaches the fog — the sky's light (fogSkyLight,
+/// fogDirectVisibility) and the overcast (overcastLight: horizonCover and
+/// the deck's radiance).
 FogSceneDesc fogSceneDesc(const PresetState& state, const SkyTable& sunSky, const SkyTable& moonSky);
 /// The same with the overcast already computed (overcastLight of the same state and tables).
 FogSceneDesc fogSceneDesc(const PresetState& state, const SkyTable& sunSky, const SkyTable& moonSky,

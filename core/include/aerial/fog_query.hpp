@@ -4,8 +4,11 @@
 // Usage:
 //   aerial::FogSceneDesc desc;
 //   desc.heightFog = fog;  desc.volumes = volumes;  desc.emitters = emitters;
-//   desc.lights[0] = {sunDir, sunIlluminance, sky.horizonRayleigh, sky.horizonMie, sky.horizonMultiple};
+//   desc.lights[0] = {sunDir, sunIlluminance, sky.horizonRayleigh, sky.horizonMie, sky.horizonMultiple,
+//                     skyHorizonRow(sky), sunIlluminanceReachingTheViewer};
+//   desc.skyLight = ...;                             // fog_light.hpp
 //   aerial::FogScene scene(desc);                    // builds the BVH once
+//   // (aerial::fogSceneDesc in evaluate.hpp fills all of it from a preset's state)
 //   aerial::FogQueryResult r = scene.query(camera, glassPane);
 //   // shade the pane: L = L_pane * r.transmittance + r.inScatter
 //
@@ -14,13 +17,16 @@
 //      segment, the global fog and every add volume inside the union of
 //      their chords (overlaps removed once); they add nothing themselves;
 //   1. global fog over the whole segment (less the subtracted parts):
-//        L <- L T_g + L_fog(v) (1 - T_g)
+//        L <- L T_g + L_fog(v, s) (1 - T_g)
+//      with L_fog the light that reaches the fog blended into the sky's
+//      horizon with the segment's length s (fog_light.hpp, the model);
 //   2. every add volume the segment crosses (a concave mesh volume once,
 //      its chords' optical depths summed), back to front (by the entry
 //      distance of its clipped segment, farthest first; equal entries by
 //      ascending index, i.e. the lower index is composited first, behind):
 //        L <- L T_v + C_v(v) (1 - T_v)
-//      where C_v is the volume's colour (see FogColourMode);
+//      where C_v is the volume's colour (see FogColourMode; colour mode
+//      "sky" is L_fog(v, s) of the same segment);
 //   3. every emitter adds its closed-form in-scatter (additive, on top).
 //   The result is affine in the scene radiance: L = L_scene T + S.
 //   T_g, T_v = exp(-optical depth) are grey (the densities are scalar), so
@@ -41,6 +47,7 @@
 #pragma once
 
 #include <aerial/emitter.hpp>
+#include <aerial/fog_light.hpp>
 #include <aerial/fog_volume.hpp>
 #include <aerial/height_fog.hpp>
 #include <aerial/sky.hpp>
@@ -48,14 +55,16 @@
 #include <glm/vec3.hpp>
 
 #include <cstddef>
+#include <limits>
 #include <memory>
 #include <vector>
 
 namespace aerial {
 
-/// A light that colours fog through the sky's horizon: the averages, and
-/// (when given) the horizon row, so that the fog takes the sky behind it
-/// (horizonSkySample in <aerial/sky.hpp>).
+/// A light of the fog: what of it reaches the fog (`reaching`, lit by it
+/// through the fog's phase) and, for far fog, its sky's horizon: the
+/// averages and (when given) the horizon row, so that far fog takes the sky
+/// behind it (horizonSkySample in <aerial/sky.hpp>; fog_light.hpp).
 struct FogLight {
     glm::dvec3 direction{0.0, 1.0, 0.0};  ///< unit, from the scene to the light
     glm::dvec3 illuminance{0.0};          ///< E, RGB (0 turns the light off)
@@ -65,6 +74,10 @@ struct FogLight {
     /// skyHorizonRow of this light's table; empty (the default): the
     /// averages alone colour the fog in every direction.
     SkyTable horizonRow{};
+    /// The illuminance that reaches the fog, RGB: E T(viewer -> light)
+    /// (LightState::illuminance; zero below the horizon). Default 0: the
+    /// light colours only far fog, through its horizon.
+    glm::dvec3 reaching{0.0};
 };
 
 struct FogSceneDesc {
@@ -75,9 +88,19 @@ struct FogSceneDesc {
     std::vector<Emitter> emitters;
     /// Sun and moon; a light with zero illuminance contributes nothing.
     FogLight lights[2];
-    /// Anisotropy g of the Mie phase used for the fog colour, clamped to
-    /// [-0.999, 0.999]. Default 0.8.
+    /// Anisotropy g of the Mie phase used for the fog colour (the horizon's
+    /// phase and the fog's own, fog_light.hpp), clamped to [-0.999, 0.999].
+    /// Default 0.8.
     double mieAnisotropy = 0.8;
+    /// The sky dome's, the ground's and the night sky's light at the fog:
+    /// its first two spherical-harmonic bands (fog_light.hpp). Default: none.
+    FogSkyLight skyLight{};
+    /// The clouds' visibility V of the lights' `reaching` illuminance, 0..1
+    /// (1 - CloudOvercast::skyCover). Default 1.
+    double directVisibility = 1.0;
+    /// D of the blend into the horizon [m] (fog_light.hpp); <= 0 or NaN:
+    /// kFogHorizonDistance.
+    double horizonDistance = kFogHorizonDistance;
     /// Where the global fog's colour L_fog comes from, as for volumes: the
     /// sky's fog colour, that times heightFogColour, or heightFogColour as
     /// radiance (Environment::fogColourMode / fogColour of a preset).
@@ -131,13 +154,20 @@ public:
     /// Many segments at once; `results` must hold `count` entries.
     void queryBatch(const FogSegment* segments, FogQueryResult* results, std::size_t count) const;
 
-    /// The fog colour of the sky in a view direction (global fog's L_fog):
-    /// sum over the lights of E (P_R(mu) horizonRayleigh + P_M(mu, g)
-    /// horizonMie + horizonMultiple), mu = dot(v, light direction), blended
-    /// with the overcast: (1 - overcastCover) that + overcastCover
-    /// overcastRadiance. The direction need not be unit (zero or non-finite
-    /// means +Y).
-    glm::dvec3 fogColour(const glm::dvec3& viewDirection) const;
+    /// The fog colour L_fog(v, s) of colour mode "sky" for a sight line of
+    /// length `distance` s [m] (fog_light.hpp):
+    ///   (1 - w(s)) L_lit(v) + w(s) L_horizon(v),  w(s) = 1 - exp(-s / D),
+    ///   L_lit(v) = V sum over the lights of reaching P_M(mu, g)
+    ///            + max(a_0 + k_1(g) a_1 . v, 0)          (skyLight),
+    ///   L_horizon(v) = sum over the lights of E (P_R(mu) H_R(v) + P_M(mu, g)
+    ///            H_M(v) + H_ms(v)) (horizonSkySample), blended with the
+    ///            overcast: (1 - overcastCover) that + overcastCover
+    ///            overcastRadiance,
+    /// mu = dot(v, light direction). The default distance (+inf) gives the
+    /// horizon alone, 0 the lit fog alone. The direction need not be unit
+    /// (zero or non-finite means +Y); a NaN distance counts as 0.
+    glm::dvec3 fogColour(const glm::dvec3& viewDirection,
+                         double distance = std::numeric_limits<double>::infinity()) const;
 
     const FogSceneDesc& desc() const;
 

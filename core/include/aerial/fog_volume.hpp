@@ -77,8 +77,8 @@ enum class FogVolumeBlend { Add, Subtract };
 
 /// Where a fog volume's in-scattered colour comes from.
 enum class FogColourMode {
-    Sky,     ///< the sky's horizon fog colour with per-pixel phase (as global fog)
-    Tinted,  ///< the sky's fog colour multiplied by `colour`
+    Sky,     ///< the light that reaches the fog, the horizon far away (fog_light.hpp; as global fog)
+    Tinted,  ///< that fog colour multiplied by `colour`
     Custom,  ///< `colour` as in-scattered radiance, scene-linear Rec.709
 };
 
@@ -89,11 +89,11 @@ enum class FogColourMode {
 /// the bake manifest.
 enum class FogRenderMode { Analytic, Volumetric };
 
-/// The phase of the volumetric fog's in-scattering from the light that
-/// casts the shadows: the sky's (its fog colour, as the analytic fog: the
-/// two converge) or Cornette-Shanks with the fog's own anisotropy in place
-/// of the atmosphere's Mie one (denser forward glow around the sun, or
-/// none). The analytic fog ignores it.
+/// The phase of the volumetric fog's lit in-scattering (fog_light.hpp):
+/// the sky's (Cornette-Shanks with the atmosphere's Mie anisotropy, as the
+/// analytic fog: the two converge) or Cornette-Shanks with the fog's own
+/// anisotropy (denser forward glow around the sun, or none). The analytic
+/// fog ignores it.
 enum class FogPhaseMode { Sky, Custom };
 
 /// What only the volumetric fog draws (the analytic mode ignores it; the

@@ -5,6 +5,7 @@
 //   fog.density = 0.002; fog.falloff = 0.01; fog.baseHeight = 0.0;
 //   double tau = aerial::heightFogOpticalDepth(fog, camera, object - camera);
 //   double T = std::exp(-tau);          // L = L_scene T + L_fog (1 - T)
+//   // L_fog: the light that reaches the fog (aerial/fog_light.hpp)
 //
 // Formula (../shared/DESIGN.md, "Global height fog"; Wenzel 2006, eq. for
 // exponential height fog): density f(p) = b exp(-c (p.y - h0)); along the
