@@ -45,11 +45,20 @@ double fogHorizonWeight(double distance, double horizonDistance) {
     const double d =
         (std::isfinite(horizonDistance) && horizonDistance > 0.0) ? horizonDistance : kFogHorizonDistance;
     if (!(distance > 0.0)) return 0.0;
-    return -std::expm1(-distance / d);
+    const double x = distance / d;
+    return -std::expm1(-x * x);
 }
 
 glm::dvec3 fogSkyInScatter(const FogSkyLight& sky, double firstMoment, const glm::dvec3& v) {
-    const glm::dvec3 l = sky.l0 + firstMoment * (sky.l1[0] * v.x + sky.l1[1] * v.y + sky.l1[2] * v.z);
+    glm::dvec3 l(0.0);
+    for (int c = 0; c < 3; ++c) {
+        // The band windowed so that it swings at most kFogSkyDipoleBound of the mean.
+        const glm::dvec3 a1(sky.l1[0][c], sky.l1[1][c], sky.l1[2][c]);
+        const double swing = std::fabs(firstMoment) * std::sqrt(glm::dot(a1, a1));
+        const double bound = kFogSkyDipoleBound * std::max(sky.l0[c], 0.0);
+        const double window = swing > bound ? bound / swing : 1.0;
+        l[c] = sky.l0[c] + window * firstMoment * glm::dot(a1, v);
+    }
     return glm::max(l, glm::dvec3(0.0));
 }
 

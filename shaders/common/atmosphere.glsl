@@ -168,9 +168,18 @@ float miePhaseFirstMoment(float g) {
 
 /// The sky dome's light scattered by fog of anisotropy g towards -v:
 /// max(a_0 + k_1(g) a_1 . v, 0) (fogSkyInScatter).
+/// The band is windowed so that it swings at most kFogSkyDipoleBound of the
+/// mean (fog_light.hpp).
+const float kFogSkyDipoleBound = 0.5;
 vec3 fogSkyInScatter(vec3 v, float g) {
+    float k1 = miePhaseFirstMoment(g);
     vec3 l1 = frame.fogSkyL1x * v.x + frame.fogSkyL1y * v.y + frame.fogSkyL1z * v.z;
-    return max(frame.fogSkyL0 + miePhaseFirstMoment(g) * l1, vec3(0.0));
+    vec3 magnitude = sqrt(frame.fogSkyL1x * frame.fogSkyL1x + frame.fogSkyL1y * frame.fogSkyL1y +
+                          frame.fogSkyL1z * frame.fogSkyL1z);
+    vec3 swing = abs(k1) * magnitude;
+    vec3 bound = kFogSkyDipoleBound * max(frame.fogSkyL0, vec3(0.0));
+    vec3 window = mix(vec3(1.0), bound / max(swing, vec3(1e-30)), greaterThan(swing, bound));
+    return max(frame.fogSkyL0 + window * k1 * l1, vec3(0.0));
 }
 
 /// One light's illuminance that reaches the fog (its <light>Illuminance)
@@ -187,10 +196,11 @@ vec3 litFogColour(vec3 v, float g) {
            fogSkyInScatter(v, g);
 }
 
-/// w(s) = 1 - exp(-s / D), the horizon's share of the fog's colour at
+/// w(s) = 1 - exp(-(s / D)^2), the horizon's share of the fog's colour at
 /// distance s [m] (fogHorizonWeight).
 float fogHorizonWeight(float s) {
-    return s > 0.0 ? oneMinusExp(s / max(frame.fogHorizonDistance, 1e-6)) : 0.0;
+    float x = s / max(frame.fogHorizonDistance, 1e-6);
+    return s > 0.0 ? oneMinusExp(x * x) : 0.0;
 }
 
 /// The fog colour L_fog(v, s) of colour mode "sky" for a sight line of

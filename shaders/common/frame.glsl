@@ -64,7 +64,7 @@
 //                       the fog (fogDirectVisibility); the fog's direct light
 //                       is <light>Illuminance times it
 //   fogHorizonDistance  D [m]: fog at distance s takes the horizon's colour
-//                       with weight 1 - exp(-s / D)
+//                       with weight 1 - exp(-(s / D)^2)
 //
 // Linear depth (the frame's R32F texture): normalised linear eye depth,
 // z_view / far, 0 at the camera and 1 at the far plane (sky pixels hold 1),

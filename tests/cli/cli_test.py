@@ -449,8 +449,8 @@ class Fog(unittest.TestCase):
         away = luminance(level(towards_azimuth + math.pi)["in_scatter_rgb"])
         self.assertGreater(away, 0.0)
         self.assertLessEqual(towards / away, 3.0, (towards, away))
-        # 100 m is 2% of the way to the horizon's colour (w = 1 - exp(-s / 5 km)).
-        self.assertAlmostEqual(r["global_fog"]["horizon_weight"], 1.0 - math.exp(-100.0 / 5000.0), delta=1e-9)
+        # 100 m is 0.04% of the way to the horizon's colour (w = 1 - exp(-(s / 5 km)^2)).
+        self.assertAlmostEqual(r["global_fog"]["horizon_weight"], 1.0 - math.exp(-(100.0 / 5000.0) ** 2), delta=1e-12)
 
 
 class BakeRadiance(unittest.TestCase):

@@ -53,7 +53,8 @@ TEST(FogLight, HorizonWeight) {
     EXPECT_EQ(fogHorizonWeight(-3.0, 5000.0), 0.0);
     EXPECT_EQ(fogHorizonWeight(std::nan(""), 5000.0), 0.0);
     EXPECT_NEAR(fogHorizonWeight(5000.0, 5000.0), 1.0 - std::exp(-1.0), 1e-15);
-    EXPECT_NEAR(fogHorizonWeight(20000.0, 0.0), 1.0 - std::exp(-20000.0 / kFogHorizonDistance), 1e-15);
+    EXPECT_NEAR(fogHorizonWeight(100.0, 5000.0), 1.0 - std::exp(-0.0004), 1e-15);  // (s / D)^2
+    EXPECT_NEAR(fogHorizonWeight(20000.0, 0.0), 1.0 - std::exp(-16.0), 1e-15);
     EXPECT_EQ(fogHorizonWeight(INFINITY, 5000.0), 1.0);
 }
 
@@ -128,6 +129,23 @@ TEST(FogLight, AirglowAndUniformBands) {
     }
 }
 
+// A sky band stronger than the mean is windowed so it swings at most half
+// the mean: towards the bright side 1.5 a_0, away 0.5 a_0.
+TEST(FogLight, SkyBandIsWindowedToHalfTheMean) {
+    FogSkyLight sky;
+    sky.l0 = glm::dvec3(1.0);
+    sky.l1[2] = glm::dvec3(-4.0);  // bright towards -Z
+    const double k1 = miePhaseFirstMoment(0.8);
+    const glm::dvec3 towards = fogSkyInScatter(sky, k1, {0.0, 0.0, -1.0});
+    const glm::dvec3 away = fogSkyInScatter(sky, k1, {0.0, 0.0, 1.0});
+    const glm::dvec3 across = fogSkyInScatter(sky, k1, {1.0, 0.0, 0.0});
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(towards[c], 1.5, 1e-12);
+        EXPECT_NEAR(away[c], 0.5, 1e-12);
+        EXPECT_NEAR(across[c], 1.0, 1e-12);
+    }
+}
+
 TEST(FogLight, OneLightThroughThePhase) {
     FogSceneDesc desc;
     desc.mieAnisotropy = 0.6;
@@ -147,13 +165,13 @@ TEST(FogLight, OneLightThroughThePhase) {
         0.5 * p * glm::dvec3(2.0, 3.0, 4.0) + glm::dvec3(0.1, 0.2, 0.3) + k1 * v.y * glm::dvec3(0.05);
     const glm::dvec3 lit = scene.fogColour(v, 0.0);
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(lit[c], expected[c], 1e-12 * expected[c]);
-    // A segment of 300 m: the lit colour, 6% of the way to the (here black) horizon.
+    // A segment of 300 m: the lit colour, 0.36% of the way to the (here black) horizon.
     const FogQueryResult q = scene.query(glm::dvec3(0.0), 300.0 * v);
     EXPECT_EQ(q.inScatter, glm::dvec3(0.0));  // no fog at all
     FogSceneDesc foggy = desc;
     foggy.heightFog = {0.01, 0.0, 0.0};
     const FogQueryResult f = FogScene(foggy).query(glm::dvec3(0.0), 300.0 * v);
-    const double w = 1.0 - std::exp(-300.0 / 5000.0);
+    const double w = 1.0 - std::exp(-(300.0 / 5000.0) * (300.0 / 5000.0));
     for (int c = 0; c < 3; ++c)
         EXPECT_NEAR(f.inScatter[c], (1.0 - w) * expected[c] * (1.0 - std::exp(-3.0)), 1e-12);
 }

@@ -89,18 +89,25 @@ glm::dvec3 referenceHorizonColour(const FogSceneDesc& desc, const glm::dvec3& v)
 
 /// L_fog(v, s) of fog_light.hpp written out: the lit fog (the reaching
 /// light through the phase, the sky's bands with the phase's mean cosine
-/// 3 g (4 + g^2) / (5 (2 + g^2))) blended into the horizon by 1 - exp(-s / D).
+/// 3 g (4 + g^2) / (5 (2 + g^2))) blended into the horizon by 1 - exp(-(s / D)^2).
 glm::dvec3 referenceFogColour(const FogSceneDesc& desc, const glm::dvec3& v, double distance) {
     const double g = desc.mieAnisotropy;
-    glm::dvec3 lit = desc.skyLight.l0 +
-                     3.0 * g * (4.0 + g * g) / (5.0 * (2.0 + g * g)) *
-                         (desc.skyLight.l1[0] * v.x + desc.skyLight.l1[1] * v.y + desc.skyLight.l1[2] * v.z);
-    lit = glm::max(lit, glm::dvec3(0.0));
+    const double k1 = 3.0 * g * (4.0 + g * g) / (5.0 * (2.0 + g * g));
+    glm::dvec3 lit(0.0);
+    for (int c = 0; c < 3; ++c) {
+        // The dipole, windowed to swing at most half the mean.
+        const double ax = desc.skyLight.l1[0][c], ay = desc.skyLight.l1[1][c], az = desc.skyLight.l1[2][c];
+        const double swing = std::abs(k1) * std::sqrt(ax * ax + ay * ay + az * az);
+        const double bound = 0.5 * std::max(desc.skyLight.l0[c], 0.0);
+        const double window = swing > bound ? bound / swing : 1.0;
+        lit[c] = std::max(desc.skyLight.l0[c] + window * k1 * (ax * v.x + ay * v.y + az * v.z), 0.0);
+    }
     for (const aerial::FogLight& light : desc.lights) {
         const double mu = glm::dot(v, glm::normalize(light.direction));
         lit += desc.directVisibility * light.reaching * referenceMiePhase(mu, g);
     }
-    const double w = 1.0 - std::exp(-distance / desc.horizonDistance);
+    const double x = distance / desc.horizonDistance;
+    const double w = 1.0 - std::exp(-x * x);
     return (1.0 - w) * lit + w * referenceHorizonColour(desc, v);
 }
 

@@ -6,7 +6,7 @@
 // far end (the object, the scene point) is a distance s from the eye, has
 // the colour
 //   L_fog(v, s) = (1 - w(s)) L_lit(v) + w(s) L_horizon(v),
-//   w(s) = 1 - exp(-s / D),
+//   w(s) = 1 - exp(-(s / D)^2),
 // composited as L <- L T + L_fog (1 - T) (fog_query.hpp).
 //  * L_lit(v), the fog lit by the light that reaches it (Hillaire 2020,
 //    "A Scalable and Production Ready Sky and Atmosphere Rendering
@@ -34,6 +34,14 @@
 //    k_1 = integral P(mu) mu dw adds k_1 a_1 . v, so the bright side of the
 //    sky behind the fog tints it. For Cornette-Shanks
 //      k_1(g) = 3 g (4 + g^2) / (5 (2 + g^2)).
+//    That band is windowed per channel (Sloan 2008, "Stupid Spherical
+//    Harmonics Tricks": a truncated band rings negative) so it swings at
+//    most kFogSkyDipoleBound of the mean: valley fog is optically thick, and
+//    its multiple scattering broadens a droplet's g = 0.8 lobe (after n
+//    scatterings the mean cosine is g^n), so a twilight glow low in one
+//    direction tints the fog towards it without making the fog opposite it
+//    black (unwindowed, the two sides of 100 m of fog at sun -11 deg
+//    differed 25x; outdoors they differ by a small factor).
 //  * L_horizon(v), the sky behind far fog: the sky table's horizon row at
 //    v's azimuth with the phases applied (horizonSkySample, sky.hpp), under
 //    the cloud deck's horizon cover (CloudOvercast::horizonCover). Far away
@@ -47,12 +55,16 @@
 //    set sun, the sunlit air far away that makes the twilight glow; in a
 //    valley, the next valley), which the sky's horizon holds and the light
 //    at the viewer does not. 5 km is the renderer's default far plane and
-//    the usual distance of a landscape's far side: the horizon's share is 2%
-//    at 100 m (valley fog is lit where it is), 18% at 1 km, 63% at 5 km and
-//    98% at 20 km (an object 20 km away sits in the sky's horizon colour).
-//    Unreal's exponential height fog blends its sky-coloured inscattering
-//    in by the pixel's distance the same way (its "fully directional
-//    inscattering colour distance").
+//    the usual distance of a landscape's far side. The share grows as the
+//    square of the distance near the viewer, so fog within a few hundred
+//    metres is lit only where it is (at twilight the horizon towards a set
+//    sun is 30-100x brighter than the light at the viewer, and even a 2%
+//    share of it, a linear onset's at 100 m, painted the valley fog with the
+//    glow): the horizon's share is 0.04% at 100 m, 4% at 1 km, 63% at 5 km
+//    and 100% at 20 km (an object 20 km away sits in the sky's horizon
+//    colour). Unreal's exponential height fog blends its sky-coloured
+//    inscattering in by the pixel's distance the same way (its "fully
+//    directional inscattering colour distance").
 // The blend is taken at the end of each segment, as Unreal's distance
 // blend: the same colour for every fog of one sight line, so the CPU
 // queries (a segment), the analytic passes (the pixel's scene point), the
@@ -69,6 +81,9 @@
 
 namespace aerial {
 
+/// The sky band's largest swing about its mean, a fraction of the mean (above).
+inline constexpr double kFogSkyDipoleBound = 0.5;
+
 /// D of the horizon blend [m] (above).
 inline constexpr double kFogHorizonDistance = 5000.0;
 
@@ -84,12 +99,13 @@ struct FogSkyLight {
 /// 0.999], NaN counts as 0.
 double miePhaseFirstMoment(double g);
 
-/// Weight w(s) = 1 - exp(-s / D) of the horizon in the fog's colour at
+/// Weight w(s) = 1 - exp(-(s / D)^2) of the horizon in the fog's colour at
 /// distance s [m] (0 for s <= 0 or NaN, 1 for s = +inf); D <= 0 or NaN
 /// counts as kFogHorizonDistance.
 double fogHorizonWeight(double distance, double horizonDistance);
 
-/// The sky part of L_lit for a unit view direction v: max(a_0 + k_1 a_1 . v, 0).
+/// The sky part of L_lit for a unit view direction v: a_0 + k_1 a_1 . v with
+/// the band windowed to kFogSkyDipoleBound (above), at least 0.
 glm::dvec3 fogSkyInScatter(const FogSkyLight& sky, double firstMoment, const glm::dvec3& v);
 
 /// Adds to `sky` the bands of one sky table's radiance (skyRadiance with

@@ -156,7 +156,7 @@ public:
 
     /// The fog colour L_fog(v, s) of colour mode "sky" for a sight line of
     /// length `distance` s [m] (fog_light.hpp):
-    ///   (1 - w(s)) L_lit(v) + w(s) L_horizon(v),  w(s) = 1 - exp(-s / D),
+    ///   (1 - w(s)) L_lit(v) + w(s) L_horizon(v),  w(s) = 1 - exp(-(s / D)^2),
     ///   L_lit(v) = V sum over the lights of reaching P_M(mu, g)
     ///            + max(a_0 + k_1(g) a_1 . v, 0)          (skyLight),
     ///   L_horizon(v) = sum over the lights of E (P_R(mu) H_R(v) + P_M(mu, g)
