@@ -57,8 +57,6 @@ bool sameMapping(const SkyTable& a, const SkyTable& b) {
            same(a.lightAzimuth, b.lightAzimuth);
 }
 
-glm::dvec3 nonNegative(const glm::dvec3& v) { return glm::max(v, glm::dvec3(0.0)); }
-
 }  // namespace
 
 double ozoneCrossSection(double wavelength) {
@@ -175,7 +173,7 @@ struct SpectralSkySolver::Impl {
                     const float* src = (passes[std::size_t(k)]->table().*field).data() + t;
                     rgb += mats[std::size_t(k)] * glm::dvec3(src[0], src[1], src[2]);
                 }
-                for (int c = 0; c < 3; ++c) dst[t + std::size_t(c)] = float(std::max(rgb[c], 0.0));
+                for (int c = 0; c < 3; ++c) dst[t + std::size_t(c)] = float(rgb[c]);
             }
         };
         mix(&SkyTable::rayleigh);
@@ -184,7 +182,7 @@ struct SpectralSkySolver::Impl {
         auto mixAverage = [&](glm::dvec3 SkyTable::*field) {
             std::array<glm::dvec3, kSpectralSkyPasses> v;
             for (int k = 0; k < kSpectralSkyPasses; ++k) v[std::size_t(k)] = passes[std::size_t(k)]->table().*field;
-            out.*field = nonNegative(spectralSkyCombine(v));
+            out.*field = spectralSkyCombine(v);
         };
         mixAverage(&SkyTable::horizonRayleigh);
         mixAverage(&SkyTable::horizonMie);

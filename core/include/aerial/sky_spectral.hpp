@@ -119,9 +119,12 @@ SkySample spectralReferenceSkyIntegrals(const AtmosphereParams& air, const glm::
 /// SkySolvers built from the same description (each with its own threads;
 /// their cached tables are shared between solvers for the same air, so the
 /// moon's solver adopts what the sun's built). The combined table has the
-/// passes' mapping (identical by construction; asserted), generation
-/// counting this solver's publishes, and is clamped at 0 (a colour outside
-/// Rec.709's gamut loses its negative part).
+/// passes' mapping (identical by construction; asserted) and a generation
+/// counting this solver's publishes. It is linear Rec.709, not clamped: a
+/// colour outside the gamut (the deep red glow around a low sun) keeps its
+/// small negative component, and each table alone may hold one that the
+/// others make up for once the phases are applied (Mie's blue towards a low
+/// sun; clamping it there doubled the sky's blue 2 deg above the horizon).
 class SpectralSkySolver {
 public:
     explicit SpectralSkySolver(const SkySolverDesc& desc = {});
