@@ -121,7 +121,8 @@ SkySample spectralReferenceSkyIntegrals(const AtmosphereParams& air, const glm::
                                         const glm::dvec3& lightDirection) {
     std::array<glm::dvec3, kSpectralSkyPasses> r, m;
     for (int k = 0; k < kSpectralSkyPasses; ++k) {
-        const SkySample s = referenceSkyIntegrals(spectralSkyAtmosphere(air, k), viewDirection, lightDirection);
+        const SkySample s =
+            referenceSkyIntegrals(spectralSkyAtmosphere(air, k), viewDirection, lightDirection);
         r[std::size_t(k)] = s.rayleigh;
         m[std::size_t(k)] = s.mie;
     }
@@ -164,7 +165,8 @@ struct SpectralSkySolver::Impl {
         const auto& mats = matrices().m;
         auto mix = [&](std::vector<float> SkyTable::*field) {
             std::size_t n = (first.*field).size();
-            for (int k = 1; k < kSpectralSkyPasses; ++k) n = std::min(n, (passes[std::size_t(k)]->table().*field).size());
+            for (int k = 1; k < kSpectralSkyPasses; ++k)
+                n = std::min(n, (passes[std::size_t(k)]->table().*field).size());
             std::vector<float>& dst = out.*field;
             dst.assign(n, 0.0f);
             for (std::size_t t = 0; t + 2 < n; t += 3) {
@@ -181,7 +183,8 @@ struct SpectralSkySolver::Impl {
         mix(&SkyTable::multiple);
         auto mixAverage = [&](glm::dvec3 SkyTable::*field) {
             std::array<glm::dvec3, kSpectralSkyPasses> v;
-            for (int k = 0; k < kSpectralSkyPasses; ++k) v[std::size_t(k)] = passes[std::size_t(k)]->table().*field;
+            for (int k = 0; k < kSpectralSkyPasses; ++k)
+                v[std::size_t(k)] = passes[std::size_t(k)]->table().*field;
             out.*field = spectralSkyCombine(v);
         };
         mixAverage(&SkyTable::horizonRayleigh);

@@ -37,24 +37,51 @@ constexpr double kOzone[kBands] = {
     2.238e-25, 1.852e-25, 1.473e-25, 1.209e-25, 9.423e-26, 7.455e-26, 6.566e-26, 5.105e-26, 4.15e-26,
     4.228e-26, 3.237e-26, 2.451e-26, 2.801e-26, 2.534e-26};
 // CIE 1931 2-degree colour-matching functions x, y, z (CVRL ciexyz31).
-constexpr double kCmf[kBands][3] = {
-    {0.001368, 0.000039, 0.006450001},  {0.004243, 0.000120, 0.02005001},   {0.01431, 0.000396, 0.06785001},
-    {0.04351, 0.00121, 0.2074},         {0.13438, 0.004, 0.6456},           {0.2839, 0.0116, 1.3856},
-    {0.34828, 0.023, 1.74706},          {0.3362, 0.038, 1.77211},           {0.2908, 0.06, 1.6692},
-    {0.19536, 0.09098, 1.28764},        {0.09564, 0.13902, 0.8129501},      {0.03201, 0.20802, 0.46518},
-    {0.0049, 0.323, 0.272},             {0.0093, 0.503, 0.1582},            {0.06327, 0.71, 0.07824999},
-    {0.1655, 0.862, 0.04216},           {0.2904, 0.954, 0.0203},            {0.4334499, 0.9949501, 0.008749999},
-    {0.5945, 0.995, 0.0039},            {0.7621, 0.952, 0.0021},            {0.9163, 0.87, 0.001650001},
-    {1.0263, 0.757, 0.0011},            {1.0622, 0.631, 0.0008},            {1.0026, 0.503, 0.00034},
-    {0.8544499, 0.381, 0.00019},        {0.6424, 0.265, 0.00004999999},     {0.4479, 0.175, 0.00002},
-    {0.2835, 0.107, 0.0},               {0.1649, 0.061, 0.0},               {0.0874, 0.032, 0.0},
-    {0.04677, 0.017, 0.0},              {0.0227, 0.00821, 0.0},             {0.01135916, 0.004102, 0.0},
-    {0.005790346, 0.002091, 0.0},       {0.002899327, 0.001047, 0.0},       {0.001439971, 0.00052, 0.0},
-    {0.0006900786, 0.0002492, 0.0},     {0.0003323011, 0.00012, 0.0},       {0.0001661505, 0.00006, 0.0},
-    {0.00008307527, 0.00003, 0.0},      {0.00004150994, 0.00001499, 0.0}};
+constexpr double kCmf[kBands][3] = {{0.001368, 0.000039, 0.006450001},
+                                    {0.004243, 0.000120, 0.02005001},
+                                    {0.01431, 0.000396, 0.06785001},
+                                    {0.04351, 0.00121, 0.2074},
+                                    {0.13438, 0.004, 0.6456},
+                                    {0.2839, 0.0116, 1.3856},
+                                    {0.34828, 0.023, 1.74706},
+                                    {0.3362, 0.038, 1.77211},
+                                    {0.2908, 0.06, 1.6692},
+                                    {0.19536, 0.09098, 1.28764},
+                                    {0.09564, 0.13902, 0.8129501},
+                                    {0.03201, 0.20802, 0.46518},
+                                    {0.0049, 0.323, 0.272},
+                                    {0.0093, 0.503, 0.1582},
+                                    {0.06327, 0.71, 0.07824999},
+                                    {0.1655, 0.862, 0.04216},
+                                    {0.2904, 0.954, 0.0203},
+                                    {0.4334499, 0.9949501, 0.008749999},
+                                    {0.5945, 0.995, 0.0039},
+                                    {0.7621, 0.952, 0.0021},
+                                    {0.9163, 0.87, 0.001650001},
+                                    {1.0263, 0.757, 0.0011},
+                                    {1.0622, 0.631, 0.0008},
+                                    {1.0026, 0.503, 0.00034},
+                                    {0.8544499, 0.381, 0.00019},
+                                    {0.6424, 0.265, 0.00004999999},
+                                    {0.4479, 0.175, 0.00002},
+                                    {0.2835, 0.107, 0.0},
+                                    {0.1649, 0.061, 0.0},
+                                    {0.0874, 0.032, 0.0},
+                                    {0.04677, 0.017, 0.0},
+                                    {0.0227, 0.00821, 0.0},
+                                    {0.01135916, 0.004102, 0.0},
+                                    {0.005790346, 0.002091, 0.0},
+                                    {0.002899327, 0.001047, 0.0},
+                                    {0.001439971, 0.00052, 0.0},
+                                    {0.0006900786, 0.0002492, 0.0},
+                                    {0.0003323011, 0.00012, 0.0},
+                                    {0.0001661505, 0.00006, 0.0},
+                                    {0.00008307527, 0.00003, 0.0},
+                                    {0.00004150994, 0.00001499, 0.0}};
 // Linear Rec.709 (D65) <-> CIE XYZ, IEC 61966-2-1.
-constexpr double kXyzToRgb[3][3] = {
-    {3.2404542, -1.5371385, -0.4985314}, {-0.9692660, 1.8760108, 0.0415560}, {0.0556434, -0.2040259, 1.0572252}};
+constexpr double kXyzToRgb[3][3] = {{3.2404542, -1.5371385, -0.4985314},
+                                    {-0.9692660, 1.8760108, 0.0415560},
+                                    {0.0556434, -0.2040259, 1.0572252}};
 constexpr double kRgbToXyz[3][3] = {
     {0.4124564, 0.3575761, 0.1804375}, {0.2126729, 0.7151522, 0.0721750}, {0.0193339, 0.1191920, 0.9503041}};
 
@@ -120,7 +147,8 @@ std::vector<Sample> traceView(const glm::dvec3& view, const glm::dvec3& sun) {
     std::vector<Sample> out;
     Depth toViewer;
     for (int k = 0; k < kViewSteps; ++k) {
-        const double u0 = double(k) / kViewSteps, u1 = double(k + 1) / kViewSteps, um = (k + 0.5) / kViewSteps;
+        const double u0 = double(k) / kViewSteps, u1 = double(k + 1) / kViewSteps,
+                     um = (k + 0.5) / kViewSteps;
         const double ds = length * (u1 * u1 - u0 * u0);
         const glm::dvec3 p = x0 + view * (length * um * um);
         const Depth q = densities(glm::length(p) - kRg);
@@ -161,8 +189,8 @@ glm::dvec3 referenceSky(const glm::dvec3& view, const glm::dvec3& sun) {
         const double rayleigh = rayleighAt(380.0 + 10.0 * i), ozone = kOzonePeak * kOzone[i];
         double r = 0.0, m = 0.0;
         for (const Sample& s : samples) {
-            const double t =
-                std::exp(-(rayleigh * s.depth.rayleigh + kMieExtinction * s.depth.mie + ozone * s.depth.ozone));
+            const double t = std::exp(
+                -(rayleigh * s.depth.rayleigh + kMieExtinction * s.depth.mie + ozone * s.depth.ozone));
             r += s.rayleighWeight * t;
             m += s.mieWeight * t;
         }
@@ -226,8 +254,8 @@ TEST(SkySpectral, TwilightChromaticityMatchesSpectralReference) {
             const double duv = glm::length(chromaticity(got) - chromaticity(want));
             const double duvRgb = glm::length(chromaticity(old) - chromaticity(want));
             const double dY = luminance(got) / luminance(want) - 1.0;
-            std::printf("sun %5.1f deg %-8s Y %.3e  spectral du'v' %.4f dY %+.4f   RGB solver du'v' %.4f\n", sunDeg,
-                        v.name, luminance(want), duv, dY, duvRgb);
+            std::printf("sun %5.1f deg %-8s Y %.3e  spectral du'v' %.4f dY %+.4f   RGB solver du'v' %.4f\n",
+                        sunDeg, v.name, luminance(want), duv, dY, duvRgb);
             EXPECT_LE(duv, 0.01) << "sun " << sunDeg << " deg, " << v.name;
             EXPECT_LE(std::abs(dY), 0.03) << "sun " << sunDeg << " deg, " << v.name;
             worstSpectral = std::max(worstSpectral, duv);
@@ -235,8 +263,8 @@ TEST(SkySpectral, TwilightChromaticityMatchesSpectralReference) {
             worstLuminance = std::max(worstLuminance, std::abs(dY));
         }
     }
-    std::printf("worst du'v': spectral %.4f, RGB solver %.4f; worst luminance %.2f%%\n", worstSpectral, worstRgb,
-                100.0 * worstLuminance);
+    std::printf("worst du'v': spectral %.4f, RGB solver %.4f; worst luminance %.2f%%\n", worstSpectral,
+                worstRgb, 100.0 * worstLuminance);
     // The reference tells the two apart: three wavelengths leave the blue
     // hour magenta.
     EXPECT_GT(worstRgb, 0.05);
@@ -256,7 +284,8 @@ TEST(SkySpectral, DefaultsReproduceEarthAndTheSunIsWhite) {
             EXPECT_NEAR(s.rayleighScattering[c], rayleighAt(lambda), 2e-4 * rayleighAt(lambda)) << lambda;
             EXPECT_NEAR(s.mieScattering[c], kMieScattering, 1e-12) << lambda;
             EXPECT_NEAR(s.mieExtinction[c], kMieExtinction, 1e-12) << lambda;
-            EXPECT_NEAR(s.ozoneAbsorption[c], kOzonePeak * kOzone[bin], 2e-3 * kOzonePeak * kOzone[bin]) << lambda;
+            EXPECT_NEAR(s.ozoneAbsorption[c], kOzonePeak * kOzone[bin], 2e-3 * kOzonePeak * kOzone[bin])
+                << lambda;
             EXPECT_DOUBLE_EQ(s.groundAlbedo[c], air.groundAlbedo[c]);
         }
         ones[std::size_t(k)] = glm::dvec3(1.0);
