@@ -134,7 +134,8 @@ SkySample spectralReferenceSkyIntegrals(const AtmosphereParams& air, const glm::
 
 struct SpectralSkySolver::Impl {
     std::array<std::unique_ptr<SkySolver>, kSpectralSkyPasses> passes;
-    SkyTable table;
+    SkyTable table;  ///< published
+    SkyTable back;   ///< the next one, combined here
     int nextPass = 0;
     bool amortised = false;
 
@@ -146,7 +147,7 @@ struct SpectralSkySolver::Impl {
     /// Combines the passes' tables texel by texel into `table` and publishes it.
     void combine() {
         const SkyTable& first = passes[0]->table();
-        SkyTable out;
+        SkyTable& out = back;
         out.azimuthCount = first.azimuthCount;
         out.elevationCount = first.elevationCount;
         out.lightDirection = first.lightDirection;
@@ -162,21 +163,30 @@ struct SpectralSkySolver::Impl {
             [[maybe_unused]] const bool same = sameMapping(first, passes[std::size_t(k)]->table());
             assert(same && "the passes' tables share one mapping (geometry only)");
         }
-        const auto& mats = matrices().m;
+        // m[k][r][c]: pass k's sample c into output channel r.
+        double m[kSpectralSkyPasses][3][3];
+        for (int k = 0; k < kSpectralSkyPasses; ++k)
+            for (int r = 0; r < 3; ++r)
+                for (int c = 0; c < 3; ++c) m[k][r][c] = matrices().m[std::size_t(k)][c][r];
         auto mix = [&](std::vector<float> SkyTable::*field) {
+            const float* src[kSpectralSkyPasses];
             std::size_t n = (first.*field).size();
-            for (int k = 1; k < kSpectralSkyPasses; ++k)
-                n = std::min(n, (passes[std::size_t(k)]->table().*field).size());
-            std::vector<float>& dst = out.*field;
-            dst.assign(n, 0.0f);
-            for (std::size_t t = 0; t + 2 < n; t += 3) {
-                glm::dvec3 rgb(0.0);
-                for (int k = 0; k < kSpectralSkyPasses; ++k) {
-                    const float* src = (passes[std::size_t(k)]->table().*field).data() + t;
-                    rgb += mats[std::size_t(k)] * glm::dvec3(src[0], src[1], src[2]);
-                }
-                for (int c = 0; c < 3; ++c) dst[t + std::size_t(c)] = float(rgb[c]);
+            for (int k = 0; k < kSpectralSkyPasses; ++k) {
+                const std::vector<float>& v = passes[std::size_t(k)]->table().*field;
+                n = std::min(n, v.size());
+                src[k] = v.data();
             }
+            std::vector<float>& dst = out.*field;
+            dst.resize(n);
+            float* d = dst.data();
+            for (std::size_t t = 0; t + 2 < n; t += 3)
+                for (int r = 0; r < 3; ++r) {
+                    double sum = 0.0;
+                    for (int k = 0; k < kSpectralSkyPasses; ++k)
+                        sum +=
+                            m[k][r][0] * src[k][t] + m[k][r][1] * src[k][t + 1] + m[k][r][2] * src[k][t + 2];
+                    d[t + std::size_t(r)] = float(sum);
+                }
         };
         mix(&SkyTable::rayleigh);
         mix(&SkyTable::mie);
@@ -191,7 +201,7 @@ struct SpectralSkySolver::Impl {
         mixAverage(&SkyTable::horizonMie);
         mixAverage(&SkyTable::horizonMultiple);
         out.generation = table.generation + 1;
-        table = std::move(out);
+        std::swap(table, back);  // the buffers are reused; table() stays the same object
     }
 };
 
