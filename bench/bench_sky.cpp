@@ -6,6 +6,11 @@
 //       full cost), 0 reuses them (parameters unchanged, only the sun moves);
 //       multiple 0 = single scattering only (SkySolverDesc::singleScatteringOnly).
 //       Wall time.
+//   BM_SkyPerSun/spectral:S/threads:T
+//       the per-sun solve the renderer runs (multiple scattering on, the
+//       atmosphere's tables kept, only the sun moves) on T threads: S = 0 the
+//       RGB SkySolver, 1 SpectralSkySolver (<aerial/sky_spectral.hpp>: two
+//       passes at three wavelengths and their combination). Wall time.
 //   BM_SkyKeyedHaze/tolerance:T
 //       one solve of a haze that thickens by 0.1% per solve (hazy_sunset's
 //       afternoon haze evaluated once per minute of its day), with
@@ -28,6 +33,7 @@
 //
 //   build/sky/bench/aerial_bench --benchmark_filter=Sky
 #include <aerial/sky.hpp>
+#include <aerial/sky_spectral.hpp>
 
 #include "sky_reference.hpp"
 
@@ -67,6 +73,35 @@ void BM_SkySolve(benchmark::State& state) {
 BENCHMARK(BM_SkySolve)
     ->ArgNames({"layers", "threads", "rebuild", "multiple"})
     ->ArgsProduct({{32}, {1, 0}, {1, 0}, {0, 1}})
+    ->Unit(benchmark::kMicrosecond)
+    ->UseRealTime();
+
+template <class Solver>
+void solvePerSun(benchmark::State& state, Solver& solver) {
+    const aerial::AtmosphereParams air;
+    solver.solve(air, sunAt(10.0));
+    int k = 0;
+    for (auto _ : state) {
+        solver.solve(air, sunAt(5.0 + (k++ % 8)));
+        benchmark::DoNotOptimize(solver.table().rayleigh.data());
+    }
+    state.counters["threads"] = double(solver.desc().threadCount);
+}
+
+void BM_SkyPerSun(benchmark::State& state) {
+    aerial::SkySolverDesc desc;
+    desc.threadCount = int(state.range(1));
+    if (state.range(0) != 0) {
+        aerial::SpectralSkySolver solver(desc);
+        solvePerSun(state, solver);
+    } else {
+        aerial::SkySolver solver(desc);
+        solvePerSun(state, solver);
+    }
+}
+BENCHMARK(BM_SkyPerSun)
+    ->ArgNames({"spectral", "threads"})
+    ->ArgsProduct({{0, 1}, {1, 2}})
     ->Unit(benchmark::kMicrosecond)
     ->UseRealTime();
 

@@ -436,7 +436,7 @@ void printJson(const Json& json) { std::cout << jsonText(json) << "\n"; }
 // Sky and fog
 
 SkyTables::SkyTables(const SkySolverDesc& desc)
-    : sun_(std::make_unique<SkySolver>(desc)), moon_(std::make_unique<SkySolver>(desc)) {}
+    : sun_(std::make_unique<SpectralSkySolver>(desc)), moon_(std::make_unique<SpectralSkySolver>(desc)) {}
 
 void SkyTables::solve(const PresetState& state) {
     const AtmosphereParams& air = state.environment.atmosphere;

@@ -10,6 +10,7 @@
 #include <aerial/photometry.hpp>
 #include <aerial/preset.hpp>
 #include <aerial/sky.hpp>
+#include <aerial/sky_spectral.hpp>
 
 #include <CLI/CLI.hpp>
 #include <glm/vec3.hpp>
@@ -177,7 +178,8 @@ void printJson(const Json& json);
 // ---------------------------------------------------------------------------
 // Sky and fog from an evaluated state
 
-/// The sun's and the moon's sky tables, solved for a state.
+/// The sun's and the moon's sky tables, solved for a state (spectrally,
+/// <aerial/sky_spectral.hpp>: the colours of twilight).
 class SkyTables {
 public:
     explicit SkyTables(const SkySolverDesc& desc = {});
@@ -186,8 +188,8 @@ public:
     const SkyTable& moon() const { return moon_->table(); }
 
 private:
-    std::unique_ptr<SkySolver> sun_;
-    std::unique_ptr<SkySolver> moon_;
+    std::unique_ptr<SpectralSkySolver> sun_;
+    std::unique_ptr<SpectralSkySolver> moon_;
 };
 
 /// The sky as the renderer shows it: both tables with their per-pixel phase

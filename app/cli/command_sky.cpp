@@ -2,7 +2,9 @@
 // sky radiance in one direction as the renderer shows it (the sun's and the
 // moon's hemisphere tables, bilinear, with the phase functions applied per
 // pixel), next to the exact single-scattering integral (sky_reference.hpp:
-// brute force, double precision), and their relative difference.
+// brute force, double precision; at the spectral solver's wavelengths,
+// combined as its table is, spectralReferenceSkyIntegrals in
+// sky_spectral.hpp), and their relative difference.
 //
 // --json:
 //   {"preset": {"file", "name"}, "time_h", "time", "direction" (unit),
@@ -34,6 +36,7 @@
 #include <aerial/night_sky.hpp>
 #include <aerial/sky_reference.hpp>
 #include <aerial/stars.hpp>
+#include <aerial/sky_spectral.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -87,7 +90,7 @@ LightSample referenceSample(const AtmosphereParams& air, const glm::dvec3& v, co
     LightSample out;
     // A light with no illuminance (a new moon) contributes exactly nothing.
     if (light.illuminanceSpace == glm::dvec3(0.0)) return out;
-    out.integrals = referenceSkyIntegrals(air, v, light.body.direction);
+    out.integrals = spectralReferenceSkyIntegrals(air, v, light.body.direction);
     const double mu =
         v.x * light.body.direction.x + v.y * light.body.direction.y + v.z * light.body.direction.z;
     for (int c = 0; c < 3; ++c)

@@ -168,8 +168,8 @@ std::optional<int> Editor::initialise() {
                      view_.renderer->error().c_str());
         return kExitFailure;
     }
-    sky_.sunSolver = std::make_unique<SkySolver>();
-    sky_.moonSolver = std::make_unique<SkySolver>();
+    sky_.sunSolver = std::make_unique<SpectralSkySolver>();
+    sky_.moonSolver = std::make_unique<SpectralSkySolver>();
 
     if (options_.benchFrames == 0) session_.load(sessionFile_);  // --bench starts from the defaults
     recent_.load();

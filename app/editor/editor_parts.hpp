@@ -34,6 +34,7 @@
 
 #include <aerial/evaluate.hpp>
 #include <aerial/photometry.hpp>
+#include <aerial/sky_spectral.hpp>
 #include <aerial/renderer/display.hpp>
 #include <aerial/renderer/renderer.hpp>
 #include <aerial/sky.hpp>
@@ -110,7 +111,7 @@ struct SkyService {
     std::unique_ptr<CompiledPreset> compiled;
     std::uint64_t compiledRevision = 0;
     PresetState state;  ///< every parameter at the current time
-    std::unique_ptr<SkySolver> sunSolver, moonSolver;
+    std::unique_ptr<SpectralSkySolver> sunSolver, moonSolver;  ///< the colours of twilight
     bool valid = false;
     AtmosphereParams solvedAir{};
     glm::dvec3 solvedSun{0.0}, solvedMoon{0.0};
