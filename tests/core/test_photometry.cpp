@@ -9,6 +9,7 @@
 #include <aerial/evaluate.hpp>
 #include <aerial/photometry.hpp>
 #include <aerial/sky.hpp>
+#include <aerial/sky_spectral.hpp>
 
 #include <gtest/gtest.h>
 
@@ -38,7 +39,7 @@ struct Moment {
 
 Moment momentAt(const aerial::CompiledPreset& preset, double t) {
     Moment m{preset.evaluate(t), {}};
-    aerial::SkySolver sun, moon;
+    aerial::SpectralSkySolver sun, moon;  // as the CLI and the editor
     sun.solve(m.state.environment.atmosphere, m.state.sunLight.body.direction);
     moon.solve(m.state.environment.atmosphere, m.state.moonLight.body.direction);
     m.light = aerial::lightReport(m.state, sun.table(), moon.table());
