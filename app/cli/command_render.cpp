@@ -1,6 +1,6 @@
 // command_render.cpp — `aerial render PRESET --out FILE.exr|png [--time T]
 // [--eye x,y,z --target x,y,z --fov deg] [--size WxH] [--exposure EV]
-// [--display NAME] [--view NAME] [--float] [--shadows on|off] [--fog preset|analytic|volumetric]
+// [--display NAME] [--view NAME] [--half] [--shadows on|off] [--fog preset|analytic|volumetric]
 // [--froxel-slices N] [--json]`: one frame of the built-in scene
 // (renderer/scene.hpp: terrain with a valley, a lake, rocks, buildings, glass, a fence, steam) under the
 // preset at one time of day, rendered headless (EGL on Mesa's surfaceless platform, no window) by the same
@@ -26,8 +26,9 @@
 //         The config is $OCIO when set (a broken one falls back to the
 //         built-in config with a warning), else the built-in one. An unknown
 //         display or view is a usage error that lists the known ones.
-// The frame renders into RGBA16F (every pass capped at 3e4), or RGBA32F with
-// --float. A frame with any non-finite value is an error and nothing is
+// The frame renders into RGBA32F (the physical night is below the half
+// range: renderer.hpp, ColourPrecision), or RGBA16F with --half (every pass
+// capped at 3e4; a night sky then quantises into bands). A frame with any non-finite value is an error and nothing is
 // written; the file is written to a hidden temporary beside it, fsync'ed and
 // renamed, so FILE is either untouched or complete.
 //
@@ -108,7 +109,8 @@ struct RenderOptions {
     std::string exposure;  // "" = not given (0 EV for PNG)
     std::string display;   // "" = the OCIO config's default display
     std::string view;      // "" = the display's default view
-    bool floatTarget = false;
+    bool halfTarget = false;
+    bool floatTarget = false;  ///< --float: the default, kept for scripts
     std::string shadows = "on";  // on | off
     std::string fog = "preset";  // preset | analytic | volumetric
     int froxelSlices = 128;
@@ -301,7 +303,7 @@ int runRender(const RenderOptions& options) {
     frame.width = width;
     frame.height = height;
     frame.precision =
-        options.floatTarget ? renderer::ColourPrecision::Float : renderer::ColourPrecision::Half;
+        options.halfTarget ? renderer::ColourPrecision::Half : renderer::ColourPrecision::Float;
     frame.passes.shadows = options.shadows == "on";
     const bool volumetric =
         options.fog == "volumetric" ||
@@ -347,7 +349,7 @@ int runRender(const RenderOptions& options) {
              {"time_h", state.timeHours},
              {"time", formatTime(state.timeHours)},
              {"camera", {{"eye", toJson(eye)}, {"target", toJson(target)}, {"fov_deg", options.fovDeg}}},
-             {"precision", options.floatTarget ? "float" : "half"},
+             {"precision", options.halfTarget ? "half" : "float"},
              {"shadows", options.shadows == "on"},
              {"fog", frame.fogMode == renderer::FogMode::Volumetric ? "volumetric" : "analytic"},
              {"exposure",
@@ -413,8 +415,11 @@ Command addRenderCommand(CLI::App& parent) {
                     "PNG only: OpenColorIO view, e.g. \"ACES 1.0 - SDR Video\" (default, tone-mapped) or "
                     "\"Un-tone-mapped\"")
         ->type_name("NAME");
-    app->add_flag("--float", options->floatTarget,
-                  "Render into RGBA32F instead of RGBA16F (the EXR is half float either way)");
+    CLI::Option* half =
+        app->add_flag("--half", options->halfTarget,
+                      "Render into RGBA16F instead of RGBA32F: half the memory, but a night sky (below the "
+                      "half range) quantises into bands; the EXR is half float either way");
+    app->add_flag("--float", options->floatTarget, "Render into RGBA32F (the default)")->excludes(half);
     app->add_option("--shadows", options->shadows,
                     "Sun and moon shadows of the scene (cascaded shadow maps): on or off")
         ->type_name("on|off")

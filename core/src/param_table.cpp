@@ -376,11 +376,11 @@ const std::vector<ParamDesc>& globalTable() {
             "Added to the exposure [EV], -10..10, in both modes; positive is brighter. Key it to set "
             "how dusk and night read. Default 0."),
         scalar(
-            G, "exposure.min_ev100", "Minimum EV100", "EV", {-10, 25, -10, 20}, -8.0, false, true,
+            G, "exposure.min_ev100", "Minimum EV100", "EV", {-16, 25, -16, 20}, -12.0, false, true,
             [](void* o) { return &env(o).exposure.minEv100; },
-            "Automatic: the darkest scene exposed to middle grey [EV100], -10..25; darker scenes read "
-            "dark (night stays night). Default -8: a full moon's landscape meters about -3, a "
-            "moonless one below -10."),
+            "Automatic: the darkest scene exposed to middle grey [EV100], -16..25; darker scenes read "
+            "dark (night stays night). Default -12: the light is physical, a full moon's landscape "
+            "meters about -3 and a moonless one -11 to -13."),
         scalar(
             G, "exposure.max_ev100", "Maximum EV100", "EV", {-10, 25, 0, 25}, 17.0, false, true,
             [](void* o) { return &env(o).exposure.maxEv100; },

@@ -113,10 +113,10 @@ TEST(Exposure, PresetExposureMetersTheFrameInCandelas) {
     EXPECT_TRUE(std::isfinite(aerial::meterAverageLuminance({}, 4)));
     EXPECT_TRUE(std::isfinite(aerial::meterAverageLuminance(rgba, 2)));  // not RGB: empty
 
-    aerial::ExposureParams p;  // automatic, -8..17
+    aerial::ExposureParams p;  // automatic, -12..17
     const double metered = std::log2(average * 5000.0 * 100.0 / 12.5);
     EXPECT_NEAR(aerial::targetEv100(p, average), metered, 1e-12);
-    EXPECT_EQ(aerial::targetEv100(p, 1e-12), -8.0);  // night stays night
+    EXPECT_EQ(aerial::targetEv100(p, 1e-12), -12.0);  // night stays night
     EXPECT_EQ(aerial::targetEv100(p, 1e6), 17.0);
     p.mode = aerial::ExposureMode::Manual;
     p.ev100 = 11.0;

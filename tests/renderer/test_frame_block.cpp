@@ -237,6 +237,8 @@ TEST(FrameBlock, DiscsAtTheApparentPositionWithTheMoonsPhase) {
 
 TEST(FrameBlock, FogFieldsAndRadianceCap) {
     renderer::FrameDesc frame;
+    EXPECT_EQ(frame.precision, renderer::ColourPrecision::Float);  // the physical night needs it
+    frame.precision = renderer::ColourPrecision::Half;
     const FrameBlock half = blockFor(testState(), frame);
     EXPECT_FLOAT_EQ(half.fogDensity, 0.004f);
     EXPECT_FLOAT_EQ(half.fogFalloff, 0.02f);

@@ -121,6 +121,56 @@ TEST_F(SkyVsCpu, EveryPixelMatchesSkyRadiance) {
     EXPECT_TRUE(log.errors.empty());
 }
 
+// The physical night is far below the half-float range: with the sun 16 deg
+// down the sky is 1e-9..5e-7 of the radiance unit (the smallest half
+// subnormal is 6e-8), which RGBA16F quantised into coloured rings. The
+// default target keeps every pixel of it to 1e-3 of the brightest.
+TEST_F(SkyVsCpu, DeepTwilightKeepsItsPrecisionInTheDefaultTarget) {
+    const glm::dvec3 sun = glm::normalize(glm::dvec3(0.46, -0.28, -0.84));
+    const glm::dvec3 moon = glm::normalize(glm::dvec3(-0.3, -0.5, 0.8));
+    const SkyPair sky = solveSky(AtmosphereParams{}, sun, moon);
+    Renderer r(rendererDesc());
+    ASSERT_TRUE(r.valid()) << r.error();
+    r.setSky(sky.sun, sky.moon);
+    PresetState air;
+    air.sunLight = light(sun, glm::dvec3(20.0), glm::dvec3(0.0));
+    air.moonLight = light(moon, glm::dvec3(5e-5), glm::dvec3(0.0));
+    FrameDesc f;  // the default precision
+    f.stars = false;
+    f.sunDiscRadius = f.moonDiscRadius = 0.0;
+    f.width = kWidth;
+    f.height = kHeight;
+    f.passes.scene = f.passes.globalFog = f.passes.volumes = f.passes.emitters = false;
+    const Camera camera = skyCamera({0, 2, 0}, glm::dvec3(0, 2, 0) + glm::dvec3(sun.x, 0.25, sun.z) * 10.0, 2.0);
+    r.render(camera, air, f);
+    const Image image = r.readColour();
+    const renderer::CameraFrame cf = renderer::cameraFrame(camera);
+    double brightest = 0.0, worst = 0.0;
+    std::vector<glm::dvec3> cpu(std::size_t(kWidth) * kHeight);
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) {
+            const glm::dvec3 v = glm::normalize(renderer::farRayAtPixel(cf, x, y, kWidth, kHeight));
+            cpu[std::size_t(y) * kWidth + x] = v.y > 0.0 ? cpuSky(sky, air, v) : glm::dvec3(0.0);
+            brightest = std::max(brightest, cpu[std::size_t(y) * kWidth + x].x);
+        }
+    ASSERT_GT(brightest, 0.0);
+    ASSERT_LT(brightest, 1e-5);  // deep twilight: all of it below the half range's normals
+    int wx = 0, wy = 0;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) {
+            const glm::dvec3 v = glm::normalize(renderer::farRayAtPixel(cf, x, y, kWidth, kHeight));
+            if (v.y <= 0.0) continue;  // the ground, not the sky
+            for (int c = 0; c < 3; ++c) {
+                const double e = std::fabs(image.at(x, y, c) - cpu[std::size_t(y) * kWidth + x][c]) / brightest;
+                if (e > worst) worst = e, wx = x, wy = y;
+            }
+        }
+    std::printf("[ measured ] sky at sun -16 deg: brightest %.3g, worst error %.3g of it (pixel %d,%d: gpu "
+                "%.3g cpu %.3g)\n",
+                brightest, worst, wx, wy, image.at(wx, wy, 0), cpu[std::size_t(wy) * kWidth + wx].x);
+    EXPECT_LT(worst, 1e-3);
+}
+
 TEST_F(SkyVsCpu, SetSunRowMappingMatchesSkyRadiance) {
     // A sun 1.5 deg below the horizon: its table's rows crowd towards the
     // horizon and the earth's shadow (SkyTable::bandElevation .. shadowShare,

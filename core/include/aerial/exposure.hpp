@@ -121,9 +121,10 @@ struct ExposureParams {
     /// brighter) in both modes; key it to set how dusk and night read.
     double compensationEv = 0.0;
     /// Automatic range [EV100]: the meter's EV is clamped to it, so a
-    /// starlit night does not become grey day. Default -8..17 (the light
-    /// is physical: a full moon's landscape meters ~-3, a moonless one ~-11).
-    double minEv100 = -8.0;
+    /// starlit night does not become grey day. Default -12..17 (the light
+    /// is physical: a full moon's landscape meters ~-3, a moonless one -11
+    /// to -13).
+    double minEv100 = -12.0;
     double maxEv100 = 17.0;
     /// Automatic adaptation speeds [1/s]: the fraction 1 - exp(-speed dt)
     /// of the gap closes in dt seconds; up when the scene gets brighter.

@@ -113,12 +113,19 @@ constexpr double kStarIlluminance = 2.022384e-9;
 /// limiting magnitude instead (aerial/stars.hpp).
 double starVisibility(double sunElevation);
 
+/// The colour target's format. Radiance is physical in Aerial's unit
+/// (5000 cd/m^2, aerial/exposure.hpp) day and night: a moonless night sky
+/// is ~4e-8 of it and its twilight remnant 1e-9, below the smallest half
+/// float (6e-8 subnormal, 6e-5 normal), where RGBA16F quantises the sky
+/// into coloured bands. So the default is RGBA32F.
 enum class ColourPrecision {
-    /// RGBA16F (default): the editor and captures. Every pass output is
-    /// capped at 3e4 so no pixel overflows the half range (the sun disc,
-    /// ~3e5 for the default sun, is clipped there).
+    /// RGBA16F: half the bandwidth, for daylight captures or a caller
+    /// that scales its lights into the half range itself (pre-exposure).
+    /// Every pass output is capped at 3e4 so no pixel overflows the half
+    /// range (the sun disc, ~3e5 for the default sun, is clipped there).
     Half,
-    /// RGBA32F: comparisons against the CPU reference (cap 1e30).
+    /// RGBA32F (default): the editor, captures and comparisons against the
+    /// CPU reference (cap 1e30).
     Float,
 };
 
@@ -249,7 +256,7 @@ struct FroxelSettings {
 struct FrameDesc {
     int width = 0;   ///< [px]; 0 = 1280
     int height = 0;  ///< [px]; 0 = 720
-    ColourPrecision precision = ColourPrecision::Half;
+    ColourPrecision precision = ColourPrecision::Float;
     RenderPasses passes;
     VolumeMethod volumeMethod = VolumeMethod::Analytic;
     /// Measure every pass with GL timer queries (GL_TIME_ELAPSED) into
