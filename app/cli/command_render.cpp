@@ -28,9 +28,9 @@
 //         display or view is a usage error that lists the known ones.
 // The frame renders into RGBA32F (the physical night is below the half
 // range: renderer.hpp, ColourPrecision), or RGBA16F with --half (every pass
-// capped at 3e4; a night sky then quantises into bands). A frame with any non-finite value is an error and nothing is
-// written; the file is written to a hidden temporary beside it, fsync'ed and
-// renamed, so FILE is either untouched or complete.
+// capped at 3e4; a night sky then quantises into bands). A frame with any non-finite value is an error and
+// nothing is written; the file is written to a hidden temporary beside it, fsync'ed and renamed, so FILE is
+// either untouched or complete.
 //
 // --shadows on|off (default on): the sun's (or, at night, the moon's)
 // cascaded shadow maps on the scene (RenderPasses::shadows, the renderer's
@@ -110,7 +110,7 @@ struct RenderOptions {
     std::string display;   // "" = the OCIO config's default display
     std::string view;      // "" = the display's default view
     bool halfTarget = false;
-    bool floatTarget = false;  ///< --float: the default, kept for scripts
+    bool floatTarget = false;    ///< --float: the default, kept for scripts
     std::string shadows = "on";  // on | off
     std::string fog = "preset";  // preset | analytic | volumetric
     int froxelSlices = 128;
@@ -302,8 +302,7 @@ int runRender(const RenderOptions& options) {
     renderer::FrameDesc frame;
     frame.width = width;
     frame.height = height;
-    frame.precision =
-        options.halfTarget ? renderer::ColourPrecision::Half : renderer::ColourPrecision::Float;
+    frame.precision = options.halfTarget ? renderer::ColourPrecision::Half : renderer::ColourPrecision::Float;
     frame.passes.shadows = options.shadows == "on";
     const bool volumetric =
         options.fog == "volumetric" ||
@@ -329,7 +328,8 @@ int runRender(const RenderOptions& options) {
     // The preset's exposure, fully adapted (one frame): manual EV100, or
     // metered from this frame and clamped; --exposure adds to it.
     const ExposureParams& exposure = state.environment.exposure;
-    const double averageLuminance = meterAverageLuminance(image.pixels, image.channels, image.width, image.height);
+    const double averageLuminance =
+        meterAverageLuminance(image.pixels, image.channels, image.width, image.height);
     const double ev100 = targetEv100(exposure, averageLuminance);
     const double displayEv = std::log2(radianceScale(exposure, ev100)) + exposureEv;
     if (display) display->setExposureEv(displayEv);

@@ -26,7 +26,10 @@ const double kNodeWavelengths[kNodeCount] = {430.0, 470.0, 520.0, 570.0, 610.0, 
 // single scattering (phases applied) of 2268 view rays (sun elevations -8
 // .. 90 deg in 28 steps, view elevations 0 .. 90 deg in 11, relative
 // azimuths 0 .. 180 deg in 8) of Bruneton 2017's Earth with its ozone x0.6,
-// 1, 1.6 and Mie x1, 5.
+// 1, 1.6 and Mie x1, 5. The program that fitted them is in the history
+// (commit "Add the tool that fits the spectral sky's colour weights",
+// tests/tools/fit_spectral_weights.cpp); test_sky_spectral holds the
+// result to 0.01 in u'v' against its own 41-wavelength reference.
 const double kXyzWeights[kNodeCount][3] = {
     {17.0712493, -0.224472819, 88.9860018}, {14.341955, 6.82300441, 103.997663},
     {15.9521332, 71.6966234, 10.6425038},   {49.4813287, 71.0576006, 0.390838834},

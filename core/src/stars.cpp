@@ -14,26 +14,36 @@ constexpr double kLuxPerFootCandle = 10.7639104;
 constexpr double kHechtC = 1.5848931924611134e-10;  // 10^-9.8
 constexpr double kHechtK = 1.2589254117941673e-2;   // 10^-1.9
 
+/// Pogson's scale: the flux of a magnitude, zeroPoint 10^(-0.4 m); 0 for a
+/// non-finite magnitude.
+double fluxOfMagnitude(double magnitude, double zeroPoint) {
+    if (!std::isfinite(magnitude)) return 0.0;
+    return zeroPoint * std::pow(10.0, -0.4 * std::clamp(magnitude, -100.0, 100.0));
+}
+
+/// The magnitude of a flux, -2.5 log10(flux / zeroPoint), the flux floored
+/// at `floor` (non-finite counts as the floor).
+double magnitudeOfFlux(double flux, double zeroPoint, double floor) {
+    const double f = std::isfinite(flux) ? std::max(flux, floor) : floor;
+    return -2.5 * std::log10(f / zeroPoint);
+}
+
 }  // namespace
 
 double luminanceFromSkyBrightness(double magPerSquareArcsec) {
-    if (!std::isfinite(magPerSquareArcsec)) return 0.0;
-    return kSkyBrightnessZeroPointNits * std::pow(10.0, -0.4 * std::clamp(magPerSquareArcsec, -100.0, 100.0));
+    return fluxOfMagnitude(magPerSquareArcsec, kSkyBrightnessZeroPointNits);
 }
 
 double skyBrightnessFromLuminance(double nits) {
-    const double l = std::isfinite(nits) ? std::max(nits, 1e-12) : 1e-12;
-    return -2.5 * std::log10(l / kSkyBrightnessZeroPointNits);
+    return magnitudeOfFlux(nits, kSkyBrightnessZeroPointNits, 1e-12);
 }
 
 double starIlluminanceLux(double magnitude) {
-    if (!std::isfinite(magnitude)) return 0.0;
-    return kZeroMagnitudeIlluminanceLux * std::pow(10.0, -0.4 * std::clamp(magnitude, -100.0, 100.0));
+    return fluxOfMagnitude(magnitude, kZeroMagnitudeIlluminanceLux);
 }
 
 double starMagnitudeFromIlluminance(double lux) {
-    const double e = std::isfinite(lux) ? std::max(lux, 1e-30) : 1e-30;
-    return -2.5 * std::log10(e / kZeroMagnitudeIlluminanceLux);
+    return magnitudeOfFlux(lux, kZeroMagnitudeIlluminanceLux, 1e-30);
 }
 
 double limitingMagnitude(double backgroundNits) {

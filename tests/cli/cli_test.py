@@ -450,7 +450,7 @@ class Fog(unittest.TestCase):
         self.assertGreater(away, 0.0)
         self.assertLessEqual(towards / away, 3.0, (towards, away))
         # 100 m is 0.04% of the way to the horizon's colour (w = 1 - exp(-(s / 5 km)^2)).
-        self.assertAlmostEqual(r["global_fog"]["horizon_weight"], 1.0 - math.exp(-(100.0 / 5000.0) ** 2), delta=1e-9)
+        self.assertAlmostEqual(r["global_fog"]["horizon_weight"], -math.expm1(-(100.0 / 5000.0) ** 2), delta=1e-15)
 
 
 class BakeRadiance(unittest.TestCase):

@@ -11,6 +11,8 @@
 #include <aerial/sky.hpp>
 #include <aerial/sky_spectral.hpp>
 
+#include "sun_times.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -44,20 +46,6 @@ Moment momentAt(const aerial::CompiledPreset& preset, double t) {
     moon.solve(m.state.environment.atmosphere, m.state.moonLight.body.direction);
     m.light = aerial::lightReport(m.state, sun.table(), moon.table());
     return m;
-}
-
-/// The time of the day [h] (minute steps, from `from` to `to`) when the
-/// sun's elevation is nearest `elevationDeg`.
-double timeOfSunAt(const aerial::CompiledPreset& preset, double elevationDeg, double from, double to) {
-    double best = from, bestError = 1e9;
-    for (double t = from; t <= to; t += 1.0 / 60.0) {
-        const double e = preset.evaluate(t).sunLight.body.elevation * 180.0 / M_PI;
-        if (std::fabs(e - elevationDeg) < bestError) {
-            bestError = std::fabs(e - elevationDeg);
-            best = t;
-        }
-    }
-    return best;
 }
 
 TEST(Photometry, MoonlessNightAsMeasured) {
@@ -106,10 +94,10 @@ TEST(Photometry, SunAndSkyByElevationAsPublished) {
         {-12.0, 0.008, 0.008, 2.0},      // nautical twilight's end
     };
     for (const Reference& r : references) {
-        const double t = timeOfSunAt(preset, r.elevationDeg, 12.0, 23.9);
+        const double t = aerial::test::eveningTimeOfSun(preset, r.elevationDeg);
         const Moment m = momentAt(preset, t);
         const double el = m.state.sunLight.body.elevation * 180.0 / M_PI;
-        ASSERT_NEAR(el, r.elevationDeg, 0.3);
+        ASSERT_NEAR(el, r.elevationDeg, 0.01);
         const double lux = m.light.horizontalIlluminanceLux.total;
         EXPECT_GE(lux, r.lowLux / r.factor) << "sun " << el << " deg: " << lux << " lx";
         EXPECT_LE(lux, r.highLux * r.factor) << "sun " << el << " deg: " << lux << " lx";

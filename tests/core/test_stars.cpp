@@ -11,6 +11,8 @@
 #include <aerial/sky.hpp>
 #include <aerial/stars.hpp>
 
+#include "sun_times.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -125,17 +127,6 @@ protected:
         preset.environment.location.date = date;
         return aerial::CompiledPreset(std::move(preset));
     }
-    /// The evening time at which the sun is at `elevationDeg` (bisection
-    /// between noon and midnight, where the sun only sinks).
-    static double eveningTime(const aerial::CompiledPreset& preset, double elevationDeg) {
-        double lo = 12.0, hi = 23.999;
-        for (int i = 0; i < 50; ++i) {
-            const double mid = 0.5 * (lo + hi);
-            const double e = preset.evaluate(mid).sunLight.body.elevation * 180.0 / kPi;
-            (e > elevationDeg ? lo : hi) = mid;
-        }
-        return 0.5 * (lo + hi);
-    }
     /// The clear sky's luminance [cd/m^2] as the sky pass composes it: the
     /// sun's and the moon's tables and the airglow.
     struct Sky {
@@ -167,14 +158,14 @@ protected:
 // than the field's -1.5 by more than half the fade).
 TEST_F(StarsOverClearSummerDay, TwilightShowsOnlyTheBrightest) {
     const aerial::CompiledPreset preset = dated("2025-06-25");
-    const Sky civil(preset.evaluate(eveningTime(preset, -6.0)));
+    const Sky civil(preset.evaluate(aerial::test::eveningTimeOfSun(preset, -6.0)));
     const double zenith = civil.limit({0.0, 1.0, 0.0});
     std::printf("sun -6 deg: zenith %.3g cd/m^2 (%.2f mag/arcsec^2), limiting magnitude %.2f\n",
                 civil.nits({0.0, 1.0, 0.0}), aerial::skyBrightnessFromLuminance(civil.nits({0.0, 1.0, 0.0})),
                 zenith);
     EXPECT_LE(zenith, 1.5);
 
-    const Sky early(preset.evaluate(eveningTime(preset, -3.0)));
+    const Sky early(preset.evaluate(aerial::test::eveningTimeOfSun(preset, -3.0)));
     double faintest = -100.0;
     for (int e = 5; e <= 90; e += 5) {
         for (int a = 0; a < 360; a += 15) {

@@ -141,7 +141,8 @@ TEST_F(SkyVsCpu, DeepTwilightKeepsItsPrecisionInTheDefaultTarget) {
     f.width = kWidth;
     f.height = kHeight;
     f.passes.scene = f.passes.globalFog = f.passes.volumes = f.passes.emitters = false;
-    const Camera camera = skyCamera({0, 2, 0}, glm::dvec3(0, 2, 0) + glm::dvec3(sun.x, 0.25, sun.z) * 10.0, 2.0);
+    const Camera camera =
+        skyCamera({0, 2, 0}, glm::dvec3(0, 2, 0) + glm::dvec3(sun.x, 0.25, sun.z) * 10.0, 2.0);
     r.render(camera, air, f);
     const Image image = r.readColour();
     const renderer::CameraFrame cf = renderer::cameraFrame(camera);
@@ -161,13 +162,15 @@ TEST_F(SkyVsCpu, DeepTwilightKeepsItsPrecisionInTheDefaultTarget) {
             const glm::dvec3 v = glm::normalize(renderer::farRayAtPixel(cf, x, y, kWidth, kHeight));
             if (v.y <= 0.0) continue;  // the ground, not the sky
             for (int c = 0; c < 3; ++c) {
-                const double e = std::fabs(image.at(x, y, c) - cpu[std::size_t(y) * kWidth + x][c]) / brightest;
+                const double e =
+                    std::fabs(image.at(x, y, c) - cpu[std::size_t(y) * kWidth + x][c]) / brightest;
                 if (e > worst) worst = e, wx = x, wy = y;
             }
         }
-    std::printf("[ measured ] sky at sun -16 deg: brightest %.3g, worst error %.3g of it (pixel %d,%d: gpu "
-                "%.3g cpu %.3g)\n",
-                brightest, worst, wx, wy, image.at(wx, wy, 0), cpu[std::size_t(wy) * kWidth + wx].x);
+    std::printf(
+        "[ measured ] sky at sun -16 deg: brightest %.3g, worst error %.3g of it (pixel %d,%d: gpu "
+        "%.3g cpu %.3g)\n",
+        brightest, worst, wx, wy, image.at(wx, wy, 0), cpu[std::size_t(wy) * kWidth + wx].x);
     EXPECT_LT(worst, 1e-3);
 }
 

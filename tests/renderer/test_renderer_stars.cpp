@@ -5,6 +5,7 @@
 // counts; which stars show in twilight (the limiting magnitude of the sky
 // behind each, aerial/stars.hpp); stars hidden by the switch and the scene.
 #include "gl_fixture.hpp"
+#include "sun_times.hpp"
 
 #include <aerial/atmosphere.hpp>
 #include <aerial/clouds.hpp>
@@ -181,18 +182,6 @@ std::vector<double> visibleStars(const PresetState& state) {
         if (shownFraction(s.magnitude, v, sky.air(), sky.radiance(v)) > 0.0) shown.push_back(s.magnitude);
     }
     return shown;
-}
-
-/// The evening time of a preset at which the sun is at `elevationDeg`
-/// (bisection between noon and midnight, where the sun only sinks).
-double eveningTime(const CompiledPreset& preset, double elevationDeg) {
-    double lo = 12.0, hi = 23.999;
-    for (int i = 0; i < 50; ++i) {
-        const double mid = 0.5 * (lo + hi);
-        const double e = preset.evaluate(mid).sunLight.body.elevation * 360.0 / kTwoPi;
-        (e > elevationDeg ? lo : hi) = mid;
-    }
-    return 0.5 * (lo + hi);
 }
 
 class Stars : public GlTest {
@@ -486,7 +475,7 @@ TEST(StarsTwilight, OnlyTheBrightestShowAtSunMinusFive) {
     PresetLoadResult loaded = loadPreset(std::string(AERIAL_SOURCE_DIR) + "/presets/hazy_sunset.json");
     ASSERT_TRUE(loaded.ok());
     const CompiledPreset preset(std::move(*loaded.preset));
-    const PresetState dusk = preset.evaluate(eveningTime(preset, -5.0));
+    const PresetState dusk = preset.evaluate(aerial::test::eveningTimeOfSun(preset, -5.0));
     const std::vector<double> shown = visibleStars(dusk);
     double faintest = -10.0;
     for (double m : shown) faintest = std::max(faintest, m);
@@ -495,7 +484,7 @@ TEST(StarsTwilight, OnlyTheBrightestShowAtSunMinusFive) {
     EXPECT_LE(shown.size(), 10u);
     EXPECT_LE(faintest, 1.0);
     // And with the sun at -3 deg, none.
-    EXPECT_EQ(visibleStars(preset.evaluate(eveningTime(preset, -3.0))).size(), 0u);
+    EXPECT_EQ(visibleStars(preset.evaluate(aerial::test::eveningTimeOfSun(preset, -3.0))).size(), 0u);
 }
 
 }  // namespace

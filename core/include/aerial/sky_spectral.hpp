@@ -132,24 +132,18 @@ public:
     SpectralSkySolver(const SpectralSkySolver&) = delete;
     SpectralSkySolver& operator=(const SpectralSkySolver&) = delete;
 
-    /// Solves every pass for the preset's RGB `air` and the light, and
-    /// publishes the combined table. Abandons an amortised solve in progress.
+    // SkySolver's calls (<aerial/sky.hpp>), over every pass: `air` is the
+    // preset's RGB atmosphere; continueSolve advances the pass in progress
+    // (one pass per call) and returns true once the last is done and the
+    // combined table is published; invalidateCache forgets every pass's
+    // cached tables; desc() is every pass's description.
     void solve(const AtmosphereParams& air, const glm::dvec3& lightDirection);
-    /// Starts an amortised solve; nothing is computed yet. The result is
-    /// bit-identical to solve() with the same arguments.
     void beginSolve(const AtmosphereParams& air, const glm::dvec3& lightDirection);
-    /// Advances the pass in progress by up to `rows` rows
-    /// (SkySolver::continueSolve; one pass per call). Returns true when the
-    /// last pass is done and the combined table is published through table().
     bool continueSolve(int rows);
-    /// True while an amortised solve is in progress.
     bool solving() const;
-    /// Forgets every pass's cached tables (SkySolver::invalidateCache).
     void invalidateCache();
-
     /// The last completed combined table (zeros, generation 0, before the first).
     const SkyTable& table() const;
-    /// The description with defaults resolved (that of every pass).
     const SkySolverDesc& desc() const;
 
 private:
