@@ -174,20 +174,15 @@ vec3 starRadiance(vec3 v, vec3 background) {
 }
 
 // Airglow (core's aerial/night_sky.hpp is the reference and documents the
-// model): kAirglowZenithRadiance times the van Rhijn factor of a shell 90 km
-// up, dimmed like the stars, with kAirglowScatteredFill of what the air
-// scatters out of the line of sight scattered back in. Physical, so always
-// on (by day it is 1e-9 of the sky); frame.nightSky only switches it off
-// with the stars (FrameDesc::stars).
-const vec3 kAirglowZenithRadiance = vec3(1.15 * 4.5e-8, 0.98 * 4.5e-8, 0.75 * 4.5e-8);
-const float kAirglowShell = 6360000.0 / (6360000.0 + 90000.0);  // Rg / (Rg + h)
-const float kAirglowScatteredFill = 0.5;
-
+// model): frame.airglowZenithRadiance times the van Rhijn factor of its
+// shell (frame.airglowShell), dimmed like the stars, with frame.airglowScatteredFill of what
+// the air scatters out of the line of sight scattered back in. Physical, so
+// always on, as the sky tables are (by day it is 1e-9 of the sky).
 vec3 airglowRadiance(vec3 v) {
-    if (!(frame.nightSky > 0.0) || v.y <= 0.0) return vec3(0.0);
-    float vanRhijn = inversesqrt(1.0 - kAirglowShell * kAirglowShell * (1.0 - v.y * v.y));
+    if (v.y <= 0.0) return vec3(0.0);
+    float vanRhijn = inversesqrt(1.0 - frame.airglowShell * frame.airglowShell * (1.0 - v.y * v.y));
     vec3 direct = pow(frame.starTransmittance, vec3(airMass(v.y)));
-    return kAirglowZenithRadiance * vanRhijn * (direct + kAirglowScatteredFill * (1.0 - direct));
+    return frame.airglowZenithRadiance * vanRhijn * (direct + frame.airglowScatteredFill * (1.0 - direct));
 }
 
 void main() {

@@ -18,8 +18,7 @@
 //              "limiting_magnitude", "limiting_magnitude_at_eye",
 //              "extinction_mag"}}
 // "stars" (aerial/stars.hpp): the clear sky behind the stars (the table's
-// radiance plus airglowRadiance, which the sky pass fades in from sun +2
-// to -10 deg, renderer::starVisibility) as a luminance
+// radiance plus airglowRadiance, as the sky pass draws them) as a luminance
 // and a V surface brightness; the naked-eye limiting magnitude against it
 // at the eye, and for a star's magnitude above the atmosphere (the first
 // plus the extinction T_zenith^X in V towards the direction): a star of

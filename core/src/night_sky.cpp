@@ -8,7 +8,6 @@ namespace aerial {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kGroundRadius = 6360000.0;
 
 double unitOrZero(double x) { return std::isfinite(x) ? std::clamp(x, 0.0, 1.0) : 0.0; }
 
@@ -22,7 +21,7 @@ double relativeAirMass(double mu) {
 
 double airglowVanRhijn(double mu) {
     const double m = unitOrZero(mu);
-    const double r = kGroundRadius / (kGroundRadius + kAirglowHeight);
+    const double r = kAirglowShellRatio;
     return 1.0 / std::sqrt(1.0 - r * r * (1.0 - m * m));
 }
 

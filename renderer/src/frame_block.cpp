@@ -20,12 +20,6 @@
 
 namespace aerial::renderer {
 
-double starVisibility(double sunElevation) {
-    if (!std::isfinite(sunElevation)) return 0.0;
-    const double x = std::clamp((2.0 - sunElevation * (180.0 / kPi)) / 12.0, 0.0, 1.0);
-    return x * x * (3.0 - 2.0 * x);
-}
-
 namespace detail {
 
 Vec4 toVec4(const glm::dvec3& v, double w) {
@@ -144,10 +138,12 @@ FrameBlock makeFrameBlock(const Camera& camera, const CameraFrame& view, const P
                   (in.moon.valid && in.moon.table
                        ? skyIrradiance(*in.moon.table, g, colourOf(moon.illuminanceSpace))
                        : glm::dvec3(0.0));
-    // The airglow is physical (1e-9 of a day sky), so it is on whenever the
-    // night sky is (sky.glsl gates it the same way).
-    const double nightSky = frame.stars ? starVisibility(sun.body.elevation) : 0.0;
-    const glm::dvec3 airglow = nightSky > 0.0 ? airglowIrradiance(state.zenithTransmittance) : glm::dvec3(0.0);
+    // The airglow is physical (1e-9 of a day sky) and always part of the
+    // sky, as in sky.glsl and core's fog light and light report.
+    const glm::dvec3 airglow = airglowIrradiance(state.zenithTransmittance);
+    fb.airglowZenithRadiance = toVec3(kAirglowZenithRadiance);
+    fb.airglowScatteredFill = static_cast<float>(kAirglowScatteredFill);
+    fb.airglowShell = static_cast<float>(kAirglowShellRatio);
     fb.skyAmbient = toVec3(colourOf(ambient + airglow));
     // Below the cloud deck: the clear sky (and the airglow) through its gaps
     // and the deck's underside (OvercastLight::groundIrradiance).
@@ -220,17 +216,15 @@ FrameBlock makeFrameBlock(const Camera& camera, const CameraFrame& view, const P
     // and what the limiting magnitude needs (aerial/stars.hpp).
     const double starE = nonNegative(frameStarIlluminance(state, frame), 1e30);
     CelestialFrame celestial;
-    glm::dvec3 zenithTransmittance(1.0);
-    if (starE > 0.0) {
-        celestial = celestialFrame(env.location, state.timeHours);
-        zenithTransmittance = state.zenithTransmittance;
-    }
+    if (starE > 0.0) celestial = celestialFrame(env.location, state.timeHours);
+    // The zenith's transmittance dims the stars and the airglow, which is
+    // drawn with the stars off too.
+    const glm::dvec3 zenithTransmittance = state.zenithTransmittance;
     const double fov =
         std::isfinite(camera.verticalFov) ? std::clamp(camera.verticalFov, 1e-4, kPi - 1e-4) : 1.0;
     const double starSigma = std::min(0.6 * fov / double(h), kStarMaxSigma);
     fb.starAxisX = toVec3(unitOr(celestial.equatorX, {1.0, 0.0, 0.0}));
     fb.starIlluminance = static_cast<float>(starE);
-    fb.nightSky = static_cast<float>(starE > 0.0 ? nightSky : 0.0);
     fb.starAxisY = toVec3(unitOr(celestial.equatorY, {0.0, 0.0, 1.0}));
     fb.starSigma = static_cast<float>(starSigma);
     fb.starPole = toVec3(unitOr(celestial.pole, {0.0, 1.0, 0.0}));

@@ -42,7 +42,7 @@ struct FrameBlock {
     Vec3 moonDirection;
     float moonDiscChord = 0.0f;
     Vec3 moonIlluminanceSpace;
-    float nightSky = 0.0f;  ///< stars and airglow, 0..1 (starVisibility; 0 with FrameDesc::stars off)
+    float airglowScatteredFill = 0.0f;  ///< aerial::kAirglowScatteredFill
     Vec3 moonIlluminance;
     float moonDiscInverseSolidAngle = 0.0f;
     Vec3 sunHorizonRayleigh;
@@ -79,7 +79,7 @@ struct FrameBlock {
     float starNitsPerUnit = 0.0f;  ///< [cd/m^2] per radiance unit (kNitsPerRadianceUnit)
     Vec3 starTransmittance;
     float starDarkLimit = 0.0f;  ///< limitingMagnitude(0) (aerial/stars.hpp): the black sky's limit [mag]
-    Vec3 sunHorizonMultiple;  ///< horizon average of I_ms [1/sr]
+    Vec3 sunHorizonMultiple;     ///< horizon average of I_ms [1/sr]
     float padSunMultiple = 0.0f;
     Vec3 moonHorizonMultiple;
     float padMoonMultiple = 0.0f;
@@ -129,6 +129,10 @@ struct FrameBlock {
     float padFogSkyL1y = 0.0f;
     Vec3 fogSkyL1z;
     float padFogSkyL1z = 0.0f;
+    /// The night sky's airglow above the atmosphere at the zenith
+    /// (aerial::kAirglowZenithRadiance; its model: night_sky.hpp).
+    Vec3 airglowZenithRadiance;
+    float airglowShell = 0.0f;  ///< Rg / (Rg + kAirglowHeight), the van Rhijn factor's ratio
 };
 static_assert(offsetof(FrameBlock, clipFromWorld) == 0);
 static_assert(offsetof(FrameBlock, eye) == 64);
@@ -197,7 +201,8 @@ static_assert(offsetof(FrameBlock, fogSkyL1x) == 672);
 static_assert(offsetof(FrameBlock, fogDirectVisibility) == 684);
 static_assert(offsetof(FrameBlock, fogSkyL1y) == 688);
 static_assert(offsetof(FrameBlock, fogSkyL1z) == 704);
-static_assert(sizeof(FrameBlock) == 720);
+static_assert(offsetof(FrameBlock, airglowZenithRadiance) == 720);
+static_assert(sizeof(FrameBlock) == 736);
 
 /// shaders/common/volume.glsl, VolumeBlock (binding 1): one fog volume.
 struct VolumeBlock {

@@ -63,6 +63,10 @@
 //   fogDirectVisibility the clouds' mean visibility of the sun and moon for
 //                       the fog (fogDirectVisibility); the fog's direct light
 //                       is <light>Illuminance times it
+//   airglowZenithRadiance, airglowScatteredFill, airglowShell  the night
+//                       sky's airglow (aerial/night_sky.hpp:
+//                       kAirglowZenithRadiance, kAirglowScatteredFill, and
+//                       Rg / (Rg + kAirglowHeight) for the van Rhijn factor)
 //   fogHorizonDistance  D [m]: fog at distance s takes the horizon's colour
 //                       with weight 1 - exp(-(s / D)^2)
 //
@@ -92,7 +96,7 @@ layout(std140, binding = 0) uniform FrameBlock {
     vec3 moonDirection;
     float moonDiscChord;
     vec3 moonIlluminanceSpace;
-    float nightSky;
+    float airglowScatteredFill;
     vec3 moonIlluminance;
     float moonDiscInverseSolidAngle;
     vec3 sunHorizonRayleigh;
@@ -161,6 +165,8 @@ layout(std140, binding = 0) uniform FrameBlock {
     float padFogSkyL1y;
     vec3 fogSkyL1z;
     float padFogSkyL1z;
+    vec3 airglowZenithRadiance;
+    float airglowShell;
 } frame;
 
 // Ray from the eye to the far plane at normalised device coordinates ndc

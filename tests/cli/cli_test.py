@@ -449,8 +449,11 @@ class Fog(unittest.TestCase):
         away = luminance(level(towards_azimuth + math.pi)["in_scatter_rgb"])
         self.assertGreater(away, 0.0)
         self.assertLessEqual(towards / away, 3.0, (towards, away))
-        # 100 m is 0.04% of the way to the horizon's colour (w = 1 - exp(-(s / 5 km)^2)).
-        self.assertAlmostEqual(r["global_fog"]["horizon_weight"], -math.expm1(-(100.0 / 5000.0) ** 2), delta=1e-15)
+        # 100 m is 0.04% of the way to the horizon's colour (w = 1 - exp(-(s / 5 km)^2)),
+        # s the length of the segment as passed (its end rounded to 1e-6 m).
+        end = [float("%.6f" % (100 * math.sin(towards_azimuth))), float("%.6f" % (-100 * math.cos(towards_azimuth)))]
+        s = math.hypot(end[0], end[1])
+        self.assertAlmostEqual(r["global_fog"]["horizon_weight"], -math.expm1(-(s / 5000.0) ** 2), delta=1e-15)
 
 
 class BakeRadiance(unittest.TestCase):

@@ -164,7 +164,8 @@ TEST(FrameBlock, LightsDiscsAndSkyMapping) {
     EXPECT_FLOAT_EQ(fb.mieAnisotropy, 0.999f);
     expectNear3(fb.sunHorizonRayleigh, {0.1, 0.2, 0.3}, 1e-7, "sun I_R");
     expectNear3(fb.moonHorizonMie, {0.04, 0.05, 0.06}, 1e-7, "moon I_M");
-    expectNear3(fb.skyAmbient, {0.0, 0.0, 0.0}, 0.0, "no tables: no ambient");
+    expectNear3(fb.skyAmbient, airglowIrradiance(state.zenithTransmittance), 1e-13,
+                "no tables: the ambient is the night sky's airglow alone");
     EXPECT_FLOAT_EQ(fb.sunTableAzimuth, 1.25f);
     EXPECT_FLOAT_EQ(fb.moonTableAzimuth, 2.5f);
     EXPECT_EQ(fb.sunTableColumns, 64.0f);
@@ -281,20 +282,23 @@ TEST(FrameBlock, StarsFollowTheSwitchAndTheAirglowTheSun) {
     off.stars = false;
     EXPECT_EQ(blockFor(night, off, inputs).starIlluminance, 0.0f);
     // Which stars show is decided per pixel by the sky's limiting magnitude
-    // (sky.glsl): the illuminance is the same by day; the airglow fades.
+    // (sky.glsl): the illuminance is the same by day.
     EXPECT_FLOAT_EQ(blockFor(testState(), {}, inputs).starIlluminance, float(renderer::kStarIlluminance));
-    EXPECT_EQ(blockFor(testState(), {}, inputs).nightSky, 0.0f);  // day
-    PresetState dusk = night;
-    dusk.sunLight.body.elevation = -4.0 * kPiD / 180.0;  // half way through the airglow's fade
-    EXPECT_FLOAT_EQ(blockFor(dusk, {}, inputs).starIlluminance, float(renderer::kStarIlluminance));
-    EXPECT_FLOAT_EQ(blockFor(dusk, {}, inputs).nightSky, 0.5f);
 
-    // The airglow lights the scene with the stars: its irradiance joins the
-    // sky ambient (no sky tables here, so the ambient is the airglow alone).
-    EXPECT_FLOAT_EQ(fb.nightSky, 1.0f);
+    // The airglow is physical and part of the sky by day and night, with the
+    // stars on or off: core's model constants, and its irradiance in the sky
+    // ambient (no sky tables here, so the ambient is the airglow alone).
+    for (const FrameBlock& b : {fb, blockFor(night, off, inputs), blockFor(testState(), {}, inputs)}) {
+        expectNear3(b.airglowZenithRadiance, kAirglowZenithRadiance, 1e-14, "airglow zenith");
+        EXPECT_FLOAT_EQ(b.airglowScatteredFill, float(kAirglowScatteredFill));
+        EXPECT_FLOAT_EQ(b.airglowShell, float(kAirglowShellRatio));
+    }
+    // The zenith transmittance dims the airglow with the stars off too.
+    expectNear3(blockFor(night, off, inputs).starTransmittance, night.zenithTransmittance, 1e-7,
+                "zenith transmittance, stars off");
     expectNear3(fb.skyAmbient, airglowIrradiance(night.zenithTransmittance), 1e-10, "airglow ambient");
-    EXPECT_EQ(blockFor(night, off, inputs).nightSky, 0.0f);
-    expectNear3(blockFor(night, off, inputs).skyAmbient, glm::dvec3(0.0), 0.0, "no night sky, no airglow");
+    expectNear3(blockFor(night, off, inputs).skyAmbient, airglowIrradiance(night.zenithTransmittance), 1e-10,
+                "airglow ambient, stars off");
 }
 
 // --- std140 offsets: the GLSL blocks laid out by the rules, against offsetof.
@@ -386,7 +390,7 @@ TEST(FrameBlock, Std140OffsetsMatchTheGlslBlocks) {
                   AERIAL_OFFSET(FrameBlock, moonDirection),
                   AERIAL_OFFSET(FrameBlock, moonDiscChord),
                   AERIAL_OFFSET(FrameBlock, moonIlluminanceSpace),
-                  AERIAL_OFFSET(FrameBlock, nightSky),
+                  AERIAL_OFFSET(FrameBlock, airglowScatteredFill),
                   AERIAL_OFFSET(FrameBlock, moonIlluminance),
                   AERIAL_OFFSET(FrameBlock, moonDiscInverseSolidAngle),
                   AERIAL_OFFSET(FrameBlock, sunHorizonRayleigh),
@@ -437,7 +441,9 @@ TEST(FrameBlock, Std140OffsetsMatchTheGlslBlocks) {
                   AERIAL_OFFSET(FrameBlock, fogSkyL1x),
                   AERIAL_OFFSET(FrameBlock, fogDirectVisibility),
                   AERIAL_OFFSET(FrameBlock, fogSkyL1y),
-                  AERIAL_OFFSET(FrameBlock, fogSkyL1z)},
+                  AERIAL_OFFSET(FrameBlock, fogSkyL1z),
+                  AERIAL_OFFSET(FrameBlock, airglowZenithRadiance),
+                  AERIAL_OFFSET(FrameBlock, airglowShell)},
                  sizeof(FrameBlock));
     expectLayout(
         "common/volume.glsl", "VolumeBlock",

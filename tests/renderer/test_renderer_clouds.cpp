@@ -301,6 +301,11 @@ TEST_F(GlTest, ExtremeCloudsGiveFinitePixels) {
         for (const renderer::Camera& camera : cameras) {
             for (auto quality : {renderer::CloudQuality::Reference, renderer::CloudQuality::Amortised}) {
                 renderer::FrameDesc frame;
+                // Every other camera in the half target, whose cap keeps every
+                // pass below its overflow; the rest in the default float target,
+                // whose test is that every pixel is finite.
+                const bool half = (frames / 2) % 2 == 0;
+                frame.precision = half ? renderer::ColourPrecision::Half : renderer::ColourPrecision::Float;
                 frame.width = 96;
                 frame.height = 54;
                 frame.cloudSteps = 24;
@@ -315,7 +320,9 @@ TEST_F(GlTest, ExtremeCloudsGiveFinitePixels) {
                     brightest = std::max(brightest, double(p));
                 }
                 EXPECT_EQ(bad, 0) << hours << " h, eye y " << camera.eye.y;
-                EXPECT_LE(brightest, 65504.0);
+                if (half) {
+                    EXPECT_LE(brightest, 65504.0);
+                }
                 ++frames;
             }
         }

@@ -4,6 +4,8 @@
 // functions per pixel for the sun and the moon; and the sun disc.
 #include "gl_fixture.hpp"
 
+#include <aerial/night_sky.hpp>
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -151,7 +153,10 @@ TEST_F(SkyVsCpu, DeepTwilightKeepsItsPrecisionInTheDefaultTarget) {
     for (int y = 0; y < kHeight; ++y)
         for (int x = 0; x < kWidth; ++x) {
             const glm::dvec3 v = glm::normalize(renderer::farRayAtPixel(cf, x, y, kWidth, kHeight));
-            cpu[std::size_t(y) * kWidth + x] = v.y > 0.0 ? cpuSky(sky, air, v) : glm::dvec3(0.0);
+            // The tables and the airglow, which is part of the sky with the stars off.
+            cpu[std::size_t(y) * kWidth + x] =
+                v.y > 0.0 ? cpuSky(sky, air, v) + airglowRadiance(v, air.zenithTransmittance)
+                          : glm::dvec3(0.0);
             brightest = std::max(brightest, cpu[std::size_t(y) * kWidth + x].x);
         }
     ASSERT_GT(brightest, 0.0);

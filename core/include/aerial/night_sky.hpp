@@ -47,6 +47,8 @@ namespace aerial {
 inline constexpr glm::dvec3 kAirglowZenithRadiance{1.15 * 4.5e-8, 0.98 * 4.5e-8, 0.75 * 4.5e-8};
 /// Height of the emitting layer [m].
 inline constexpr double kAirglowHeight = 90000.0;
+/// Rg / (Rg + kAirglowHeight), Rg = 6360 km: the ratio in the van Rhijn factor.
+inline constexpr double kAirglowShellRatio = 6360000.0 / (6360000.0 + kAirglowHeight);
 /// Share of the airglow scattered out of a line of sight that the rest of
 /// the shell scatters back into it (see the header), 0..1.
 inline constexpr double kAirglowScatteredFill = 0.5;

@@ -108,11 +108,6 @@ std::string defaultShaderDirectory();
 /// the field has its magnitude's share of it (shaders/sky.glsl).
 constexpr double kStarIlluminance = 2.022384e-9;
 
-/// Night fade of the airglow: 0 with the sun above +2 deg, 1 below -10 deg
-/// (nautical twilight), smoothstep between. The stars show by the sky's
-/// limiting magnitude instead (aerial/stars.hpp).
-double starVisibility(double sunElevation);
-
 /// The colour target's format. Radiance is physical in Aerial's unit
 /// (5000 cd/m^2, aerial/exposure.hpp) day and night: a moonless night sky
 /// is ~4e-8 of it and its twilight remnant 1e-9, below the smallest half
@@ -265,9 +260,10 @@ struct FrameDesc {
     /// the GPU after every pass (for benchmarks, not for an interactive
     /// frame).
     bool gpuTimers = false;
-    /// Stars (and the airglow) in the sky pass: each star shows when it is
-    /// brighter than the naked-eye limiting magnitude of the sky behind it
-    /// (aerial/stars.hpp); false hides them (the editor's View > Stars).
+    /// Stars in the sky pass: each star shows when it is brighter than the
+    /// naked-eye limiting magnitude of the sky behind it (aerial/stars.hpp);
+    /// false hides them (the editor's View > Stars). The airglow is part of
+    /// the sky and its light, like the sky tables, either way.
     bool stars = true;
     /// Angular radius of the sun disc [rad]; 0 hides it. Default 0.2666 deg.
     double sunDiscRadius = 0.004653;
@@ -330,9 +326,9 @@ struct PassTimes {
     double emitters = 0.0;
     double transparent = 0.0;
     double particles = 0.0;
-    double cloudShadow = 0.0;  ///< the cloud shadow map
-    double clouds = 0.0;       ///< the cloud layer
-    double shadowMap = 0.0;    ///< the cascaded shadow maps of the sun or moon
+    double cloudShadow = 0.0;      ///< the cloud shadow map
+    double clouds = 0.0;           ///< the cloud layer
+    double shadowMap = 0.0;        ///< the cascaded shadow maps of the sun or moon
     double froxelInject = 0.0;     ///< volumetric fog: density and light per froxel
     double froxelIntegrate = 0.0;  ///< volumetric fog: front-to-back integration
     double froxelApply = 0.0;      ///< volumetric fog: composited over the frame
@@ -386,7 +382,7 @@ struct ShadowMapStats {
 /// Statistics of the last render.
 /// The volumetric fog of the last frame (RenderStats).
 struct FroxelStats {
-    bool drawn = false;  ///< false: FogMode::Analytic, or nothing to fog
+    bool drawn = false;                     ///< false: FogMode::Analytic, or nothing to fog
     int width = 0, height = 0, slices = 0;  ///< the grid [froxels]
     int volumes = 0;                        ///< fog volumes injected
     bool shadowed = false;                  ///< shadow maps or cloud shadows dimmed the light
