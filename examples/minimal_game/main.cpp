@@ -25,6 +25,7 @@
 #include <aerial/fog_query.hpp>
 #include <aerial/preset.hpp>
 #include <aerial/sky.hpp>
+#include <aerial/sky_spectral.hpp>
 
 #include <cmath>
 #include <cstdio>
@@ -61,7 +62,7 @@ int main(int argc, char** argv) {
     // 2. Compile once; the state is reused every frame (no allocation).
     const aerial::CompiledPreset preset(std::move(*loaded.preset));
     aerial::PresetState state;
-    aerial::SkySolver sunSky, moonSky;
+    aerial::SpectralSkySolver sunSky, moonSky;  // six wavelengths: the colours of twilight
 
     // The camera and a transparent object: a glass pane 150 m away, north-east.
     const glm::dvec3 camera(0.0, 2.0, 0.0);

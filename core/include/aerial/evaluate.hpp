@@ -6,6 +6,7 @@
 //   aerial::PresetState state;                  // caller-owned, reused
 //   compiled.evaluate(timeHours, state);        // per frame, no allocation
 //                                               // once `state` has its shape
+//   // sunSky, moonSky: aerial::SpectralSkySolver (sky_spectral.hpp)
 //   sunSky.solve(state.environment.atmosphere, state.sunLight.body.direction);
 //   moonSky.solve(state.environment.atmosphere, state.moonLight.body.direction);
 //   aerial::FogScene fog(aerial::fogSceneDesc(state, sunSky.table(), moonSky.table()));
