@@ -30,13 +30,15 @@
 //   * adaptation: an exponential approach to the target at `speed` per
 //     second, faster when the scene gets brighter (a pupil closes faster than
 //     it opens), 1 - exp(-dt * speed) of the gap closed in dt seconds;
-//   * the meter: centre-weighted, as a camera's (a pixel counts 1 within
-//     ~kMeterCentreRadius frame heights of the centre, kMeterOutsideWeight
-//     at the edges: the bright sky at the top of a landscape frame counts
-//     less, as a photographer would meter the subject); its average is
-//     taken in log2 luminance over a histogram, between two percentiles
-//     (Unreal: 10 % and 90 %), so a small bright sun, a campfire or a dark
-//     corner does not swing the exposure.
+//   * the meter: centre-weighted, as a camera's, about a point a little
+//     below the frame's centre (a pixel counts 1 within ~kMeterCentreRadius
+//     frame heights of it, kMeterOutsideWeight at the edges: the bright sky
+//     at the top of a landscape frame counts less, as a photographer meters
+//     the subject); its average is taken in log2 luminance over a
+//     histogram, between the 10 % and 60 % quantiles (Unreal takes 10-90 %;
+//     the upper cut here also leaves out the bright half of a sky-filled
+//     frame), so a small bright sun, a campfire or a dark corner does not
+//     swing the exposure.
 // Units: the physical formulas take luminance in cd/m^2. Aerial's radiance
 // unit is kNitsPerRadianceUnit cd/m^2: the default sun intensity 20 lights
 // the ground like the ~100 000 lx of a clear noon, so one unit of
@@ -137,12 +139,13 @@ struct ExposureParams {
 inline constexpr double kMiddleGrey = 0.18;
 /// The centre weighting of meterAverageLuminance with a frame size: a
 /// pixel's weight is kMeterOutsideWeight + exp(-r^2 / (2 R^2)), r its
-/// distance from the frame's centre in frame heights, R this radius.
+/// distance in frame heights from the point at the frame's middle column
+/// and kMeterCentreHeight of its height from the top, R kMeterCentreRadius.
 inline constexpr double kMeterCentreRadius = 0.25;
 inline constexpr double kMeterCentreHeight = 0.62;
 inline constexpr double kMeterOutsideWeight = 0.1;
 
-/// The band of the metering histogram that counts (Unreal's defaults).
+/// The band of the metering histogram that counts (quantiles of the weight).
 inline constexpr double kMeterLowFraction = 0.10;
 inline constexpr double kMeterHighFraction = 0.60;
 
@@ -154,8 +157,8 @@ inline constexpr double kMeterHighFraction = 0.60;
 double meterAverageLuminance(std::span<const float> pixels, int channels, std::size_t step = 1);
 
 /// The same, centre-weighted as a camera meters (kMeterCentreRadius,
-/// kMeterOutsideWeight) over a frame of width x height pixels stored row by
-/// row (either row order: the weight is symmetric); what the editor and
+/// kMeterOutsideWeight, kMeterCentreHeight) over a frame of width x height
+/// pixels stored row by row, the top row first; what the editor and
 /// `aerial render` meter with. Falls back to the unweighted meter when the
 /// size does not match the pixels.
 double meterAverageLuminance(std::span<const float> pixels, int channels, int width, int height,
