@@ -16,7 +16,8 @@
 //    "moon": {...},
 //    "light": {"horizontal_illuminance_lux": {"sun", "sky", "moon", "night",
 //              "total"}, "zenith_luminance_cd_m2"} (aerial/photometry.hpp: the
-//              sky tables solved for this moment, 128 x 64),
+//              sky tables solved for this moment, 128 x 64; left out with
+//              --no-light),
 //    "parameters": {every global parameter, nested as in the preset file},
 //    "volumes": [{every volume parameter}], "emitters": [{every emitter
 //    parameter, "flash"}], "cloud_volumes": [{every cloud volume parameter}]}
@@ -28,6 +29,7 @@
 
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace aerial::cli {
@@ -37,6 +39,7 @@ struct EvalOptions {
     std::string preset;
     std::string time;
     bool json = false;
+    bool light = true;  ///< false: --no-light
 };
 
 void printLight(const char* name, const LightState& light) {
@@ -70,14 +73,20 @@ int runEval(const EvalOptions& options) {
     const std::string name = preset.name;
     const CompiledPreset compiled(std::move(preset));
     const PresetState state = compiled.evaluate(t);
-    SkyTables tables;
-    tables.solve(state);
-    const LightReport light = lightReport(state, tables.sun(), tables.moon());
+    // The light report needs both sky tables (a solve of ~1 ms, and the
+    // atmosphere's tables the first time, ~20 ms): --no-light skips it for
+    // scripts that only read positions and parameters.
+    std::optional<LightReport> light;
+    if (options.light) {
+        SkyTables tables;
+        tables.solve(state);
+        light = lightReport(state, tables.sun(), tables.moon());
+    }
 
     if (options.json) {
         Json out = {{"preset", {{"file", options.preset}, {"name", name}}}};
         out.update(stateToJson(state));
-        out["light"] = lightReportToJson(light);
+        if (light) out["light"] = lightReportToJson(*light);
         printJson(out);
         return kExitOk;
     }
@@ -85,10 +94,12 @@ int runEval(const EvalOptions& options) {
                 formatTime(state.timeHours).c_str());
     printLight("sun", state.sunLight);
     printLight("moon", state.moonLight);
-    const HorizontalIlluminance& lux = light.horizontalIlluminanceLux;
-    std::printf("light  on the ground %.4g lx (sun %.4g, sky %.4g, moon %.4g, night sky %.4g); "
-                "zenith %.4g cd/m^2\n",
-                lux.total, lux.sun, lux.sky, lux.moon, lux.night, light.zenithLuminance);
+    if (light) {
+        const HorizontalIlluminance& lux = light->horizontalIlluminanceLux;
+        std::printf("light  on the ground %.4g lx (sun %.4g, sky %.4g, moon %.4g, night sky %.4g); "
+                    "zenith %.4g cd/m^2\n",
+                    lux.total, lux.sun, lux.sky, lux.moon, lux.night, light->zenithLuminance);
+    }
     std::printf("\nparameters\n");
     printParameters(ParamScope::Global, state.environment, "  ");
     for (const FogVolume& v : state.volumes) {
@@ -121,6 +132,9 @@ Command addEvalCommand(CLI::App& parent) {
         ->type_name("PRESET");
     addTimeOption(*app, options->time);
     app->add_flag("--json", options->json, "Machine-readable output");
+    app->add_flag("--light,!--no-light", options->light,
+                  "Report the light in lux and cd/m^2 (default; solves both sky tables). --no-light skips "
+                  "it: positions and parameters only, ~10x quicker");
     app->footer(
         helpFooter("  aerial eval presets/hazy_sunset.json --time 18:30\n"
                    "  aerial eval presets/hazy_sunset.json --time 18.5 --json"));

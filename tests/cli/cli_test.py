@@ -286,6 +286,32 @@ class Eval(unittest.TestCase):
                     self.assertAlmostEqual(state["sun"]["elevation_deg"], math.degrees(math.asin(expected[1])),
                                            delta=1e-7)
 
+    def test_light_in_lux(self):
+        # The light as a meter reads it (aerial/photometry.hpp): a clear
+        # noon's horizontal illuminance within 1.5x of the published
+        # 90-130 klx, the sources adding up; a moonless midnight (a new moon
+        # dated, 45 N) of 1-2 mlx under a zenith of 1.7-2.5e-4 cd/m^2
+        # (within 2x and as published); --no-light leaves the block out.
+        with open(preset("clear_summer_day")) as f:
+            document = json.load(f)
+        document["location"]["date"] = "2025-06-25"
+        document["clouds"]["coverage"] = 0
+        document["tracks"] = [t for t in document["tracks"] if t.get("param") != "clouds.coverage"]
+        path = os.path.join(WORK, "new_moon.json")
+        with open(path, "w") as f:
+            json.dump(document, f)
+        noon = run_json(self, "eval", path, "--time", "12:00")["light"]
+        e = noon["horizontal_illuminance_lux"]
+        self.assertGreater(e["total"], 90000 / 1.5)
+        self.assertLess(e["total"], 130000 * 1.5)
+        self.assertAlmostEqual(e["total"], e["sun"] + e["sky"] + e["moon"] + e["night"], delta=1e-9 * e["total"])
+        night = run_json(self, "eval", path, "--time", "00:00")["light"]
+        self.assertGreater(night["horizontal_illuminance_lux"]["total"], 0.5e-3)
+        self.assertLess(night["horizontal_illuminance_lux"]["total"], 3e-3)
+        self.assertGreater(night["zenith_luminance_cd_m2"], 1.7e-4)
+        self.assertLess(night["zenith_luminance_cd_m2"], 2.5e-4)
+        self.assertNotIn("light", run_json(self, "eval", path, "--time", "00:00", "--no-light"))
+
     def test_every_parameter_is_in_the_output(self):
         with open(preset("foggy_valley_morning")) as f:
             document = json.load(f)

@@ -110,7 +110,9 @@ def samples():
 def evaluate(aerial, path, location, time):
     with open(path, "w") as f:
         json.dump({"version": 1, "location": location}, f)
-    p = subprocess.run([aerial, "eval", path, "--time", time, "--json"], capture_output=True, text=True)
+    # Positions only: --no-light skips the sky solve of the light report.
+    p = subprocess.run([aerial, "eval", path, "--time", time, "--json", "--no-light"], capture_output=True,
+                       text=True)
     if p.returncode != 0:
         raise RuntimeError(f"aerial eval {time} failed: {p.stderr.strip()}")
     return json.loads(p.stdout)
