@@ -202,6 +202,13 @@ void setValueAt(Preset& preset, const ParamRef& ref, const double value[4], doub
     void* object = paramObjectOf(preset, ref);
     if (!object || !ref.desc) return;
     const ParamDesc& p = *ref.desc;
+    // An edit at a key (within kKeyTimeTolerance, where the inspector shows
+    // "keyed here") changes that key at its own time, never a second key
+    // beside it.
+    auto keyTime = [&](const Track& track) {
+        const int k = keyIndexAt(track, timeHours);
+        return k >= 0 ? track.keys[std::size_t(k)].timeHours : timeHours;
+    };
     auto clampValue = [&](double v) {
         if (!std::isfinite(v)) v = 0.0;
         return std::clamp(v, p.minValue, p.maxValue);
@@ -210,7 +217,7 @@ void setValueAt(Preset& preset, const ParamRef& ref, const double value[4], doub
         case ParamType::Scalar: {
             const double v = clampValue(value[0]);
             if (Track* track = trackOf(preset, ref))
-                setKey(*track, timeHours, glm::dvec3(v, 0.0, 0.0));
+                setKey(*track, keyTime(*track), glm::dvec3(v, 0.0, 0.0));
             else
                 *p.scalar(object) = v;
             break;
@@ -224,7 +231,7 @@ void setValueAt(Preset& preset, const ParamRef& ref, const double value[4], doub
                 v /= length;
             }
             if (Track* track = trackOf(preset, ref))
-                setKey(*track, timeHours, v);
+                setKey(*track, keyTime(*track), v);
             else
                 *p.vec3(object) = v;
             break;
@@ -232,7 +239,7 @@ void setValueAt(Preset& preset, const ParamRef& ref, const double value[4], doub
         case ParamType::Vec2: {
             const glm::dvec2 v(clampValue(value[0]), clampValue(value[1]));
             if (Track* track = trackOf(preset, ref))
-                setKey(*track, timeHours, glm::dvec3(v, 0.0));
+                setKey(*track, keyTime(*track), glm::dvec3(v, 0.0));
             else
                 *p.vec2(object) = v;
             break;
@@ -440,14 +447,14 @@ int addEmitter(Preset& preset, EmitterKind kind, const glm::dvec3& position) {
                   lightning ? "Lightning" : "Emitter", e.id, e.name);
     e.kind = kind;
     e.position = position;
-    e.intensity = kNewEmitterIntensityPerM;
-    e.attenuation = kNewEmitterAttenuationPerM2;
     if (lightning) {
         e.colour = {0.8, 0.85, 1.0};
-        e.intensity = 4.0 * kNewEmitterIntensityPerM;
-        e.attenuation = 1e-4;  // lightning lights a cloud hundreds of metres across
+        e.intensityCd = kNewLightningIntensityCd;
+        e.attenuation = kNewLightningAttenuationPerM2;
     } else {
-        e.colour = {1.0, 0.72, 0.4};  // a warm lamp
+        e.intensityCd = kNewEmitterIntensityCd;
+        e.temperatureK = kNewEmitterTemperatureK;
+        e.attenuation = kNewEmitterAttenuationPerM2;
     }
     preset.emitters.push_back(e);
     return int(preset.emitters.size()) - 1;

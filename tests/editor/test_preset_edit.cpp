@@ -26,7 +26,7 @@ TEST(PresetEdit, Addresses) {
     ASSERT_TRUE(v);
     EXPECT_EQ(v->object, 0);
     EXPECT_EQ(paramAddress(*v), "volume[0].density_per_m");
-    EXPECT_TRUE(parseParamAddress(p, "emitter[0].intensity_per_m", &error));
+    EXPECT_TRUE(parseParamAddress(p, "emitter[0].intensity_cd", &error));
     EXPECT_FALSE(parseParamAddress(p, "volume[5].density_per_m", &error));
     EXPECT_NE(error.find("there are 1 volumes"), std::string::npos) << error;
     EXPECT_FALSE(parseParamAddress(p, "fog.nope", &error));
@@ -57,6 +57,29 @@ TEST(PresetEdit, SetValueAutoKeysAnimatedParameters) {
     setValueAt(p, ref(p, "fog.falloff_per_m"), value, 9.0);  // constant
     EXPECT_DOUBLE_EQ(p.environment.fog.falloff, 0.005);
     EXPECT_FALSE(findTrack(p, TrackTarget::global("fog.falloff_per_m")));
+}
+
+TEST(PresetEdit, AnEditAtAKeyChangesThatKeyNotANeighbour) {
+    // Issue 50: the playhead at 06:00:20 is "at" the 06:00 key (the
+    // inspector shows it keyed there): the edit changes that key, at its own
+    // time, and leaves no second key 20 s beside it.
+    Preset p = defaultPreset();
+    const Track* track = findTrack(p, TrackTarget::global("fog.density_per_m"));
+    ASSERT_TRUE(track);
+    const std::size_t before = track->keys.size();
+    ASSERT_GE(keyIndexAt(*track, 6.0), 0);
+    const double value[4] = {0.003, 0, 0, 0};
+    setValueAt(p, ref(p, "fog.density_per_m"), value, 6.0 + 20.0 / 3600.0);
+    track = findTrack(p, TrackTarget::global("fog.density_per_m"));
+    ASSERT_EQ(track->keys.size(), before);
+    const TrackKey& key = track->keys[std::size_t(keyIndexAt(*track, 6.0))];
+    EXPECT_EQ(key.timeHours, 6.0);
+    EXPECT_EQ(key.value.x, 0.003);
+    for (std::size_t k = 1; k < track->keys.size(); ++k)
+        EXPECT_GE(track->keys[k].timeHours - track->keys[k - 1].timeHours, 1.0 / 60.0);
+    // Away from every key (beyond the tolerance) the edit adds a key there.
+    setValueAt(p, ref(p, "fog.density_per_m"), value, 6.0 + 2.0 / 60.0);
+    EXPECT_EQ(findTrack(p, TrackTarget::global("fog.density_per_m"))->keys.size(), before + 1);
 }
 
 TEST(PresetEdit, SetValueClampsAndNormalises) {
@@ -219,7 +242,7 @@ TEST(PresetEdit, Objects) {
     EXPECT_EQ(p.volumes[2].id, "ellipsoid_volume_2");
     EXPECT_EQ(p.volumes[2].name, "Ellipsoid volume 2");
     const int e = addEmitter(p, EmitterKind::Point, {0, 3, 0});
-    EXPECT_DOUBLE_EQ(p.emitters[std::size_t(e)].intensity, kNewEmitterIntensityPerM);
+    EXPECT_DOUBLE_EQ(p.emitters[std::size_t(e)].intensityCd, kNewEmitterIntensityCd);
     EXPECT_DOUBLE_EQ(p.emitters[std::size_t(e)].attenuation, kNewEmitterAttenuationPerM2);
     EXPECT_LT(p.emitters[std::size_t(e)].intensity, 0.01) << "artist-sane next to a sky of radiance ~1";
 
