@@ -58,7 +58,7 @@ aerial::Preset bigPreset() {
         p.tracks.push_back({aerial::TrackTarget::volume(p.volumes[std::size_t(i)].id, "position_m"),
                             interp(n), keys6(10.0, true)});
     for (int i = 0; i < 20; ++i, ++n)  // 20 emitter intensities
-        p.tracks.push_back({aerial::TrackTarget::emitter(p.emitters[std::size_t(i)].id, "intensity_per_m"),
+        p.tracks.push_back({aerial::TrackTarget::emitter(p.emitters[std::size_t(i)].id, "intensity_cd"),
                             interp(n), keys6(2.0, false)});
     for (int i = 0; i < 10; ++i, ++n)  // 10 emitter colours
         p.tracks.push_back({aerial::TrackTarget::emitter(p.emitters[std::size_t(i)].id, "colour_rgb"),

@@ -49,7 +49,7 @@
 // Per sample of extinction sigma_t = rho and scattering sigma_s = albedo rho:
 //   S(p) = sigma_s [ sum_lights E_l sum_{i<N} a^i P_i(mu_l) exp(-b^i tau_l(p))
 //                    + E_sky / (2 pi) A(f)
-//                    + sum_emitters colour i / (1 + a_e r^2) / (4 pi) ]
+//                    + sum_emitters colour e / (1 + a_e r^2) / (4 pi) ]
 // integrated over a step of length d with Hillaire 2015's energy-conserving
 // form S_int = (S - S exp(-sigma_t d)) / sigma_t, L += T S_int,
 // T *= exp(-sigma_t d).
@@ -302,7 +302,7 @@ void main() {
                                          lightAtCloud(p, frame.moonDirection, frame.moonIlluminanceSpace), muMoon);
                 for (int e = 0; e < frame.emitterCount; ++e) {
                     vec3 toEmitter = emitters[e].position - p;
-                    S += emitters[e].colour * emitters[e].intensity /
+                    S += emitters[e].colour * emitters[e].light.x * emitterDimming(e, p) /
                          ((1.0 + max(emitters[e].attenuation, 0.0) * dot(toEmitter, toEmitter)) * 4.0 * kPi);
                 }
                 S *= clouds.albedo * rhoSub;

@@ -33,8 +33,8 @@ void main() {
     vec3 sum = vec3(0.0);
     for (int k = 0; k < frame.emitterCount; ++k) {
         EmitterGpu em = emitters[k];
-        sum += em.colour *
-               emitterIntegral(em.position, em.intensity, em.attenuation, o, d);
+        sum += em.colour * emitterIntegral(em.position, em.intensity, em.attenuation, o, d) *
+               emitterDimming(k, o);
     }
     outColour = vec4(min(sum, vec3(frame.radianceCap)), 1.0);
 }

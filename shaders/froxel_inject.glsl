@@ -190,7 +190,8 @@ void main() {
 
     for (int k = 0; k < frame.emitterCount; ++k) {
         EmitterGpu em = emitters[k];
-        wOwn += em.colour * emitterIntegral(em.position, em.intensity, em.attenuation, o, d);
+        wOwn += em.colour * emitterIntegral(em.position, em.intensity, em.attenuation, o, d) *
+                emitterDimming(k, o);
     }
 
     float visibility = 1.0;

@@ -23,7 +23,7 @@
 //     depths = linear eye depths [m] (the sprite's is constant: it lies in
 //     the view plane);
 //   radiance of the medium (isotropic phase 1/(4 pi)):
-//     L = albedo (E_sun + E_moon + sum_emitters colour i / (1 + a r_e^2)) / (4 pi)
+//     L = albedo (E_sun + E_moon + sum_emitters colour e / (1 + a r_e^2)) / (4 pi)
 //         + albedo E_sky / (2 pi) + emission,
 //   fogged as transparent.glsl: the global height fog (optical depth per
 //   vertex, or per fragment without the subtract union when subtract volumes
@@ -101,7 +101,7 @@ void main() {
     if (clouds.shadowActive > 0.5) irradiance *= cloudShadowVisibility(vWorld);  // cloud shadow
     for (int k = 0; k < frame.emitterCount; ++k) {
         vec3 toLight = emitters[k].position - vWorld;
-        irradiance += emitters[k].colour * emitters[k].intensity /
+        irradiance += emitters[k].colour * emitters[k].light.x * emitterDimming(k, vWorld) /
                       (1.0 + max(emitters[k].attenuation, 0.0) * dot(toLight, toLight));
     }
     vec3 albedo = clamp(vAlbedoOpacity.rgb, 0.0, 1.0);

@@ -109,7 +109,7 @@ int runEval(const EvalOptions& options) {
     for (std::size_t i = 0; i < state.emitters.size(); ++i) {
         const Emitter& e = state.emitters[i];
         const double flash = i < state.emitterFlash.size() ? state.emitterFlash[i] : 1.0;
-        std::printf("\nemitter %s \"%s\" (flash x%.3g applied to the intensity)\n", e.id.c_str(),
+        std::printf("\nemitter %s \"%s\" (flash x%.3g applied to the intensity; colour of unit luminance)\n", e.id.c_str(),
                     e.name.c_str(), flash);
         printParameters(ParamScope::Emitter, e, "  ");
     }

@@ -30,12 +30,11 @@
 //     subtract volumes, white for cloud volumes.
 //   - Emitters: a KHR_lights_punctual point light at the emitter's position.
 //     glTF colours are 0..1, so color = colour / its largest component and
-//     intensity = intensity_per_m x that component (colour x intensity as
-//     in the preset). The intensity is the emitter's in-scattering per metre
-//     [1/m] (lightning flash at that time applied), not candela: the light
-//     marks where the emitter is and its colour, not how bright a glTF
-//     renderer should make it. No range (Aerial's falloff,
-//     1 / (1 + attenuation d^2), has no cutoff).
+//     intensity = intensity_cd x that component, in candela as the
+//     extension wants (the evaluated colour has unit luminance, so the
+//     light's luminous intensity is intensity_cd; lightning flash at that
+//     time applied). No range (Aerial's falloff, 1 / (1 + attenuation d^2),
+//     has no cutoff).
 //   - extras (Blender shows them as custom properties): per node "kind"
 //     (fog_volume, cloud_volume, emitter), "name" (the display name),
 //     volumes "shape" and "blend", mesh volumes "mesh" (the glTF file as the
@@ -391,7 +390,7 @@ Json emitterLight(const Emitter& e) {
     for (int c = 0; c < 3; ++c)
         colour[c] = std::isfinite(e.colour[c]) && e.colour[c] > 0.0 ? e.colour[c] : 0.0;
     const double largest = std::max({colour.x, colour.y, colour.z});
-    const double intensity = std::isfinite(e.intensity) && e.intensity > 0.0 ? e.intensity : 0.0;
+    const double intensity = std::isfinite(e.intensityCd) && e.intensityCd > 0.0 ? e.intensityCd : 0.0;
     Json colourJson = largest > 0.0
                           ? Json::array({colour.x / largest, colour.y / largest, colour.z / largest})
                           : Json::array({1.0, 1.0, 1.0});

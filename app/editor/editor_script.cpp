@@ -13,7 +13,7 @@
 // preset, the time and the view.
 //
 // Parameters are addressed as in preset_edit.hpp: "fog.density_per_m",
-// "volume[0].density_per_m", "emitter[1].intensity_per_m". Times are hours
+// "volume[0].density_per_m", "emitter[1].intensity_cd". Times are hours
 // or HH:MM.
 #include "editor.hpp"
 #include "script_args.hpp"

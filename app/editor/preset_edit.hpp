@@ -33,7 +33,7 @@ struct ParamRef {
 };
 
 /// "fog.density_per_m" (global), "volume[2].density_per_m",
-/// "emitter[0].intensity_per_m", "cloud_volume[1].coverage". nullopt with `error` set when the address
+/// "emitter[0].intensity_cd", "cloud_volume[1].coverage". nullopt with `error` set when the address
 /// or the object index is unknown.
 std::optional<ParamRef> parseParamAddress(const Preset& preset, std::string_view address, std::string* error);
 /// The inverse of parseParamAddress.
@@ -117,12 +117,15 @@ bool pasteKey(Preset& preset, const ParamRef& ref, const KeyClipboard& clip, dou
 // ---------------------------------------------------------------------------
 // Objects
 
-/// Artist-sane values for a new emitter next to a sky whose radiance is ~1
-/// in daylight: core's struct defaults (intensity 1 /m, attenuation
-/// 0.01 /m^2) would glow thousands of times brighter than the sky; these
-/// match the shipped presets (e.g. stormy_night.json's lamp scale).
-inline constexpr double kNewEmitterIntensityPerM = 1.0e-3;
-inline constexpr double kNewEmitterAttenuationPerM2 = 0.05;
+/// A new point emitter is a warm lamp: 200 cd (~2 500 lm, a bright
+/// incandescent bulb), 2 700 K, a glowing core 0.5 m across (a = 4 /m^2).
+inline constexpr double kNewEmitterIntensityCd = 200.0;
+inline constexpr double kNewEmitterTemperatureK = 2700.0;
+inline constexpr double kNewEmitterAttenuationPerM2 = 4.0;
+/// A new lightning emitter: a channel of 1e10 cd seen through the cloud as
+/// a glow ~100 m across (a = 1e-4 /m^2).
+inline constexpr double kNewLightningIntensityCd = 1.0e10;
+inline constexpr double kNewLightningAttenuationPerM2 = 1.0e-4;
 
 /// Adds a volume (shape, centre) with a fresh id and name; returns its index.
 int addVolume(Preset& preset, FogVolumeShape shape, const glm::dvec3& position);

@@ -34,9 +34,9 @@ Preset defaultPreset() {
     lamp.id = "lamp";
     lamp.name = "Lamp";
     lamp.position = {6.0, 4.0, -20.0};
-    lamp.intensity = 0.0;
-    lamp.attenuation = 0.5;  // a glow of ~1.4 m half radius
-    lamp.colour = {1.0, 0.72, 0.4};
+    lamp.intensityCd = 0.0;   // keyed: a 1 500 cd sodium lamp at night
+    lamp.attenuation = 10.0;  // a glowing core ~0.3 m across
+    lamp.temperatureK = 2100.0;
     p.emitters.push_back(lamp);
 
     auto track = [](TrackTarget target, Interpolation interp, std::vector<TrackKey> keys) {
@@ -56,11 +56,11 @@ Preset defaultPreset() {
                               {6.5, glm::dvec3(0.035, 0, 0)},
                               {9.0, glm::dvec3(0.01, 0, 0)},
                               {12.0, glm::dvec3(0.0)}}));
-    p.tracks.push_back(track(TrackTarget::emitter("lamp", "intensity_per_m"), Interpolation::Linear,
-                             {{5.5, glm::dvec3(0.005, 0, 0)},
+    p.tracks.push_back(track(TrackTarget::emitter("lamp", "intensity_cd"), Interpolation::Linear,
+                             {{5.5, glm::dvec3(1500.0, 0, 0)},
                               {6.5, glm::dvec3(0.0)},
                               {19.5, glm::dvec3(0.0)},
-                              {20.5, glm::dvec3(0.005, 0, 0)}}));
+                              {20.5, glm::dvec3(1500.0, 0, 0)}}));
     return p;
 }
 

@@ -20,7 +20,9 @@
 // (i / K) (pi/2 - atan(X / (L K))).
 #include "sanitise.hpp"
 
+#include <aerial/atmosphere.hpp>
 #include <aerial/emitter.hpp>
+#include <aerial/exposure.hpp>
 #include <aerial/finite.hpp>
 
 #include <glm/geometric.hpp>
@@ -46,6 +48,51 @@ double clampedNonNegative(double x, double bound) {
 }
 
 }  // namespace
+
+glm::dvec3 blackbodyColour(double kelvin) {
+    if (!std::isfinite(kelvin)) return glm::dvec3(1.0);
+    const double t = std::clamp(kelvin, 1667.0, 25000.0);
+    // Kim, Kim, Lee, Park and Choi 2002, the Planckian locus as cubics in 1/T
+    // and x.
+    const double t1 = 1.0e3 / t, t2 = t1 * t1, t3 = t2 * t1;
+    const double x = t <= 4000.0 ? -0.2661239 * t3 - 0.2343589 * t2 + 0.8776956 * t1 + 0.179910
+                                 : -3.0258469 * t3 + 2.1070379 * t2 + 0.2226347 * t1 + 0.240390;
+    const double x2 = x * x, x3 = x2 * x;
+    const double y = t <= 2222.0   ? -1.1063814 * x3 - 1.34811020 * x2 + 2.18555832 * x - 0.20219683
+                     : t <= 4000.0 ? -0.9549476 * x3 - 1.37418593 * x2 + 2.09137015 * x - 0.16748867
+                                   : 3.0817580 * x3 - 5.87338670 * x2 + 3.75112997 * x - 0.37001483;
+    // XYZ with Y = 1, then linear Rec.709 (D65).
+    const double bigX = x / y, bigZ = (1.0 - x - y) / y;
+    glm::dvec3 rgb{3.2404542 * bigX - 1.5371385 - 0.4985314 * bigZ,
+                   -0.9692660 * bigX + 1.8760108 + 0.0415560 * bigZ,
+                   0.0556434 * bigX - 0.2040259 + 1.0572252 * bigZ};
+    rgb = glm::max(rgb, glm::dvec3(0.0));
+    const double y709 = luminance(rgb);
+    return y709 > 0.0 ? rgb / y709 : glm::dvec3(1.0);
+}
+
+glm::dvec3 emitterColour(const Emitter& emitter) {
+    if (std::isfinite(emitter.temperatureK) && emitter.temperatureK > 0.0)
+        return blackbodyColour(emitter.temperatureK);
+    const glm::dvec3 c{clampedNonNegative(emitter.colour.x, kMaxEmitterParameter),
+                       clampedNonNegative(emitter.colour.y, kMaxEmitterParameter),
+                       clampedNonNegative(emitter.colour.z, kMaxEmitterParameter)};
+    const double y = luminance(c);
+    return y > 0.0 ? c / y : glm::dvec3(0.0);
+}
+
+double emitterFogIntensity(double intensityCd, double attenuation, double scatteringPerM) {
+    const double i = clampedNonNegative(attenuation, kMaxEmitterParameter) *
+                     clampedNonNegative(scatteringPerM, kMaxEmitterParameter) *
+                     clampedNonNegative(intensityCd, kMaxEmitterParameter) / (4.0 * kPi * kNitsPerRadianceUnit);
+    return std::min(i, kMaxEmitterParameter);
+}
+
+double emitterIlluminance(const Emitter& emitter) {
+    const double e = clampedNonNegative(emitter.attenuation, kMaxEmitterParameter) *
+                     clampedNonNegative(emitter.intensityCd, kMaxEmitterParameter) / kNitsPerRadianceUnit;
+    return std::min(e, kMaxEmitterParameter);
+}
 
 double emitterFieldAt(const Emitter& emitter, const glm::dvec3& point) {
     if (!withinCoordinateRange(point) || !withinCoordinateRange(emitter.position)) {
@@ -92,9 +139,11 @@ glm::dvec3 emitterInScatter(const Emitter& emitter, const glm::dvec3& origin, co
     const double s = clampedNonNegative(scale, kMaxEmitterParameter);
     const glm::dvec3 colour = detail::sanitiseColour(emitter.colour);
     const double integral = emitterIntegral(emitter, origin, delta);
+    const double sigma = clampedNonNegative(emitter.extinction, kMaxEmitterParameter);
+    const double dimming = sigma > 0.0 && integral > 0.0 ? std::exp(-sigma * glm::length(emitter.position - origin)) : 1.0;
     // integral <= i |d| <= 1e30 * 3.5e30, s <= 1e30, colour <= 1e30: the
     // product stays far below the double range.
-    return colour * (integral * s);
+    return colour * (integral * s * dimming);
 }
 
 // ---------------------------------------------------------------------------

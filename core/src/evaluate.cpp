@@ -3,6 +3,9 @@
 #include <aerial/evaluate.hpp>
 
 #include <aerial/atmosphere.hpp>
+#include <aerial/exposure.hpp>
+#include <aerial/finite.hpp>
+#include <aerial/fog_volume.hpp>
 #include <aerial/param_table.hpp>
 
 #include <glm/common.hpp>
@@ -205,13 +208,49 @@ void CompiledPreset::evaluate(double timeHours, PresetState& state) const {
     moon.illuminance = moon.illuminanceSpace * moon.transmittance;
     state.zenithTransmittance = impl.transmittance(air, glm::dvec3(0.0, 1.0, 0.0));
 
-    // 4. Lightning.
+    // 4. Emitters: lightning, the unit-luminance colour, and what the fog
+    // where each one stands scatters of it (emitter.hpp, "Photometry").
     for (std::size_t i = 0; i < state.emitters.size(); ++i) {
         Emitter& e = state.emitters[i];
         const double flash = e.kind == EmitterKind::Lightning ? lightningFlash(e, t) : 1.0;
         state.emitterFlash[i] = flash;
-        e.intensity *= flash;
+        e.intensityCd *= flash;
+        e.colour = emitterColour(e);
+        const double sigma = fogScatteringAt(state, e.position);
+        e.intensity = emitterFogIntensity(e.intensityCd, e.attenuation, sigma);
+        e.extinction = sigma;
     }
+}
+
+double fogScatteringAt(const PresetState& state, const glm::dvec3& point) {
+    if (!withinCoordinateRange(point)) return 0.0;
+    bool removed = false;
+    double volumes = 0.0;
+    for (const FogVolume& v : state.volumes) {
+        const double density = fogVolumeDensityAt(v, point);
+        if (v.blend == FogVolumeBlend::Subtract) {
+            // A subtract volume's density is unused; containment is what counts.
+            FogVolume probe = v;
+            probe.density = 1.0;
+            probe.falloff = 0.0;
+            removed = removed || fogVolumeDensityAt(probe, point) > 0.0;
+        } else {
+            volumes += density;
+        }
+    }
+    const Environment& env = state.environment;
+    const HeightFogParams& fog = env.fog;
+    double global = 0.0;
+    if (std::isfinite(fog.density) && fog.density > 0.0 && std::isfinite(fog.baseHeight)) {
+        const double falloff = std::isfinite(fog.falloff) ? std::max(fog.falloff, 0.0) : 0.0;
+        global = fog.density * std::exp(std::min(-falloff * (point.y - fog.baseHeight), 700.0));
+    }
+    const AtmosphereParams& air = env.atmosphere;
+    const double altitude = std::max(air.viewerHeight + point.y, 0.0);
+    const double atmosphere = luminance(air.rayleighScattering * rayleighDensity(air, altitude) +
+                                        air.mieScattering * mieDensity(air, altitude));
+    const double fogs = removed ? 0.0 : global + volumes;
+    return std::min(fogs + std::max(atmosphere, 0.0), 1.0e30);
 }
 
 PresetState CompiledPreset::evaluate(double timeHours) const {

@@ -545,19 +545,27 @@ const std::vector<ParamDesc>& emitterTable() {
                          glm::dvec3(0.0), false, true, [](void* o) { return &emi(o).position; },
                          "Position [m], world space. Default 0."),
                      scalar(
-                         E, "intensity_per_m", "Intensity", "1/m", {0, 1e5, 1e-5, 10}, 1.0, true, true,
-                         [](void* o) { return &emi(o).intensity; },
-                         "In-scattered radiance per metre next to the emitter, i [1/m] (times the "
-                         "colour), 0..1e5. Default 1."),
+                         E, "intensity_cd", "Intensity", "cd", {0, 1e12, 0.01, 1e6}, 100.0, true, true,
+                         [](void* o) { return &emi(o).intensityCd; },
+                         "Luminous intensity I [cd], 0..1e12: a 1 000 lm campfire ~80, a sodium street "
+                         "lamp 1 000-3 000, lightning 1e9-1e11. The fog next to it scatters "
+                         "sigma_s I / (4 pi r^2) per metre (sigma_s the fog's own scattering there). "
+                         "Default 100."),
                      scalar(
-                         E, "attenuation_per_m2", "Attenuation", "1/m^2", {0, 1e4, 1e-5, 10}, 0.01, true,
+                         E, "attenuation_per_m2", "Attenuation", "1/m^2", {0, 1e4, 1e-5, 100}, 1.0, true,
                          true, [](void* o) { return &emi(o).attenuation; },
-                         "Attenuation a [1/m^2], 0..1e4: the field halves at 1/sqrt(a). Default 0.01 "
-                         "(half at 10 m)."),
+                         "Attenuation a [1/m^2], 0..1e4: the glowing core's radius is 1/sqrt(a), the "
+                         "light E = I / (1/a + r^2). Default 1 (a 1 m core)."),
+                     scalar(
+                         E, "temperature_k", "Temperature", "K", {0, 25000, 1000, 10000}, 0.0, false, true,
+                         [](void* o) { return &emi(o).temperatureK; },
+                         "Colour temperature [K] of a blackbody, 0 or 1667..25000 (campfire ~1900, "
+                         "sodium lamp ~2100, LED 3000-5000); 0 takes colour_rgb. Default 0."),
                      triple(
                          E, ParamType::Colour, "colour_rgb", "Colour", "", {0, 1e5, 0, 2}, glm::dvec3(1.0),
                          false, true, [](void* o) { return &emi(o).colour; },
-                         "Colour, scene-linear Rec.709, 0..1e5 per channel. Default white."),
+                         "Colour, scene-linear Rec.709, 0..1e5 per channel (the hue: its luminance is "
+                         "divided out; used when temperature_k is 0). Default white."),
                  });
         t.push_back(seedParam(
             E, "seed", "Seed of the lightning flash pattern, 0..4294967295. Default 1.",

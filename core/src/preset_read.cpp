@@ -9,6 +9,9 @@
 #include "json_text.hpp"
 #include "preset_validate.hpp"
 
+#include <aerial/atmosphere.hpp>
+#include <aerial/evaluate.hpp>
+#include <aerial/exposure.hpp>
 #include <aerial/limits.hpp>
 #include <aerial/param_table.hpp>
 
@@ -282,8 +285,56 @@ public:
         }
         for (std::int32_t c = nodes_[std::size_t(node)].firstChild; c >= 0;
              c = nodes_[std::size_t(c)].nextSibling) {
-            if (!findParam(scope, nodes_[std::size_t(c)].key))
-                warnUnknown(c, pointerJoin(pointer, nodes_[std::size_t(c)].key));
+            const std::string& key = nodes_[std::size_t(c)].key;
+            if (isLegacyEmitterIntensity(scope, key)) continue;
+            if (!findParam(scope, key)) warnUnknown(c, pointerJoin(pointer, key));
+        }
+    }
+
+    // Version <= 2 gave an emitter's strength as intensity_per_m (the fog's
+    // in-scatter next to it); version 3 as intensity_cd.
+    bool isLegacyEmitterIntensity(ParamScope scope, sv key) const {
+        return fileVersion_ < 3 && scope == ParamScope::Emitter && key == "intensity_per_m";
+    }
+
+    void readLegacyEmitter(std::int32_t node, const std::string& pointer) {
+        LegacyEmitter legacy;
+        if (const std::int32_t m = member(node, "intensity_per_m"); m >= 0)
+            readNumber(m, pointerJoin(pointer, "intensity_per_m"), legacy.intensityPerM);
+        legacy.attenuationGiven = member(node, "attenuation_per_m2") >= 0;
+        legacyEmitters_.push_back(legacy);
+    }
+
+    // Version 2 -> 3 (preset.hpp, "Version 3"): each emitter's candela is
+    // the one that scatters, in the fog its preset gives it (base values,
+    // tracks not applied: fogScatteringAt), what intensity_per_m i did:
+    //   I = 4 pi kNitsPerRadianceUnit i Y(colour) / (a sigma_s),
+    // Y(colour) because version 3 divides the colour's luminance out. An
+    // attenuation the file left out is version 2's default, 0.01; a = 0 (no
+    // falloff, a field that never ended) becomes 1e-6. Keys of an
+    // intensity_per_m track get the same factor.
+    void migrateVersion2(Preset& preset) const {
+        PresetState base;
+        base.environment = preset.environment;
+        base.volumes = preset.volumes;
+        std::vector<double> factor(preset.emitters.size(), 0.0);
+        for (std::size_t k = 0; k < preset.emitters.size() && k < legacyEmitters_.size(); ++k) {
+            Emitter& e = preset.emitters[k];
+            const LegacyEmitter& legacy = legacyEmitters_[k];
+            if (!legacy.attenuationGiven) e.attenuation = 0.01;
+            e.attenuation = std::max(e.attenuation, 1e-6);
+            const double sigma = std::max(fogScatteringAt(base, e.position), 1e-9);
+            factor[k] = 4.0 * kPi * kNitsPerRadianceUnit * luminance(glm::max(e.colour, glm::dvec3(0.0))) /
+                        (e.attenuation * sigma);
+            e.intensityCd = std::clamp(legacy.intensityPerM * factor[k], 0.0, 1e12);
+        }
+        for (const std::size_t t : legacyIntensityTracks_) {
+            Track& track = preset.tracks[t];
+            std::size_t k = preset.emitters.size();
+            for (std::size_t j = 0; j < preset.emitters.size(); ++j)
+                if (preset.emitters[j].id == track.target.objectId) k = j;
+            if (k == preset.emitters.size()) continue;  // validation names the missing emitter
+            for (TrackKey& key : track.keys) key.value.x = std::clamp(key.value.x * factor[k], 0.0, 1e12);
         }
     }
 
@@ -358,7 +409,14 @@ public:
              c = nodes_[std::size_t(c)].nextSibling, ++i) {
             const std::string at = pointerJoin(pointer, i);
             out.emplace_back();
-            if (expectKind(c, at, JNode::Object)) readObject(scope, &out.back(), c, at);
+            const bool object = expectKind(c, at, JNode::Object);
+            if (object) readObject(scope, &out.back(), c, at);
+            if (scope == ParamScope::Emitter && fileVersion_ < 3) {
+                if (object)
+                    readLegacyEmitter(c, at);
+                else
+                    legacyEmitters_.emplace_back();
+            }
         }
     }
 
@@ -386,6 +444,10 @@ public:
             error(node, pointerJoin(pointer, "param"), "missing required field \"param\"");
         else if (expectKind(param, pointerJoin(pointer, "param"), JNode::String))
             track.target.param = nodes_[std::size_t(param)].text;
+        if (isLegacyEmitterIntensity(track.target.scope, track.target.param)) {
+            track.target.param = "intensity_cd";
+            legacyTrack_ = true;
+        }
         if (const std::int32_t interp = member(node, "interpolation"); interp >= 0) {
             const std::string at = pointerJoin(pointer, "interpolation");
             if (expectKind(interp, at, JNode::String) &&
@@ -489,6 +551,7 @@ public:
             return;
         }
         const int fileVersion = int(v.asDouble());
+        fileVersion_ = fileVersion;
         for (std::int32_t c = nodes_[0].firstChild; c >= 0; c = nodes_[std::size_t(c)].nextSibling) {
             const JNode& n = nodes_[std::size_t(c)];
             const std::string at = pointerJoin("", n.key);
@@ -510,7 +573,9 @@ public:
                 std::size_t i = 0;
                 for (std::int32_t t = n.firstChild; t >= 0; t = nodes_[std::size_t(t)].nextSibling, ++i) {
                     preset.tracks.emplace_back();
+                    legacyTrack_ = false;
                     readTrack(t, pointerJoin(at, i), preset.tracks.back());
+                    if (legacyTrack_) legacyIntensityTracks_.push_back(preset.tracks.size() - 1);
                 }
             } else if (isGlobalGroup(n.key)) {
                 readGlobalGroup(preset.environment, c, n.key + ".", at);
@@ -519,6 +584,7 @@ public:
             }
         }
         if (fileVersion < 2) migrateVersion1(preset, root);
+        if (fileVersion < 3) migrateVersion2(preset);
     }
 
     void checkDuplicateKeys() {
@@ -572,6 +638,17 @@ private:
     std::vector<Position> positions_;
     std::size_t suppressedErrors_ = 0;
     std::size_t suppressedWarnings_ = 0;
+    int fileVersion_ = kPresetVersion;
+    /// Version <= 2 emitters, by index: the file's intensity_per_m (1 when
+    /// left out, that version's default) and whether it gave the attenuation.
+    struct LegacyEmitter {
+        double intensityPerM = 1.0;
+        bool attenuationGiven = false;
+    };
+    std::vector<LegacyEmitter> legacyEmitters_;
+    /// Indices of the tracks on a version <= 2 emitter's intensity_per_m.
+    std::vector<std::size_t> legacyIntensityTracks_;
+    bool legacyTrack_ = false;
 };
 
 }  // namespace

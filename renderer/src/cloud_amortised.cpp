@@ -131,7 +131,7 @@ std::vector<double> emitterNumbers(const PresetState& state, bool on) {
     std::vector<double> out;
     if (!on) return out;
     for (const Emitter& e : state.emitters) {
-        out.insert(out.end(), {e.position.x, e.position.y, e.position.z, e.intensity, e.attenuation,
+        out.insert(out.end(), {e.position.x, e.position.y, e.position.z, e.intensity, e.intensityCd, e.attenuation,
                                e.colour.x, e.colour.y, e.colour.z});
     }
     return out;

@@ -25,10 +25,13 @@ int uploadEmitters(RendererResources& gpu, const std::vector<Emitter>& emitters)
     for (const Emitter& e : emitters) {
         const bool positionOk = withinCoordinateRange(e.position);
         const double intensity = nonNegative(e.intensity, 1e30);
-        if (!positionOk || !(intensity > 0.0)) continue;
+        const double illuminance = emitterIlluminance(e);
+        if (!positionOk || !(intensity > 0.0 || illuminance > 0.0)) continue;
         EmitterGpu g;
         g.position = toVec3(e.position);
         g.intensity = static_cast<float>(intensity);
+        g.illuminance = static_cast<float>(std::min(illuminance, 1e30));
+        g.extinction = static_cast<float>(nonNegative(e.extinction, 1e30));
         g.colour = toVec3(colourOf(e.colour));
         g.attenuation = static_cast<float>(nonNegative(e.attenuation, 1e30));
         packed.push_back(g);

@@ -433,14 +433,19 @@ static_assert(sizeof(SpriteInstance) == 64);
 /// shaders/emitters.glsl and scene.glsl, EmitterGpu (std430, binding 2).
 struct EmitterGpu {
     Vec3 position;           ///< [m]
-    float intensity = 0.0f;  ///< i [1/m], flash applied
-    Vec3 colour;
+    float intensity = 0.0f;  ///< i [radiance unit/m], the fog's in-scatter next to it, flash applied
+    Vec3 colour;             ///< unit luminance (aerial::emitterColour)
     float attenuation = 0.0f;  ///< a [1/m^2]
+    float illuminance = 0.0f;  ///< e = a I / kNitsPerRadianceUnit: E(r) = e / (1 + a r^2) on surfaces and clouds
+    float extinction = 0.0f;   ///< sigma_t [1/m]: the light dimmed by exp(-sigma_t distance)
+    float pad1 = 0.0f, pad2 = 0.0f;
 };
 static_assert(offsetof(EmitterGpu, intensity) == 12);
 static_assert(offsetof(EmitterGpu, colour) == 16);
 static_assert(offsetof(EmitterGpu, attenuation) == 28);
-static_assert(sizeof(EmitterGpu) == 32);
+static_assert(offsetof(EmitterGpu, illuminance) == 32);
+static_assert(offsetof(EmitterGpu, extinction) == 36);
+static_assert(sizeof(EmitterGpu) == 48);
 
 /// Binding points and texture units shared with the shaders.
 constexpr unsigned kFrameBinding = 0;

@@ -7,9 +7,11 @@
 
 struct EmitterGpu {
     vec3 position;      // [m]
-    float intensity;    // i [1/m], lightning flash applied
-    vec3 colour;        // rgb
+    float intensity;    // i [radiance unit/m]: the fog's in-scatter next to it, flash applied
+    vec3 colour;        // rgb, unit luminance
     float attenuation;  // a [1/m^2]
+    vec4 light;         // x: e = a I / kNitsPerRadianceUnit, E(r) = e / (1 + a r^2) on surfaces and clouds;
+                        // y: extinction sigma_t [1/m], the light dimmed by exp(-sigma_t distance)
 };
 layout(std430, binding = 2) readonly buffer EmitterBlock { EmitterGpu emitters[]; };
 
@@ -32,6 +34,13 @@ float emitterIntegral(vec3 l, float i, float a, vec3 o, vec3 d) {
     float y = len * k;
     const float kHalfPi = 1.57079632679490;
     return (y < x) ? i * len * atanOverX(y / x) / x : i * (kHalfPi - atan(x / y)) / k;
+}
+
+/// exp(-sigma_t |l - p|): the air's extinction between emitter k and p
+/// (core's emitterInScatter with p the segment's start; surfaces, clouds).
+float emitterDimming(int k, vec3 p) {
+    float sigma = emitters[k].light.y;
+    return sigma > 0.0 ? exp(-sigma * length(emitters[k].position - p)) : 1.0;
 }
 
 #endif

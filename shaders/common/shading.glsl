@@ -17,8 +17,8 @@
 //       + (F0 A + F90 B) mix(L_sky(r), E_sky (0.5 + 0.5 r.y) / pi, roughness)
 //   where r = reflect(-v, n) and (A, B) is Karis' analytic fit of the
 //   split-sum environment BRDF (Karis 2014, "Physically based shading on
-//   mobile"). The emitters light as points: E = colour i / (1 + a |l - p|^2)
-//   (their fog falloff read as irradiance, as for the lit fog).
+//   mobile"). The emitters light as points: E = colour e / (1 + a |l - p|^2)
+//   with e = a I / kNitsPerRadianceUnit (aerial::emitterIlluminance).
 // Roughness is clamped to >= 0.045 (a point light on a perfect mirror is a
 // delta), so a sun highlight stays finite. With s = 0 and metallic = 0 the
 // material is exactly Lambert: L = emission + base / pi E_total.
@@ -129,7 +129,7 @@ void shadeSurface(Surface s, vec3 p, vec3 n, vec3 v, out vec3 diffuse, out vec3 
         vec3 toLight = emitters[k].position - p;
         float r2 = dot(toLight, toLight);
         if (!(r2 > 1e-12)) continue;
-        float falloff = emitters[k].intensity / (1.0 + max(emitters[k].attenuation, 0.0) * r2);
+        float falloff = emitters[k].light.x * emitterDimming(k, p) / (1.0 + max(emitters[k].attenuation, 0.0) * r2);
         addLight(s, n, v, toLight * inversesqrt(r2), emitters[k].colour * falloff, diffuse,
                  specular);
     }

@@ -963,6 +963,52 @@ class Render(unittest.TestCase):
         self.assertGreater(len(set(b"".join(rows))), 16, "a flat image")
         self.assertNoTemporaries()
 
+    def test_desert_campfire_keeps_the_moonlit_sky_blue(self):
+        """desert_dusk's campfire (~100 cd) by moonlight: the sky above 20 deg reads blue (B >= R in the
+        displayed image) and the exposure stays within 1.5 EV of the same night without the fire (issue 48:
+        a campfire does not out-light the moon on air hundreds of metres away)."""
+        with open(preset("desert_dusk")) as f:
+            doc = json.load(f)
+        doc["emitters"] = []
+        doc["tracks"] = [t for t in doc["tracks"] if "emitter" not in t]
+        no_fire = os.path.join(self.dir, "desert_no_fire.json")
+        with open(no_fire, "w") as f:
+            json.dump(doc, f)
+        for time in ("23:00", "02:00"):  # the moon 25 and 55 deg up, 87 % lit
+            ev = {}
+            for label, path in (("fire", preset("desert_dusk")), ("no fire", no_fire)):
+                out = os.path.join(self.dir, "desert.png")
+                r = run_json(self, "render", path, "--time", time, "--size", "64x36", "--out", out)
+                ev[label] = r["exposure"]["ev100"]
+                width, height, colour, _, rows = read_png(out)
+                channels = 3 if colour == 2 else 4
+                eye, target = r["camera"]["eye"], r["camera"]["target"]
+                forward = [t - e for t, e in zip(target, eye)]
+                n = math.sqrt(sum(c * c for c in forward))
+                forward = [c / n for c in forward]
+                right = [-forward[2], 0.0, forward[0]]
+                n = math.sqrt(sum(c * c for c in right))
+                right = [c / n for c in right]
+                up = [right[1] * forward[2] - right[2] * forward[1], right[2] * forward[0] - right[0] * forward[2],
+                      right[0] * forward[1] - right[1] * forward[0]]
+                half = math.tan(math.radians(r["camera"]["fov_deg"]) / 2)
+                blue, sky = 0, 0
+                for y in range(height):
+                    for x in range(width):
+                        sx = (2 * (x + 0.5) / width - 1) * half * width / height
+                        sy = (1 - 2 * (y + 0.5) / height) * half
+                        d = [f + sx * rr + sy * u for f, rr, u in zip(forward, right, up)]
+                        if math.degrees(math.asin(d[1] / math.sqrt(sum(c * c for c in d)))) < 20:
+                            continue
+                        px = rows[y][x * channels:x * channels + 3]
+                        sky += 1
+                        blue += px[2] >= px[0]
+                with self.subTest(time=time, frame=label):
+                    self.assertGreater(sky, 0, "no sky above 20 degrees in the default view")
+                    self.assertEqual(blue, sky, "%d of %d sky pixels above 20 deg have B < R" % (sky - blue, sky))
+            with self.subTest(time=time):
+                self.assertLessEqual(abs(ev["fire"] - ev["no fire"]), 1.5, ev)
+
     def test_built_in_default_preset(self):
         out = os.path.join(self.dir, "default.png")
         r = run_json(self, "render", "default", "--size", "16x9", "--exposure", "-1", "--out", out)

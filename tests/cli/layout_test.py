@@ -234,7 +234,7 @@ class Layout(unittest.TestCase):
                 self.assertEqual(light["type"], "point")
                 self.assertTrue(all(0.0 <= c <= 1.0 for c in light["color"]), light)
                 self.assertClose([c * light["intensity"] for c in light["color"]],
-                                 [c * e["intensity_per_m"] for c in e["colour_rgb"]], "colour x intensity")
+                                 [c * e["intensity_cd"] for c in e["colour_rgb"]], "colour x intensity [cd]")
                 extras = node["extras"]
                 self.assertEqual(extras["kind"], "emitter")
                 self.assertEqual(extras["name"], e["name"])
@@ -243,7 +243,11 @@ class Layout(unittest.TestCase):
         lamp = self.node("street_lamp")
         light = lights[lamp["extensions"]["KHR_lights_punctual"]["light"]]
         self.assertClose(light["color"], [1.0, 0.7, 0.38], "lamp colour over its largest component")
-        self.assertClose([light["intensity"]], [0.01], "lamp intensity x 2")
+        # Candela times the largest component of the unit-luminance colour: the colour [2, 1.4, 0.76] over
+        # its Rec.709 luminance, whose largest component is 2 / Y.
+        state_lamp = next(e for e in self.state["emitters"] if e["id"] == "street_lamp")
+        y = 0.2126 * 2 + 0.7152 * 1.4 + 0.0722 * 0.76
+        self.assertAlmostEqual(light["intensity"] / (state_lamp["intensity_cd"] * 2 / y), 1.0, delta=1e-9)
 
     def checkedMesh(self, gltf, data, mesh):
         """The positions and indices of a glTF mesh, checked: one triangle primitive, float VEC3

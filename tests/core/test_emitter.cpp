@@ -1,11 +1,20 @@
 // Emitters: the closed-form in-scatter (DESIGN.md, "Emitters") against
 // sinh-graded Gauss-Legendre quadrature of the field i / (1 + a |l - p|^2),
-// and the seeded lightning flash pattern.
+// the seeded lightning flash pattern, and the photometry (emitter.hpp): the
+// blackbody colour against Planck's law through the CIE 1931 observer, the
+// candela against the inverse-square law, the shipped campfire against the
+// moonlit sky it stands under, and version 2's emitters migrated.
 #include <aerial/atmosphere.hpp>
 #include <aerial/emitter.hpp>
+#include <aerial/evaluate.hpp>
+#include <aerial/exposure.hpp>
+#include <aerial/photometry.hpp>
+#include <aerial/preset.hpp>
+#include <aerial/sky_spectral.hpp>
 
 #include <gtest/gtest.h>
 
+#include "cie1931.hpp"
 #include "quadrature.hpp"
 
 #include <glm/geometric.hpp>
@@ -302,4 +311,193 @@ TEST(Lightning, InvalidParametersMeanNoFlashes) {
     }
 }
 
+// ---- Photometry (emitter.hpp, "Photometry") ----
+
+/// CIE 1931 xy of a blackbody at `kelvin`: Planck's law times the observer
+/// (support/cie1931.hpp), summed at its 10 nm points.
+glm::dvec2 planckXy(double kelvin) {
+    constexpr double h = 6.62607015e-34, c = 2.99792458e8, k = 1.380649e-23;
+    glm::dvec3 xyz(0.0);
+    for (int i = 0; i < aerial::test::kCmfBands; ++i) {
+        const double lambda = (aerial::test::kCmfFirstNm + 10.0 * i) * 1e-9;
+        const double radiance = 1.0 / (std::pow(lambda, 5) * (std::exp(h * c / (lambda * k * kelvin)) - 1.0));
+        for (int j = 0; j < 3; ++j) xyz[j] += aerial::test::kCmf[i][j] * radiance;
+    }
+    return glm::dvec2(xyz.x, xyz.y) / (xyz.x + xyz.y + xyz.z);
+}
+
+/// CIE 1931 xy of a linear Rec.709 colour (IEC 61966-2-1's matrix).
+glm::dvec2 rec709Xy(const glm::dvec3& rgb) {
+    const glm::dvec3 xyz{0.4124564 * rgb.r + 0.3575761 * rgb.g + 0.1804375 * rgb.b,
+                         0.2126729 * rgb.r + 0.7151522 * rgb.g + 0.0721750 * rgb.b,
+                         0.0193339 * rgb.r + 0.1191920 * rgb.g + 0.9503041 * rgb.b};
+    return glm::dvec2(xyz.x, xyz.y) / (xyz.x + xyz.y + xyz.z);
+}
+
+TEST(EmitterPhotometry, BlackbodyColourFollowsPlancksLaw) {
+    // Within Rec.709's gamut (above ~1 900 K): the chromaticity within 0.003
+    // in xy of Planck's law (Kim et al.'s fit is ~1e-3, the 10 nm sum a
+    // little more), and luminance 1.
+    double worst = 0.0;
+    for (double kelvin : {2000.0, 2700.0, 3500.0, 5000.0, 6500.0, 10000.0, 20000.0}) {
+        const glm::dvec3 rgb = aerial::blackbodyColour(kelvin);
+        EXPECT_NEAR(aerial::luminance(rgb), 1.0, 1e-12) << kelvin;
+        const double d = glm::length(rec709Xy(rgb) - planckXy(kelvin));
+        worst = std::max(worst, d);
+        EXPECT_LE(d, 0.003) << kelvin << " K";
+    }
+    std::printf("[ measured ] blackbody colour vs Planck x CIE 1931: worst |dxy| %.5f\n", worst);
+    // A campfire is orange-red, a hot star blue; out-of-range and non-finite
+    // inputs clamp or give white, never NaN.
+    const glm::dvec3 fire = aerial::blackbodyColour(1900.0);
+    EXPECT_GT(fire.r, fire.g);
+    EXPECT_GT(fire.g, fire.b);
+    const glm::dvec3 star = aerial::blackbodyColour(20000.0);
+    EXPECT_GT(star.b, star.r);
+    for (double kelvin : {0.0, -5.0, 1e9, std::nan(""), std::numeric_limits<double>::infinity()}) {
+        const glm::dvec3 rgb = aerial::blackbodyColour(kelvin);
+        EXPECT_TRUE(std::isfinite(rgb.r + rgb.g + rgb.b)) << kelvin;
+        EXPECT_NEAR(aerial::luminance(rgb), 1.0, 1e-12) << kelvin;
+    }
+}
+
+TEST(EmitterPhotometry, CandelaLightFogByTheInverseSquareLaw) {
+    // A point source of I cd seen past at distance b, in fog of scattering
+    // sigma: the in-scatter per metre sigma I / (4 pi r^2) (isotropic),
+    // integrated along the view, sigma I / (4 pi) * 2 atan(L / B) / B with
+    // B = sqrt(b^2 + r0^2), r0 = 1 / sqrt(a) the core. Written out here from
+    // the inverse-square law, in cd/m^2.
+    const double sigma = 1e-4, cd = 80.0;  // a 1 000 lm campfire in a light haze
+    Emitter fire;
+    fire.position = {0.0, 1.0, 0.0};
+    fire.intensityCd = cd;
+    fire.temperatureK = 1900.0;
+    fire.attenuation = 4.0;
+    fire.intensity = aerial::emitterFogIntensity(fire.intensityCd, fire.attenuation, sigma);
+    fire.colour = aerial::emitterColour(fire);
+    for (double b : {2.0, 10.0, 50.0, 300.0}) {
+        const double halfLength = 2000.0;
+        const glm::dvec3 origin{-halfLength, 1.0, b};
+        const glm::dvec3 delta{2.0 * halfLength, 0.0, 0.0};
+        const double big = std::sqrt(b * b + 1.0 / fire.attenuation);
+        const double expected = sigma * cd / (4.0 * aerial::kPi) * 2.0 * std::atan(halfLength / big) / big;
+        const double got =
+            aerial::luminance(aerial::emitterInScatter(fire, origin, delta, 1.0)) * aerial::kNitsPerRadianceUnit;
+        EXPECT_NEAR(got, expected, 1e-9 * expected) << "b = " << b << " m";
+    }
+    // Extinction: the glow dimmed by exp(-sigma_t D) over the emitter's
+    // distance D from the view's start.
+    Emitter dimmed = fire;
+    dimmed.extinction = sigma;
+    const glm::dvec3 origin{-300.0, 1.0, 40.0}, delta{600.0, 0.0, 0.0};
+    const double distance = glm::length(fire.position - origin);
+    EXPECT_NEAR(aerial::luminance(aerial::emitterInScatter(dimmed, origin, delta, 1.0)),
+                aerial::luminance(aerial::emitterInScatter(fire, origin, delta, 1.0)) * std::exp(-sigma * distance),
+                1e-12);
+    // The light on a surface r metres away: I / (r0^2 + r^2) lx.
+    for (double r : {0.0, 1.0, 10.0, 100.0}) {
+        const double e = aerial::emitterIlluminance(fire) / (1.0 + fire.attenuation * r * r);
+        EXPECT_NEAR(e * aerial::kNitsPerRadianceUnit, cd / (1.0 / fire.attenuation + r * r), 1e-9 * cd) << r;
+    }
+    // Nothing negative or non-finite gets through.
+    EXPECT_EQ(aerial::emitterFogIntensity(-1.0, 4.0, sigma), 0.0);
+    EXPECT_EQ(aerial::emitterFogIntensity(cd, std::nan(""), sigma), 0.0);
+    EXPECT_EQ(aerial::emitterFogIntensity(cd, 4.0, std::numeric_limits<double>::infinity()), 0.0);
+    Emitter black;
+    black.colour = {0.0, 0.0, 0.0};
+    EXPECT_EQ(aerial::emitterColour(black), glm::dvec3(0.0));
+}
+
+aerial::Preset shippedPreset(const char* name) {
+    aerial::PresetLoadResult r =
+        aerial::loadPreset(std::string(AERIAL_SOURCE_DIR) + "/presets/" + name + ".json");
+    EXPECT_TRUE(r.ok()) << name;
+    return r.preset ? *r.preset : aerial::Preset{};
+}
+
+TEST(EmitterPhotometry, TheDesertCampfireLightsTheAirNearItNotTheSky) {
+    // desert_dusk at 02:00: the moon (87 % lit) is up, the campfire burns in
+    // the desert's dusty air (visibility ~5 km). Outdoors a campfire does not
+    // out-light the moon on air hundreds of metres away: there its
+    // illuminance is a small fraction of the moon's, and seen from the
+    // default camera's distance (~150 m) the sky above 20 deg keeps its own
+    // light; a view passing a few metres from the fire shows its glow.
+    const aerial::CompiledPreset preset(shippedPreset("desert_dusk"));
+    const aerial::PresetState state = preset.evaluate(2.0);
+    ASSERT_EQ(state.emitters.size(), 1u);
+    const Emitter& fire = state.emitters[0];
+    ASSERT_GT(fire.intensityCd, 50.0);
+    ASSERT_LT(fire.intensityCd, 500.0);
+    ASSERT_GT(state.moonLight.body.direction.y, 0.2);
+    const double moonLux =
+        aerial::luminance(state.moonLight.illuminance) * state.moonLight.body.direction.y * aerial::kNitsPerRadianceUnit;
+    for (double r : {100.0, 300.0}) {
+        const double fireLux =
+            aerial::emitterIlluminance(fire) / (1.0 + fire.attenuation * r * r) * aerial::kNitsPerRadianceUnit;
+        EXPECT_LT(fireLux, 0.1 * moonLux) << r << " m";
+    }
+    aerial::SpectralSkySolver sun, moon;
+    sun.solve(state.environment.atmosphere, state.sunLight.body.direction);
+    moon.solve(state.environment.atmosphere, state.moonLight.body.direction);
+    const double zenith = aerial::lightReport(state, sun.table(), moon.table()).zenithLuminance;
+    ASSERT_GT(zenith, 1e-3);  // a moonlit sky, cd/m^2
+    const glm::dvec3 eye = fire.position + glm::dvec3(0.0, 1.0, 150.0);
+    double worst = 0.0;
+    for (double elevationDeg : {20.0, 45.0, 90.0}) {
+        for (double azimuthDeg = 0.0; azimuthDeg < 360.0; azimuthDeg += 15.0) {
+            const double el = elevationDeg * aerial::kPi / 180.0, az = azimuthDeg * aerial::kPi / 180.0;
+            const glm::dvec3 dir{std::cos(el) * std::sin(az), std::sin(el), -std::cos(el) * std::cos(az)};
+            const double glow = aerial::luminance(aerial::emitterInScatter(fire, eye, 20000.0 * dir, 1.0)) *
+                                aerial::kNitsPerRadianceUnit;
+            worst = std::max(worst, glow / zenith);
+        }
+    }
+    const double near = aerial::luminance(aerial::emitterInScatter(fire, fire.position + glm::dvec3(-50, 0, 3),
+                                                                   glm::dvec3(100, 0, 0), 1.0)) *
+                        aerial::kNitsPerRadianceUnit;
+    std::printf("[ measured ] desert_dusk 02:00: campfire %.0f cd, moon %.3g lx, sky zenith %.3g cd/m^2; the "
+                "fire's glow above 20 deg from 150 m at most %.3g of the zenith, 3 m past it %.3g\n",
+                fire.intensityCd, moonLux, zenith, worst, near / zenith);
+    EXPECT_LT(worst, 0.15);
+    EXPECT_GT(near, 0.1 * zenith);
+}
+
+TEST(EmitterPhotometry, Version2EmittersLoadLightingTheirFogTheSame) {
+    // A version-2 emitter's intensity_per_m i was the fog's in-scatter next to
+    // it (colour x i); version 3 derives that from candela and the fog. The
+    // migrated file lights the same fog the same, keys included.
+    const char* text = R"({
+      "version": 2, "name": "old",
+      "fog": {"density_per_m": 0.004, "falloff_per_m": 0.02},
+      "emitters": [
+        {"id": "lamp", "position_m": [3, 4, -10], "intensity_per_m": 0.005, "attenuation_per_m2": 0.5,
+         "colour_rgb": [1, 0.7, 0.38]},
+        {"id": "glow", "position_m": [0, 1, 0], "colour_rgb": [0.5, 0.5, 0.5]}
+      ],
+      "tracks": [
+        {"emitter": "lamp", "param": "intensity_per_m", "interpolation": "linear",
+         "keys": [{"time_h": 6, "value": 0}, {"time_h": 18, "value": 0.01}]}
+      ]
+    })";
+    const aerial::PresetLoadResult r = aerial::parsePreset(text, "old.json");
+    ASSERT_TRUE(r.ok()) << (r.errors.empty() ? "" : r.errors[0].toString());
+    EXPECT_TRUE(r.warnings.empty()) << r.warnings[0].toString();
+    const aerial::Preset& p = *r.preset;
+    ASSERT_EQ(p.emitters.size(), 2u);
+    EXPECT_EQ(p.tracks[0].target.param, "intensity_cd");
+    EXPECT_DOUBLE_EQ(p.emitters[1].attenuation, 0.01);  // version 2's default
+    const aerial::CompiledPreset compiled(p);
+    for (double t : {12.0, 18.0}) {
+        const aerial::PresetState s = compiled.evaluate(t);
+        const double oldLamp = t == 12.0 ? 0.005 : 0.01;
+        const glm::dvec3 oldFog = glm::dvec3(1, 0.7, 0.38) * oldLamp;
+        const glm::dvec3 newFog = s.emitters[0].colour * s.emitters[0].intensity;
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(newFog[c], oldFog[c], 1e-9 * oldFog[c]) << t << " h";
+        const glm::dvec3 oldGlow = glm::dvec3(0.5) * 1.0;  // version 2's default intensity 1 /m
+        const glm::dvec3 newGlow = s.emitters[1].colour * s.emitters[1].intensity;
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(newGlow[c], oldGlow[c], 1e-9) << t << " h";
+    }
+}
+
 }  // namespace
+

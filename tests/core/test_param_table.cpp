@@ -262,7 +262,7 @@ TEST(ParamTable, CoversEveryParameterTheIssueLists) {
          {"id", "name", "shape", "position_m", "rotation_xyzw", "half_extents_m", "density_per_m",
           "falloff_per_m", "gradient_direction", "gradient_offset_m", "colour_mode", "colour_rgb"})
         EXPECT_NE(aerial::findParam(ParamScope::Volume, key), nullptr) << key;
-    for (const char* key : {"id", "name", "kind", "position_m", "intensity_per_m", "attenuation_per_m2",
+    for (const char* key : {"id", "name", "kind", "position_m", "intensity_cd", "attenuation_per_m2", "temperature_k",
                             "colour_rgb", "seed", "flashes_per_minute", "flash_duration_s", "time_scale"})
         EXPECT_NE(aerial::findParam(ParamScope::Emitter, key), nullptr) << key;
 }

@@ -462,8 +462,8 @@ TEST(Preset, VersionOneMoonIsMadePhysical) {
     const aerial::PresetLoadResult v2 = aerial::parsePreset(R"({"version": 2, "moon": {"intensity": 0.05}})");
     ASSERT_TRUE(v2.ok());
     EXPECT_EQ(v2.preset->environment.moon.intensity, 0.05);
-    const aerial::PresetLoadResult v3 = aerial::parsePreset(R"({"version": 3})");
-    EXPECT_FALSE(v3.ok());
+    const aerial::PresetLoadResult v4 = aerial::parsePreset(R"({"version": 4})");
+    EXPECT_FALSE(v4.ok());
 }
 
 TEST(Preset, MangledInputNeverCrashes) {
@@ -697,11 +697,11 @@ TEST(Evaluate, LightningFlashIsApplied) {
     aerial::Emitter bolt;
     bolt.id = "bolt";
     bolt.kind = aerial::EmitterKind::Lightning;
-    bolt.intensity = 5.0;
+    bolt.intensityCd = 5.0;
     bolt.flashesPerMinute = 30.0;
     aerial::Emitter lamp;
     lamp.id = "lamp";
-    lamp.intensity = 2.0;
+    lamp.intensityCd = 2.0;
     p.emitters = {bolt, lamp};
     const aerial::CompiledPreset compiled(p);
     aerial::PresetState s;
@@ -711,9 +711,9 @@ TEST(Evaluate, LightningFlashIsApplied) {
         compiled.evaluate(t, s);
         const double flash = aerial::lightningFlash(bolt, s.timeHours);
         EXPECT_EQ(s.emitterFlash[0], flash);
-        EXPECT_EQ(s.emitters[0].intensity, 5.0 * flash);
+        EXPECT_EQ(s.emitters[0].intensityCd, 5.0 * flash);
         EXPECT_EQ(s.emitterFlash[1], 1.0);
-        EXPECT_EQ(s.emitters[1].intensity, 2.0);
+        EXPECT_EQ(s.emitters[1].intensityCd, 2.0);
         lit += flash > 0.0;
     }
     EXPECT_GT(lit, 0) << "30 flashes per minute of flash clock must flash within 2 h of game time";

@@ -2,13 +2,15 @@
 // against a spectral single-scattering reference written here: 41
 // wavelengths 380-780 nm, the published ozone cross-sections and solar
 // spectrum, the CIE 1931 2-degree observer, the sun white-balanced to R = G
-// = B. The data below are this file's own copies, so the reference shares
-// nothing with the solver but the published numbers.
+// = B. The data below (and support/cie1931.hpp) are the tests' own copies,
+// so the reference shares nothing with the solver but the published numbers.
 #include <aerial/atmosphere.hpp>
 #include <aerial/sky.hpp>
 #include <aerial/sky_spectral.hpp>
 
 #include <gtest/gtest.h>
+
+#include "cie1931.hpp"
 
 #include <algorithm>
 #include <array>
@@ -19,7 +21,8 @@
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr int kBands = 41;  // 380, 390, .. 780 nm
+constexpr int kBands = aerial::test::kCmfBands;  // 380, 390, .. 780 nm
+using aerial::test::kCmf;
 
 // ASTM G-173 extraterrestrial spectral irradiance [W/m^2/nm], averaged over
 // each 10 nm bin starting at the wavelength (Bruneton 2017's demo table).
@@ -36,48 +39,6 @@ constexpr double kOzone[kBands] = {
     4.266e-25, 4.672e-25, 4.398e-25, 4.701e-25, 5.019e-25, 4.305e-25, 3.74e-25,  3.215e-25, 2.662e-25,
     2.238e-25, 1.852e-25, 1.473e-25, 1.209e-25, 9.423e-26, 7.455e-26, 6.566e-26, 5.105e-26, 4.15e-26,
     4.228e-26, 3.237e-26, 2.451e-26, 2.801e-26, 2.534e-26};
-// CIE 1931 2-degree colour-matching functions x, y, z (CVRL ciexyz31).
-constexpr double kCmf[kBands][3] = {{0.001368, 0.000039, 0.006450001},
-                                    {0.004243, 0.000120, 0.02005001},
-                                    {0.01431, 0.000396, 0.06785001},
-                                    {0.04351, 0.00121, 0.2074},
-                                    {0.13438, 0.004, 0.6456},
-                                    {0.2839, 0.0116, 1.3856},
-                                    {0.34828, 0.023, 1.74706},
-                                    {0.3362, 0.038, 1.77211},
-                                    {0.2908, 0.06, 1.6692},
-                                    {0.19536, 0.09098, 1.28764},
-                                    {0.09564, 0.13902, 0.8129501},
-                                    {0.03201, 0.20802, 0.46518},
-                                    {0.0049, 0.323, 0.272},
-                                    {0.0093, 0.503, 0.1582},
-                                    {0.06327, 0.71, 0.07824999},
-                                    {0.1655, 0.862, 0.04216},
-                                    {0.2904, 0.954, 0.0203},
-                                    {0.4334499, 0.9949501, 0.008749999},
-                                    {0.5945, 0.995, 0.0039},
-                                    {0.7621, 0.952, 0.0021},
-                                    {0.9163, 0.87, 0.001650001},
-                                    {1.0263, 0.757, 0.0011},
-                                    {1.0622, 0.631, 0.0008},
-                                    {1.0026, 0.503, 0.00034},
-                                    {0.8544499, 0.381, 0.00019},
-                                    {0.6424, 0.265, 0.00004999999},
-                                    {0.4479, 0.175, 0.00002},
-                                    {0.2835, 0.107, 0.0},
-                                    {0.1649, 0.061, 0.0},
-                                    {0.0874, 0.032, 0.0},
-                                    {0.04677, 0.017, 0.0},
-                                    {0.0227, 0.00821, 0.0},
-                                    {0.01135916, 0.004102, 0.0},
-                                    {0.005790346, 0.002091, 0.0},
-                                    {0.002899327, 0.001047, 0.0},
-                                    {0.001439971, 0.00052, 0.0},
-                                    {0.0006900786, 0.0002492, 0.0},
-                                    {0.0003323011, 0.00012, 0.0},
-                                    {0.0001661505, 0.00006, 0.0},
-                                    {0.00008307527, 0.00003, 0.0},
-                                    {0.00004150994, 0.00001499, 0.0}};
 // Linear Rec.709 (D65) <-> CIE XYZ, IEC 61966-2-1.
 constexpr double kXyzToRgb[3][3] = {{3.2404542, -1.5371385, -0.4985314},
                                     {-0.9692660, 1.8760108, 0.0415560},

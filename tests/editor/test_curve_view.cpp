@@ -94,7 +94,7 @@ TEST(CurveView, CurvesAreNormalisedToTheirKeysRange) {
 TEST(CurveView, SessionKeysNameCurvesBothWays) {
     const TrackTarget targets[] = {
         TrackTarget::global("fog.density_per_m"), TrackTarget::volume("valley_fog", "density_per_m"),
-        TrackTarget::emitter("lamp.2", "intensity_per_m"), TrackTarget::cloudVolume("cell-1", "coverage")};
+        TrackTarget::emitter("lamp.2", "intensity_cd"), TrackTarget::cloudVolume("cell-1", "coverage")};
     EXPECT_EQ(curveKey(targets[0]), "fog.density_per_m");
     EXPECT_EQ(curveKey(targets[1]), "volume:valley_fog:density_per_m");
     for (const TrackTarget& t : targets) {

@@ -54,7 +54,9 @@ void checkState(const aerial::PresetState& s) {
                   v.halfExtents.x > 0.0 && v.halfExtents.y > 0.0 && v.halfExtents.z > 0.0,
               "finite, positive volume");
     for (const aerial::Emitter& m : s.emitters)
-        check(isFinite(m.position) && std::isfinite(m.intensity) && isFinite(m.colour) && m.intensity >= 0.0,
+        check(isFinite(m.position) && std::isfinite(m.intensity) && isFinite(m.colour) && m.intensity >= 0.0 &&
+                  std::isfinite(m.intensityCd) && m.intensityCd >= 0.0 && std::isfinite(m.extinction) &&
+                  m.extinction >= 0.0,
               "finite emitter");
     for (const aerial::CloudVolume& c : s.cloudVolumes)
         check(isFinite(c.position) && isFinite(c.halfExtents) && std::isfinite(c.coverage) &&

@@ -16,6 +16,7 @@
 // ambient and sky reflections are zero and only the named lights shine.
 #include "gl_fixture.hpp"
 
+#include <aerial/exposure.hpp>
 #include <aerial/renderer/scene.hpp>
 
 #include <glm/geometric.hpp>
@@ -120,12 +121,12 @@ TEST_F(Shading, EmittersLightALambertPlaneAsTheClosedForm) {
     air.sunLight.illuminance = air.moonLight.illuminance = glm::dvec3(0.0);
     Emitter a;
     a.position = {2.0, 3.0, -8.0};
-    a.intensity = 40.0;
+    a.intensityCd = 6.0e5;  // surfaces: E = I / (1/a + r^2) lx (emitter.hpp, "Photometry")
     a.attenuation = 0.3;
     a.colour = {1.0, 0.7, 0.4};
     Emitter b;
     b.position = {-5.0, 1.5, -16.0};
-    b.intensity = 12.0;
+    b.intensityCd = 1.2e6;
     b.attenuation = 0.05;
     b.colour = {0.3, 0.6, 1.0};
     air.emitters = {a, b};
@@ -148,7 +149,10 @@ TEST_F(Shading, EmittersLightALambertPlaneAsTheClosedForm) {
             for (const Emitter& e : air.emitters) {
                 const glm::dvec3 toLight = e.position - p;
                 const double r2 = glm::dot(toLight, toLight);
-                irradiance += e.colour * e.intensity / (1.0 + e.attenuation * r2) *
+                // The inverse-square law over the core, in lx, then in the
+                // renderer's illuminance unit.
+                const double lux = e.intensityCd / (1.0 / e.attenuation + r2);
+                irradiance += e.colour * (lux / aerial::kNitsPerRadianceUnit) *
                               std::max(toLight.y / std::sqrt(r2), 0.0);
             }
             const glm::dvec3 expected =

@@ -3,9 +3,37 @@
 //
 // Usage:
 //   aerial::Emitter lamp;
-//   lamp.position = {3, 4, -10}; lamp.intensity = 0.5; lamp.attenuation = 0.05;
+//   lamp.position = {3, 4, -10}; lamp.intensityCd = 1500; lamp.temperatureK = 2100;
+//   lamp.attenuation = 10;                       // a glowing core ~0.3 m across
+//   lamp.intensity = aerial::emitterFogIntensity(lamp.intensityCd, lamp.attenuation, fogSigma);
 //   glm::dvec3 added = aerial::emitterInScatter(lamp, camera, object - camera, 1.0);
 //   double flash = aerial::lightningFlash(bolt, timeHours);   // 0..1
+// aerial::evaluate does the middle line for every emitter of a preset, with
+// the fog's scattering where the emitter is (aerial::fogScatteringAt).
+//
+// Photometry (../shared/DESIGN.md, "Emitters": the strength is photometric).
+// An emitter is a source of luminous intensity I [cd] whose colour has unit
+// luminance (emitterColour: a blackbody of temperatureK, or colour_rgb
+// divided by its luminance), softened over a core of radius r0 = 1/sqrt(a):
+//   illuminance at distance r     E(r) = I / (r0^2 + r^2)            [lx]
+//   in-scatter per metre of fog   f(r) = sigma_s E(r) / (4 pi)        [cd/m^2 per m]
+// (isotropic scattering; sigma_s the fog's scattering coefficient at the
+// emitter, held along the segment). In the renderer's radiance unit
+// (kNitsPerRadianceUnit cd/m^2) that is f = i / (1 + a r^2) with
+//   i = a sigma_s I / (4 pi kNitsPerRadianceUnit)     (emitterFogIntensity)
+// and the light on surfaces and clouds is E = e / (1 + a r^2) with
+//   e = a I / kNitsPerRadianceUnit                      (emitterIlluminance).
+// So a 1 000 lm campfire (I = 80 cd) in a light haze (sigma_s = 1e-4 /m)
+// adds ~2e-4 cd/m^2 to a view passing 10 m from it, the brightness of a
+// moonless sky: the fog glows near the fire and the sky stays dark.
+// Extinction: the light is dimmed by exp(-sigma_t D), sigma_t the air's
+// extinction at the emitter (`extinction`, the fog's scattering: fog does
+// not absorb) and D the distance from the emitter to the start of the
+// segment (emitterInScatter; for the eye's view that is the path the glow
+// travels to the eye, exact for a glow seen far from its source and within
+// 2 sigma_t r0 of it when seen close) or to the lit surface or cloud. A
+// sodium lamp in a thick fog (sigma 0.004 /m) lights the fog 100 m away
+// a third less than without it.
 //
 // In-scattering (../shared/DESIGN.md, "Emitters"; Wenzel 2006, lit fog): a
 // point emitter at l with intensity i and attenuation a adds, along
@@ -57,13 +85,32 @@ struct Emitter {
     EmitterKind kind = EmitterKind::Point;
     /// Position [m], world space.
     glm::dvec3 position{0.0};
-    /// In-scattered radiance per metre next to the emitter, i [1/m] times
-    /// the colour. >= 0. Default 1.
-    double intensity = 1.0;
-    /// Attenuation a [1/m^2], >= 0: f falls to half at distance 1/sqrt(a).
-    /// Default 0.01 (half at 10 m).
-    double attenuation = 0.01;
-    /// Colour, scene-linear Rec.709. Default white.
+    /// Luminous intensity I [cd], >= 0: the artist's strength (preset key
+    /// intensity_cd). A 1 000 lm campfire is ~80 cd, a 60 W bulb ~65 cd, a
+    /// sodium street lamp 1 000-3 000 cd, a lightning channel 1e9-1e11 cd.
+    /// Default 100.
+    double intensityCd = 100.0;
+    /// Colour temperature [K] of a blackbody of that colour, 1 667..25 000
+    /// (a campfire ~1 900, a sodium lamp ~2 100, an LED 3 000-5 000); 0 (the
+    /// default) takes `colour` instead.
+    double temperatureK = 0.0;
+    /// In-scatter coefficient i [radiance unit / m] of the fog next to the
+    /// emitter, times the colour: derived, not stored in presets.
+    /// aerial::evaluate sets it from intensityCd and the fog's scattering at
+    /// the emitter (emitterFogIntensity); set it yourself for an emitter
+    /// built by hand. >= 0.
+    double intensity = 0.0;
+    /// Extinction sigma_t [1/m] of the air at the emitter, >= 0: derived
+    /// like `intensity` (aerial::evaluate: fogScatteringAt); the light is
+    /// dimmed by exp(-extinction D) over the distance D it travels (see
+    /// "Extinction"). Default 0 (no dimming).
+    double extinction = 0.0;
+    /// Attenuation a [1/m^2], >= 0: the glowing core's radius is 1/sqrt(a)
+    /// (the field falls to half there). Default 1 (a 1 m core).
+    double attenuation = 1.0;
+    /// Colour, scene-linear Rec.709 (used when temperatureK is 0). Its
+    /// luminance is divided out, so it sets the hue and not the strength;
+    /// aerial::evaluate replaces it by emitterColour(). Default white.
     glm::dvec3 colour{1.0, 1.0, 1.0};
 
     // Lightning only.
@@ -79,9 +126,32 @@ struct Emitter {
     double timeScale = 60.0;
 };
 
+/// Linear Rec.709 colour of a blackbody at `kelvin` (clamped to the fit's
+/// 1 667..25 000 K), luminance 1: the Planckian locus in CIE 1931 xy (Kim et
+/// al. 2002's cubic fit, within 1e-3 of Planck's law) converted through XYZ,
+/// negative components (below ~1 900 K red is out of gamut) clipped to 0 and
+/// the result renormalised. A non-finite kelvin gives white.
+glm::dvec3 blackbodyColour(double kelvin);
+
+/// The emitter's colour with unit luminance: blackbodyColour(temperatureK)
+/// when temperatureK > 0, else colour divided by its luminance (black when
+/// the colour's luminance is 0 or the colour not finite).
+glm::dvec3 emitterColour(const Emitter& emitter);
+
+/// i = a sigma_s I / (4 pi kNitsPerRadianceUnit) [radiance unit / m], the
+/// in-scatter coefficient of fog with scattering coefficient
+/// `scatteringPerM` [1/m] next to a source of `intensityCd` [cd] with
+/// attenuation a [1/m^2]. Negative or non-finite inputs count as 0.
+double emitterFogIntensity(double intensityCd, double attenuation, double scatteringPerM);
+
+/// e = a I / kNitsPerRadianceUnit [illuminance unit]: the illuminance
+/// e / (1 + a r^2) the emitter gives a surface or a cloud at distance r
+/// (flash applied to intensityCd by evaluate). Finite, >= 0.
+double emitterIlluminance(const Emitter& emitter);
+
 /// Closed-form in-scattered light along origin -> origin + delta, RGB:
-/// colour * scale * integral f. `scale` multiplies the intensity (e.g. a
-/// lightning flash).
+/// colour * scale * integral f * exp(-extinction |position - origin|).
+/// `scale` multiplies the intensity (e.g. a lightning flash).
 glm::dvec3 emitterInScatter(const Emitter& emitter, const glm::dvec3& origin, const glm::dvec3& delta,
                             double scale);
 

@@ -21,9 +21,10 @@
 //      times its phaseIrradiance), and the light that reaches the viewer =
 //      that times aerial::transmittanceToSpace(atmosphere, viewerHeight,
 //      direction.y) (atmosphere.hpp);
-//   4. lightning: every emitter's intensity is multiplied by
-//      aerial::lightningFlash(emitter, t) (emitter.hpp), kept in
-//      emitterFlash.
+//   4. emitters: intensityCd times aerial::lightningFlash(emitter, t)
+//      (emitter.hpp; kept in emitterFlash), colour = emitterColour, and
+//      intensity = emitterFogIntensity(intensityCd, attenuation, sigma) and
+//      extinction = sigma, sigma = fogScatteringAt(state, position).
 //
 // Cost: transmittanceToSpace is a fine quadrature, so the compiled preset
 // tabulates the three unit optical depths (Rayleigh, Mie, ozone) over the
@@ -66,7 +67,10 @@ struct PresetState {
     double timeHours = 0.0;
     Environment environment;
     std::vector<FogVolume> volumes;
-    /// Intensities with keyed values and lightning flashes applied.
+    /// Keyed values and lightning flashes applied (to intensityCd), colour
+    /// replaced by emitterColour (unit luminance), the fog in-scatter
+    /// coefficient `intensity` and the `extinction` derived from intensityCd
+    /// and fogScatteringAt(state, position) (emitter.hpp, "Photometry").
     std::vector<Emitter> emitters;
     /// The flash multiplier applied to each emitter (1 for point emitters).
     std::vector<double> emitterFlash;
@@ -128,6 +132,15 @@ struct OvercastLight {
     glm::dvec3 groundIrradiance{0.0};
 };
 OvercastLight overcastLight(const PresetState& state, const SkyTable& sunSky, const SkyTable& moonSky);
+
+/// The scattering coefficient [1/m] of what hangs in the air at a world
+/// point, the luminance-weighted (Y) mean over the colour channels: the
+/// global height fog (density b exp(-c (y - h0)), all of it scattering),
+/// plus every adding fog volume that contains the point (a subtract volume
+/// there removes the fog, global and volumes), plus the atmosphere's
+/// Rayleigh and Mie scattering at the altitude viewerHeight + y. What an
+/// emitter there lights (evaluate sets each emitter's `intensity` from it).
+double fogScatteringAt(const PresetState& state, const glm::dvec3& point);
 
 /// The light of the sky dome at the fog of a state (fog_light.hpp): the
 /// bands of both sky tables (the lights' illuminance above the atmosphere,

@@ -67,7 +67,13 @@ namespace aerial {
 /// The preset file format this library writes and the newest it reads.
 /// Version 2: the moon's intensity is physical (version 1's is converted
 /// on load: divided by kVersion1MoonScale).
-constexpr int kPresetVersion = 2;
+/// Version 3: an emitter's strength is its luminous intensity in candela
+/// (intensity_cd, emitter.hpp "Photometry"); version 2's intensity_per_m i
+/// loads as the candela that lights the preset's own fog the same:
+/// I = 4 pi kNitsPerRadianceUnit i Y(colour) / (a sigma_s), sigma_s =
+/// fogScatteringAt the emitter with the base (unkeyed) values, keys of its
+/// track converted alike; an attenuation left out is version 2's 0.01.
+constexpr int kPresetVersion = 3;
 
 /// Default sun intensity [illuminance unit = 5000 lx, aerial/exposure.hpp]:
 /// 20, the ~100 000 lx of a clear noon above the atmosphere's losses.
