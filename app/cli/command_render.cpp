@@ -56,6 +56,7 @@
 //   {"file", "format" ("exr"/"png"), "width", "height",
 //    "preset": {"file", "name"}, "time_h", "time",
 //    "camera": {"eye", "target", "fov_deg"}, "precision" ("half"/"float"),
+//    "night_vision" (PNG shown with aerial::nightVision; false for EXR and --photopic),
 //    "shadows" (true/false), "fog" ("analytic"/"volumetric": the mode drawn),
 //    "exposure": {"mode", "average_luminance" (metered, radiance units),
 //    "ev100" (what the preset's exposure chose), "compensation_ev",
@@ -110,6 +111,7 @@ struct RenderOptions {
     std::string display;   // "" = the OCIO config's default display
     std::string view;      // "" = the display's default view
     bool halfTarget = false;
+    bool photopic = false;
     bool floatTarget = false;    ///< --float: the default, kept for scripts
     std::string shadows = "on";  // on | off
     std::string fog = "preset";  // preset | analytic | volumetric
@@ -225,6 +227,7 @@ int runRender(const RenderOptions& options) {
         displayDesc.display = options.display;
         displayDesc.view = options.view;
         displayDesc.exposureEv = exposureEv;
+        displayDesc.nightVision = !options.photopic;
         displayDesc.logger = log.logger();  // a broken $OCIO: a warning on stderr
         display = std::make_unique<renderer::DisplayTransform>(displayDesc);
         if (!display->valid()) {
@@ -350,6 +353,7 @@ int runRender(const RenderOptions& options) {
              {"time", formatTime(state.timeHours)},
              {"camera", {{"eye", toJson(eye)}, {"target", toJson(target)}, {"fov_deg", options.fovDeg}}},
              {"precision", options.halfTarget ? "half" : "float"},
+             {"night_vision", !options.photopic && format != Format::Exr},
              {"shadows", options.shadows == "on"},
              {"fog", frame.fogMode == renderer::FogMode::Volumetric ? "volumetric" : "analytic"},
              {"exposure",
@@ -420,6 +424,9 @@ Command addRenderCommand(CLI::App& parent) {
                       "Render into RGBA16F instead of RGBA32F: half the memory, but a night sky (below the "
                       "half range) quantises into bands; the EXR is half float either way");
     app->add_flag("--float", options->floatTarget, "Render into RGBA32F (the default)")->excludes(half);
+    app->add_flag("--photopic", options->photopic,
+                  "PNG only: show the colours as measured, without night vision (the eye's blue, colourless "
+                  "sight below 5 cd/m^2, aerial::nightVision)");
     app->add_option("--shadows", options->shadows,
                     "Sun and moon shadows of the scene (cascaded shadow maps): on or off")
         ->type_name("on|off")

@@ -216,6 +216,7 @@ void Editor::declareActions() {
     toggle("show_grid", "Ground grid", view_.showGrid);
     toggle("pass_sky", "Sky", view_.passes.sky, true);
     toggle("show_stars", "Stars", view_.showStars);
+    toggle("night_vision", "Night vision (the eye's blue night below 5 cd/m2)", view_.nightVision);
     toggle("pass_scene", "Scene geometry", view_.passes.scene);
     toggle("pass_global_fog", "Global fog", view_.passes.globalFog);
     toggle("pass_volumes", "Fog volumes", view_.passes.volumes);

@@ -181,6 +181,7 @@ struct ViewportState {
         return fogView == FogView::Volumetric ? renderer::FogMode::Volumetric : renderer::FogMode::Analytic;
     }
     bool showStars = true;                       ///< View > Stars (the sky pass's stars at night)
+    bool nightVision = true;                     ///< View > Night vision (aerial::nightVision in the display)
     std::string scenePath;                       ///< "" = the built-in scene
     std::shared_ptr<const SceneHits> sceneHits;  ///< the scene's triangles (placement, drop to ground)
 

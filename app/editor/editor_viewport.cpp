@@ -166,6 +166,7 @@ void Editor::meterViewport() {
 
 void Editor::showViewport(int width, int height) {
     view_.display->setExposureEv(view_.exposure.displayEv(sky_.state.environment.exposure, view_.exposureEv));
+    view_.display->setNightVision(view_.nightVision);
     ensureDisplayTexture(width, height);
     view_.display->applyGpu(view_.renderer->colourTexture(), view_.displayTexture, width, height);
 }

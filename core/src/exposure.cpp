@@ -14,6 +14,52 @@ double positiveOrZero(double x) { return (std::isfinite(x) && x > 0.0) ? x : 0.0
 
 }  // namespace
 
+namespace {
+
+/// CIE 1931 XYZ of a linear Rec.709 colour (IEC 61966-2-1).
+glm::dvec3 xyzOf(const glm::dvec3& c) {
+    return {0.4124564 * c.x + 0.3575761 * c.y + 0.1804375 * c.z,
+            0.2126729 * c.x + 0.7151522 * c.y + 0.0721750 * c.z,
+            0.0193339 * c.x + 0.1191920 * c.y + 0.9503041 * c.z};
+}
+
+/// Larson, Rushmeier and Piatko 1997's scotopic luminance of XYZ.
+double scotopic(const glm::dvec3& xyz) {
+    if (!(xyz.x > 1e-30 * (xyz.y + xyz.z)) || !(xyz.y > 0.0)) return 0.0;
+    return xyz.y * (1.33 * (1.0 + (xyz.y + xyz.z) / xyz.x) - 1.68);
+}
+
+}  // namespace
+
+glm::dvec3 nightVisionWhite() {
+    constexpr double x = 0.28, y = 0.29;
+    const double bigX = x / y, bigZ = (1.0 - x - y) / y;
+    const glm::dvec3 rgb{3.2404542 * bigX - 1.5371385 - 0.4985314 * bigZ,
+                         -0.9692660 * bigX + 1.8760108 + 0.0415560 * bigZ,
+                         0.0556434 * bigX - 0.2040259 + 1.0572252 * bigZ};
+    return rgb / luminance(rgb);  // exactly 1 with luminance()'s coefficients
+}
+
+glm::dvec3 nightVision(const glm::dvec3& linearRec709, double nitsPerUnit) {
+    glm::dvec3 c;
+    for (int i = 0; i < 3; ++i) {
+        const double v = linearRec709[i];
+        c[i] = std::isfinite(v) && v > 0.0 ? std::min(v, 1.0e30) : 0.0;
+    }
+    const double y = luminance(c);
+    const double nits = std::isfinite(nitsPerUnit) && nitsPerUnit > 0.0 ? nitsPerUnit : kNitsPerRadianceUnit;
+    const double l = y * nits;
+    constexpr double kScotopicNits = 0.005, kPhotopicNits = 5.0;  // CIE 191:2010
+    if (!(l < kPhotopicNits)) return c;
+    double t = l > kScotopicNits ? std::log10(l / kScotopicNits) / std::log10(kPhotopicNits / kScotopicNits) : 0.0;
+    t = std::clamp(t, 0.0, 1.0);
+    const double m = 1.0 - t * t * (3.0 - 2.0 * t);
+    static const double kD65 = scotopic(xyzOf(glm::dvec3(1.0)));
+    const double v = std::min(scotopic(xyzOf(c)) / kD65, 4.0 * y);
+    static const glm::dvec3 kWhite = nightVisionWhite();
+    return (1.0 - m) * c + m * v * kWhite;
+}
+
 double luminance(const glm::dvec3& c) {
     if (std::isnan(c.x) || std::isnan(c.y) || std::isnan(c.z)) return 0.0;
     const auto channel = [](double x) { return x > 0.0 ? std::min(x, 1.0e30) : 0.0; };

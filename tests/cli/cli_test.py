@@ -1009,6 +1009,37 @@ class Render(unittest.TestCase):
             with self.subTest(time=time):
                 self.assertLessEqual(abs(ev["fire"] - ev["no fire"]), 1.5, ev)
 
+    def test_night_vision_shows_the_night_blue_and_leaves_the_day(self):
+        """The displayed PNG passes through aerial::nightVision (the rods' blue, colourless sight below
+        5 cd/m^2): a moonless night, whose light is physically warm (the airglow, B-V ~0.9), reads blue;
+        --photopic shows the measured colours; noon is the same either way."""
+        def mean_rgb(path, rows):
+            width, height, colour, _, data = read_png(path)
+            channels = 3 if colour == 2 else 4
+            sums, n = [0, 0, 0], 0
+            for y in range(rows):
+                for x in range(width):
+                    for c in range(3):
+                        sums[c] += data[y][x * channels + c]
+                    n += 1
+            return [v / n for v in sums]
+        night = os.path.join(self.dir, "night.png")
+        r = run_json(self, "render", preset("clear_summer_day"), "--time", "02:00", "--size", "64x36", "--out", night)
+        self.assertTrue(r["night_vision"])
+        seen = mean_rgb(night, 8)
+        r = run_json(self, "render", preset("clear_summer_day"), "--time", "02:00", "--size", "64x36", "--photopic",
+                     "--out", night)
+        self.assertFalse(r["night_vision"])
+        measured = mean_rgb(night, 8)
+        self.assertGreater(seen[2], seen[0], "the night sky seen: B > R (%s)" % seen)
+        self.assertGreater(measured[0], measured[2], "the night sky measured is warm: R > B (%s)" % measured)
+        noon, noon_photopic = os.path.join(self.dir, "noon.png"), os.path.join(self.dir, "noon_photopic.png")
+        run_json(self, "render", preset("clear_summer_day"), "--time", "12:00", "--size", "32x18", "--out", noon)
+        run_json(self, "render", preset("clear_summer_day"), "--time", "12:00", "--size", "32x18", "--photopic",
+                 "--out", noon_photopic)
+        a, b = read_png(noon)[4], read_png(noon_photopic)[4]
+        self.assertLessEqual(max(abs(p - q) for ra, rb in zip(a, b) for p, q in zip(ra, rb)), 1)
+
     def test_built_in_default_preset(self):
         out = os.path.join(self.dir, "default.png")
         r = run_json(self, "render", "default", "--size", "16x9", "--exposure", "-1", "--out", out)

@@ -182,3 +182,74 @@ TEST(Exposure, ThePresetBlockLoadsValidatesAndKeysTheCompensation) {
 }
 
 }  // namespace
+
+namespace {
+
+// Night vision (aerial::nightVision). The references: CIE 191:2010's
+// mesopic range (photopic from 5 cd/m^2, scotopic below 0.005) and the
+// published scotopic-to-photopic (S/P) ratios of CIE illuminants A (1.41)
+// and D65 (2.47) (Berman 1992; IES TM-24): relative to white, an
+// incandescent light looks 1.41 / 2.47 as bright to the rods.
+
+/// Linear Rec.709 of a chromaticity xy with luminance 1.
+glm::dvec3 rec709OfXy(double x, double y) {
+    const double bigX = x / y, bigZ = (1.0 - x - y) / y;
+    return {3.2404542 * bigX - 1.5371385 - 0.4985314 * bigZ, -0.9692660 * bigX + 1.8760108 + 0.0415560 * bigZ,
+            0.0556434 * bigX - 0.2040259 + 1.0572252 * bigZ};
+}
+
+constexpr double kNits = aerial::kNitsPerRadianceUnit;
+
+TEST(NightVision, DaylightLevelsAreUntouched) {
+    for (double nits : {5.0, 20.0, 1e4}) {
+        const glm::dvec3 c = glm::dvec3(1.0, 0.6, 0.3) * (nits / kNits / aerial::luminance({1.0, 0.6, 0.3}));
+        const glm::dvec3 out = aerial::nightVision(c, kNits);
+        for (int i = 0; i < 3; ++i) EXPECT_EQ(out[i], c[i]) << nits;
+    }
+}
+
+TEST(NightVision, TheMoonlessNightIsBlueAndIncandescentLightDimAsTheRodsSeeIt) {
+    // Fully scotopic (2e-4 cd/m^2, the natural night sky): any colour comes
+    // out in the night white, blue (B > R), at its scotopic luminance.
+    const glm::dvec3 white = aerial::nightVisionWhite();
+    EXPECT_NEAR(aerial::luminance(white), 1.0, 1e-6);
+    EXPECT_GT(white.b, white.r);
+    const glm::dvec3 warmSky = glm::dvec3(1.0, 0.85, 0.65) * (2e-4 / kNits);
+    const glm::dvec3 seen = aerial::nightVision(warmSky, kNits);
+    EXPECT_GT(seen.b, seen.r);
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(seen[i] / aerial::luminance(seen), white[i], 1e-9);
+    // S/P of illuminant A against D65, both at 1e-3 cd/m^2.
+    const double level = 1e-3 / kNits;
+    const glm::dvec3 d65 = rec709OfXy(0.31271, 0.32902) * level;
+    const glm::dvec3 a = rec709OfXy(0.44757, 0.40745) * level;
+    const double ratio = aerial::luminance(aerial::nightVision(a, kNits)) /
+                         aerial::luminance(aerial::nightVision(d65, kNits));
+    std::printf("[ measured ] scotopic A / D65 at equal luminance %.3f (published 1.41 / 2.47 = %.3f)\n", ratio,
+                1.41 / 2.47);
+    EXPECT_NEAR(ratio, 1.41 / 2.47, 0.15 * 1.41 / 2.47);
+    EXPECT_NEAR(aerial::luminance(aerial::nightVision(d65, kNits)) / aerial::luminance(d65), 1.0, 0.02);
+}
+
+TEST(NightVision, ContinuousThroughTheMesopicRangeAndFinite) {
+    // From 1e-4 to 10 cd/m^2 in steps of 0.1 %: no component jumps by more
+    // than 1 % of the colour's luminance.
+    const glm::dvec3 colour(1.0, 0.5, 0.2);
+    glm::dvec3 previous = aerial::nightVision(colour * (1e-4 / kNits), kNits);
+    double worst = 0.0;
+    for (double nits = 1e-4 * 1.001; nits < 10.0; nits *= 1.001) {
+        const glm::dvec3 c = colour * (nits / kNits);
+        const glm::dvec3 out = aerial::nightVision(c, kNits);
+        for (int i = 0; i < 3; ++i)
+            worst = std::max(worst, std::fabs(out[i] / 1.001 - previous[i]) / aerial::luminance(c));
+        previous = out;
+    }
+    EXPECT_LT(worst, 0.01);
+    for (const glm::dvec3& bad : {glm::dvec3(std::nan(""), 1.0, 1.0), glm::dvec3(-1.0, 1e-8, 0.0),
+                                  glm::dvec3(std::numeric_limits<double>::infinity(), 0.0, 1e-9),
+                                  glm::dvec3(0.0), glm::dvec3(0.0, 0.0, 1e-9)}) {
+        const glm::dvec3 out = aerial::nightVision(bad, kNits);
+        EXPECT_TRUE(std::isfinite(out.x + out.y + out.z)) << bad.x << " " << bad.y << " " << bad.z;
+    }
+}
+
+}  // namespace

@@ -230,6 +230,36 @@ TEST_F(DisplayGpu, GpuMatchesCpu) {
     EXPECT_TRUE(log.errors.empty()) << log.errors.front();
 }
 
+TEST_F(DisplayGpu, NightVisionGpuMatchesCpu) {
+    // The test image scaled into the night (1e-7 .. 1.6e-6 radiance units,
+    // 5e-4 .. 8e-3 cd/m^2: scotopic to mesopic) and exposed back up: the
+    // shader's aerialNight against core's aerial::nightVision on the CPU.
+    ScopedOcio noEnv(std::nullopt);
+    Image image = testImage();
+    for (std::size_t i = 0; i < image.pixels.size(); ++i)
+        if (i % 4 != 3) image.pixels[i] *= 1e-7f;
+    DisplayDesc desc;
+    desc.view = kUntoneMapped;
+    desc.exposureEv = 20.0;
+    desc.logger = log.logger();
+    DisplayTransform display(desc);
+    ASSERT_TRUE(display.valid()) << display.error();
+    ASSERT_TRUE(display.nightVision());
+    const Image cpu = display.applyCpu(image);
+    const Image gpu = display.applyGpu(image, renderer::DisplayTarget::Rgba32F);
+    ASSERT_EQ(gpu.pixels.size(), cpu.pixels.size());
+    const double error = maxAbsDifference(gpu, cpu);
+    std::printf("[ display ] night vision: max |GPU - CPU| = %.3g (RGBA32F target)\n", error);
+    EXPECT_LE(error, 1e-3);
+    // Night vision is a choice: off, the pixels are the plain exposure.
+    display.setNightVision(false);
+    const Image plain = display.applyCpu(image);
+    EXPECT_GT(maxAbsDifference(plain, cpu), 0.05) << "night vision changed nothing";
+    const Image plainGpu = display.applyGpu(image, renderer::DisplayTarget::Rgba32F);
+    EXPECT_LE(maxAbsDifference(plainGpu, plain), 1e-3);
+    EXPECT_TRUE(log.errors.empty()) << log.errors.front();
+}
+
 /// The roles and file rules of the small test configs: everything is "lin".
 constexpr const char* kLinearRoles =
     "roles:\n"

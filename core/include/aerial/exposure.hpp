@@ -108,6 +108,31 @@ private:
 /// cd/m^2 per unit of Aerial's radiance (see "Units" above).
 inline constexpr double kNitsPerRadianceUnit = 5000.0;
 
+/// Night vision, the Purkinje shift: the colour to show for a scene-linear
+/// Rec.709 colour as an eye sees it at its luminance. Below a few cd/m^2
+/// the rods take over from the cones (CIE 191:2010's mesopic range, 0.005
+/// to 5 cd/m^2): colour fades, blue-green light looks brighter than red of
+/// the same luminance, and painters and film show the result as a blue
+/// night (Jensen et al. 2000, "Night rendering"). Per pixel:
+///   L = luminance(c) * nitsPerUnit [cd/m^2]
+///   m = the rods' share: 1 at or below 0.005 cd/m^2, 0 at or above 5,
+///       smoothstep in log10(L) between
+///   V = scotopic luminance (Larson, Rushmeier and Piatko 1997):
+///       Y (1.33 (1 + (Y + Z) / X) - 1.68) over the same for D65 white (so
+///       a white surface keeps its luminance; warm light is dimmer, blue
+///       light brighter), at most 4 Y
+///   out = (1 - m) c + m V kNightVisionWhite
+/// kNightVisionWhite is the blue white xy (0.28, 0.29), luminance 1. A
+/// moonless natural sky (2e-4 cd/m^2) becomes fully scotopic; a moonlit
+/// landscape (~0.05 cd/m^2) two thirds; the blue hour (>= 5 cd/m^2) keeps
+/// its colour. Negative or non-finite components count as 0; the result is
+/// finite.
+glm::dvec3 nightVision(const glm::dvec3& linearRec709, double nitsPerUnit);
+
+/// The colour of fully scotopic vision: xy (0.28, 0.29), luminance 1,
+/// linear Rec.709 (~0.85, 1.00, 1.42).
+glm::dvec3 nightVisionWhite();
+
 /// How a preset chooses its exposure.
 enum class ExposureMode {
     Manual,     ///< ExposureParams::ev100, keyed over the day if wanted

@@ -10,6 +10,10 @@
 // load falls back to the built-in one with a warning through the logger
 // (DisplayTransform::fellBack()).
 //
+// Night vision (on by default): before the exposure, each pixel takes the
+// colour the eye sees at its luminance, aerial::nightVision (exposure.hpp:
+// the rods' blue, colourless vision below 5 cd/m^2), with the input's
+// radiance unit DisplayDesc::nitsPerUnit (Aerial's renderer: 5000 cd/m^2).
 // Exposure is in EV: the scene-linear colour is multiplied by 2^EV before
 // the view. Alpha passes through unchanged.
 //
@@ -41,6 +45,10 @@ struct DisplayDesc {
     std::string display;  ///< "" = the config's default display
     std::string view;     ///< "" = the display's default view
     double exposureEv = 0.0;
+    /// Night vision (the Purkinje shift, aerial::nightVision) before the view.
+    bool nightVision = true;
+    /// cd/m^2 per unit of the input (aerial::kNitsPerRadianceUnit).
+    double nitsPerUnit = 5000.0;
     Logger logger;
 };
 
@@ -73,6 +81,8 @@ public:
 
     double exposureEv() const;
     void setExposureEv(double ev);
+    bool nightVision() const;
+    void setNightVision(bool on);
 
     /// Display-referred RGBA floats (alpha copied; 1 for RGB or grey input),
     /// the same size as `image`. Non-finite inputs are treated as 0.
