@@ -185,9 +185,21 @@ vec3 airglowRadiance(vec3 v) {
     return frame.airglowZenithRadiance * vanRhijn * (direct + frame.airglowScatteredFill * (1.0 - direct));
 }
 
+// A city's glow (core's lightPollutionRadiance, aerial/night_sky.hpp):
+// Lz (sqrt(X) + K exp(-theta^2 / 2 sigma^2)) / (1 + K exp(-(pi/2)^2 / 2 sigma^2)),
+// K = 20, sigma = 30 deg, theta from the city's point on the horizon.
+vec3 lightPollutionRadiance(vec3 v) {
+    if (v.y <= 0.0 || !(dot(frame.lightPollutionZenith, vec3(1.0)) > 0.0)) return vec3(0.0);
+    const float kGain = 20.0, kTwoSigma2 = 2.0 * 0.523598776 * 0.523598776;
+    float theta = acos(clamp(dot(v, frame.lightPollutionCity), -1.0, 1.0));
+    float shape = (sqrt(airMass(v.y)) + kGain * exp(-theta * theta / kTwoSigma2)) /
+                  (1.0 + kGain * exp(-2.4674011 / kTwoSigma2));
+    return frame.lightPollutionZenith * shape;
+}
+
 void main() {
     vec3 v = normalize(vFarRay);
-    vec3 radiance = skyRadiance(v, true) + airglowRadiance(v);
+    vec3 radiance = skyRadiance(v, true) + airglowRadiance(v) + lightPollutionRadiance(v);
     radiance += starRadiance(v, radiance);
     radiance += lightDisc(v, frame.sunDiscDirection, frame.sunDiscChord, frame.sunIlluminance,
                           frame.sunDiscInverseSolidAngle);

@@ -18,7 +18,7 @@
 //              "limiting_magnitude", "limiting_magnitude_at_eye",
 //              "extinction_mag"}}
 // "stars" (aerial/stars.hpp): the clear sky behind the stars (the table's
-// radiance plus airglowRadiance, as the sky pass draws them) as a luminance
+// radiance plus airglowRadiance and a city's glow, as the sky pass draws them) as a luminance
 // and a V surface brightness; the naked-eye limiting magnitude against it
 // at the eye, and for a star's magnitude above the atmosphere (the first
 // plus the extinction T_zenith^X in V towards the direction): a star of
@@ -108,7 +108,9 @@ struct StarSample {
 
 StarSample starSample(const PresetState& state, const glm::dvec3& v, const glm::dvec3& tableRadiance) {
     StarSample out;
-    const glm::dvec3 background = tableRadiance + airglowRadiance(v, state.zenithTransmittance);
+    const glm::dvec3 background = tableRadiance + airglowRadiance(v, state.zenithTransmittance) +
+                                  lightPollutionRadiance(state.environment.lightPollution, v,
+                                                         state.environment.location.northOffsetDeg);
     out.backgroundNits = luminance(background) * kNitsPerRadianceUnit;
     out.limitAtEye = limitingMagnitude(out.backgroundNits);
     out.aboveHorizon = v.y > 0.0;

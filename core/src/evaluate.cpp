@@ -312,6 +312,8 @@ FogSkyLight fogSkyLight(const PresetState& state, const SkyTable& sunSky, const 
     down += addSkyTableLight(sky, moonSky, g, state.moonLight.illuminanceSpace, clear);
     FogSkyLight night;
     down += clear * addAirglowLight(night, state.zenithTransmittance);
+    down += clear * addLightPollutionLight(night, state.environment.lightPollution,
+                                           state.environment.location.northOffsetDeg);
     sky.l0 += clear * night.l0;
     for (int k = 0; k < 3; ++k) sky.l1[k] += clear * night.l1[k];
     if (clear < 1.0) down += addUniformSkyLight(sky, (1.0 - clear) * overcast.radiance);

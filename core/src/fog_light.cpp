@@ -101,6 +101,17 @@ glm::dvec3 addAirglowLight(FogSkyLight& sky, const glm::dvec3& zenithTransmittan
     return irradiance;
 }
 
+glm::dvec3 addLightPollutionLight(FogSkyLight& sky, const LightPollution& glow, double northOffsetDeg) {
+    glm::dvec3 irradiance(0.0);
+    if (!(glow.zenithLuminance > 0.0)) return irradiance;
+    forUpperHemisphere([&](const glm::dvec3& w, double dw) {
+        const glm::dvec3 L = lightPollutionRadiance(glow, w, northOffsetDeg);
+        accumulate(sky, w, L, dw);
+        irradiance += L * (w.y * dw);
+    });
+    return irradiance;
+}
+
 void addGroundLight(FogSkyLight& sky, const glm::dvec3& albedo, const glm::dvec3& groundIrradiance) {
     const glm::dvec3 a = glm::clamp(detail::sanitiseColour(albedo), 0.0, 1.0);
     const glm::dvec3 L = a * detail::sanitiseColour(groundIrradiance) / kPi;

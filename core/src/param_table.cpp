@@ -25,6 +25,7 @@ constexpr std::array<sv, 3> kVolumeShapeNames = {"box", "ellipsoid", "mesh"};
 constexpr std::array<sv, 2> kBlendNames = {"add", "subtract"};
 constexpr std::array<sv, 2> kEmitterKindNames = {"point", "lightning"};
 constexpr std::array<sv, 2> kExposureModeNames = {"manual", "automatic"};
+constexpr std::array<sv, 2> kLampNames = {"sodium", "led"};
 constexpr std::array<sv, 2> kTimeModeNames = {"solar", "clock"};
 
 struct Range {
@@ -451,6 +452,22 @@ const std::vector<ParamDesc>& globalTable() {
             false, true, [](void* o) { return &env(o).clouds.albedo; },
             "Single-scattering albedo per RGB channel, 0..1 (scattering = albedo x extinction); "
             "below 1 tints and darkens the clouds. Default 0.98."),
+        // A city's glow (night_sky.hpp, "Light pollution").
+        scalar(
+            G, "night.light_pollution_cd_m2", "Light pollution", "cd/m^2", {0, 1, 1e-5, 0.05}, 0.0, true, true,
+            [](void* o) { return &env(o).lightPollution.zenithLuminance; },
+            "A city's glow: the luminance it adds at the zenith [cd/m^2], 0..1 (the natural night sky "
+            "is ~2e-4; a suburb 1e-3..2e-3, a city 7e-3 and more), brightest over the city on the "
+            "horizon. Default 0 (off)."),
+        scalar(
+            G, "night.light_pollution_azimuth_deg", "City azimuth", "deg", {0, 360, 0, 360}, 180.0, false,
+            true, [](void* o) { return &env(o).lightPollution.azimuthDeg; },
+            "Where the city lies [deg from north towards east], 0..360: the glow's dome. Default 180."),
+        enumeration(
+            G, "night.light_pollution_lamps", "City lamps", kLampNames, 0,
+            [](const void* o) { return std::int64_t(static_cast<const Environment*>(o)->lightPollution.lamps); },
+            [](void* o, std::int64_t v) { env(o).lightPollution.lamps = LightPollutionLamps(v); },
+            "The colour of the glow: sodium (orange, ~2100 K) or led (white, ~4000 K). Default sodium."),
     };
     return table;
 }

@@ -37,14 +37,16 @@ LightReport lightReport(const PresetState& state, const SkyTable& sunSky, const 
     e.sun = beamLux(state.sunLight, clear);
     e.moon = beamLux(state.moonLight, clear);
     e.sky = photometric(overcast.groundIrradiance);
-    e.night = photometric(airglowIrradiance(state.zenithTransmittance)) * clear;
+    const LightPollution& glow = state.environment.lightPollution;
+    e.night = photometric(airglowIrradiance(state.zenithTransmittance) + lightPollutionIrradiance(glow)) * clear;
     e.total = e.sun + e.sky + e.moon + e.night;
 
     const glm::dvec3 up(0.0, 1.0, 0.0);
     const double g = state.environment.atmosphere.mieAnisotropy;
     const glm::dvec3 zenith = skyRadiance(sunSky, g, up, state.sunLight.illuminanceSpace) +
                               skyRadiance(moonSky, g, up, state.moonLight.illuminanceSpace) +
-                              airglowRadiance(up, state.zenithTransmittance);
+                              airglowRadiance(up, state.zenithTransmittance) +
+                              lightPollutionRadiance(glow, up, state.environment.location.northOffsetDeg);
     out.zenithLuminance = photometric(zenith);
     return out;
 }

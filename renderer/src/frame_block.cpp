@@ -139,8 +139,13 @@ FrameBlock makeFrameBlock(const Camera& camera, const CameraFrame& view, const P
                        ? skyIrradiance(*in.moon.table, g, colourOf(moon.illuminanceSpace))
                        : glm::dvec3(0.0));
     // The airglow is physical (1e-9 of a day sky) and always part of the
-    // sky, as in sky.glsl and core's fog light and light report.
-    const glm::dvec3 airglow = airglowIrradiance(state.zenithTransmittance);
+    // sky, as in sky.glsl and core's fog light and light report; a city's
+    // glow, when the preset has one, joins it.
+    const LightPollution& glow = env.lightPollution;
+    const glm::dvec3 airglow = airglowIrradiance(state.zenithTransmittance) + lightPollutionIrradiance(glow);
+    fb.lightPollutionZenith =
+        toVec3(colourOf(lightPollutionRadiance(glow, glm::dvec3(0.0, 1.0, 0.0), env.location.northOffsetDeg)));
+    fb.lightPollutionCity = toVec3(lightPollutionCityDirection(glow, env.location.northOffsetDeg));
     fb.airglowZenithRadiance = toVec3(kAirglowZenithRadiance);
     fb.airglowScatteredFill = static_cast<float>(kAirglowScatteredFill);
     fb.airglowShell = static_cast<float>(kAirglowShellRatio);

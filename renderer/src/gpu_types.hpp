@@ -133,6 +133,13 @@ struct FrameBlock {
     /// (aerial::kAirglowZenithRadiance; its model: night_sky.hpp).
     Vec3 airglowZenithRadiance;
     float airglowShell = 0.0f;  ///< Rg / (Rg + kAirglowHeight), the van Rhijn factor's ratio
+    /// A city's glow (night_sky.hpp, "Light pollution"): its radiance at the
+    /// zenith (lamps' colour x Lz / kNitsPerRadianceUnit; 0 when off) and
+    /// the city's unit direction on the horizon.
+    Vec3 lightPollutionZenith;
+    float padLightPollutionZenith = 0.0f;
+    Vec3 lightPollutionCity;
+    float padLightPollutionCity = 0.0f;
 };
 static_assert(offsetof(FrameBlock, clipFromWorld) == 0);
 static_assert(offsetof(FrameBlock, eye) == 64);
@@ -202,7 +209,9 @@ static_assert(offsetof(FrameBlock, fogDirectVisibility) == 684);
 static_assert(offsetof(FrameBlock, fogSkyL1y) == 688);
 static_assert(offsetof(FrameBlock, fogSkyL1z) == 704);
 static_assert(offsetof(FrameBlock, airglowZenithRadiance) == 720);
-static_assert(sizeof(FrameBlock) == 736);
+static_assert(offsetof(FrameBlock, lightPollutionZenith) == 736);
+static_assert(offsetof(FrameBlock, lightPollutionCity) == 752);
+static_assert(sizeof(FrameBlock) == 768);
 
 /// shaders/common/volume.glsl, VolumeBlock (binding 1): one fog volume.
 struct VolumeBlock {

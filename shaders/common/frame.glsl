@@ -63,6 +63,7 @@
 //   fogDirectVisibility the clouds' mean visibility of the sun and moon for
 //                       the fog (fogDirectVisibility); the fog's direct light
 //                       is <light>Illuminance times it
+//   lightPollutionZenith, lightPollutionCity  a city's glow (night_sky.hpp)
 //   airglowZenithRadiance, airglowScatteredFill, airglowShell  the night
 //                       sky's airglow (aerial/night_sky.hpp:
 //                       kAirglowZenithRadiance, kAirglowScatteredFill, and
@@ -167,6 +168,10 @@ layout(std140, binding = 0) uniform FrameBlock {
     float padFogSkyL1z;
     vec3 airglowZenithRadiance;
     float airglowShell;
+    vec3 lightPollutionZenith;
+    float padLightPollutionZenith;
+    vec3 lightPollutionCity;
+    float padLightPollutionCity;
 } frame;
 
 // Ray from the eye to the far plane at normalised device coordinates ndc

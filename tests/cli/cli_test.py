@@ -316,7 +316,7 @@ class Eval(unittest.TestCase):
         with open(preset("foggy_valley_morning")) as f:
             document = json.load(f)
         state = run_json(self, "eval", preset("foggy_valley_morning"), "--time", "06:00")
-        globals_in_file = leaf_paths({k: document[k] for k in ("location", "atmosphere", "sun", "moon", "fog", "exposure", "clouds")})
+        globals_in_file = leaf_paths({k: document[k] for k in ("location", "atmosphere", "sun", "moon", "fog", "exposure", "clouds", "night")})
         self.assertEqual(leaf_paths(state["parameters"]), globals_in_file)
         self.assertEqual([v["id"] for v in state["volumes"]], [v["id"] for v in document["volumes"]])
         # A file leaves out "blend" and "mesh" at their defaults; eval lists every parameter.
@@ -404,6 +404,30 @@ class Sky(unittest.TestCase):
         self.assertIsNone(below["limiting_magnitude"])
         night = run_json(self, "sky", path, "--time", "00:00", "--dir", "0,1,0")["stars"]
         self.assertGreaterEqual(night["limiting_magnitude"], 5.5, night)
+
+    def test_a_citys_glow_brightens_the_night_and_hides_stars(self):
+        """Issue 48: night.light_pollution_cd_m2 adds a city's glow: the zenith's luminance grows by it
+        (`aerial eval` light.zenith_luminance_cd_m2 and `aerial sky` stars.background_cd_m2 agree), the ground
+        gets more light, and fewer stars show (a suburb's 2e-3 cd/m^2: 19.3 mag/arcsec^2 with the natural sky)."""
+        path = self.dated_clear_summer_day("2025-06-25")
+        with open(path) as f:
+            p = json.load(f)
+        p["night"] = {"light_pollution_cd_m2": 2e-3, "light_pollution_azimuth_deg": 90, "light_pollution_lamps": "led"}
+        city = os.path.join(WORK, "clear_summer_day_city.json")
+        with open(city, "w") as f:
+            json.dump(p, f)
+        dark = run_json(self, "eval", path, "--time", "00:00")["light"]
+        lit = run_json(self, "eval", city, "--time", "00:00")["light"]
+        self.assertAlmostEqual(lit["zenith_luminance_cd_m2"] - dark["zenith_luminance_cd_m2"], 2e-3, delta=2e-5)
+        self.assertGreater(lit["horizontal_illuminance_lux"]["night"], 5 * dark["horizontal_illuminance_lux"]["night"])
+        stars = run_json(self, "sky", city, "--time", "00:00", "--dir", "0,1,0")["stars"]
+        self.assertAlmostEqual(stars["background_cd_m2"], lit["zenith_luminance_cd_m2"],
+                               delta=0.02 * lit["zenith_luminance_cd_m2"])
+        natural = run_json(self, "sky", path, "--time", "00:00", "--dir", "0,1,0")["stars"]
+        self.assertLess(stars["limiting_magnitude"], natural["limiting_magnitude"] - 1.0)
+        # Towards the city, low down, the glow is many times the zenith's.
+        east = run_json(self, "sky", city, "--time", "00:00", "--dir", "1,0.05,0")["stars"]
+        self.assertGreater(east["background_cd_m2"], 8 * stars["background_cd_m2"])
 
 
 class Fog(unittest.TestCase):

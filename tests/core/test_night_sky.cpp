@@ -4,10 +4,12 @@
 // the elevation angle (not the library's midpoint rule in mu).
 #include <aerial/exposure.hpp>
 #include <aerial/night_sky.hpp>
+#include <aerial/stars.hpp>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace {
@@ -95,4 +97,81 @@ TEST(NightSky, ZenithAsMeasuredAndNoOrangeHorizon) {
     EXPECT_LE(lux, 2.0e-3) << lux;
 }
 
+// ---- Light pollution (night_sky.hpp, "Light pollution") ----
+
+aerial::LightPollution cityGlow(double zenithNits, double azimuthDeg) {
+    aerial::LightPollution glow;
+    glow.zenithLuminance = zenithNits;
+    glow.azimuthDeg = azimuthDeg;
+    return glow;
+}
+
+glm::dvec3 dirAt(double elevationDeg, double azimuthDeg) {
+    const double el = elevationDeg * kPi / 180.0, az = azimuthDeg * kPi / 180.0;
+    return {std::cos(el) * std::sin(az), std::sin(el), -std::cos(el) * std::cos(az)};
+}
+
+double nits(const glm::dvec3& radiance) { return aerial::luminance(radiance) * aerial::kNitsPerRadianceUnit; }
+
+TEST(LightPollution, ADomeOverTheCityOnTheHorizon) {
+    const aerial::LightPollution glow = cityGlow(2e-3, 90.0);  // a suburb's glow, the city in the east
+    EXPECT_NEAR(nits(aerial::lightPollutionRadiance(glow, {0, 1, 0}, 0.0)), 2e-3, 2e-3 * 1e-3);
+    const double towards = nits(aerial::lightPollutionRadiance(glow, dirAt(2.0, 90.0), 0.0));
+    const double away = nits(aerial::lightPollutionRadiance(glow, dirAt(2.0, 270.0), 0.0));
+    std::printf("[ measured ] city glow at 2 deg: towards %.3g, away %.3g cd/m^2 (zenith 2e-3)\n", towards, away);
+    EXPECT_GT(towards, 10.0 * 2e-3);
+    EXPECT_GT(towards, 3.0 * away);
+    EXPECT_GT(away, 2e-3);
+    // The north offset turns the dome with the sky.
+    EXPECT_NEAR(nits(aerial::lightPollutionRadiance(glow, dirAt(2.0, 180.0), 90.0)), towards, 1e-12);
+    // Sodium is orange, LEDs near white; nothing below the horizon, nothing when off.
+    const glm::dvec3 sodium = aerial::lightPollutionColour(aerial::LightPollutionLamps::Sodium);
+    const glm::dvec3 led = aerial::lightPollutionColour(aerial::LightPollutionLamps::Led);
+    EXPECT_GT(sodium.r, sodium.b * 2.0);
+    EXPECT_LT(led.r / led.b, sodium.r / sodium.b);
+    EXPECT_EQ(aerial::lightPollutionRadiance(glow, dirAt(-1.0, 90.0), 0.0), glm::dvec3(0.0));
+    EXPECT_EQ(aerial::lightPollutionRadiance(cityGlow(0.0, 90.0), dirAt(20.0, 90.0), 0.0), glm::dvec3(0.0));
+    EXPECT_EQ(aerial::lightPollutionIrradiance(cityGlow(0.0, 90.0)), glm::dvec3(0.0));
+    EXPECT_EQ(aerial::lightPollutionRadiance(cityGlow(std::nan(""), 90.0), dirAt(20.0, 90.0), 0.0),
+              glm::dvec3(0.0));
+}
+
+TEST(LightPollution, IrradianceIsTheCosineWeightedIntegral) {
+    // Simpson over the elevation angle and the azimuth (not the library's
+    // midpoint cells in mu).
+    const aerial::LightPollution glow = cityGlow(5e-3, 30.0);
+    constexpr int kElevations = 400, kAzimuths = 360;
+    glm::dvec3 e(0.0);
+    for (int j = 0; j <= kElevations; ++j) {
+        const double h = 0.5 * kPi * j / kElevations;
+        const double wj = (j == 0 || j == kElevations) ? 1.0 : (j % 2 ? 4.0 : 2.0);
+        for (int i = 0; i < kAzimuths; ++i) {
+            const double az = 2.0 * kPi * (i + 0.5) / kAzimuths;
+            const glm::dvec3 v{std::cos(h) * std::sin(az), std::sin(h), -std::cos(h) * std::cos(az)};
+            e += aerial::lightPollutionRadiance(glow, v, 0.0) *
+                 (wj * std::sin(h) * std::cos(h) * (0.5 * kPi / kElevations / 3.0) * (2.0 * kPi / kAzimuths));
+        }
+    }
+    const glm::dvec3 lib = aerial::lightPollutionIrradiance(glow);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(lib[c], e[c], 5e-3 * e[c]) << c;
+}
+
+TEST(LightPollution, ACitySkyHidesTheFaintStars) {
+    // Bortle's scale: a city sky (class 8, ~18 mag/arcsec^2 = 6.8e-3 cd/m^2
+    // at the zenith) shows stars to magnitude 4.5-5.0, a natural one (21.8
+    // mag/arcsec^2) to 6.5 or more. Schaefer's model (stars.hpp) reads a
+    // city ~0.5 mag darker than Bortle's observers: the tolerance is 0.75 mag.
+    // The glow adds to the natural sky.
+    const double natural = 2.1e-4;
+    const aerial::LightPollution city = cityGlow(6.8e-3 - natural, 180.0);
+    const double zenith = natural + nits(aerial::lightPollutionRadiance(city, {0, 1, 0}, 0.0));
+    const double cityLimit = aerial::limitingMagnitude(zenith);
+    const double naturalLimit = aerial::limitingMagnitude(natural);
+    std::printf("[ measured ] limiting magnitude at the zenith: natural %.2f, city %.2f\n", naturalLimit, cityLimit);
+    EXPECT_GE(cityLimit, 4.5 - 0.75);
+    EXPECT_LE(cityLimit, 5.0 + 0.75);
+    EXPECT_GT(naturalLimit, cityLimit + 1.0);
+}
+
 }  // namespace
+

@@ -144,7 +144,7 @@ double fogScatteringAt(const PresetState& state, const glm::dvec3& point);
 
 /// The light of the sky dome at the fog of a state (fog_light.hpp): the
 /// bands of both sky tables (the lights' illuminance above the atmosphere,
-/// the atmosphere's anisotropy) and the airglow, times 1 - skyCover, plus
+/// the atmosphere's anisotropy), the airglow and a city's glow, times 1 - skyCover, plus
 /// the deck's underside (overcast.radiance) times skyCover, plus the
 /// ground's reflection (the atmosphere's groundAlbedo) of that sky's and
 /// the lights' irradiance (LightState::illuminance times the zenith cosine,

@@ -75,6 +75,8 @@
 // scattered; that integral has no closed form for the exponential fog).
 #pragma once
 
+#include <aerial/night_sky.hpp>
+
 #include <aerial/sky.hpp>
 
 #include <glm/vec3.hpp>
@@ -125,6 +127,11 @@ glm::dvec3 addUniformSkyLight(FogSkyLight& sky, const glm::dvec3& radiance);
 /// Adds the airglow's bands (airglowRadiance, night_sky.hpp, through the
 /// zenith transmittance) and returns its irradiance on an upward surface.
 glm::dvec3 addAirglowLight(FogSkyLight& sky, const glm::dvec3& zenithTransmittance);
+
+/// Adds a city's glow (night_sky.hpp, lightPollutionRadiance) over the
+/// upper hemisphere to the bands (its dome tilts a_1 towards the city);
+/// returns its irradiance on an upward surface.
+glm::dvec3 addLightPollutionLight(FogSkyLight& sky, const LightPollution& glow, double northOffsetDeg);
 
 /// Adds the ground's Lambertian reflection, uniform radiance albedo / pi
 /// times `groundIrradiance` over the lower hemisphere.

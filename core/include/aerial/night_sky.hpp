@@ -36,11 +36,39 @@
 //     kAirglowScatteredFill comes back in the source's colour:
 //     L = L0 V(mu) (T + f (1 - T));
 //   * nothing below the horizon.
+//
+// Light pollution (optional, off by default): a city's glow, the light of
+// its lamps scattered back down by the air. An artist's shape, not a
+// radiative transfer: the luminance at the zenith Lz [cd/m^2] (a natural
+// sky ~2e-4; Bortle's suburban 1-2e-3, a city sky 7e-3 = 18 mag/arcsec^2
+// and more) times
+//   s(v) = (sqrt(X(mu)) + K exp(-theta^2 / (2 sigma^2))) / (1 + K exp(-(pi/2)^2 / (2 sigma^2)))
+// (X the relative air mass, theta the angle from the city's point on the
+// horizon, K = 20, sigma = 30 deg), so the zenith is Lz, the horizon ~5 Lz
+// away from the city and ~21 Lz towards it (the glow dome over a city on
+// the horizon), nothing below the horizon. Its colour is the lamps':
+// sodium (high pressure, ~2 100 K) or white LEDs (~4 000 K), as
+// blackbodyColour (emitter.hpp) of that temperature.
 #pragma once
 
 #include <glm/vec3.hpp>
 
 namespace aerial {
+
+/// The lamps whose light a city's glow is made of.
+enum class LightPollutionLamps {
+    Sodium,  ///< high-pressure sodium, orange (~2 100 K)
+    Led,     ///< white LEDs (~4 000 K)
+};
+
+/// A city's glow on the night sky (preset "night.*"; off when zenith 0).
+struct LightPollution {
+    /// Luminance the glow adds at the zenith [cd/m^2], 0..1. Default 0 (off).
+    double zenithLuminance = 0.0;
+    /// Azimuth of the city [deg from north towards east], the glow's dome.
+    double azimuthDeg = 180.0;
+    LightPollutionLamps lamps = LightPollutionLamps::Sodium;
+};
 
 /// Airglow radiance at the zenith above the atmosphere [radiance units], RGB:
 /// 2.25e-4 cd/m^2 of luminance in the colour above (see the header).
@@ -72,5 +100,22 @@ glm::dvec3 airglowRadiance(const glm::dvec3& viewDirection, const glm::dvec3& ze
 /// airglowRadiance(v) cos(theta) over the upper hemisphere (numeric, 256
 /// rings, exact to ~1e-5 relative).
 glm::dvec3 airglowIrradiance(const glm::dvec3& zenithTransmittance);
+
+/// Unit world direction of the city's point on the horizon: azimuth
+/// azimuthDeg + northOffsetDeg, as the sun's (sun.hpp: (sin az, 0, -cos az)).
+glm::dvec3 lightPollutionCityDirection(const LightPollution& glow, double northOffsetDeg);
+
+/// Linear Rec.709 colour of the lamps, luminance 1.
+glm::dvec3 lightPollutionColour(LightPollutionLamps lamps);
+
+/// The city's glow seen along a unit view direction [radiance units]: Lz
+/// s(v) times the lamps' colour over kNitsPerRadianceUnit (see the header);
+/// 0 below the horizon or when off. Non-finite inputs give 0.
+glm::dvec3 lightPollutionRadiance(const LightPollution& glow, const glm::dvec3& viewDirection,
+                                  double northOffsetDeg);
+
+/// Its irradiance on an upward surface [illuminance units] (numeric, 128 x
+/// 64 cells; independent of the azimuth).
+glm::dvec3 lightPollutionIrradiance(const LightPollution& glow);
 
 }  // namespace aerial

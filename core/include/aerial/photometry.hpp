@@ -20,9 +20,10 @@
 //     applied per direction), or under clouds OvercastLight::groundIrradiance
 //     (the clear sky through the gaps plus the deck's underside);
 //   * night: the natural night sky (airglow, zodiacal light and unresolved
-//     stars, aerial/night_sky.hpp: airglowIrradiance), through the gaps;
-//   * zenithLuminance: the clear sky straight up, both tables and the
-//     airglow (the clouds are not counted).
+//     stars, aerial/night_sky.hpp: airglowIrradiance) and a city's glow
+//     when the preset has one (lightPollutionIrradiance), through the gaps;
+//   * zenithLuminance: the clear sky straight up, both tables, the airglow
+//     and the city's glow (the clouds are not counted).
 // Published clear-sky references (AMS Glossary of Meteorology, "twilight";
 // USNO, "Illuminance": the horizontal illuminance by the sun's elevation):
 // a high sun 90-130 klx, sun at the horizon 410-585 lx, civil twilight's

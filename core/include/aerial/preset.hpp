@@ -52,6 +52,7 @@
 #include <aerial/exposure.hpp>
 #include <aerial/fog_volume.hpp>
 #include <aerial/height_fog.hpp>
+#include <aerial/night_sky.hpp>
 #include <aerial/sun.hpp>
 #include <aerial/timeline.hpp>
 
@@ -113,6 +114,8 @@ struct Environment {
     /// The physical moon, slightly cool: kDefaultMoonIntensity.
     LightParams moon{glm::dvec3(0.85, 0.92, 1.0), kDefaultMoonIntensity};
     HeightFogParams fog;
+    /// A city's glow on the night sky (night_sky.hpp), off by default.
+    LightPollution lightPollution;
     /// Where the global fog's in-scattered colour comes from.
     FogColourMode fogColourMode = FogColourMode::Sky;
     /// Global fog tint or radiance (see fogColourMode), scene-linear Rec.709.
