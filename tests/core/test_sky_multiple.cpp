@@ -143,7 +143,9 @@ TEST(SkyMultiple, TotalRadianceAgainstPathTracer) {
     SkySolver solver;
     std::printf("%s", kReportHeader);
     for (const SunCase& sun : kSuns) {
-        if (quick() && sun.elevation != -2.0 && sun.elevation != 10.0 && sun.elevation != 90.0) continue;
+        // The sanitizer pass checks memory, not convergence: the two suns
+        // with 16384 paths (the twilight ones take 8-16x longer).
+        if (quick() && sun.elevation != 10.0 && sun.elevation != 90.0) continue;
         const int paths = pathsEnv != nullptr ? std::clamp(std::atoi(pathsEnv), 256, 1 << 20) : sun.paths;
         EXPECT_LT(worstAgainstTracer(air, tracer, solver, sun.elevation, paths), sun.tolerance)
             << "sun " << sun.elevation;
