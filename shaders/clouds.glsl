@@ -79,6 +79,9 @@
 //     for the particles), darkened with depth in the cloud by A(f) =
 //     mix(0.25, 1, f), f the height fraction in the layer (bases see less
 //     sky than tops).
+//   From below: the ground's bounce of the sun, moon and sky (albedo, seen
+//     through the gaps) and a city's light (lightPollutionUplight), as a
+//     uniform lower hemisphere E / (2 pi), darkened towards the tops.
 //   Emitters: their fog falloff read as irradiance (as in shading.glsl),
 //     isotropic, unshadowed: lightning inside the layer lights it up.
 // Air: the clouds' radiance is seen through the atmosphere between the eye
@@ -249,6 +252,9 @@ void main() {
                             frame.moonIlluminance * max(frame.moonDirection.y, 0.0) + frame.skyAmbient;
     vec3 bounce = clouds.groundAlbedo * groundIrradiance * (1.0 - 0.8 * cloudSaturate(clouds.coverage)) /
                   (2.0 * kPi);
+    // A city's light from below (lightPollutionUplight, night_sky.hpp), on
+    // the bases as the bounce is: clouds over a city glow.
+    bounce += lightPollutionUplight(v) / (2.0 * kPi);
     // The moon's light is marched only when it matters (> 1 % of the sun's).
     bool moonLit = dot(frame.moonIlluminanceSpace, vec3(1.0)) > 0.01 * dot(frame.sunIlluminanceSpace, vec3(1.0)) ||
                    frame.sunDirection.y < -0.15;

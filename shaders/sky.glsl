@@ -103,11 +103,6 @@ uint starHash(uint x) {
 }
 float starUnit(uint h) { return float(h >> 8) * (1.0 / 16777216.0); }
 
-/// Kasten & Young (1989) relative air mass for a zenith cosine mu > 0.
-float airMass(float mu) {
-    float zenithDeg = degrees(acos(clamp(mu, 0.0, 1.0)));
-    return 1.0 / (mu + 0.50572 * pow(96.07995 - zenithDeg, -1.6364));
-}
 
 // Hecht's law (aerial/stars.hpp): K = 10^-1.9 per nanolambert, 1 nL =
 // 1e-5 / pi cd/m^2; the field's brightest and faintest magnitudes.
@@ -185,17 +180,6 @@ vec3 airglowRadiance(vec3 v) {
     return frame.airglowZenithRadiance * vanRhijn * (direct + frame.airglowScatteredFill * (1.0 - direct));
 }
 
-// A city's glow (core's lightPollutionRadiance, aerial/night_sky.hpp):
-// Lz (sqrt(X) + K exp(-theta^2 / 2 sigma^2)) / (1 + K exp(-(pi/2)^2 / 2 sigma^2)),
-// K = 20, sigma = 30 deg, theta from the city's point on the horizon.
-vec3 lightPollutionRadiance(vec3 v) {
-    if (v.y <= 0.0 || !(dot(frame.lightPollutionZenith, vec3(1.0)) > 0.0)) return vec3(0.0);
-    const float kGain = 20.0, kTwoSigma2 = 2.0 * 0.523598776 * 0.523598776;
-    float theta = acos(clamp(dot(v, frame.lightPollutionCity), -1.0, 1.0));
-    float shape = (sqrt(airMass(v.y)) + kGain * exp(-theta * theta / kTwoSigma2)) /
-                  (1.0 + kGain * exp(-2.4674011 / kTwoSigma2));
-    return frame.lightPollutionZenith * shape;
-}
 
 void main() {
     vec3 v = normalize(vFarRay);

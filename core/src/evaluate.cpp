@@ -292,6 +292,13 @@ OvercastLight overcastLight(const PresetState& state, const SkyTable& sunSky, co
         0.5 * (sunMoments.first + moonMoments.first) + 0.75 * (sunMoments.second + moonMoments.second);
     out.radiance = overcastRadiance(out.overcast, clouds.params.albedo,
                                     direct(state.sunLight) + direct(state.moonLight) + sky);
+    // A city's light from below, reflected by the deck: albedo (1 - T_d)
+    // of lightPollutionUplight (night_sky.hpp).
+    const glm::dvec3 uplight = lightPollutionUplight(state.environment.lightPollution, glm::dvec3(0.0, 1.0, 0.0),
+                                                     state.environment.location.northOffsetDeg);
+    const double reflected = 1.0 - std::clamp(out.overcast.diffuseTransmittance, 0.0, 1.0);
+    if (std::isfinite(reflected))
+        out.radiance += glm::clamp(clouds.params.albedo, 0.0, 1.0) * reflected * uplight / kPi;
     const double c = out.overcast.skyCover;
     out.groundIrradiance = (1.0 - c) * out.clearSkyIrradiance + c * kPi * out.radiance;
     return out;

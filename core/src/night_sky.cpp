@@ -109,4 +109,9 @@ glm::dvec3 lightPollutionIrradiance(const LightPollution& glow) {
     return e;
 }
 
+glm::dvec3 lightPollutionUplight(const LightPollution& glow, const glm::dvec3& viewDirection,
+                                 double northOffsetDeg) {
+    return kPi / kLightPollutionUplightDepth * lightPollutionRadiance(glow, viewDirection, northOffsetDeg);
+}
+
 }  // namespace aerial

@@ -146,6 +146,7 @@ FrameBlock makeFrameBlock(const Camera& camera, const CameraFrame& view, const P
     fb.lightPollutionZenith =
         toVec3(colourOf(lightPollutionRadiance(glow, glm::dvec3(0.0, 1.0, 0.0), env.location.northOffsetDeg)));
     fb.lightPollutionCity = toVec3(lightPollutionCityDirection(glow, env.location.northOffsetDeg));
+    fb.lightPollutionUplightDepth = static_cast<float>(kLightPollutionUplightDepth);
     fb.airglowZenithRadiance = toVec3(kAirglowZenithRadiance);
     fb.airglowScatteredFill = static_cast<float>(kAirglowScatteredFill);
     fb.airglowShell = static_cast<float>(kAirglowShellRatio);

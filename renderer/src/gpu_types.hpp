@@ -137,7 +137,7 @@ struct FrameBlock {
     /// zenith (lamps' colour x Lz / kNitsPerRadianceUnit; 0 when off) and
     /// the city's unit direction on the horizon.
     Vec3 lightPollutionZenith;
-    float padLightPollutionZenith = 0.0f;
+    float lightPollutionUplightDepth = 0.0f;
     Vec3 lightPollutionCity;
     float padLightPollutionCity = 0.0f;
 };

@@ -248,4 +248,28 @@ vec4 globalFogTowards(vec3 view, float tau) {
                                      s, tau);
 }
 
+/// Kasten & Young (1989) relative air mass for a zenith cosine mu > 0.
+float airMass(float mu) {
+    float zenithDeg = degrees(acos(clamp(mu, 0.0, 1.0)));
+    return 1.0 / (mu + 0.50572 * pow(96.07995 - zenithDeg, -1.6364));
+}
+
+// A city's glow (core's lightPollutionRadiance, aerial/night_sky.hpp):
+// Lz (sqrt(X) + K exp(-theta^2 / 2 sigma^2)) / (1 + K exp(-(pi/2)^2 / 2 sigma^2)),
+// K = 20, sigma = 30 deg, theta from the city's point on the horizon.
+vec3 lightPollutionRadiance(vec3 v) {
+    if (v.y <= 0.0 || !(dot(frame.lightPollutionZenith, vec3(1.0)) > 0.0)) return vec3(0.0);
+    const float kGain = 20.0, kTwoSigma2 = 2.0 * 0.523598776 * 0.523598776;
+    float theta = acos(clamp(dot(v, frame.lightPollutionCity), -1.0, 1.0));
+    float shape = (sqrt(airMass(v.y)) + kGain * exp(-theta * theta / kTwoSigma2)) /
+                  (1.0 + kGain * exp(-2.4674011 / kTwoSigma2));
+    return frame.lightPollutionZenith * shape;
+}
+
+/// The city's light arriving from below at a cloud seen along v
+/// (lightPollutionUplight of night_sky.hpp): pi L(v) / tau_up.
+vec3 lightPollutionUplight(vec3 v) {
+    return kPi / max(frame.lightPollutionUplightDepth, 1e-3) * lightPollutionRadiance(v);
+}
+
 #endif

@@ -64,6 +64,8 @@
 //                       the fog (fogDirectVisibility); the fog's direct light
 //                       is <light>Illuminance times it
 //   lightPollutionZenith, lightPollutionCity  a city's glow (night_sky.hpp)
+//   lightPollutionUplightDepth  kLightPollutionUplightDepth (clouds lit from
+//                       below by the city)
 //   airglowZenithRadiance, airglowScatteredFill, airglowShell  the night
 //                       sky's airglow (aerial/night_sky.hpp:
 //                       kAirglowZenithRadiance, kAirglowScatteredFill, and
@@ -169,7 +171,7 @@ layout(std140, binding = 0) uniform FrameBlock {
     vec3 airglowZenithRadiance;
     float airglowShell;
     vec3 lightPollutionZenith;
-    float padLightPollutionZenith;
+    float lightPollutionUplightDepth;
     vec3 lightPollutionCity;
     float padLightPollutionCity;
 } frame;

@@ -429,6 +429,42 @@ class Sky(unittest.TestCase):
         east = run_json(self, "sky", city, "--time", "00:00", "--dir", "1,0.05,0")["stars"]
         self.assertGreater(east["background_cd_m2"], 8 * stars["background_cd_m2"])
 
+    def test_clouds_brighten_a_citys_night_and_darken_a_dark_one(self):
+        """Issue 48: clouds over a city are lit from below by its light (night_sky.hpp,
+        lightPollutionUplight). Measured outdoors: overcast skies ~3x brighter than clear at a light-polluted
+        site 32 km from Berlin's centre, ~10x inside the city (Kyba et al. 2011, PLoS ONE 6(3) e17307); at
+        unpolluted sites clouds darken the sky (Jechow et al. 2019). Rendered, moonless, looking up at ~70 deg:
+        a suburban 3e-3 cd/m^2 glow overcast within 2-6x of clear, a dark site's overcast below its clear sky."""
+        if not has_render_command() or not RGBA_PROBE:
+            self.skipTest("no render command or no --rgba-probe")
+        with open(self.dated_clear_summer_day("2025-06-25")) as f:
+            p = json.load(f)
+        p["tracks"] = [t for t in p["tracks"] if t.get("param") != "clouds.coverage"]
+        luminance = {}
+        for coverage in (0.0, 1.0):
+            for glow in (0.0, 3e-3):
+                p["clouds"]["coverage"] = coverage
+                p["night"] = {"light_pollution_cd_m2": glow, "light_pollution_azimuth_deg": 90,
+                              "light_pollution_lamps": "sodium"}
+                path = os.path.join(WORK, "overcast_%g_%g.json" % (coverage, glow))
+                with open(path, "w") as f:
+                    json.dump(p, f)
+                out = path[:-5] + ".exr"
+                code, _, err = run("render", path, "--time", "00:30", "--size", "64x36", "--eye", "0,2,0",
+                                   "--target", "0,1000,-200", "--out", out)
+                self.assertEqual(code, 0, err)
+                probe = subprocess.run([RGBA_PROBE, out] + ["%d,%d" % (x, y) for x in range(4, 64, 8)
+                                                            for y in range(2, 18, 4)],
+                                       capture_output=True, text=True)
+                self.assertEqual(probe.returncode, 0, probe.stderr)
+                rgb = [list(map(float, line.split()[2:5])) for line in probe.stdout.splitlines()[1:]]
+                luminance[coverage, glow] = sum(0.2126 * r + 0.7152 * g + 0.0722 * b for r, g, b in rgb) / len(rgb)
+        city = luminance[1.0, 3e-3] / luminance[0.0, 3e-3]
+        dark = luminance[1.0, 0.0] / luminance[0.0, 0.0]
+        self.assertGreater(city, 2.0)
+        self.assertLess(city, 6.0)
+        self.assertLess(dark, 1.0)
+
 
 class Fog(unittest.TestCase):
     FIXTURE = None  # set in setUpClass

@@ -125,6 +125,8 @@ struct OvercastLight {
     /// 3/4 mu), mu the zenith cosine, 0 below the horizon) and the clear sky
     /// (skyIrradiance with a = 1/2, b = 3/4): a thick deck passes a beam at
     /// zenith cosine mu on as (1/2 + 3/4 mu) times diffuse light (Eddington).
+    /// Plus a city's light from below that the deck reflects: albedo (1 -
+    /// T_d) lightPollutionUplight(zenith) / pi (night_sky.hpp).
     glm::dvec3 radiance{0.0};
     /// Ambient on an upward surface below the deck: the clear sky through
     /// the gaps plus the deck, (1 - skyCover) clearSkyIrradiance + skyCover

@@ -49,6 +49,18 @@
 // the horizon), nothing below the horizon. Its colour is the lamps':
 // sodium (high pressure, ~2 100 K) or white LEDs (~4 000 K), as
 // blackbodyColour (emitter.hpp) of that temperature.
+//
+// Clouds over a city are lit from below by the same light: the lamps' light
+// leaves the ground as an upward flux F, the clear air scatters a fraction
+// of it back, L ~ tau_up F / pi (tau_up the air's vertical scattering depth
+// in V), and a cloud base above receives F itself,
+//   E_up(v) = pi L(v) / tau_up,   tau_up = kLightPollutionUplightDepth,
+// taking L along the direction the cloud is seen in (brighter towards the
+// city). A thick deck reflects ~albedo (1 - T_d) of it, so an overcast city
+// sky reads several times brighter than its clear sky (Kyba et al. 2011,
+// "Cloud coverage acts as an amplifier for ecological light pollution in
+// urban ecosystems", PLoS ONE 6(3): up to ~10x at the zenith in Berlin),
+// while at a dark site clouds stay darker than the airglow they hide.
 #pragma once
 
 #include <glm/vec3.hpp>
@@ -117,5 +129,16 @@ glm::dvec3 lightPollutionRadiance(const LightPollution& glow, const glm::dvec3& 
 /// Its irradiance on an upward surface [illuminance units] (numeric, 128 x
 /// 64 cells; independent of the azimuth).
 glm::dvec3 lightPollutionIrradiance(const LightPollution& glow);
+
+/// The air's vertical scattering optical depth in V that turns a city's
+/// upward flux into its glow (see the header): Rayleigh's 0.1 plus a light
+/// haze.
+inline constexpr double kLightPollutionUplightDepth = 0.12;
+
+/// The city's light reaching a cloud base from below, for a cloud seen along
+/// the unit view direction [illuminance units]: pi lightPollutionRadiance /
+/// kLightPollutionUplightDepth. 0 when off or below the horizon.
+glm::dvec3 lightPollutionUplight(const LightPollution& glow, const glm::dvec3& viewDirection,
+                                 double northOffsetDeg);
 
 }  // namespace aerial
