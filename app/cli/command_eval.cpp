@@ -20,13 +20,19 @@
 //              --no-light),
 //    "parameters": {every global parameter, nested as in the preset file},
 //    "volumes": [{every volume parameter}], "emitters": [{every emitter
-//    parameter, "flash"}], "cloud_volumes": [{every cloud volume parameter}]}
+//    parameter, "flash"}], "cloud_volumes": [{every cloud volume parameter}],
+//    "sun_events": {"sunrise", "noon", ...: {"time_h", "time"}} (that day,
+//    aerial/sun.hpp sunEventHours), "anchored_keys": [{"track", "key",
+//    "anchor", "offset_h", "time_h", "time"}] (the keys that follow the sun,
+//    where they fall that day)}
 // Keyed values are applied; emitter intensities include the lightning flash.
 // Without --json: a readable summary, one parameter per line with its unit.
 #include "cli_common.hpp"
 
+#include <aerial/clock.hpp>
 #include <aerial/photometry.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <optional>
@@ -67,6 +73,58 @@ void printParameters(ParamScope scope, const Object& object, const char* indent)
     }
 }
 
+/// "fog.density_per_m", or "volume valley_fog density_per_m".
+std::string describeTarget(const TrackTarget& target) {
+    switch (target.scope) {
+        case ParamScope::Volume: return "volume " + target.objectId + " " + target.param;
+        case ParamScope::Emitter: return "emitter " + target.objectId + " " + target.param;
+        case ParamScope::CloudVolume: return "cloud_volume " + target.objectId + " " + target.param;
+        case ParamScope::Global: break;
+    }
+    return target.param;
+}
+
+/// The day's sun events and the keys that follow them, resolved at the
+/// preset's location and date: {"sun_events": {event: {"time_h", "time"}},
+/// "anchored_keys": [{"track", "key", "anchor", "offset_h", "time_h",
+/// "time"}]}.
+Json anchorsToJson(const Preset& preset) {
+    Json events = Json::object();
+    for (SunEvent e : kSunEvents) {
+        const double t = sunEventHours(preset.environment.location, e);
+        events[sunEventName(e)] = {{"time_h", t}, {"time", formatTime(t)}};
+    }
+    Json keys = Json::array();
+    for (const Track& track : preset.tracks) {
+        for (std::size_t k = 0; k < track.keys.size(); ++k) {
+            const TrackKey& key = track.keys[k];
+            if (!key.anchor) continue;
+            keys.push_back({{"track", describeTarget(track.target)},
+                            {"key", k},
+                            {"anchor", sunEventName(*key.anchor)},
+                            {"offset_h", key.offsetHours},
+                            {"time_h", key.timeHours},
+                            {"time", formatTime(key.timeHours)}});
+        }
+    }
+    return {{"sun_events", events}, {"anchored_keys", keys}};
+}
+
+void printAnchors(const Preset& preset) {
+    std::printf("sun    ");
+    for (SunEvent e : kSunEvents)
+        std::printf(" %s %s", sunEventName(e), formatTime(sunEventHours(preset.environment.location, e)).c_str());
+    std::printf("\n");
+    for (const Track& track : preset.tracks) {
+        for (const TrackKey& key : track.keys) {
+            if (!key.anchor) continue;
+            std::printf("key    %s at %s = %s %c %s\n", describeTarget(track.target).c_str(),
+                        formatTime(key.timeHours).c_str(), sunEventName(*key.anchor),
+                        key.offsetHours < 0.0 ? '-' : '+', formatClock(std::abs(key.offsetHours)).c_str());
+        }
+    }
+}
+
 int runEval(const EvalOptions& options) {
     const double t = parseTimeOfDay(options.time, "--time");
     Preset preset = loadPresetOrFail(options.preset, "eval");
@@ -87,6 +145,7 @@ int runEval(const EvalOptions& options) {
         Json out = {{"preset", {{"file", options.preset}, {"name", name}}}};
         out.update(stateToJson(state));
         if (light) out["light"] = lightReportToJson(*light);
+        out.update(anchorsToJson(compiled.preset()));
         printJson(out);
         return kExitOk;
     }
@@ -100,6 +159,7 @@ int runEval(const EvalOptions& options) {
                     "zenith %.4g cd/m^2\n",
                     lux.total, lux.sun, lux.sky, lux.moon, lux.night, light->zenithLuminance);
     }
+    printAnchors(compiled.preset());
     std::printf("\nparameters\n");
     printParameters(ParamScope::Global, state.environment, "  ");
     for (const FogVolume& v : state.volumes) {

@@ -1,8 +1,11 @@
 // editor/curve_view.cpp — see curve_view.hpp.
 #include "curve_view.hpp"
 
+#include <aerial/clock.hpp>
+
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <set>
 #include <utility>
@@ -183,7 +186,7 @@ double moveCurvePoints(Preset& preset, const std::vector<CurveDragItem>& items, 
     hi = std::max(hi, 0.0);
     const double dt = moving.empty() ? 0.0 : std::clamp(dtHours, lo, hi);
     for (const auto& [t, keys] : moving)
-        for (const auto& [k, start] : keys) preset.tracks[t].keys[std::size_t(k)].timeHours = start + dt;
+        for (const auto& [k, start] : keys) setKeyTime(preset.tracks[t].keys[std::size_t(k)], start + dt);
     for (const CurveDragItem& item : items) {
         Track* track = findTrack(preset, item.point.target);
         const ParamDesc* desc = findParam(item.point.target.scope, item.point.target.param);
@@ -239,6 +242,95 @@ int setFlatTangents(Preset& preset, const std::vector<CurvePoint>& points, bool 
         }
     }
     return changed;
+}
+
+bool parseShiftHours(std::string_view text, double& hours) {
+    while (!text.empty() && text.front() == ' ') text.remove_prefix(1);
+    double sign = 1.0;
+    if (!text.empty() && (text.front() == '+' || text.front() == '-')) {
+        sign = text.front() == '-' ? -1.0 : 1.0;
+        text.remove_prefix(1);
+        if (!text.empty() && (text.front() == '+' || text.front() == '-')) return false;  // "+-1"
+    }
+    double magnitude = 0.0;
+    if (!parseClock(text, magnitude)) return false;
+    hours = sign * magnitude;
+    return true;
+}
+
+std::string formatOffset(double hours) {
+    if (!std::isfinite(hours)) hours = 0.0;
+    const long long seconds = std::llround(std::abs(hours) * 3600.0);
+    const char sign = hours < 0.0 && seconds > 0 ? '-' : '+';
+    char text[32];
+    if (seconds % 60 == 0)
+        std::snprintf(text, sizeof text, "%c %lld:%02lld", sign, seconds / 3600, seconds / 60 % 60);
+    else
+        std::snprintf(text, sizeof text, "%c %lld:%02lld:%02lld", sign, seconds / 3600, seconds / 60 % 60,
+                      seconds % 60);
+    return text;
+}
+
+std::string sunEventLabel(SunEvent event) {
+    std::string label = sunEventName(event);
+    std::replace(label.begin(), label.end(), '_', ' ');
+    return label;
+}
+
+std::string keyTimeText(const TrackKey& key) {
+    const std::string clock = formatClock(key.timeHours, ClockResolution::Minutes);
+    if (!key.anchor) return clock;
+    return sunEventLabel(*key.anchor) + " " + formatOffset(key.offsetHours) + " (" + clock + ")";
+}
+
+double shiftCurvePoints(Preset& preset, const std::vector<CurvePoint>& points, double dtHours) {
+    return moveCurvePoints(preset, dragItemsOf(preset, points), dtHours, 0.0);
+}
+
+std::string shiftLabel(const std::vector<CurvePoint>& points) {
+    const int n = keyCountOf(points);
+    return n == 1 ? std::string("Shift key") : "Shift " + std::to_string(n) + " keys";
+}
+
+namespace {
+
+/// The distinct keys of `points` that the preset has (TrackKey* or const TrackKey*).
+template <class PresetT>
+auto keysOf(PresetT& preset, const std::vector<CurvePoint>& points) {
+    std::vector<decltype(&preset.tracks.front().keys.front())> keys;
+    for (const CurvePoint& p : points) {
+        auto* track = findTrack(preset, p.target);
+        if (!track || p.key < 0 || p.key >= int(track->keys.size())) continue;
+        auto* key = &track->keys[std::size_t(p.key)];
+        if (std::find(keys.begin(), keys.end(), key) == keys.end()) keys.push_back(key);
+    }
+    return keys;
+}
+
+}  // namespace
+
+int anchorCurvePoints(Preset& preset, const std::vector<CurvePoint>& points, std::optional<SunEvent> event) {
+    int changed = 0;
+    for (TrackKey* key : keysOf(preset, points)) {
+        if (key->anchor == event) continue;
+        anchorKey(*key, event, preset.environment.location);
+        ++changed;
+    }
+    return changed;
+}
+
+std::string anchorLabel(const std::vector<CurvePoint>& points, std::optional<SunEvent> event) {
+    const int n = keyCountOf(points);
+    const std::string keys = n == 1 ? std::string("key") : std::to_string(n) + " keys";
+    if (!event) return n == 1 ? std::string("Fix key time") : "Fix " + std::to_string(n) + " key times";
+    return "Anchor " + keys + " to " + sunEventLabel(*event);
+}
+
+bool allAnchoredTo(const Preset& preset, const std::vector<CurvePoint>& points,
+                   std::optional<SunEvent> event) {
+    const std::vector<const TrackKey*> keys = keysOf(preset, points);
+    return !keys.empty() &&
+           std::all_of(keys.begin(), keys.end(), [&](const TrackKey* k) { return k->anchor == event; });
 }
 
 bool CurveViewState::isShown(const TrackTarget& target) const {

@@ -12,11 +12,17 @@
 // slider range (a density of 1e-4..3e-3 /m and a colour of 0..1 overlay
 // readably). A drag keeps the range it started with, so a key follows the
 // mouse.
+//
+// Keys that follow the sun (TrackKey::anchor, timeline.hpp) are shown as
+// "sunset + 0:20 (19:52)"; a selection is anchored to an event where it
+// stands (the curve does not change), and shifted by a typed amount with
+// the same limits as a drag, an anchored key keeping its anchor.
 #pragma once
 
 #include "preset_edit.hpp"
 
 #include <aerial/preset.hpp>
+#include <aerial/sun.hpp>
 
 #include <glm/vec2.hpp>
 
@@ -146,6 +152,48 @@ std::string deleteLabel(const std::vector<CurvePoint>& points);
 /// keys changed.
 int setFlatTangents(Preset& preset, const std::vector<CurvePoint>& points, bool flat);
 
+// --- typed shifts and keys that follow the sun (TrackKey::anchor) ------------------------------
+
+/// The snap steps a key drag offers [min] (the timeline's Snap); the
+/// default is kDefaultSnapHours, the quarter hour.
+inline constexpr int kSnapStepsMinutes[] = {1, 5, 15, 60};
+
+/// Reads a typed time shift [h]: an optional sign ('+' or '-', blanks
+/// after it allowed), then a time aerial::parseClock reads ("+0:20",
+/// "-1:00", "0:05", "-0.25", "+ 1.5h"). False on anything else.
+bool parseShiftHours(std::string_view text, double& hours);
+/// An offset [h] as "+ 0:20" or "- 1:05", rounded to the second; the
+/// seconds only when it is off the minute ("+ 0:20:30").
+std::string formatOffset(double hours);
+/// An event as a menu names it: "sunrise", "civil dusk".
+std::string sunEventLabel(SunEvent event);
+/// A key's time as the view shows it: "19:52" for a key at a fixed time,
+/// "sunset + 0:20 (19:52)" for one that follows the sun (its resolved time
+/// as the minute that has begun, as the clock shows it).
+std::string keyTimeText(const TrackKey& key);
+
+/// Shifts the points' keys by `dtHours` exactly as a drag does
+/// (moveCurvePoints: one shift for all, limited by the keys that do not
+/// move and by the day; values unchanged). A key that follows the sun keeps
+/// its anchor and its offset changes by the shift. Returns the shift
+/// applied [h].
+double shiftCurvePoints(Preset& preset, const std::vector<CurvePoint>& points, double dtHours);
+/// The undo step's name for that: "Shift key", "Shift 3 keys".
+std::string shiftLabel(const std::vector<CurvePoint>& points);
+
+/// Makes the points' keys follow `event` where they stand (anchorKey at
+/// the preset's location: neither time nor value changes, so the curve
+/// stays as it is until the date or the place does); nullopt gives them a
+/// fixed time again. Returns how many keys changed.
+int anchorCurvePoints(Preset& preset, const std::vector<CurvePoint>& points, std::optional<SunEvent> event);
+/// The undo step's name for that: "Anchor key to sunset", "Anchor 3 keys
+/// to civil dusk", "Fix key time", "Fix 3 key times".
+std::string anchorLabel(const std::vector<CurvePoint>& points, std::optional<SunEvent> event);
+/// Whether every one of the points' keys follows `event` (nullopt: every
+/// one has a fixed time); false for no keys. What the menu ticks.
+bool allAnchoredTo(const Preset& preset, const std::vector<CurvePoint>& points,
+                   std::optional<SunEvent> event);
+
 /// A mouse drag on the timeline's canvas, from press to release.
 struct CurveDrag {
     enum class Kind { None, Keys, Box, Pan } kind = Kind::None;
@@ -170,6 +218,10 @@ struct CurveViewState {
     std::vector<TrackTarget> shown;
     /// The selected key points.
     std::vector<CurvePoint> selected;
+    /// The step key drags snap to [h] (Snap: 1, 5, 15, 60 min; Shift: free).
+    double snapHours = kDefaultSnapHours;
+    /// The "Shift by" field's text ("+0:20"): what Enter shifts the selection by.
+    std::string shiftText;
     /// Where the curves were drawn last frame [px in the window]: x of
     /// time.startHours and time.endHours, y of the bottom (0) and top (1)
     /// of every curve's range (what a script's mouse drag aims at).

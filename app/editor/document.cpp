@@ -56,6 +56,9 @@ bool Document::apply(std::string_view label, std::string_view mergeKey,
                      const std::function<void(Preset&)>& change) {
     Preset before = preset_;
     change(preset_);
+    // Keys that follow the sun move with a new date or place, and a moved
+    // or newly anchored key takes its place in its track's order.
+    resolveKeyAnchors(preset_);
     if (presetsIdentical(before, preset_) && preset_.name == before.name &&
         preset_.description == before.description)
         return false;

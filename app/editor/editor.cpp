@@ -210,6 +210,9 @@ std::optional<int> Editor::initialise() {
         if (const std::optional<TrackTarget> target = curveTargetOf(key))
             edit_.curves.setShown(*target, true);
     playback_.timeHours = options_.script.empty() ? session_.timeHours : 9.0;  // scripts start at 09:00
+    if (options_.script.empty())  // scripts snap to the quarter hour unless they say (curve_snap)
+        for (int minutes : kSnapStepsMinutes)
+            if (session_.snapMinutes == minutes) edit_.curves.snapHours = minutes / 60.0;
     rebuildDisplay();
 
     if (!options_.scene.empty()) {
@@ -290,6 +293,7 @@ int Editor::run() {
         session_.timelineHeight = view_.timelineHeight;
         session_.curves.clear();
         for (const TrackTarget& target : edit_.curves.shown) session_.curves.push_back(curveKey(target));
+        if (options_.script.empty()) session_.snapMinutes = std::round(edit_.curves.snapHours * 60.0);
         session_.save(sessionFile_);
     }
     if (autosave_) autosave_->finish();

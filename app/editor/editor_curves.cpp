@@ -6,16 +6,22 @@
 // unless Shift is held; a few pixels of dead zone per axis keep a vertical
 // drag at its time); Ctrl+click adds a key to the selection; a drag on
 // empty curve area selects the keys in its box (Ctrl adds), a click there
-// sets the time; right-click a key for flat / automatic tangents and
-// delete. The wrap through midnight (after the last key and before the
-// first) is dashed; a track that holds its ends is drawn flat there, dimmed.
-// The pure parts (zoom, normalisation, hit-testing, moves) are in
+// sets the time; right-click a key for flat / automatic tangents, Follow
+// the sun (anchor the selection to sunrise, sunset, a dawn or a dusk where
+// it stands), Shift by and delete. A key that follows the sun wears rays
+// and reads "sunset + 0:20 (19:52)". Below the legend: the Snap step of
+// drags (1, 5, 15, 60 min) and the Shift field (Enter shifts the selected
+// keys by "+0:20", "-1:00", "-0.25", limited as a drag is). The wrap
+// through midnight (after the last key and before the first) is dashed; a
+// track that holds its ends is drawn flat there, dimmed. The pure parts
+// (zoom, normalisation, hit-testing, moves, anchors, shifts) are in
 // curve_view.hpp.
 #include "panels.hpp"
 
 #include <aerial/clock.hpp>
 
 #include <imgui.h>
+#include <imgui_stdlib.h>
 
 #include <algorithm>
 #include <cmath>
@@ -34,6 +40,7 @@ constexpr ImU32 kPalette[] = {IM_COL32(240, 190, 60, 255),  IM_COL32(80, 200, 23
 constexpr int kPaletteSize = int(sizeof kPalette / sizeof kPalette[0]);
 constexpr float kPickRadiusPx = 6.0f;
 constexpr float kDeadZonePx = 3.0f;  ///< a drag moves a key along an axis once it leaves this
+constexpr ImU32 kSunRays = IM_COL32(255, 214, 110, 235);  ///< the rays of a key that follows the sun
 
 /// A colour scaled in brightness and alpha (the components of a vector
 /// curve get darker: x, y, z).
@@ -66,7 +73,24 @@ std::string valueText(const glm::dvec3& v, int components) {
     return text;
 }
 
+/// "Civil dusk": a menu's capitalised event.
+std::string eventMenuLabel(SunEvent event) {
+    std::string label = sunEventLabel(event);
+    if (!label.empty()) label[0] = char(label[0] - 'a' + 'A');
+    return label;
+}
+
 }  // namespace
+
+void drawSunKeyRays(float x, float y, float radius) {
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    for (int i = 0; i < 8; ++i) {
+        const float angle = float(i) * 0.78539816f;  // 45 deg apart
+        const float c = std::cos(angle), s = std::sin(angle);
+        dl->AddLine(ImVec2(x + c * (radius + 1.5f), y + s * (radius + 1.5f)),
+                    ImVec2(x + c * (radius + 4.0f), y + s * (radius + 4.0f)), kSunRays, 1.5f);
+    }
+}
 
 unsigned curveColour(const EditState& edit, const TrackTarget& target) {
     const auto& shown = edit.curves.shown;
@@ -198,17 +222,24 @@ void drawCurveView(Document& doc, EditState& edit, Playback& playback, float lab
                                       IM_COL32(235, 235, 235, 255));
                 }
                 dl->AddCircleFilled(ImVec2(x, y), selected ? 4.5f : 3.5f, shade(d.colour, brightness, 1.0f));
-                if (selected) dl->AddCircle(ImVec2(x, y), 6.5f, IM_COL32(255, 255, 255, 230), 0, 1.5f);
+                if (key.anchor) drawSunKeyRays(x, y, selected ? 4.5f : 3.5f);  // follows the sun
+                if (selected)
+                    dl->AddCircle(ImVec2(x, y), key.anchor ? 10.5f : 6.5f, IM_COL32(255, 255, 255, 230), 0,
+                                  1.5f);
                 points.push_back({x, y});
                 ids.push_back(id);
             }
         }
     }
 
-    // --- legend: the label column, one line a curve --------------------------------------------
+    // --- legend: the label column, one line a curve (Snap and Shift below it, where they fit) ----
+    const float frameH = ImGui::GetFrameHeight();
+    const float controlsH = 2.0f * frameH + 6.0f;
+    const bool controlsFit = bottom - top >= controlsH + 16.0f && x0 - labelX >= 70.0f;
+    const float legendBottom = controlsFit ? bottom - controlsH : bottom;
     float yLegend = top + 2.0f;
     int hoveredLegend = -1;
-    for (std::size_t i = 0; i < curves.size() && yLegend + 13.0f <= bottom; ++i, yLegend += 14.0f) {
+    for (std::size_t i = 0; i < curves.size() && yLegend + 13.0f <= legendBottom; ++i, yLegend += 14.0f) {
         const Drawn& d = curves[i];
         std::string label(d.ref.desc->label);
         if (d.ref.object >= 0)
@@ -284,9 +315,10 @@ void drawCurveView(Document& doc, EditState& edit, Playback& playback, float lab
                 const double hoursPerPx = view.time.span() / double(std::max(x1 - x0, 1.0f));
                 const double wanted = lead.timeHours + delta.x * hoursPerPx;
                 double t = wanted;
-                // Snapped to another key (6 px) or the quarter hour; Shift moves freely.
+                // Snapped to another key (6 px) or the snap step; Shift moves freely.
                 if (!io.KeyShift) {
-                    t = snapKeyTime(preset, lead.point.target, lead.point.key, wanted, 6.0 * hoursPerPx);
+                    t = snapKeyTime(preset, lead.point.target, lead.point.key, wanted, 6.0 * hoursPerPx,
+                                    view.snapHours);
                     if (t - wanted > 12.0) t -= 24.0;  // the quarter hour after 23:52 is 00:00
                 }
                 dt = t - lead.timeHours;
@@ -330,6 +362,24 @@ void drawCurveView(Document& doc, EditState& edit, Playback& playback, float lab
     }
 
     const std::uint64_t revision = doc.revision();
+    // The selected keys shifted by the Shift field's time, one undo step;
+    // false when nothing is selected or the text is not a time.
+    auto shiftSelection = [&] {
+        double dt = 0.0;
+        const std::vector<CurvePoint> picked = view.selected;
+        if (picked.empty() || !parseShiftHours(view.shiftText, dt)) return false;
+        doc.apply(shiftLabel(picked), "", [&](Preset& p) { shiftCurvePoints(p, picked, dt); });
+        return true;
+    };
+    double typedShift = 0.0;
+    const bool shiftUnreadable = !view.shiftText.empty() && !parseShiftHours(view.shiftText, typedShift);
+    const char* shiftHelp =
+        "Shift the selected keys by a time: +0:20, -1:00, 0:05 or hours (-0.25); Enter shifts.\nThe keys "
+        "stop a minute from keys that do not move, as in a drag; keys that follow the sun keep their "
+        "event (their offset changes).";
+    auto snapLabel = [](int minutes) { return std::to_string(minutes) + " min"; };
+    const int snapMinutes = int(std::lround(view.snapHours * 60.0));
+
     if (ImGui::BeginPopup("##curvemenu")) {
         const int keys = keyCountOf(view.selected);
         const std::string suffix =
@@ -345,12 +395,75 @@ void drawCurveView(Document& doc, EditState& edit, Playback& playback, float lab
             ImGui::SetTooltip(
                 "Smooth tracks: flat levels the curve at the key; automatic follows its neighbours");
         ImGui::Separator();
+        // Follow the sun: the keys keep their time today and move with the event when the date or
+        // the place changes; each event shows its time today.
+        if (ImGui::BeginMenu(("Follow the sun" + suffix).c_str())) {
+            const Location& where = doc.preset().environment.location;
+            for (SunEvent event : kSunEvents) {
+                const std::string when = formatClock(sunEventHours(where, event), ClockResolution::Minutes);
+                if (ImGui::MenuItem(eventMenuLabel(event).c_str(), when.c_str(),
+                                    allAnchoredTo(doc.preset(), picked, event)))
+                    doc.apply(anchorLabel(picked, event), "",
+                              [&](Preset& p) { anchorCurvePoints(p, picked, event); });
+            }
+            ImGui::Separator();
+            if (ImGui::MenuItem("Fixed time", nullptr, allAnchoredTo(doc.preset(), picked, std::nullopt)))
+                doc.apply(anchorLabel(picked, std::nullopt), "",
+                          [&](Preset& p) { anchorCurvePoints(p, picked, std::nullopt); });
+            ImGui::EndMenu();
+        }
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip(
+                "Anchor the keys to a moment of the sun where they stand (\"sunset + 0:20\"): the curve "
+                "stays as it is, and the keys move with the sun when the date or the place changes");
+        if (shiftUnreadable) ImGui::PushStyleColor(ImGuiCol_FrameBg, ImVec4(0.55f, 0.15f, 0.12f, 1.0f));
+        ImGui::SetNextItemWidth(90.0f);
+        if (ImGui::InputTextWithHint("Shift by", "+0:20", &view.shiftText,
+                                     ImGuiInputTextFlags_EnterReturnsTrue) &&
+            shiftSelection())
+            ImGui::CloseCurrentPopup();
+        if (shiftUnreadable) ImGui::PopStyleColor();
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", shiftHelp);
+        if (ImGui::BeginMenu(("Snap: " + snapLabel(snapMinutes)).c_str())) {
+            for (int minutes : kSnapStepsMinutes)
+                if (ImGui::MenuItem(snapLabel(minutes).c_str(), nullptr, minutes == snapMinutes))
+                    view.snapHours = minutes / 60.0;
+            ImGui::EndMenu();
+        }
+        ImGui::Separator();
         if (ImGui::MenuItem(deleteLabel(picked).c_str(), "Del")) {
             doc.apply(deleteLabel(picked), "", [&](Preset& p) { removeCurvePoints(p, picked); });
             view.selected.clear();
             edit.selectedKey = -1;
         }
         ImGui::EndPopup();
+    }
+
+    // --- Snap and Shift below the legend -------------------------------------------------------
+    if (controlsFit) {
+        const float width = x0 - labelX - 10.0f;
+        ImGui::PushID("##curvecontrols");
+        ImGui::SetCursorScreenPos(ImVec2(labelX + 4.0f, bottom - controlsH + 2.0f));
+        ImGui::SetNextItemWidth(width);
+        if (ImGui::BeginCombo("##snap", ("snap " + snapLabel(snapMinutes)).c_str())) {
+            for (int minutes : kSnapStepsMinutes)
+                if (ImGui::Selectable(snapLabel(minutes).c_str(), minutes == snapMinutes))
+                    view.snapHours = minutes / 60.0;
+            ImGui::EndCombo();
+        }
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip(
+                "Dragged keys snap to other keys and to this step (a key that follows the sun: its "
+                "offset from the event); hold Shift to move them freely");
+        ImGui::SetCursorScreenPos(ImVec2(labelX + 4.0f, bottom - frameH - 2.0f));
+        ImGui::SetNextItemWidth(width);
+        if (shiftUnreadable) ImGui::PushStyleColor(ImGuiCol_FrameBg, ImVec4(0.55f, 0.15f, 0.12f, 1.0f));
+        if (ImGui::InputTextWithHint("##shift", "shift +0:20", &view.shiftText,
+                                     ImGuiInputTextFlags_EnterReturnsTrue))
+            shiftSelection();
+        if (shiftUnreadable) ImGui::PopStyleColor();
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", shiftHelp);
+        ImGui::PopID();
     }
 
     // Tooltips: a key's time and value; elsewhere the inspector's parameter there.
@@ -363,11 +476,12 @@ void drawCurveView(Document& doc, EditState& edit, Playback& playback, float lab
                 if (d.target == p.target && d.track && p.key < int(d.track->keys.size())) {
                     const TrackKey& k = d.track->keys[std::size_t(p.key)];
                     ImGui::SetTooltip(
-                        "%s\n%s  %s%s\nDrag: time and value (Shift: no snapping); Ctrl+click: "
-                        "add to the selection; right-click: tangent, delete",
-                        std::string(d.ref.desc->label).c_str(),
-                        formatClock(k.timeHours, ClockResolution::Minutes).c_str(),
-                        valueText(k.value, d.components).c_str(), k.flat ? "  (flat)" : "");
+                        "%s\n%s  %s%s\nDrag: time and value (snaps to %s; Shift: no snapping); "
+                        "Ctrl+click: add to the selection; right-click: tangent, follow the sun, shift, "
+                        "delete",
+                        std::string(d.ref.desc->label).c_str(), keyTimeText(k).c_str(),
+                        valueText(k.value, d.components).c_str(), k.flat ? "  (flat)" : "",
+                        snapLabel(snapMinutes).c_str());
                 }
         } else if (edit.selectedParam) {
             double v[4];

@@ -1,10 +1,14 @@
 // editor/editor_script_curves.cpp — the script commands of the timeline's
 // curve view: show a curve, select key points (one, or a box in time and
 // normalised value), move them as a drag does (one undo step, snapped unless
-// told not to), flat tangents, zoom and pan; and real mouse drags over the
-// curve area (curve_drag, curve_drag_box: ImGui's mouse, frame by frame). Entries of the script command
-// table (see editor_script.cpp) over the functions the curve view uses
-// (curve_view.hpp).
+// told not to; curve_snap sets the step), shift them by a typed time
+// (curve_shift "+0:20", the Shift field), anchor them to a moment of the sun
+// (curve_anchor sunset, the key menu's Follow the sun), flat tangents, zoom
+// and pan; print a track's keys as the view reads them ("sunset + 0:20
+// (19:52)") and the day's sun events; and real mouse drags over the curve
+// area (curve_drag, curve_drag_box: ImGui's mouse, frame by frame). Entries
+// of the script command table (see editor_script.cpp) over the functions the
+// curve view uses (curve_view.hpp).
 #include "editor.hpp"
 #include "script_args.hpp"
 
@@ -107,7 +111,8 @@ void Editor::declareCurveScriptCommands() {
                }});
     table.add({"curve_move", 2, 3, "curve_move DT DV [free]",
                "move the selected keys as a drag on the curves does: DT hours (the first selected key "
-               "snaps to keys and quarter hours unless free) and DV of each curve's height; one undo step",
+               "snaps to keys and the snap step, curve_snap, unless free) and DV of each curve's height; "
+               "one undo step",
                [this](W w, E error) {
                    double dt, dv;
                    if (!toNumber(w[1], dt) || !toNumber(w[2], dv) || (w.size() == 4 && w[3] != "free")) {
@@ -122,8 +127,9 @@ void Editor::declareCurveScriptCommands() {
                    const CurveDragItem& lead = items.front();
                    double shift = dt;
                    if (w.size() == 3) {  // 6 px at the whole day on a 1000 px strip
-                       const double t = snapKeyTime(doc_.preset(), lead.point.target, lead.point.key,
-                                                    lead.timeHours + dt, 6.0 * 24.0 / 1000.0);
+                       const double t =
+                           snapKeyTime(doc_.preset(), lead.point.target, lead.point.key, lead.timeHours + dt,
+                                       6.0 * 24.0 / 1000.0, edit_.curves.snapHours);
                        shift = t - lead.timeHours;
                        if (shift - dt > 12.0) shift -= 24.0;
                    }
@@ -136,6 +142,93 @@ void Editor::declareCurveScriptCommands() {
                        });
                    doc_.closeMerge();
                    std::printf("curve_move: %s by %.6g h\n", moveLabel(moved).c_str(), applied);
+                   return true;
+               }});
+    table.add({"curve_snap", 1, 1, "curve_snap MINUTES",
+               "the step dragged keys snap to: 1, 5, 15 or 60 minutes (the curve view's Snap)",
+               [this](W w, E error) {
+                   double minutes = 0.0;
+                   bool offered = false;
+                   if (toNumber(w[1], minutes))
+                       for (int m : kSnapStepsMinutes) offered = offered || minutes == m;
+                   if (!offered) {
+                       error = "curve_snap: curve_snap 1|5|15|60";
+                       return false;
+                   }
+                   edit_.curves.snapHours = minutes / 60.0;
+                   return true;
+               }});
+    table.add({"curve_shift", 1, 1, "curve_shift AMOUNT",
+               "shift the selected keys by AMOUNT, typed as in the Shift field (+0:20, -1:00, 0:05, "
+               "-0.25 hours): limited as a drag is, keys that follow the sun keep their event; one undo "
+               "step; prints \"curve_shift: Shift 2 keys by H h\"",
+               [this](W w, E error) {
+                   double dt = 0.0;
+                   if (!parseShiftHours(w[1], dt)) {
+                       error = "curve_shift: \"" + w[1] + "\" is not a time shift (+0:20, -1:00, -0.25)";
+                       return false;
+                   }
+                   const std::vector<CurvePoint> picked = edit_.curves.selected;
+                   if (dragItemsOf(doc_.preset(), picked).empty()) {
+                       error = "curve_shift: no keys selected";
+                       return false;
+                   }
+                   edit_.curves.shiftText = w[1];
+                   double applied = 0.0;
+                   doc_.apply(shiftLabel(picked), "",
+                              [&](Preset& p) { applied = shiftCurvePoints(p, picked, dt); });
+                   edit_.curves.validate(doc_.preset());
+                   std::printf("curve_shift: %s by %.6g h\n", shiftLabel(picked).c_str(), applied);
+                   return true;
+               }});
+    table.add(
+        {"curve_anchor", 1, 1, "curve_anchor EVENT|fixed",
+         "the key menu's Follow the sun: the selected keys follow EVENT (sunrise, noon, sunset, "
+         "civil_dawn, civil_dusk, nautical_dawn, nautical_dusk) where they stand, or have a fixed "
+         "time again; one undo step",
+         [this](W w, E error) {
+             static const std::string kEvents =
+                 "sunrise, noon, sunset, civil_dawn, civil_dusk, nautical_dawn, nautical_dusk";
+             std::optional<SunEvent> event;
+             if (w[1] != "fixed") {
+                 SunEvent parsed;
+                 if (!parseSunEvent(w[1], parsed)) {
+                     error = "curve_anchor: \"" + w[1] + "\" is not an event (" + kEvents + ") or fixed";
+                     return false;
+                 }
+                 event = parsed;
+             }
+             const std::vector<CurvePoint> picked = edit_.curves.selected;
+             if (dragItemsOf(doc_.preset(), picked).empty()) {
+                 error = "curve_anchor: no keys selected";
+                 return false;
+             }
+             int changed = 0;
+             doc_.apply(anchorLabel(picked, event), "",
+                        [&](Preset& p) { changed = anchorCurvePoints(p, picked, event); });
+             edit_.curves.validate(doc_.preset());
+             std::printf("curve_anchor: %s (%d changed)\n", anchorLabel(picked, event).c_str(), changed);
+             return true;
+         }});
+    table.add({"print_keys", 1, 1, "print_keys KEY",
+               "prints a line per key of KEY's track: \"key INDEX TIME_H TEXT\", TEXT as the curve view "
+               "reads it (\"19:30\", \"sunset + 0:20 (19:52)\")",
+               [this, animated](W w, E error) {
+                   const std::optional<TrackTarget> target = animated(w[1], error);
+                   if (!target) return false;
+                   const Track& track = *findTrack(doc_.preset(), *target);
+                   for (std::size_t k = 0; k < track.keys.size(); ++k)
+                       std::printf("key %zu %.9f %s\n", k, track.keys[k].timeHours,
+                                   keyTimeText(track.keys[k]).c_str());
+                   return true;
+               }});
+    table.add({"print_sun", 0, 0, "print_sun",
+               "prints the day's sun events at the preset's location and date, a line each: \"sun EVENT "
+               "TIME_H\" (what keys that follow the sun are placed by)",
+               [this](W, E) {
+                   for (SunEvent event : kSunEvents)
+                       std::printf("sun %s %.9f\n", sunEventName(event),
+                                   sunEventHours(doc_.preset().environment.location, event));
                    return true;
                }});
     table.add({"curve_drag", 4, 5, "curve_drag KEY T DX DY [shift|ctrl]",

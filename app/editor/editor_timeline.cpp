@@ -4,7 +4,8 @@
 // summary row of every key in the preset, the selected parameter's track
 // (select, drag in time, double-click to add, right-click to delete, flatten
 // its tangent or set the interpolation; Delete, Ctrl+C / Ctrl+V while the mouse is over the
-// timeline) and the curve area (editor_curves.cpp). The time axis zooms
+// timeline; a key that follows the sun is a round mark with rays, "sunset +
+// 0:20 (19:52)") and the curve area (editor_curves.cpp). The time axis zooms
 // with the wheel around the mouse and pans with a middle or Alt drag; F or
 // a double-click on the ruler fits it to the day again.
 #include "panels.hpp"
@@ -304,8 +305,13 @@ void drawTimeline(Document& doc, EditState& edit, Playback& playback, const Acti
         for (std::size_t i = 0; i < track->keys.size(); ++i) {
             const float x = xOf(track->keys[i].timeHours);
             const bool selected = int(i) == edit.selectedKey;
-            diamond(dl, ImVec2(x, yTrack + rowH * 0.5f), selected ? 6.0f : 5.0f,
-                    selected ? IM_COL32(255, 230, 120, 255) : IM_COL32(240, 190, 60, 255), true);
+            const ImU32 colour = selected ? IM_COL32(255, 230, 120, 255) : IM_COL32(240, 190, 60, 255);
+            if (track->keys[i].anchor) {  // follows the sun: a round mark with rays
+                dl->AddCircleFilled(ImVec2(x, yTrack + rowH * 0.5f), selected ? 4.0f : 3.5f, colour);
+                drawSunKeyRays(x, yTrack + rowH * 0.5f, selected ? 4.0f : 3.5f);
+            } else {
+                diamond(dl, ImVec2(x, yTrack + rowH * 0.5f), selected ? 6.0f : 5.0f, colour, true);
+            }
             if (std::abs(x - mouseX) < 6.0f) hoveredKey = int(i);
         }
         if (ImGui::IsItemClicked(0) && !io.KeyAlt) {
@@ -325,11 +331,11 @@ void drawTimeline(Document& doc, EditState& edit, Playback& playback, const Acti
         }
         if (edit.draggingKey && trackActive && edit.selectedKey >= 0 && ImGui::GetIO().MouseDelta.x != 0.0f) {
             const int key = edit.selectedKey;
-            // Snapped to another key (6 px) or the quarter hour; Shift moves freely.
+            // Snapped to another key (6 px) or the snap step (the curve view's Snap); Shift moves freely.
             double t = std::clamp(view.tOf(mouseX, x0, x1), 0.0, 24.0 - 1e-6);
             if (!ImGui::GetIO().KeyShift)
                 t = snapKeyTime(doc.preset(), target, key, t,
-                                6.0 * view.span() / double(std::max(x1 - x0, 1.0f)));
+                                6.0 * view.span() / double(std::max(x1 - x0, 1.0f)), edit.curves.snapHours);
             doc.apply("Move key", "move-key:" + paramAddress(*edit.selectedParam), [&](Preset& p) {
                 if (Track* tr = findTrack(p, target)) moveKey(*tr, key, t);
             });
@@ -343,13 +349,14 @@ void drawTimeline(Document& doc, EditState& edit, Playback& playback, const Acti
             !ImGui::IsPopupOpen("##keymenu")) {
             const TrackKey& k = track->keys[std::size_t(hoveredKey)];
             const int components = edit.selectedParam->desc->components();
+            // "19:52", or "sunset + 0:20 (19:52)" for a key that follows the sun.
+            const std::string when = keyTimeText(k);
             if (components == 1)
-                ImGui::SetTooltip("%s  %.6g", clock(k.timeHours).c_str(), k.value.x);
+                ImGui::SetTooltip("%s  %.6g", when.c_str(), k.value.x);
             else if (components == 2)
-                ImGui::SetTooltip("%s  (%.4g, %.4g)", clock(k.timeHours).c_str(), k.value.x, k.value.y);
+                ImGui::SetTooltip("%s  (%.4g, %.4g)", when.c_str(), k.value.x, k.value.y);
             else
-                ImGui::SetTooltip("%s  (%.4g, %.4g, %.4g)", clock(k.timeHours).c_str(), k.value.x, k.value.y,
-                                  k.value.z);
+                ImGui::SetTooltip("%s  (%.4g, %.4g, %.4g)", when.c_str(), k.value.x, k.value.y, k.value.z);
         }
     }
     if (ImGui::BeginPopup("##keymenu")) {

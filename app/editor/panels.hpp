@@ -7,7 +7,8 @@
 //   editor_outliner.cpp   drawOutliner, drawSkyPreview
 //   editor_inspector.cpp  drawInspector, editParam, keyAllChangedAt
 //   editor_timeline.cpp   drawTimeline
-//   editor_curves.cpp     drawCurveView, curveColour (the timeline's curve area)
+//   editor_curves.cpp     drawCurveView, curveColour, drawSunKeyRays (the
+//                         timeline's curve area)
 #pragma once
 
 #include "actions.hpp"
@@ -47,6 +48,10 @@ void drawCurveView(Document& doc, EditState& edit, Playback& playback, float lab
 /// The colour (ImU32) a curve is drawn in: by its place among the shown
 /// curves, amber for the inspector's parameter when it is not among them.
 unsigned curveColour(const EditState& edit, const TrackTarget& target);
+/// The mark of a key that follows the sun (TrackKey::anchor): eight short
+/// rays around its point at (x, y) [px] of `radius` [px], in the current
+/// window (the curve view and the timeline's track row draw it).
+void drawSunKeyRays(float x, float y, float radius);
 
 /// Sets a parameter at `timeHours` as the inspector does: with auto-key off
 /// an animated parameter away from its keys gets an unkeyed change

@@ -318,7 +318,7 @@ double moveKey(Track& track, int index, double timeHours) {
         t = std::clamp(t, lo, hi);
     else
         t = track.keys[i].timeHours;
-    track.keys[i].timeHours = t;
+    setKeyTime(track.keys[i], t);  // an anchored key keeps its anchor, its offset moves
     return t;
 }
 
@@ -557,19 +557,26 @@ std::string nameAfterSaveAs(const std::string& currentName, const std::string& o
 }
 
 double snapKeyTime(const Preset& preset, const TrackTarget& track, int index, double timeHours,
-                   double snapHours) {
+                   double snapHours, double stepHours) {
     const double t = wrapHours(timeHours);
     double best = -1.0, bestGap = std::max(snapHours, 0.0);
+    const TrackKey* dragged = nullptr;
     for (const Track& other : preset.tracks) {
         for (std::size_t k = 0; k < other.keys.size(); ++k) {
-            if (other.target == track && int(k) == index) continue;
+            if (other.target == track && int(k) == index) {
+                dragged = &other.keys[k];
+                continue;
+            }
             double gap = std::abs(other.keys[k].timeHours - t);
             gap = std::min(gap, 24.0 - gap);
             if (gap <= bestGap) best = other.keys[k].timeHours, bestGap = gap;
         }
     }
     if (best >= 0.0) return best;
-    return wrapHours(std::round(t * 4.0) / 4.0);  // the quarter hour
+    const double step = std::isfinite(stepHours) && stepHours > 0.0 ? stepHours : kDefaultSnapHours;
+    // The grid: whole steps of the day, or of the offset from the event a key follows.
+    const double origin = dragged && dragged->anchor ? dragged->timeHours - dragged->offsetHours : 0.0;
+    return wrapHours(origin + std::round((t - origin) / step) * step);
 }
 
 bool setObjectId(Preset& preset, ParamScope scope, int index, const std::string& id, std::string& error) {

@@ -90,12 +90,17 @@ bool removeKey(Preset& preset, const TrackTarget& target, int index);
 /// kMinKeyGap away) and into [0, 24 - kMinKeyGap]. Returns the key's time.
 double moveKey(Track& track, int index, double timeHours);
 
+/// The step a dragged key snaps to by default [h]: the quarter hour.
+inline constexpr double kDefaultSnapHours = 0.25;
+
 /// Where a key dragged to `timeHours` lands: on another key of any track
 /// (the dragged key itself excluded: `track`, `index`) within
-/// `snapHours` [h] (the drag's few pixels), else on the nearest quarter
-/// hour. The timeline snaps unless Shift is held.
+/// `snapHours` [h] (the drag's few pixels), else on the nearest multiple
+/// of `stepHours` [h] (the timeline's Snap: 1, 5, 15 or 60 min). A key
+/// that follows the sun snaps its offset from its event instead ("sunset
+/// + 0:15", not 19:15). The timeline snaps unless Shift is held.
 double snapKeyTime(const Preset& preset, const TrackTarget& track, int index, double timeHours,
-                   double snapHours);
+                   double snapHours, double stepHours = kDefaultSnapHours);
 
 /// Every animatable parameter (globals, volumes, emitters, cloud volumes) whose value
 /// shown at `timeHours` differs from `baseline`'s (matched by object id) gets

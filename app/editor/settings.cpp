@@ -98,6 +98,7 @@ void Session::load(const std::string& file) {
     number("exposure_ev", exposureEv, -30.0, 30.0);
     number("resolution_scale", resolutionScale, 0.125, 1.0);
     number("time_h", timeHours, 0.0, 23.999);
+    number("snap_min", snapMinutes, 1.0, 60.0);
     if (json.contains("curves") && json["curves"].is_array()) {
         curves.clear();
         for (const nlohmann::json& c : json["curves"])
@@ -136,6 +137,7 @@ bool Session::save(const std::string& file) const {
                            {"resolution_scale", resolutionScale},
                            {"time_h", timeHours},
                            {"curves", curves},
+                           {"snap_min", snapMinutes},
                            {"layout",
                             {{"outliner", showOutliner},
                              {"inspector", showInspector},

@@ -50,6 +50,8 @@ struct Session {
     bool helpSeen = false;
     /// The curves shown in the timeline's curve view (curve_view.hpp's curveKey).
     std::vector<std::string> curves;
+    /// The step dragged keys snap to [min] (the curve view's Snap: 1, 5, 15, 60).
+    double snapMinutes = 15.0;
 
     /// Reads `file`; missing or malformed fields keep their values.
     void load(const std::string& file);

@@ -106,6 +106,7 @@ struct CompiledPreset::Impl {
     OpticalDepthTable table;
 
     explicit Impl(Preset p) : preset(std::move(p)) {
+        resolveKeyAnchors(preset);  // keys that follow the sun, at this location and date
         issues = validatePreset(preset);
         for (std::size_t i = 0; i < preset.tracks.size(); ++i) {
             const Track& track = preset.tracks[i];

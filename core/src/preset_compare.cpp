@@ -56,11 +56,13 @@ bool presetsIdentical(const Preset& constA, const Preset& constB) {
             s.keys.size() != t.keys.size())
             return false;
         for (std::size_t k = 0; k < s.keys.size(); ++k) {
-            const double u[4] = {s.keys[k].timeHours, s.keys[k].value.x, s.keys[k].value.y,
-                                 s.keys[k].value.z};
-            const double v[4] = {t.keys[k].timeHours, t.keys[k].value.x, t.keys[k].value.y,
-                                 t.keys[k].value.z};
-            if (std::memcmp(u, v, sizeof u) != 0 || s.keys[k].flat != t.keys[k].flat) return false;
+            const double u[5] = {s.keys[k].timeHours, s.keys[k].value.x, s.keys[k].value.y,
+                                 s.keys[k].value.z, s.keys[k].offsetHours};
+            const double v[5] = {t.keys[k].timeHours, t.keys[k].value.x, t.keys[k].value.y,
+                                 t.keys[k].value.z, t.keys[k].offsetHours};
+            if (std::memcmp(u, v, sizeof u) != 0 || s.keys[k].flat != t.keys[k].flat ||
+                s.keys[k].anchor != t.keys[k].anchor)
+                return false;
         }
     }
     return true;

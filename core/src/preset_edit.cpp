@@ -64,6 +64,25 @@ bool changeObjectId(Preset& preset, ParamScope scope, const std::string& oldId, 
     return false;
 }
 
+std::size_t resolveKeyAnchors(Preset& preset) {
+    std::size_t changed = 0;
+    const Location& where = preset.environment.location;
+    for (Track& track : preset.tracks) {
+        bool anchored = false;
+        for (TrackKey& key : track.keys) {
+            if (!key.anchor) continue;
+            anchored = true;
+            const double t = anchoredKeyHours(key, where);
+            if (t != key.timeHours) ++changed;
+            key.timeHours = t;
+        }
+        if (anchored)
+            std::stable_sort(track.keys.begin(), track.keys.end(),
+                             [](const TrackKey& a, const TrackKey& b) { return a.timeHours < b.timeHours; });
+    }
+    return changed;
+}
+
 bool removeObject(Preset& preset, ParamScope scope, const std::string& id) {
     switch (scope) {
         case ParamScope::Volume:

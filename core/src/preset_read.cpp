@@ -10,6 +10,7 @@
 #include "preset_validate.hpp"
 
 #include <aerial/atmosphere.hpp>
+#include <aerial/clock.hpp>
 #include <aerial/evaluate.hpp>
 #include <aerial/exposure.hpp>
 #include <aerial/limits.hpp>
@@ -480,10 +481,33 @@ public:
                 if (expectKind(c, at, JNode::Object)) {
                     const std::int32_t time = member(c, "time_h");
                     const std::int32_t value = member(c, "value");
-                    if (time < 0)
-                        error(c, pointerJoin(at, "time_h"), "missing required field \"time_h\"");
-                    else
+                    const std::int32_t anchor = member(c, "anchor");
+                    const std::int32_t offset = member(c, "offset_h");
+                    if (time >= 0 && anchor >= 0)
+                        error(anchor, pointerJoin(at, "anchor"),
+                              "a key has either \"time_h\" (a fixed time) or \"anchor\" (a sun event), not both");
+                    else if (time >= 0)
                         readNumber(time, pointerJoin(at, "time_h"), key.timeHours);
+                    else if (anchor < 0)
+                        error(c, pointerJoin(at, "time_h"),
+                              "missing required field \"time_h\" (or \"anchor\", a sun event)");
+                    if (anchor >= 0 && expectKind(anchor, pointerJoin(at, "anchor"), JNode::String)) {
+                        SunEvent event{};
+                        if (parseSunEvent(nodes_[std::size_t(anchor)].text, event))
+                            key.anchor = event;
+                        else
+                            error(anchor, pointerJoin(at, "anchor"),
+                                  "unknown sun event " + quoteString(nodes_[std::size_t(anchor)].text) +
+                                      "; expected one of sunrise, noon, sunset, civil_dawn, civil_dusk, "
+                                      "nautical_dawn, nautical_dusk");
+                    }
+                    if (offset >= 0) {
+                        if (anchor < 0)
+                            error(offset, pointerJoin(at, "offset_h"),
+                                  "\"offset_h\" is the offset from a sun event; this key has no \"anchor\"");
+                        else
+                            readNumber(offset, pointerJoin(at, "offset_h"), key.offsetHours);
+                    }
                     if (value < 0) {
                         error(c, pointerJoin(at, "value"), "missing required field \"value\"");
                     } else if (p && p->type == ParamType::Scalar) {
@@ -506,7 +530,8 @@ public:
                     for (std::int32_t m = nodes_[std::size_t(c)].firstChild; m >= 0;
                          m = nodes_[std::size_t(m)].nextSibling) {
                         const std::string& name = nodes_[std::size_t(m)].key;
-                        if (name != "time_h" && name != "value" && name != "flat")
+                        if (name != "time_h" && name != "value" && name != "flat" && name != "anchor" &&
+                            name != "offset_h")
                             warnUnknown(m, pointerJoin(at, name));
                     }
                 }
@@ -608,6 +633,30 @@ public:
 
     // Adds validation issues, located in the file, unless the reader already
     // reported a problem at (or above) the same field.
+    /// Two keys of a track less than a minute apart (the wrap from the last
+    /// key to the first included): valid, but almost always one edit that
+    /// wrote a second key beside the one it meant to change.
+    void warnCloseKeys(const Preset& preset) {
+        constexpr double kMinute = 1.0 / 60.0;
+        for (std::size_t i = 0; i < preset.tracks.size(); ++i) {
+            const Track& track = preset.tracks[i];
+            const std::size_t n = track.keys.size();
+            for (std::size_t k = 0; k < n && n > 1; ++k) {
+                if (k == 0 && !track.wrap) continue;
+                const TrackKey& before = track.keys[k == 0 ? n - 1 : k - 1];
+                const TrackKey& key = track.keys[k];
+                const double gap = key.timeHours - before.timeHours + (k == 0 ? 24.0 : 0.0);
+                if (!(gap < kMinute - 1e-9)) continue;  // a minute to the microsecond is enough
+                const std::string at =
+                    pointerJoin(pointerJoin(pointerJoin("/tracks", i), "keys"), k) + (key.anchor ? "/anchor" : "/time_h");
+                issue(PresetIssue::Severity::Warning, nodeAt(at), false, at,
+                      "keys at " + formatClock(before.timeHours) + " and " + formatClock(key.timeHours) + " are " +
+                          formatDouble(std::round(gap * 3600.0)) +
+                          " s apart (under a minute): one key meant, two written? Remove one or move it");
+            }
+        }
+    }
+
     void addValidation(std::vector<PresetIssue> issues) {
         for (PresetIssue& i : issues) {
             const bool covered = std::any_of(errors.begin(), errors.end(), [&](const PresetIssue& e) {
@@ -660,7 +709,13 @@ void detail::readPresetTree(sv text, const std::string& file, const std::vector<
     reader.readPreset(preset);
     const bool versionRefused = !reader.errors.empty() && reader.errors.front().pointer == "/version";
     if (!versionRefused && nodes[0].kind == JNode::Object) {
+        // Anchored keys take their times from the location before the
+        // checks, in the file's order (so issues point at the file's keys);
+        // a valid file's keys are then already in order.
+        for (Track& track : preset.tracks)
+            for (TrackKey& key : track.keys) key.timeHours = anchoredKeyHours(key, preset.environment.location);
         reader.addValidation(validatePreset(preset));
+        if (reader.errors.empty()) reader.warnCloseKeys(preset);
         if (reader.errors.empty()) {
             // Mesh volumes: their files, relative to the preset's folder.
             const std::filesystem::path folder = std::filesystem::path(file).parent_path();

@@ -208,8 +208,23 @@ std::string presetJsonSchema() {
                            {"default", false},
                            {"description",
                             "smooth tracks: the curve is level at this key (tangent 0) instead of "
-                            "following its neighbours"}}}};
-    key["required"] = {"time_h", "value"};
+                            "following its neighbours"}}},
+                         {"anchor",
+                          {{"enum", ojson::array()},
+                           {"description",
+                            "a key that follows the sun: its time is this event's at the preset's location "
+                            "and date plus offset_h (sunrise and sunset at -0.833 deg, civil -6, nautical -12)"}}},
+                         {"offset_h",
+                          {{"type", "number"},
+                           {"minimum", -12},
+                           {"maximum", 12},
+                           {"default", 0},
+                           {"description", "the anchored key's offset from its event [h]; negative is before it"}}}};
+    for (SunEvent event : kSunEvents) key["properties"]["anchor"]["enum"].push_back(sunEventName(event));
+    key["required"] = {"value"};
+    // A fixed time or a sun event, never both (offset_h only with an anchor).
+    key["oneOf"] = {{{"required", {"time_h"}}, {"not", {{"anyOf", {{{"required", {"anchor"}}}, {{"required", {"offset_h"}}}}}}}},
+                    {{"required", {"anchor"}}, {"not", {{"required", {"time_h"}}}}}};
     key["additionalProperties"] = false;
     defs["key"] = key;
     auto trackVariant = [&](const char* objectKey, ParamScope scope) {

@@ -7,6 +7,7 @@
 
 #include "json_text.hpp"
 
+#include <aerial/clock.hpp>
 #include <aerial/limits.hpp>
 #include <aerial/preset.hpp>
 #include <aerial/sun.hpp>
@@ -40,6 +41,17 @@ std::string detail::rangeText(const ParamDesc& p) {
 }
 
 namespace {
+
+/// A key's time in an issue: "19.5", or "19.8333 (sunset + 00:20)" for an
+/// anchored key.
+std::string describeKeyTime(const TrackKey& key) {
+    std::string text = formatDouble(key.timeHours);
+    if (key.anchor) {
+        text += std::string(" (") + sunEventName(*key.anchor) + (key.offsetHours < 0.0 ? " - " : " + ") +
+                formatClock(std::abs(key.offsetHours)) + ")";
+    }
+    return text;
+}
 
 struct Issues {
     std::vector<PresetIssue> list;
@@ -270,13 +282,18 @@ void validateInto(const Preset& constPreset, Issues& issues) {
             const TrackKey& key = track.keys[k];
             const std::string keyAt = pointerJoin(keysAt, k);
             const double t = key.timeHours;
-            if (!std::isfinite(t) || t < 0.0 || t >= 24.0) {
-                issues.error(pointerJoin(keyAt, "time_h"),
-                             "a key's time must be in [0, 24) h (got " + formatDouble(t) + ")");
+            // An anchored key's time comes from its event: its issues name
+            // the anchor (the file has no time_h there).
+            const std::string timeAt = pointerJoin(keyAt, key.anchor ? "anchor" : "time_h");
+            if (key.anchor && (!std::isfinite(key.offsetHours) || std::abs(key.offsetHours) > 12.0)) {
+                issues.error(pointerJoin(keyAt, "offset_h"),
+                             "an offset from a sun event must be in [-12, 12] h (got " +
+                                 formatDouble(key.offsetHours) + ")");
+            } else if (!std::isfinite(t) || t < 0.0 || t >= 24.0) {
+                issues.error(timeAt, "a key's time must be in [0, 24) h (got " + formatDouble(t) + ")");
             } else if (k > 0 && !(t > track.keys[k - 1].timeHours)) {
-                issues.error(pointerJoin(keyAt, "time_h"),
-                             "key times must increase strictly (" + formatDouble(t) + " after " +
-                                 formatDouble(track.keys[k - 1].timeHours) + ")");
+                issues.error(timeAt, "key times must increase strictly (" + describeKeyTime(key) + " after " +
+                                         describeKeyTime(track.keys[k - 1]) + ")");
             }
             if (!p || !p->animatable) continue;
             const std::string valueAt = pointerJoin(keyAt, "value");

@@ -211,7 +211,11 @@ public:
             for (std::size_t k = 0; k < t.keys.size(); ++k) {
                 if (k) out += ',';
                 newline(4);
-                out += "{\"time_h\": " + formatDouble(t.keys[k].timeHours) + ", \"value\": ";
+                if (t.keys[k].anchor)  // the event and the offset; the time follows from them
+                    out += std::string("{\"anchor\": ") + quoteString(sunEventName(*t.keys[k].anchor)) +
+                           ", \"offset_h\": " + formatDouble(t.keys[k].offsetHours) + ", \"value\": ";
+                else
+                    out += "{\"time_h\": " + formatDouble(t.keys[k].timeHours) + ", \"value\": ";
                 if (valueCount == 1) {
                     out += formatDouble(t.keys[k].value.x);
                 } else {

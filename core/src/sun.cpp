@@ -263,4 +263,81 @@ double solarNoonHours(const Location& where) {
     return wrap(ut + std::clamp(finiteOr(where.utcOffsetHours, 0.0), -12.0, 14.0), 24.0);
 }
 
+
+namespace {
+
+struct SunEventInfo {
+    SunEvent event;
+    const char* name;
+    double elevationDeg;
+    bool rising;
+};
+
+constexpr SunEventInfo kSunEventInfo[] = {
+    {SunEvent::Sunrise, "sunrise", -0.833, true},
+    {SunEvent::Noon, "noon", 0.0, false},
+    {SunEvent::Sunset, "sunset", -0.833, false},
+    {SunEvent::CivilDawn, "civil_dawn", -6.0, true},
+    {SunEvent::CivilDusk, "civil_dusk", -6.0, false},
+    {SunEvent::NauticalDawn, "nautical_dawn", -12.0, true},
+    {SunEvent::NauticalDusk, "nautical_dusk", -12.0, false},
+};
+
+const SunEventInfo& infoOf(SunEvent event) {
+    for (const SunEventInfo& info : kSunEventInfo)
+        if (info.event == event) return info;
+    return kSunEventInfo[0];
+}
+
+/// The first upward (rising) or last downward crossing of `elevation` [rad]
+/// in [0, 24) h, or NaN. The day is scanned as a cycle: the step from just
+/// before 24 h to 0 h counts too (a dusk on the stroke of midnight).
+double crossingHours(const Location& where, double elevation, bool rising) {
+    constexpr int kSteps = 96;
+    auto above = [&](double t) { return sunPosition(where, t).elevation > elevation; };
+    double crossing = std::numeric_limits<double>::quiet_NaN();
+    bool previous = above(0.0);
+    for (int i = 1; i <= kSteps; ++i) {
+        const double t1 = 24.0 * i / kSteps;
+        const bool current = above(i == kSteps ? 0.0 : t1);
+        if (previous != current && current == rising) {
+            double lo = 24.0 * (i - 1) / kSteps, hi = t1;
+            for (int k = 0; k < 48; ++k) {
+                const double mid = 0.5 * (lo + hi);
+                (above(mid) == rising ? hi : lo) = mid;
+            }
+            crossing = wrap(0.5 * (lo + hi), 24.0);
+            if (rising) break;  // the first rise; the scan goes on for the last set
+        }
+        previous = current;
+    }
+    return crossing;
+}
+
+}  // namespace
+
+const char* sunEventName(SunEvent event) { return infoOf(event).name; }
+
+bool parseSunEvent(std::string_view name, SunEvent& event) {
+    for (const SunEventInfo& info : kSunEventInfo) {
+        if (name == info.name) {
+            event = info.event;
+            return true;
+        }
+    }
+    return false;
+}
+
+double sunEventHours(const Location& where, SunEvent event) {
+    const double noon = solarNoonHours(where);
+    if (event == SunEvent::Noon) return wrap(noon, 24.0);
+    const SunEventInfo& info = infoOf(event);
+    const double elevation = info.elevationDeg * kDegToRad;
+    const double t = crossingHours(where, elevation, info.rising);
+    if (std::isfinite(t)) return t;
+    // No crossing: where the sun comes closest to the elevation.
+    const bool staysAbove = sunPosition(where, noon + 12.0).elevation > elevation;
+    return wrap(staysAbove ? noon + 12.0 : noon, 24.0);
+}
+
 }  // namespace aerial

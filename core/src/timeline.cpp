@@ -155,6 +155,28 @@ void setKey(Track& track, double timeHours, const glm::dvec3& value) {
         track.keys.insert(it, TrackKey{t, value, false});
 }
 
+namespace {
+
+/// An offset wrapped into [-12, 12) h.
+double wrapOffset(double hours) { return wrapHours(hours + 12.0) - 12.0; }
+
+}  // namespace
+
+double anchoredKeyHours(const TrackKey& key, const Location& where) {
+    if (!key.anchor) return key.timeHours;
+    return wrapHours(sunEventHours(where, *key.anchor) + key.offsetHours);
+}
+
+void setKeyTime(TrackKey& key, double timeHours) {
+    if (key.anchor) key.offsetHours = wrapOffset(key.offsetHours + (timeHours - key.timeHours));
+    key.timeHours = timeHours;
+}
+
+void anchorKey(TrackKey& key, std::optional<SunEvent> event, const Location& where) {
+    key.anchor = event;
+    key.offsetHours = event ? wrapOffset(key.timeHours - sunEventHours(where, *event)) : 0.0;
+}
+
 glm::dvec3 evaluateTrack(const Track& track, double timeHours, int components) {
     return evaluateTrack(compileTrack(track, components), timeHours);
 }

@@ -331,6 +331,38 @@ class Eval(unittest.TestCase):
             for key in ("direction", "illuminance_space_rgb", "transmittance_rgb", "illuminance_rgb"):
                 self.assertEqual(len(state[light][key]), 3)
 
+    def test_anchored_keys_follow_the_sun_to_a_new_date(self):
+        # hazy_sunset's exposure keys follow the sun: each lies at its event
+        # plus its offset as `sun_events` reports them, the keyed value holds
+        # there, and the same file ten weeks later (day 295: the sunset ~1 h
+        # earlier at 38 N) moves every one with its event. Against the
+        # undated model's closed form for the sunset at -0.833 deg.
+        with open(preset("hazy_sunset")) as f:
+            document = json.load(f)
+        def check(path, day):
+            out = run_json(self, "eval", path, "--time", "12:00", "--no-light")
+            lat, dec = math.radians(38.0), math.radians(-23.44 * math.cos(math.radians(360.0 / 365.0 * (day + 10))))
+            cos_h = (math.sin(math.radians(-0.833)) - math.sin(lat) * math.sin(dec)) / (math.cos(lat) * math.cos(dec))
+            self.assertAlmostEqual(out["sun_events"]["sunset"]["time_h"], 12.0 + math.degrees(math.acos(cos_h)) / 15.0,
+                                   delta=1e-5)
+            keys = out["anchored_keys"]
+            self.assertEqual([k["anchor"] for k in keys], ["nautical_dawn", "sunrise", "sunset", "civil_dusk"])
+            values = [k["value"] for k in document["tracks"][0]["keys"]]
+            for key, value in zip(keys, values):
+                event = out["sun_events"][key["anchor"]]["time_h"]
+                self.assertAlmostEqual(key["time_h"], (event + key["offset_h"]) % 24.0, delta=1e-9)
+                at = run_json(self, "eval", path, "--time", f"{key['time_h']:.9f}", "--no-light")
+                self.assertAlmostEqual(at["parameters"]["exposure"]["compensation_ev"], value, delta=1e-6)
+            return keys
+        self.assertEqual(document["tracks"][0]["param"], "exposure.compensation_ev")
+        august = check(preset("hazy_sunset"), 225)
+        document["location"]["day_of_year"] = 295
+        path = os.path.join(WORK, "hazy_sunset_october.json")
+        with open(path, "w") as f:
+            json.dump(document, f)
+        october = check(path, 295)
+        self.assertGreater(august[2]["time_h"] - october[2]["time_h"], 0.9)
+
     def test_time_forms_agree(self):
         a = run_json(self, "eval", preset("hazy_sunset"), "--time", "18:30")
         b = run_json(self, "eval", preset("hazy_sunset"), "--time", "18.5h")

@@ -15,7 +15,9 @@ Over a grid and a seeded random sample of dates (1900..2100), latitudes
     0.02, bright limb angle (from the zenith through east) within 0.5 deg of
     Meeus 48.5 evaluated on PyEphem's places;
   * solar time: a dated preset in solar mode has its sun on the meridian at
-    12:00 (checked at the instant `julian_day_ut` reports).
+    12:00 (checked at the instant `julian_day_ut` reports);
+  * sun events (`sun_events`: sunrise, sunset, civil and nautical dawn and
+    dusk, noon) within 0.5 min of PyEphem's risings, settings and transits.
 Prints the worst error of each kind. Run:
   python3 tests/cli/ephemeris_test.py --aerial build/release/app/cli/aerial --work-dir /tmp/eph
 """
@@ -38,6 +40,8 @@ SUN_APPARENT_DEG = 0.02
 MOON_DEG = 0.5
 MOON_FRACTION = 0.02
 LIMB_DEG = 0.5
+# NOAA's ~0.01 deg is ~0.05 min of a sun moving 0.2 deg per minute.
+EVENT_MIN = 0.5
 
 
 def unit(az, el):
@@ -175,6 +179,34 @@ def main():
         check("solar-mode sun direction [deg]",
               separation_deg(math.radians(out["sun"]["azimuth_deg"]), math.radians(out["sun"]["elevation_deg"]),
                              sun.az, sun.alt), SUN_DEG, case)
+
+    # Sun events (the anchors of keys that follow the sun): sunrise and
+    # sunset with the centre at -0.833 deg, civil -6, nautical -12, noon the
+    # transit -- PyEphem's rising, setting and transit with use_center and no
+    # refraction (pressure 0), from the local midnight, in clock time. Places
+    # where every event happens within the local day.
+    for date, lat, lon, offset in (("2026-06-21", 47.37, 8.54, 2), ("2026-12-21", 47.37, 8.54, 1),
+                                   ("2025-03-20", -33.87, 151.21, 11), ("2024-09-01", 40.71, -74.01, -4),
+                                   ("2030-01-15", 0.0, -78.5, -5), ("1950-07-04", 35.0, 139.7, 9),
+                                   ("2026-10-10", -54.8, -68.3, -3), ("2100-05-05", 19.4, -99.1, -6)):
+        location = {"latitude_deg": lat, "longitude_deg": lon, "utc_offset_h": offset, "date": date,
+                    "time_mode": "clock"}
+        events = evaluate(args.aerial, path, location, "12:00")["sun_events"]
+        y, m, d = (int(x) for x in date.split("-"))
+        midnight = ephem.Date(datetime.datetime(y, m, d) - datetime.timedelta(hours=offset))
+        for name, horizon, rising in (("sunrise", "-0:49.98", True), ("sunset", "-0:49.98", False),
+                                      ("civil_dawn", "-6", True), ("civil_dusk", "-6", False),
+                                      ("nautical_dawn", "-12", True), ("nautical_dusk", "-12", False),
+                                      ("noon", None, None)):
+            o = observer(lat, lon, midnight, 0.0)
+            if horizon is None:
+                when = o.next_transit(ephem.Sun())
+            else:
+                o.horizon = horizon
+                when = (o.next_rising if rising else o.next_setting)(ephem.Sun(), use_center=True)
+            hours = (float(when) - float(midnight)) * 24.0
+            case = f"{date} {name} UTC{offset:+g} lat {lat} lon {lon}: PyEphem {hours:.4f} h"
+            check("sun event time [min]", abs(events[name]["time_h"] - hours) * 60.0, EVENT_MIN, case)
 
     print(f"ephemeris_test: {len(cases)} clock-mode cases, PyEphem {ephem.__version__}; worst errors:")
     for kind, (error, case) in worst.worst.items():

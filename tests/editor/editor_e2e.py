@@ -6,7 +6,7 @@ file code paths. Python standard library only.
     editor_e2e.py --editor PATH --source-dir DIR --work-dir DIR CASE
 
 CASE: workflow | undo_redo | crash_recovery | screenshot | exposure | errors | prompts | session |
-      cloud_volume | autokey | placement | curves | curves_mouse
+      cloud_volume | autokey | placement | curves | curves_mouse | sun_anchor
 
 Every case FAILS (never skips) when the editor cannot start under Xvfb.
 """
@@ -973,6 +973,124 @@ quit
     print("OK: curves_mouse")
 
 
+def printed_blocks(stdout, command):
+    """The lines each run of a printing script command wrote: one list per run, in order."""
+    blocks, current = [], None
+    for line in stdout.splitlines():
+        if re.match(r"script:\d+: ", line):
+            current = [] if line.split(": ", 1)[1] == command else None
+            if current is not None:
+                blocks.append(current)
+        elif current is not None:
+            current.append(line)
+    return blocks
+
+
+def sun_events(lines):
+    """print_sun's lines as {event: hours}."""
+    return {w[1]: float(w[2]) for w in (line.split() for line in lines) if len(w) == 3 and w[0] == "sun"}
+
+
+def printed_keys(lines):
+    """print_keys' lines as [(hours, text)]."""
+    return [(float(w[2]), w[3]) for w in (line.split(" ", 3) for line in lines) if len(w) == 4 and w[0] == "key"]
+
+
+def case_sun_anchor(env):
+    """Keys that follow the sun: a shipped preset's fog key at 19:30 is anchored to
+    sunset where it stands (the curve does not move), shifted by a typed +0:20
+    (one undo step each), saved as {"anchor": "sunset", "offset_h": ...} with no
+    time_h; a new date moves it with the sunset; a snapped drag of it lands on a
+    whole 5 minutes after the sunset."""
+    preset = os.path.join(env.source, "presets", "hazy_sunset.json")
+    shifted, dated, snapped = env.path("anchor_shifted.json"), env.path("anchor_dated.json"), env.path(
+        "anchor_snapped.json")
+    shot = env.path("anchor_window.png")
+    p = env.run(env.script("sun_anchor.txt", """
+open {preset}
+print_sun
+curve fog.density_per_m on
+curve_select fog.density_per_m 19:30
+curve_anchor sunset
+expect_undo 1
+print_keys fog.density_per_m
+curve_shift +0:20
+expect_undo 2
+print_keys fog.density_per_m
+undo
+print_keys fog.density_per_m
+redo
+wait_frames 2
+window_screenshot {shot}
+save {shifted}
+set location.date 2026-12-21
+print_sun
+print_keys fog.density_per_m
+save {dated}
+curve_snap 5
+curve_move 0.1 0
+save {snapped}
+quit
+""".format(preset=preset, shifted=shifted, dated=dated, snapped=snapped, shot=shot)), window="1280x720")
+    out = p.stdout
+    suns = [sun_events(b) for b in printed_blocks(out, "print_sun")]
+    keys = [printed_keys(b) for b in printed_blocks(out, "print_keys")]
+    check(len(suns) == 2 and "sunset" in suns[0] and "sunset" in suns[1], "print_sun printed no sunset:\n" + out)
+    check(len(keys) == 4, "print_keys ran %d times, not 4" % len(keys))
+    sunset, winter_sunset = suns[0]["sunset"], suns[1]["sunset"]
+    check(18.5 < sunset < 19.5, "the preset's sunset at %s h is not a mid-August one at 38 N" % sunset)
+    check("curve_anchor: Anchor key to sunset (1 changed)" in out, "the key was not anchored:\n" + out)
+    check("curve_shift: Shift key by 0.333333 h" in out, "the key was not shifted by 0:20:\n" + out)
+
+    original = track(load_json(preset), "fog.density_per_m")["keys"]
+    index = [i for i, k in enumerate(original) if abs(k.get("time_h", -1) - 19.5) < 1e-9]
+    check(len(index) == 1, "the shipped preset has no fog key at 19:30: %s" % original)
+    index = index[0]
+    # Anchored where it stands: still 19:30, read as "sunset + H:MM (19:30)"; the other keys as they were.
+    anchored, moved, undone = keys[0], keys[1], keys[2]
+    check(abs(anchored[index][0] - 19.5) < 1e-9 and re.fullmatch(r"sunset \+ 0:\d\d(:\d\d)? \(19:30\)",
+                                                                  anchored[index][1]) is not None,
+          "the anchored key reads %s" % (anchored[index],))
+    check([t for i, (t, _) in enumerate(anchored) if i != index] ==
+          [k["time_h"] for i, k in enumerate(original) if i != index], "other keys moved: %s" % anchored)
+    check(abs(moved[index][0] - (19.5 + 1.0 / 3.0)) < 1e-9 and moved[index][1].endswith("(19:50)"),
+          "the shifted key reads %s" % (moved[index],))
+    check(undone == anchored, "undo did not take back the shift alone: %s" % undone)
+
+    # The file: anchor and offset in place of time_h, the offset from the sunset plus 0:20.
+    key = track(load_json(shifted), "fog.density_per_m")["keys"][index]
+    check(key.get("anchor") == "sunset" and "time_h" not in key, "saved as %s" % key)
+    offset = 19.5 + 1.0 / 3.0 - sunset
+    check(abs(key["offset_h"] - offset) < 1e-6, "offset_h %s, want %s" % (key["offset_h"], offset))
+    check(key_value(key) == key_value(original[index]), "the value changed: %s" % key)
+    fixed = [k for k in track(load_json(shifted), "fog.density_per_m")["keys"] if "anchor" not in k]
+    check([k["time_h"] for k in fixed] == [k["time_h"] for i, k in enumerate(original) if i != index],
+          "the other keys changed: %s" % fixed)
+
+    # A winter date: the sunset is hours earlier and the key goes with it, its offset kept.
+    check(winter_sunset < sunset - 1.5, "the December sunset %s is not earlier than %s" % (winter_sunset, sunset))
+    winter = keys[3]
+    anchored_now = [t for t, text in winter if text.startswith("sunset ")]
+    check(len(anchored_now) == 1 and abs(anchored_now[0] - (winter_sunset + key["offset_h"])) < 1e-6,
+          "the key did not follow the sunset to %s: %s" % (winter_sunset + key["offset_h"], winter))
+    saved = load_json(dated)
+    check(saved["location"]["date"] == "2026-12-21", "the date was not saved: %s" % saved["location"])
+    winter_keys = [k for k in track(saved, "fog.density_per_m")["keys"] if "anchor" in k]
+    check(len(winter_keys) == 1 and winter_keys[0]["anchor"] == "sunset" and "time_h" not in winter_keys[0]
+          and abs(winter_keys[0]["offset_h"] - key["offset_h"]) < 1e-12,
+          "the dated file's key: %s" % winter_keys)
+
+    # Snap 5 min: a drag of the anchored key lands on a whole 5 minutes after the sunset.
+    snapped_keys = [k for k in track(load_json(snapped), "fog.density_per_m")["keys"] if "anchor" in k]
+    check(len(snapped_keys) == 1, "the anchored key was lost: %s" % snapped_keys)
+    steps = snapped_keys[0]["offset_h"] * 12.0
+    check(abs(steps - round(steps)) < 1e-9 and snapped_keys[0]["offset_h"] != key["offset_h"],
+          "the dragged key's offset %s h is not a whole 5 minutes" % snapped_keys[0]["offset_h"])
+    width, height, _, _ = read_png(shot)
+    check(width == 1280 and height == 720, "window screenshot %dx%d" % (width, height))
+    print("OK: sun_anchor")
+
+
 def case_placement(env):
     """A new volume rests on the scene's surface under the viewport's centre;
     Drop to ground puts a volume's bottom on the surface under it, from above
@@ -1138,6 +1256,7 @@ CASES = {
     "mesh_volume": case_mesh_volume,
     "curves": case_curves,
     "curves_mouse": case_curves_mouse,
+    "sun_anchor": case_sun_anchor,
 }
 
 

@@ -1,11 +1,15 @@
 // test_curve_view.cpp — the timeline's curve view without a window: zoom
 // and pan of the time span, ruler ticks, normalisation of curves to their
 // keys' range, hit-testing and box selection of key points, moving many
-// keys in time and value at once, flat tangents and the undo step's name.
+// keys in time and value at once, flat tangents and the undo step's name;
+// typed shifts (limited as a drag) and keys that follow the sun (anchored
+// where they stand, read as "sunset + 0:20 (19:52)").
 #include "curve_view.hpp"
 #include "document.hpp"
 
+#include <aerial/clock.hpp>
 #include <aerial/param_table.hpp>
+#include <aerial/sun.hpp>
 
 #include <gtest/gtest.h>
 
@@ -234,6 +238,152 @@ TEST(CurveView, ADragThroughTheDocumentIsOneUndoStep) {
     ASSERT_TRUE(doc.undo());
     EXPECT_EQ(doc.preset().tracks[0].keys[0].timeHours, 6.0);
     EXPECT_EQ(doc.preset().tracks[0].keys[1].value.x, 0.02);
+}
+
+TEST(CurveView, TypedShiftsAndOffsetsReadAsWritten) {
+    double h = 99.0;
+    EXPECT_TRUE(parseShiftHours("+0:20", h));
+    EXPECT_DOUBLE_EQ(h, 20.0 / 60.0);
+    EXPECT_TRUE(parseShiftHours("-1:00", h));
+    EXPECT_DOUBLE_EQ(h, -1.0);
+    EXPECT_TRUE(parseShiftHours("0:05", h));
+    EXPECT_DOUBLE_EQ(h, 5.0 / 60.0);
+    EXPECT_TRUE(parseShiftHours("-0.25", h));
+    EXPECT_DOUBLE_EQ(h, -0.25);
+    EXPECT_TRUE(parseShiftHours(" + 1.5h", h));
+    EXPECT_DOUBLE_EQ(h, 1.5);
+    h = 99.0;
+    for (const char* bad : {"", "+", "--0:20", "+-1", "0:60", "abc", "-24", "1:2"})
+        EXPECT_FALSE(parseShiftHours(bad, h)) << bad;
+    EXPECT_EQ(h, 99.0);  // untouched on failure
+
+    EXPECT_EQ(formatOffset(20.0 / 60.0), "+ 0:20");
+    EXPECT_EQ(formatOffset(-(1.0 + 5.0 / 60.0)), "- 1:05");
+    EXPECT_EQ(formatOffset(0.0), "+ 0:00");
+    EXPECT_EQ(formatOffset(-1e-9), "+ 0:00");  // no "- 0:00"
+    EXPECT_EQ(formatOffset(20.5 / 60.0), "+ 0:20:30");
+    EXPECT_EQ(formatOffset(0.333), "+ 0:19:59");  // 1198.8 s, to the second
+
+    EXPECT_EQ(sunEventLabel(SunEvent::CivilDusk), "civil dusk");
+    TrackKey key{19.0 + 52.0 / 60.0, glm::dvec3(0.0)};
+    EXPECT_EQ(keyTimeText(key), "19:52");
+    key.anchor = SunEvent::Sunset;
+    key.offsetHours = 20.0 / 60.0;
+    EXPECT_EQ(keyTimeText(key), "sunset + 0:20 (19:52)");
+    key.anchor = SunEvent::NauticalDawn;
+    key.offsetHours = -(1.0 + 5.0 / 60.0);
+    EXPECT_EQ(keyTimeText(key), "nautical dawn - 1:05 (19:52)");
+}
+
+TEST(CurveView, AnchoringASelectionKeepsEveryKeysTimeAndValue) {
+    Preset start = twoTracks();
+    start.environment.location.latitudeDeg = 38.0;
+    start.environment.location.dayOfYear = 225.0;
+    Document doc;
+    doc.reset(start);
+    const TrackTarget fog = start.tracks[0].target, haze = start.tracks[1].target;
+    // Both fog keys and the haze key at 18:00; its second component too (one key, counted once).
+    const std::vector<CurvePoint> picked = {{fog, 1, 0}, {fog, 2, 0}, {haze, 1, 0}, {haze, 1, 2}};
+    EXPECT_EQ(anchorLabel(picked, SunEvent::Sunset), "Anchor 3 keys to sunset");
+    EXPECT_EQ(anchorLabel({picked[0]}, SunEvent::CivilDusk), "Anchor key to civil dusk");
+    EXPECT_EQ(anchorLabel(picked, std::nullopt), "Fix 3 key times");
+    EXPECT_FALSE(allAnchoredTo(doc.preset(), picked, SunEvent::Sunset));
+    EXPECT_TRUE(allAnchoredTo(doc.preset(), picked, std::nullopt));
+
+    int changed = 0;
+    ASSERT_TRUE(doc.apply(anchorLabel(picked, SunEvent::Sunset), "",
+                          [&](Preset& p) { changed = anchorCurvePoints(p, picked, SunEvent::Sunset); }));
+    EXPECT_EQ(changed, 3);
+    EXPECT_EQ(doc.undoCount(), 1u);
+    EXPECT_EQ(doc.undoLabel(), "Anchor 3 keys to sunset");
+    EXPECT_TRUE(allAnchoredTo(doc.preset(), picked, SunEvent::Sunset));
+    // Every key where it was with the value it had (the document re-timed the anchored keys
+    // from the location afterwards: resolveKeyAnchors); the offsets from today's sunset.
+    const double sunset = sunEventHours(doc.preset().environment.location, SunEvent::Sunset);
+    ASSERT_GT(sunset, 18.0);
+    ASSERT_LT(sunset, 20.0);
+    for (std::size_t t = 0; t < 2; ++t) {
+        const Track& before = start.tracks[t];
+        const Track& after = doc.preset().tracks[t];
+        ASSERT_EQ(after.keys.size(), before.keys.size());
+        for (std::size_t k = 0; k < before.keys.size(); ++k) {
+            EXPECT_NEAR(after.keys[k].timeHours, before.keys[k].timeHours, 1e-9) << t << " " << k;
+            EXPECT_EQ(after.keys[k].value, before.keys[k].value) << t << " " << k;
+        }
+        // The curve between and around the keys too.
+        const int n = t == 0 ? 1 : 3;
+        for (double hour = 0.0; hour < 24.0; hour += 0.37)
+            for (int c = 0; c < n; ++c)
+                EXPECT_NEAR(evaluateTrack(after, hour, n)[c], evaluateTrack(before, hour, n)[c],
+                            1e-9 * std::abs(evaluateTrack(before, hour, n)[c]) + 1e-15);
+    }
+    const TrackKey& fog8 = doc.preset().tracks[0].keys[1];
+    ASSERT_TRUE(fog8.anchor.has_value());
+    EXPECT_EQ(*fog8.anchor, SunEvent::Sunset);
+    EXPECT_NEAR(fog8.offsetHours, 8.0 - sunset, 1e-9);                // 08:00 is ~11 h before sunset
+    EXPECT_FALSE(doc.preset().tracks[0].keys[0].anchor.has_value());  // not selected
+    EXPECT_NEAR(doc.preset().tracks[1].keys[1].offsetHours, 18.0 - sunset, 1e-9);
+
+    // Anchoring again to the same event changes nothing (no undo step); Fixed time
+    // keeps the times too; undo brings back the fixed keys as they were.
+    EXPECT_FALSE(doc.apply("again", "", [&](Preset& p) { anchorCurvePoints(p, picked, SunEvent::Sunset); }));
+    ASSERT_TRUE(doc.apply(anchorLabel(picked, std::nullopt), "",
+                          [&](Preset& p) { changed = anchorCurvePoints(p, picked, std::nullopt); }));
+    EXPECT_EQ(changed, 3);
+    EXPECT_TRUE(allAnchoredTo(doc.preset(), picked, std::nullopt));
+    EXPECT_NEAR(doc.preset().tracks[0].keys[1].timeHours, 8.0, 1e-9);
+    ASSERT_TRUE(doc.undo());
+    ASSERT_TRUE(doc.undo());
+    EXPECT_TRUE(presetsIdentical(doc.preset(), start));
+}
+
+TEST(CurveView, ATypedShiftIsLimitedAsADragAndKeepsTheAnchor) {
+    Preset start = twoTracks();
+    start.environment.location.latitudeDeg = 38.0;
+    start.environment.location.dayOfYear = 225.0;
+    const TrackTarget fog = start.tracks[0].target, haze = start.tracks[1].target;
+    // The fog key at 08:00 follows sunrise (where it stands).
+    anchorKey(start.tracks[0].keys[1], SunEvent::Sunrise, start.environment.location);
+    const double offset = start.tracks[0].keys[1].offsetHours;
+    const std::vector<CurvePoint> picked = {{fog, 0, 0}, {fog, 1, 0}, {haze, 0, 0}};
+    EXPECT_EQ(shiftLabel(picked), "Shift 3 keys");
+    EXPECT_EQ(shiftLabel({picked[1]}), "Shift key");
+
+    // The same shift as a drag of the same keys by the same time: +5 h stops a minute
+    // before fog's 10:00 (not selected), for every key alike.
+    for (double dt : {0.25, 5.0, -20.0}) {
+        Preset typed = start, dragged = start;
+        const double applied = shiftCurvePoints(typed, picked, dt);
+        const double draggedBy = moveCurvePoints(dragged, dragItemsOf(dragged, picked), dt, 0.0);
+        EXPECT_EQ(applied, draggedBy) << dt;
+        EXPECT_TRUE(presetsIdentical(typed, dragged)) << dt;
+    }
+    Preset p = start;
+    const double limited = shiftCurvePoints(p, picked, 5.0);
+    EXPECT_NEAR(limited, 2.0 - kMinKeyGap, 1e-12);
+    EXPECT_NEAR(p.tracks[0].keys[1].timeHours, 10.0 - kMinKeyGap, 1e-12);
+    EXPECT_NEAR(p.tracks[1].keys[0].timeHours, 12.0 + limited, 1e-12);
+    EXPECT_EQ(p.tracks[0].keys[1].value, start.tracks[0].keys[1].value);  // values stay
+    // The anchored key still follows sunrise, later by the shift.
+    ASSERT_TRUE(p.tracks[0].keys[1].anchor.has_value());
+    EXPECT_EQ(*p.tracks[0].keys[1].anchor, SunEvent::Sunrise);
+    EXPECT_NEAR(p.tracks[0].keys[1].offsetHours, offset + limited, 1e-12);
+    // Before 00:00: the 06:00 key stops at midnight.
+    EXPECT_NEAR(shiftCurvePoints(p, picked, -20.0), -(6.0 + limited), 1e-12);
+
+    // Through the document: one undo step, the key re-timed from its anchor where the shift put it.
+    Document doc;
+    doc.reset(start);
+    ASSERT_TRUE(doc.apply(shiftLabel({picked[1]}), "",
+                          [&](Preset& q) { shiftCurvePoints(q, {picked[1]}, 20.0 / 60.0); }));
+    EXPECT_EQ(doc.undoCount(), 1u);
+    EXPECT_EQ(doc.undoLabel(), "Shift key");
+    const TrackKey& k = doc.preset().tracks[0].keys[1];
+    EXPECT_NEAR(k.timeHours, 8.0 + 20.0 / 60.0, 1e-9);
+    EXPECT_NEAR(k.offsetHours, offset + 20.0 / 60.0, 1e-12);
+    EXPECT_NEAR(anchoredKeyHours(k, doc.preset().environment.location), 8.0 + 20.0 / 60.0, 1e-9);
+    ASSERT_TRUE(doc.undo());
+    EXPECT_TRUE(presetsIdentical(doc.preset(), start));
 }
 
 }  // namespace

@@ -366,7 +366,7 @@ TEST(PresetEdit, SaveAsOffersTheNewFilesNameToAnUnnamedPreset) {
     EXPECT_EQ(nameAfterSaveAs("Lake", "/tmp/old.json", "/tmp/lake.json"), "");  // already it
 }
 
-TEST(PresetEdit, DraggedKeysSnapToOtherKeysElseToTheQuarterHour) {
+TEST(PresetEdit, DraggedKeysSnapToOtherKeysElseToTheSnapStep) {
     Preset p;
     Track fog;
     fog.target = TrackTarget::global("fog.density_per_m");
@@ -382,6 +382,19 @@ TEST(PresetEdit, DraggedKeysSnapToOtherKeysElseToTheQuarterHour) {
     EXPECT_DOUBLE_EQ(snapKeyTime(p, fog.target, 0, 11.97, near), 12.0);  // its own track's other key
     EXPECT_DOUBLE_EQ(snapKeyTime(p, fog.target, 0, 8.02, near), 8.0);    // itself excluded: the grid
     EXPECT_DOUBLE_EQ(snapKeyTime(p, fog.target, 0, 23.9, near), 0.0);    // the quarter hour wraps
+    // The Snap step: 5 min and the hour.
+    EXPECT_NEAR(snapKeyTime(p, fog.target, 0, 8.0 + 28.0 / 60.0, near, 5.0 / 60.0), 8.0 + 30.0 / 60.0, 1e-12);
+    EXPECT_NEAR(snapKeyTime(p, fog.target, 0, 8.0 + 22.0 / 60.0, near, 5.0 / 60.0), 8.0 + 20.0 / 60.0, 1e-12);
+    EXPECT_DOUBLE_EQ(snapKeyTime(p, fog.target, 0, 8.0 + 28.0 / 60.0, near, 1.0), 8.0);
+    // A key that follows the sun snaps its offset from the event: sunset at 19:07 + 0:14 lands
+    // on sunset + 0:15, not on 19:15.
+    TrackKey& anchored = p.tracks[0].keys[1];
+    anchored.anchor = SunEvent::Sunset;
+    anchored.timeHours = 19.0 + 7.0 / 60.0 + 0.5;  // sunset + 0:30
+    anchored.offsetHours = 0.5;
+    EXPECT_NEAR(snapKeyTime(p, fog.target, 1, 19.0 + 21.0 / 60.0, near), 19.0 + 22.0 / 60.0, 1e-12);
+    EXPECT_NEAR(snapKeyTime(p, fog.target, 1, 19.0 + 21.0 / 60.0, near, 1.0 / 60.0), 19.0 + 21.0 / 60.0,
+                1e-12);
 }
 
 TEST(PresetEdit, MeshPathsFollowThePreset) {

@@ -41,6 +41,8 @@ std::string caseName(const char* file) {
 // Presets
 
 const BadInput kBadPresets[] = {
+    {"anchor_offset_out_of_range.json",
+     ":5:52: error: /tracks/0/keys/0/offset_h: an offset from a sun event must be in [-12, 12] h (got -13)"},
     {"binary_garbage.bin", ":2:91: error: a NUL byte: a preset is UTF-8 JSON text, not binary data"},
     {"bom_only.json",
      ":1:2: error: syntax error while parsing value - unexpected end of input; expected '[', '{', or a "
@@ -154,9 +156,9 @@ const BadInput kBadPresets[] = {
     {"unknown_track_param.json", ":6:16: error: /tracks/0/param: unknown global parameter \"fog.thickness\""},
     {"utf16_bom.json", ":1:1: error: UTF-16 text (byte order mark); a preset is UTF-8 JSON"},
     {"version_fraction.json", ":2:14: error: /version: expected an integer, got a number"},
-    {"version_missing.json", ":1:1: error: /version: missing \"version\" (this library reads versions 1 to 3)"},
+    {"version_missing.json", ":1:1: error: /version: missing \"version\" (this library reads versions 1 to 4)"},
     {"version_newer.json",
-     ":2:14: error: /version: preset version 7 is newer than this library reads (3); update Aerial to load "
+     ":2:14: error: /version: preset version 7 is newer than this library reads (4); update Aerial to load "
      "it"},
     {"version_string.json", ":2:14: error: /version: expected an integer, got a string"},
     {"version_zero.json", ":2:14: error: /version: unsupported version 0"},

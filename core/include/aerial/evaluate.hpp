@@ -88,9 +88,11 @@ class CompiledPreset {
 public:
     /// Compiles defaultPreset().
     CompiledPreset();
-    /// Binds every track once. Tracks that do not validate (unknown target,
-    /// bad keys) are skipped and listed in issues(); a preset that passed
-    /// validatePreset has none.
+    /// Binds every track once. Keys that follow the sun are placed at the
+    /// preset's location and date first (resolveKeyAnchors): a game that
+    /// changes the date or the place compiles the preset again. Tracks that
+    /// do not validate (unknown target, bad keys) are skipped and listed in
+    /// issues(); a preset that passed validatePreset has none.
     explicit CompiledPreset(Preset preset);
     ~CompiledPreset();
     CompiledPreset(CompiledPreset&&) noexcept;

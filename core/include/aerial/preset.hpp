@@ -74,7 +74,9 @@ namespace aerial {
 /// I = 4 pi kNitsPerRadianceUnit i Y(colour) / (a sigma_s), sigma_s =
 /// fogScatteringAt the emitter with the base (unkeyed) values, keys of its
 /// track converted alike; an attenuation left out is version 2's 0.01.
-constexpr int kPresetVersion = 3;
+/// Version 4: a key can follow the sun ("anchor" and "offset_h" in place of
+/// "time_h", timeline.hpp); earlier versions load unchanged.
+constexpr int kPresetVersion = 4;
 
 /// Default sun intensity [illuminance unit = 5000 lx, aerial/exposure.hpp]:
 /// 20, the ~100 000 lx of a clear noon above the atmosphere's losses.
@@ -193,6 +195,15 @@ const Track* findTrack(const Preset& preset, const TrackTarget& target);
 /// cloud volume (scope CloudVolume) a new id and retargets its tracks. Returns false and changes nothing when
 /// `oldId` is unknown or `newId` is malformed or taken.
 bool changeObjectId(Preset& preset, ParamScope scope, const std::string& oldId, const std::string& newId);
+
+/// Keys that follow the sun (TrackKey::anchor): sets each anchored key's
+/// time from the preset's location and date (anchoredKeyHours), then puts
+/// every track's keys back in time order (stable), so a new date or place
+/// moves those keys with the sun. Returns how many keys changed time.
+/// loadPreset, parsePreset and CompiledPreset call it; so does an editor
+/// after changing the location or anchoring a key. Two keys of a track
+/// that land on the same time are left for validatePreset to report.
+std::size_t resolveKeyAnchors(Preset& preset);
 
 /// Editing helper: removes a volume, emitter or cloud volume and the tracks
 /// that target it. Returns false when there is no such object.

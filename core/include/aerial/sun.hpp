@@ -275,4 +275,36 @@ double sunsetHours(const Location& where);
 /// (ephemeris, iterated to the instant). A game shows it as "noon".
 double solarNoonHours(const Location& where);
 
+/// The moments of the day a key can follow (TrackKey::anchor), as almanacs
+/// define them, by the geometric elevation of the sun's centre:
+///   sunrise, sunset          -0.833 deg (the upper limb on a refracted
+///                            horizon: 34' refraction + 16' semidiameter)
+///   civil dawn, dusk         -6 deg
+///   nautical dawn, dusk      -12 deg
+///   noon                     the upper transit (solarNoonHours)
+/// In a preset file: "sunrise", "noon", "sunset", "civil_dawn",
+/// "civil_dusk", "nautical_dawn", "nautical_dusk".
+enum class SunEvent { Sunrise, Noon, Sunset, CivilDawn, CivilDusk, NauticalDawn, NauticalDusk };
+
+inline constexpr SunEvent kSunEvents[] = {SunEvent::NauticalDawn, SunEvent::CivilDawn, SunEvent::Sunrise,
+                                          SunEvent::Noon,         SunEvent::Sunset,    SunEvent::CivilDusk,
+                                          SunEvent::NauticalDusk};
+
+/// The file name of an event ("civil_dusk").
+const char* sunEventName(SunEvent event);
+
+/// Parses a file name of an event; false (and `event` untouched) otherwise.
+bool parseSunEvent(std::string_view name, SunEvent& event);
+
+/// Time of day of an event [h], 0 <= t < 24, in the location's time of day
+/// (as sunPosition reads it): a dawn or sunrise is the day's first upward
+/// crossing of the event's elevation, a sunset or dusk the last downward one
+/// (15-minute scan, then bisection to 1e-7 h; the undated and dated models
+/// alike). When the sun does not reach the elevation that day the event
+/// falls where the sun comes closest to it: at solar midnight (noon + 12 h)
+/// when it stays above (a summer night that never gets nautically dark),
+/// at noon when it stays below (polar night) -- so the event moves
+/// continuously with the date and the latitude.
+double sunEventHours(const Location& where, SunEvent event);
+
 }  // namespace aerial

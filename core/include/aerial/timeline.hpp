@@ -32,10 +32,20 @@
 //     parameter by the object's id and the parameter key (in a file:
 //     "volume", "emitter" or "cloud_volume": id, and "param"), so renaming
 //     or reordering objects never breaks a track.
+//   * A key can follow the sun (TrackKey::anchor): "sunset + 0:20" is
+//     stored as the event and the offset ({"anchor": "sunset", "offset_h":
+//     0.333, "value": ...} in a preset), and its time is derived from the
+//     preset's location and date (sunEventHours, sun.hpp) whenever the
+//     preset is loaded or compiled (resolveKeyAnchors, preset.hpp). Change
+//     the date or the place and the key moves with the sun; the curve
+//     itself is evaluated from the resolved times like any other.
 #pragma once
+
+#include <aerial/sun.hpp>
 
 #include <glm/vec3.hpp>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -84,6 +94,14 @@ struct TrackKey {
     /// following its neighbours. Ignored by step and linear. Default false;
     /// written to a preset only when true ("flat": true).
     bool flat = false;
+    /// A key that follows the sun: its time is
+    /// anchoredKeyHours(*this, location), the event's time plus
+    /// `offsetHours`, and `timeHours` holds that resolved time (set by
+    /// resolveKeyAnchors). Empty (default): a fixed time of day.
+    std::optional<SunEvent> anchor;
+    /// The anchored key's offset from its event [h], -12..12 (negative:
+    /// before it). Unused without an anchor.
+    double offsetHours = 0.0;
 };
 
 struct Track {
@@ -128,5 +146,21 @@ void setKey(Track& track, double timeHours, const glm::dvec3& value);
 
 /// t wrapped into [0, 24) [h]; non-finite values give 0.
 double wrapHours(double timeHours);
+
+/// The time of day [h], 0 <= t < 24, of an anchored key at `where`:
+/// wrapHours(sunEventHours(where, *key.anchor) + key.offsetHours);
+/// key.timeHours for a key without an anchor.
+double anchoredKeyHours(const TrackKey& key, const Location& where);
+
+/// Editing helper: moves a key to `timeHours`. An anchored key keeps its
+/// anchor and its offset changes by the same amount (dragging "sunset +
+/// 0:20" by ten minutes gives "sunset + 0:30"), wrapped into -12..12 h.
+void setKeyTime(TrackKey& key, double timeHours);
+
+/// Editing helper: anchors a key to `event` where it stands: the offset is
+/// the key's time minus the event's at `where` (wrapped into -12..12 h), so
+/// the curve does not change until the date or the place does. An empty
+/// `event` makes it a fixed key again at its current time.
+void anchorKey(TrackKey& key, std::optional<SunEvent> event, const Location& where);
 
 }  // namespace aerial
