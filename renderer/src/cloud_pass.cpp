@@ -45,13 +45,23 @@ void draw(FrameContext& f) {
     }
 }
 
+/// A noise field as RG32F with mipmaps: x and x^2 at level 0, their box
+/// means above (common/clouds.glsl: the far clouds' variance mapping).
 GLuint uploadNoise(const std::vector<float>& texels, int size) {
     GLuint t = 0;
+    int levels = 1;
+    while ((size >> levels) > 0) ++levels;
+    std::vector<float> moments(texels.size() * 2);
+    for (std::size_t i = 0; i < texels.size(); ++i) {
+        moments[2 * i] = texels[i];
+        moments[2 * i + 1] = texels[i] * texels[i];
+    }
     glCreateTextures(GL_TEXTURE_3D, 1, &t);
-    glTextureStorage3D(t, 1, GL_R32F, size, size, size);
+    glTextureStorage3D(t, levels, GL_RG32F, size, size, size);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    glTextureSubImage3D(t, 0, 0, 0, 0, size, size, size, GL_RED, GL_FLOAT, texels.data());
-    glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureSubImage3D(t, 0, 0, 0, 0, size, size, size, GL_RG, GL_FLOAT, moments.data());
+    glGenerateTextureMipmap(t);
+    glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTextureParameteri(t, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R}) {
         glTextureParameteri(t, wrap, GL_REPEAT);

@@ -29,9 +29,24 @@
 //   shadowSize [texels]:
 //                       the cloud shadow map (cloud_shadow.glsl)
 //   outputMode          0 lit, 1 transmittance only
-// Textures: uCloudShape (unit 8, 128^3 R32F), uCloudDetail (unit 9, 32^3
-//   R32F), both GL_LINEAR + GL_REPEAT, the exact texels of CloudNoise, so
-//   texture() is sampleTileable; uCloudShadow (unit 10, R32F optical depth).
+// Textures: uCloudShape (unit 8, 128^3), uCloudDetail (unit 9, 32^3), both
+//   RG32F with mipmaps, GL_LINEAR_MIPMAP_LINEAR + GL_REPEAT: level 0 holds
+//   the exact texels of CloudNoise x in r (so textureLod(.., 0) is
+//   sampleTileable) and x^2 in g; the mip levels their box means, E[x] and
+//   E[x^2] over the level's footprint (variance mapping: the noise's spread
+//   within a texel is E[x^2] - E[x]^2). uCloudShadow (unit 10, R32F optical
+//   depth).
+//
+// Far clouds (cloudDensityFiltered): a pixel far away covers many noise
+// texels, and point samples of the thresholded noise alias into pixel
+// noise at the horizon. There the noise is read at the mip level of the
+// pixel's footprint w (lod = log2(w / texel)), mean m and variance s^2,
+// and the coverage threshold is applied to its distribution, not to m:
+// the mean of clamp((x - lo) / c, 0, 1) over x uniform in [m - a, m + a],
+// a = sqrt(3) s (the uniform law of that variance), in closed form. Near
+// (w below a texel) it is the exact point sample; far, the clouds turn
+// smoothly into the mean density the coverage gives, without aliasing and
+// without thinning out. The erosion takes its mean the same way.
 //
 // Float precision: the sphere roots never form |o - centre|^2 (~4e13 m^2):
 // b = o.d + Rg d.y and c = (|o|^2 + 2 y Rg) - h_s (2 Rg + h_s), as core does
@@ -139,17 +154,55 @@ float cloudDensityAt(vec3 p, out float heightFraction) {
     float c = cloudCoverageAt(p);
     if (c <= 0.0) return 0.0;
     vec3 qs = vec3(p.x - clouds.shapeOffset.x, h, p.z - clouds.shapeOffset.y);
-    float x = texture(uCloudShape, qs / clouds.shapeScaleM).r * profile;
+    float x = textureLod(uCloudShape, qs / clouds.shapeScaleM, 0.0).r * profile;
     float d = cloudSaturate((x - (1.0 - c)) / c);
     if (d <= 0.0) return 0.0;
     vec3 qd = vec3(p.x - clouds.detailOffset.x, h, p.z - clouds.detailOffset.y);
-    float e = clouds.erosion * texture(uCloudDetail, qd / clouds.detailScaleM).r;
+    float e = clouds.erosion * textureLod(uCloudDetail, qd / clouds.detailScaleM, 0.0).r;
     return clouds.densityPerM * cloudSaturate((d - e) / (1.0 - e));
 }
 
 float cloudDensityAt(vec3 p) {
     float f;
     return cloudDensityAt(p, f);
+}
+
+/// Integral of clamp((u - lo) / c, 0, 1) du from -inf (taken as lo) to x.
+float cloudRampIntegral(float x, float lo, float c) {
+    float u = x - lo;
+    return u <= 0.0 ? 0.0 : (u < c ? 0.5 * u * u / c : 0.5 * c + (u - c));
+}
+
+/// The mean of clamp((x - lo) / c, 0, 1) for x uniform in [m - a, m + a].
+float cloudRampMean(float m, float a, float lo, float c) {
+    if (a < 1e-4 * c) return cloudSaturate((m - lo) / c);
+    return (cloudRampIntegral(m + a, lo, c) - cloudRampIntegral(m - a, lo, c)) / (2.0 * a);
+}
+
+/// cloudDensityAt for a sample that stands for a footprint `footprintM`
+/// [m] across (the pixel's width at its distance): the noise read at that
+/// footprint's mip level and the threshold applied to its spread (see the
+/// top of this file). footprintM below a texel gives cloudDensityAt.
+float cloudDensityFiltered(vec3 p, float footprintM, out float heightFraction) {
+    float h = cloudHeightAboveGround(p);
+    float f = (h - clouds.bottomM) / clouds.thicknessM;
+    heightFraction = f;
+    float profile = cloudHeightProfile(f, clouds.type);
+    if (profile <= 0.0) return 0.0;
+    float c = cloudCoverageAt(p);
+    if (c <= 0.0) return 0.0;
+    float shapeTexel = clouds.shapeScaleM / 128.0, detailTexel = clouds.detailScaleM / 32.0;
+    float lodShape = max(log2(max(footprintM, 1e-3) / shapeTexel), 0.0);
+    float lodDetail = max(log2(max(footprintM, 1e-3) / detailTexel), 0.0);
+    vec3 qs = vec3(p.x - clouds.shapeOffset.x, h, p.z - clouds.shapeOffset.y);
+    vec2 moments = textureLod(uCloudShape, qs / clouds.shapeScaleM, lodShape).rg;
+    float m = moments.x * profile;
+    float a = lodShape > 0.0 ? sqrt(3.0 * max(moments.y - moments.x * moments.x, 0.0)) * profile : 0.0;
+    float d = cloudRampMean(m, a, 1.0 - c, c);
+    if (d <= 0.0) return 0.0;
+    vec3 qd = vec3(p.x - clouds.detailOffset.x, h, p.z - clouds.detailOffset.y);
+    float e = clouds.erosion * textureLod(uCloudDetail, qd / clouds.detailScaleM, lodDetail).r;
+    return clouds.densityPerM * cloudSaturate((d - e) / (1.0 - e));
 }
 
 /// Roots of |o + t d - centre|^2 = (Rg + shellHeight)^2, or false

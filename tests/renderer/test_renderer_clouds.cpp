@@ -455,7 +455,9 @@ TEST_F(GlTest, GrazingCloudsConvergeWithoutBands) {
         "[ measured ] clouds at a grazing view, 64 steps against 1024, 5x5 box-filtered sky PSNR %.1f dB "
         "(plain %.1f dB; the clear sky against 1024 steps: %.1f dB)\n",
         psnr, skyPsnr(image, converged, depth), againstClear);
-    EXPECT_GE(psnr, 40.0);
+    // 46.4 dB before the far clouds' filter (common/clouds.glsl,
+    // cloudDensityFiltered), 56.2 dB with it.
+    EXPECT_GE(psnr, 52.0);
     EXPECT_TRUE(log.errors.empty()) << log.errors.front();
 }
 
