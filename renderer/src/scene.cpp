@@ -366,6 +366,73 @@ SceneDesc makeBuiltinScene() {
     sail.roughness = 0.9;
     scene.meshes.push_back(sail);
 
+    // The river: flowing down the valley into the lake, along the bends
+    // misty_river_farm's river mist follows (scripts/make_fog_meshes.py:
+    // x = 18 sin(z / 45)), 9 m wide, a hand's breadth above the ground it
+    // runs over; the same water as the lake.
+    {
+        SceneMesh river;
+        constexpr int kSteps = 96;
+        constexpr double kZ0 = -30.0, kZ1 = -300.0, kHalfWidth = 4.5;
+        for (int i = 0; i <= kSteps; ++i) {
+            const double z = kZ0 + (kZ1 - kZ0) * i / kSteps;
+            const double x = 18.0 * std::sin(z / 45.0);
+            // Across the flow: the path's direction (dx/dz, 1) turned a quarter.
+            const glm::dvec2 across = glm::normalize(glm::dvec2(1.0, -18.0 / 45.0 * std::cos(z / 45.0)));
+            for (double side : {-1.0, 1.0}) {
+                const double px = x + side * kHalfWidth * across.x, pz = z + side * kHalfWidth * across.y;
+                river.positions.emplace_back(float(px), float(builtinTerrainHeight(px, pz) + 0.12), float(pz));
+                river.normals.emplace_back(0.0f, 1.0f, 0.0f);
+                river.texcoords.emplace_back(float(side > 0.0), float(i) / 8.0f);
+            }
+            if (i > 0) {
+                const std::uint32_t a = std::uint32_t(2 * i - 2);
+                // Counter-clockwise seen from above (+y).
+                for (std::uint32_t k : {a, a + 1, a + 2, a + 1, a + 3, a + 2}) river.indices.push_back(k);
+            }
+        }
+        river.albedo = glm::dvec3(0.03, 0.06, 0.07);
+        river.roughness = 0.08;
+        river.specularFactor = 0.5;
+        scene.meshes.push_back(std::move(river));
+    }
+
+    // The farm yard round the house at (0, -60) (misty_river_farm keeps it
+    // clear of fog): a barn and a picket fence round a 36 m square.
+    {
+        SceneMesh barn = standingBox(13.0, -72.0, {5.0, 3.5, 9.0}, 0.3, 4.0);
+        barn.albedo = glm::dvec3(0.55, 0.2, 0.14);
+        barn.roughness = 0.85;
+        scene.meshes.push_back(barn);
+        SceneMesh barnRoof = makeRoofMesh(11.0, 19.0, 3.0);
+        barnRoof.albedo = glm::dvec3(0.25, 0.25, 0.27);
+        barnRoof.worldFromObject =
+            glm::translate(glm::dmat4(1.0), glm::dvec3(13.0, builtinTerrainHeight(13.0, -72.0) + 6.5, -72.0)) *
+            glm::mat4_cast(glm::angleAxis(0.3, glm::dvec3(0.0, 1.0, 0.0)));
+        scene.meshes.push_back(barnRoof);
+        constexpr double kYardHalf = 18.0, kPanel = 6.0;
+        const glm::dvec2 centre(0.0, -60.0);
+        const glm::dvec2 corners[] = {{-kYardHalf, kYardHalf}, {kYardHalf, kYardHalf}, {kYardHalf, -kYardHalf},
+                                      {-kYardHalf, -kYardHalf}};
+        for (int side = 0; side < 4; ++side) {
+            const glm::dvec2 a = centre + corners[side], b = centre + corners[(side + 1) % 4];
+            const int panels = int(std::round(glm::length(b - a) / kPanel));
+            for (int k = 0; k < panels; ++k) {
+                if (side == 0 && k == panels / 2) continue;  // the gate, towards the camera
+                const glm::dvec2 p0 = a + (b - a) * (double(k) / panels), p1 = a + (b - a) * (double(k + 1) / panels);
+                const double y0 = std::min(builtinTerrainHeight(p0.x, p0.y), builtinTerrainHeight(p1.x, p1.y)) - 0.2;
+                SceneMesh fence = makeQuadMesh({p0.x, y0, p0.y}, {p1.x - p0.x, 0.0, p1.y - p0.y}, {0.0, 1.4, 0.0});
+                for (glm::vec2& uv : fence.texcoords) uv.x *= 2.0f;
+                fence.albedo = glm::dvec3(1.0);
+                fence.baseColorTexture = boards;
+                fence.alphaMode = AlphaMode::Mask;
+                fence.alphaCutoff = 0.5;
+                fence.roughness = 0.9;
+                scene.meshes.push_back(std::move(fence));
+            }
+        }
+    }
+
     // The particle fog source: steam rising from the east side of the lake.
     scene.sprites = makeFogParticleSource({28.0, kLakeLevel, -6.0}, 7.0, 26.0, 28, 7u);
     return scene;
