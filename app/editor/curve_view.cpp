@@ -4,8 +4,11 @@
 #include <aerial/clock.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <set>
 #include <utility>
@@ -53,15 +56,26 @@ CurveRange paddedRange(double lo, double hi, const ParamDesc& desc) {
     return {lo - pad, hi + pad};
 }
 
-CurveRange curveRangeOf(const Track& track, const ParamDesc& desc) {
+namespace {
+
+/// The smallest and largest value of a track's keys over the parameter's
+/// components (0, 0 without keys).
+void keyValueSpan(const Track& track, const ParamDesc& desc, double& lo, double& hi) {
     const int components = std::clamp(desc.components(), 1, 3);
-    double lo = 1e300, hi = -1e300;
+    lo = 1e300, hi = -1e300;
     for (const TrackKey& k : track.keys)
         for (int c = 0; c < components; ++c) {
             lo = std::min(lo, k.value[c]);
             hi = std::max(hi, k.value[c]);
         }
     if (track.keys.empty()) lo = hi = 0.0;
+}
+
+}  // namespace
+
+CurveRange curveRangeOf(const Track& track, const ParamDesc& desc) {
+    double lo, hi;
+    keyValueSpan(track, desc, lo, hi);
     return paddedRange(lo, hi, desc);
 }
 
@@ -97,6 +111,68 @@ std::optional<TrackTarget> curveTargetOf(std::string_view key) {
     return std::nullopt;
 }
 
+std::string curveLabel(const Preset& preset, const TrackTarget& target) {
+    const std::optional<ParamRef> ref = paramRefOf(preset, target);
+    if (!ref) return curveKey(target);
+    std::string label(ref->desc->label);
+    if (target.scope == ParamScope::Global) return label;
+    const std::size_t i = std::size_t(ref->object);
+    std::string name;
+    switch (target.scope) {
+        case ParamScope::Volume:
+            name = preset.volumes[i].name;
+            break;
+        case ParamScope::Emitter:
+            name = preset.emitters[i].name;
+            break;
+        case ParamScope::CloudVolume:
+            name = preset.cloudVolumes[i].name;
+            break;
+        case ParamScope::Global:
+            break;
+    }
+    if (name.empty()) name = target.objectId;
+    // "Density" after a name reads "Haze bank density"; an acronym ("RGB") keeps its capitals.
+    if (label.size() >= 2 && std::isupper(static_cast<unsigned char>(label[0])) &&
+        std::islower(static_cast<unsigned char>(label[1])))
+        label[0] = char(std::tolower(static_cast<unsigned char>(label[0])));
+    return name + " " + label;
+}
+
+int curvePaletteIndex(const TrackTarget& target, int paletteSize) {
+    if (paletteSize <= 1) return 0;
+    std::uint32_t hash = 2166136261u;  // FNV-1a, 32 bits: the same on every machine
+    for (const char c : curveKey(target)) {
+        hash ^= std::uint32_t(static_cast<unsigned char>(c));
+        hash *= 16777619u;
+    }
+    return int(hash % std::uint32_t(paletteSize));
+}
+
+std::vector<double> valueTicks(const CurveRange& range, int maxTicks) {
+    std::vector<double> ticks;
+    const double span = range.hi - range.lo;
+    if (maxTicks < 1 || !std::isfinite(range.lo) || !std::isfinite(range.hi) || !(span > 0.0)) return ticks;
+    const double decade = std::pow(10.0, std::floor(std::log10(span / maxTicks)));
+    for (const double multiple : {1.0, 2.0, 5.0, 10.0, 20.0}) {
+        const double step = multiple * decade;
+        const double first = std::ceil(range.lo / step), last = std::floor(range.hi / step);
+        if (last - first + 1.0 > maxTicks) continue;
+        for (double n = first; n <= last; n += 1.0) ticks.push_back(std::abs(n) < 0.5 ? 0.0 : n * step);
+        break;
+    }
+    return ticks;
+}
+
+std::string valueWithUnit(double value, std::string_view unit, int digits) {
+    if (value == 0.0) value = 0.0;  // no "-0"
+    char text[48];
+    std::snprintf(text, sizeof text, "%.*g", std::clamp(digits, 1, 17), value);
+    std::string out = text;
+    if (!unit.empty()) out.append(" ").append(unit);
+    return out;
+}
+
 int hitTestPoints(const std::vector<glm::dvec2>& points, glm::dvec2 mouse, double radiusPx) {
     int best = -1;
     double bestD2 = radiusPx * radiusPx;
@@ -111,6 +187,25 @@ int hitTestPoints(const std::vector<glm::dvec2>& points, glm::dvec2 mouse, doubl
     return best;
 }
 
+int pickCurvePoint(const std::vector<glm::dvec2>& points, const std::vector<CurvePoint>& ids,
+                   glm::dvec2 mouse, double radiusPx, const std::optional<TrackTarget>& preferred) {
+    int best = -1, bestPreferred = -1;
+    double bestD2 = radiusPx * radiusPx, bestPreferredD2 = radiusPx * radiusPx;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const glm::dvec2 d = points[i] - mouse;
+        const double d2 = d.x * d.x + d.y * d.y;
+        if (d2 <= bestD2) {
+            bestD2 = d2;
+            best = int(i);
+        }
+        if (preferred && i < ids.size() && ids[i].target == *preferred && d2 <= bestPreferredD2) {
+            bestPreferredD2 = d2;
+            bestPreferred = int(i);
+        }
+    }
+    return bestPreferred >= 0 ? bestPreferred : best;
+}
+
 std::vector<int> pointsInBox(const std::vector<glm::dvec2>& points, glm::dvec2 a, glm::dvec2 b) {
     const glm::dvec2 lo(std::min(a.x, b.x), std::min(a.y, b.y)), hi(std::max(a.x, b.x), std::max(a.y, b.y));
     std::vector<int> inside;
@@ -120,13 +215,17 @@ std::vector<int> pointsInBox(const std::vector<glm::dvec2>& points, glm::dvec2 a
     return inside;
 }
 
-CurveKeyPoints keyPointsOf(const Preset& preset, const std::vector<TrackTarget>& targets) {
+namespace {
+
+/// keyPointsOf with each curve's range from `rangeOf(target, track, desc)`.
+template <class RangeOf>
+CurveKeyPoints keyPointsIn(const Preset& preset, const std::vector<TrackTarget>& targets, RangeOf rangeOf) {
     CurveKeyPoints out;
     for (const TrackTarget& target : targets) {
         const Track* track = findTrack(preset, target);
         const ParamDesc* desc = findParam(target.scope, target.param);
         if (!track || !desc) continue;
-        const CurveRange range = curveRangeOf(*track, *desc);
+        const CurveRange range = rangeOf(target, *track, *desc);
         for (std::size_t k = 0; k < track->keys.size(); ++k)
             for (int c = 0; c < std::clamp(desc->components(), 1, 3); ++c) {
                 out.timeValue.push_back(
@@ -135,6 +234,21 @@ CurveKeyPoints keyPointsOf(const Preset& preset, const std::vector<TrackTarget>&
             }
     }
     return out;
+}
+
+}  // namespace
+
+CurveKeyPoints keyPointsOf(const Preset& preset, const std::vector<TrackTarget>& targets) {
+    return keyPointsIn(preset, targets, [](const TrackTarget&, const Track& track, const ParamDesc& desc) {
+        return curveRangeOf(track, desc);
+    });
+}
+
+CurveKeyPoints keyPointsOf(const Preset& preset, const std::vector<TrackTarget>& targets,
+                           const CurveViewState& view) {
+    return keyPointsIn(preset, targets, [&](const TrackTarget& target, const Track&, const ParamDesc&) {
+        return view.rangeOf(preset, target);
+    });
 }
 
 std::vector<CurveDragItem> dragItemsOf(const Preset& preset, const std::vector<CurvePoint>& points) {
@@ -148,6 +262,13 @@ std::vector<CurveDragItem> dragItemsOf(const Preset& preset, const std::vector<C
         const TrackKey& k = track->keys[std::size_t(p.key)];
         items.push_back({p, k.timeHours, k.value[p.component], curveRangeOf(*track, *desc)});
     }
+    return items;
+}
+
+std::vector<CurveDragItem> dragItemsOf(const Preset& preset, const std::vector<CurvePoint>& points,
+                                       const CurveViewState& view) {
+    std::vector<CurveDragItem> items = dragItemsOf(preset, points);
+    for (CurveDragItem& item : items) item.range = view.rangeOf(preset, item.point.target);
     return items;
 }
 
@@ -333,6 +454,100 @@ bool allAnchoredTo(const Preset& preset, const std::vector<CurvePoint>& points,
            std::all_of(keys.begin(), keys.end(), [&](const TrackKey* k) { return k->anchor == event; });
 }
 
+std::string keyClockText(double hours) {
+    std::string text = formatClock(hours, ClockResolution::Seconds);
+    if (text.size() == 5) text += ":00";  // "19:52" on the minute
+    return text;
+}
+
+bool parseKeyValue(std::string_view text, std::string_view unit, double& value) {
+    auto trim = [](std::string_view& t) {
+        while (!t.empty() && t.front() == ' ') t.remove_prefix(1);
+        while (!t.empty() && t.back() == ' ') t.remove_suffix(1);
+    };
+    trim(text);
+    if (!unit.empty() && text.size() > unit.size() && text.substr(text.size() - unit.size()) == unit) {
+        text.remove_suffix(unit.size());
+        trim(text);
+    }
+    // Digits, a sign, a point and an exponent only: no "nan", "inf" or hex floats.
+    if (text.empty() || text.find_first_not_of("0123456789+-.eE") != std::string_view::npos) return false;
+    const std::string copy(text);
+    char* end = nullptr;
+    const double parsed = std::strtod(copy.c_str(), &end);
+    if (end != copy.c_str() + copy.size() || !std::isfinite(parsed)) return false;
+    value = parsed;
+    return true;
+}
+
+std::optional<CurvePoint> leadPointOf(const Preset& preset, const std::vector<CurvePoint>& points) {
+    const std::vector<CurveDragItem> items = dragItemsOf(preset, points);
+    if (items.empty()) return std::nullopt;
+    return items.front().point;
+}
+
+double setCurvePointsTime(Preset& preset, const std::vector<CurvePoint>& points, double timeHours) {
+    const std::optional<CurvePoint> lead = leadPointOf(preset, points);
+    if (!lead) return std::nan("");
+    const std::size_t key = std::size_t(lead->key);
+    const double start = findTrack(preset, lead->target)->keys[key].timeHours;
+    if (!std::isfinite(timeHours)) return start;
+    const double wanted = timeHours - start;
+    const double applied = shiftCurvePoints(preset, points, wanted);
+    // The keys keep their order, so the lead is still key `key`; set to the time typed, not
+    // start + (typed - start), which may differ from it in the last bit.
+    TrackKey& moved = findTrack(preset, lead->target)->keys[key];
+    if (applied == wanted) setKeyTime(moved, timeHours);
+    return moved.timeHours;
+}
+
+std::string setTimeLabel(const std::vector<CurvePoint>& points) {
+    const int n = keyCountOf(points);
+    return n == 1 ? std::string("Set key time") : "Set " + std::to_string(n) + " key times";
+}
+
+namespace {
+
+/// The points of the lead point's parameter (its scope and parameter), those the preset has.
+std::vector<CurvePoint> pointsOfLeadParam(const Preset& preset, const std::vector<CurvePoint>& points) {
+    std::vector<CurvePoint> same;
+    const std::optional<CurvePoint> lead = leadPointOf(preset, points);
+    if (!lead) return same;
+    for (const CurveDragItem& item : dragItemsOf(preset, points))
+        if (item.point.target.scope == lead->target.scope && item.point.target.param == lead->target.param)
+            same.push_back(item.point);
+    return same;
+}
+
+}  // namespace
+
+int setCurvePointsValue(Preset& preset, const std::vector<CurvePoint>& points, double value) {
+    if (!std::isfinite(value)) return 0;
+    std::set<const TrackKey*> changed;
+    for (const CurvePoint& p : pointsOfLeadParam(preset, points)) {
+        const ParamDesc* desc = findParam(p.target.scope, p.target.param);
+        TrackKey& key = findTrack(preset, p.target)->keys[std::size_t(p.key)];
+        const double v = std::clamp(value, desc->minValue, desc->maxValue);
+        if (key.value[p.component] != v) {
+            key.value[p.component] = v;
+            changed.insert(&key);
+        }
+    }
+    return int(changed.size());
+}
+
+std::string setValueLabel(const Preset& preset, const std::vector<CurvePoint>& points) {
+    const int n = keyCountOf(pointsOfLeadParam(preset, points));
+    return n == 1 ? std::string("Set key value") : "Set " + std::to_string(n) + " key values";
+}
+
+std::string keyReadout(const TrackKey& key, int component, const ParamDesc& desc) {
+    std::string when = keyClockText(key.timeHours);
+    if (key.anchor)
+        when = sunEventLabel(*key.anchor) + " " + formatOffset(key.offsetHours) + " (" + when + ")";
+    return when + "  " + valueWithUnit(key.value[std::clamp(component, 0, 2)], desc.unit);
+}
+
 bool CurveViewState::isShown(const TrackTarget& target) const {
     return std::find(shown.begin(), shown.end(), target) != shown.end();
 }
@@ -352,6 +567,25 @@ void CurveViewState::validate(const Preset& preset) {
         const Track* track = findTrack(preset, p.target);
         return !track || p.key < 0 || p.key >= int(track->keys.size());
     });
+}
+
+CurveRange CurveViewState::rangeOf(const Preset& preset, const TrackTarget& target) const {
+    const Track* track = findTrack(preset, target);
+    const ParamDesc* desc = findParam(target.scope, target.param);
+    if (!track || !desc) return {};
+    const auto pinned = pinnedRanges.find(curveKey(target));
+    if (pinned == pinnedRanges.end()) return curveRangeOf(*track, *desc);
+    double lo, hi;
+    keyValueSpan(*track, *desc, lo, hi);
+    if (lo >= pinned->second.lo && hi <= pinned->second.hi) return pinned->second;
+    // A key outside the pinned range: widened on that side to the keys' range (padded).
+    const CurveRange keys = curveRangeOf(*track, *desc);
+    return {lo < pinned->second.lo ? std::min(pinned->second.lo, keys.lo) : pinned->second.lo,
+            hi > pinned->second.hi ? std::max(pinned->second.hi, keys.hi) : pinned->second.hi};
+}
+
+void CurveViewState::pinRange(const Preset& preset, const TrackTarget& target) {
+    if (findTrack(preset, target)) pinnedRanges[curveKey(target)] = rangeOf(preset, target);
 }
 
 }  // namespace aerial::editor

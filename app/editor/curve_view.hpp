@@ -10,8 +10,19 @@
 // (over all its components) padded by kCurveRangePad of that span at both
 // ends, so every curve uses the height of the view whatever its unit or
 // slider range (a density of 1e-4..3e-3 /m and a colour of 0..1 overlay
-// readably). A drag keeps the range it started with, so a key follows the
-// mouse.
+// readably). The first drag or typed value of a curve pins its range
+// (CurveViewState::pinRange) until the view is fit to the day again, so the
+// drag sensitivity does not change after every drag; a key taken outside a
+// pinned range widens it. The inspector's parameter gets a value axis in
+// its unit (valueTicks).
+//
+// Picking prefers the inspector's parameter: where another curve's key lies
+// on one of its keys, a click takes the inspector's (pickCurvePoint). The
+// legend names a curve by its object's name and the parameter's label
+// ("Haze bank density"); its colour comes from its target alone
+// (curvePaletteIndex), so showing or hiding another curve recolours none.
+// The selected keys' time and value can be typed (setCurvePointsTime,
+// setCurvePointsValue: one undo step each).
 //
 // Keys that follow the sun (TrackKey::anchor, timeline.hpp) are shown as
 // "sunset + 0:20 (19:52)"; a selection is anchored to an event where it
@@ -26,6 +37,7 @@
 
 #include <glm/vec2.hpp>
 
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -78,6 +90,7 @@ struct CurveRange {
     /// 0 at lo, 1 at hi.
     double normalised(double value) const { return (value - lo) / (hi - lo); }
     double valueOf(double normalised) const { return lo + normalised * (hi - lo); }
+    bool operator==(const CurveRange&) const = default;
 };
 /// The range of values from `lo` to `hi` padded by kCurveRangePad; a single
 /// value (lo == hi) gets +-10 % of its magnitude, at least 5 % of the
@@ -97,6 +110,26 @@ std::string curveKey(const TrackTarget& target);
 /// The inverse; nullopt for text that names no parameter.
 std::optional<TrackTarget> curveTargetOf(std::string_view key);
 
+/// The legend's name of a curve: a global parameter's label ("Fog
+/// density"); an object's name (its id when the name is empty) and the
+/// parameter's label ("Haze bank density"); the curve key when the preset
+/// has no such parameter or object.
+std::string curveLabel(const Preset& preset, const TrackTarget& target);
+/// How many colours the curve view's palette has (editor_curves.cpp).
+inline constexpr int kCurvePaletteSize = 12;
+/// The palette entry [0, paletteSize) a curve is drawn in: a hash (FNV-1a)
+/// of its curve key (scope, object id, parameter), so a curve keeps its
+/// colour whatever else is shown, in every session.
+int curvePaletteIndex(const TrackTarget& target, int paletteSize);
+
+/// The ticks of a value axis over `range`: the multiples inside it of the
+/// finest step of 1, 2 or 5 x 10^n that gives at most `maxTicks` of them,
+/// in increasing order (zero as 0, never -0); none for an empty range.
+std::vector<double> valueTicks(const CurveRange& range, int maxTicks);
+/// A value with its unit as the view shows it: "0.0031 1/m", "12 deg",
+/// "0.5" (no unit); 4 significant digits (`digits` to change that).
+std::string valueWithUnit(double value, std::string_view unit, int digits = 4);
+
 /// One component of one key of one track: what the curve view selects and drags.
 struct CurvePoint {
     TrackTarget target;
@@ -107,6 +140,13 @@ struct CurvePoint {
 
 /// Index of the point nearest `mouse` within `radiusPx`, or -1.
 int hitTestPoints(const std::vector<glm::dvec2>& points, glm::dvec2 mouse, double radiusPx);
+/// The point a click at `mouse` picks (ids[i] is points[i]'s): the nearest
+/// within `radiusPx` of the curve `preferred` (the inspector's parameter)
+/// when one is in reach, so that where a key of another curve lies on (or
+/// near) one of its keys the inspector's wins; else the nearest of all; -1
+/// when none is in reach.
+int pickCurvePoint(const std::vector<glm::dvec2>& points, const std::vector<CurvePoint>& ids,
+                   glm::dvec2 mouse, double radiusPx, const std::optional<TrackTarget>& preferred);
 /// Indices of the points inside the box with corners `a` and `b` (any two
 /// opposite corners), in order.
 std::vector<int> pointsInBox(const std::vector<glm::dvec2>& points, glm::dvec2 a, glm::dvec2 b);
@@ -194,6 +234,40 @@ std::string anchorLabel(const std::vector<CurvePoint>& points, std::optional<Sun
 bool allAnchoredTo(const Preset& preset, const std::vector<CurvePoint>& points,
                    std::optional<SunEvent> event);
 
+// --- typed time and value of the selected keys; the drag's readout -----------------------------
+
+/// A key's time as the Time field shows it: "19:52:00" (formatClock to the
+/// second, always with the seconds).
+std::string keyClockText(double hours);
+/// Reads a typed value: a finite number ("0.0031", "-2", "3e-4"), blanks
+/// around it allowed, optionally followed by `unit` ("0.0031 1/m", as the
+/// Value field shows it). False on anything else.
+bool parseKeyValue(std::string_view text, std::string_view unit, double& value);
+
+/// The point the Time and Value fields show: the first of `points` the
+/// preset has (its key's time and its component's value); nullopt for none.
+std::optional<CurvePoint> leadPointOf(const Preset& preset, const std::vector<CurvePoint>& points);
+/// Sets the lead point's key (leadPointOf) to `timeHours` [h] exactly and
+/// shifts the other keys of the points by the same amount (one shift for
+/// all, limited as a drag is: shiftCurvePoints). A key that follows the sun
+/// keeps its anchor and its offset changes (setKeyTime). Returns the lead
+/// key's time afterwards [h] (where the limits stopped it), NaN when none
+/// of the points exists.
+double setCurvePointsTime(Preset& preset, const std::vector<CurvePoint>& points, double timeHours);
+/// The undo step's name for that: "Set key time", "Set 3 key times".
+std::string setTimeLabel(const std::vector<CurvePoint>& points);
+/// Sets the component of every point of the lead point's parameter (the
+/// same scope and parameter: one unit) to `value`, clamped into the
+/// parameter's valid range; points of other parameters are left alone.
+/// Returns how many keys changed.
+int setCurvePointsValue(Preset& preset, const std::vector<CurvePoint>& points, double value);
+/// The undo step's name for that: "Set key value", "Set 3 key values".
+std::string setValueLabel(const Preset& preset, const std::vector<CurvePoint>& points);
+/// What a drag shows beside the cursor: the key's time and its
+/// component's value with the unit, "19:52:00  0.0031 1/m"; a key that
+/// follows the sun "sunset + 0:22 (19:52:00)  0.0031 1/m".
+std::string keyReadout(const TrackKey& key, int component, const ParamDesc& desc);
+
 /// A mouse drag on the timeline's canvas, from press to release.
 struct CurveDrag {
     enum class Kind { None, Keys, Box, Pan } kind = Kind::None;
@@ -222,6 +296,10 @@ struct CurveViewState {
     double snapHours = kDefaultSnapHours;
     /// The "Shift by" field's text ("+0:20"): what Enter shifts the selection by.
     std::string shiftText;
+    /// The value ranges curves are drawn in, by curve key, pinned by their
+    /// first drag or typed value and kept until the view is fit to the day
+    /// (resetRanges): a drag's sensitivity stays the same from drag to drag.
+    std::map<std::string, CurveRange> pinnedRanges;
     /// Where the curves were drawn last frame [px in the window]: x of
     /// time.startHours and time.endHours, y of the bottom (0) and top (1)
     /// of every curve's range (what a script's mouse drag aims at).
@@ -233,6 +311,24 @@ struct CurveViewState {
     bool isSelected(const CurvePoint& point) const;
     /// Forgets selected points whose key the preset no longer has.
     void validate(const Preset& preset);
+
+    /// The range `target`'s curve is drawn in: its pinned range when it has
+    /// one (widened on the side where a key lies outside it, to the keys'
+    /// padded range, curveRangeOf), else its keys' range.
+    CurveRange rangeOf(const Preset& preset, const TrackTarget& target) const;
+    /// Pins `target`'s range where it is drawn now (rangeOf), when the preset
+    /// has its track.
+    void pinRange(const Preset& preset, const TrackTarget& target);
+    /// Unpins every range (the view fit to the day, another preset).
+    void resetRanges() { pinnedRanges.clear(); }
 };
+
+/// The drag items of `points` with the ranges their curves are drawn in
+/// (view.rangeOf): what a drag in the view moves.
+std::vector<CurveDragItem> dragItemsOf(const Preset& preset, const std::vector<CurvePoint>& points,
+                                       const CurveViewState& view);
+/// keyPointsOf with the ranges the view draws the curves in.
+CurveKeyPoints keyPointsOf(const Preset& preset, const std::vector<TrackTarget>& targets,
+                           const CurveViewState& view);
 
 }  // namespace aerial::editor

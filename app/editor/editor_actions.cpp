@@ -262,7 +262,10 @@ void Editor::declareActions() {
         .key(GLFW_KEY_F)
         .keyOnlyWhen([this] { return edit_.timelineHovered; })
         .scriptable()
-        .does([this] { edit_.curves.time = fitView(); });
+        .does([this] {
+            edit_.curves.time = fitView();
+            edit_.curves.resetRanges();  // the curves' value ranges follow their keys again
+        });
 
     t.add("drop_to_ground", "Drop to ground", "Edit")
         .key(GLFW_KEY_END)

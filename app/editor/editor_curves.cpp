@@ -1,17 +1,24 @@
 // editor/editor_curves.cpp — the timeline's curve area: the inspector's
 // parameter and the curves toggled on beside it (the curve button in the
-// inspector), each normalised to its keys' range and colour-coded, with a
-// legend in the label column. Keys drag in time and value (one undo step
-// per drag, "Move 3 keys"; time snaps to other keys and the quarter hour
-// unless Shift is held; a few pixels of dead zone per axis keep a vertical
-// drag at its time); Ctrl+click adds a key to the selection; a drag on
-// empty curve area selects the keys in its box (Ctrl adds), a click there
-// sets the time; right-click a key for flat / automatic tangents, Follow
-// the sun (anchor the selection to sunrise, sunset, a dawn or a dusk where
-// it stands), Shift by and delete. A key that follows the sun wears rays
-// and reads "sunset + 0:20 (19:52)". Below the legend: the Snap step of
-// drags (1, 5, 15, 60 min) and the Shift field (Enter shifts the selected
-// keys by "+0:20", "-1:00", "-0.25", limited as a drag is). The wrap
+// inspector), each normalised to its keys' range (pinned by the first drag
+// until the view is fit again) and coloured by its target, with a legend
+// in the label column naming objects by their names ("Haze bank density")
+// and a value axis in the inspector's parameter's unit. Keys drag in time
+// and value (one undo step per drag, "Move 3 keys"; time snaps to other
+// keys and the quarter hour unless Shift is held; a few pixels of dead
+// zone per axis keep a vertical drag at its time; the key's time and value
+// show beside the cursor); where keys overlap, the inspector's parameter's
+// is picked; Ctrl+click adds a key to the selection; a drag on empty curve
+// area selects the keys in its box (Ctrl adds), a click there sets the
+// time; right-click a key for flat / automatic tangents, Follow the sun
+// (anchor the selection to sunrise, sunset, a dawn or a dusk where it
+// stands), Time, Value, Shift by and delete. A key that follows the sun
+// wears rays and reads "sunset + 0:20 (19:52)". Below the legend: the
+// selected key's Time and Value (typed: Enter sets them, one undo step;
+// several keys: the time moves them all, the value sets every key of the
+// same parameter), the Shift field (Enter shifts the selected keys by
+// "+0:20", "-1:00", "-0.25", limited as a drag is) and the Snap step of
+// drags (1, 5, 15, 60 min). The wrap
 // through midnight (after the last key and before the first) is dashed; a
 // track that holds its ends is drawn flat there, dimmed. The pure parts
 // (zoom, normalisation, hit-testing, moves, anchors, shifts) are in
@@ -33,11 +40,12 @@
 namespace aerial::editor {
 namespace {
 
-constexpr ImU32 kPalette[] = {IM_COL32(240, 190, 60, 255),  IM_COL32(80, 200, 235, 255),
-                              IM_COL32(235, 105, 200, 255), IM_COL32(125, 215, 95, 255),
-                              IM_COL32(245, 115, 70, 255),  IM_COL32(165, 135, 250, 255),
-                              IM_COL32(230, 230, 140, 255), IM_COL32(70, 190, 165, 255)};
-constexpr int kPaletteSize = int(sizeof kPalette / sizeof kPalette[0]);
+constexpr ImU32 kPalette[] = {
+    IM_COL32(240, 190, 60, 255),  IM_COL32(80, 200, 235, 255),  IM_COL32(235, 105, 200, 255),
+    IM_COL32(125, 215, 95, 255),  IM_COL32(245, 115, 70, 255),  IM_COL32(165, 135, 250, 255),
+    IM_COL32(230, 230, 140, 255), IM_COL32(70, 190, 165, 255),  IM_COL32(250, 150, 150, 255),
+    IM_COL32(120, 150, 255, 255), IM_COL32(200, 160, 110, 255), IM_COL32(180, 230, 200, 255)};
+static_assert(int(sizeof kPalette / sizeof kPalette[0]) == kCurvePaletteSize);
 constexpr float kPickRadiusPx = 6.0f;
 constexpr float kDeadZonePx = 3.0f;  ///< a drag moves a key along an axis once it leaves this
 constexpr ImU32 kSunRays = IM_COL32(255, 214, 110, 235);  ///< the rays of a key that follows the sun
@@ -73,6 +81,19 @@ std::string valueText(const glm::dvec3& v, int components) {
     return text;
 }
 
+/// `text` cut to fit `widthPx` [px], a '~' where it was cut (whole UTF-8 characters).
+std::string fitted(std::string text, float widthPx) {
+    if (ImGui::CalcTextSize(text.c_str()).x <= widthPx) return text;
+    while (!text.empty() && ImGui::CalcTextSize((text + "~").c_str()).x > widthPx) {
+        unsigned char last;
+        do {  // a continuation byte (10xxxxxx) goes with the rest of its character
+            last = static_cast<unsigned char>(text.back());
+            text.pop_back();
+        } while (!text.empty() && (last & 0xC0) == 0x80);
+    }
+    return text + "~";
+}
+
 /// "Civil dusk": a menu's capitalised event.
 std::string eventMenuLabel(SunEvent event) {
     std::string label = sunEventLabel(event);
@@ -92,11 +113,8 @@ void drawSunKeyRays(float x, float y, float radius) {
     }
 }
 
-unsigned curveColour(const EditState& edit, const TrackTarget& target) {
-    const auto& shown = edit.curves.shown;
-    const auto it = std::find(shown.begin(), shown.end(), target);
-    if (it == shown.end()) return kPalette[0];
-    return kPalette[(int(it - shown.begin()) + 1) % kPaletteSize];
+unsigned curveColour(const TrackTarget& target) {
+    return kPalette[curvePaletteIndex(target, kCurvePaletteSize)];
 }
 
 void drawCurveView(Document& doc, EditState& edit, Playback& playback, float labelX, float x0, float x1,
@@ -128,10 +146,10 @@ void drawCurveView(Document& doc, EditState& edit, Playback& playback, float lab
         d.track = findTrack(preset, target);
         d.components = std::clamp(ref->desc->components(), 1, 3);
         d.primary = primary && *primary == target;
-        d.colour = curveColour(edit, target);
+        d.colour = curveColour(target);
         if (d.track) {
             d.compiled = compileTrack(*d.track, d.components);
-            d.range = curveRangeOf(*d.track, *ref->desc);
+            d.range = view.rangeOf(preset, target);  // pinned by the first drag until the view is fit
         } else {
             double base[4];
             readBaseValue(preset, *ref, base);
@@ -152,6 +170,22 @@ void drawCurveView(Document& doc, EditState& edit, Playback& playback, float lab
         dl->AddRectFilled(ImVec2(x0, top), ImVec2(std::min(xOf(0.0), x1), bottom), IM_COL32(0, 0, 0, 70));
     if (view.time.endHours > 24.0)
         dl->AddRectFilled(ImVec2(std::max(xOf(24.0), x0), top), ImVec2(x1, bottom), IM_COL32(0, 0, 0, 70));
+
+    // The value axis of the inspector's parameter (else of the only curve): ticks in its unit.
+    const Drawn* axis = nullptr;
+    for (const Drawn& d : curves)
+        if (d.primary) axis = &d;
+    if (!axis && curves.size() == 1) axis = &curves.front();
+    if (axis && yBottom - yTop > 30.0f) {
+        const int maxTicks = std::clamp(int((yBottom - yTop) / 22.0f), 2, 8);
+        for (double v : valueTicks(axis->range, maxTicks)) {
+            const float y = yOf(axis->range.normalised(v));
+            dl->AddLine(ImVec2(x0, y), ImVec2(x1, y), IM_COL32(255, 255, 255, 16));
+            const std::string tick = valueWithUnit(v, axis->ref.desc->unit);
+            dl->AddText(ImVec2(x0 + 3.0f, y - ImGui::GetTextLineHeight()), IM_COL32(150, 150, 150, 210),
+                        tick.c_str());
+        }
+    }
 
     // Samples every few pixels; the part of a curve outside its first..last
     // key (the night between them) is dashed when it wraps, dimmed and flat
@@ -232,20 +266,19 @@ void drawCurveView(Document& doc, EditState& edit, Playback& playback, float lab
         }
     }
 
-    // --- legend: the label column, one line a curve (Snap and Shift below it, where they fit) ----
+    // --- legend: the label column, one line a curve (below it, where they fit: the selected
+    // key's Time and Value, then Shift and Snap) ---------------------------------------------------
     const float frameH = ImGui::GetFrameHeight();
-    const float controlsH = 2.0f * frameH + 6.0f;
-    const bool controlsFit = bottom - top >= controlsH + 16.0f && x0 - labelX >= 70.0f;
-    const float legendBottom = controlsFit ? bottom - controlsH : bottom;
+    const float rowH = frameH + 2.0f;
+    const int controlRows = x0 - labelX >= 120.0f ? std::clamp(int((bottom - top - 30.0f) / rowH), 0, 2) : 0;
+    const float controlsH = float(controlRows) * rowH + (controlRows > 0 ? 2.0f : 0.0f);
+    const float legendBottom = bottom - controlsH;
     float yLegend = top + 2.0f;
     int hoveredLegend = -1;
     for (std::size_t i = 0; i < curves.size() && yLegend + 13.0f <= legendBottom; ++i, yLegend += 14.0f) {
         const Drawn& d = curves[i];
-        std::string label(d.ref.desc->label);
-        if (d.ref.object >= 0)
-            label = std::string(addressPrefix(d.ref.scope())).substr(0, 3) + std::to_string(d.ref.object) +
-                    " " + label;
-        if (label.size() > 15) label = label.substr(0, 14) + "~";
+        // "Haze bank density": the object's name, not its index.
+        const std::string label = fitted(curveLabel(preset, d.target), x0 - labelX - 22.0f);
         dl->AddRectFilled(ImVec2(labelX + 4.0f, yLegend + 3.0f), ImVec2(labelX + 12.0f, yLegend + 11.0f),
                           d.colour);
         dl->AddText(ImVec2(labelX + 16.0f, yLegend),
@@ -255,8 +288,9 @@ void drawCurveView(Document& doc, EditState& edit, Playback& playback, float lab
     }
     if (hoveredLegend >= 0 && ImGui::IsWindowHovered()) {
         const Drawn& d = curves[std::size_t(hoveredLegend)];
-        ImGui::SetTooltip("%s\ndrawn from %.4g (bottom) to %.4g (top) %s%s%s", paramAddress(d.ref).c_str(),
-                          d.range.lo, d.range.hi, std::string(d.ref.desc->unit).c_str(),
+        ImGui::SetTooltip("%s\n%s\ndrawn from %.4g (bottom) to %.4g (top) %s%s%s",
+                          curveLabel(preset, d.target).c_str(), paramAddress(d.ref).c_str(), d.range.lo,
+                          d.range.hi, std::string(d.ref.desc->unit).c_str(),
                           d.components > 1 ? "\ncomponents x, y, z from bright to dark" : "",
                           d.track && !d.track->wrap ? "\nholds its first and last values" : "");
     }
@@ -268,7 +302,8 @@ void drawCurveView(Document& doc, EditState& edit, Playback& playback, float lab
                            ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight);
     const bool hovered = ImGui::IsItemHovered();
     const glm::dvec2 mouse(io.MousePos.x, io.MousePos.y);
-    const int hit = hovered ? hitTestPoints(points, mouse, kPickRadiusPx) : -1;
+    // Where keys overlap, the inspector's parameter's is picked.
+    const int hit = hovered ? pickCurvePoint(points, ids, mouse, kPickRadiusPx, primary) : -1;
     auto selectPrimaryKey = [&](const CurvePoint& p) {  // the track row and Delete / Copy follow the curve
         if (primary && p.target == *primary) edit.selectedKey = p.key;
     };
@@ -288,7 +323,9 @@ void drawCurveView(Document& doc, EditState& edit, Playback& playback, float lab
             selectPrimaryKey(p);
             if (view.isSelected(p)) {
                 drag.kind = CurveDrag::Kind::Keys;
-                drag.items = dragItemsOf(preset, view.selected);
+                // The curves keep the ranges they are drawn in now, this drag and the next.
+                for (const CurvePoint& s : view.selected) view.pinRange(preset, s.target);
+                drag.items = dragItemsOf(preset, view.selected, view);
                 for (std::size_t i = 0; i < drag.items.size(); ++i)
                     if (drag.items[i].point == p) drag.lead = int(i);
             }
@@ -333,6 +370,15 @@ void drawCurveView(Document& doc, EditState& edit, Playback& playback, float lab
                 drag.appliedHours = dt;
                 drag.appliedNormalised = dn;
             }
+            // The readout beside the cursor: the dragged key's time and value as they are now.
+            if (drag.timeMoved || drag.valueMoved) {
+                const CurvePoint& p = lead.point;
+                const Track* track = findTrack(doc.preset(), p.target);
+                const ParamDesc* desc = findParam(p.target.scope, p.target.param);
+                if (track && desc && p.key < int(track->keys.size()))
+                    ImGui::SetTooltip(
+                        "%s", keyReadout(track->keys[std::size_t(p.key)], p.component, *desc).c_str());
+            }
         } else {
             doc.closeMerge();
             drag = CurveDrag{};
@@ -371,6 +417,46 @@ void drawCurveView(Document& doc, EditState& edit, Playback& playback, float lab
         doc.apply(shiftLabel(picked), "", [&](Preset& p) { shiftCurvePoints(p, picked, dt); });
         return true;
     };
+    // The selected keys' Time and Value fields: what they show (the lead key's) and what Enter does.
+    const std::optional<CurvePoint> lead = leadPointOf(preset, view.selected);
+    const ParamDesc* leadDesc = lead ? findParam(lead->target.scope, lead->target.param) : nullptr;
+    std::string timeText, valueField;
+    if (lead && leadDesc) {
+        const TrackKey& k = findTrack(preset, lead->target)->keys[std::size_t(lead->key)];
+        timeText = keyClockText(k.timeHours);
+        valueField = valueWithUnit(k.value[lead->component], leadDesc->unit, 6);
+    }
+    auto typeTime = [&](const std::string& text) {  // false when nothing is selected or no time typed
+        double t = 0.0;
+        const std::vector<CurvePoint> picked = view.selected;
+        if (!lead || !parseClock(text, t)) return false;
+        doc.apply(setTimeLabel(picked), "", [&](Preset& p) { setCurvePointsTime(p, picked, t); });
+        return true;
+    };
+    auto typeValue = [&](const std::string& text) {
+        double v = 0.0;
+        const std::vector<CurvePoint> picked = view.selected;
+        if (!lead || !leadDesc || !parseKeyValue(text, leadDesc->unit, v)) return false;
+        for (const CurvePoint& p : picked) view.pinRange(doc.preset(), p.target);  // the curve stays put
+        doc.apply(setValueLabel(doc.preset(), picked), "",
+                  [&](Preset& p) { setCurvePointsValue(p, picked, v); });
+        return true;
+    };
+    const int selectedKeys = keyCountOf(view.selected);
+    const std::string timeHelp =
+        selectedKeys > 1
+            ? "The first selected key's time (HH:MM:SS); Enter moves it there and the other " +
+                  std::to_string(selectedKeys - 1) +
+                  " selected keys with it, as a drag does (a minute from keys that do not move)"
+            : std::string(
+                  "The selected key's time (HH:MM:SS or hours); Enter moves it there, a minute from "
+                  "its neighbours at most. A key that follows the sun keeps its event: its offset "
+                  "changes");
+    const std::string valueHelp =
+        std::string("The selected key's value") +
+        (leadDesc && !leadDesc->unit.empty() ? " [" + std::string(leadDesc->unit) + "]" : std::string()) +
+        "; Enter sets it (clamped into the valid range)" +
+        (selectedKeys > 1 ? ", on every selected key of the same parameter" : "");
     double typedShift = 0.0;
     const bool shiftUnreadable = !view.shiftText.empty() && !parseShiftHours(view.shiftText, typedShift);
     const char* shiftHelp =
@@ -416,6 +502,15 @@ void drawCurveView(Document& doc, EditState& edit, Playback& playback, float lab
             ImGui::SetTooltip(
                 "Anchor the keys to a moment of the sun where they stand (\"sunset + 0:20\"): the curve "
                 "stays as it is, and the keys move with the sun when the date or the place changes");
+        ImGui::SetNextItemWidth(120.0f);
+        if (ImGui::InputText("Time", &timeText, ImGuiInputTextFlags_EnterReturnsTrue) && typeTime(timeText))
+            ImGui::CloseCurrentPopup();
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", timeHelp.c_str());
+        ImGui::SetNextItemWidth(120.0f);
+        if (ImGui::InputText("Value", &valueField, ImGuiInputTextFlags_EnterReturnsTrue) &&
+            typeValue(valueField))
+            ImGui::CloseCurrentPopup();
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", valueHelp.c_str());
         if (shiftUnreadable) ImGui::PushStyleColor(ImGuiCol_FrameBg, ImVec4(0.55f, 0.15f, 0.12f, 1.0f));
         ImGui::SetNextItemWidth(90.0f);
         if (ImGui::InputTextWithHint("Shift by", "+0:20", &view.shiftText,
@@ -439,30 +534,56 @@ void drawCurveView(Document& doc, EditState& edit, Playback& playback, float lab
         ImGui::EndPopup();
     }
 
-    // --- Snap and Shift below the legend -------------------------------------------------------
-    if (controlsFit) {
-        const float width = x0 - labelX - 10.0f;
+    // --- below the legend: Time | Value, then Shift | Snap, the rows that fit ----------------------
+    if (controlRows > 0) {
+        const float width = x0 - labelX - 10.0f, gap = 4.0f;
+        const float timeW = std::min(ImGui::CalcTextSize("00:00:00").x + 12.0f, 0.45f * width);
+        const float snapW = std::min(ImGui::CalcTextSize("60 min").x + frameH + 10.0f, 0.45f * width);
         ImGui::PushID("##curvecontrols");
-        ImGui::SetCursorScreenPos(ImVec2(labelX + 4.0f, bottom - controlsH + 2.0f));
-        ImGui::SetNextItemWidth(width);
-        if (ImGui::BeginCombo("##snap", ("snap " + snapLabel(snapMinutes)).c_str())) {
-            for (int minutes : kSnapStepsMinutes)
-                if (ImGui::Selectable(snapLabel(minutes).c_str(), minutes == snapMinutes))
-                    view.snapHours = minutes / 60.0;
-            ImGui::EndCombo();
+        // Row `i`'s left field (`leftW` wide) or its right one (the rest); false past the rows that fit.
+        auto place = [&](int i, bool right, float leftW) {
+            if (i >= controlRows) return false;
+            const float y = bottom - controlsH + 2.0f + float(i) * rowH;
+            ImGui::SetCursorScreenPos(ImVec2(labelX + 4.0f + (right ? leftW + gap : 0.0f), y));
+            ImGui::SetNextItemWidth(right ? width - leftW - gap : leftW);
+            return true;
+        };
+        ImGui::BeginDisabled(!lead);
+        if (place(0, false, timeW)) {
+            if (ImGui::InputTextWithHint("##keytime", "time", &timeText,
+                                         ImGuiInputTextFlags_EnterReturnsTrue))
+                typeTime(timeText);
+            if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+                ImGui::SetTooltip("%s", lead ? timeHelp.c_str() : "Select a key to type its time");
         }
-        if (ImGui::IsItemHovered())
-            ImGui::SetTooltip(
-                "Dragged keys snap to other keys and to this step (a key that follows the sun: its "
-                "offset from the event); hold Shift to move them freely");
-        ImGui::SetCursorScreenPos(ImVec2(labelX + 4.0f, bottom - frameH - 2.0f));
-        ImGui::SetNextItemWidth(width);
-        if (shiftUnreadable) ImGui::PushStyleColor(ImGuiCol_FrameBg, ImVec4(0.55f, 0.15f, 0.12f, 1.0f));
-        if (ImGui::InputTextWithHint("##shift", "shift +0:20", &view.shiftText,
-                                     ImGuiInputTextFlags_EnterReturnsTrue))
-            shiftSelection();
-        if (shiftUnreadable) ImGui::PopStyleColor();
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", shiftHelp);
+        if (place(0, true, timeW)) {
+            if (ImGui::InputTextWithHint("##keyvalue", "value", &valueField,
+                                         ImGuiInputTextFlags_EnterReturnsTrue))
+                typeValue(valueField);
+            if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+                ImGui::SetTooltip("%s", lead ? valueHelp.c_str() : "Select a key to type its value");
+        }
+        ImGui::EndDisabled();
+        if (place(1, false, width - snapW - gap)) {
+            if (shiftUnreadable) ImGui::PushStyleColor(ImGuiCol_FrameBg, ImVec4(0.55f, 0.15f, 0.12f, 1.0f));
+            if (ImGui::InputTextWithHint("##shift", "shift +0:20", &view.shiftText,
+                                         ImGuiInputTextFlags_EnterReturnsTrue))
+                shiftSelection();
+            if (shiftUnreadable) ImGui::PopStyleColor();
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", shiftHelp);
+        }
+        if (place(1, true, width - snapW - gap)) {
+            if (ImGui::BeginCombo("##snap", snapLabel(snapMinutes).c_str())) {
+                for (int minutes : kSnapStepsMinutes)
+                    if (ImGui::Selectable(snapLabel(minutes).c_str(), minutes == snapMinutes))
+                        view.snapHours = minutes / 60.0;
+                ImGui::EndCombo();
+            }
+            if (ImGui::IsItemHovered())
+                ImGui::SetTooltip(
+                    "Snap: dragged keys snap to other keys and to this step (a key that follows the sun: "
+                    "its offset from the event); hold Shift to move them freely");
+        }
         ImGui::PopID();
     }
 
@@ -476,21 +597,22 @@ void drawCurveView(Document& doc, EditState& edit, Playback& playback, float lab
                 if (d.target == p.target && d.track && p.key < int(d.track->keys.size())) {
                     const TrackKey& k = d.track->keys[std::size_t(p.key)];
                     ImGui::SetTooltip(
-                        "%s\n%s  %s%s\nDrag: time and value (snaps to %s; Shift: no snapping); "
-                        "Ctrl+click: add to the selection; right-click: tangent, follow the sun, shift, "
-                        "delete",
-                        std::string(d.ref.desc->label).c_str(), keyTimeText(k).c_str(),
-                        valueText(k.value, d.components).c_str(), k.flat ? "  (flat)" : "",
-                        snapLabel(snapMinutes).c_str());
+                        "%s\n%s  %s %s%s\nDrag: time and value (snaps to %s; Shift: no snapping); "
+                        "Ctrl+click: add to the selection; right-click: tangent, follow the sun, time, "
+                        "value, shift, delete",
+                        curveLabel(preset, d.target).c_str(), keyTimeText(k).c_str(),
+                        valueText(k.value, d.components).c_str(), std::string(d.ref.desc->unit).c_str(),
+                        k.flat ? "  (flat)" : "", snapLabel(snapMinutes).c_str());
                 }
         } else if (edit.selectedParam) {
             double v[4];
             const double t = wrapHours(view.time.tOf(mouse.x, x0, x1));
             readValueAt(preset, *edit.selectedParam, t, v);
             ImGui::SetTooltip(
-                "%s  %s\nClick: go to this time; drag: select the keys in a box (Ctrl adds)",
+                "%s  %s %s\nClick: go to this time; drag: select the keys in a box (Ctrl adds)",
                 formatClock(t, ClockResolution::Minutes).c_str(),
-                valueText(glm::dvec3(v[0], v[1], v[2]), edit.selectedParam->desc->components()).c_str());
+                valueText(glm::dvec3(v[0], v[1], v[2]), edit.selectedParam->desc->components()).c_str(),
+                std::string(edit.selectedParam->desc->unit).c_str());
         }
     }
 }

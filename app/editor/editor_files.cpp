@@ -106,6 +106,7 @@ void Editor::runPending() {
             select({Selection::Kind::Fog, -1});
             edit_.selectedParam.reset();
             edit_.selectedKey = -1;
+            edit_.curves.resetRanges();
             setStatus("New preset (the built-in default)");
             break;
         case Pending::Open:
@@ -127,6 +128,7 @@ bool Editor::openPreset(const std::string& path) {
     select({Selection::Kind::Fog, -1});
     edit_.selectedParam.reset();
     edit_.selectedKey = -1;
+    edit_.curves.resetRanges();  // another preset's curves: their ranges follow their keys
     std::string status = "Opened " + path;
     if (!result.warnings.empty()) {
         status += " (";

@@ -1,16 +1,21 @@
 // editor/editor_script_curves.cpp — the script commands of the timeline's
-// curve view: show a curve, select key points (one, or a box in time and
-// normalised value), move them as a drag does (one undo step, snapped unless
-// told not to; curve_snap sets the step), shift them by a typed time
-// (curve_shift "+0:20", the Shift field), anchor them to a moment of the sun
-// (curve_anchor sunset, the key menu's Follow the sun), flat tangents, zoom
-// and pan; print a track's keys as the view reads them ("sunset + 0:20
-// (19:52)") and the day's sun events; and real mouse drags over the curve
+// curve view: show a curve, pick the inspector's parameter (inspect), select
+// key points (one, or a box in time and normalised value), move them as a
+// drag does (one undo step, snapped unless told not to; curve_snap sets the
+// step), shift them by a typed time (curve_shift "+0:20", the Shift field),
+// anchor them to a moment of the sun (curve_anchor sunset, the key menu's
+// Follow the sun), type the selected keys' time and value (curve_time
+// 19:52:00, curve_value 0.0031: the Time and Value fields), flat tangents,
+// zoom and pan; print a track's keys as the view reads them ("sunset + 0:20
+// (19:52)"), what the Time and Value fields show, the legend (names and
+// colours) and the day's sun events; and real mouse drags over the curve
 // area (curve_drag, curve_drag_box: ImGui's mouse, frame by frame). Entries
 // of the script command table (see editor_script.cpp) over the functions the
 // curve view uses (curve_view.hpp).
 #include "editor.hpp"
 #include "script_args.hpp"
+
+#include <aerial/clock.hpp>
 
 #include <cstdio>
 
@@ -86,6 +91,16 @@ void Editor::declareCurveScriptCommands() {
              if (!edit_.curves.isSelected(point)) edit_.curves.selected.push_back(point);
              return true;
          }});
+    table.add({"inspect", 1, 1, "inspect KEY",
+               "select KEY's row in the inspector without changing it: the timeline's track and the curve "
+               "view's own curve (drawn on top, its keys picked first where keys overlap, its value axis)",
+               [this](W w, E error) {
+                   const std::optional<ParamRef> ref = parseParamAddress(doc_.preset(), w[1], &error);
+                   if (!ref) return false;
+                   if (!(edit_.selectedParam && *edit_.selectedParam == *ref)) edit_.selectedKey = -1;
+                   edit_.selectedParam = ref;
+                   return true;
+               }});
     table.add({"curve_box", 2, 4, "curve_box FROM TO [LO HI]",
                "select the keys of the shown curves from time FROM to TO and, optionally, from LO to HI of "
                "each curve's height (0 bottom, 1 top), as a drag on empty curve area does",
@@ -101,7 +116,7 @@ void Editor::declareCurveScriptCommands() {
                        const TrackTarget primary = trackTargetOf(doc_.preset(), *edit_.selectedParam);
                        if (!edit_.curves.isShown(primary)) targets.push_back(primary);
                    }
-                   const CurveKeyPoints points = keyPointsOf(doc_.preset(), targets);
+                   const CurveKeyPoints points = keyPointsOf(doc_.preset(), targets, edit_.curves);
                    edit_.curves.selected.clear();
                    for (int i : pointsInBox(points.timeValue, {from, lo}, {to, hi}))
                        edit_.curves.selected.push_back(points.ids[std::size_t(i)]);
@@ -119,7 +134,11 @@ void Editor::declareCurveScriptCommands() {
                        error = "curve_move: curve_move DT DV [free]";
                        return false;
                    }
-                   const std::vector<CurveDragItem> items = dragItemsOf(doc_.preset(), edit_.curves.selected);
+                   // As a drag: the curves keep the ranges they are drawn in (pinned).
+                   for (const CurvePoint& p : edit_.curves.selected)
+                       edit_.curves.pinRange(doc_.preset(), p.target);
+                   const std::vector<CurveDragItem> items =
+                       dragItemsOf(doc_.preset(), edit_.curves.selected, edit_.curves);
                    if (items.empty()) {
                        error = "curve_move: no keys selected";
                        return false;
@@ -179,6 +198,83 @@ void Editor::declareCurveScriptCommands() {
                               [&](Preset& p) { applied = shiftCurvePoints(p, picked, dt); });
                    edit_.curves.validate(doc_.preset());
                    std::printf("curve_shift: %s by %.6g h\n", shiftLabel(picked).c_str(), applied);
+                   return true;
+               }});
+    table.add(
+        {"curve_time", 1, 1, "curve_time TIME",
+         "type TIME (HH:MM:SS, HH:MM or hours) into the curve view's Time field: the first selected "
+         "key goes there, the other selected keys shift with it, limited as a drag is (keys that "
+         "follow the sun keep their event, their offset changes); one undo step; prints "
+         "\"curve_time: Set key time, now HH:MM:SS\"",
+         [this](W w, E error) {
+             double t = 0.0;
+             if (!parseClock(w[1], t)) {
+                 error = "curve_time: \"" + w[1] + "\" is not a time of day (19:52:00, 19:52, 19.5)";
+                 return false;
+             }
+             const std::vector<CurvePoint> picked = edit_.curves.selected;
+             if (!leadPointOf(doc_.preset(), picked)) {
+                 error = "curve_time: no keys selected";
+                 return false;
+             }
+             double now = 0.0;
+             doc_.apply(setTimeLabel(picked), "", [&](Preset& p) { now = setCurvePointsTime(p, picked, t); });
+             edit_.curves.validate(doc_.preset());
+             std::printf("curve_time: %s, now %s\n", setTimeLabel(picked).c_str(), keyClockText(now).c_str());
+             return true;
+         }});
+    table.add({"curve_value", 1, 1, "curve_value VALUE",
+               "type VALUE (a number, the unit optional) into the curve view's Value field: every selected "
+               "key of the first selected key's parameter gets it, clamped into the valid range; one undo "
+               "step; prints \"curve_value: Set key value (N changed)\"",
+               [this](W w, E error) {
+                   const std::vector<CurvePoint> picked = edit_.curves.selected;
+                   const std::optional<CurvePoint> lead = leadPointOf(doc_.preset(), picked);
+                   if (!lead) {
+                       error = "curve_value: no keys selected";
+                       return false;
+                   }
+                   const ParamDesc& desc = *findParam(lead->target.scope, lead->target.param);
+                   double v = 0.0;
+                   if (!parseKeyValue(w[1], desc.unit, v)) {
+                       error = "curve_value: \"" + w[1] + "\" is not a number";
+                       return false;
+                   }
+                   for (const CurvePoint& p : picked) edit_.curves.pinRange(doc_.preset(), p.target);
+                   const std::string label = setValueLabel(doc_.preset(), picked);
+                   int changed = 0;
+                   doc_.apply(label, "", [&](Preset& p) { changed = setCurvePointsValue(p, picked, v); });
+                   std::printf("curve_value: %s (%d changed)\n", label.c_str(), changed);
+                   return true;
+               }});
+    table.add({"print_curve_fields", 0, 0, "print_curve_fields",
+               "prints what the curve view's Time and Value fields show for the selection: \"curve_fields "
+               "TIME VALUE [UNIT]\" (\"curve_fields - -\" when no key is selected)",
+               [this](W, E) {
+                   const std::optional<CurvePoint> lead = leadPointOf(doc_.preset(), edit_.curves.selected);
+                   if (!lead) {
+                       std::printf("curve_fields - -\n");
+                       return true;
+                   }
+                   const TrackKey& k = findTrack(doc_.preset(), lead->target)->keys[std::size_t(lead->key)];
+                   const ParamDesc& desc = *findParam(lead->target.scope, lead->target.param);
+                   std::printf("curve_fields %s %s\n", keyClockText(k.timeHours).c_str(),
+                               valueWithUnit(k.value[lead->component], desc.unit, 6).c_str());
+                   return true;
+               }});
+    table.add({"print_legend", 0, 0, "print_legend",
+               "prints a line per curve the view shows (those toggled on, then the inspector's parameter): "
+               "\"legend KEY PALETTE_INDEX NAME\", NAME as the legend reads it (\"Haze bank density\")",
+               [this](W, E) {
+                   std::vector<TrackTarget> targets = edit_.curves.shown;
+                   if (edit_.selectedParam) {
+                       const TrackTarget primary = trackTargetOf(doc_.preset(), *edit_.selectedParam);
+                       if (!edit_.curves.isShown(primary)) targets.push_back(primary);
+                   }
+                   for (const TrackTarget& t : targets)
+                       std::printf("legend %s %d %s\n", curveKey(t).c_str(),
+                                   curvePaletteIndex(t, kCurvePaletteSize),
+                                   curveLabel(doc_.preset(), t).c_str());
                    return true;
                }});
     table.add(
@@ -259,10 +355,9 @@ void Editor::declareCurveScriptCommands() {
                        error = "curve_drag: no key of " + w[1] + " at " + w[2];
                        return false;
                    }
-                   const ParamDesc& desc = *findParam(target->scope, target->param);
                    const TrackKey& k = track.keys[std::size_t(key)];
-                   const glm::dvec2 at =
-                       pixelOf(k.timeHours, curveRangeOf(track, desc).normalised(k.value.x));
+                   const glm::dvec2 at = pixelOf(
+                       k.timeHours, edit_.curves.rangeOf(doc_.preset(), *target).normalised(k.value.x));
                    const bool shift = w.size() == 6 && w[5] == "shift",
                               ctrl = w.size() == 6 && w[5] == "ctrl";
                    queueDrag(at, at + glm::dvec2(dx, dy), ctrl, shift, 8);

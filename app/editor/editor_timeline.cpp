@@ -189,7 +189,7 @@ void drawTimeline(Document& doc, EditState& edit, Playback& playback, const Acti
     }
 
     // --- canvas: ruler, summary row, track row, curve ----------------------------
-    const float labelW = 110.0f;
+    const float labelW = 190.0f;  // the curves' legend and the typed Time and Value fields
     const ImVec2 canvasPos = ImGui::GetCursorScreenPos();
     const ImVec2 avail = ImGui::GetContentRegionAvail();
     if (avail.x < labelW + 40.0f || avail.y < 50.0f) return;
@@ -255,18 +255,21 @@ void drawTimeline(Document& doc, EditState& edit, Playback& playback, const Acti
     }
     dl->PopClipRect();
     dl->AddText(ImVec2(canvasPos.x + 4.0f, ySummary + 2.0f), IM_COL32(170, 170, 170, 255), "All keys");
-    std::string rowLabel =
-        edit.selectedParam ? std::string(edit.selectedParam->desc->label) : std::string("(no parameter)");
-    if (rowLabel.size() > 16) {
-        rowLabel.resize(15);
-        rowLabel += '~';
+    std::string rowLabel = edit.selectedParam ? curveLabel(preset, target) : std::string("(no parameter)");
+    if (rowLabel.size() > 25) {  // "Haze bank density"; cut before a whole UTF-8 character
+        std::size_t cut = 24;
+        while (cut > 0 && (static_cast<unsigned char>(rowLabel[cut]) & 0xC0) == 0x80) --cut;
+        rowLabel = rowLabel.substr(0, cut) + "~";
     }
     dl->AddText(ImVec2(canvasPos.x + 4.0f, yTrack + 2.0f), IM_COL32(230, 200, 120, 255), rowLabel.c_str());
 
     // Ruler: scrub.
     ImGui::SetCursorScreenPos(ImVec2(x0, yRuler));
     ImGui::InvisibleButton("##ruler", ImVec2(x1 - x0, rulerH));
-    if (ImGui::IsItemHovered() && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) view = fitView();
+    if (ImGui::IsItemHovered() && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) {
+        view = fitView();
+        edit.curves.resetRanges();  // the curves' value ranges follow their keys again
+    }
     if (ImGui::IsItemActive() && !panning) {
         playback.timeHours = tOf(ImGui::GetIO().MousePos.x);
         playback.playing = false;

@@ -45,9 +45,10 @@ void drawTimeline(Document& doc, EditState& edit, Playback& playback, const Acti
 /// `labelX` to x0; picks, drags and box-selects keys, sets the time on a click.
 void drawCurveView(Document& doc, EditState& edit, Playback& playback, float labelX, float x0, float x1,
                    float top, float bottom);
-/// The colour (ImU32) a curve is drawn in: by its place among the shown
-/// curves, amber for the inspector's parameter when it is not among them.
-unsigned curveColour(const EditState& edit, const TrackTarget& target);
+/// The colour (ImU32) a curve is drawn in: a palette entry chosen by its
+/// target alone (curvePaletteIndex), so showing or hiding another curve
+/// recolours none.
+unsigned curveColour(const TrackTarget& target);
 /// The mark of a key that follows the sun (TrackKey::anchor): eight short
 /// rays around its point at (x, y) [px] of `radius` [px], in the current
 /// window (the curve view and the timeline's track row draw it).

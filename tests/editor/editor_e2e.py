@@ -6,7 +6,7 @@ file code paths. Python standard library only.
     editor_e2e.py --editor PATH --source-dir DIR --work-dir DIR CASE
 
 CASE: workflow | undo_redo | crash_recovery | screenshot | exposure | errors | prompts | session |
-      cloud_volume | autokey | placement | curves | curves_mouse | sun_anchor
+      cloud_volume | autokey | placement | curves | curves_mouse | sun_anchor | curve_edit
 
 Every case FAILS (never skips) when the editor cannot start under Xvfb.
 """
@@ -1091,6 +1091,146 @@ quit
     print("OK: sun_anchor")
 
 
+def near_duplicate_keys(preset):
+    """Pairs of keys of one track under a minute apart, as (param, t0, t1): the keys with a time_h."""
+    found = []
+    for t in preset.get("tracks", []):
+        times = sorted(k["time_h"] for k in t["keys"] if "time_h" in k)
+        found += [(t["param"], a, b) for a, b in zip(times, times[1:]) if b - a < 1.0 / 60.0]
+    return found
+
+
+def clock_hms(hours):
+    """hours as HH:MM:SS, rounded to the second."""
+    seconds = int(round(hours * 3600.0))
+    return "%02d:%02d:%02d" % (seconds // 3600, seconds // 60 % 60, seconds % 60)
+
+
+def case_curve_edit(env):
+    """A precise curve editor (1280x720). Where Valley fog's density key lies 5 minutes
+    (4 px) from the inspector's fog density key, a mouse drag pressed on Valley fog's
+    key moves the fog density key and leaves Valley fog alone; the legend names the
+    volume ("Valley fog density"), its colour stays when another curve is shown. The
+    shipped preset's 19:30 fog key typed to 19:52:00 and 0.0031 (one undo step each)
+    saves exactly that key changed, with no near-duplicate keys; the exposure key
+    that follows the sunset typed a quarter hour later keeps its anchor, its offset
+    changed."""
+    source = load_json(os.path.join(env.source, "presets", "hazy_sunset.json"))
+    overlap = json.loads(json.dumps(source))
+    overlap["volumes"][0]["name"] = "Valley fog"
+    volume_id = overlap["volumes"][0]["id"]
+    # Both curves drawn from their keys' range: equal heights, the volume's middle key 5 min later.
+    for t in overlap["tracks"]:
+        if t["param"] == "fog.density_per_m" and "volume" not in t:
+            t["keys"] = [{"time_h": 6.0, "value": 0.001}, {"time_h": 8.0, "value": 0.002},
+                         {"time_h": 12.0, "value": 0.0015}]
+        if t.get("volume") == volume_id and t["param"] == "density_per_m":
+            t["keys"] = [{"time_h": 6.0, "value": 0.01}, {"time_h": 8.0 + 5.0 / 60.0, "value": 0.02},
+                         {"time_h": 12.0, "value": 0.015}]
+    opened = env.path("overlap.json")
+    with open(opened, "w") as f:
+        json.dump(overlap, f, indent=2)
+    picked = env.path("picked.json")
+    p = env.run(env.script("curve_pick.txt", """
+open {opened}
+inspect fog.density_per_m
+curve volume[0].density_per_m on
+wait_frames 2
+print_legend
+curve_drag volume[0].density_per_m 8:05 0 -30
+save {picked}
+curve clouds.coverage on
+print_legend
+print_sun
+print_keys exposure.compensation_ev
+quit
+""".format(opened=opened, picked=picked)), window="1280x720")
+    out = p.stdout
+    legends = printed_blocks(out, "print_legend")
+    check(len(legends) == 2, "print_legend ran %d times, not 2:\n%s" % (len(legends), out))
+    names = [dict((line.split()[1], (int(line.split()[2]), " ".join(line.split()[3:]))) for line in block)
+             for block in legends]
+    volume_key = "volume:%s:density_per_m" % volume_id
+    check(names[0].get(volume_key, (0, ""))[1] == "Valley fog density",
+          "the legend does not name the volume: %s" % names[0])
+    check(names[0].get("fog.density_per_m", (0, ""))[1] == "Fog density", "fog density's legend: %s" % names[0])
+    check(all(names[1][k][0] == names[0][k][0] for k in names[0]),
+          "showing another curve recoloured one: %s -> %s" % (names[0], names[1]))
+    # The drag pressed on Valley fog's key: the inspector's key (4 px away) went up, Valley fog stayed.
+    saved = load_json(picked)
+    fog = [(k["time_h"], key_value(k)) for k in track(saved, "fog.density_per_m")["keys"]]
+    valley = [(k["time_h"], key_value(k)) for k in track(saved, "density_per_m", volume_id)["keys"]]
+    check(valley == [(6.0, 0.01), (8.0 + 5.0 / 60.0, 0.02), (12.0, 0.015)],
+          "the overlaid curve's key moved: %s" % valley)
+    check(len(fog) == 3 and fog[0] == (6.0, 0.001) and fog[2] == (12.0, 0.0015) and fog[1][0] == 8.0
+          and fog[1][1] > 0.002, "the inspector's key was not the one dragged: %s" % fog)
+    sunset = sun_events(printed_blocks(out, "print_sun")[0])["sunset"]
+    sunset_keys = [t for t, text in printed_keys(printed_blocks(out, "print_keys")[0]) if text.startswith("sunset ")]
+    check(len(sunset_keys) == 1, "hazy_sunset has no exposure key that follows the sunset: %s" % out)
+
+    # Typed time and value on the shipped preset; then a key that follows the sunset.
+    shipped = os.path.join(env.source, "presets", "hazy_sunset.json")
+    typed, anchored = env.path("typed.json"), env.path("typed_anchored.json")
+    anchored_to = clock_hms(sunset_keys[0] + 0.25)  # a quarter hour later, to the second
+    p = env.run(env.script("curve_type.txt", """
+open {shipped}
+curve fog.density_per_m on
+curve_select fog.density_per_m 19:30
+print_curve_fields
+curve_time 19:52:00
+expect_undo 1
+curve_value 0.0031
+expect_undo 2
+print_curve_fields
+save {typed}
+curve_select none
+curve_select exposure.compensation_ev {sunset_key}
+print_curve_fields
+curve_time {anchored_to}
+print_curve_fields
+save {anchored}
+quit
+""".format(shipped=shipped, typed=typed, anchored=anchored, sunset_key="%.9f" % sunset_keys[0],
+           anchored_to=anchored_to)), window="1280x720")
+    out = p.stdout
+    fields = [line for line in out.splitlines() if line.startswith("curve_fields ")]
+    check(len(fields) == 4, "print_curve_fields ran %d times, not 4:\n%s" % (len(fields), out))
+    check(fields[0] == "curve_fields 19:30:00 0.0018 1/m", "the fields before: %s" % fields[0])
+    check(fields[1] == "curve_fields 19:52:00 0.0031 1/m", "the fields after typing: %s" % fields[1])
+    check(fields[2].startswith("curve_fields %s " % clock_hms(sunset_keys[0])),
+          "the sunset key's fields: %s" % fields[2])
+    check(fields[3].startswith("curve_fields %s " % anchored_to), "the sunset key typed: %s" % fields[3])
+    check("curve_time: Set key time, now 19:52:00" in out, "the time was not typed:\n" + out)
+    check("curve_value: Set key value (1 changed)" in out, "the value was not typed:\n" + out)
+
+    # Exactly that key changed: the same keys elsewhere, every other track as shipped.
+    before, after = load_json(shipped), load_json(typed)
+    was, now = track(before, "fog.density_per_m")["keys"], track(after, "fog.density_per_m")["keys"]
+    check(len(now) == len(was), "fog density has %d keys, not %d: %s" % (len(now), len(was), now))
+    changed = [(a, b) for a, b in zip(was, now) if a != b]
+    check(len(changed) == 1 and changed[0][0]["time_h"] == 19.5, "keys changed: %s" % changed)
+    key = changed[0][1]
+    check(abs(key["time_h"] - (19.0 + 52.0 / 60.0)) < 1e-9 and key_value(key) == 0.0031,
+          "the typed key was saved as %s" % key)
+    others = lambda preset: [t for t in preset["tracks"] if t["param"] != "fog.density_per_m" or "volume" in t]
+    check(others(after) == others(before), "other tracks changed")
+    check(near_duplicate_keys(after) == [], "near-duplicate keys: %s" % near_duplicate_keys(after))
+
+    # The sunset key typed to sunset + 0:15: still follows the sunset, its offset changed, no time_h.
+    exposure = track(load_json(anchored), "exposure.compensation_ev")["keys"]
+    was = track(before, "exposure.compensation_ev")["keys"]
+    moved = [(a, b) for a, b in zip(was, exposure) if a != b]
+    check(len(exposure) == len(was) and len(moved) == 1 and moved[0][0].get("anchor") == "sunset",
+          "exposure keys changed: %s" % moved)
+    key = moved[0][1]
+    h, m, sec = map(int, anchored_to.split(":"))
+    want = h + m / 60.0 + sec / 3600.0 - sunset
+    check(key.get("anchor") == "sunset" and "time_h" not in key and abs(key["offset_h"] - want) < 1e-6
+          and key["value"] == moved[0][0]["value"], "the sunset key was saved as %s (offset %s)" % (key, want))
+    check(near_duplicate_keys(load_json(anchored)) == [], "near-duplicate keys after the anchored edit")
+    print("OK: curve_edit")
+
+
 def case_placement(env):
     """A new volume rests on the scene's surface under the viewport's centre;
     Drop to ground puts a volume's bottom on the surface under it, from above
@@ -1257,6 +1397,7 @@ CASES = {
     "curves": case_curves,
     "curves_mouse": case_curves_mouse,
     "sun_anchor": case_sun_anchor,
+    "curve_edit": case_curve_edit,
 }
 
 

@@ -3,7 +3,10 @@
 // keys' range, hit-testing and box selection of key points, moving many
 // keys in time and value at once, flat tangents and the undo step's name;
 // typed shifts (limited as a drag) and keys that follow the sun (anchored
-// where they stand, read as "sunset + 0:20 (19:52)").
+// where they stand, read as "sunset + 0:20 (19:52)"); the inspector's
+// parameter winning where keys overlap, legend names, colours that follow
+// the curve, the value axis and pinned ranges, and typed times and values
+// (an anchored key's included).
 #include "curve_view.hpp"
 #include "document.hpp"
 
@@ -12,6 +15,9 @@
 #include <aerial/sun.hpp>
 
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
 
 namespace aerial::editor {
 namespace {
@@ -29,6 +35,17 @@ Preset twoTracks() {
     haze.keys = {{12.0, glm::dvec3(1e-5)}, {18.0, glm::dvec3(2e-5)}};
     p.tracks = {fog, haze};
     return p;
+}
+
+/// Whether two tracks' keys are the same in time, value, flatness and anchor.
+bool sameKeys(const Track& a, const Track& b) {
+    if (a.keys.size() != b.keys.size()) return false;
+    for (std::size_t k = 0; k < a.keys.size(); ++k)
+        if (a.keys[k].timeHours != b.keys[k].timeHours || a.keys[k].value != b.keys[k].value ||
+            a.keys[k].flat != b.keys[k].flat || a.keys[k].anchor != b.keys[k].anchor ||
+            a.keys[k].offsetHours != b.keys[k].offsetHours)
+            return false;
+    return true;
 }
 
 TEST(CurveView, ZoomKeepsTheTimeUnderTheMouse) {
@@ -384,6 +401,270 @@ TEST(CurveView, ATypedShiftIsLimitedAsADragAndKeepsTheAnchor) {
     EXPECT_NEAR(anchoredKeyHours(k, doc.preset().environment.location), 8.0 + 20.0 / 60.0, 1e-9);
     ASSERT_TRUE(doc.undo());
     EXPECT_TRUE(presetsIdentical(doc.preset(), start));
+}
+
+TEST(CurveView, TheInspectorsParameterWinsWhereKeysOverlap) {
+    // Issue 50's repro: Valley fog's density key lies on the fog density key (the inspector's).
+    const TrackTarget fog = TrackTarget::global("fog.density_per_m"),
+                      valley = TrackTarget::volume("valley_fog", "density_per_m");
+    const std::vector<CurvePoint> ids = {{fog, 0, 0}, {valley, 0, 0}, {valley, 1, 0}};
+    const std::vector<glm::dvec2> points = {{100, 50}, {100, 50}, {200, 80}};
+    EXPECT_EQ(pickCurvePoint(points, ids, {100, 50}, 6.0, fog), 0);
+    // Even where the overlaid key is nearer the mouse, within the pick radius.
+    const std::vector<glm::dvec2> near = {{104, 50}, {101, 50}, {200, 80}};
+    EXPECT_EQ(pickCurvePoint(near, ids, {100, 50}, 6.0, fog), 0);
+    EXPECT_EQ(hitTestPoints(near, {100, 50}, 6.0), 1);  // plain nearest: the overlaid one
+    // Another curve's key where the inspector's has none in reach; nothing in reach.
+    EXPECT_EQ(pickCurvePoint(near, ids, {198, 81}, 6.0, fog), 2);
+    EXPECT_EQ(pickCurvePoint(near, ids, {150, 20}, 6.0, fog), -1);
+    // The inspector showing Valley fog: its key wins instead; no inspector parameter: the nearest.
+    EXPECT_EQ(pickCurvePoint(near, ids, {103, 50}, 6.0, valley), 1);
+    EXPECT_EQ(pickCurvePoint(near, ids, {103.5, 50}, 6.0, std::nullopt), 0);
+    EXPECT_EQ(pickCurvePoint(near, ids, {100, 50}, 6.0, std::nullopt), 1);
+    // Among the inspector's own keys, the nearest.
+    const std::vector<CurvePoint> own = {{fog, 0, 0}, {fog, 1, 0}, {valley, 0, 0}};
+    EXPECT_EQ(pickCurvePoint({{100, 50}, {105, 50}, {104, 50}}, own, {104, 50}, 6.0, fog), 1);
+}
+
+TEST(CurveView, TheLegendNamesObjectsByTheirNames) {
+    Preset p = defaultPreset();
+    p.volumes.resize(2);
+    p.volumes[0].id = "vol0";
+    p.volumes[0].name = "Valley fog";
+    p.volumes[1].id = "vol1";
+    p.volumes[1].name = "";
+    p.emitters.resize(1);
+    p.emitters[0].id = "lamp";
+    p.emitters[0].name = "Barn lamp";
+    p.cloudVolumes.resize(1);
+    p.cloudVolumes[0].id = "cell";
+    p.cloudVolumes[0].name = "Storm cell";
+    EXPECT_EQ(curveLabel(p, TrackTarget::global("fog.density_per_m")), "Fog density");
+    EXPECT_EQ(curveLabel(p, TrackTarget::volume("vol0", "density_per_m")), "Valley fog density");
+    EXPECT_EQ(curveLabel(p, TrackTarget::volume("vol1", "density_per_m")),
+              "vol1 density");  // no name: the id
+    EXPECT_EQ(curveLabel(p, TrackTarget::emitter("lamp", "intensity_cd")), "Barn lamp intensity");
+    EXPECT_EQ(curveLabel(p, TrackTarget::cloudVolume("cell", "coverage")), "Storm cell coverage");
+    // No such object: the curve key, as the session names it.
+    EXPECT_EQ(curveLabel(p, TrackTarget::volume("gone", "density_per_m")), "volume:gone:density_per_m");
+}
+
+TEST(CurveView, ACurvesColourFollowsItsTargetNotItsPlace) {
+    const TrackTarget fog = TrackTarget::global("fog.density_per_m");
+    const int colour = curvePaletteIndex(fog, kCurvePaletteSize);
+    EXPECT_GE(colour, 0);
+    EXPECT_LT(colour, kCurvePaletteSize);
+    // The same target, however it was made, and whatever else the view shows: the same colour.
+    CurveViewState view;
+    for (const char* other : {"fog.falloff_per_m", "sun.colour_rgb", "clouds.coverage"}) {
+        view.setShown(TrackTarget::global(other), true);
+        EXPECT_EQ(curvePaletteIndex(*curveTargetOf("fog.density_per_m"), kCurvePaletteSize), colour);
+    }
+    view.setShown(TrackTarget::global("fog.falloff_per_m"), false);
+    EXPECT_EQ(curvePaletteIndex(fog, kCurvePaletteSize), colour);
+    // A hash of scope, object id and parameter: the same parameter of two objects may differ,
+    // and the global parameters spread over the palette.
+    EXPECT_NE(curvePaletteIndex(TrackTarget::volume("haze_bank", "density_per_m"), kCurvePaletteSize),
+              curvePaletteIndex(TrackTarget::volume("valley_fog", "density_per_m"), kCurvePaletteSize));
+    std::set<int> used;
+    for (const ParamDesc& d : paramTable(ParamScope::Global))
+        if (d.animatable) {
+            const int i = curvePaletteIndex(TrackTarget::global(std::string(d.path)), kCurvePaletteSize);
+            EXPECT_GE(i, 0);
+            EXPECT_LT(i, kCurvePaletteSize);
+            used.insert(i);
+        }
+    EXPECT_GE(int(used.size()), kCurvePaletteSize / 2);
+    EXPECT_EQ(curvePaletteIndex(fog, 1), 0);
+}
+
+TEST(CurveView, TheValueAxisHasRoundTicksInTheUnit) {
+    EXPECT_EQ(valueTicks({-0.002, 0.022}, 5), (std::vector<double>{0.0, 0.005, 0.01, 0.015, 0.02}));
+    const std::vector<double> fine = valueTicks({-0.002, 0.022}, 8);  // steps of 0.005 give 5
+    ASSERT_EQ(fine.size(), 5u);
+    const std::vector<double> negative = valueTicks({-3.5, 1.2}, 6);  // steps of 1
+    EXPECT_EQ(negative, (std::vector<double>{-3.0, -2.0, -1.0, 0.0, 1.0}));
+    EXPECT_FALSE(std::signbit(negative[3]));  // 0, not -0
+    for (const CurveRange& r : {CurveRange{0.00046, 0.00194}, CurveRange{-1.5, 0.2}, CurveRange{1e3, 1e7}})
+        for (int most : {2, 3, 5, 8}) {
+            const std::vector<double> t = valueTicks(r, most);
+            EXPECT_GE(t.size(), 1u) << r.lo << " " << most;
+            EXPECT_LE(int(t.size()), most) << r.lo << " " << most;
+            for (double v : t) {
+                EXPECT_GE(v, r.lo);
+                EXPECT_LE(v, r.hi);
+            }
+        }
+    EXPECT_TRUE(valueTicks({1.0, 1.0}, 5).empty());
+    EXPECT_TRUE(valueTicks({0.0, 1.0}, 0).empty());
+    EXPECT_TRUE(valueTicks({0.0, std::nan("")}, 5).empty());
+
+    EXPECT_EQ(valueWithUnit(0.0031, "1/m"), "0.0031 1/m");
+    EXPECT_EQ(valueWithUnit(12.0, "deg"), "12 deg");
+    EXPECT_EQ(valueWithUnit(0.5, ""), "0.5");
+    EXPECT_EQ(valueWithUnit(-0.0, "m"), "0 m");
+    EXPECT_EQ(valueWithUnit(0.00123456, "1/m", 6), "0.00123456 1/m");
+}
+
+TEST(CurveView, APinnedRangeKeepsTheDragSensitivityUntilTheViewIsFit) {
+    Preset p = twoTracks();
+    const TrackTarget fog = p.tracks[0].target;
+    CurveViewState view;
+    const CurveRange before = curveRangeOf(p.tracks[0], fogDensity());
+    EXPECT_EQ(view.rangeOf(p, fog), before);  // not pinned: the keys' range
+    view.pinRange(p, fog);
+    // A drag lowers the 08:00 key (the top): the keys' range shrinks, the view's stays.
+    p.tracks[0].keys[1].value.x = 0.015;
+    EXPECT_NE(curveRangeOf(p.tracks[0], fogDensity()), before);
+    EXPECT_EQ(view.rangeOf(p, fog), before);
+    const std::vector<CurveDragItem> items = dragItemsOf(p, {{fog, 1, 0}}, view);
+    ASSERT_EQ(items.size(), 1u);
+    EXPECT_EQ(items[0].range, before);  // the next drag moves as much per pixel as the last
+    // The same drag twice moves the key by the same value each time.
+    moveCurvePoints(p, dragItemsOf(p, {{fog, 1, 0}}, view), 0.0, 0.1);
+    const double first = p.tracks[0].keys[1].value.x - 0.015;
+    const double was = p.tracks[0].keys[1].value.x;
+    moveCurvePoints(p, dragItemsOf(p, {{fog, 1, 0}}, view), 0.0, 0.1);
+    EXPECT_NEAR(p.tracks[0].keys[1].value.x - was, first, 1e-15);
+    EXPECT_NEAR(first, 0.1 * (before.hi - before.lo), 1e-15);
+    // A key outside the pinned range widens it to take the keys in.
+    p.tracks[0].keys[1].value.x = 0.05;
+    const CurveRange wide = view.rangeOf(p, fog);
+    EXPECT_EQ(wide.lo, before.lo);
+    EXPECT_GT(wide.hi, 0.05);
+    EXPECT_EQ(wide.hi, curveRangeOf(p.tracks[0], fogDensity()).hi);
+    // Script boxes read the same ranges as the view draws.
+    const CurveKeyPoints points = keyPointsOf(p, {fog}, view);
+    ASSERT_EQ(points.timeValue.size(), 3u);
+    EXPECT_DOUBLE_EQ(points.timeValue[0].y, wide.normalised(0.01));
+    // Fit (F): the ranges follow the keys again; another curve is not pinned by this one.
+    EXPECT_EQ(view.rangeOf(p, p.tracks[1].target),
+              curveRangeOf(p.tracks[1], *findParam(ParamScope::Global, "atmosphere.mie.scattering_per_m")));
+    view.resetRanges();
+    EXPECT_EQ(view.rangeOf(p, fog), curveRangeOf(p.tracks[0], fogDensity()));
+    view.pinRange(p, TrackTarget::global("fog.falloff_per_m"));  // no track: nothing to pin
+    EXPECT_TRUE(view.pinnedRanges.empty());
+}
+
+TEST(CurveView, TypedTimesAndValuesReadAsWritten) {
+    EXPECT_EQ(keyClockText(19.0 + 52.0 / 60.0), "19:52:00");
+    EXPECT_EQ(keyClockText(19.5 + 20.0 / 3600.0), "19:30:20");
+    EXPECT_EQ(keyClockText(6.0), "06:00:00");
+    double v = 99.0;
+    EXPECT_TRUE(parseKeyValue("0.0031", "1/m", v));
+    EXPECT_EQ(v, 0.0031);
+    EXPECT_TRUE(parseKeyValue(" 0.0031 1/m ", "1/m", v));  // as the Value field shows it
+    EXPECT_EQ(v, 0.0031);
+    EXPECT_TRUE(parseKeyValue("3e-4", "1/m", v));
+    EXPECT_EQ(v, 3e-4);
+    EXPECT_TRUE(parseKeyValue("-2", "", v));
+    EXPECT_EQ(v, -2.0);
+    v = 99.0;
+    for (const char* bad : {"", " ", "abc", "nan", "inf", "0x10", "1/m", "0.1 m", "1,5", "1e", "--1", "1 2"})
+        EXPECT_FALSE(parseKeyValue(bad, "1/m", v)) << bad;
+    EXPECT_EQ(v, 99.0);  // untouched on failure
+
+    TrackKey key{19.0 + 52.0 / 60.0, glm::dvec3(0.0031, 0, 0)};
+    EXPECT_EQ(keyReadout(key, 0, fogDensity()), "19:52:00  0.0031 1/m");
+    key.anchor = SunEvent::Sunset;
+    key.offsetHours = 22.0 / 60.0;
+    EXPECT_EQ(keyReadout(key, 0, fogDensity()), "sunset + 0:22 (19:52:00)  0.0031 1/m");
+    const ParamDesc& colour = *findParam(ParamScope::Global, "fog.colour_rgb");
+    EXPECT_EQ(keyReadout({12.25, glm::dvec3(1.0, 0.8, 0.6)}, 2, colour), "12:15:00  0.6");
+}
+
+TEST(CurveView, ATypedTimeSetsTheKeyExactlyAndMovesTheOthersWithIt) {
+    Preset start = twoTracks();
+    start.environment.location.latitudeDeg = 38.0;
+    start.environment.location.dayOfYear = 225.0;
+    const TrackTarget fog = start.tracks[0].target, haze = start.tracks[1].target;
+    Document doc;
+    doc.reset(start);
+    // One key: 08:00 typed as 08:52:10, exactly; one undo step; nothing else changes.
+    double typed = 0.0;
+    ASSERT_TRUE(parseClock("08:52:10", typed));
+    const std::vector<CurvePoint> one = {{fog, 1, 0}};
+    EXPECT_EQ(setTimeLabel(one), "Set key time");
+    double now = 0.0;
+    ASSERT_TRUE(
+        doc.apply(setTimeLabel(one), "", [&](Preset& p) { now = setCurvePointsTime(p, one, typed); }));
+    EXPECT_EQ(now, typed);
+    EXPECT_EQ(doc.undoCount(), 1u);
+    EXPECT_EQ(doc.undoLabel(), "Set key time");
+    const Track& fogAfter = doc.preset().tracks[0];
+    ASSERT_EQ(fogAfter.keys.size(), 3u);
+    EXPECT_EQ(fogAfter.keys[1].timeHours, typed);
+    EXPECT_EQ(keyClockText(fogAfter.keys[1].timeHours), "08:52:10");
+    EXPECT_EQ(fogAfter.keys[1].value, start.tracks[0].keys[1].value);
+    EXPECT_EQ(fogAfter.keys[0].timeHours, 6.0);
+    EXPECT_EQ(fogAfter.keys[2].timeHours, 10.0);
+    EXPECT_TRUE(sameKeys(doc.preset().tracks[1], start.tracks[1]));
+    ASSERT_TRUE(doc.undo());
+    EXPECT_TRUE(presetsIdentical(doc.preset(), start));
+
+    // Several keys: the first selected goes to the time typed, the others by the same shift;
+    // past a key that does not move, they stop a minute before it (as a drag, as a shift).
+    Preset p = start;
+    const std::vector<CurvePoint> two = {{fog, 0, 0}, {haze, 0, 0}};
+    EXPECT_EQ(setTimeLabel(two), "Set 2 key times");
+    EXPECT_EQ(setCurvePointsTime(p, two, 7.0), 7.0);
+    EXPECT_EQ(p.tracks[0].keys[0].timeHours, 7.0);
+    EXPECT_DOUBLE_EQ(p.tracks[1].keys[0].timeHours, 13.0);
+    EXPECT_NEAR(setCurvePointsTime(p, two, 9.0), 8.0 - kMinKeyGap, 1e-12);  // fog's 08:00 stays
+    EXPECT_NEAR(p.tracks[1].keys[0].timeHours, 14.0 - kMinKeyGap, 1e-12);
+    EXPECT_TRUE(std::isnan(setCurvePointsTime(p, {}, 7.0)));
+    EXPECT_TRUE(std::isnan(setCurvePointsTime(p, {{fog, 7, 0}}, 7.0)));
+
+    // An anchored key keeps its anchor: its offset changes, and it resolves to the time typed.
+    Preset anchored = start;
+    anchorKey(anchored.tracks[0].keys[1], SunEvent::Sunrise, anchored.environment.location);
+    const double offset = anchored.tracks[0].keys[1].offsetHours;
+    doc.reset(anchored);
+    ASSERT_TRUE(parseClock("08:30", typed));
+    ASSERT_TRUE(doc.apply(setTimeLabel(one), "", [&](Preset& q) { setCurvePointsTime(q, one, typed); }));
+    const TrackKey& k = doc.preset().tracks[0].keys[1];
+    ASSERT_TRUE(k.anchor.has_value());
+    EXPECT_EQ(*k.anchor, SunEvent::Sunrise);
+    EXPECT_NEAR(k.offsetHours, offset + 0.5, 1e-12);
+    EXPECT_NEAR(k.timeHours, 8.5, 1e-9);
+    EXPECT_NEAR(anchoredKeyHours(k, doc.preset().environment.location), 8.5, 1e-9);
+    EXPECT_EQ(keyClockText(k.timeHours), "08:30:00");
+}
+
+TEST(CurveView, ATypedValueSetsEveryKeyOfTheSameParameter) {
+    Preset start = twoTracks();
+    const TrackTarget fog = start.tracks[0].target, haze = start.tracks[1].target;
+    // Fog's 08:00 and 10:00 keys and a haze key: the value is fog's (the first selected), in 1/m.
+    const std::vector<CurvePoint> picked = {{fog, 1, 0}, {fog, 2, 0}, {haze, 0, 0}};
+    ASSERT_TRUE(leadPointOf(start, picked));
+    EXPECT_EQ(*leadPointOf(start, picked), picked[0]);
+    EXPECT_FALSE(leadPointOf(start, {{fog, 9, 0}}));
+    EXPECT_EQ(setValueLabel(start, picked), "Set 2 key values");
+    Document doc;
+    doc.reset(start);
+    int changed = 0;
+    ASSERT_TRUE(doc.apply(setValueLabel(doc.preset(), picked), "",
+                          [&](Preset& p) { changed = setCurvePointsValue(p, picked, 0.0031); }));
+    EXPECT_EQ(changed, 2);
+    EXPECT_EQ(doc.undoCount(), 1u);
+    EXPECT_EQ(doc.undoLabel(), "Set 2 key values");
+    EXPECT_EQ(doc.preset().tracks[0].keys[1].value.x, 0.0031);
+    EXPECT_EQ(doc.preset().tracks[0].keys[2].value.x, 0.0031);
+    EXPECT_EQ(doc.preset().tracks[0].keys[0].value.x, 0.01);         // not selected
+    EXPECT_TRUE(sameKeys(doc.preset().tracks[1], start.tracks[1]));  // another parameter
+    for (std::size_t k = 0; k < 3; ++k)
+        EXPECT_EQ(doc.preset().tracks[0].keys[k].timeHours, start.tracks[0].keys[k].timeHours);
+    // The same value again changes nothing; a value below the valid range is clamped.
+    Preset p = doc.preset();
+    EXPECT_EQ(setCurvePointsValue(p, picked, 0.0031), 0);
+    EXPECT_EQ(setCurvePointsValue(p, {picked[0]}, -1.0), 1);
+    EXPECT_EQ(p.tracks[0].keys[1].value.x, fogDensity().minValue);
+    EXPECT_EQ(setCurvePointsValue(p, picked, std::nan("")), 0);
+    // A colour's component: only that one.
+    const std::vector<CurvePoint> blue = {{haze, 1, 2}};
+    EXPECT_EQ(setValueLabel(p, blue), "Set key value");
+    EXPECT_EQ(setCurvePointsValue(p, blue, 3e-5), 1);
+    EXPECT_EQ(p.tracks[1].keys[1].value, glm::dvec3(2e-5, 2e-5, 3e-5));
 }
 
 }  // namespace
