@@ -363,6 +363,32 @@ class Eval(unittest.TestCase):
         october = check(path, 295)
         self.assertGreater(august[2]["time_h"] - october[2]["time_h"], 0.9)
 
+    def test_a_key_20_minutes_after_sunset_peaks_there_in_june_and_october(self):
+        # Issue 50's check: a fog density keyed {"anchor": "sunset", "offset_h": 0.333} between two lower
+        # fixed keys peaks 20 min after the sunset `aerial eval` reports, on day 172 and on day 300 alike
+        # (the sunset itself 1 h 40 min apart at 45 N). The peak is found on a 1-minute grid.
+        for day in (172, 300):
+            document = {"version": 4, "location": {"latitude_deg": 45.0, "day_of_year": day},
+                        "tracks": [{"param": "fog.density_per_m", "interpolation": "smooth", "keys": [
+                            {"time_h": 12.0, "value": 0.001},
+                            {"anchor": "sunset", "offset_h": 0.333, "value": 0.01},
+                            {"time_h": 23.5, "value": 0.001}]}]}
+            path = os.path.join(WORK, "sunset_peak_%d.json" % day)
+            with open(path, "w") as f:
+                json.dump(document, f)
+            out = run_json(self, "eval", path, "--time", "12:00", "--no-light")
+            sunset = out["sun_events"]["sunset"]["time_h"]
+            self.assertEqual(len(out["anchored_keys"]), 1)
+            self.assertAlmostEqual(out["anchored_keys"][0]["time_h"], sunset + 0.333, delta=1e-9)
+            best, best_t = -1.0, None
+            for minute in range(-30, 31):
+                t = sunset + 0.333 + minute / 60.0
+                d = run_json(self, "eval", path, "--time", "%.9f" % t, "--no-light")["parameters"]["fog"]["density_per_m"]
+                if d > best:
+                    best, best_t = d, t
+            self.assertAlmostEqual(best_t, sunset + 0.333, delta=0.5 / 60.0, msg="day %d" % day)
+            self.assertAlmostEqual(best, 0.01, delta=1e-12)
+
     def test_time_forms_agree(self):
         a = run_json(self, "eval", preset("hazy_sunset"), "--time", "18:30")
         b = run_json(self, "eval", preset("hazy_sunset"), "--time", "18.5h")
