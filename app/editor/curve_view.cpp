@@ -365,6 +365,23 @@ int setFlatTangents(Preset& preset, const std::vector<CurvePoint>& points, bool 
     return changed;
 }
 
+int setKeyInterpolation(Preset& preset, const std::vector<CurvePoint>& points,
+                        std::optional<Interpolation> interpolation) {
+    int changed = 0;
+    std::set<const TrackKey*> seen;  // a colour's three points are one key
+    for (const CurvePoint& p : points) {
+        Track* track = findTrack(preset, p.target);
+        if (!track || p.key < 0 || p.key >= int(track->keys.size())) continue;
+        TrackKey& k = track->keys[std::size_t(p.key)];
+        if (!seen.insert(&k).second) continue;
+        if (k.interpolation != interpolation) {
+            k.interpolation = interpolation;
+            ++changed;
+        }
+    }
+    return changed;
+}
+
 bool parseShiftHours(std::string_view text, double& hours) {
     while (!text.empty() && text.front() == ' ') text.remove_prefix(1);
     double sign = 1.0;

@@ -191,6 +191,11 @@ std::string deleteLabel(const std::vector<CurvePoint>& points);
 /// Sets (or clears) the flat tangent of the points' keys; returns how many
 /// keys changed.
 int setFlatTangents(Preset& preset, const std::vector<CurvePoint>& points, bool flat);
+/// Sets the interpolation of the segment after each of the points' keys
+/// (TrackKey::interpolation; nullopt: the track's again); returns how many
+/// keys changed.
+int setKeyInterpolation(Preset& preset, const std::vector<CurvePoint>& points,
+                        std::optional<Interpolation> interpolation);
 
 // --- typed shifts and keys that follow the sun (TrackKey::anchor) ------------------------------
 

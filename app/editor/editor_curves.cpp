@@ -480,6 +480,21 @@ void drawCurveView(Document& doc, EditState& edit, Playback& playback, float lab
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip(
                 "Smooth tracks: flat levels the curve at the key; automatic follows its neighbours");
+        // The segment after the key: its own interpolation or the track's ("interpolation" on the
+        // key in the preset).
+        if (ImGui::BeginMenu(("Interpolation after" + suffix).c_str())) {
+            const std::pair<const char*, std::optional<Interpolation>> modes[] = {
+                {"Track's", std::nullopt},
+                {"Step", Interpolation::Step},
+                {"Linear", Interpolation::Linear},
+                {"Smooth", Interpolation::Smooth}};
+            for (const auto& [label, mode] : modes) {
+                if (ImGui::MenuItem(label))
+                    doc.apply(std::string("Interpolation: ") + label, "",
+                              [&](Preset& p) { setKeyInterpolation(p, picked, mode); });
+            }
+            ImGui::EndMenu();
+        }
         ImGui::Separator();
         // Follow the sun: the keys keep their time today and move with the event when the date or
         // the place changes; each event shows its time today.

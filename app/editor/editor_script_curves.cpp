@@ -306,6 +306,30 @@ void Editor::declareCurveScriptCommands() {
              std::printf("curve_anchor: %s (%d changed)\n", anchorLabel(picked, event).c_str(), changed);
              return true;
          }});
+    table.add({"curve_interp", 1, 1, "curve_interp step|linear|smooth|track",
+               "the key menu's Interpolation after: the segment after each selected key is step, linear or "
+               "smooth, or the track's again; one undo step",
+               [this](W w, E error) {
+                   std::optional<Interpolation> mode;
+                   if (w[1] != "track") {
+                       Interpolation parsed;
+                       if (!parseInterpolation(w[1], parsed)) {
+                           error = "curve_interp: \"" + w[1] + "\" is not step, linear, smooth or track";
+                           return false;
+                       }
+                       mode = parsed;
+                   }
+                   const std::vector<CurvePoint> picked = edit_.curves.selected;
+                   if (dragItemsOf(doc_.preset(), picked).empty()) {
+                       error = "curve_interp: no keys selected";
+                       return false;
+                   }
+                   int changed = 0;
+                   doc_.apply("Interpolation: " + w[1], "",
+                              [&](Preset& p) { changed = setKeyInterpolation(p, picked, mode); });
+                   std::printf("curve_interp: %s (%d changed)\n", w[1].c_str(), changed);
+                   return true;
+               }});
     table.add({"print_keys", 1, 1, "print_keys KEY",
                "prints a line per key of KEY's track: \"key INDEX TIME_H TEXT\", TEXT as the curve view "
                "reads it (\"19:30\", \"sunset + 0:20 (19:52)\")",

@@ -61,7 +61,7 @@ bool presetsIdentical(const Preset& constA, const Preset& constB) {
             const double v[5] = {t.keys[k].timeHours, t.keys[k].value.x, t.keys[k].value.y,
                                  t.keys[k].value.z, t.keys[k].offsetHours};
             if (std::memcmp(u, v, sizeof u) != 0 || s.keys[k].flat != t.keys[k].flat ||
-                s.keys[k].anchor != t.keys[k].anchor)
+                s.keys[k].anchor != t.keys[k].anchor || s.keys[k].interpolation != t.keys[k].interpolation)
                 return false;
         }
     }

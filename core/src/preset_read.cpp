@@ -501,6 +501,18 @@ public:
                                       "; expected one of sunrise, noon, sunset, civil_dawn, civil_dusk, "
                                       "nautical_dawn, nautical_dusk");
                     }
+                    if (const std::int32_t mode = member(c, "interpolation"); mode >= 0) {
+                        const std::string modeAt = pointerJoin(at, "interpolation");
+                        Interpolation parsed = Interpolation::Smooth;
+                        if (expectKind(mode, modeAt, JNode::String)) {
+                            if (parseInterpolation(nodes_[std::size_t(mode)].text, parsed))
+                                key.interpolation = parsed;
+                            else
+                                error(mode, modeAt,
+                                      "unknown interpolation " + quoteString(nodes_[std::size_t(mode)].text) +
+                                          "; expected one of step, linear, smooth");
+                        }
+                    }
                     if (offset >= 0) {
                         if (anchor < 0)
                             error(offset, pointerJoin(at, "offset_h"),
@@ -531,7 +543,7 @@ public:
                          m = nodes_[std::size_t(m)].nextSibling) {
                         const std::string& name = nodes_[std::size_t(m)].key;
                         if (name != "time_h" && name != "value" && name != "flat" && name != "anchor" &&
-                            name != "offset_h")
+                            name != "offset_h" && name != "interpolation")
                             warnUnknown(m, pointerJoin(at, name));
                     }
                 }

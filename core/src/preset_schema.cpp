@@ -214,6 +214,10 @@ std::string presetJsonSchema() {
                            {"description",
                             "a key that follows the sun: its time is this event's at the preset's location "
                             "and date plus offset_h (sunrise and sunset at -0.833 deg, civil -6, nautical -12)"}}},
+                         {"interpolation",
+                          {{"enum", {"step", "linear", "smooth"}},
+                           {"description",
+                            "the segment from this key to the next: this interpolation instead of the track's"}}},
                          {"offset_h",
                           {{"type", "number"},
                            {"minimum", -12},

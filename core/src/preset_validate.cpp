@@ -295,6 +295,8 @@ void validateInto(const Preset& constPreset, Issues& issues) {
                 issues.error(timeAt, "key times must increase strictly (" + describeKeyTime(key) + " after " +
                                          describeKeyTime(track.keys[k - 1]) + ")");
             }
+            if (key.interpolation && (int(*key.interpolation) < 0 || int(*key.interpolation) > 2))
+                issues.error(pointerJoin(keyAt, "interpolation"), "unknown interpolation");
             if (!p || !p->animatable) continue;
             const std::string valueAt = pointerJoin(keyAt, "value");
             if (p->type == ParamType::Scalar) {

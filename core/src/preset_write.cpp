@@ -223,6 +223,9 @@ public:
                     numbers(c, valueCount);
                 }
                 if (t.keys[k].flat) out += ", \"flat\": true";  // only when set: old files stay as they were
+                if (const auto& mode = t.keys[k].interpolation;
+                    mode && int(*mode) >= 0 && int(*mode) <= 2)  // only when the key has its own
+                    out += std::string(", \"interpolation\": ") + quoteString(interpolationName(*mode));
                 out += '}';
             }
             if (!t.keys.empty()) newline(3);

@@ -40,13 +40,17 @@ CompiledTrack compileTrack(const Track& track, int components) {
     const std::size_t n = track.keys.size();
     out.times.reserve(n);
     out.values.reserve(n);
+    bool anySmooth = false;
     for (const TrackKey& k : track.keys) {
         out.times.push_back(k.timeHours);
         glm::dvec3 v = k.value;
         for (int c = out.components; c < 3; ++c) v[c] = 0.0;
         out.values.push_back(v);
+        const Interpolation mode = k.interpolation.value_or(track.interpolation);
+        out.segments.push_back(mode);
+        anySmooth = anySmooth || mode == Interpolation::Smooth;
     }
-    if (track.interpolation != Interpolation::Smooth || n < 2) return out;
+    if (!anySmooth || n < 2) return out;
 
     // Periodic Fritsch-Carlson: segment k runs from key k to key k+1, the
     // last one from key n-1 to key 0 of the next day. A held track (no wrap)
@@ -126,11 +130,13 @@ glm::dvec3 evaluateTrack(const CompiledTrack& track, double timeHours) {
     const std::size_t next = (std::size_t(k) + 1) % n;
     const glm::dvec3& y0 = track.values[k];
     const glm::dvec3& y1 = track.values[next];
-    if (track.interpolation == Interpolation::Step) return y0;
+    // The segment's own interpolation (a key's override), else the track's.
+    const Interpolation mode = std::size_t(k) < track.segments.size() ? track.segments[k] : track.interpolation;
+    if (mode == Interpolation::Step) return y0;
 
     const double h = t1 - t0;
     const double s = std::clamp((t - t0) / h, 0.0, 1.0);
-    if (track.interpolation == Interpolation::Linear) {
+    if (mode == Interpolation::Linear || track.tangents.size() != n) {
         glm::dvec3 v = y0 + (y1 - y0) * s;
         return glm::clamp(v, glm::min(y0, y1), glm::max(y0, y1));
     }

@@ -296,3 +296,30 @@ TEST(KeyTimes, KeysUnderAMinuteApartGetAWarning) {
         for (const aerial::PresetIssue& i : r.warnings) ADD_FAILURE() << name << ": " << i.toString();
     }
 }
+
+// A key's own interpolation in a preset file: read, written back only on the
+// keys that have one, refused when unknown.
+TEST(KeyTimes, AKeysInterpolationRoundTrips) {
+    const aerial::PresetLoadResult r = aerial::parsePreset(
+        R"({"version": 4, "tracks": [{"param": "fog.density_per_m", "interpolation": "smooth", "keys": [
+            {"time_h": 6, "value": 0.01, "interpolation": "step"}, {"time_h": 12, "value": 0.02},
+            {"anchor": "sunset", "value": 0.001, "interpolation": "linear"}]}]})");
+    ASSERT_TRUE(r.ok()) << r.errors[0].toString();
+    const aerial::Track& track = r.preset->tracks[0];
+    EXPECT_EQ(track.keys[0].interpolation, aerial::Interpolation::Step);
+    EXPECT_FALSE(track.keys[1].interpolation.has_value());
+    EXPECT_EQ(track.keys[2].interpolation, aerial::Interpolation::Linear);
+    const std::string json = aerial::presetToJson(*r.preset);
+    EXPECT_NE(json.find(R"({"time_h": 6, "value": 0.01, "interpolation": "step"})"), std::string::npos) << json;
+    EXPECT_NE(json.find(R"({"time_h": 12, "value": 0.02})"), std::string::npos) << json;
+    const aerial::PresetLoadResult back = aerial::parsePreset(json);
+    ASSERT_TRUE(back.ok());
+    EXPECT_EQ(back.preset->tracks[0].keys[2].interpolation, aerial::Interpolation::Linear);
+    const aerial::CompiledPreset compiled(*r.preset);
+    EXPECT_EQ(compiled.evaluate(9.0).environment.fog.density, 0.01);  // held by the step key
+    const auto bad = aerial::parsePreset(
+        R"({"version": 4, "tracks": [{"param": "fog.density_per_m", "keys": [{"time_h": 6, "value": 0.01, "interpolation": "cubic"}]}]})");
+    ASSERT_FALSE(bad.errors.empty());
+    EXPECT_EQ(bad.errors[0].pointer, "/tracks/0/keys/0/interpolation");
+    EXPECT_NE(bad.errors[0].message.find("unknown interpolation \"cubic\""), std::string::npos);
+}

@@ -351,3 +351,31 @@ TEST(Timeline, FlatKeysOnHeldTracksClosedForm) {
 }
 
 }  // namespace
+
+// A key's own interpolation (TrackKey::interpolation) governs the segment
+// after it: in a smooth track, a key marked step holds its value to the next
+// key and one marked linear ramps straight to it; the other segments are the
+// track's smooth curve, with the tangents of the whole track as before.
+TEST(Timeline, AKeysInterpolationGovernsTheSegmentAfterIt) {
+    aerial::Track track;
+    track.interpolation = aerial::Interpolation::Smooth;
+    track.keys = {{2.0, glm::dvec3(0.0)}, {6.0, glm::dvec3(1.0)}, {10.0, glm::dvec3(3.0)}, {14.0, glm::dvec3(4.0)}};
+    const aerial::CompiledTrack smooth = aerial::compileTrack(track, 1);
+    track.keys[1].interpolation = aerial::Interpolation::Step;
+    track.keys[2].interpolation = aerial::Interpolation::Linear;
+    const aerial::CompiledTrack mixed = aerial::compileTrack(track, 1);
+    for (double t = 6.0; t < 10.0; t += 0.25) EXPECT_EQ(aerial::evaluateTrack(mixed, t).x, 1.0) << t;
+    for (double t = 10.0; t <= 14.0; t += 0.25) EXPECT_NEAR(aerial::evaluateTrack(mixed, t).x, 3.0 + (t - 10.0) / 4.0, 1e-12);
+    // The segments without an override are unchanged, the wrap through midnight included.
+    for (double t : {2.5, 4.0, 5.9, 15.0, 20.0, 1.0})
+        EXPECT_EQ(aerial::evaluateTrack(mixed, t).x, aerial::evaluateTrack(smooth, t).x) << t;
+    // A linear track with one smooth segment gets tangents for it.
+    track.interpolation = aerial::Interpolation::Linear;
+    track.keys[1].interpolation.reset();
+    track.keys[2].interpolation.reset();
+    track.keys[0].interpolation = aerial::Interpolation::Smooth;
+    const aerial::CompiledTrack oneSmooth = aerial::compileTrack(track, 1);
+    EXPECT_EQ(oneSmooth.tangents.size(), 4u);
+    EXPECT_EQ(aerial::evaluateTrack(oneSmooth, 4.0).x, aerial::evaluateTrack(smooth, 4.0).x);
+    EXPECT_NEAR(aerial::evaluateTrack(oneSmooth, 8.0).x, 2.0, 1e-12);  // linear 6 -> 10
+}

@@ -1005,6 +1005,7 @@ def case_sun_anchor(env):
     preset = os.path.join(env.source, "presets", "hazy_sunset.json")
     shifted, dated, snapped = env.path("anchor_shifted.json"), env.path("anchor_dated.json"), env.path(
         "anchor_snapped.json")
+    stepped = env.path("anchor_stepped.json")
     shot = env.path("anchor_window.png")
     p = env.run(env.script("sun_anchor.txt", """
 open {preset}
@@ -1030,8 +1031,11 @@ save {dated}
 curve_snap 5
 curve_move 0.1 0
 save {snapped}
+curve_interp step
+save {stepped}
 quit
-""".format(preset=preset, shifted=shifted, dated=dated, snapped=snapped, shot=shot)), window="1280x720")
+""".format(preset=preset, shifted=shifted, dated=dated, snapped=snapped, stepped=stepped, shot=shot)),
+                window="1280x720")
     out = p.stdout
     suns = [sun_events(b) for b in printed_blocks(out, "print_sun")]
     keys = [printed_keys(b) for b in printed_blocks(out, "print_keys")]
@@ -1086,6 +1090,12 @@ quit
     steps = snapped_keys[0]["offset_h"] * 12.0
     check(abs(steps - round(steps)) < 1e-9 and snapped_keys[0]["offset_h"] != key["offset_h"],
           "the dragged key's offset %s h is not a whole 5 minutes" % snapped_keys[0]["offset_h"])
+    # The key's own interpolation (the key menu's Interpolation after > Step): saved on that key only.
+    check("curve_interp: step (1 changed)" in out, "the key's interpolation was not set:\n" + out)
+    stepped_keys = track(load_json(stepped), "fog.density_per_m")["keys"]
+    marked = [k for k in stepped_keys if "interpolation" in k]
+    check(len(marked) == 1 and marked[0].get("anchor") == "sunset" and marked[0]["interpolation"] == "step",
+          "the saved keys' interpolations: %s" % stepped_keys)
     width, height, _, _ = read_png(shot)
     check(width == 1280 and height == 720, "window screenshot %dx%d" % (width, height))
     print("OK: sun_anchor")

@@ -292,6 +292,25 @@ TEST(CurveView, TypedShiftsAndOffsetsReadAsWritten) {
     EXPECT_EQ(keyTimeText(key), "nautical dawn - 1:05 (19:52)");
 }
 
+// The key menu's Interpolation after: each selected key once (a colour's
+// components are one key), back to the track's with nullopt.
+TEST(CurveView, AKeysInterpolationIsSetOncePerKey) {
+    Preset preset = twoTracks();
+    const TrackTarget fog = preset.tracks[0].target, haze = preset.tracks[1].target;
+    const std::vector<CurvePoint> picked = {{fog, 1, 0}, {haze, 1, 0}, {haze, 1, 2}};
+    EXPECT_EQ(setKeyInterpolation(preset, picked, Interpolation::Step), 2);
+    EXPECT_EQ(preset.tracks[0].keys[1].interpolation, Interpolation::Step);
+    EXPECT_EQ(preset.tracks[1].keys[1].interpolation, Interpolation::Step);
+    EXPECT_FALSE(preset.tracks[0].keys[0].interpolation.has_value());
+    // The curve holds after the key.
+    const CompiledTrack c = compileTrack(preset.tracks[0], 1);
+    const double t0 = preset.tracks[0].keys[1].timeHours, t1 = preset.tracks[0].keys[2].timeHours;
+    EXPECT_EQ(evaluateTrack(c, 0.5 * (t0 + t1)).x, preset.tracks[0].keys[1].value.x);
+    EXPECT_EQ(setKeyInterpolation(preset, picked, Interpolation::Step), 0);
+    EXPECT_EQ(setKeyInterpolation(preset, picked, std::nullopt), 2);
+    EXPECT_FALSE(preset.tracks[1].keys[1].interpolation.has_value());
+}
+
 TEST(CurveView, AnchoringASelectionKeepsEveryKeysTimeAndValue) {
     Preset start = twoTracks();
     start.environment.location.latitudeDeg = 38.0;

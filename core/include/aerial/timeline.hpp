@@ -14,6 +14,8 @@
 //     22:00 and one at 02:00 interpolate through midnight. A track with one
 //     key is constant.
 //   * Step: the value of the last key at or before t (wrapping).
+//     A key may set its own interpolation for the segment after it
+//     (TrackKey::interpolation); the others follow the track's.
 //   * Linear: per component, along the (wrapping) segment.
 //   * Smooth: periodic monotone cubic Hermite per component, tangents by
 //     Fritsch & Carlson (1980): secants d_k, initial tangents their mean,
@@ -102,6 +104,13 @@ struct TrackKey {
     /// The anchored key's offset from its event [h], -12..12 (negative:
     /// before it). Unused without an anchor.
     double offsetHours = 0.0;
+    /// The interpolation of the segment from this key to the next, in place
+    /// of the track's ("interpolation" on the key in a preset): a jump at a
+    /// lightning strike in a smooth track, a linear ramp in a stepped one.
+    /// Empty (default): the track's. Smooth tangents are computed over the
+    /// whole track as before, so a smooth segment beside a linear one keeps
+    /// its shape.
+    std::optional<Interpolation> interpolation;
 };
 
 struct Track {
@@ -124,7 +133,9 @@ struct CompiledTrack {
     int components = 1;         ///< 1 (scalar), 2 (vec2 in x, y) or 3 (vec3 / colour)
     std::vector<double> times;  ///< [h], strictly increasing in [0, 24)
     std::vector<glm::dvec3> values;
-    std::vector<glm::dvec3> tangents;  ///< d value / d t [unit per h] (Smooth only)
+    std::vector<glm::dvec3> tangents;  ///< d value / d t [unit per h] (when some segment is Smooth)
+    /// The interpolation of each segment, key k to k + 1 (TrackKey::interpolation or the track's).
+    std::vector<Interpolation> segments;
 };
 
 /// Prepares a track; keys must be valid (validatePreset checks them). An
