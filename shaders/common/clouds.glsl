@@ -143,30 +143,6 @@ float cloudCoverageAt(vec3 p) {
     return cloudSaturate(c);
 }
 
-/// Extinction [1/m] at p (cloudDensityAt of clouds.cpp), with its height
-/// fraction f for the lighting.
-float cloudDensityAt(vec3 p, out float heightFraction) {
-    float h = cloudHeightAboveGround(p);
-    float f = (h - clouds.bottomM) / clouds.thicknessM;
-    heightFraction = f;
-    float profile = cloudHeightProfile(f, clouds.type);
-    if (profile <= 0.0) return 0.0;
-    float c = cloudCoverageAt(p);
-    if (c <= 0.0) return 0.0;
-    vec3 qs = vec3(p.x - clouds.shapeOffset.x, h, p.z - clouds.shapeOffset.y);
-    float x = textureLod(uCloudShape, qs / clouds.shapeScaleM, 0.0).r * profile;
-    float d = cloudSaturate((x - (1.0 - c)) / c);
-    if (d <= 0.0) return 0.0;
-    vec3 qd = vec3(p.x - clouds.detailOffset.x, h, p.z - clouds.detailOffset.y);
-    float e = clouds.erosion * textureLod(uCloudDetail, qd / clouds.detailScaleM, 0.0).r;
-    return clouds.densityPerM * cloudSaturate((d - e) / (1.0 - e));
-}
-
-float cloudDensityAt(vec3 p) {
-    float f;
-    return cloudDensityAt(p, f);
-}
-
 /// Integral of clamp((u - lo) / c, 0, 1) du from -inf (taken as lo) to x.
 float cloudRampIntegral(float x, float lo, float c) {
     float u = x - lo;
@@ -203,6 +179,15 @@ float cloudDensityFiltered(vec3 p, float footprintM, out float heightFraction) {
     vec3 qd = vec3(p.x - clouds.detailOffset.x, h, p.z - clouds.detailOffset.y);
     float e = clouds.erosion * textureLod(uCloudDetail, qd / clouds.detailScaleM, lodDetail).r;
     return clouds.densityPerM * cloudSaturate((d - e) / (1.0 - e));
+}
+
+/// Extinction [1/m] at p (cloudDensityAt of clouds.cpp), with its height
+/// fraction f for the lighting: the point sample, level 0 (the exact texels).
+float cloudDensityAt(vec3 p, out float heightFraction) { return cloudDensityFiltered(p, 0.0, heightFraction); }
+
+float cloudDensityAt(vec3 p) {
+    float f;
+    return cloudDensityAt(p, f);
 }
 
 /// Roots of |o + t d - centre|^2 = (Rg + shellHeight)^2, or false
