@@ -174,17 +174,7 @@ std::string valueWithUnit(double value, std::string_view unit, int digits) {
 }
 
 int hitTestPoints(const std::vector<glm::dvec2>& points, glm::dvec2 mouse, double radiusPx) {
-    int best = -1;
-    double bestD2 = radiusPx * radiusPx;
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        const glm::dvec2 d = points[i] - mouse;
-        const double d2 = d.x * d.x + d.y * d.y;
-        if (d2 <= bestD2) {
-            bestD2 = d2;
-            best = int(i);
-        }
-    }
-    return best;
+    return pickCurvePoint(points, {}, mouse, radiusPx, std::nullopt);  // no curve preferred
 }
 
 int pickCurvePoint(const std::vector<glm::dvec2>& points, const std::vector<CurvePoint>& ids,

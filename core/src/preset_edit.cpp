@@ -6,6 +6,8 @@
 #include <aerial/preset.hpp>
 
 #include <algorithm>
+#include <iterator>
+#include <optional>
 #include <vector>
 
 namespace aerial {
@@ -67,12 +69,17 @@ bool changeObjectId(Preset& preset, ParamScope scope, const std::string& oldId, 
 std::size_t resolveKeyAnchors(Preset& preset) {
     std::size_t changed = 0;
     const Location& where = preset.environment.location;
+    // Each event once (a scan of the day each): the editor calls this after
+    // every edit, a drag included, and many keys may follow one sunset.
+    std::optional<double> eventHours[std::size(kSunEvents)];
     for (Track& track : preset.tracks) {
         bool anchored = false;
         for (TrackKey& key : track.keys) {
             if (!key.anchor) continue;
             anchored = true;
-            const double t = anchoredKeyHours(key, where);
+            std::optional<double>& event = eventHours[std::size_t(*key.anchor)];
+            if (!event) event = sunEventHours(where, *key.anchor);
+            const double t = wrapHours(*event + key.offsetHours);  // anchoredKeyHours, its event cached
             if (t != key.timeHours) ++changed;
             key.timeHours = t;
         }
