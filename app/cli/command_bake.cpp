@@ -19,12 +19,13 @@
 //       the column mapping's (aerialCapCurvature, aerialCapStrength),
 //       aerialMieAnisotropy, aerialLightIlluminance (V3d, above the
 //       atmosphere) and aerialRadiance (how to turn a texel into radiance).
-//   sky_<NNN>_<HHMM>_radiance.exr
-//       the sky of both lights as plain RGB radiance (channels R, G, B, half
-//       float), equirectangular over the whole sphere with line 0 at the
-//       zenith (--radiance-size, default 256x128): a sky texture any engine
-//       and any RGBA-only EXR reader takes as it is. Header: the mapping in
-//       words, the Mie anisotropy, each light's direction and illuminance.
+//   sky_<NNN>_<HHMM>_skyview.exr, sky_<NNN>_<HHMM>_farfog.exr
+//       the sky of both lights and the night sky as plain RGB radiance
+//       (channels R, G, B, 32-bit float) over the upper hemisphere, lines
+//       packed towards the horizon (--sky-view-size, default 512x320), and
+//       the sky behind far fog over the whole sphere (--far-fog-size,
+//       default 256x128): aerial/sky_maps.hpp, bake_maps.cpp. Header: the
+//       mapping in words, the time, the units.
 //   layout.gltf
 //       the preset's fog volumes, cloud volumes and emitters at the first
 //       step's time as a glTF 2.0 scene (layout_gltf.cpp): one node per
@@ -39,10 +40,14 @@
 //       position, rotation and half extents), so that the bake carries the
 //       meshes the preset's "mesh" paths name outside it.
 //   manifest.json
-//       format, preset, steps and table mapping, and for every step: the
-//       time, the full evaluated state (sun, moon, every parameter, volumes,
-//       emitters, cloud volumes: as `aerial eval --json`) and per light its EXR file name,
-//       light direction and azimuth, row mapping, and horizon averages (the fog colour);
+//       format (format_version 2; the changes in the README), preset, steps
+//       and table mapping, and for every step: the time, the full evaluated
+//       state (sun, moon, every parameter, volumes, emitters, cloud volumes:
+//       as `aerial eval --json`), per light its EXR file name, light
+//       direction and azimuth, row mapping, and horizon averages; the
+//       sky-view and far fog files, the environment's irradiance as nine
+//       spherical-harmonic coefficients (sky_irradiance_sh9) and the global
+//       fog's light in the form of the manifest's fog formula ("fog");
 //       how to expose a frame as the preset says ("exposure"); the clouds'
 //       noise seed and, when the preset has clouds, the FNV-1a fingerprint
 //       of the texels aerial::cloudNoise(seed) gives ("clouds"); the
@@ -64,6 +69,7 @@
 // it, fsync'ed and renamed into place, and manifest.json is removed first and
 // written last, so a directory with a manifest always holds a complete bake.
 #include "cli_common.hpp"
+#include "bake_maps.hpp"
 #include "layout_gltf.hpp"
 
 #include <aerial/fog_mesh.hpp>
@@ -123,7 +129,7 @@ Json cloudsToJson(std::int64_t seed, bool cloudy) {
     }
     return clouds;
 }
-constexpr int kManifestFormatVersion = 1;
+constexpr int kManifestFormatVersion = 2;
 constexpr int kChannelCount = 9;
 constexpr const char* kChannelNames[kChannelCount] = {"rayleigh.R", "rayleigh.G", "rayleigh.B",
                                                       "mie.R",      "mie.G",      "mie.B",
@@ -135,6 +141,9 @@ std::string constantText(double value) {
     std::snprintf(text, sizeof text, "%g", value);
     return text;
 }
+
+/// "k x" in words: "x" where k is 1.
+std::string timesText(double k, const char* x) { return k == 1.0 ? std::string(x) : constantText(k) + " " + x; }
 
 /// The row mapping in words, its constants from <aerial/sky.hpp>.
 std::string rowMappingText() {
@@ -151,8 +160,8 @@ std::string rowMappingText() {
            boostRange +
            " deg, 0, 1), with E = band_elevation_rad, a = band_share, c = shadow_elevation_rad, w = "
            "shadow_width_rad, b = shadow_share, d = " +
-           constantText(kSkyCapRowShare) + " cap_strength (1 + " + constantText(kSkyCapRowBoost - 1.0) +
-           " m) where cap_curvature > 0, else 0 "
+           constantText(kSkyCapRowShare) + " cap_strength (1 + " + timesText(kSkyCapRowBoost - 1.0, "m") +
+           ") where cap_curvature > 0, else 0 "
            "(row_mapping per step and light; EXR header aerialBandElevationRad, aerialBandShare, "
            "aerialShadowElevationRad, aerialShadowWidthRad, aerialShadowShare, aerialCapCurvature, "
            "aerialCapStrength; a term is absent when its share is 0). A light above 1 deg has a = b = 0: "
@@ -186,8 +195,8 @@ std::string columnMappingText() {
            "the "
            "horizon) the columns of the row at elevation el are instead piecewise linear in psi = |pi - phi| "
            "(in ln(1 + (psi^2 - p1^2) / Y0), Y0 = (" +
-           constantText(kSkyCapBandScale) + " c)^2 + (" + constantText(kSkyCapBandOnsetScale) +
-           " P)^2, between p1 and p2) through the knots x = |i - W/2| = (0, " + constantText(x1) + ", " +
+           constantText(kSkyCapBandScale) + " c)^2 + (" + timesText(kSkyCapBandOnsetScale, "P") +
+           ")^2, between p1 and p2) through the knots x = |i - W/2| = (0, " + constantText(x1) + ", " +
            constantText(x2) + ", " + constantText(x3) +
            ", 64) W / 128 at psi = (0, p1, p2, p3, pi), p_m = g q_m + (1 - g) 2 pi x_m / W with q1 = P, q2 = "
            "sqrt((" +
@@ -208,18 +217,13 @@ std::string columnMappingText() {
            constantText(1.0 - kSkyCapFarSlope) + " g from p3 to pi" + blend;
 }
 
-constexpr const char* kRadianceMapping =
-    "equirectangular over the whole sphere: pixel (x, y) of a W x H image looks along azimuth "
-    "phi = 2 pi (x + 0.5) / W from north (-Z) towards east (+X) and elevation el = pi/2 - pi (y + 0.5) / H "
-    "(line y = 0 at the zenith, the last line at the nadir); direction = (cos el sin phi, sin el, "
-    "-cos el cos phi); below the horizon the horizon's radiance (the far fog)";
-
 struct BakeOptions {
     std::string preset;
     std::string out;
     std::string step = "0.5h";
     std::string size = "128x64";
-    std::string radianceSize = "256x128";
+    std::string skyViewSize = std::to_string(kSkyViewMapWidth) + "x" + std::to_string(kSkyViewMapHeight);
+    std::string farFogSize = std::to_string(kFarFogMapWidth) + "x" + std::to_string(kFarFogMapHeight);
     std::string compression = "zip";
     bool quiet = false;
 };
@@ -297,54 +301,6 @@ void writeSkyExr(const fs::path& path, const SkyTable& table, const char* light,
     writeFileAtomically(path, encoded.str());
 }
 
-/// The sky of both lights as plain RGB radiance (half float, channels R, G,
-/// B), equirectangular (kRadianceMapping): a sky texture any engine and any
-/// RGBA-only EXR reader takes as it is.
-void writeRadianceExr(const fs::path& path, const SkyTable& sun, const SkyTable& moon,
-                      const PresetState& state, int width, int height, Imf::Compression compression) {
-    const double g = state.environment.atmosphere.mieAnisotropy;
-    std::vector<Imath::half> pixels(std::size_t(width) * std::size_t(height) * 3);
-    for (int y = 0; y < height; ++y) {
-        const double el = kPi / 2.0 - kPi * (y + 0.5) / height;
-        for (int x = 0; x < width; ++x) {
-            const double phi = 2.0 * kPi * (x + 0.5) / width;
-            const glm::dvec3 v(std::cos(el) * std::sin(phi), std::sin(el), -std::cos(el) * std::cos(phi));
-            const glm::dvec3 L = skyRadiance(sun, g, v, state.sunLight.illuminanceSpace) +
-                                 skyRadiance(moon, g, v, state.moonLight.illuminanceSpace);
-            for (int c = 0; c < 3; ++c)
-                pixels[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * 3 + std::size_t(c)] =
-                    toHalf(float(L[c]));
-        }
-    }
-    Imf::StdOSStream encoded;
-    try {
-        Imf::Header header(width, height);
-        header.compression() = compression;
-        for (const char* name : {"R", "G", "B"}) header.channels().insert(name, Imf::Channel(Imf::HALF));
-        header.insert("aerialTimeHours", Imf::DoubleAttribute(state.timeHours));
-        header.insert("aerialMapping", Imf::StringAttribute(kRadianceMapping));
-        header.insert("aerialMieAnisotropy", Imf::DoubleAttribute(g));
-        auto v3 = [](const glm::dvec3& v) { return Imf::V3dAttribute(Imath::V3d(v.x, v.y, v.z)); };
-        header.insert("aerialSunDirection", v3(state.sunLight.body.direction));
-        header.insert("aerialSunIlluminance", v3(state.sunLight.illuminanceSpace));
-        header.insert("aerialMoonDirection", v3(state.moonLight.body.direction));
-        header.insert("aerialMoonIlluminance", v3(state.moonLight.illuminanceSpace));
-        header.insert("aerialUnits", Imf::StringAttribute("scene-linear Rec.709 radiance, 1 = 5000 cd/m^2"));
-        Imf::FrameBuffer frame;
-        const std::size_t xStride = sizeof(Imath::half) * 3, yStride = xStride * std::size_t(width);
-        const char* names[3] = {"R", "G", "B"};
-        for (int c = 0; c < 3; ++c)
-            frame.insert(names[c],
-                         Imf::Slice(Imf::HALF, reinterpret_cast<char*>(pixels.data() + c), xStride, yStride));
-        Imf::OutputFile file(encoded, header);
-        file.setFrameBuffer(frame);
-        file.writePixels(height);
-    } catch (const std::exception& e) {
-        dataError("cannot encode " + path.string() + ": " + e.what());
-    }
-    writeFileAtomically(path, encoded.str());
-}
-
 void writeText(const fs::path& path, const std::string& text) { writeFileAtomically(path, text); }
 
 /// A progress bar on a terminal, plain lines otherwise (or nothing, --quiet).
@@ -399,8 +355,10 @@ int runBake(const BakeOptions& options) {
     SkySolverDesc desc;
     parseTableSize(options.size, "--size", desc.azimuthCount, desc.elevationCount);
     const Imf::Compression compression = exrCompression(options.compression);
-    int radianceWidth = 0, radianceHeight = 0;
-    parseImageSize(options.radianceSize, "--radiance-size", 4096, radianceWidth, radianceHeight);
+    int skyViewWidth = 0, skyViewHeight = 0, farFogWidth = 0, farFogHeight = 0;
+    parseImageSize(options.skyViewSize, "--sky-view-size", 4096, skyViewWidth, skyViewHeight);
+    if (skyViewHeight < 2) usageError("--sky-view-size: the height must be at least 2 (horizon and zenith)");
+    parseImageSize(options.farFogSize, "--far-fog-size", 4096, farFogWidth, farFogHeight);
     Preset preset = loadPresetOrFail(options.preset, "bake");
     const Json presetInfo = {
         {"file", options.preset}, {"name", preset.name}, {"description", preset.description}};
@@ -441,15 +399,21 @@ int runBake(const BakeOptions& options) {
         writeSkyExr(dir / sunFile, tables.sun(), "sun", t, g, state.sunLight.illuminanceSpace, compression);
         writeSkyExr(dir / moonFile, tables.moon(), "moon", t, g, state.moonLight.illuminanceSpace,
                     compression);
-        const std::string radianceFile = stem + "_radiance.exr";
-        writeRadianceExr(dir / radianceFile, tables.sun(), tables.moon(), state, radianceWidth,
-                         radianceHeight, compression);
+        const StepMaps maps = bakeStepMaps(state, tables.sun(), tables.moon(), skyViewWidth, skyViewHeight,
+                                           farFogWidth, farFogHeight);
+        const std::string skyViewFile = stem + "_skyview.exr", farFogFile = stem + "_farfog.exr";
+        writeRgbExr(dir / skyViewFile, maps.skyView, t, kSkyViewMapping, compression);
+        writeRgbExr(dir / farFogFile, maps.farFog, t, kFarFogMapping, compression);
 
         Json step = {{"index", k}};
         step.update(stateToJson(state));
         step["sun"].update(lightBakeToJson(tables.sun(), sunFile));
         step["moon"].update(lightBakeToJson(tables.moon(), moonFile));
-        step["radiance_file"] = radianceFile;
+        step["sky_view_file"] = skyViewFile;
+        step["far_fog_file"] = farFogFile;
+        step["sky_irradiance_sh9"] = irradianceToJson(maps.irradiance);
+        step["fog"] = maps.fog;
+        step["fog"]["far_fog_file"] = farFogFile;
         steps.push_back(std::move(step));
         progress.update(k + 1, formatTime(t), sunFile + ", " + moonFile);
     }
@@ -477,7 +441,9 @@ int runBake(const BakeOptions& options) {
         {"table",
          {{"azimuth_count", desc.azimuthCount},
           {"elevation_count", desc.elevationCount},
-          {"file_pattern", "sky_<index>_<HHMM>_<light>.exr, light = sun | moon"},
+          {"file_pattern",
+           "sky_<index>_<HHMM>_<light>.exr, light = sun | moon (HHMMSS when the step's time has seconds; "
+           "per step and light: table_file)"},
           {"pixel_type", "half"},
           {"compression", options.compression},
           {"channels", Json(std::vector<std::string>(std::begin(kChannelNames), std::end(kChannelNames)))},
@@ -494,10 +460,10 @@ int runBake(const BakeOptions& options) {
           {"phase_rayleigh", "P_R(mu) = 3 / (16 pi) * (1 + mu^2)"},
           {"phase_mie",
            "P_M(mu, g) = 3 / (8 pi) * (1 - g^2) (1 + mu^2) / ((2 + g^2) (1 + g^2 - 2 g mu)^1.5)"},
-          {"fog_colour",
-           "far fog seen along v: the radiance formula with H = (1 - s) * horizon_x + s * (row 0 at the "
-           "azimuth of v) in place of the table sample, s = sqrt(v.x^2 + v.z^2), for x = rayleigh, mie, "
-           "multiple: the sky right behind fog near the horizon, the azimuthal mean straight up"},
+          {"far_fog",
+           "the sky behind far fog seen along v (what the far fog map holds, before the cloud deck's "
+           "horizon cover): the radiance formula with H = (1 - s) * horizon_x + s * (row 0 at the azimuth "
+           "of v) in place of the table sample, s = sqrt(v.x^2 + v.z^2), for x = rayleigh, mie, multiple"},
           {"values",
            "rayleigh, mie: phase-less single-scattering integrals (dimensionless); multiple: the isotropic "
            "higher orders (Hillaire 2020), per steradian, phase already applied; scene-linear"}}},
@@ -510,16 +476,9 @@ int runBake(const BakeOptions& options) {
            "luminance (10-90 % band of a log2 histogram), adapting at adapt_up_per_s / adapt_down_per_s; "
            "multiply radiance by nits_per_radiance_unit / (1.2 * 2^(EV100 - compensation_ev)) before tone "
            "mapping (aerial/exposure.hpp)"}}},
-        {"radiance",
-         {{"file_pattern", "sky_<index>_<HHMM>_radiance.exr (per step: radiance_file)"},
-          {"width", radianceWidth},
-          {"height", radianceHeight},
-          {"channels", {"R", "G", "B"}},
-          {"pixel_type", "half"},
-          {"mapping", kRadianceMapping},
-          {"values",
-           "scene-linear Rec.709 radiance of the sky (sun and moon, phase applied), ready to use as a "
-           "sky texture; the tables beside it hold the phase-less integrals"}}},
+        {"sky_view", skyViewManifest(skyViewWidth, skyViewHeight)},
+        {"far_fog", farFogManifest(farFogWidth, farFogHeight)},
+        {"sky_irradiance_sh9", irradianceManifest()},
         {"clouds", cloudsToJson(compiled.preset().environment.clouds.seed, cloudy)},
         {"fog",
          {{"render_mode", compiled.preset().environment.fogRenderMode == FogRenderMode::Volumetric
@@ -529,7 +488,8 @@ int runBake(const BakeOptions& options) {
            "how the preset's fog was authored to be drawn: analytic (closed-form integrals per pixel, "
            "DESIGN.md) or volumetric (a froxel grid in which the sun's, moon's and clouds' shadows cut light "
            "shafts, converging to the analytic fog without them); aerial::FogScene queries return the "
-           "analytic answer in both modes"}}},
+           "analytic answer in both modes"},
+          {"formula", fogFormulaManifest()}}},
         {"layout",
          {{"file", kLayoutName},
           {"time_h", 0.0},
@@ -549,9 +509,11 @@ int runBake(const BakeOptions& options) {
     syncPath(dir, true);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf(
-        "baked %d steps (%d EXR tables, %dx%d, and %d radiance EXRs, %dx%d), %s and %s into %s in %.2f s\n",
-        stepCount, 2 * stepCount, desc.azimuthCount, desc.elevationCount, stepCount, radianceWidth,
-        radianceHeight, kLayoutName, kManifestName, dir.string().c_str(), seconds);
+        "baked %d steps (%d EXR tables, %dx%d, %d sky-view maps, %dx%d, %d far fog maps, %dx%d), %s and %s "
+        "into %s in %.2f s\n",
+        stepCount, 2 * stepCount, desc.azimuthCount, desc.elevationCount, stepCount, skyViewWidth,
+        skyViewHeight, stepCount, farFogWidth, farFogHeight, kLayoutName, kManifestName, dir.string().c_str(),
+        seconds);
     return kExitOk;
 }
 
@@ -576,9 +538,14 @@ Command addBakeCommand(CLI::App& parent) {
     app->add_option("--size", options->size, "Sky table size: azimuth columns x elevation rows")
         ->type_name("WxH")
         ->capture_default_str();
-    app->add_option("--radiance-size", options->radianceSize,
-                    "Size of the per-step RGB radiance EXR (equirectangular, zenith on line 0)")
-        ->type_name("WxH");
+    app->add_option("--sky-view-size", options->skyViewSize,
+                    "Size of the per-step sky-view map (upper hemisphere, lines packed towards the horizon)")
+        ->type_name("WxH")
+        ->capture_default_str();
+    app->add_option("--far-fog-size", options->farFogSize,
+                    "Size of the per-step far fog map (whole sphere, equirectangular)")
+        ->type_name("WxH")
+        ->capture_default_str();
     app->add_option("--compression", options->compression, "EXR compression (lossless): zip, piz or none")
         ->type_name("KIND")
         ->capture_default_str();

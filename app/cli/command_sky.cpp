@@ -9,6 +9,9 @@
 // --json:
 //   {"preset": {"file", "name"}, "time_h", "time", "direction" (unit),
 //    "elevation_deg", "azimuth_deg", "below_horizon",
+//    "sky_rgb": the clear sky as the sky pass draws it behind the stars
+//        (aerial::clearSkyRadiance: the table's radiance, the airglow, a
+//        city's glow), what a bake's sky-view map holds,
 //    "table": {"size": [W, H], "radiance_rgb",
 //              "sun": {"radiance_rgb", "rayleigh", "mie"}, "moon": {...}},
 //    "reference": {"radiance_rgb", "sun": {...}, "moon": {...}},
@@ -33,6 +36,7 @@
 #include <aerial/atmosphere.hpp>
 #include <aerial/exposure.hpp>
 #include <aerial/night_sky.hpp>
+#include <aerial/sky_maps.hpp>
 #include <aerial/sky_reference.hpp>
 #include <aerial/stars.hpp>
 #include <aerial/sky_spectral.hpp>
@@ -176,6 +180,7 @@ int runSky(const SkyOptions& options) {
                    {"elevation_deg", elevation * kDegreesPerRadian},
                    {"azimuth_deg", azimuth * kDegreesPerRadian},
                    {"below_horizon", v.y < 0.0},
+                   {"sky_rgb", toJson(clearSkyRadiance(state, tables.sun(), tables.moon(), v))},
                    {"table",
                     {{"size", {desc.azimuthCount, desc.elevationCount}},
                      {"radiance_rgb", toJson(table)},

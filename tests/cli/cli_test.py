@@ -600,38 +600,44 @@ class Fog(unittest.TestCase):
         self.assertAlmostEqual(r["global_fog"]["horizon_weight"], -math.expm1(-(s / 5000.0) ** 2), delta=1e-15)
 
 
-class BakeRadiance(unittest.TestCase):
-    """The per-step RGB radiance EXR: a sky texture any engine reads."""
+class BakeSkyView(unittest.TestCase):
+    """The per-step sky-view map: a sky texture any engine reads."""
 
     @classmethod
     def setUpClass(cls):
-        cls.out = os.path.join(WORK, "bake_radiance")
+        cls.out = os.path.join(WORK, "bake_sky_view")
         # The tables at the size `aerial sky` solves (128x64), so the two agree.
-        code, _, err = run("bake", preset("hazy_sunset"), "--out", cls.out, "--step", "6h", "--radiance-size",
-                           "64x32", "--quiet")
+        code, _, err = run("bake", preset("hazy_sunset"), "--out", cls.out, "--step", "6h", "--sky-view-size",
+                           "64x32", "--far-fog-size", "32x16", "--quiet")
         assert code == 0, err
         with open(os.path.join(cls.out, "manifest.json")) as f:
             cls.manifest = json.load(f)
 
     def test_manifest_names_the_files_and_the_mapping(self):
-        self.assertEqual(self.manifest["radiance"]["channels"], ["R", "G", "B"])
-        self.assertIn("line y = 0 at the zenith", self.manifest["radiance"]["mapping"])
+        self.assertEqual(self.manifest["format_version"], 2)
+        self.assertEqual(self.manifest["sky_view"]["channels"], ["R", "G", "B"])
+        self.assertIn("line y = 0 lies exactly on the horizon", self.manifest["sky_view"]["mapping"])
+        self.assertEqual((self.manifest["sky_view"]["width"], self.manifest["sky_view"]["height"]), (64, 32))
+        self.assertEqual((self.manifest["far_fog"]["width"], self.manifest["far_fog"]["height"]), (32, 16))
         for step in self.manifest["steps"]:
-            self.assertTrue(os.path.isfile(os.path.join(self.out, step["radiance_file"])), step["radiance_file"])
+            for key in ("sky_view_file", "far_fog_file"):
+                self.assertTrue(os.path.isfile(os.path.join(self.out, step[key])), step[key])
+            self.assertEqual(step["fog"]["far_fog_file"], step["far_fog_file"])
+            self.assertEqual(len(step["sky_irradiance_sh9"]), 9)
 
     def test_openexr_tools_read_the_header(self):
         exrheader = shutil.which("exrheader")
         self.assertIsNotNone(exrheader, "exrheader (Debian package openexr, installed by scripts/deps.sh)")
         step = self.manifest["steps"][3]  # 18:00
-        p = subprocess.run([exrheader, os.path.join(self.out, step["radiance_file"])], capture_output=True,
+        p = subprocess.run([exrheader, os.path.join(self.out, step["sky_view_file"])], capture_output=True,
                            text=True)
         self.assertEqual(p.returncode, 0, p.stderr)
-        for line in ("aerialMieAnisotropy (type double)", "aerialSunIlluminance (type v3d)",
-                     "aerialSunDirection (type v3d)", "aerialMapping (type string)", "dataWindow (type box2i): (0 0) - (63 31)"):
+        for line in ("aerialTimeHours (type double)", "aerialMapping (type string)",
+                     "dataWindow (type box2i): (0 0) - (63 31)"):
             self.assertIn(line, p.stdout)
-        channels = re.findall(r"^\s+([A-Za-z.]+), 16-bit floating-point", p.stdout, re.M)
+        channels = re.findall(r"^\s+([A-Za-z.]+), 32-bit floating-point", p.stdout, re.M)
         self.assertEqual(sorted(channels), ["B", "G", "R"])
-        # The tables carry the anisotropy and the light's illuminance too.
+        # The tables carry the anisotropy and the light's illuminance.
         p = subprocess.run([exrheader, os.path.join(self.out, step["sun"]["table_file"])], capture_output=True,
                            text=True)
         self.assertIn("aerialLightIlluminance (type v3d)", p.stdout)
@@ -642,8 +648,8 @@ class BakeRadiance(unittest.TestCase):
             self.skipTest("no --rgba-probe given")
         step = self.manifest["steps"][3]  # 18:00, a low sun: colour varies across the sky
         w, h = 64, 32
-        pixels = [(5, 2), (40, 9), (17, 14), (60, 15), (33, 0)]
-        p = subprocess.run([RGBA_PROBE, os.path.join(self.out, step["radiance_file"])] +
+        pixels = [(5, 2), (40, 9), (17, 14), (60, 31), (33, 0)]
+        p = subprocess.run([RGBA_PROBE, os.path.join(self.out, step["sky_view_file"])] +
                            ["%d,%d" % xy for xy in pixels], capture_output=True, text=True)
         self.assertEqual(p.returncode, 0, p.stderr)
         lines = p.stdout.splitlines()
@@ -652,14 +658,14 @@ class BakeRadiance(unittest.TestCase):
             r, g, b, a = map(float, line.split()[2:])
             self.assertEqual(a, 1.0)  # no alpha channel: the reader fills 1
             phi = 2 * math.pi * (x + 0.5) / w
-            el = math.pi / 2 - math.pi * (y + 0.5) / h
+            el = math.pi / 2 * (y / (h - 1)) ** 2
             d = (math.cos(el) * math.sin(phi), math.sin(el), -math.cos(el) * math.cos(phi))
-            sky = run_json(self, "sky", preset("hazy_sunset"), "--time", "18:00",
-                           "--dir=%r,%r,%r" % d)
-            ref = sky["table"]["radiance_rgb"]
-            for got, want in zip((r, g, b), ref):
-                # half float: 11 significant bits
-                self.assertAlmostEqual(got, want, delta=2e-3 * want + 1e-7, msg=(x, y, got, want))
+            if y == 0:
+                d = (d[0], 1e-9, d[2])  # line 0: the sky's limit from above the horizon
+            sky = run_json(self, "sky", preset("hazy_sunset"), "--time", "18:00", "--dir=%r,%r,%r" % d)
+            for got, want in zip((r, g, b), sky["sky_rgb"]):
+                # An RGBA reader converts to half float: 11 significant bits.
+                self.assertAlmostEqual(got, max(want, 0.0), delta=2e-3 * abs(want) + 1e-7, msg=(x, y, got, want))
 
 
 class Clouds(unittest.TestCase):
@@ -831,7 +837,8 @@ class Bake(unittest.TestCase):
         self.assertIn("baked 4 steps", out)
         files = sorted(os.listdir(out_dir))
         self.assertEqual(len([f for f in files if f.endswith("_sun.exr") or f.endswith("_moon.exr")]), 8, files)
-        self.assertEqual(len([f for f in files if f.endswith("_radiance.exr")]), 4, files)
+        self.assertEqual(len([f for f in files if f.endswith("_skyview.exr")]), 4, files)
+        self.assertEqual(len([f for f in files if f.endswith("_farfog.exr")]), 4, files)
         self.assertIn("manifest.json", files)
         self.assertFalse([f for f in files if f.startswith(".")], "temporary files left behind")
 
@@ -865,7 +872,8 @@ class Bake(unittest.TestCase):
                 self.assertEqual(value.decode(), light)
                 self.assertEqual(len(step[light]["horizon_rayleigh"]), 3)
                 self.assertEqual(len(step[light]["horizon_multiple"]), 3)
-        referenced |= {step["radiance_file"] for step in manifest["steps"]}
+        referenced |= {step["sky_view_file"] for step in manifest["steps"]}
+        referenced |= {step["far_fog_file"] for step in manifest["steps"]}
         self.assertEqual(referenced, {f for f in files if f.endswith(".exr")})
         # A sunlit sky has higher orders at the horizon; the exposure says how to expose it.
         self.assertTrue(all(v > 0.0 for v in manifest["steps"][2]["sun"]["horizon_multiple"]))

@@ -50,8 +50,8 @@ def bake(preset_path, name):
     """Bakes a preset (two steps, small tables) into WORK/name; returns the directory."""
     out = os.path.join(WORK, name)
     shutil.rmtree(out, ignore_errors=True)
-    code, _, err = run("bake", preset_path, "--out", out, "--step", "12h", "--size", "16x8", "--radiance-size",
-                       "8x4", "--quiet")
+    code, _, err = run("bake", preset_path, "--out", out, "--step", "12h", "--size", "16x8", "--sky-view-size",
+                       "8x4", "--far-fog-size", "8x4", "--quiet")
     if code != 0:
         raise AssertionError("aerial bake %s exited %d: %s" % (preset_path, code, err))
     return out
