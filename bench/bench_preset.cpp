@@ -3,6 +3,7 @@
 // Targets: load <= 5 ms, evaluate <= 20 us.
 #include <aerial/evaluate.hpp>
 #include <aerial/preset.hpp>
+#include <aerial/weather.hpp>
 
 #include <benchmark/benchmark.h>
 
@@ -141,5 +142,39 @@ void BM_PresetEvaluate(benchmark::State& state) {
     }
 }
 BENCHMARK(BM_PresetEvaluate)->Unit(benchmark::kMicrosecond);
+
+// The shipped clear_summer_day through a day, plain and with a
+// clear -> storm change under way (aerial/weather.hpp): the target is a
+// running transition at most 2x the plain evaluation. Arg 0 plain, 1 with
+// the weather (the mix and the overrides every frame).
+void BM_EvaluateWeather(benchmark::State& state) {
+    const aerial::PresetLoadResult r = aerial::loadPreset(AERIAL_SOURCE_DIR "/presets/clear_summer_day.json");
+    if (!r.ok()) {
+        state.SkipWithError("cannot load clear_summer_day.json");
+        return;
+    }
+    const aerial::CompiledPreset c(*r.preset);
+    aerial::Weather weather(c.preset(), "clear");
+    weather.change("overcast", 400.0, 0.0);
+    weather.change("storm", 600.0, 200.0);  // a change during another: two states mixed
+    aerial::WeatherMix mix;
+    aerial::PresetState s;
+    c.evaluate(0.0, s);
+    double t = 0.0, clock = 0.0;
+    for (auto _ : state) {
+        if (state.range(0) == 1) {
+            weather.mix(clock, mix);
+            c.evaluate(t, mix, s);
+        } else {
+            c.evaluate(t, s);
+        }
+        benchmark::DoNotOptimize(s.sunLight.illuminance);
+        t += 0.0137;
+        if (t >= 24.0) t -= 24.0;
+        clock += 1.0 / 60.0;
+        if (clock >= 700.0) clock = 210.0;  // stay inside the transitions
+    }
+}
+BENCHMARK(BM_EvaluateWeather)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 
 }  // namespace

@@ -1,6 +1,7 @@
 // cli_common.cpp — see cli_common.hpp.
 #include "cli_common.hpp"
 
+#include <aerial/weather.hpp>
 #include <aerial/clock.hpp>
 #include <aerial/detail/file_system.hpp>
 #include <aerial/limits.hpp>
@@ -448,6 +449,48 @@ glm::dvec3 tableSkyRadiance(const PresetState& state, const SkyTables& tables, c
     const double g = state.environment.atmosphere.mieAnisotropy;
     return skyRadiance(tables.sun(), g, direction, state.sunLight.illuminanceSpace) +
            skyRadiance(tables.moon(), g, direction, state.moonLight.illuminanceSpace);
+}
+
+// ---------------------------------------------------------------------------
+// Weather
+
+Json weatherFromOptions(const Preset& preset, const std::string& weather, const std::string& transition,
+                        WeatherMix& mix) {
+    auto known = [&](const std::string& name, const char* option) {
+        if (name == "none" || std::any_of(preset.weather.begin(), preset.weather.end(),
+                                          [&](const WeatherState& s) { return s.name == name; }))
+            return;
+        std::string list = "none";
+        for (const WeatherState& s : preset.weather) list += ", " + s.name;
+        usageError(std::string(option) + ": the preset has no weather state \"" + name + "\" (it has " + list + ")");
+    };
+    if (!weather.empty() && !transition.empty())
+        usageError("--weather and --transition: give one of them");
+    if (!weather.empty()) {
+        known(weather, "--weather");
+        settledWeather(preset, weather, mix);
+        return weather;
+    }
+    if (transition.empty()) return nullptr;
+    const std::size_t a = transition.find(':'), b = transition.rfind(':');
+    if (a == std::string::npos || a == b)
+        usageError("--transition: expected FROM:TO:FRACTION (e.g. clear:storm:0.5), got \"" + transition + "\"");
+    const std::string from = transition.substr(0, a), to = transition.substr(a + 1, b - a - 1);
+    const std::string fraction = transition.substr(b + 1);
+    char* end = nullptr;
+    const double f = std::strtod(fraction.c_str(), &end);
+    if (fraction.empty() || *end != '\0' || !(f >= 0.0 && f <= 1.0))
+        usageError("--transition: the fraction \"" + fraction + "\" is not a number from 0 to 1");
+    known(from, "--transition");
+    known(to, "--transition");
+    transitionWeather(preset, from, to, f, mix);
+    Json weights = Json::object();
+    for (std::size_t i = 0; i < preset.weather.size(); ++i) {
+        Json w = Json::object();
+        for (int c = 0; c < kWeatherCategoryCount; ++c) w[weatherCategoryName(WeatherCategory(c))] = mix.weights[i][std::size_t(c)];
+        weights[preset.weather[i].name] = w;
+    }
+    return {{"from", from}, {"to", to}, {"fraction", f}, {"weights", weights}};
 }
 
 }  // namespace aerial::cli

@@ -11,6 +11,7 @@
 #include <aerial/preset.hpp>
 #include <aerial/sky.hpp>
 #include <aerial/sky_spectral.hpp>
+#include <aerial/weather.hpp>
 
 #include <CLI/CLI.hpp>
 #include <glm/vec3.hpp>
@@ -195,5 +196,16 @@ private:
 /// The sky as the renderer shows it: both tables with their per-pixel phase
 /// functions and illuminances above the atmosphere.
 glm::dvec3 tableSkyRadiance(const PresetState& state, const SkyTables& tables, const glm::dvec3& direction);
+
+// ---------------------------------------------------------------------------
+// Weather
+
+/// `--weather STATE` (a state held fully) or `--transition FROM:TO:FRACTION`
+/// (the weather that far through a change, aerial/weather.hpp) into `mix`;
+/// neither leaves it empty. Returns what was applied for --json: the state's
+/// name, {"from", "to", "fraction", "weights"}, or null. Usage errors name
+/// the option (an unknown state lists the preset's).
+Json weatherFromOptions(const Preset& preset, const std::string& weather, const std::string& transition,
+                        WeatherMix& mix);
 
 }  // namespace aerial::cli

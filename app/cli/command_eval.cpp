@@ -24,13 +24,21 @@
 //    "sun_events": {"sunrise", "noon", ...: {"time_h", "time"}} (that day,
 //    aerial/sun.hpp sunEventHours), "anchored_keys": [{"track", "key",
 //    "anchor", "offset_h", "time_h", "time"}] (the keys that follow the sun,
-//    where they fall that day)}
+//    where they fall that day),
+//    "weather": {"states": [{"name", "overrides": [{"target", "mode",
+//    "value", "category"}]}], "applied": "STATE" or {"from", "to",
+//    "fraction", "weights": {state: {category: weight}}}}}
+// --weather STATE applies a weather state fully (aerial/weather.hpp);
+// --transition A:B:F the weather a fraction F (0..1) of the way through a
+// change from A to B, each category at its own speed ("none" names the keyed
+// values alone in both).
 // Keyed values are applied; emitter intensities include the lightning flash.
 // Without --json: a readable summary, one parameter per line with its unit.
 #include "cli_common.hpp"
 
 #include <aerial/clock.hpp>
 #include <aerial/photometry.hpp>
+#include <aerial/weather.hpp>
 
 #include <cmath>
 #include <cstdio>
@@ -45,7 +53,9 @@ struct EvalOptions {
     std::string preset;
     std::string time;
     bool json = false;
-    bool light = true;  ///< false: --no-light
+    bool light = true;
+    std::string weather;
+    std::string transition;  ///< false: --no-light
 };
 
 void printLight(const char* name, const LightState& light) {
@@ -125,12 +135,37 @@ void printAnchors(const Preset& preset) {
     }
 }
 
+/// The preset's weather states and what --weather / --transition applied.
+Json weatherToJson(const Preset& preset, const Json& applied) {
+    Json states = Json::array();
+    for (const WeatherState& s : preset.weather) {
+        Json overrides = Json::array();
+        for (const WeatherOverride& o : s.overrides) {
+            const ParamDesc* p = findParam(o.target.scope, o.target.param);
+            const int count = !p || p->components() == 1 ? 1 : p->components();
+            Json value = count == 1 ? Json(o.value.x) : Json::array();
+            for (int c = 0; c < count && count > 1; ++c) value.push_back(o.value[c]);
+            overrides.push_back({{"target", describeTarget(o.target)},
+                                 {"mode", o.mode == WeatherOverrideMode::Add     ? "add"
+                                          : o.mode == WeatherOverrideMode::Scale ? "scale"
+                                                                                 : "set"},
+                                 {"value", value},
+                                 {"category", weatherCategoryName(weatherCategory(o.target))}});
+        }
+        states.push_back({{"name", s.name}, {"overrides", overrides}});
+    }
+    return {{"states", states}, {"applied", applied}};
+}
+
 int runEval(const EvalOptions& options) {
     const double t = parseTimeOfDay(options.time, "--time");
     Preset preset = loadPresetOrFail(options.preset, "eval");
     const std::string name = preset.name;
     const CompiledPreset compiled(std::move(preset));
-    const PresetState state = compiled.evaluate(t);
+    WeatherMix mix;
+    const Json applied = weatherFromOptions(compiled.preset(), options.weather, options.transition, mix);
+    PresetState state;
+    compiled.evaluate(t, mix, state);
     // The light report needs both sky tables (a solve of ~1 ms, and the
     // atmosphere's tables the first time, ~20 ms): --no-light skips it for
     // scripts that only read positions and parameters.
@@ -146,6 +181,7 @@ int runEval(const EvalOptions& options) {
         out.update(stateToJson(state));
         if (light) out["light"] = lightReportToJson(*light);
         out.update(anchorsToJson(compiled.preset()));
+        out["weather"] = weatherToJson(compiled.preset(), applied);
         printJson(out);
         return kExitOk;
     }
@@ -160,6 +196,12 @@ int runEval(const EvalOptions& options) {
                     lux.total, lux.sun, lux.sky, lux.moon, lux.night, light->zenithLuminance);
     }
     printAnchors(compiled.preset());
+    if (!compiled.preset().weather.empty()) {
+        std::printf("weather");
+        for (const WeatherState& s : compiled.preset().weather) std::printf(" %s", s.name.c_str());
+        std::printf(applied.is_null() ? " (none applied)\n" : " (applied: %s)\n",
+                    applied.is_string() ? applied.get<std::string>().c_str() : options.transition.c_str());
+    }
     std::printf("\nparameters\n");
     printParameters(ParamScope::Global, state.environment, "  ");
     for (const FogVolume& v : state.volumes) {
@@ -195,9 +237,15 @@ Command addEvalCommand(CLI::App& parent) {
     app->add_flag("--light,!--no-light", options->light,
                   "Report the light in lux and cd/m^2 (default; solves both sky tables). --no-light skips "
                   "it: positions and parameters only, ~10x quicker");
+    app->add_option("--weather", options->weather, "Apply one of the preset's weather states fully")
+        ->type_name("STATE");
+    app->add_option("--transition", options->transition,
+                    "The weather a fraction of the way through a change: FROM:TO:FRACTION, FRACTION in 0..1")
+        ->type_name("A:B:F");
     app->footer(
         helpFooter("  aerial eval presets/hazy_sunset.json --time 18:30\n"
-                   "  aerial eval presets/hazy_sunset.json --time 18.5 --json"));
+                   "  aerial eval presets/hazy_sunset.json --time 18.5 --json\n"
+                   "  aerial eval presets/clear_summer_day.json --time 14:00 --transition clear:storm:0.5"));
     return {app, [options] { return runEval(*options); }};
 }
 

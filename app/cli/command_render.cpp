@@ -117,6 +117,8 @@ struct RenderOptions {
     std::string fog = "preset";  // preset | analytic | volumetric
     int froxelSlices = 128;
     bool json = false;
+    std::string weather;     // --weather STATE
+    std::string transition;  // --transition A:B:F
 };
 
 enum class Format { Exr, Png };
@@ -290,7 +292,10 @@ int runRender(const RenderOptions& options) {
     const double setupMs = millisecondsSince(setupStart);
 
     const auto solveStart = std::chrono::steady_clock::now();
-    const PresetState state = compiled.evaluate(t);
+    WeatherMix mix;
+    weatherFromOptions(compiled.preset(), options.weather, options.transition, mix);
+    PresetState state;
+    compiled.evaluate(t, mix, state);
     SkyTables tables;
     tables.solve(state);
     const double solveMs = millisecondsSince(solveStart);
@@ -409,6 +414,11 @@ Command addRenderCommand(CLI::App& parent) {
     app->add_option("--size", options->size, "Image size in pixels, each side 1..8192 (limits.hpp)")
         ->type_name("WxH")
         ->capture_default_str();
+    app->add_option("--weather", options->weather, "Apply one of the preset's weather states fully")
+        ->type_name("STATE");
+    app->add_option("--transition", options->transition,
+                    "The weather a fraction of the way through a change: FROM:TO:FRACTION, FRACTION in 0..1")
+        ->type_name("A:B:F");
     app->add_option("--exposure", options->exposure,
                     "PNG only: scale the radiance by 2^EV before the display transform (default 0)")
         ->type_name("EV");

@@ -7,6 +7,7 @@
 #include <aerial/finite.hpp>
 #include <aerial/fog_volume.hpp>
 #include <aerial/param_table.hpp>
+#include <aerial/weather.hpp>
 
 #include <glm/common.hpp>
 
@@ -82,6 +83,22 @@ struct Binding {
     CompiledTrack track;
 };
 
+/// One override of one weather state, bound to its field.
+struct WeatherBinding {
+    const ParamDesc* desc = nullptr;
+    ParamScope scope = ParamScope::Global;
+    std::size_t object = 0;  // index into volumes / emitters / cloud volumes
+    std::size_t state = 0;   // index into Preset::weather
+    int category = 0;        // WeatherCategory
+    WeatherOverrideMode mode = WeatherOverrideMode::Set;
+    glm::dvec3 value{0.0};
+};
+
+/// Same field: the same accessor on the same object.
+bool sameField(const WeatherBinding& a, const WeatherBinding& b) {
+    return a.desc == b.desc && a.scope == b.scope && a.object == b.object;
+}
+
 bool tableDependsOn(const ParamDesc& p) {
     return p.scope == ParamScope::Global &&
            (p.path == "atmosphere.viewer_height_m" || p.path == "atmosphere.rayleigh.scale_height_m" ||
@@ -102,6 +119,8 @@ struct CompiledPreset::Impl {
     Preset preset;
     std::vector<PresetIssue> issues;
     std::vector<Binding> bindings;
+    /// Grouped by field (sameField bindings adjacent), states in order.
+    std::vector<WeatherBinding> weather;
     bool useTable = true;
     OpticalDepthTable table;
 
@@ -134,7 +153,41 @@ struct CompiledPreset::Impl {
             if (tableDependsOn(*desc)) useTable = false;
             bindings.push_back(std::move(b));
         }
+        bindWeather();
         if (useTable) table.build(preset.environment.atmosphere);
+    }
+
+    /// The overrides of every weather state, bound like the tracks (an
+    /// override validatePreset refused is skipped).
+    void bindWeather() {
+        for (std::size_t s = 0; s < preset.weather.size(); ++s) {
+            for (const WeatherOverride& o : preset.weather[s].overrides) {
+                const ParamDesc* desc = findParam(o.target.scope, o.target.param);
+                if (!desc || !desc->animatable) continue;
+                WeatherBinding b;
+                b.desc = desc;
+                b.scope = o.target.scope;
+                if (b.scope == ParamScope::Volume) b.object = indexOf(preset.volumes, o.target.objectId);
+                if (b.scope == ParamScope::Emitter) b.object = indexOf(preset.emitters, o.target.objectId);
+                if (b.scope == ParamScope::CloudVolume) b.object = indexOf(preset.cloudVolumes, o.target.objectId);
+                if ((b.scope == ParamScope::Volume && b.object >= preset.volumes.size()) ||
+                    (b.scope == ParamScope::Emitter && b.object >= preset.emitters.size()) ||
+                    (b.scope == ParamScope::CloudVolume && b.object >= preset.cloudVolumes.size()))
+                    continue;
+                if (!isFinite(o.value)) continue;
+                b.state = s;
+                b.category = int(weatherCategory(o.target));
+                b.mode = o.mode;
+                b.value = o.value;
+                if (tableDependsOn(*desc)) useTable = false;
+                weather.push_back(b);
+            }
+        }
+        std::stable_sort(weather.begin(), weather.end(), [](const WeatherBinding& a, const WeatherBinding& b) {
+            if (a.desc != b.desc) return a.desc < b.desc;
+            if (a.scope != b.scope) return a.scope < b.scope;
+            return a.object < b.object;
+        });
     }
 
     glm::dvec3 transmittance(const AtmosphereParams& air, const glm::dvec3& direction) const {
@@ -153,6 +206,67 @@ const Preset& CompiledPreset::preset() const { return impl_->preset; }
 const std::vector<PresetIssue>& CompiledPreset::issues() const { return impl_->issues; }
 
 void CompiledPreset::evaluate(double timeHours, PresetState& state) const {
+    evaluate(timeHours, WeatherMix{}, state);
+}
+
+namespace {
+
+void* objectOf(PresetState& state, ParamScope scope, std::size_t index) {
+    switch (scope) {
+        case ParamScope::Volume: return &state.volumes[index];
+        case ParamScope::Emitter: return &state.emitters[index];
+        case ParamScope::CloudVolume: return &state.cloudVolumes[index];
+        case ParamScope::Global:
+        default: return &state.environment;
+    }
+}
+
+glm::dvec3 readField(const ParamDesc& d, void* object) {
+    if (d.type == ParamType::Scalar) return glm::dvec3(*d.scalar(object), 0.0, 0.0);
+    if (d.type == ParamType::Vec2) return glm::dvec3(d.vec2(object)->x, d.vec2(object)->y, 0.0);
+    return *d.vec3(object);
+}
+
+void writeField(const ParamDesc& d, void* object, const glm::dvec3& v) {
+    if (d.type == ParamType::Scalar)
+        *d.scalar(object) = std::clamp(v.x, d.minValue, d.maxValue);
+    else if (d.type == ParamType::Vec2)
+        *d.vec2(object) = glm::clamp(glm::dvec2(v.x, v.y), glm::dvec2(d.minValue), glm::dvec2(d.maxValue));
+    else
+        *d.vec3(object) = glm::clamp(v, glm::dvec3(d.minValue), glm::dvec3(d.maxValue));
+}
+
+/// v = k + sum_i W_i,c (o_i(k) - k) for each overridden field (weather.hpp).
+void applyWeather(const std::vector<WeatherBinding>& bindings, const WeatherMix& mix, PresetState& state) {
+    for (std::size_t begin = 0; begin < bindings.size();) {
+        std::size_t end = begin + 1;
+        while (end < bindings.size() && sameField(bindings[begin], bindings[end])) ++end;
+        const WeatherBinding& first = bindings[begin];
+        void* object = objectOf(state, first.scope, first.object);
+        const glm::dvec3 keyed = readField(*first.desc, object);
+        glm::dvec3 value = keyed;
+        bool touched = false;
+        for (std::size_t k = begin; k < end; ++k) {
+            const WeatherBinding& b = bindings[k];
+            if (b.state >= mix.weights.size()) continue;
+            const double w = mix.weights[b.state][std::size_t(b.category)];
+            if (!(w > 0.0)) continue;
+            glm::dvec3 target = b.value;
+            if (b.mode == WeatherOverrideMode::Add) target = keyed + b.value;
+            if (b.mode == WeatherOverrideMode::Scale) target = keyed * b.value;
+            if (b.desc->type == ParamType::Scalar) target.y = target.z = 0.0;
+            if (b.desc->type == ParamType::Vec2) target.z = 0.0;
+            value += std::min(w, 1.0) * (target - keyed);
+            touched = true;
+        }
+        if (touched) writeField(*first.desc, object, value);
+        begin = end;
+    }
+}
+
+}  // namespace
+
+void CompiledPreset::evaluate(double timeHours, const WeatherMix& mix, PresetState& state) const {
     const Impl& impl = *impl_;
     const Preset& preset = impl.preset;
     const double t = wrapHours(timeHours);
@@ -192,6 +306,8 @@ void CompiledPreset::evaluate(double timeHours, PresetState& state) const {
         else
             *d.vec3(object) = glm::clamp(v, glm::dvec3(d.minValue), glm::dvec3(d.maxValue));
     }
+    // 2b. The weather's overrides on top of the keys (weather.hpp).
+    if (!mix.weights.empty()) applyWeather(impl.weather, mix, state);
     AtmosphereParams& air = state.environment.atmosphere;
     air.mieExtinction = glm::max(air.mieExtinction, air.mieScattering);
 

@@ -1,6 +1,6 @@
 // preset_compare.cpp — presetsIdentical: two presets compared value by
 // value through the parameter table (bit for bit on every number), plus
-// their tracks.
+// their tracks and weather states.
 #include <aerial/param_table.hpp>
 #include <aerial/preset.hpp>
 
@@ -63,6 +63,18 @@ bool presetsIdentical(const Preset& constA, const Preset& constB) {
             if (std::memcmp(u, v, sizeof u) != 0 || s.keys[k].flat != t.keys[k].flat ||
                 s.keys[k].anchor != t.keys[k].anchor || s.keys[k].interpolation != t.keys[k].interpolation)
                 return false;
+        }
+    }
+    if (a.weather.size() != b.weather.size()) return false;
+    for (std::size_t i = 0; i < a.weather.size(); ++i) {
+        const WeatherState& s = a.weather[i];
+        const WeatherState& t = b.weather[i];
+        if (s.name != t.name || s.overrides.size() != t.overrides.size()) return false;
+        for (std::size_t k = 0; k < s.overrides.size(); ++k) {
+            const WeatherOverride& o = s.overrides[k];
+            const WeatherOverride& q = t.overrides[k];
+            const double u[3] = {o.value.x, o.value.y, o.value.z}, v[3] = {q.value.x, q.value.y, q.value.z};
+            if (!(o.target == q.target) || o.mode != q.mode || std::memcmp(u, v, sizeof u) != 0) return false;
         }
     }
     return true;

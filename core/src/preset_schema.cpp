@@ -183,6 +183,11 @@ std::string presetJsonSchema() {
     props["emitters"] = arraySchema("#/$defs/emitter", limits::kMaxEmitters);
     props["cloud_volumes"] = arraySchema("#/$defs/cloud_volume", limits::kMaxCloudVolumes);
     props["tracks"] = arraySchema("#/$defs/track", limits::kMaxTracks);
+    props["weather"] = {{"type", "object"},
+                        {"description", "named weather states layered on the keys (aerial/weather_state.hpp)"},
+                        {"properties", {{"states", arraySchema("#/$defs/weather_state", limits::kMaxWeatherStates)}}},
+                        {"required", {"states"}},
+                        {"additionalProperties", false}};
     root["properties"] = props;
     root["required"] = {"version"};
     root["additionalProperties"] = false;
@@ -260,6 +265,41 @@ std::string presetJsonSchema() {
                       {trackVariant(nullptr, ParamScope::Global), trackVariant("volume", ParamScope::Volume),
                        trackVariant("emitter", ParamScope::Emitter),
                        trackVariant("cloud_volume", ParamScope::CloudVolume)}}};
+    // A weather override: a track's target and one of set / add / scale.
+    auto overrideVariant = [&](const char* objectKey, const char* mode) {
+        ojson o;
+        o["type"] = "object";
+        ojson op = ojson::object();
+        if (objectKey) op[objectKey] = idSchema();
+        op["param"] = {{"$ref", std::string("#/$defs/animatable_") + (objectKey ? objectKey : "global")}};
+        op[mode] = {{"oneOf", {{{"type", "number"}},
+                               {{"type", "array"}, {"items", {{"type", "number"}}}, {"minItems", 2}, {"maxItems", 3}}}}};
+        o["properties"] = op;
+        ojson req = ojson::array();
+        if (objectKey) req.push_back(objectKey);
+        req.push_back("param");
+        req.push_back(mode);
+        o["required"] = req;
+        o["additionalProperties"] = false;
+        return o;
+    };
+    defs["animatable_global"] = {{"enum", animatableNames(ParamScope::Global)}};
+    defs["animatable_volume"] = {{"enum", animatableNames(ParamScope::Volume)}};
+    defs["animatable_emitter"] = {{"enum", animatableNames(ParamScope::Emitter)}};
+    defs["animatable_cloud_volume"] = {{"enum", animatableNames(ParamScope::CloudVolume)}};
+    ojson overrideVariants = ojson::array();
+    for (const char* mode : {"set", "add", "scale"}) {
+        for (const char* objectKey : {static_cast<const char*>(nullptr), "volume", "emitter", "cloud_volume"})
+            overrideVariants.push_back(overrideVariant(objectKey, mode));
+    }
+    defs["weather_override"] = {{"oneOf", overrideVariants}};
+    defs["weather_state"] = {
+        {"type", "object"},
+        {"properties",
+         {{"name", {{"type", "string"}, {"pattern", "^[A-Za-z0-9_-]{1,64}$"}, {"not", {{"const", "none"}}}}},
+          {"overrides", arraySchema("#/$defs/weather_override", limits::kMaxWeatherOverrides)}}},
+        {"required", {"name", "overrides"}},
+        {"additionalProperties", false}};
     root["$defs"] = defs;
     return root.dump(2) + "\n";
 }

@@ -13,6 +13,7 @@
 #include <aerial/sun.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <exception>
@@ -200,6 +201,97 @@ std::string globalPointer(sv path) {
     return out;
 }
 
+/// A track's or a weather override's target: a known, animatable parameter
+/// of an object that exists.
+void checkTarget(const Preset& preset, const TrackTarget& target, const std::string& at, const char* what,
+                 Issues& issues) {
+    const ParamDesc* p = findParam(target.scope, target.param);
+    const sv objectKey = trackObjectKey(target.scope);        if (!p) {
+            issues.error(pointerJoin(at, "param"), "unknown " + std::string(scopeName(target.scope)) +
+                                                       " parameter " + quoteString(target.param));
+        } else if (!p->animatable) {
+            issues.error(pointerJoin(at, "param"),
+                         "parameter " + quoteString(target.param) +
+                             (std::string(what) == "override"
+                                  ? " does not change with the weather (only a parameter a track may key does)"
+                                  : " cannot be animated"));
+        }
+        if (target.scope == ParamScope::Volume) {
+            const bool found = std::any_of(preset.volumes.begin(), preset.volumes.end(),
+                                           [&](const FogVolume& v) { return v.id == target.objectId; });
+            if (!found)
+                issues.error(pointerJoin(at, objectKey), "no volume with id " + quoteString(target.objectId));
+        } else if (target.scope == ParamScope::Emitter) {
+            const bool found = std::any_of(preset.emitters.begin(), preset.emitters.end(),
+                                           [&](const Emitter& e) { return e.id == target.objectId; });
+            if (!found)
+                issues.error(pointerJoin(at, objectKey),
+                             "no emitter with id " + quoteString(target.objectId));
+        } else if (target.scope == ParamScope::CloudVolume) {
+            const bool found = std::any_of(preset.cloudVolumes.begin(), preset.cloudVolumes.end(),
+                                           [&](const CloudVolume& v) { return v.id == target.objectId; });
+            if (!found)
+                issues.error(pointerJoin(at, objectKey),
+                             "no cloud volume with id " + quoteString(target.objectId));
+        } else if (!target.objectId.empty()) {
+            issues.error(at, "a global parameter's " + std::string(what) + " has no object id");
+        }
+}
+
+void checkWeather(const Preset& preset, Issues& issues) {
+    checkCount(preset.weather.size(), limits::kMaxWeatherStates, "/weather/states", "weather states", issues);
+    for (std::size_t i = 0; i < preset.weather.size(); ++i) {
+        const WeatherState& state = preset.weather[i];
+        const std::string at = pointerJoin("/weather/states", i);
+        const bool nameOk = !state.name.empty() && state.name.size() <= limits::kMaxIdBytes &&
+                            std::all_of(state.name.begin(), state.name.end(), [](char c) {
+                                return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
+                            });
+        if (!nameOk)
+            issues.error(pointerJoin(at, "name"), "a weather state's name is 1 to " +
+                                                      std::to_string(limits::kMaxIdBytes) +
+                                                      " letters, digits, _ or - (got " + quoteString(state.name) + ")");
+        else if (state.name == "none")
+            issues.error(pointerJoin(at, "name"), "\"none\" is taken: it names the keyed values without weather");
+        for (std::size_t j = 0; j < i; ++j)
+            if (preset.weather[j].name == state.name && nameOk) {
+                issues.error(pointerJoin(at, "name"), "a second weather state named " + quoteString(state.name) +
+                                                          " (also " + pointerJoin("/weather/states", j) + ")");
+                break;
+            }
+        const std::string overridesAt = pointerJoin(at, "overrides");
+        checkCount(state.overrides.size(), limits::kMaxWeatherOverrides, overridesAt.c_str(), "overrides", issues);
+        for (std::size_t k = 0; k < state.overrides.size(); ++k) {
+            const WeatherOverride& o = state.overrides[k];
+            const std::string oAt = pointerJoin(overridesAt, k);
+            checkTarget(preset, o.target, oAt, "override", issues);
+            for (std::size_t j = 0; j < k; ++j)
+                if (state.overrides[j].target == o.target) {
+                    issues.error(pointerJoin(oAt, "param"), "a second override of the same target in this state (also " +
+                                                                pointerJoin(overridesAt, j) + ")");
+                    break;
+                }
+            const ParamDesc* p = findParam(o.target.scope, o.target.param);
+            if (!p || !p->animatable) continue;
+            const char* key = o.mode == WeatherOverrideMode::Add     ? "add"
+                              : o.mode == WeatherOverrideMode::Scale ? "scale"
+                                                                     : "set";
+            const std::string valueAt = pointerJoin(oAt, key);
+            const int count = p->type == ParamType::Scalar ? 1 : p->components();
+            for (int c = 0; c < count; ++c) {
+                const double v = o.value[c];
+                const std::string vAt = count == 1 ? valueAt : pointerJoin(valueAt, std::size_t(c));
+                if (o.mode == WeatherOverrideMode::Set)
+                    checkNumber(*p, v, vAt, issues);
+                else if (!std::isfinite(v))
+                    issues.error(vAt, "must be a finite number (got " + formatDouble(v) + ")");
+                else if (o.mode == WeatherOverrideMode::Scale && v < 0.0)
+                    issues.error(vAt, "a scale must be >= 0 (got " + formatDouble(v) + ")");
+            }
+        }
+    }
+}
+
 void validateInto(const Preset& constPreset, Issues& issues) {
     // The accessors take non-const objects; validation only reads.
     Preset& preset = const_cast<Preset&>(constPreset);
@@ -238,34 +330,7 @@ void validateInto(const Preset& constPreset, Issues& issues) {
         const std::string at = pointerJoin("/tracks", i);
         const TrackTarget& target = track.target;
         const ParamDesc* p = findParam(target.scope, target.param);
-        const sv objectKey = trackObjectKey(target.scope);
-        if (!p) {
-            issues.error(pointerJoin(at, "param"), "unknown " + std::string(scopeName(target.scope)) +
-                                                       " parameter " + quoteString(target.param));
-        } else if (!p->animatable) {
-            issues.error(pointerJoin(at, "param"),
-                         "parameter " + quoteString(target.param) + " cannot be animated");
-        }
-        if (target.scope == ParamScope::Volume) {
-            const bool found = std::any_of(preset.volumes.begin(), preset.volumes.end(),
-                                           [&](const FogVolume& v) { return v.id == target.objectId; });
-            if (!found)
-                issues.error(pointerJoin(at, objectKey), "no volume with id " + quoteString(target.objectId));
-        } else if (target.scope == ParamScope::Emitter) {
-            const bool found = std::any_of(preset.emitters.begin(), preset.emitters.end(),
-                                           [&](const Emitter& e) { return e.id == target.objectId; });
-            if (!found)
-                issues.error(pointerJoin(at, objectKey),
-                             "no emitter with id " + quoteString(target.objectId));
-        } else if (target.scope == ParamScope::CloudVolume) {
-            const bool found = std::any_of(preset.cloudVolumes.begin(), preset.cloudVolumes.end(),
-                                           [&](const CloudVolume& v) { return v.id == target.objectId; });
-            if (!found)
-                issues.error(pointerJoin(at, objectKey),
-                             "no cloud volume with id " + quoteString(target.objectId));
-        } else if (!target.objectId.empty()) {
-            issues.error(at, "a global parameter's track has no object id");
-        }
+        checkTarget(preset, target, at, "track", issues);
         for (std::size_t j = 0; j < i; ++j) {
             if (preset.tracks[j].target == target) {
                 issues.error(pointerJoin(at, "param"),
@@ -308,6 +373,7 @@ void validateInto(const Preset& constPreset, Issues& issues) {
             }
         }
     }
+    checkWeather(preset, issues);
 }
 
 }  // namespace

@@ -236,6 +236,49 @@ public:
         newline(1);
         out += ']';
     }
+    /// "weather": {"states": [{"name", "overrides": [{target, "set"|"add"|"scale": value}]}]}
+    void weather(const std::vector<WeatherState>& states) {
+        out += ',';
+        newline(1);
+        key("weather");
+        out += '{';
+        newline(2);
+        key("states");
+        out += '[';
+        for (std::size_t i = 0; i < states.size(); ++i) {
+            if (i) out += ',';
+            newline(3);
+            out += "{\"name\": " + quoteString(states[i].name) + ", \"overrides\": [";
+            const std::vector<WeatherOverride>& list = states[i].overrides;
+            for (std::size_t k = 0; k < list.size(); ++k) {
+                const WeatherOverride& o = list[k];
+                const ParamDesc* p = findParam(o.target.scope, o.target.param);
+                const int count = !p || p->type == ParamType::Scalar ? 1 : p->components() == 2 ? 2 : 3;
+                if (k) out += ',';
+                newline(4);
+                out += '{';
+                if (o.target.scope != ParamScope::Global)
+                    out += quoteString(trackObjectKey(o.target.scope)) + ": " + quoteString(o.target.objectId) + ", ";
+                out += "\"param\": " + quoteString(o.target.param) + ", ";
+                out += o.mode == WeatherOverrideMode::Add     ? "\"add\": "
+                       : o.mode == WeatherOverrideMode::Scale ? "\"scale\": "
+                                                              : "\"set\": ";
+                if (count == 1) {
+                    out += formatDouble(o.value.x);
+                } else {
+                    const double c[3] = {o.value.x, o.value.y, o.value.z};
+                    numbers(c, count);
+                }
+                out += '}';
+            }
+            if (!list.empty()) newline(3);
+            out += "]}";
+        }
+        if (!states.empty()) newline(2);
+        out += ']';
+        newline(1);
+        out += '}';
+    }
 };
 
 }  // namespace
@@ -259,6 +302,7 @@ std::string presetToJson(const Preset& constPreset) {
     w.objectArray("emitters", preset.emitters, ParamScope::Emitter);
     w.objectArray("cloud_volumes", preset.cloudVolumes, ParamScope::CloudVolume);
     w.tracks(preset.tracks);
+    if (!preset.weather.empty()) w.weather(preset.weather);  // files without weather stay as they were
     w.out += "\n}\n";
     return std::move(w.out);
 }

@@ -344,7 +344,12 @@ const Fixture kFixtures[] = {
      "(got \"2026-02-30\")"},
     {"time_mode_unknown.json", "/location/time_mode", 3, 51, "unknown value \"local\""},
     {"anchor_and_time.json", "/tracks/0/keys/1/anchor", 5, 72, "either \"time_h\" (a fixed time) or \"anchor\""},
-    {"anchor_unknown.json", "/tracks/0/keys/1/anchor", 5, 56, "unknown sun event \"dusk\"; expected one of sunrise"},
+    {"anchor_unknown.json", "/tracks/0/keys/1/anchor", 5, 56, "unknown sun event \"dusk\"; expected one of sunrise"},    {"weather_unknown_param.json", "/weather/states/0/overrides/0/param", 4, 15, "unknown global parameter \"clouds.nope\""},
+    {"weather_not_animatable.json", "/weather/states/0/overrides/0/param", 4, 15, "does not change with the weather"},
+    {"weather_two_modes.json", "/weather/states/0/overrides/0/scale", 4, 58, "an override has one of \"set\", \"add\", \"scale\", not several"},
+    {"weather_duplicate_name.json", "/weather/states/1/name", 5, 14, "a second weather state named \"storm\""},
+    {"weather_out_of_range.json", "/weather/states/0/overrides/0/set", 4, 41, "out of range: 1.5 is not in 0..1"},
+    {"weather_unknown_volume.json", "/weather/states/0/overrides/0/volume", 4, 16, "no volume with id \"nope\""},
 };
 
 TEST(Preset, MalformedFilesGiveLocatedErrors) {

@@ -50,6 +50,8 @@
 
 namespace aerial {
 
+struct WeatherMix;  // weather.hpp
+
 /// A sun or moon at one moment.
 struct LightState {
     CelestialBody body;
@@ -107,6 +109,11 @@ public:
     /// `state` does not yet have this preset's shape (first call).
     void evaluate(double timeHours, PresetState& state) const;
     PresetState evaluate(double timeHours) const;
+    /// The same with the weather (weather.hpp): the overrides of the
+    /// preset's weather states, weighted per category by `mix`, on top of
+    /// the keys and before the lights, the emitters and every value derived
+    /// from them. An empty mix is the plain evaluate. Allocates nothing.
+    void evaluate(double timeHours, const WeatherMix& mix, PresetState& state) const;
 
 private:
     struct Impl;

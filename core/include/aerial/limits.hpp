@@ -63,6 +63,9 @@ inline constexpr std::size_t kMaxCloudVolumes = 64;
 inline constexpr std::size_t kMaxTracks = 4096;
 /// Keys in one track (one a minute over the day is 1440).
 inline constexpr std::size_t kMaxKeysPerTrack = 4096;
+/// Weather states in a preset, and overrides in one state.
+inline constexpr std::size_t kMaxWeatherStates = 64;
+inline constexpr std::size_t kMaxWeatherOverrides = 256;
 /// Longest name, description or other free text [bytes of UTF-8].
 inline constexpr std::size_t kMaxStringBytes = 4096;
 /// Longest object id [bytes] (ids are 1..64 of A-Z a-z 0-9 _ - .).

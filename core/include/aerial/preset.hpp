@@ -55,6 +55,7 @@
 #include <aerial/night_sky.hpp>
 #include <aerial/sun.hpp>
 #include <aerial/timeline.hpp>
+#include <aerial/weather_state.hpp>
 
 #include <glm/vec3.hpp>
 
@@ -76,7 +77,7 @@ namespace aerial {
 /// track converted alike; an attenuation left out is version 2's 0.01.
 /// Version 4: a key can follow the sun ("anchor" and "offset_h" in place of
 /// "time_h", timeline.hpp); earlier versions load unchanged.
-constexpr int kPresetVersion = 4;
+constexpr int kPresetVersion = 5;
 
 /// Default sun intensity [illuminance unit = 5000 lx, aerial/exposure.hpp]:
 /// 20, the ~100 000 lx of a clear noon above the atmosphere's losses.
@@ -149,6 +150,10 @@ struct Preset {
     std::vector<CloudVolume> cloudVolumes;
     /// At most one track per target.
     std::vector<Track> tracks;
+    /// Named weather states (weather_state.hpp), names unique; at most
+    /// limits::kMaxWeatherStates, each with at most
+    /// limits::kMaxWeatherOverrides overrides.
+    std::vector<WeatherState> weather;
 };
 
 /// One problem with a preset (an error or a warning).
@@ -256,7 +261,8 @@ std::string presetToJson(const Preset& preset);
 SaveResult savePreset(const Preset& preset, const std::string& path);
 
 /// True when both presets hold the same values, bit for bit on every
-/// number (compared through the parameter table, plus tracks).
+/// number (compared through the parameter table, plus tracks and weather
+/// states).
 bool presetsIdentical(const Preset& a, const Preset& b);
 
 /// The JSON Schema (draft 2020-12) of the preset format, generated from the
