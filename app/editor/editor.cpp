@@ -420,7 +420,9 @@ void Editor::captureWindow(int width, int height) {
 }
 
 void Editor::updateEvaluation() {
-    if (sky_.evaluate(doc_, edit_.pending, playback_.timeHours)) edit_.validate(doc_.preset());
+    // While a field is dragged its unkeyed change is drawn without compiling the preset each frame.
+    const bool dragging = imguiReady_ && ImGui::IsAnyItemActive();
+    if (sky_.evaluate(doc_, edit_.pending, playback_.timeHours, dragging)) edit_.validate(doc_.preset());
 }
 
 void Editor::updateSky() {

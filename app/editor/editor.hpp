@@ -2,14 +2,15 @@
 // 4.5 core context, Dear ImGui (fixed layout, no docking) and the renderer.
 // Private to aerial-editor. Editor composes the parts of editor_parts.hpp
 // (document, edit state, playback, sky service, viewport, dialogs, script
-// runner, frame stats); every user action is declared once in its action
-// table (actions.hpp), and the script's commands with arguments in its
-// script command table (script.hpp). The implementation is split by panel:
+// runner, frame stats); every user action and script command is declared
+// once in its one action table (actions.hpp), from which the menus, the
+// shortcuts and the script language come. The implementation is split by
+// panel:
 //
 //   editor.cpp            window, frame loop, layout, status bar, sky
 //                         solves, bench, selection
-//   editor_actions.cpp    the action table, the menu bar drawn from it and
-//                         the keyboard shortcuts
+//   editor_actions.cpp    the menus' and keys' actions, the menu bar drawn
+//                         from the table and the keyboard shortcuts
 //   editor_viewport.cpp   viewport render + OCIO display, camera, picking,
 //                         gizmo, overlays, screenshots
 //   editor_inspector.cpp  the inspector, generated from the parameter table
@@ -21,11 +22,13 @@
 //                         take the parts they edit)
 //   editor_files.cpp      new/open/save/recent/drop/scene, unsaved-changes
 //                         prompt, load-error modal, recovery
-//   editor_script.cpp     the automation (--script): runner, commands for
-//                         files, prompts and checks
+//   editor_script.cpp     the automation (--script): runner, the actions
+//                         only scripts run for files, prompts and checks
 //   editor_script_curves.cpp  script commands of the timeline's curve view
 //   editor_script_edit.cpp  script commands that edit objects, parameters,
-//                         keys, the time and the view
+//                         keys, the layout and the time
+//   editor_script_view.cpp  script commands of the viewport (screenshots,
+//                         gizmo drags, clicks, orbits, display)
 //
 // Every change to the preset goes through Document::apply (document.hpp),
 // so it is undoable and marks the document dirty.
@@ -78,6 +81,9 @@ public:
     std::optional<int> initialise();
     /// The frame loop; returns the exit code.
     int run();
+
+    /// Every action: menus, shortcuts and script commands (for tests).
+    const ActionTable& actions() const { return actions_; }
 
 private:
     // --- editor.cpp --------------------------------------------------------
@@ -170,10 +176,12 @@ private:
     void recover(bool accept);
     void startExport(const std::string& directory);
 
-    // --- editor_script.cpp, editor_script_edit.cpp, editor_script_curves.cpp
+    // --- editor_script.cpp, editor_script_edit.cpp, editor_script_curves.cpp,
+    //     editor_script_view.cpp
     void declareScriptCommands();
     void declareEditScriptCommands();
     void declareCurveScriptCommands();
+    void declareViewScriptCommands();
     void stepScript();
     /// Runs one command; returns false with `error` set on failure. May ask
     /// to wait: ScriptRunner::waitFrames frames, or until the synthetic
@@ -209,9 +217,8 @@ private:
     std::string statusShown_;                              ///< status_ as last drawn
     std::chrono::steady_clock::time_point statusSince_{};  ///< when it last changed
 
-    // Every user action, and the script language.
+    // Every user action and script command.
     ActionTable actions_;
-    ScriptCommandTable scriptCommands_;
 
     friend void dropCallback(GLFWwindow*, int, const char**);
 };

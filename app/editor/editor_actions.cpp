@@ -1,8 +1,10 @@
-// editor/editor_actions.cpp — every user action, declared once in the action
-// table (actions.hpp): the main menu bar is drawn from it (same order,
-// labels, shortcuts and enabled states), the keyboard shortcuts are matched
-// against it, scripts call its scriptable actions by name (editor_script.cpp)
-// and panels run its actions by name.
+// editor/editor_actions.cpp — the actions of the menus and the keys, each
+// declared once in the editor's one action table (actions.hpp): the main
+// menu bar is drawn from it (same order, labels, shortcuts and enabled
+// states), the keyboard shortcuts are matched against it (each in its part
+// of the window), the Help sheet lists its keys, a script runs any of them
+// by name (editor_script.cpp declares the actions only scripts run) and
+// panels run them by name.
 #include "editor.hpp"
 
 #include <GLFW/glfw3.h>  // GLFW_INCLUDE_NONE is defined for this target
@@ -24,7 +26,7 @@ void Editor::declareActions() {
     };
 
     // --- File ------------------------------------------------------------------
-    t.add("request_new", "New", "File").key(GLFW_KEY_N, S::kCtrl).scriptable().does([this] { requestNew(); });
+    t.add("request_new", "New", "File").key(GLFW_KEY_N, S::kCtrl).does([this] { requestNew(); });
     t.add("open_dialog", "Open...", "File").key(GLFW_KEY_O, S::kCtrl).does([this] { requestOpen(""); });
     t.add("open_recent", "Open Recent", "File").drawsMenu([this](const char* label) {
         if (!ImGui::BeginMenu(label, !recent_.files().empty())) return;
@@ -81,14 +83,13 @@ void Editor::declareActions() {
         }
         ImGui::EndMenu();
     });
-    t.add("request_quit", "Quit", "File").separated().key(GLFW_KEY_Q, S::kCtrl).scriptable().does([this] {
+    t.add("request_quit", "Quit", "File").separated().key(GLFW_KEY_Q, S::kCtrl).does([this] {
         requestQuit();
     });
 
     // --- Edit ------------------------------------------------------------------
     t.add("undo", "Undo", "Edit")
         .key(GLFW_KEY_Z, S::kCtrl, true)
-        .scriptable()
         .labelledBy([this] { return "Undo " + doc_.undoLabel(); })
         .enabledWhen([this] { return doc_.canUndo(); }, "nothing to undo")
         .does([this] {
@@ -97,7 +98,6 @@ void Editor::declareActions() {
     t.add("redo", "Redo", "Edit")
         .key(GLFW_KEY_Z, S::kCtrl | S::kShift, true)
         .key(GLFW_KEY_Y, S::kCtrl, true)
-        .scriptable()
         .labelledBy([this] { return "Redo " + doc_.redoLabel(); })
         .enabledWhen([this] { return doc_.canRedo(); }, "nothing to redo")
         .does([this] {
@@ -105,24 +105,24 @@ void Editor::declareActions() {
         });
     t.add("delete", "Delete", "Edit")
         .separated()
-        .key(GLFW_KEY_DELETE)
-        .keyOnlyWhen([this] { return !edit_.timelineHovered; })  // the timeline deletes keys
-        .scriptable()
+        .key(GLFW_KEY_DELETE, S::kNone, false, KeyContext::OutsideTimeline)  // the timeline deletes keys
         .oneUndoStep()
         .enabledWhen(objectSelected, needsObject("delete"))
         .does([this] { deleteSelection(); });
     t.add("duplicate", "Duplicate", "Edit")
         .key(GLFW_KEY_D, S::kCtrl)
-        .scriptable()
         .oneUndoStep()
         .enabledWhen(objectSelected, needsObject("duplicate"))
         .does([this] { duplicateSelection(); });
-    t.add("key_all_changed_parameters", "Key all changed parameters", "Edit")
+    t.add("key_all_changed", "Key all changed parameters", "Edit")
         .separated()
         .oneUndoStep()
+        .ignoresExtraWords()
+        .helps("key every parameter that differs from the saved preset")
         .does([this] {
             const int count = keyAllChangedAt(doc_, playback_.timeHours);
             setStatus(std::to_string(count) + " keys set at " + clockText());
+            std::printf("keyed %d parameters\n", count);
         });
 
     // --- Create: in front of the camera --------------------------------------------
@@ -133,7 +133,26 @@ void Editor::declareActions() {
         .key(GLFW_KEY_E, S::kShift)
         .oneUndoStep()
         .does([this] { addVolumeInFront(FogVolumeShape::Ellipsoid); });
-    t.add("add_mesh_volume", "Mesh volume (glTF)...", "Create").does([this] { requestMeshFile(-1); });
+    t.add("add_mesh_volume", "Mesh volume (glTF)...", "Create")
+        .takes({word("FILE.gltf").opt()})
+        .helps(
+            "a mesh fog volume from a glTF file, on the surface in front of the camera (without FILE: "
+            "the file dialog)")
+        .handles([this](const ActionArgs& a, std::string& error) {
+            if (!a.has(1)) {
+                requestMeshFile(-1);
+                return true;
+            }
+            const std::size_t before = doc_.preset().volumes.size();
+            if (!addMeshVolumeFromFile(a[1]) || doc_.preset().volumes.size() == before) {
+                error = "add_mesh_volume: " + dialogs_.errorText;
+                return false;
+            }
+            const FogVolume& v = doc_.preset().volumes.back();
+            std::printf("added mesh volume %zu \"%s\" at %.17g %.17g %.17g\n", before, v.mesh.c_str(),
+                        v.position.x, v.position.y, v.position.z);
+            return true;
+        });
     t.add("choose_volume_mesh", "Choose mesh of the volume...", "Edit").does([this] {
         if (edit_.selection.kind == Selection::Kind::Volume)
             requestMeshFile(edit_.selection.index);
@@ -174,12 +193,19 @@ void Editor::declareActions() {
             }
         ImGui::EndMenu();
     });
-    t.add("exposure", "Exposure offset [EV]", "View").drawsMenu([this](const char* label) {
-        // On top of the preset's exposure (Environment > Exposure), for this view only.
-        float ev = float(view_.exposureEv);
-        ImGui::SetNextItemWidth(140.0f);
-        if (ImGui::SliderFloat(label, &ev, -10.0f, 10.0f, "%+.2f")) view_.exposureEv = ev;
-    });
+    t.add("exposure", "Exposure offset [EV]", "View")
+        .takes({number("EV")})
+        .helps("the view's exposure offset, on top of the preset's")
+        .handles([this](const ActionArgs& a, std::string&) {
+            view_.exposureEv = a.number(1);  // the next frame shows it (it is in the frame's signature)
+            return true;
+        })
+        .drawsMenu([this](const char* label) {
+            // On top of the preset's exposure (Environment > Exposure), for this view only.
+            float ev = float(view_.exposureEv);
+            ImGui::SetNextItemWidth(140.0f);
+            if (ImGui::SliderFloat(label, &ev, -10.0f, 10.0f, "%+.2f")) view_.exposureEv = ev;
+        });
     t.add("resolution_scale_menu", "Resolution scale", "View").drawsMenu([this](const char* label) {
         if (!ImGui::BeginMenu(label)) return;
         for (double s : {0.25, 0.5, 0.75, 1.0}) {
@@ -197,15 +223,26 @@ void Editor::declareActions() {
         bool* f = &flag;
         a.checkedWhen([f] { return *f; }).does([f] { *f = !*f; });
     };
+    // A switch a script sets (on|off) and a menu item or key toggles.
+    const auto switchTo = [](bool& flag) {
+        return [f = &flag](const ActionArgs& a, std::string&) {
+            *f = a.has(1) ? a[1] == "on" : !*f;
+            return true;
+        };
+    };
     t.add("maximize_viewport", "Maximize viewport", "View")
         .key(GLFW_KEY_F11)
         .separated()
+        .takes({onOff().opt()})
+        .helps("hide the side panels and the timeline (without on|off: toggle)")
         .checkedWhen([this] { return view_.maximized; })
-        .does([this] { view_.maximized = !view_.maximized; });
+        .handles(switchTo(view_.maximized));
     t.add("game_view", "Game view (no helpers)", "View")
         .key(GLFW_KEY_G)
+        .takes({onOff().opt()})
+        .helps("the picture without helpers (without on|off: toggle)")
         .checkedWhen([this] { return view_.gameView; })
-        .does([this] { view_.gameView = !view_.gameView; });
+        .handles(switchTo(view_.gameView));
     toggle("show_outliner", "Outliner", view_.showOutliner);
     toggle("show_inspector", "Inspector", view_.showInspector);
     toggle("show_timeline", "Timeline", view_.showTimeline);
@@ -252,16 +289,12 @@ void Editor::declareActions() {
             view_.gizmoSpace = view_.gizmoSpace == GizmoSpace::World ? GizmoSpace::Local : GizmoSpace::World;
         });
     t.add("frame", "Frame selection", "View")
-        .key(GLFW_KEY_F)
-        .keyOnlyWhen([this] { return !edit_.timelineHovered; })  // over the timeline F fits its view
-        .scriptable()
+        .key(GLFW_KEY_F, S::kNone, false, KeyContext::OutsideTimeline)  // over the timeline F fits its view
         .enabledWhen(objectSelected, needsObject("frame"))
         .does([this] { frameSelection(); });
 
     t.add("timeline_fit", "Timeline: whole day", "View")
-        .key(GLFW_KEY_F)
-        .keyOnlyWhen([this] { return edit_.timelineHovered; })
-        .scriptable()
+        .key(GLFW_KEY_F, S::kNone, false, KeyContext::Timeline)
         .does([this] {
             edit_.curves.time = fitView();
             edit_.curves.resetRanges();  // the curves' value ranges follow their keys again
@@ -270,7 +303,6 @@ void Editor::declareActions() {
     t.add("drop_to_ground", "Drop to ground", "Edit")
         .key(GLFW_KEY_END)
         .separated()
-        .scriptable()
         .enabledWhen([this] {
             const ParamScope s = edit_.selection.scope();
             return s == ParamScope::Volume || s == ParamScope::Emitter;
@@ -278,9 +310,39 @@ void Editor::declareActions() {
         .does([this] { dropSelectionToGround(); });
 
     // --- Help --------------------------------------------------------------------------
-    t.add("help_sheet", "Keys and workflow", "Help").key(GLFW_KEY_F1).scriptable().does([this] {
+    t.add("help_sheet", "Keys and workflow", "Help").key(GLFW_KEY_F1).does([this] {
         dialogs_.showHelp = !dialogs_.showHelp;
     });
+
+    // --- The timeline's keys: while the mouse is over it ---------------------------
+    t.add("timeline_delete_keys", "Timeline: delete keys")
+        .key(GLFW_KEY_DELETE, S::kNone, false, KeyContext::Timeline)
+        .oneUndoStep()
+        .helps("delete the keys selected on the curves, else the selected key of the inspector's parameter")
+        .handles([this](const ActionArgs&, std::string& error) {
+            if (deleteTimelineKeys(doc_, edit_)) return true;
+            error = "timeline_delete_keys: no key selected";
+            return false;
+        });
+    t.add("timeline_copy_key", "Timeline: copy key")
+        .key(GLFW_KEY_C, S::kCtrl, false, KeyContext::Timeline)
+        .helps("copy the selected key of the inspector's parameter")
+        .handles([this](const ActionArgs&, std::string& error) {
+            if (copyTimelineKey(doc_, edit_)) return true;
+            error = "timeline_copy_key: no key selected";
+            return false;
+        });
+    t.add("timeline_paste_key", "Timeline: paste key")
+        .key(GLFW_KEY_V, S::kCtrl, false, KeyContext::Timeline)
+        .oneUndoStep()
+        .helps("paste the copied key on the inspector's parameter at the current time")
+        .enabledWhen([this] { return edit_.keyClipboard.valid && edit_.selectedParam.has_value(); },
+                     "timeline_paste_key: copy a key and select a parameter first")
+        .handles([this](const ActionArgs&, std::string& error) {
+            if (pasteTimelineKey(doc_, edit_, playback_.timeHours)) return true;
+            error = "timeline_paste_key: the copied key does not fit this parameter";
+            return false;
+        });
 
     // --- Keys only -----------------------------------------------------------------
     t.add("play_pause", "Play / pause").key(GLFW_KEY_SPACE).does([this] {
@@ -300,8 +362,8 @@ void Editor::declareActions() {
 
 void Editor::drawMenuBar() {
     if (!ImGui::BeginMainMenuBar()) return;
-    for (const char* menu : {"File", "Edit", "Create", "View", "Help"}) {
-        if (!ImGui::BeginMenu(menu)) continue;
+    for (const std::string& menu : ActionTable::menus()) {
+        if (!ImGui::BeginMenu(menu.c_str())) continue;
         for (const Action& a : actions_.all()) {
             if (a.menu != menu) continue;
             if (a.separatorBefore) ImGui::Separator();
@@ -312,8 +374,10 @@ void Editor::drawMenuBar() {
             const std::string label = a.text ? a.text() : a.label;
             const std::string keys = a.keys.empty() ? std::string() : shortcutText(a.keys.front());
             if (ImGui::MenuItem(label.c_str(), keys.empty() ? nullptr : keys.c_str(),
-                                a.checked && a.checked(), a.isEnabled()))
-                a.run();
+                                a.checked && a.checked(), a.isEnabled())) {
+                std::string error;
+                if (!actions_.run(a.name, &error)) setStatus(error);
+            }
         }
         ImGui::EndMenu();
     }
@@ -322,7 +386,7 @@ void Editor::drawMenuBar() {
 
 void Editor::drawHelpSheet() {
     if (!dialogs_.showHelp) return;
-    ImGui::SetNextWindowSize(ImVec2(560, 520), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(620, 520), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_FirstUseEver,
                             ImVec2(0.5f, 0.5f));
     if (!ImGui::Begin("Aerial: keys and workflow (F1)", &dialogs_.showHelp)) {
@@ -347,7 +411,7 @@ void Editor::drawHelpSheet() {
     ImGui::Separator();
     if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY)) {
         ImGui::TableSetupColumn("Command");
-        ImGui::TableSetupColumn("Keys", ImGuiTableColumnFlags_WidthFixed, 150.0f);
+        ImGui::TableSetupColumn("Keys", ImGuiTableColumnFlags_WidthFixed, 220.0f);
         ImGui::TableHeadersRow();
         for (const Action& a : actions_.all()) {
             if (a.keys.empty()) continue;
@@ -356,7 +420,11 @@ void Editor::drawHelpSheet() {
             ImGui::TextUnformatted((a.menu.empty() ? a.label : a.menu + " > " + a.label).c_str());
             ImGui::TableSetColumnIndex(1);
             std::string keys;
-            for (const Shortcut& k : a.keys) keys += (keys.empty() ? "" : ", ") + shortcutText(k);
+            for (const Shortcut& k : a.keys) {
+                keys += (keys.empty() ? "" : ", ") + shortcutText(k);
+                if (k.context != KeyContext::Anywhere)
+                    keys += " (" + std::string(keyContextName(k.context)) + ")";
+            }
             ImGui::TextUnformatted(keys.c_str());
         }
         const char* mouse[][2] = {{"Orbit / fly (with W A S D Q E)", "right drag"},
@@ -392,14 +460,10 @@ void Editor::handleShortcuts() {
     const bool ctrl = io.KeyCtrl, shift = io.KeyShift;
     if (!ctrl && view_.camera.flying()) return;  // W A S D Q E fly
     const int held = (ctrl ? Shortcut::kCtrl : 0) | (shift ? Shortcut::kShift : 0);
-    for (const Action& a : actions_.all()) {
-        for (const Shortcut& s : a.keys) {
-            if (!actions_.answers(s, held) || !ImGui::IsKeyPressed(s.key, s.repeat)) continue;
-            if (a.keyAllowed && !a.keyAllowed()) continue;
-            if (a.isEnabled()) a.run();
-            break;
-        }
-    }
+    const KeyContext where = edit_.timelineHovered ? KeyContext::Timeline : KeyContext::OutsideTimeline;
+    const Action* action = actions_.actionForKey(
+        held, where, [](const Shortcut& s) { return ImGui::IsKeyPressed(s.key, s.repeat); });
+    if (action && action->isEnabled()) actions_.run(action->name);
 }
 
 }  // namespace aerial::editor

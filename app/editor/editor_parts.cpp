@@ -71,17 +71,39 @@ void Playback::advance(double dt) {
     timeHours = t;
 }
 
-bool SkyService::evaluate(const Document& doc, const PendingEdits& pending, double timeHours) {
-    const bool recompile =
-        !compiled || compiledRevision != doc.revision() || compiledPendingRevision != pending.revision();
-    if (recompile) {
-        compiled =
-            std::make_unique<CompiledPreset>(pending.empty() ? doc.preset() : pending.applied(doc.preset()));
-        compiledRevision = doc.revision();
-        compiledPendingRevision = pending.revision();
+bool SkyService::evaluate(const Document& doc, const PendingEdits& pending, double timeHours, bool dragging) {
+    bool changed = false;
+    if (pending.empty() || dragging) {
+        // The document's own preset, and the changes being dragged written over it.
+        if (!compiled || compiledRevision != doc.revision()) {
+            compiled = std::make_unique<CompiledPreset>(doc.preset());
+            compiledRevision = doc.revision();
+            ++compiles;
+            changed = true;
+        }
+        compiled->evaluate(timeHours, state);
+        if (pending.empty()) return changed;
+        if (!overlayBound || overlayRevision != doc.revision() ||
+            overlayPendingRevision != pending.revision()) {
+            overlay.bind(doc.preset(), pending);  // a copy of each changed track only
+            overlayRevision = doc.revision();
+            overlayPendingRevision = pending.revision();
+            overlayBound = changed = true;
+        }
+        overlay.apply(state);
+        return changed;
     }
-    compiled->evaluate(timeHours, state);
-    return recompile;
+    // At rest: the preset with the changes keyed, exact (what evaluate
+    // derives from them too), compiled once per change.
+    if (!shown || shownRevision != doc.revision() || shownPendingRevision != pending.revision()) {
+        shown = std::make_unique<CompiledPreset>(pending.applied(doc.preset()));
+        shownRevision = doc.revision();
+        shownPendingRevision = pending.revision();
+        ++compiles;
+        changed = true;
+    }
+    shown->evaluate(timeHours, state);
+    return changed;
 }
 
 bool SkyService::solve() {

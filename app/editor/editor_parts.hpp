@@ -121,11 +121,23 @@ struct SkyService {
     double solveMs = 0.0;          ///< the last solve [ms]
     std::uint64_t generation = 0;  ///< counts solves (what the sky preview compares)
 
-    std::uint64_t compiledPendingRevision = 0;
+    /// With unkeyed changes: the preset with them keyed (PendingEdits::
+    /// applied), compiled once a change rests, and the changes over the
+    /// document's evaluation while one is being dragged.
+    std::unique_ptr<CompiledPreset> shown;
+    std::uint64_t shownRevision = 0, shownPendingRevision = 0;
+    PendingOverlay overlay;
+    std::uint64_t overlayRevision = 0, overlayPendingRevision = 0;
+    bool overlayBound = false;
+    std::uint64_t compiles = 0;  ///< presets compiled (each a copy of the whole preset)
+
     /// Evaluates the document's preset, with the unkeyed changes keyed
-    /// (what the artist sees), at `timeHours`, compiling it again after a
-    /// change of either. True when it was compiled again.
-    bool evaluate(const Document& doc, const PendingEdits& pending, double timeHours);
+    /// (what the artist sees), at `timeHours`. While `dragging` (a field
+    /// is being dragged) the changes are written over the document's own
+    /// evaluation, compiled only when the document changes; otherwise the
+    /// preset with the changes keyed is compiled again after a change of
+    /// either, once. True when it compiled or bound anything again.
+    bool evaluate(const Document& doc, const PendingEdits& pending, double timeHours, bool dragging = false);
     /// Solves both tables again when the atmosphere or a light direction
     /// changed since the last solve. True when it solved.
     bool solve();

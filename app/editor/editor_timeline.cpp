@@ -3,16 +3,17 @@
 // noon, sunset, the time as HH:MM), a 00:00-24:00 ruler to scrub on, a
 // summary row of every key in the preset, the selected parameter's track
 // (select, drag in time, double-click to add, right-click to delete, flatten
-// its tangent or set the interpolation; Delete, Ctrl+C / Ctrl+V while the mouse is over the
-// timeline; a key that follows the sun is a round mark with rays, "sunset +
-// 0:20 (19:52)") and the curve area (editor_curves.cpp). The time axis zooms
+// its tangent or set the interpolation; Delete, Ctrl+C / Ctrl+V while the
+// mouse is over the timeline are the action table's timeline_delete_keys,
+// timeline_copy_key and timeline_paste_key; a key that follows the sun is a
+// round mark with rays, "sunset + 0:20 (19:52)") and the curve area
+// (editor_curves.cpp). The time axis zooms
 // with the wheel around the mouse and pans with a middle or Alt drag; F or
 // a double-click on the ruler fits it to the day again.
 #include "panels.hpp"
 
 #include <aerial/clock.hpp>
 
-#include <GLFW/glfw3.h>
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
@@ -38,6 +39,39 @@ void diamond(ImDrawList* dl, ImVec2 c, float r, ImU32 colour, bool filled) {
 }
 
 }  // namespace
+
+bool deleteTimelineKeys(Document& doc, EditState& edit) {
+    // The keys selected on the curves, else the track row's key.
+    if (const std::vector<CurvePoint> picked = edit.curves.selected; !picked.empty()) {
+        doc.apply(deleteLabel(picked), "", [&](Preset& p) { removeCurvePoints(p, picked); });
+        edit.curves.selected.clear();
+        edit.selectedKey = -1;
+        return true;
+    }
+    const Track* track = edit.selectedParam ? trackOf(doc.preset(), *edit.selectedParam) : nullptr;
+    if (!track || edit.selectedKey < 0 || edit.selectedKey >= int(track->keys.size())) return false;
+    const TrackTarget target = trackTargetOf(doc.preset(), *edit.selectedParam);
+    const int key = edit.selectedKey;
+    doc.apply("Delete key", "", [&](Preset& p) { removeKey(p, target, key); });
+    edit.selectedKey = -1;
+    return true;
+}
+
+bool copyTimelineKey(const Document& doc, EditState& edit) {
+    const Track* t = edit.selectedParam ? trackOf(doc.preset(), *edit.selectedParam) : nullptr;
+    if (!t || edit.selectedKey < 0 || edit.selectedKey >= int(t->keys.size())) return false;
+    edit.keyClipboard = {true, edit.selectedParam->desc->type, t->keys[std::size_t(edit.selectedKey)].value};
+    return true;
+}
+
+bool pasteTimelineKey(Document& doc, EditState& edit, double timeHours) {
+    if (!edit.selectedParam || !edit.keyClipboard.valid) return false;
+    const ParamRef ref = *edit.selectedParam;
+    const KeyClipboard clip = edit.keyClipboard;
+    bool ok = false;
+    doc.apply("Paste key", "", [&](Preset& p) { ok = pasteKey(p, ref, clip, timeHours); });
+    return ok;
+}
 
 void drawTimeline(Document& doc, EditState& edit, Playback& playback, const ActionTable& actions,
                   std::string& status) {
@@ -105,21 +139,6 @@ void drawTimeline(Document& doc, EditState& edit, Playback& playback, const Acti
         doc.apply("Delete key", "", [&](Preset& p) { removeKey(p, target, key); });
         edit.selectedKey = -1;
     };
-    auto copySelectedKey = [&] {
-        const Track* t = edit.selectedParam ? trackOf(doc.preset(), *edit.selectedParam) : nullptr;
-        if (!t || edit.selectedKey < 0 || edit.selectedKey >= int(t->keys.size())) return false;
-        edit.keyClipboard = {true, edit.selectedParam->desc->type,
-                             t->keys[std::size_t(edit.selectedKey)].value};
-        return true;
-    };
-    auto pasteKeyNow = [&] {  // false when the copied key does not fit the parameter
-        const ParamRef ref = *edit.selectedParam;
-        const double now = playback.timeHours;
-        const KeyClipboard clip = edit.keyClipboard;
-        bool ok = false;
-        doc.apply("Paste key", "", [&](Preset& p) { ok = pasteKey(p, ref, clip, now); });
-        return ok;
-    };
     ImGui::SameLine();
     ImGui::TextDisabled("|");
     ImGui::SameLine();
@@ -144,14 +163,15 @@ void drawTimeline(Document& doc, EditState& edit, Playback& playback, const Acti
             track = trackOf(doc.preset(), *edit.selectedParam);
         }
         ImGui::SameLine();
-        if (ImGui::Button("Copy") && copySelectedKey()) status = "Copied key";
+        if (ImGui::Button("Copy") && copyTimelineKey(doc, edit)) status = "Copied key";
         ImGui::EndDisabled();
         ImGui::SameLine();
         ImGui::BeginDisabled(!edit.keyClipboard.valid);
         if (ImGui::Button("Paste")) {
             const double t = playback.timeHours;
-            status = pasteKeyNow() ? "Pasted key at " + clock(t)
-                                   : std::string("The copied key does not fit this parameter");
+            status = pasteTimelineKey(doc, edit, t)
+                         ? "Pasted key at " + clock(t)
+                         : std::string("The copied key does not fit this parameter");
             track = trackOf(doc.preset(), *edit.selectedParam);
         }
         ImGui::EndDisabled();
@@ -363,7 +383,8 @@ void drawTimeline(Document& doc, EditState& edit, Playback& playback, const Acti
         }
     }
     if (ImGui::BeginPopup("##keymenu")) {
-        if (ImGui::MenuItem("Delete key", "Del") && edit.selectedKey >= 0) deleteSelectedKey();
+        const std::string deleteKeys = actions.shortcutOf("timeline_delete_keys");
+        if (ImGui::MenuItem("Delete key", deleteKeys.c_str()) && edit.selectedKey >= 0) deleteSelectedKey();
         // Flat: the smooth curve levels out at the key (TrackKey::flat).
         if (const Track* t = edit.selectedParam ? trackOf(doc.preset(), *edit.selectedParam) : nullptr;
             t && edit.selectedKey >= 0 && edit.selectedKey < int(t->keys.size())) {
@@ -373,7 +394,8 @@ void drawTimeline(Document& doc, EditState& edit, Playback& playback, const Acti
                 doc.apply(flat ? "Automatic tangent" : "Flat tangent", "",
                           [&](Preset& p) { setFlatTangents(p, key, !flat); });
         }
-        if (ImGui::MenuItem("Copy", "Ctrl+C")) copySelectedKey();
+        if (ImGui::MenuItem("Copy", actions.shortcutOf("timeline_copy_key").c_str()))
+            actions.run("timeline_copy_key");
         if (ImGui::MenuItem("Jump to key") && edit.selectedParam) {
             if (const Track* t = trackOf(doc.preset(), *edit.selectedParam);
                 t && edit.selectedKey >= 0 && edit.selectedKey < int(t->keys.size()))
@@ -389,24 +411,7 @@ void drawTimeline(Document& doc, EditState& edit, Playback& playback, const Acti
         ImGui::EndPopup();
     }
 
-    // Keyboard on the timeline: Delete, Ctrl+C, Ctrl+V.
-    if (ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows) && !ImGui::GetIO().WantTextInput &&
-        edit.selectedParam) {
-        const Track* t = trackOf(doc.preset(), *edit.selectedParam);
-        if (ImGui::IsKeyPressed(GLFW_KEY_DELETE, false)) {
-            // The keys selected on the curves, else the track row's key.
-            if (const std::vector<CurvePoint> picked = edit.curves.selected; !picked.empty()) {
-                doc.apply(deleteLabel(picked), "", [&](Preset& p) { removeCurvePoints(p, picked); });
-                edit.curves.selected.clear();
-                edit.selectedKey = -1;
-            } else if (t && edit.selectedKey >= 0) {
-                deleteSelectedKey();
-            }
-        }
-        if (ImGui::GetIO().KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_C, false)) copySelectedKey();
-        if (ImGui::GetIO().KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_V, false) && edit.keyClipboard.valid)
-            pasteKeyNow();
-    }
+    // Its keys (Delete, Ctrl+C, Ctrl+V, F): the action table's, while the mouse is here.
     edit.timelineHovered = ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows);
 
     dl->PopClipRect();

@@ -39,6 +39,17 @@ void drawInspector(Document& doc, EditState& edit, double timeHours, const Prese
 void drawTimeline(Document& doc, EditState& edit, Playback& playback, const ActionTable& actions,
                   std::string& status);
 
+/// The timeline's key operations (the action table's timeline_delete_keys,
+/// timeline_copy_key and timeline_paste_key, and the timeline's buttons).
+/// Deletes the keys selected on the curves, else the selected key of the
+/// inspector's parameter (one undo step); false when there is none.
+bool deleteTimelineKeys(Document& doc, EditState& edit);
+/// Copies the selected key of the inspector's parameter; false when none.
+bool copyTimelineKey(const Document& doc, EditState& edit);
+/// Pastes the copied key on the inspector's parameter at `timeHours` (one
+/// undo step); false when nothing is copied or the key does not fit it.
+bool pasteTimelineKey(Document& doc, EditState& edit, double timeHours);
+
 /// The timeline's curve area (editor_curves.cpp): the curves shown
 /// (edit.curves.shown and the inspector's parameter) between `top` and
 /// `bottom` [px], from x0 to x1 [px] in edit.curves.time, a legend from

@@ -1,6 +1,8 @@
 // editor/pending_edits.cpp — auto-key and unkeyed edits (pending_edits.hpp).
 #include "pending_edits.hpp"
 
+#include <glm/common.hpp>
+
 #include <algorithm>
 
 namespace aerial::editor {
@@ -57,16 +59,65 @@ void PendingEdits::validate(const Preset& preset) {
     if (edits_.size() != before) ++revision_;
 }
 
+std::optional<Track> shownTrack(const Preset& preset, const PendingEdit& edit) {
+    const Track* track = edit.ref.desc ? trackOf(preset, edit.ref) : nullptr;
+    if (!track) return std::nullopt;
+    Track shown = *track;
+    setTrackValueAt(shown, *edit.ref.desc, edit.value, edit.timeHours);
+    return shown;
+}
+
 void displayedValueAt(const Preset& preset, const PendingEdits& pending, const ParamRef& ref,
                       double timeHours, double out[4]) {
-    if (const PendingEdit* e = pending.find(ref)) {
-        // The held value as the keyed preset would show it (clamped, normalised).
-        Preset scratch = preset;
-        setValueAt(scratch, ref, e->value, e->timeHours);
-        readValueAt(scratch, ref, e->timeHours, out);
+    const PendingEdit* e = pending.find(ref);
+    const std::optional<Track> track = e ? shownTrack(preset, *e) : std::nullopt;
+    if (!track) {
+        readValueAt(preset, ref, timeHours, out);
         return;
     }
-    readValueAt(preset, ref, timeHours, out);
+    // The held value as the keyed preset would show it (clamped, normalised), as readValueAt reads it.
+    readBaseValue(preset, ref, out);
+    const int components = ref.desc->components();
+    const glm::dvec3 v = evaluateTrack(*track, e->timeHours, components);
+    for (int c = 0; c < components; ++c) out[c] = v[c];
+}
+
+void PendingOverlay::bind(const Preset& preset, const PendingEdits& pending) {
+    bindings_.clear();
+    for (const PendingEdit& e : pending.all())
+        if (std::optional<Track> track = shownTrack(preset, e); track && !track->keys.empty())
+            bindings_.push_back({e.ref.desc, e.ref.object, compileTrack(*track, e.ref.desc->components())});
+}
+
+void PendingOverlay::apply(PresetState& state) const {
+    for (const Binding& b : bindings_) {
+        const ParamDesc& d = *b.desc;
+        void* object = nullptr;
+        const std::size_t i = std::size_t(b.object);
+        switch (d.scope) {
+            case ParamScope::Global:
+                object = &state.environment;
+                break;
+            case ParamScope::Volume:
+                object = i < state.volumes.size() ? &state.volumes[i] : nullptr;
+                break;
+            case ParamScope::Emitter:
+                object = i < state.emitters.size() ? &state.emitters[i] : nullptr;
+                break;
+            case ParamScope::CloudVolume:
+                object = i < state.cloudVolumes.size() ? &state.cloudVolumes[i] : nullptr;
+                break;
+        }
+        if (!object) continue;
+        const glm::dvec3 v = evaluateTrack(b.track, state.timeHours);
+        if (d.type == ParamType::Scalar)
+            *d.scalar(object) = std::clamp(v.x, d.minValue, d.maxValue);
+        else if (d.type == ParamType::Vec2)
+            *d.vec2(object) =
+                glm::clamp(glm::dvec2(v.x, v.y), glm::dvec2(d.minValue), glm::dvec2(d.maxValue));
+        else if (d.type == ParamType::Colour || d.type == ParamType::Vec3)
+            *d.vec3(object) = glm::clamp(v, glm::dvec3(d.minValue), glm::dvec3(d.maxValue));
+    }
 }
 
 }  // namespace aerial::editor

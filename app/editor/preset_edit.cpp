@@ -198,50 +198,70 @@ void readValueAt(const Preset& preset, const ParamRef& ref, double timeHours, do
     }
 }
 
+// The value of a track key (Scalar, Colour, Vec3, Vec2) as setValueAt
+// writes it: non-finite components 0, clamped into the valid range, unit
+// vectors normalised; false for a unit vector of no length.
+static bool animatedValueOf(const ParamDesc& p, const double value[4], glm::dvec3& out) {
+    const auto clampValue = [&](double v) {
+        return std::clamp(std::isfinite(v) ? v : 0.0, p.minValue, p.maxValue);
+    };
+    switch (p.type) {
+        case ParamType::Scalar:
+            out = glm::dvec3(clampValue(value[0]), 0.0, 0.0);
+            return true;
+        case ParamType::Colour:
+        case ParamType::Vec3: {
+            out = glm::dvec3(clampValue(value[0]), clampValue(value[1]), clampValue(value[2]));
+            if (!p.unitLength) return true;
+            const double length = glm::length(out);
+            if (!(length > 1e-9)) return false;
+            out /= length;
+            return true;
+        }
+        case ParamType::Vec2:
+            out = glm::dvec3(clampValue(value[0]), clampValue(value[1]), 0.0);
+            return true;
+        default:
+            return false;
+    }
+}
+
+bool setTrackValueAt(Track& track, const ParamDesc& desc, const double value[4], double timeHours) {
+    glm::dvec3 v;
+    if (!animatedValueOf(desc, value, v)) return false;
+    // An edit at a key (within kKeyTimeTolerance, where the inspector shows
+    // "keyed here") changes that key at its own time, never a second key
+    // beside it.
+    const int k = keyIndexAt(track, timeHours);
+    setKey(track, k >= 0 ? track.keys[std::size_t(k)].timeHours : timeHours, v);
+    return true;
+}
+
 void setValueAt(Preset& preset, const ParamRef& ref, const double value[4], double timeHours) {
     void* object = paramObjectOf(preset, ref);
     if (!object || !ref.desc) return;
     const ParamDesc& p = *ref.desc;
-    // An edit at a key (within kKeyTimeTolerance, where the inspector shows
-    // "keyed here") changes that key at its own time, never a second key
-    // beside it.
-    auto keyTime = [&](const Track& track) {
-        const int k = keyIndexAt(track, timeHours);
-        return k >= 0 ? track.keys[std::size_t(k)].timeHours : timeHours;
-    };
     auto clampValue = [&](double v) {
         if (!std::isfinite(v)) v = 0.0;
         return std::clamp(v, p.minValue, p.maxValue);
     };
     switch (p.type) {
-        case ParamType::Scalar: {
-            const double v = clampValue(value[0]);
-            if (Track* track = trackOf(preset, ref))
-                setKey(*track, keyTime(*track), glm::dvec3(v, 0.0, 0.0));
-            else
-                *p.scalar(object) = v;
-            break;
-        }
+        case ParamType::Scalar:
         case ParamType::Colour:
-        case ParamType::Vec3: {
-            glm::dvec3 v(clampValue(value[0]), clampValue(value[1]), clampValue(value[2]));
-            if (p.unitLength) {
-                const double length = glm::length(v);
-                if (!(length > 1e-9)) return;
-                v /= length;
+        case ParamType::Vec3:
+        case ParamType::Vec2: {
+            if (Track* track = trackOf(preset, ref)) {
+                setTrackValueAt(*track, p, value, timeHours);
+                break;
             }
-            if (Track* track = trackOf(preset, ref))
-                setKey(*track, keyTime(*track), v);
+            glm::dvec3 v;
+            if (!animatedValueOf(p, value, v)) return;
+            if (p.type == ParamType::Scalar)
+                *p.scalar(object) = v.x;
+            else if (p.type == ParamType::Vec2)
+                *p.vec2(object) = glm::dvec2(v.x, v.y);
             else
                 *p.vec3(object) = v;
-            break;
-        }
-        case ParamType::Vec2: {
-            const glm::dvec2 v(clampValue(value[0]), clampValue(value[1]));
-            if (Track* track = trackOf(preset, ref))
-                setKey(*track, keyTime(*track), glm::dvec3(v, 0.0));
-            else
-                *p.vec2(object) = v;
             break;
         }
         case ParamType::Quaternion: {

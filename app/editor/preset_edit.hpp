@@ -68,6 +68,11 @@ void readValueAt(const Preset& preset, const ParamRef& ref, double timeHours, do
 /// `timeHours` (replacing one there), any other one its constant value.
 /// Enum and Int values are rounded. Strings are not handled here.
 void setValueAt(Preset& preset, const ParamRef& ref, const double value[4], double timeHours);
+/// What setValueAt does to the track of an animatable parameter (Scalar,
+/// Colour, Vec3, Vec2): the value, clamped (and normalised for a unit
+/// vector), keyed at `timeHours` or on the key within kKeyTimeTolerance of
+/// it. False (the track unchanged) for a unit vector of no length.
+bool setTrackValueAt(Track& track, const ParamDesc& desc, const double value[4], double timeHours);
 
 /// Tolerance for "a key at this time" [h]: half a minute.
 inline constexpr double kKeyTimeTolerance = 0.5 / 60.0;

@@ -1,7 +1,6 @@
 // editor/script.cpp — see script.hpp.
 #include "script.hpp"
 
-#include <cassert>
 #include <fstream>
 #include <sstream>
 
@@ -59,32 +58,6 @@ ScriptParseResult loadScript(const std::string& path) {
     std::ostringstream text;
     text << in.rdbuf();
     return parseScript(text.str(), path);
-}
-
-void ScriptCommandTable::add(ScriptCommandSpec spec) {
-    assert(!find(spec.name) && "script command names are unique");
-    commands_.push_back(std::move(spec));
-}
-
-const ScriptCommandSpec* ScriptCommandTable::find(std::string_view name) const {
-    for (const ScriptCommandSpec& c : commands_)
-        if (c.name == name) return &c;
-    return nullptr;
-}
-
-bool ScriptCommandTable::run(const ScriptCommand& command, std::string& error) const {
-    const std::string& name = command.words.at(0);
-    const ScriptCommandSpec* spec = find(name);
-    if (!spec) {
-        error = "unknown command \"" + name + "\"";
-        return false;
-    }
-    const int argc = int(command.words.size()) - 1;
-    if (argc < spec->minArgs || (spec->maxArgs != kAnyArgs && argc > spec->maxArgs)) {
-        error = name + ": usage: " + spec->usage;
-        return false;
-    }
-    return spec->run(command.words, error);
 }
 
 }  // namespace aerial::editor

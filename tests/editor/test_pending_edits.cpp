@@ -1,6 +1,10 @@
 // Auto-key and unkeyed changes (pending_edits.hpp): which edits are held,
-// what the viewport is shown, what keying and validation do.
+// what the viewport is shown, what keying and validation do; the change's
+// own track and the overlay on an evaluated state show what the whole
+// preset with the change keyed shows.
 #include "pending_edits.hpp"
+
+#include <aerial/evaluate.hpp>
 
 #include <gtest/gtest.h>
 
@@ -76,6 +80,62 @@ TEST(PendingEdits, ValidateDropsWhatNoLongerApplies) {
     p.tracks.clear();  // e.g. the keys were undone
     pending.validate(p);
     EXPECT_TRUE(pending.empty());
+}
+
+/// A volume whose colour is animated, beside the fog density of animated().
+Preset animatedWithVolume(ParamRef& colour) {
+    Preset p = animated();
+    addVolume(p, FogVolumeShape::Box, glm::dvec3(0.0, 10.0, 0.0));
+    colour = {findParam(ParamScope::Volume, "colour_rgb"), 0};
+    const double warm[4] = {1.0, 0.5, 0.25, 0}, cold[4] = {0.2, 0.4, 1.0, 0};
+    keyParam(p, colour, 7.0);
+    setValueAt(p, colour, warm, 7.0);
+    keyParam(p, colour, 19.0);
+    setValueAt(p, colour, cold, 19.0);
+    return p;
+}
+
+TEST(PendingEdits, ShownValueIsTheKeyedPresetsWithoutCopyingIt) {
+    ParamRef colour;
+    const Preset p = animatedWithVolume(colour);
+    PendingEdits pending;
+    const double density[4] = {0.07, 0, 0, 0}, rgb[4] = {3.0, -1.0, 0.5, 0};  // -1: clamped to 0
+    pending.set(fogDensity(), density, 9.0);
+    pending.set(colour, rgb, 10.5);
+    const Preset keyed = pending.applied(p);  // what the inspector showed before: the whole preset keyed
+    for (const ParamRef& ref : {fogDensity(), colour}) {
+        const PendingEdit& e = *pending.find(ref);
+        for (double t : {0.0, 9.0, 13.25}) {
+            double shown[4], want[4];
+            displayedValueAt(p, pending, ref, t, shown);
+            readValueAt(keyed, ref, e.timeHours, want);  // shown where it was made
+            for (int c = 0; c < 4; ++c) EXPECT_EQ(shown[c], want[c]) << paramAddress(ref) << " " << c;
+        }
+        const std::optional<Track> track = shownTrack(p, e);
+        ASSERT_TRUE(track.has_value());
+        EXPECT_EQ(track->keys.size(), trackOf(keyed, ref)->keys.size());
+    }
+}
+
+TEST(PendingEdits, OverlayOnTheDocumentsStateIsTheKeyedPresetsState) {
+    ParamRef colour;
+    const Preset p = animatedWithVolume(colour);
+    PendingEdits pending;
+    const double density[4] = {0.07, 0, 0, 0}, rgb[4] = {3.0, 0.1, 0.5, 0};
+    pending.set(fogDensity(), density, 9.0);
+    pending.set(colour, rgb, 10.5);
+    const CompiledPreset document(p), keyed(pending.applied(p));
+    PendingOverlay overlay;
+    overlay.bind(p, pending);
+    EXPECT_EQ(overlay.size(), 2u);
+    PresetState drawn, want;
+    for (double t : {0.0, 6.0, 8.5, 9.0, 10.5, 11.0, 18.0, 23.9}) {
+        document.evaluate(t, drawn);
+        overlay.apply(drawn);
+        keyed.evaluate(t, want);
+        EXPECT_EQ(drawn.environment.fog.density, want.environment.fog.density) << t;
+        EXPECT_EQ(drawn.volumes[0].colour, want.volumes[0].colour) << t;
+    }
 }
 
 }  // namespace
