@@ -189,20 +189,60 @@ private:
     std::uint64_t counter_ = 0;
 };
 
+/// The flash clock's slots of a lightning emitter (see above).
+struct FlashSlots {
+    bool valid = false;
+    double slotCount = 1.0;
+    double slotLength = 1.0;   ///< [s of the flash clock]
+    double probability = 0.0;  ///< of a flash in a slot
+    double flashLength = 1.0;  ///< [s of the flash clock]
+};
+
+FlashSlots flashSlots(const Emitter& emitter) {
+    FlashSlots s;
+    const double rate = emitter.flashesPerMinute;
+    const double duration = emitter.flashDurationSeconds;
+    const double timeScale = emitter.timeScale;
+    // Invalid parameters mean no flashes (bounds keep the slot count in range).
+    if (!(rate > 0.0) || !(rate < 1.0e9) || !(duration > 0.0) || !(duration < 1.0e9) || !(timeScale >= 1.0e-6) ||
+        !(timeScale <= 1.0e9))
+        return s;
+    const double daySeconds = 86400.0 / timeScale;
+    // Slots: target length two durations, shortened towards one duration
+    // when the rate needs it, and an integer number per day.
+    const double target = std::max(duration, std::min(2.0 * duration, 60.0 / rate));
+    s.slotCount = std::clamp(std::floor(daySeconds / target), 1.0, 1.0e15);
+    s.slotLength = daySeconds / s.slotCount;
+    s.probability = std::min(1.0, rate * s.slotLength / 60.0);
+    s.flashLength = std::min(duration, s.slotLength);  // a day shorter than a flash
+    s.valid = true;
+    return s;
+}
+
 }  // namespace
+
+void lightningStrikeHours(const Emitter& emitter, double fromHours, double toHours, std::vector<double>& out) {
+    if (emitter.kind != EmitterKind::Lightning) return;
+    const FlashSlots slots = flashSlots(emitter);
+    if (!slots.valid || !(fromHours < toHours)) return;
+    const double from = std::max(fromHours, 0.0) * 3600.0 / emitter.timeScale;
+    const double to = std::min(toHours, 24.0) * 3600.0 / emitter.timeScale;
+    const double first = std::max(std::floor(from / slots.slotLength), 0.0);
+    const double last = std::min(std::floor(to / slots.slotLength), slots.slotCount - 1.0);
+    for (double slotReal = first; slotReal <= last; slotReal += 1.0) {
+        SlotHash hash(emitter.seed, static_cast<std::uint64_t>(slotReal));
+        if (!(hash.next() < slots.probability)) continue;
+        const double start = slotReal * slots.slotLength + hash.next() * (slots.slotLength - slots.flashLength);
+        if (start > from && start <= to) out.push_back(start * emitter.timeScale / 3600.0);
+    }
+}
 
 double lightningFlash(const Emitter& emitter, double timeHours) {
     if (emitter.kind != EmitterKind::Lightning) {
         return 1.0;
     }
-    const double rate = emitter.flashesPerMinute;
-    const double duration = emitter.flashDurationSeconds;
-    const double timeScale = emitter.timeScale;
-    // Invalid parameters mean no flashes (bounds keep the slot count in range).
-    if (!std::isfinite(timeHours) || !(rate > 0.0) || !(rate < 1.0e9) || !(duration > 0.0) ||
-        !(duration < 1.0e9) || !(timeScale >= 1.0e-6) || !(timeScale <= 1.0e9)) {
-        return 0.0;
-    }
+    const FlashSlots slots = flashSlots(emitter);
+    if (!std::isfinite(timeHours) || !slots.valid) return 0.0;
     double hours = std::fmod(timeHours, 24.0);
     if (hours < 0.0) {
         hours += 24.0;
@@ -210,15 +250,9 @@ double lightningFlash(const Emitter& emitter, double timeHours) {
     if (!(hours < 24.0)) {
         hours = 0.0;  // -tiny + 24 rounds to 24
     }
-    const double daySeconds = 86400.0 / timeScale;
-    const double seconds = hours * 3600.0 / timeScale;
-
-    // Slots: target length two durations, shortened towards one duration
-    // when the rate needs it, and an integer number per day.
-    const double target = std::max(duration, std::min(2.0 * duration, 60.0 / rate));
-    const double slotCount = std::clamp(std::floor(daySeconds / target), 1.0, 1.0e15);
-    const double slotLength = daySeconds / slotCount;
-    const double probability = std::min(1.0, rate * slotLength / 60.0);
+    const double seconds = hours * 3600.0 / emitter.timeScale;
+    const double slotLength = slots.slotLength, slotCount = slots.slotCount, probability = slots.probability;
+    const double duration = emitter.flashDurationSeconds;
 
     const double slotReal = std::min(std::floor(seconds / slotLength), slotCount - 1.0);
     const std::uint64_t slot = static_cast<std::uint64_t>(std::max(slotReal, 0.0));

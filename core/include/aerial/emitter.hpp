@@ -67,6 +67,8 @@
 
 #include <glm/vec3.hpp>
 
+#include <vector>
+
 #include <cstdint>
 #include <string>
 
@@ -167,5 +169,11 @@ double emitterFieldAt(const Emitter& emitter, const glm::dvec3& point);
 /// not positive and finite, timeScale outside [1e-6, 1e9]) or a non-finite
 /// time give 0: no flashes.
 double lightningFlash(const Emitter& emitter, double timeHours);
+
+/// Start times [h] of a lightning emitter's flashes in (fromHours, toHours]
+/// of one day (0 <= from <= to <= 24), in order, as lightningFlash draws
+/// them (each flash's first stroke); appended to `out`. Nothing for other
+/// emitters or invalid parameters. (events.hpp reports them to a game.)
+void lightningStrikeHours(const Emitter& emitter, double fromHours, double toHours, std::vector<double>& out);
 
 }  // namespace aerial
