@@ -3,6 +3,7 @@
 #include "bake_maps.hpp"
 
 #include <aerial/fog_light.hpp>
+#include <aerial/weather.hpp>
 
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfDoubleAttribute.h>
@@ -13,6 +14,8 @@
 #include <OpenEXR/ImfStringAttribute.h>
 
 #include <algorithm>
+#include <cstdint>
+#include <cstring>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -105,6 +108,29 @@ Json irradianceManifest() {
              "wants"}};
 }
 
+Json bakeWeatherManifest(const Preset& preset) {
+    Json states = Json::array();
+    for (const WeatherState& s : preset.weather) states.push_back(s.name);
+    Json shares = Json::object();
+    for (int c = 0; c < kWeatherCategoryCount; ++c)
+        shares[weatherCategoryName(WeatherCategory(c))] = kWeatherCategoryShare[c];
+    return {{"states", states},
+            {"category_share", shares},
+            {"what",
+             "per step, weather.<state>: that state held fully (aerial/weather.hpp): its parameters, the "
+             "light reaching the ground, its sky-view and far fog maps, irradiance coefficients and fog, as "
+             "the step's own fields are for the keyed values alone. The overrides themselves are in the "
+             "preset (weather.states) and `aerial eval --json`"},
+            {"blend",
+             "a change of duration D from state A to state B, t seconds in: each category c (the parameter's: "
+             "clouds.* but the wind -> clouds, clouds.wind_m_per_s -> wind, fog.* and fog volumes -> fog, "
+             "atmosphere.* -> haze, exposure/sun/moon/night -> light, emitters -> lightning) takes weight "
+             "w_c = smoothstep(clamp(t / (category_share_c D), 0, 1)) of B; a parameter is (1 - w_c) A + w_c B; "
+             "the maps and coefficients cross-fade with the clouds' weight (the haze's for a change without "
+             "clouds). The library blends parameters exactly so; the cross-faded maps stand in for a sky "
+             "solved for the blended atmosphere"}};
+}
+
 Json irradianceToJson(const IrradianceSH9& sh) {
     Json out = Json::array();
     for (const glm::dvec3& c : sh.c) out.push_back(toJson(c));
@@ -114,11 +140,19 @@ Json irradianceToJson(const IrradianceSH9& sh) {
 void writeRgbExr(const std::filesystem::path& path, const RgbImage& image, double timeHours,
                  const char* mapping, Imf::Compression compression) {
     // 32-bit float: a moonless sky is ~1e-8 radiance units (the dark sky's
-    // 2e-4 cd/m^2), below half float's normal range (6e-5).
+    // 2e-4 cd/m^2), below half float's normal range (6e-5). Rounded to 12
+    // significant bits (0.012 %, half float's precision with float's range)
+    // so that the lossless compression has something to compress: 1.7 MB a
+    // map with every bit, a tenth of that rounded.
     std::vector<float> pixels(image.rgb.size());
     for (std::size_t i = 0; i < image.rgb.size(); ++i) {
         const float value = image.rgb[i];
-        pixels[i] = std::isfinite(value) && value > 0.0f ? value : 0.0f;
+        float v = std::isfinite(value) && value > 0.0f ? value : 0.0f;
+        std::uint32_t bits = 0;
+        std::memcpy(&bits, &v, sizeof bits);
+        bits = (bits + 0x400u) & ~0x7FFu;  // round to nearest on the 11 bits dropped
+        std::memcpy(&v, &bits, sizeof bits);
+        pixels[i] = std::isfinite(v) ? v : 0.0f;
     }
     Imf::StdOSStream encoded;
     try {

@@ -39,6 +39,11 @@ struct StepMaps {
 StepMaps bakeStepMaps(const PresetState& state, const SkyTable& sun, const SkyTable& moon, int skyViewWidth,
                       int skyViewHeight, int farFogWidth, int farFogHeight);
 
+/// The manifest's "weather": the preset's states (their overrides as
+/// `aerial eval --json` lists them), each category's share of a change and
+/// how to blend the states' per-step data without the library.
+Json bakeWeatherManifest(const Preset& preset);
+
 /// Nine [r, g, b] triples.
 Json irradianceToJson(const IrradianceSH9& sh);
 

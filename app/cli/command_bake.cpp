@@ -379,6 +379,12 @@ int runBake(const BakeOptions& options) {
     const auto start = std::chrono::steady_clock::now();
     SkyTables tables(desc);
     PresetState state;
+    // Each weather state's own tables keep their atmosphere's cache warm.
+    const std::vector<WeatherState>& weatherStates = compiled.preset().weather;
+    std::vector<std::unique_ptr<SkyTables>> weatherTables;
+    for (std::size_t w = 0; w < weatherStates.size(); ++w) weatherTables.push_back(std::make_unique<SkyTables>(desc));
+    PresetState weatherState;
+    WeatherMix weatherMix;
     Json steps = Json::array();
     std::string layout;   // layout.gltf
     bool cloudy = false;  // some step has clouds: the manifest fingerprints their noise
@@ -414,6 +420,31 @@ int runBake(const BakeOptions& options) {
         step["sky_irradiance_sh9"] = irradianceToJson(maps.irradiance);
         step["fog"] = maps.fog;
         step["fog"]["far_fog_file"] = farFogFile;
+        // Each weather state held fully at this step: what an engine
+        // cross-fades by the weights of bake_weather's formula.
+        Json weather = Json::object();
+        for (std::size_t w = 0; w < weatherStates.size(); ++w) {
+            const std::string& name = weatherStates[w].name;
+            settledWeather(compiled.preset(), name, weatherMix);
+            compiled.evaluate(t, weatherMix, weatherState);
+            SkyTables& wt = *weatherTables[w];
+            wt.solve(weatherState);
+            const StepMaps wm = bakeStepMaps(weatherState, wt.sun(), wt.moon(), skyViewWidth, skyViewHeight,
+                                             farFogWidth, farFogHeight);
+            const std::string wSky = stem + "_skyview_" + name + ".exr", wFog = stem + "_farfog_" + name + ".exr";
+            writeRgbExr(dir / wSky, wm.skyView, t, kSkyViewMapping, compression);
+            writeRgbExr(dir / wFog, wm.farFog, t, kFarFogMapping, compression);
+            Json entry = {{"parameters", parametersToJson(weatherState.environment)},
+                          {"sun_illuminance_rgb", toJson(weatherState.sunLight.illuminance)},
+                          {"moon_illuminance_rgb", toJson(weatherState.moonLight.illuminance)},
+                          {"sky_view_file", wSky},
+                          {"far_fog_file", wFog},
+                          {"sky_irradiance_sh9", irradianceToJson(wm.irradiance)},
+                          {"fog", wm.fog}};
+            entry["fog"]["far_fog_file"] = wFog;
+            weather[name] = std::move(entry);
+        }
+        if (!weatherStates.empty()) step["weather"] = std::move(weather);
         steps.push_back(std::move(step));
         progress.update(k + 1, formatTime(t), sunFile + ", " + moonFile);
     }
@@ -480,6 +511,7 @@ int runBake(const BakeOptions& options) {
         {"far_fog", farFogManifest(farFogWidth, farFogHeight)},
         {"sky_irradiance_sh9", irradianceManifest()},
         {"clouds", cloudsToJson(compiled.preset().environment.clouds.seed, cloudy)},
+        {"weather", bakeWeatherManifest(compiled.preset())},
         {"fog",
          {{"render_mode", compiled.preset().environment.fogRenderMode == FogRenderMode::Volumetric
                               ? "volumetric"

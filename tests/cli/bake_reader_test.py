@@ -83,6 +83,24 @@ class BakeReader(unittest.TestCase):
             self.assertIn("sky_view", manifest)
             self.assertIn("formula", manifest["fog"])
 
+    def test_each_weather_state_is_baked(self):
+        out, manifest = self.bakes["foggy_valley_morning"]
+        self.assertEqual(manifest["weather"]["states"], ["fog", "clearing"])
+        self.assertEqual(manifest["weather"]["category_share"]["clouds"], 1.0)
+        for step in manifest["steps"]:
+            for name in ("fog", "clearing"):
+                entry = step["weather"][name]
+                for key in ("sky_view_file", "far_fog_file"):
+                    self.assertTrue(os.path.isfile(os.path.join(out, entry[key])), entry[key])
+                self.assertEqual(len(entry["sky_irradiance_sh9"]), 9)
+            # "fog" has no overrides: the keyed values; "clearing" scales the fog by 0.1.
+            base = step["parameters"]["fog"]["density_per_m"]
+            self.assertEqual(step["weather"]["fog"]["parameters"], step["parameters"])
+            self.assertAlmostEqual(step["weather"]["clearing"]["parameters"]["fog"]["density_per_m"], 0.1 * base,
+                                   delta=1e-15 + 1e-12 * base)
+            self.assertAlmostEqual(step["weather"]["clearing"]["fog"]["density_per_m"], 0.1 * base,
+                                   delta=1e-15 + 1e-12 * base)
+
     def test_the_sky_view_map_is_the_sky(self):
         rng = random.Random(49)
         worst = (0.0, None)
