@@ -1,6 +1,6 @@
 // test_sky_drift.cpp — the multiple-scattering LUT kept while the
 // atmosphere drifts (SkySolverDesc::multipleScatteringTolerance;
-// core/src/sky_solver.cpp, "Multiple scattering in a drifting atmosphere"):
+// core/src/sky/sky_solver.cpp, "Multiple scattering in a drifting atmosphere"):
 // a solver that keeps its LUT for a drifted atmosphere against one that
 // builds it for that atmosphere (tolerance 0), in the default air and in
 // two shipped presets' hazes, for every coefficient the estimate covers.

@@ -2,11 +2,11 @@
 // documents the solve), shared by the solver's files.
 #pragma once
 
+#include "base/worker_pool.hpp"
 #include "sky_depth.hpp"
 #include "sky_kernels.hpp"
 #include "sky_layers.hpp"
 #include "sky_multiple.hpp"
-#include "worker_pool.hpp"
 
 #include <aerial/sky.hpp>
 
