@@ -10,7 +10,7 @@
 //   uLinearDepth (unit 4): normalised linear eye depth
 // Output (location 0), blended with glBlendFunc(GL_ONE, GL_ONE):
 //   rgb = sum colour * integral f, f(p) = i / (1 + a |l - p|^2), in the
-//   cancellation-free form of core/src/emitter.cpp:
+//   cancellation-free form of core/src/emitters/emitter.cpp:
 //   integral f = (i / K) atan2(L K, X), K = sqrt(a) sqrt(1 + a |c x n|^2),
 //   X = 1 + a c.(c - d), c = l - o, n = d / L.
 #include "common/frame.glsl"

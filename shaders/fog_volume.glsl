@@ -21,7 +21,7 @@
 // at t = depth01. The segment is [max(t_in, 0), min(t_out, depth01)] (the
 // viewer may stand inside; geometry inside the volume ends it). Its optical
 // depth is the global-fog formula with o.y - h0 -> dot(o - centre, g) - offset
-// and d.y -> dot(d, g) (core/src/bvh.hpp, opticalDepthPrepared). With
+// and d.y -> dot(d, g) (core/src/fog/bvh.hpp, opticalDepthPrepared). With
 // subtract volumes (frame.subtractActive) the segment minus the pixel's
 // subtract union (common/subtract.glsl).
 #include "common/frame.glsl"

@@ -188,7 +188,7 @@ uniform float aerialNitsPerUnit;
 uniform vec3 aerialNightWhite;
 uniform float aerialD65Scotopic;
 layout(location = 0) out vec4 aerialColour;
-// aerial::nightVision (core/src/exposure.cpp), in float.
+// aerial::nightVision (core/src/sky/exposure.cpp), in float.
 vec3 aerialNight(vec3 c) {
     float y = dot(c, vec3(0.2126, 0.7152, 0.0722));
     float l = y * aerialNitsPerUnit;

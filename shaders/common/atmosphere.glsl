@@ -1,8 +1,8 @@
 // common/atmosphere.glsl — phase functions, the fog's colour (the light
 // that reaches it blended into the sky's horizon far away, the model of
 // core/include/aerial/fog_light.hpp) and the analytic exponential-fog
-// integral, mirroring the CPU reference in core/ (core/src/atmosphere.cpp,
-// core/src/height_fog.cpp, core/src/fog_light.cpp, core/src/fog_query.cpp).
+// integral, mirroring the CPU reference in core/ (core/src/sky/atmosphere.cpp,
+// core/src/fog/height_fog.cpp, fog_light.cpp, fog_query.cpp).
 //
 // Papers: Nishita et al. 1993 (single scattering; Rayleigh and
 // Cornette-Shanks phase functions), Wenzel 2006 section 6.4 (analytic
@@ -82,7 +82,7 @@ float exponentialOpticalDepth(float b, float c, float height, float rise, float 
 #include "common/sky_table.glsl"
 
 /// The phase-less horizon behind far fog in direction v (unit) for one light
-/// (horizonSkySample in core/src/sky_table.cpp): the table's row 0 at v's
+/// (horizonSkySample in core/src/sky/sky_table.cpp): the table's row 0 at v's
 /// world `azimuth` blended with the horizon averages by s = |v.xz|,
 /// H = (1 - s) average + s row0(azimuth). Row 0 is the texel row's centre,
 /// so only the columns are filtered, as in sampleSkyTable.

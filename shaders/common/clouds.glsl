@@ -1,5 +1,5 @@
 // common/clouds.glsl — the cloud layer's density, its shell segments and
-// the midpoint march: the SAME arithmetic as core/src/clouds.cpp
+// the midpoint march: the SAME arithmetic as core/src/clouds/clouds.cpp
 // (aerial/clouds.hpp documents the model) in float, and the cloud shadow
 // map lookup of the scene lighting. tests/renderer/test_renderer_clouds.cpp
 // compares the march with aerial::cloudTransmittance and the shadow map with

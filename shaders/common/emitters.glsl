@@ -19,7 +19,7 @@ layout(std430, binding = 2) readonly buffer EmitterBlock { EmitterGpu emitters[]
 float atanOverX(float z) { return z > 1e-4 ? atan(z) / z : 1.0 - z * z / 3.0; }
 
 /// Integral of i / (1 + a |l - p|^2) along o -> o + d, in the
-/// cancellation-free form of core/src/emitter.cpp (emitters.glsl, and the
+/// cancellation-free form of core/src/emitters/emitter.cpp (emitters.glsl, and the
 /// volumetric fog's slices in froxel_inject.glsl).
 float emitterIntegral(vec3 l, float i, float a, vec3 o, vec3 d) {
     float len = length(d);

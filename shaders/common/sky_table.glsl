@@ -94,7 +94,7 @@ float skyTableWholeKnot(float x, float before) {
 }
 
 /// The column (0..columns) of an azimuth `relative` [0, 2 pi) from the light
-/// at elevation el (skyTableColumn, core/src/sky_table.cpp): uniform, or
+/// at elevation el (skyTableColumn, core/src/sky/sky_table.cpp): uniform, or
 /// piecewise linear in the azimuth psi from the anti-light point (in
 /// ln(1 + (psi^2 - psiC^2) / Y0) between the second and third knot, Y0 =
 /// (kSkyCapBandScale c)^2 + (kSkyCapBandOnsetScale psiC)^2) through the

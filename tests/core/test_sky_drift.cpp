@@ -1,6 +1,6 @@
 // test_sky_drift.cpp — the multiple-scattering LUT kept while the
 // atmosphere drifts (SkySolverDesc::multipleScatteringTolerance;
-// core/src/sky_solver.cpp, "Multiple scattering in a drifting atmosphere"):
+// core/src/sky/sky_solver_atmosphere.cpp, "Multiple scattering in a drifting atmosphere"):
 // a solver that keeps its LUT for a drifted atmosphere against one that
 // builds it for that atmosphere (tolerance 0), in the default air and in
 // two shipped presets' hazes, for every coefficient the estimate covers.
@@ -319,7 +319,7 @@ TEST(SkyDrift, AmortisedRebuildInSteps) {
     EXPECT_EQ(stepsFor(amortised, drifted(air, Coefficient::Haze, 1e-4)), 64);  // unchanged
 }
 
-// The straight-on share of Mie's peak fades in with its size (sky_solver.cpp,
+// The straight-on share of Mie's peak fades in with its size (sky_solver_row.cpp,
 // kStraightOnFloor): the sky is continuous in g. Measured largest step
 // between neighbours 0.0005 apart 0.00032 of the pixel; with the share cut
 // off below the floor 0.0042 (at g = 0.8001, sun -2 deg, 6.5 deg up, with

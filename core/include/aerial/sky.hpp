@@ -36,17 +36,16 @@
 // zenith cosine mu_s, its isotropic part:
 //   Psi_ms = J_2 + .. + J_5 + J_5 f_ms / (1 - f_ms),
 // J_2 = Hillaire's L_2nd, the second order from 96 directions crowded at
-// the horizon and towards the sun (Hillaire: 64 uniform ones, which miss the
-// thin sunlit upper air that lights a deep twilight): single scattering of
+// the horizon and towards the sun (so that the thin sunlit upper air that
+// lights a deep twilight is resolved): single scattering of
 // the sun along each ray to the ground or the top, plus the ground's
 // Lambertian bounce with AtmosphereParams::groundAlbedo. J_3 .. J_5 are
 // the next orders, each integrated from the one before through the
 // atmosphere along the same directions, with the ground's reflection of its
 // light (and J_3 of the single-scattered skylight); f_ms (the transfer of unit isotropic
-// in-scattering) gives the geometric tail of the rest. Hillaire's
-// L_2nd / (1 - f_ms) takes every higher order from the point's own
-// neighbourhood, which under-estimated the horizon of a low sun by a third
-// (details and measurements: core/src/sky_multiple.hpp). The second order
+// in-scattering) gives the geometric tail of the rest (details:
+// core/src/sky/sky_multiple.hpp; why the orders 3 to 5 are explicit:
+// docs/sky_table_notes.md). The second order
 // has the real phases: Rayleigh's and Mie's at the first scattering
 // (averaged over each direction's quadrature cell), and at the last, towards
 // the viewer, the view-dependent remainder A_X(v) = integral (P_X(omega.v) -
@@ -54,20 +53,15 @@
 // quadrupole moments of the once-scattered light L_1 at each height and sun
 // cosine (Legendre series of the phases to l = 2: exact for Rayleigh; for
 // Mie, delta-M: the forward peak's share g_3 as light going straight on and
-// the rest to l = 2, since the plain series sent a directional field (a
-// point in the earth's shadow at twilight) 30x too much light straight
-// back; of that share, f_s, the phase within 6 deg of straight on (0.12 at
+// the rest to l = 2; of that share, f_s, the phase within 6 deg of straight on (0.12 at
 // g = 0.8), is carried exactly along the view ray, the e^(f_s tau_M) above,
 // and the remainder read through the moments' Fejer window; sky_multiple.hpp,
 // "Mie's truncation"). What that series still misses of Mie's last
 // scattering of the second and third orders' field (in twilight a band of
 // sunlit air above the horizon towards the sun, which Mie's peak sends on
-// towards the viewer: the sun's side of the horizon was 12% too dark in blue
-// at sun -6 deg) is kept by quadrature over the 96 directions at 74 view
+// towards the viewer) is kept by quadrature over the 96 directions at 74 view
 // directions per height and sun cosine and interpolated between them along
-// each view ray (sky_multiple.hpp, "Mie's last scattering"). Hillaire's
-// isotropic phases left the horizon opposite a low sun 7-13% too dark
-// against the path tracer (sun -2 to +10 deg). The third order's field L_2
+// each view ray (sky_multiple.hpp, "Mie's last scattering"). The third order's field L_2
 // adds its moments the same way (and the later orders theirs, as L_2's times
 // the tail's 1 / (1 - f_ms)); the sources of the third and later orders stay
 // isotropic. The LUT (MultipleScatteringTable) has 25 heights (the shells of
@@ -81,10 +75,8 @@
 // beta_X T(viewer -> s). That integral is done for 16 azimuths from the
 // light (0, 12, ... 180 deg) and spread into the table's columns by
 // Catmull-Rom in ln I_ms (smooth in azimuth: the sun's cosine at a shell is
-// alpha + beta cos(phi)); against integrating every column this changes the
-// pixel by at most 0.12% (sun -6 to 90 deg, 20000 random directions each)
-// and cuts the multiple scattering's share of the solve from ~75% of the
-// single scattering's cost to ~20%.
+// alpha + beta cos(phi)), within 0.12% of the pixel of integrating every
+// column.
 //
 // Table mapping (the one contract between the solver and every sampler):
 //   * rows j = 0..elevationCount-1 hold the elevation el_j with
@@ -115,56 +107,27 @@
 //       that leaves the shadow cylinder exactly at the top of the
 //       atmosphere, about 1.1 L; for a light more than ~6 deg down that ray
 //       is shadowed up to the top and c = 1.1 L), and b is adjusted so that
-//       a row lies exactly on it (adjusting E instead hardly moves the
-//       kink's row for a light less than ~0.015 deg down, and elsewhere
-//       pulled E to ~0.5 deg, leaving the rows 4-6 deg up 1-2 deg apart);
+//       a row lies exactly on it;
 //     - a light 0-1 deg below the horizon also: d = (16/63) g of the rows
 //       (twice that for c below 0.005 deg, fading in from 0.01 deg:
 //       skyCapRowShare)
 //       (taken from the band's a) between 0 and 2c, half below c uniform in
-//       (c - el)^0.35 (kSkyCapBelowPower; 0.5 would be uniform in the
-//       azimuth of the cap's onset, the columns below; 0.35 crowds them
-//       towards c, where the lit sky beside the cap ramps up over a width
-//       that grows fast with c - el: at 0.99 c from 0.07 to 1.5 deg from the
-//       anti-light point for a light 0.0005 deg down, against ~0.05 deg at
-//       c; blending into uniform in ln(1 + u / s), u = (c - el) / c, s =
-//       min(5e-4, 3 c), as the boost comes in, kSkyCapLogScale,
-//       kSkyCapLogScalePerKink), half above c uniform in
-//       cbrt(el - c), crowded at the
-//       cap's top where straight opposite the light the lit sky switches on
-//       within a few 1e-4 deg for a light 0.01 deg down; g = capStrength, 1
-//       up to 0.5 deg, fading to 0 at 1 deg;
+//       (c - el)^0.35 (kSkyCapBelowPower: crowded towards c, where the lit
+//       sky beside the cap ramps up over a width that grows fast with
+//       c - el), blending into uniform in ln(1 + u / s), u = (c - el) / c,
+//       s = min(5e-4, 3 c), as the boost comes in (kSkyCapLogScale,
+//       kSkyCapLogScalePerKink), half above c uniform in cbrt(el - c),
+//       crowded at the cap's top where straight opposite the light the lit
+//       sky switches on within a few 1e-4 deg for a light 0.01 deg down;
+//       g = capStrength, 1 up to 0.5 deg, fading to 0 at 1 deg;
 //     With 128 x 64 texels this keeps the table within 2% of the exact
 //     single-scattering integral relative to the pixel (floored at 1% of the
 //     brightest sky) in every direction tests/core/test_sky.cpp probes, off
 //     the texel centres too, for suns from -6 to 90 deg (SkyOffTexel), and
-//     in a dense sweep of the anti-light quarter, from the horizon to 6 deg
-//     up and within 0.002 c below the kink, for suns 0.01-0.3 deg below
-//     the horizon (SkyShadowOnset: 1.0-1.5% from -0.3 to -0.01 deg; 63% at
-//     -0.01 deg before the cap's rows and columns; 2.2-3.3% 4-6 deg up
-//     straight opposite the light while E was bisected onto the kink and
-//     its floor was 0.8 deg; 2.2% at -0.01 deg 0.98 c up while the cap's
-//     rows below c were uniform in sqrt(c - el) and the columns beyond the
-//     band linear; -0.005 deg 1.8%), and on a denser grid just below the
-//     kink (0.7 c .. c x 0.005-8 deg from the anti-light point, in the
-//     sweep too) down to -0.0002 deg (1.2% at -0.01 and -0.005 deg, 1.6% at
-//     -0.002, 1.2-1.8% from -0.001 to -0.0002 deg; 2.15% at -0.0005 deg and
-//     2.5% at -0.0002 before the cap's rows below c went logarithmic for a
-//     light less than 0.005 deg down and the band's saturation got its floor
-//     (kSkyCapLogScale; the floor, 0.02 deg, went with the saturation), 2.6% and 3.7% before
-//     the band's columns crowded at the onset and the segment beyond it got
-//     13 columns, 3.1-5.6% before the cap's rows were doubled, 2.4-10%
-//     before they crowded towards c and the columns beyond the band went
-//     quadratic, 3.2-83% before the band's saturation, below). That grid
-//     stopped at 0.99976 c and 0.005 deg from the anti-light point; taken
-//     on to 0.999996 c and 0.0005 deg (the cap's top of a light just set,
-//     where the lit sky switches on within ~10-1000 c of the anti-light
-//     point) it found 1.9% at -0.001 deg, 3.4% at -0.0002, 5.1% at
-//     -0.0001, 6.9% at -0.00005 and 15% at -0.00002 (a few hundredths of
-//     a second of a sunset, the cap 2e-5 deg tall), until the band went
-//     logarithmic and a light just set got more of the band's columns
-//     (kSkyCapBandScale, SkyCapShape): 0.4-1.5% from -0.002 to -0.00002 deg
-//     (SkyShadowOnset, AERIAL_SKY_SHADOW_ONSET);
+//     within 1.5% in dense sweeps of the anti-light quarter near the kink
+//     for suns 0.00002-0.3 deg below the horizon (SkyShadowOnset,
+//     AERIAL_SKY_SHADOW_ONSET; docs/sky_table_notes.md has the figures and
+//     their history);
 //   * columns i = 0..azimuthCount-1 hold the azimuth relative to the light
 //       phi_i = 2 pi * i / azimuthCount,
 //     measured from the light's azimuth towards east (the same sense as the
@@ -191,16 +154,14 @@
 //     it still climbs steeply near the horizon), and each inner psi blended
 //     with g towards 2 pi x / W (skyTableColumn, skyTableAzimuth): the onset lies on column W/2 -+ 3 W / 128
 //     in every row below the cap's top, with 12 columns in the band above it. Only P depends on the row, so
-//     between two rows the onset stays on its column (rows alone could not follow it: 256 x 1024 texels
-//     left 2.4% at -0.05 deg). The band is uniform in ln(1 + (psi^2 - P^2) / Y0), Y0 =
+//     between two rows the onset stays on its column. The band is uniform in ln(1 + (psi^2 - P^2) / Y0), Y0 =
 //     (kSkyCapBandScale c)^2 + (kSkyCapBandOnsetScale P)^2 (10 c and P): geometric in the height above the
 //     onset beyond Y0, where the lit sky at the cap's top switches on (~10 c from the anti-light point) and
 //     levels off (~100-1000 c), and widens with P (the 2 in its outer knot is kSkyCapOnsetGrowth): lower down
 //     the cap the lit sky ramps up over an azimuth that grows with P. For a light just set (c below 0.01
 //     deg, the boost fraction m of the rows) the shares and G blend towards 2 columns inside the cap, 20 in
-//     the band and G = 6 (SkyCapShape), each blended knot x rounded to a whole column (a knot inside a
-//     texel bent the bilinear filter's line in it: 4-8% off between the texels on the horizon 7-8 deg
-//     from the anti-light point of a light 0.006-0.0095 deg down). The knots are mirror-symmetric, so
+//     the band and G = 6 (SkyCapShape), each blended knot x rounded to a whole column (so that no knot
+//     bends the bilinear filter's line inside a texel). The knots are mirror-symmetric, so
 //     column i still equals column W - i. The horizon averages then weight row 0 by azimuth;
 //   * texel (i, j) is stored at index (j * azimuthCount + i) * 3 (RGB, float).
 //   Directions below the horizon use row 0.
@@ -265,7 +226,8 @@ struct SkySolverDesc {
     /// (radii, viewer height, scale heights, ozone profile) stay the same
     /// and its coefficients drift so little from those the LUT was built
     /// for that the sky moves by at most this fraction of the pixel (floored
-    /// at 1% of the brightest sky; estimated per coefficient, sky_solver.cpp):
+    /// at 1% of the brightest sky; estimated per coefficient,
+    /// sky_solver_atmosphere.cpp):
     /// a keyed haze then rebuilds the LUT (~9 ms on two threads) every few
     /// tenths of a percent of its change instead of at every evaluation. The
     /// single scattering is always exact. 0: the LUT is rebuilt on any
@@ -359,53 +321,29 @@ inline constexpr double kSkyCapBandPerKink = 500.0;
 /// the height above the onset beyond Y0. At the cap's top the lit sky
 /// switches on as ~psi^5 ~10 c from the anti-light point and levels off
 /// over ~100-1000 c, and below it it ramps up over ~10 P: two decades of
-/// azimuth in the band's 12-20 columns. Until this change the band was
-/// uniform in s(y)^q, s(y) = y / (y + S^2), S^2 = (150 c)^2 + (3 P)^2 +
-/// (0.02 deg)^2, q = 0.7 (crowded at the onset, saturating at ~150 c):
-/// on a grid up to 0.999996 c and from 0.0005 deg from the anti-light point
-/// it left 1.9% at -0.001 deg, 3.4% at -0.0002, 5.1% at -0.0001, 6.9% at
-/// -0.00005 and 15% at -0.00002 at the cap's top (with q = 1.15, S^2 =
-/// (150 c)^2 + (3 P)^2 + (0.03 D)^2 and the shares below still 1.5-2.1%);
-/// the logarithm, with the shares below: 0.4-1.2% there. 5, 10 and 20 c
-/// alike; kSkyCapBandOnsetScale 0.5, 1 and 3: 1.5%, 1.2%, 2.5%.
+/// azimuth in the band's 12-20 columns.
 inline constexpr double kSkyCapBandScale = 10.0;
 inline constexpr double kSkyCapBandOnsetScale = 1.0;
 /// The last segment (psiE .. pi) is quadratic in its columns, with this
-/// slope at psiE relative to its mean (and 2 - it at pi). 0.3 until the
-/// segment gave 3 of its 39 columns to the one before it (below): with 36
-/// it left the horizon 4 deg from the anti-light point of a light 0.0005
-/// deg down 2.3% off; 0.2: 1.5%.
+/// slope at psiE relative to its mean (and 2 - it at pi).
 inline constexpr double kSkyCapFarSlope = 0.2;
-/// The segment between the band's outer knot and psiE likewise (0.5 and
-/// 0.3 alike: -0.01 deg 2.2% -> 1.2% 0.98 c up, -0.005 deg 2.4% -> 1.9%).
-/// Just below the cap's top of a light less than 0.005 deg down (0.99 c)
-/// the lit sky beside the cap levels off 0.2-0.4 deg from the anti-light
-/// point, just beyond the band, where 10 columns at slope 0.5 were 0.13 deg
-/// apart: 3.7% low at -0.0002 deg. 13 columns (3 from the last segment;
-/// kSkyCapNearShare was 10 / 128) at slope 0.25: 1.6-1.8%; 16 columns
-/// left the last segment too coarse, slope 0.15 the lower rows (0.97 c).
-/// Rows instead (a third of the cap's rows more, out of the plain share)
-/// left the sky 5 deg up opposite the light 3.4% off.
+/// The segment between the band's outer knot and psiE likewise: just below
+/// the cap's top of a light less than 0.005 deg down the lit sky beside the
+/// cap levels off 0.2-0.4 deg from the anti-light point, just beyond the
+/// band, where its kSkyCapNearShare columns crowd.
 inline constexpr double kSkyCapNearSlope = 0.25;
 /// The share of the rows in the cap (0 .. c) and as far above it (c .. 2c),
 /// taken from the horizon band's: half uniform in (c - el)^kSkyCapBelowPower
 /// below c, half in cbrt(el - c) above.
 inline constexpr double kSkyCapRowShare = 16.0 / 63.0;
-/// 0.5 (uniform in the onset's azimuth), 0.4, 0.35, 0.3 and 0.25 tried
-/// (SkyShadowOnset, worst of -0.002 .. -0.0002 deg): 10%, 7.4%, 3.9%,
-/// 5.1%, 3.9%; -0.01 .. -0.3 deg unchanged.
+/// The power of the cap's rows below c (0.5 would be uniform in the
+/// onset's azimuth; 0.35 crowds them towards c).
 inline constexpr double kSkyCapBelowPower = 0.35;
 /// For a light just set the cap's share grows by up to kSkyCapRowBoost, as
 /// the kink's elevation c falls from kSkyCapBoostStartDeg to
 /// kSkyCapBoostFullDeg (c ~ L there), taken from the band's share too:
 /// below c the lit sky beside the cap ramps up over a width that grows from
-/// ~0.3 to ~1.5 deg within 1% of c, which the rows between 0.94 c and
-/// 0.98 c did not follow (densest grid below the kink: -0.0005 deg 5.4% ->
-/// 2.6%, -0.0002 5.6% -> 3.7%, -0.002 3.1% -> 2.2%, -0.005 2.2% -> 1.7%).
-/// More (2.5, 3) out of the plain share left the upper sky too few rows
-/// (3.4% 5 deg up opposite a light 0.0002 deg down at 2.5, 12% 0.5-1.5 deg
-/// up at 3), and more of the cap's rows below c than above it made the
-/// cap's top worse (-0.0002 deg: 2.5% -> 3.7% with 0.65 of them below).
+/// ~0.3 to ~1.5 deg within 1% of c.
 inline constexpr double kSkyCapRowBoost = 2.0;
 inline constexpr double kSkyCapBoostStartDeg = 0.01;
 inline constexpr double kSkyCapBoostFullDeg = 0.005;
@@ -415,15 +353,8 @@ inline constexpr double kSkyCapBoostFullDeg = 0.005;
 /// el) / c) to uniform in ln(1 + u / kSkyCapLogScale) as the boost comes in
 /// (skyCapBoostFraction): for a light less than 0.005 deg down the lit sky
 /// beside the cap changes its shape about as ln u, from ~0.05 deg wide at
-/// 0.9998 c to 1.5 deg at 0.97 c, and u^0.35 put one row in 3.6e-4 <= u <=
-/// 2.6e-3 and one in 0.019 <= u <= 0.036 (densest grid: -0.0002 deg 2.5%
-/// at 0.999 c, -0.0005 deg 2.2% at 0.97 c). With ln(1 + u / 5e-4) the 16
-/// rows below c are ~1.6x apart in u from 3e-4 to 0.2 (-0.0002 deg 1.9%,
-/// -0.0005 1.4%, before the saturation's floor below). 3e-4, 2e-4 and
-/// 1e-3 tried (worst of -0.005 .. -0.0002 deg: 1.94, 1.96, 1.91%); the
-/// log alone also for c above 0.01 deg (8
-/// rows below c): too few rows low in the cap (-0.01 deg 2.5-3.1% at 0.3 c,
-/// 8 deg out).
+/// 0.9998 c to 1.5 deg at 0.97 c; with ln(1 + u / 5e-4) the 16 rows below
+/// c are ~1.6x apart in u from 3e-4 to 0.2.
 inline constexpr double kSkyCapLogScale = 5e-4;
 /// 0..1, how far the cap's rows are boosted for the kink's elevation c
 /// [rad]: 0 above kSkyCapBoostStartDeg, 1 below kSkyCapBoostFullDeg.
@@ -435,13 +366,9 @@ inline double skyCapBoostFraction(double c) {
 /// knot change with the boost fraction m (skyCapBoostFraction), from the
 /// constants above at m = 0 to these at m = 1: 20 columns in the band (2
 /// from inside the cap, whose single scattering is dark, and 6 from the last
-/// segment), its outer knot at 6 P (2, 3 and 4 tried: just below the cap's
-/// top the lit sky ramps up over ~10 P), and the cap's rows below c
-/// logarithmic on the scale min(kSkyCapLogScale, 3 c) (1, 3 and 10 c
-/// tried; 1 c misplaced the first row): with 5e-4 for any c the first row
-/// below c lay at ~35 P of the cap's top for a light 0.0002 deg down (c ~
-/// 3.5e-6 rad), 70 P at -0.00005 deg. Without them (the band logarithmic):
-/// 4.2% at -0.00002 deg.
+/// segment), its outer knot at 6 P (just below the cap's top the lit sky
+/// ramps up over ~10 P), and the cap's rows below c logarithmic on the
+/// scale min(kSkyCapLogScale, 3 c).
 inline constexpr double kSkyCapInsideShareSet = 2.0 / 128.0;
 inline constexpr double kSkyCapOnsetShareSet = 20.0 / 128.0;
 inline constexpr double kSkyCapOnsetGrowthSet = 6.0;
@@ -537,8 +464,8 @@ glm::dvec3 skyIrradiance(const SkyTable& table, double mieAnisotropy, const glm:
 /// so fog towards the horizon matches the sky right behind it and fog seen
 /// steeply (lit from all around) takes the azimuthal mean. At twilight the
 /// horizon ring varies by 100x or more in azimuth (the glow towards the sun
-/// against the earth's shadow), and the mean alone coloured every fog with the
-/// glow. A table without rows gives the averages alone. A table of one row
+/// against the earth's shadow), which the mean alone would spread over every
+/// fog. A table without rows gives the averages alone. A table of one row
 /// (skyHorizonRow) is enough.
 SkySample horizonSkySample(const SkyTable& table, const glm::dvec3& viewDirection);
 
@@ -586,10 +513,9 @@ public:
     void beginSolve(const AtmosphereParams& air, const glm::dvec3& lightDirection);
     /// Solves up to `rows` more rows. Where the atmosphere changed, its
     /// tables come first and count as rows too: the optical depths one step
-    /// (0.1 ms on two threads here) and, where the multiple-scattering LUT
-    /// is rebuilt (not kept, multipleScatteringTolerance), 21 more (its
-    /// orders in 20, its resampling) of 0.3-0.6 ms instead of ~9 ms at
-    /// once, then one (0.8 ms) to share the tables with other solvers.
+    /// and, where the multiple-scattering LUT is rebuilt (not kept,
+    /// multipleScatteringTolerance), 21 more (its orders in 20, its
+    /// resampling), then one to share the tables with other solvers.
     /// Returns true when the new table is complete and published through
     /// table().
     bool continueSolve(int rows);

@@ -40,9 +40,8 @@
 // then XYZ -> linear Rec.709 (D65) and each output channel scaled so that the
 // white is R = G = B = 1. Against 41 wavelengths the fit is within Δu'v'
 // 0.0007 and 0.8% in luminance on those atmospheres (sun 90 to -6 deg,
-// zenith and horizon); six samples interpolated linearly (Bruneton's bins)
-// were 0.012 off, nine 0.013 (tests/core/test_sky_spectral.cpp checks the
-// solver against an independent 41-wavelength reference).
+// zenith and horizon; tests/core/test_sky_spectral.cpp checks the solver
+// against an independent 41-wavelength reference).
 //
 // The spectral atmosphere (spectralSkyAtmosphere) from the preset's RGB
 // coefficients, given at the nominal channel wavelengths 680 / 550 / 440 nm

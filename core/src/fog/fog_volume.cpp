@@ -6,7 +6,7 @@
 // The one geometry of a volume: FogScene (fog_query.cpp, through its BVH),
 // the renderer's packing and the editor's picking all call prepareFogVolume
 // and the intersections here.
-#include "sanitise.hpp"
+#include "base/sanitise.hpp"
 #include "volume_geometry.hpp"
 
 #include <aerial/finite.hpp>

@@ -1,12 +1,12 @@
 // sky_kernels.hpp — private: the hot loops of the sky solver
-// (sky_kernels.cpp), each over contiguous float arrays of one row, and the
-// plain structs that carry their inputs. sky_solver.cpp prepares those
+// (sky_kernels*.cpp), each over contiguous float arrays of one row, and the
+// plain structs that carry their inputs. sky_solver_row.cpp prepares those
 // inputs per row in double precision and calls these once per row.
 //
 // The kernels are compiled for x86-64-v4 (AVX-512), x86-64-v3 (AVX2 with
 // FMA) and the baseline (target_clones, chosen at load time; no global
 // -march needed). Their
-// helpers live in sky_kernels.cpp, forced inline, so that each clone runs
+// helpers live in sky_kernels_inline.hpp and the kernels' files, forced inline, so that each clone runs
 // vector code throughout. A call costs one indirect jump per row.
 #pragma once
 
@@ -100,7 +100,7 @@ void halfAngleKernel(int n, const double* __restrict phi, double* __restrict cos
                      double* __restrict sinHalf, double* __restrict cosPhi, float* __restrict cosPhiF);
 
 /// Where each column's view ray of a row lies in the planet's shadow
-/// (sky_solver.cpp, solveRow): the cylinder of radius Rg around the light's
+/// (sky_solver_row.cpp, solveRow): the cylinder of radius Rg around the light's
 /// axis behind the planet, with 1 - mu^2 from the angles and the roots
 /// without cancellation (planet_shadow.hpp); [in, out] along the ray, both
 /// -1 where it has no shadow.
@@ -140,7 +140,7 @@ struct StraightOnArgs {
 };
 void straightOnKernel(const StraightOnArgs& a);
 
-/// spreadMultiple's stencil (sky_solver.cpp) for n columns at azimuths
+/// spreadMultiple's stencil (sky_solver_row.cpp) for n columns at azimuths
 /// phi [rad, 0..pi] from the light: u = phi (K - 1) / pi in units of the K
 /// = kMsSkyColumns azimuths; Catmull-Rom through the azimuths k - 1 .. k + 2
 /// around it, mirrored at 0 and K - 1. index and weight are [4][padded]
@@ -192,7 +192,7 @@ constexpr int kMsShellWeights = 10;
 constexpr int kShellSlots = 4;
 /// Multiple scattering is integrated along the view rays of this many
 /// azimuths only, phi_k = pi k / (kMsSkyColumns - 1) from the light, and
-/// interpolated between them into the table's columns (sky_solver.cpp,
+/// interpolated between them into the table's columns (sky_solver_row.cpp,
 /// spreadMultiple): it is smooth in azimuth (the light's zenith cosine at a
 /// shell is alpha + beta cos(phi)), and this is its cost divided by ~5.
 constexpr int kMsSkyColumns = 16;
@@ -280,7 +280,7 @@ void msShellWeights(const LayerConstants* layer, int layers, float rayleighBand2
                     float mieBand2, float* scratch, float* out);
 
 /// The multiple scattering's spread from its kMsSkyColumns azimuths into
-/// the table's columns (sky_solver.cpp, spreadMultiple): per column
+/// the table's columns (sky_solver_row.cpp, spreadMultiple): per column
 /// out = exp(sum of 4 weights x ln value at 4 indices), Catmull-Rom in ln.
 struct SpreadKernelArgs {
     int count;              // columns, a multiple of 8
@@ -329,7 +329,7 @@ struct EdgePieceArgs {
 };
 
 /// The lit pieces of the layers that an edge of the earth's shadow cuts
-/// (sky_solver.cpp, shadowEdgeLayers). First, in double precision, the
+/// (sky_solver_shadow.cpp, shadowEdgeLayers). First, in double precision, the
 /// optical depths to the light at each piece's start, middle and end: at the
 /// shadow's edge the grazing rays' of the layer's shells, linear in the
 /// tangent length; at the middle the table's rows of both shells at the

@@ -2,7 +2,7 @@
 // in [-1, 1] and an anisotropy already in [-0.999, 0.999], the one place
 // they are written. atmosphere.cpp's rayleighPhase and miePhase clamp their
 // arguments and call these; the sky solver's straight-on kernel
-// (sky_kernels.cpp) calls them per column, inlined into its vector clones.
+// (sky_kernels*.cpp) calls them per column, inlined into its vector clones.
 // Model: ../shared/DESIGN.md, "Sky" (Rayleigh; Cornette-Shanks for Mie).
 #pragma once
 

@@ -10,7 +10,7 @@
 // unless a segment crosses more than kInlineHits volumes (the chord lists
 // are per-thread buffers that keep their capacity).
 #include "bvh.hpp"
-#include "sanitise.hpp"
+#include "base/sanitise.hpp"
 #include "volume_geometry.hpp"
 
 #include <aerial/atmosphere.hpp>

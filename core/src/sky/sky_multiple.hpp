@@ -113,7 +113,7 @@
 //   Fejer window, and Mie's isotropic share of Psi is 1 - f_s:
 //     g~_1 = g_M1 - f_s - (f - f_s) / 2,  g~_2 = g_M2 - f_s - 9 (f - f_s) / 10.
 //   The solver integrates the factor over each layer together with the
-//   layer's transmittance (sky_solver.cpp, solveRow), so a haze of any
+//   layer's transmittance (sky_solver_row.cpp, solveRow), so a haze of any
 //   depth stays finite. With it (and orders to 5) the worst per sun is
 //   -6: 0.123, -2: 0.046, 0: 0.035, +2: 0.024, +10: 0.014, +30: 0.013,
 //   +90: 0.013 (in a first
@@ -121,7 +121,7 @@
 //   and 0.046 at -2 deg; the whole e^(f tau_M) without the window, "delta-M
 //   extinction" with f_s = f, 1.2x in red at -2 deg). Rows whose share stays
 //   under 0.5% of their single scattering (above ~7 deg) leave it out,
-//   fading it in from half that (sky_solver.cpp, kStraightOnFloor): it
+//   fading it in from half that (sky_solver_row.cpp, kStraightOnFloor): it
 //   costs ~3% of the solve.
 //   Mie's last scattering. The series still missed most of what Mie's
 //   peak does with a peaked field: at a point in the earth's shadow in
@@ -261,6 +261,22 @@ MsNode msAzimuthNode(int a);
 
 /// Sun zenith cosine of LUT column j: sign(x) x^2, x = -1 + 2 j / (kMsCosines - 1).
 double msCosineOfColumn(int column);
+
+/// The zenith mapping at cell position t (node z's midpoint: t = z + 0.5):
+/// x = -1 + t dx in (-1, 1), cos theta = sign(x) |x|^p (from +1 down), and
+/// the weight (1/2) d(cos theta) = (p/2) |x|^(p-1) dx of a whole cell there.
+MsNode zenithAt(double t);
+/// The azimuth mapping at cell position t: u = t du in (0, 1), phi = pi u^q,
+/// and the weight d(phi) / pi = q u^(q-1) du of a whole cell there.
+MsNode azimuthAt(double t);
+
+/// View node v's direction in the point's frame: its zenith cosine and
+/// sine, and its azimuth from the sun's horizontal.
+struct ViewNode {
+    double cosT, sinT, phi;
+};
+/// View node v's direction (viewNodeAt), computed once.
+const ViewNode& msViewNode(int v);
 
 /// Per-thread scratch of the LUT build.
 struct MsScratch {

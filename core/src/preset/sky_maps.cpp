@@ -1,7 +1,7 @@
 // sky_maps.cpp — the sky-view map, the far fog map and the environment's
 // irradiance coefficients (aerial/sky_maps.hpp).
-#include "sanitise.hpp"
-#include "worker_pool.hpp"
+#include "base/sanitise.hpp"
+#include "base/worker_pool.hpp"
 
 #include <aerial/night_sky.hpp>
 #include <aerial/sky_maps.hpp>

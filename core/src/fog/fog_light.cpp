@@ -1,5 +1,5 @@
 // fog_light.cpp — the light that reaches the fog (aerial/fog_light.hpp).
-#include "sanitise.hpp"
+#include "base/sanitise.hpp"
 
 #include <aerial/fog_light.hpp>
 #include <aerial/night_sky.hpp>

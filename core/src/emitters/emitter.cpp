@@ -18,7 +18,7 @@
 // emitters. For L K < X it is evaluated as i L atanc(L K / X) / X with
 // atanc(z) = atan(z)/z, which is exact at a = 0 (K = 0): i L; otherwise as
 // (i / K) (pi/2 - atan(X / (L K))).
-#include "sanitise.hpp"
+#include "base/sanitise.hpp"
 
 #include <aerial/atmosphere.hpp>
 #include <aerial/emitter.hpp>

@@ -2,11 +2,11 @@
 // documents the solve), shared by the solver's files.
 #pragma once
 
+#include "base/worker_pool.hpp"
 #include "sky_depth.hpp"
 #include "sky_kernels.hpp"
 #include "sky_layers.hpp"
 #include "sky_multiple.hpp"
-#include "worker_pool.hpp"
 
 #include <aerial/sky.hpp>
 
@@ -16,6 +16,17 @@
 #include <vector>
 
 namespace aerial {
+
+namespace detail {
+
+/// (1 - e^-tau) / tau, the mean transmittance across a layer of optical
+/// depth tau >= 0 given its transmittance e^-tau, by its series where the
+/// quotient would cancel.
+inline double layerShape(double tau, double transmittance) {
+    return tau < 1e-2 ? 1.0 - tau * (0.5 - tau * (1.0 / 6.0 - tau / 24.0)) : (1.0 - transmittance) / tau;
+}
+
+}  // namespace detail
 
 struct SkySolver::Impl {
     struct Scratch {
@@ -99,7 +110,7 @@ struct SkySolver::Impl {
     std::vector<float> anisoShell;  // [kMsAniso * 3][layers + 1][kMsCosines]
     std::vector<float> viewShell;   // [layers + 1][kMsViews * 3][kMsCosines]
     // The (sanitized) atmosphere the LUT and the three above were built
-    // for, which a drifting atmosphere may reuse (sky_solver.cpp,
+    // for, which a drifting atmosphere may reuse (sky_solver_atmosphere.cpp,
     // "Multiple scattering in a drifting atmosphere").
     bool msValid = false;
     bool msPending = false;  // the running rebuild builds the LUT too
@@ -165,7 +176,7 @@ struct SkySolver::Impl {
     void resampleShell(int k);  // Psi_ms at shell k
     void runStage(int stage);
     void publish();
-    // The atmosphere's tables shared between solvers (sky_solver.cpp,
+    // The atmosphere's tables shared between solvers (sky_solver_atmosphere.cpp,
     // "Shared atmosphere tables"): adopt a snapshot built by another solver
     // for the same AtmosphereParams and description, or offer this one's.
     bool adoptSharedTables(const AtmosphereParams& params);

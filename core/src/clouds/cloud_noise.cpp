@@ -14,8 +14,8 @@
 // written by exactly one task: the same floats whatever the thread count.
 #include <aerial/clouds.hpp>
 
+#include "base/worker_pool.hpp"
 #include "cloud_noise_fields.hpp"
-#include "worker_pool.hpp"
 
 #include <algorithm>
 #include <array>

@@ -151,7 +151,7 @@ std::string presetJsonSchema() {
     root["$id"] = "https://aerial.example/aerial-preset.schema.json";
     root["title"] = "Aerial time-of-day preset";
     root["description"] =
-        "Generated from the parameter table (aerial::presetJsonSchema(); core/src/param_table.cpp). "
+        "Generated from the parameter table (aerial::presetJsonSchema(); core/src/preset/param_table.cpp). "
         "Do not edit by hand.";
     root["type"] = "object";
     ojson props = ojson::object();

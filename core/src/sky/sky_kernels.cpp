@@ -18,9 +18,17 @@
 // time): the levels rather than "avx512f" and "avx2", which leave out FMA
 // (the polynomials, exp's and the moments', then take a multiply and an
 // add each: ~10% of the whole solve on an AVX2 machine).
+//
+// This file: the sky row (skyKernel and its per-shell and per-layer
+// helpers), the view-ray densities and layer transmittances of a row;
+// sky_kernels_columns.cpp the per-column parts around a row;
+// sky_kernels_tables.cpp the optical-depth table's and the
+// multiple-scattering LUT's kernels; sky_kernels_inline.hpp the macros and
+// float helpers they share.
 #include "sky_kernels.hpp"
 #include "phase.hpp"
 #include "planet_shadow.hpp"
+#include "sky_kernels_inline.hpp"
 #include "sky_multiple.hpp"
 
 #include <algorithm>
@@ -29,110 +37,8 @@
 #include <cstdint>
 #include <limits>
 
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__) && \
-    !defined(__SANITIZE_THREAD__)  // sanitizers and ifunc resolvers do not mix
-#define AERIAL_HOT_KERNEL __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
-#else
-#define AERIAL_HOT_KERNEL
-#endif
-// Helpers of the hot kernels are forced inline so that they are compiled
-// for the kernel's target clone (a call would run the baseline code).
-#if defined(__GNUC__)
-#define AERIAL_INLINE inline __attribute__((always_inline))
-#define AERIAL_LAMBDA_INLINE __attribute__((always_inline))
-#else
-#define AERIAL_INLINE inline
-#define AERIAL_LAMBDA_INLINE
-#endif
-
 namespace aerial::detail {
 namespace {
-
-/// Gauss-Legendre panels per monotonic piece of a ray to the light.
-constexpr int kDepthPanels = 4;
-
-// Branch-free float helpers. With GCC's default -ftrapping-math a float
-// compare inside a loop body blocks if-conversion and thus vectorisation, so
-// the clamps are done on the bit patterns (as integers, which order like the
-// floats for non-negative values).
-
-/// max(x, 0).
-AERIAL_INLINE float maxZero(float x) {
-    const int b = std::bit_cast<int>(x);
-    return std::bit_cast<float>(b & ~(b >> 31));
-}
-
-/// min(a, b) for b >= 0 (a of any sign).
-AERIAL_INLINE float minNonNegative(float a, float b) {
-    const int ia = std::bit_cast<int>(a), ib = std::bit_cast<int>(b);
-    return std::bit_cast<float>(ia < ib ? ia : ib);
-}
-
-/// max(a, b) for b >= 0 (a of any sign).
-AERIAL_INLINE float maxNonNegative(float a, float b) {
-    const int ia = std::bit_cast<int>(a), ib = std::bit_cast<int>(b);
-    return std::bit_cast<float>(ia > ib ? ia : ib);
-}
-
-/// exp(-x) for x >= 0 (clamped to 87), relative error < 3e-7: Cody-Waite
-/// reduction and a degree-6 polynomial, plain arithmetic that vectorises.
-AERIAL_INLINE float expNeg(float x) {
-    x = minNonNegative(x, 87.0f);          // also maps negative rounding noise through
-    constexpr float kShift = 12582912.0f;  // 1.5 * 2^23: adding it rounds to an integer
-    float k = -x * 1.44269504f + kShift;
-    k -= kShift;
-    float r = -x - k * 0.693359375f;  // ln 2 = 0.693359375 - 2.12194440e-4
-    r += k * 2.12194440e-4f;
-    const float p =
-        1.0f + r * (1.0f + r * (0.5f + r * (0.166666672f + r * (0.0416666679f +
-                                                                r * (0.00833333377f + r * 0.00138888892f)))));
-    const int bits = (static_cast<int>(k) + 127) << 23;
-    return p * std::bit_cast<float>(bits);
-}
-
-/// sqrt(x) for x >= 0 that vectorises (the packed square root): this file
-/// is compiled with -fno-math-errno (core/CMakeLists.txt), so std::sqrt
-/// has no errno branch to block GCC's vectoriser. (The Newton steps on the
-/// reciprocal root it replaced took 12 instructions and 1e-7 of precision.)
-AERIAL_INLINE float vecSqrt(float x) { return std::sqrt(x); }
-
-/// The two entries of a lookup pair (tablePairs).
-AERIAL_INLINE float pairLow(std::uint64_t pair) {
-    return std::bit_cast<float>(static_cast<std::uint32_t>(pair));
-}
-AERIAL_INLINE float pairHigh(std::uint64_t pair) {
-    return std::bit_cast<float>(static_cast<std::uint32_t>(pair >> 32));
-}
-
-/// Linear interpolation in a lookup pair: a + f (b - a), as from the table.
-AERIAL_INLINE float pairAt(std::uint64_t pair, float f) {
-    const float a = pairLow(pair), b = pairHigh(pair);
-    return a + f * (b - a);
-}
-
-/// One quadrature node of depthKernel for every ray: the falling piece
-/// (d = len1 t^2 from the perigee) and the rising piece (d = start2 + len2 t^2).
-AERIAL_INLINE void depthNode(int n, float t2, float w, float rg, float rg2, const DensityConstants& k,
-                             const float* __restrict q, const float* __restrict len1,
-                             const float* __restrict start2, const float* __restrict len2,
-                             float* __restrict outR, float* __restrict outM, float* __restrict outO) {
-    const float invR = k.invRayleighH, onR = k.rayleighOn, invM = k.invMieH, onM = k.mieOn;
-    const float oc = k.ozoneCenter, oi = k.ozoneInvHalfWidth, onO = k.ozoneOn;
-    for (int m = 0; m < n; ++m) {
-        const float d1 = len1[m] * t2;
-        const float d2 = start2[m] + len2[m] * t2;
-        const float num1 = q[m] + d1 * d1;  // r^2 - Rg^2
-        const float num2 = q[m] + d2 * d2;
-        const float h1 = maxZero(num1 / (vecSqrt(rg2 + num1) + rg));
-        const float h2 = maxZero(num2 / (vecSqrt(rg2 + num2) + rg));
-        const float ds1 = len1[m] * w, ds2 = len2[m] * w;
-        outR[m] += onR * (ds1 * expNeg(h1 * invR) + ds2 * expNeg(h2 * invR));
-        outM[m] += onM * (ds1 * expNeg(h1 * invM) + ds2 * expNeg(h2 * invM));
-        const float tent1 = maxZero(1.0f - std::abs(h1 - oc) * oi);
-        const float tent2 = maxZero(1.0f - std::abs(h2 - oc) * oi);
-        outO[m] += onO * (ds1 * tent1 + ds2 * tent2);
-    }
-}
 
 /// The light at one shell for every column: its zenith cosine
 /// alpha + beta cos(phi) -> mapped column of that table row -> the record
@@ -173,23 +79,6 @@ AERIAL_INLINE void skyShell(int nc, float alpha, float beta, float ch, float sca
         }
         if constexpr (kMargins) margins[i] = margin;
     }
-}
-
-/// F1 = T_a E1(d) and F2 = T_a E2(d), E1 = int_0^1 e^(-d t) dt and
-/// E2 = int_0^1 t e^(-d t) dt, given T_a and T_b = T_a e^-d: the closed forms
-/// (T_a - T_b) / d and (T_a - (1 + d) T_b) / d^2, or their Taylor series
-/// where those cancel (|d| < 0.05, truncation < 6e-8). Branch-free: an
-/// integer mask blends the two (the division is kept finite in between).
-AERIAL_INLINE void exponentialMoments(float ta, float tb, float d, float& f1, float& f2) {
-    const float s1 = ta * (1.0f + d * (-0.5f + d * (1.0f / 6.0f - d * (1.0f / 24.0f))));
-    const float s2 = ta * (0.5f + d * (-1.0f / 3.0f + d * (0.125f - d * (1.0f / 30.0f))));
-    const int small = (std::bit_cast<int>(d) & 0x7fffffff) < 0x3d4ccccd ? -1 : 0;  // |d| < 0.05f
-    const float safeD = std::bit_cast<float>((std::bit_cast<int>(d) & ~small) | (0x3f800000 & small));
-    const float inv = 1.0f / safeD;
-    const float c1 = (ta - tb) * inv;
-    const float c2 = (ta - (1.0f + d) * tb) * inv * inv;
-    f1 = std::bit_cast<float>((std::bit_cast<int>(s1) & small) | (std::bit_cast<int>(c1) & ~small));
-    f2 = std::bit_cast<float>((std::bit_cast<int>(s2) & small) | (std::bit_cast<int>(c2) & ~small));
 }
 
 /// e^x, x the correction of the layer's mean transmittance to the light for
@@ -516,83 +405,6 @@ AERIAL_INLINE void msLayer(int nc, const LayerConstants& k, const float* __restr
     }
 }
 
-/// One channel and scatterer of edgePieceKernel's integrals (a helper, as skyLayer, so that
-/// GCC vectorises it): two halves per piece, tau linear in each through its
-/// value at the middle; half k covers t = t0 + h (k .. k + 1), h = dt / 2,
-/// where e^(-kappa t - tau) = E_k e^(-(kappa h + tau_(k+1) - tau_k) u),
-/// u = 0..1, and adds h F1 (exponentialMoments).
-AERIAL_INLINE void edgeChannel(int n, const float* __restrict tauS, const float* __restrict tauM,
-                               const float* __restrict tauE, const float* __restrict start,
-                               const float* __restrict length, const float* __restrict kappa,
-                               float* __restrict out) {
-    for (int i = 0; i < n; ++i) {
-        const float ts = tauS[i], tm = tauM[i], te = tauE[i], k = kappa[i];
-        const float h = 0.5f * length[i];
-        const float ka = k * start[i], kh = k * h;
-        const float e0 = expNeg(ka + ts), e1 = expNeg(ka + kh + tm), e2 = expNeg(ka + 2.0f * kh + te);
-        float f1a, f2a, f1b, f2b;
-        exponentialMoments(e0, e1, kh + tm - ts, f1a, f2a);
-        exponentialMoments(e1, e2, kh + te - tm, f1b, f2b);
-        out[i] = h * (f1a + f1b);
-    }
-}
-
-/// edgePieceKernel's loop (restrict parameters, as skyShell).
-AERIAL_INLINE void edgePieces(int n, std::size_t stride, const double* __restrict from,
-                              const double* __restrict to, const double* __restrict mu,
-                              const double* __restrict litQ, const double* __restrict layerTangent,
-                              const double* __restrict layerExtent, const int* __restrict layer,
-                              const int* __restrict edgeAtStart, double tangent2, double viewTwice,
-                              double rg2, double lightAtViewer, double knee, double maxU, int angles,
-                              const float* __restrict angleScale, const std::uint64_t* __restrict depth,
-                              std::size_t plane, float* __restrict tauStart, float* __restrict tauMid,
-                              float* __restrict tauEnd, float* __restrict t0, float* __restrict dt) {
-    for (int m = 0; m < n; ++m) {
-        const double a = from[m], b = to[m];
-        const bool atStart = edgeAtStart[m] != 0;
-        const double edge = atStart ? a : b, middle = 0.5 * (a + b);
-        // r^2 - Rg^2 along the view ray; the tangent lengths.
-        const double zMid2 = std::max(tangent2 + middle * (viewTwice + middle), 0.0);
-        const double zMid = std::sqrt(zMid2), rMid = std::sqrt(zMid2 + rg2);
-        const double zEdge = std::sqrt(std::max(tangent2 + edge * (viewTwice + edge), 0.0));
-        const int l = layer[m];
-        const double za = layerTangent[2 * l], zInv = layerTangent[2 * l + 1];
-        const double fEdge = std::min(std::max((zEdge - za) * zInv, 0.0), 1.0);
-        const double fMid = std::min(std::max((zMid - za) * zInv, 0.0), 1.0);
-        // The light's zenith cosine at the middle, (r0 sinL + s mu) / r, above
-        // the horizon's there, -z / r; mapped.
-        const double midMargin = std::max((lightAtViewer + middle * mu[m] + zMid) / rMid, 0.0);
-        const double midQ = midMargin / (midMargin + knee);
-        const int lit = atStart ? l + 1 : l;
-        const double uLit = std::min(litQ[m] * double(angleScale[lit]), maxU);
-        const double uA = std::min(midQ * double(angleScale[l]), maxU);
-        const double uB = std::min(midQ * double(angleScale[l + 1]), maxU);
-        const int iLit = int(uLit), iA = int(uA), iB = int(uB);
-        const double fLit = uLit - iLit, fA = uA - iA, fB = uB - iB;
-        const int rowA = l * angles, rowB = rowA + angles;
-        const int atLit = lit * angles + iLit, atA = rowA + iA, atB = rowB + iB;
-        // Linear in a lookup pair (tablePairs), in double.
-        auto at = [](std::uint64_t pair, double f) {
-            const double lo = pairLow(pair), hi = pairHigh(pair);
-            return lo + f * (hi - lo);
-        };
-        for (int c = 0; c < 3; ++c) {
-            const std::uint64_t* ch = depth + std::size_t(c) * plane;
-            const double ga = pairLow(ch[rowA]), gb = pairLow(ch[rowB]);
-            const double tauEdge = ga + fEdge * (gb - ga);
-            const double tauLit = at(ch[atLit], fLit);
-            const double ma = at(ch[atA], fA);
-            const double mb = at(ch[atB], fB);
-            const std::size_t out = std::size_t(c) * stride + std::size_t(m);
-            tauStart[out] = float(atStart ? tauEdge : tauLit);
-            tauEnd[out] = float(atStart ? tauLit : tauEdge);
-            tauMid[out] = float(ma + fMid * (mb - ma));
-        }
-        t0[m] = float((a - layerExtent[2 * l]) * layerExtent[2 * l + 1]);
-        dt[m] = float((b - a) * layerExtent[2 * l + 1]);
-    }
-}
-
 /// The light at shell j (0: the viewer's, j > 0: the upper shell of layer
 /// j - 1) into its record slot.
 template <bool kShadowRow>
@@ -646,43 +458,6 @@ AERIAL_INLINE void lightAtShell(const SkyKernelArgs& a, int j, float maxU) {
 
 }  // namespace
 
-/// Optical depths (column masses) of Rayleigh, Mie and ozone density along
-/// `count` rays from one table row: each piece is mapped d = dense + len t^2
-/// (dense end: the perigee or the start) and integrated with kDepthPanels
-/// 4-point Gauss-Legendre panels in t.
-AERIAL_HOT_KERNEL void depthKernel(const DepthKernelArgs& a) {
-    const int n = a.count;
-    const DensityConstants k = a.density;
-    const float* __restrict q = a.q;
-    const float* __restrict len1 = a.len1;
-    const float* __restrict start2 = a.start2;
-    const float* __restrict len2 = a.len2;
-    float* __restrict outR = a.depthR;
-    float* __restrict outM = a.depthM;
-    float* __restrict outO = a.depthO;
-    for (int m = 0; m < n; ++m) {
-        outR[m] = 0.0f;
-        outM[m] = 0.0f;
-        outO[m] = 0.0f;
-    }
-    for (int panel = 0; panel < kDepthPanels; ++panel) {
-        for (int g = 0; g < 4; ++g) {
-            const float t = float((panel + kGaussT[g]) / kDepthPanels);
-            const float w = float(kGaussW[g] / kDepthPanels) * 2.0f * t;
-            depthNode(n, t * t, w, a.planetRadius, a.planetRadius2, k, q, len1, start2, len2, outR, outM,
-                      outO);
-        }
-    }
-}
-
-void tablePairs(const float* table, int count, std::uint64_t* pairs) {
-    for (int a = 0; a < count; ++a) {
-        const float next = table[std::min(a + 1, count - 1)];
-        pairs[a] = std::uint64_t(std::bit_cast<std::uint32_t>(table[a])) |
-                   (std::uint64_t(std::bit_cast<std::uint32_t>(next)) << 32);
-    }
-}
-
 /// Densities at the view-ray quadrature nodes of one row.
 AERIAL_HOT_KERNEL void nodeKernel(const NodeKernelArgs& a) {
     const DensityConstants k = a.density;
@@ -696,166 +471,6 @@ AERIAL_HOT_KERNEL void nodeKernel(const NodeKernelArgs& a) {
         outR[n] = k.rayleighOn * expNeg(h * k.invRayleighH);
         outM[n] = k.mieOn * expNeg(h * k.invMieH);
         outO[n] = k.ozoneOn * maxZero(1.0f - std::abs(h - k.ozoneCenter) * k.ozoneInvHalfWidth);
-    }
-}
-
-AERIAL_HOT_KERNEL void halfAngleKernel(int n, const double* __restrict phi, double* __restrict cosHalf,
-                                       double* __restrict sinHalf, double* __restrict cosPhi,
-                                       float* __restrict cosPhiF) {
-    // pi / 2 as the sum of two doubles: pi / 2 - h is then exact to an ulp
-    // of the result even where h is within an ulp of pi / 2 (the
-    // anti-light point, where cos(phi / 2) is all the precision there is).
-    constexpr double kHalfPiHi = 1.5707963267948966, kHalfPiLo = 6.123233995736766e-17;
-    // (-1)^t / (2t + 1)! and (-1)^t / (2t)!.
-    constexpr double kSinTaylor[8] = {1.0,
-                                      -1.0 / 6.0,
-                                      1.0 / 120.0,
-                                      -1.0 / 5040.0,
-                                      1.0 / 362880.0,
-                                      -1.0 / 39916800.0,
-                                      1.0 / 6227020800.0,
-                                      -1.0 / 1307674368000.0};
-    constexpr double kCosTaylor[9] = {1.0,
-                                      -0.5,
-                                      1.0 / 24.0,
-                                      -1.0 / 720.0,
-                                      1.0 / 40320.0,
-                                      -1.0 / 3628800.0,
-                                      1.0 / 479001600.0,
-                                      -1.0 / 87178291200.0,
-                                      1.0 / 20922789888000.0};
-    for (int i = 0; i < n; ++i) {
-        const double h = 0.5 * std::min(std::max(phi[i], 0.0), 2.0 * kHalfPiHi);
-        const bool upper = h > 0.5 * kHalfPiHi;
-        const double a = upper ? (kHalfPiHi - h) + kHalfPiLo : h;  // in [0, pi / 4]
-        const double z = a * a;
-        // Taylor to a^15 and a^16 (Horner in a^2): the first terms left out
-        // are below 4e-17 of the result at a = pi / 4 (test_sky_kernels.cpp:
-        // within 2 ulp; with a term fewer 10 ulp in cos, 184 in sin).
-        double ps = kSinTaylor[7], pc = kCosTaylor[8];
-        for (int t = 6; t >= 0; --t) ps = ps * z + kSinTaylor[t];
-        for (int t = 7; t >= 0; --t) pc = pc * z + kCosTaylor[t];
-        const double sa = a * ps, ca = pc;
-        const double c = upper ? sa : ca, s = upper ? ca : sa;
-        cosHalf[i] = c;
-        sinHalf[i] = s;
-        cosPhi[i] = (c - s) * (c + s);
-        cosPhiF[i] = float(cosPhi[i]);
-    }
-}
-
-namespace {
-
-/// straightOnKernel's loop (restrict parameters, as skyShell); `so` the
-/// straight-on share's first plane, `out` the multiple scattering's.
-AERIAL_INLINE void straightOnColumns(int n, const double* __restrict cosPhi, const float* __restrict so,
-                                     float* __restrict out, std::size_t stride, const StraightOnArgs& a) {
-    const double g = a.g, nuA = a.nuA, nuB = a.nuB, fade = a.fade;
-    for (int i = 0; i < n; ++i) {
-        const double mu = std::min(std::max(nuA + nuB * cosPhi[i], -1.0), 1.0);
-        const double pr = rayleighPhaseOf(mu), pm = miePhaseOf(mu, g);
-        for (std::size_t c = 0; c < 3; ++c)
-            out[c * stride + std::size_t(i)] += float(
-                fade * (pr * so[c * stride + std::size_t(i)] + pm * so[(3 + c) * stride + std::size_t(i)]));
-    }
-}
-
-/// shadowSpanKernel's loop (restrict parameters, as skyShell): the
-/// interval of the cylinder's quadratic (halfQuadraticRoots' roots where
-/// the ray is not along the axis), cut to x . l < 0 (behind the planet:
-/// r0 sinL + s mu < 0) and to the ray. Branch-free (selects), so that it
-/// vectorises.
-AERIAL_INLINE void shadowSpans(int n, const double* __restrict cosPhi, const double* __restrict cosHalfPhi,
-                               const double* __restrict sinHalfPhi, const ShadowSpanArgs& a,
-                               float* __restrict in, float* __restrict out) {
-    constexpr double kInf = std::numeric_limits<double>::infinity();
-    const double sinEl = a.sinEl, sinL = a.sinL, r0 = a.r0, c2 = a.c2, length = a.viewLength;
-    const double nuA = a.sinEl * a.sinL, nuB = a.cosEl * a.cosL;
-    const double ta = a.towardsAnti, tl = a.towardsLight;
-    const double cc = a.cosCos, lightAtViewer = r0 * sinL;
-    // x . l is linear in s: a light above the horizon and lit at the ray's
-    // end means no shadow (-inf: never, for a light below it).
-    const double litEnd = sinL >= 0.0 ? 0.0 : kInf;
-    const double muZero = sinL < 0.0 ? 1.0 : 0.0;  // mu = 0: in the shadow's half-space if the light is down
-    const double axisHi = c2 > a.parallelLit ? -kInf : kInf;  // along the axis: lit, or all in it
-    for (int i = 0; i < n; ++i) {
-        const double mu = nuA + nuB * cosPhi[i];
-        const bool litBoth = lightAtViewer + length * mu >= litEnd;
-        const double ch = cosHalfPhi[i], sh = sinHalfPhi[i];
-        const double a2 = oneMinusCosFromParts(ta, cc, ch) * oneMinusCosFromParts(tl, cc, sh);
-        const double b2 = r0 * (sinEl - sinL * mu);
-        const double disc = b2 * b2 - a2 * c2;
-        const bool roots = disc > 0.0 && a2 > 0.0;
-        const double q = -(b2 + std::copysign(std::sqrt(std::max(disc, 0.0)), b2));
-        const double r1 = q / a2, r2 = c2 / q;
-        const bool axis = !(a2 > kShadowAxisA2);
-        double lo = axis || !roots ? -kInf : std::min(r1, r2);
-        double hi = axis ? axisHi : (roots ? std::max(r1, r2) : -kInf);
-        const double bound = -lightAtViewer / mu;
-        hi = mu > 0.0 ? std::min(hi, bound) : hi;
-        lo = mu < 0.0 ? std::max(lo, bound) : lo;
-        hi = mu == 0.0 && muZero == 0.0 ? lo : hi;
-        lo = std::max(lo, 0.0);
-        hi = std::min(hi, length);
-        const bool shadow = hi > lo && !litBoth;
-        in[i] = float(shadow ? lo : -1.0);   // selected in double: GCC does not vectorise a
-        out[i] = float(shadow ? hi : -1.0);  // double compare's mask on floats
-    }
-}
-
-/// spreadStencilKernel's stencil for a block of positions.
-AERIAL_INLINE void spreadStencilBlock(int n, const float* __restrict position, int padded,
-                                      int* __restrict index, float* __restrict weight) {
-    constexpr int kK = kMsSkyColumns;
-    for (int i = 0; i < n; ++i) {
-        const float u = position[i];
-        const int k = std::min(int(u), kK - 2);
-        const float f = u - float(k);
-        // Written out (an inner loop over the four keeps GCC from vectorising).
-        const int first = k - 1, last = k + 2;  // only these two can leave 0..K-1
-        index[i] = first < 0 ? -first : first;
-        index[padded + i] = k;
-        index[2 * padded + i] = k + 1;
-        index[3 * padded + i] = last > kK - 1 ? 2 * (kK - 1) - last : last;
-        weight[i] = 0.5f * f * (-1.0f + f * (2.0f - f));
-        weight[padded + i] = 1.0f + 0.5f * f * f * (-5.0f + 3.0f * f);
-        weight[2 * padded + i] = 0.5f * f * (1.0f + f * (4.0f - 3.0f * f));
-        weight[3 * padded + i] = 0.5f * f * f * (f - 1.0f);
-    }
-}
-
-}  // namespace
-
-AERIAL_HOT_KERNEL void straightOnKernel(const StraightOnArgs& a) {
-    straightOnColumns(a.count, a.cosPhi, a.acc + 9 * std::size_t(a.stride), a.acc + 6 * std::size_t(a.stride),
-                      std::size_t(a.stride), a);
-}
-
-AERIAL_HOT_KERNEL void shadowSpanKernel(const ShadowSpanArgs& a) {
-    // A light above the horizon that lights the end of every column's ray
-    // (mu >= nuA - |nuB|): no shadow in the row.
-    if (a.sinL >= 0.0 &&
-        a.r0 * a.sinL + a.viewLength * (a.sinEl * a.sinL - std::abs(a.cosEl * a.cosL)) >= 0.0) {
-        std::fill(a.in, a.in + a.count, -1.0f);
-        std::fill(a.out, a.out + a.count, -1.0f);
-        return;
-    }
-    shadowSpans(a.count, a.cosPhi, a.cosHalfPhi, a.sinHalfPhi, a, a.in, a.out);
-}
-
-AERIAL_HOT_KERNEL void spreadStencilKernel(int n, const double* __restrict phi, int padded,
-                                           int* __restrict index, float* __restrict weight) {
-    constexpr int kK = kMsSkyColumns;  // positions 0 .. kK - 1
-    constexpr double kPiD = 3.141592653589793;
-    // The positions in double, the stencil in float (what it is stored as):
-    // one type per loop, which GCC vectorises; in blocks of kBlock.
-    constexpr int kBlock = 64;
-    float position[kBlock];
-    for (int b = 0; b < n; b += kBlock) {
-        const int m = std::min(n - b, kBlock);
-        for (int i = 0; i < m; ++i)
-            position[i] = float(std::min(std::max(phi[b + i] / kPiD, 0.0), 1.0) * (kK - 1));
-        spreadStencilBlock(m, position, padded, index + b, weight + b);
     }
 }
 
@@ -960,171 +575,6 @@ void msShellWeights(const LayerConstants* layer, int layers, float rayleighBand2
         }
         if (mie) w[9] = 2.0f;
     }
-}
-
-AERIAL_HOT_KERNEL void edgePieceKernel(const EdgePieceArgs& a) {
-    const std::size_t stride = std::size_t(a.stride);
-    edgePieces(a.count, stride, a.from, a.to, a.mu, a.litQ, a.layerTangent, a.layerExtent, a.layer,
-               a.edgeAtStart, a.tangent2, a.viewTwice, a.planetRadius2, a.lightAtViewer, a.knee, a.maxU,
-               a.angles, a.angleScale, a.depthPairs, a.plane, a.tauStart, a.tauMid, a.tauEnd, a.t0, a.dt);
-    for (std::size_t k = 0; k < 6; ++k)
-        for (int m = 0; m < a.count; ++m)
-            a.kappa[k * stride + std::size_t(m)] = a.layerKappa[6 * a.layer[m] + int(k)];
-    // The integrals, channel by channel (edgeChannel).
-    const int n = std::min((a.count + 7) / 8 * 8, a.stride);
-    for (std::size_t x = 0; x < 6; ++x) {
-        const std::size_t c = x % 3;
-        edgeChannel(n, a.tauStart + c * stride, a.tauMid + c * stride, a.tauEnd + c * stride, a.t0, a.dt,
-                    a.kappa + x * stride, a.out + x * stride);
-    }
-}
-
-/// spreadKernel's loop (restrict parameters: see crossingRecords below).
-AERIAL_INLINE void spreadColumns(int n, const int* __restrict i0, const int* __restrict i1,
-                                 const int* __restrict i2, const int* __restrict i3,
-                                 const float* __restrict w0, const float* __restrict w1,
-                                 const float* __restrict w2, const float* __restrict w3,
-                                 const float* __restrict v, float* __restrict out) {
-    for (int i = 0; i < n; ++i) {
-        const float x = w0[i] * v[i0[i]] + w1[i] * v[i1[i]] + w2[i] * v[i2[i]] + w3[i] * v[i3[i]];
-        out[i] = expNeg(-x);
-    }
-}
-
-/// exp of a 4-point weighted sum of logarithms per column (expNeg of its
-/// negative: valid for sums in (-87, 87), which the callers' values are).
-AERIAL_HOT_KERNEL void spreadKernel(const SpreadKernelArgs& a) {
-    const int n = a.count;
-    spreadColumns(n, a.index, a.index + n, a.index + 2 * n, a.index + 3 * n, a.weight, a.weight + n,
-                  a.weight + 2 * n, a.weight + 3 * n, a.logValue, a.out);
-}
-
-// The loops of msCrossingKernel and msSourceKernel live in helpers whose
-// arrays are __restrict parameters (as skyShell's): written inline in the
-// kernels, with the pointers taken from the argument struct, GCC did not
-// vectorise them.
-
-/// msCrossingKernel's loop: as skyShell, without the roots.
-AERIAL_INLINE void crossingRecords(int n, float alpha, float beta, float horizonCos, float knee,
-                                   float angleScale, float maxU, const float* __restrict p,
-                                   const float* __restrict q, const float* __restrict t0,
-                                   const float* __restrict t1, const float* __restrict t2,
-                                   float* __restrict tau0, float* __restrict tau1, float* __restrict tau2,
-                                   float* __restrict tr0, float* __restrict tr1, float* __restrict tr2,
-                                   float* __restrict margins) {
-    for (int i = 0; i < n; ++i) {
-        const float margin = alpha * p[i] + beta * q[i] - horizonCos;
-        const float x = maxZero(margin);
-        const float u = minNonNegative(x / (x + knee) * angleScale, maxU);
-        const int iu = static_cast<int>(u);
-        const float f = u - float(iu);
-        const float d0 = t0[iu] + f * (t0[iu + 1] - t0[iu]);
-        const float d1 = t1[iu] + f * (t1[iu + 1] - t1[iu]);
-        const float d2 = t2[iu] + f * (t2[iu + 1] - t2[iu]);
-        tau0[i] = d0;
-        tau1[i] = d1;
-        tau2[i] = d2;
-        tr0[i] = expNeg(d0);
-        tr1[i] = expNeg(d1);
-        tr2[i] = expNeg(d2);
-        margins[i] = margin;
-    }
-}
-
-/// The sun seen from one crossing of a multiple-scattering ray, for every
-/// combination of sun cosine and azimuth.
-AERIAL_HOT_KERNEL void msCrossingKernel(const MsCrossingArgs& a) {
-    const int n = a.count;
-    float* r = a.record;
-    crossingRecords(n, a.alpha, a.beta, a.horizonCos, a.knee, a.angleScale, a.maxU, a.p, a.q, a.depth0,
-                    a.depth1, a.depth2, r, r + n, r + 2 * n, r + 3 * n, r + 4 * n, r + 5 * n, r + 6 * n);
-}
-
-/// msSourceKernel's loop. The LUT column: x = sign(mu) sqrt(min(|mu|, 1)),
-/// on the bit patterns (sign and magnitude apart), so that it vectorises.
-AERIAL_INLINE void sourceColumns(int n, float alpha, float beta, float scale, float maxU,
-                                 const float* __restrict p, const float* __restrict q,
-                                 const float* __restrict row, int* __restrict column,
-                                 float* __restrict fraction, float* __restrict out0, float* __restrict out1,
-                                 float* __restrict out2) {
-    for (int i = 0; i < n; ++i) {
-        const float mu = alpha * p[i] + beta * q[i];
-        const int bits = std::bit_cast<int>(mu);
-        const float magnitude = minNonNegative(std::bit_cast<float>(bits & 0x7fffffff), 1.0f);
-        const float root = vecSqrt(magnitude);
-        const float x = std::bit_cast<float>(std::bit_cast<int>(root) | (bits & int(0x80000000u)));
-        const float u = minNonNegative(maxZero((x + 1.0f) * scale), maxU);
-        const int iu = static_cast<int>(u);
-        const float f = u - float(iu);
-        const int at = 3 * iu;
-        column[i] = iu;
-        fraction[i] = f;
-        out0[i] = row[at] + f * (row[at + 3] - row[at]);
-        out1[i] = row[at + 1] + f * (row[at + 4] - row[at + 1]);
-        out2[i] = row[at + 2] + f * (row[at + 5] - row[at + 2]);
-    }
-}
-
-AERIAL_HOT_KERNEL void msSourceKernel(const MsSourceArgs& a) {
-    const int n = a.count;
-    const float scale = 0.5f * float(a.cosines - 1), maxU = float(a.cosines - 1) - 1e-3f;
-    sourceColumns(n, a.alpha, a.beta, scale, maxU, a.p, a.q, a.row, a.column, a.fraction, a.out, a.out + n,
-                  a.out + 2 * n);
-}
-
-/// msSegmentKernel's loop, one channel (restrict parameters, as above).
-AERIAL_INLINE void segmentChannel(int n, float w, float wm, float tv, float eView,
-                                  const float* __restrict tauA, const float* __restrict tauB,
-                                  const float* __restrict trA, const float* __restrict trB,
-                                  const float* __restrict mA, const float* __restrict mB,
-                                  float* __restrict out, float* __restrict outMie) {
-    for (int i = 0; i < n; ++i) {
-        const float marginA = mA[i], marginB = mB[i];
-        const float pos = maxZero(marginA) + maxZero(marginB);
-        const float neg = maxZero(-marginA) + maxZero(-marginB);
-        const float lit = pos / (pos + neg + 1e-30f);
-        float f1, f2;
-        exponentialMoments(trA[i], trB[i] * eView, tv + tauB[i] - tauA[i], f1, f2);
-        const float share = lit * f1;
-        out[i] += w * share;
-        outMie[i] += wm * share;
-    }
-}
-
-/// One segment of a multiple-scattering ray for every combination:
-/// weight T_sun(a) E1(d) lit, d = tauView + tau_sun(b) - tau_sun(a)
-/// (exponentialMoments), lit the fraction of the segment where the margin,
-/// linear between its ends, is positive.
-AERIAL_HOT_KERNEL void msSegmentKernel(const MsSegmentArgs& a) {
-    const int n = a.count;
-    const float* ra = a.a;
-    const float* rb = a.b;
-    for (int c = 0; c < 3; ++c) {
-        const float w = a.weight[c], wm = a.weightMie[c], tv = a.tauView[c], eView = expNeg(tv);
-        segmentChannel(n, w, wm, tv, eView, ra + c * n, rb + c * n, ra + (3 + c) * n, rb + (3 + c) * n,
-                       ra + 6 * n, rb + 6 * n, a.acc + c * n, a.accMie + c * n);
-    }
-}
-
-void segmentNodeDensities(const double* crossing, int segments, double h0, double r0, double mu,
-                          const DensityConstants& density, float* s, float* rayleigh, float* mie,
-                          float* ozone) {
-    if (segments <= 0) return;
-    for (int i = 0; i < segments; ++i) {
-        const double a = crossing[i], b = crossing[i + 1];
-        for (int g = 0; g < 4; ++g) s[4 * i + g] = float(a + (b - a) * kGaussT[g]);
-    }
-    NodeKernelArgs nodes{};
-    nodes.count = 4 * segments;
-    nodes.viewerHeight = float(h0);
-    nodes.r0 = float(r0);
-    nodes.twoR0Mu = float(2.0 * r0 * mu);
-    nodes.density = density;
-    nodes.s = s;
-    nodes.rayleigh = rayleigh;
-    nodes.mie = mie;
-    nodes.ozone = ozone;
-    nodeKernel(nodes);
 }
 
 }  // namespace aerial::detail

@@ -7,7 +7,7 @@
 #include <aerial/finite.hpp>
 #include <aerial/height_fog.hpp>
 
-#include "volume_geometry.hpp"
+#include "fog/volume_geometry.hpp"
 
 #include <algorithm>
 #include <cmath>
