@@ -313,7 +313,7 @@ void Editor::frame() {
     // redrawing: on a software rasteriser every frame costs a core.
     const bool automated = !options_.script.empty() || options_.benchFrames > 0;
     if (!automated && frames_.idleFrames > 3 && !playback_.playing && !export_.running() &&
-        !view_.gizmo.active())
+        !view_.gizmo.active() && !edit_.weather.preview.playing())
         glfwWaitEventsTimeout(0.25);
     else
         glfwPollEvents();
@@ -422,7 +422,10 @@ void Editor::captureWindow(int width, int height) {
 void Editor::updateEvaluation() {
     // While a field is dragged its unkeyed change is drawn without compiling the preset each frame.
     const bool dragging = imguiReady_ && ImGui::IsAnyItemActive();
-    if (sky_.evaluate(doc_, edit_.pending, playback_.timeHours, dragging)) edit_.validate(doc_.preset());
+    // The Weather panel's preview (view state) on the editor's clock.
+    edit_.weather.preview.update(doc_.preset(), nowSeconds());
+    if (sky_.evaluate(doc_, edit_.pending, playback_.timeHours, dragging, edit_.weather.preview.mix()))
+        edit_.validate(doc_.preset());
 }
 
 void Editor::updateSky() {
@@ -519,6 +522,18 @@ void Editor::layout() {
         view_.timelineCollapsed = ImGui::IsWindowCollapsed();
         if (timelineOpen && !view_.timelineCollapsed)
             drawTimeline(doc_, edit_, playback_, actions_, status_);
+        ImGui::End();
+    }
+
+    // The Weather panel floats over the viewport's right side (View > Weather).
+    if (edit_.weather.shown) {
+        const float weatherW = std::min(380.0f, w - 20.0f);
+        ImGui::SetNextWindowPos(ImVec2(std::max(0.0f, w - rightW - weatherW - 10.0f), menuH + 30.0f),
+                                ImGuiCond_Appearing);
+        ImGui::SetNextWindowSize(ImVec2(weatherW, std::max(160.0f, std::min(480.0f, middleH - 40.0f))),
+                                 ImGuiCond_Appearing);
+        if (ImGui::Begin("Weather", &edit_.weather.shown, ImGuiWindowFlags_NoSavedSettings))
+            drawWeatherPanel(doc_, edit_, playback_.timeHours, nowSeconds(), status_);
         ImGui::End();
     }
 

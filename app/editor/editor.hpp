@@ -18,7 +18,8 @@
 //   editor_timeline.cpp   ruler, zoom and pan, scrubbing, play, keys
 //   editor_curves.cpp     the curve view (curves overlaid, key drags, box
 //                         selection, tangents)
-//                         (these four are free functions, panels.hpp, that
+//   editor_weather.cpp    the Weather panel: states, overrides, preview
+//                         (these five are free functions, panels.hpp, that
 //                         take the parts they edit)
 //   editor_files.cpp      new/open/save/recent/drop/scene, unsaved-changes
 //                         prompt, load-error modal, recovery
@@ -29,6 +30,8 @@
 //                         keys, the layout and the time
 //   editor_script_view.cpp  script commands of the viewport (screenshots,
 //                         gizmo drags, clicks, orbits, display)
+//   editor_script_weather.cpp  script commands of the Weather panel and
+//                         the viewport's weather preview
 //
 // Every change to the preset goes through Document::apply (document.hpp),
 // so it is undoable and marks the document dirty.
@@ -177,11 +180,12 @@ private:
     void startExport(const std::string& directory);
 
     // --- editor_script.cpp, editor_script_edit.cpp, editor_script_curves.cpp,
-    //     editor_script_view.cpp
+    //     editor_script_view.cpp, editor_script_weather.cpp
     void declareScriptCommands();
     void declareEditScriptCommands();
     void declareCurveScriptCommands();
     void declareViewScriptCommands();
+    void declareWeatherScriptCommands();
     void stepScript();
     /// Runs one command; returns false with `error` set on failure. May ask
     /// to wait: ScriptRunner::waitFrames frames, or until the synthetic

@@ -246,6 +246,11 @@ void Editor::declareActions() {
     toggle("show_outliner", "Outliner", view_.showOutliner);
     toggle("show_inspector", "Inspector", view_.showInspector);
     toggle("show_timeline", "Timeline", view_.showTimeline);
+    t.add("show_weather", "Weather", "View")
+        .takes({onOff().opt()})
+        .helps("the Weather panel: states, overrides and the viewport's preview (without on|off: toggle)")
+        .checkedWhen([this] { return edit_.weather.shown; })
+        .handles(switchTo(edit_.weather.shown));
     toggle("collapse_outliner", "Collapse outliner", view_.outlinerCollapsed, true);
     toggle("collapse_inspector", "Collapse inspector", view_.inspectorCollapsed);
     toggle("collapse_timeline", "Collapse timeline", view_.timelineCollapsed);

@@ -45,6 +45,7 @@ void EditState::validate(const Preset& p) {
                                                -1}
                                    : Selection{selection.kind, count - 1};
     }
+    if (weather.selectedState >= int(p.weather.size())) weather.selectedState = int(p.weather.size()) - 1;
     if (selectedParam && selectedParam->object >= 0) {
         if (std::size_t(selectedParam->object) >= objectCount(p, selectedParam->scope()))
             selectedParam.reset();
@@ -71,7 +72,8 @@ void Playback::advance(double dt) {
     timeHours = t;
 }
 
-bool SkyService::evaluate(const Document& doc, const PendingEdits& pending, double timeHours, bool dragging) {
+bool SkyService::evaluate(const Document& doc, const PendingEdits& pending, double timeHours, bool dragging,
+                          const WeatherMix& weather) {
     bool changed = false;
     if (pending.empty() || dragging) {
         // The document's own preset, and the changes being dragged written over it.
@@ -81,7 +83,7 @@ bool SkyService::evaluate(const Document& doc, const PendingEdits& pending, doub
             ++compiles;
             changed = true;
         }
-        compiled->evaluate(timeHours, state);
+        compiled->evaluate(timeHours, weather, state);
         if (pending.empty()) return changed;
         if (!overlayBound || overlayRevision != doc.revision() ||
             overlayPendingRevision != pending.revision()) {
@@ -102,7 +104,7 @@ bool SkyService::evaluate(const Document& doc, const PendingEdits& pending, doub
         ++compiles;
         changed = true;
     }
-    shown->evaluate(timeHours, state);
+    shown->evaluate(timeHours, weather, state);
     return changed;
 }
 

@@ -6,7 +6,8 @@
 //   Document (document.hpp)  the preset being edited, its file, dirty, undo
 //   EditState                what is selected (object, parameter, key), the
 //                            key clipboard, the outliner's inline rename,
-//                            the curve view's state
+//                            the curve view's state, the Weather panel's
+//                            state and the viewport's weather preview
 //   Playback                 the time of day; play, loop, speed
 //   SkyService               the preset evaluated at that time and the sun's
 //                            and moon's sky tables solved for it
@@ -31,6 +32,7 @@
 #include "viewport/camera_controller.hpp"
 #include "viewport/gizmo.hpp"
 #include "viewport/scene_hits.hpp"
+#include "weather_preview.hpp"
 
 #include <aerial/evaluate.hpp>
 #include <aerial/photometry.hpp>
@@ -64,6 +66,18 @@ struct Selection {
     ParamScope scope() const { return scopeOf(kind); }
 };
 
+/// The Weather panel (editor_weather.cpp): the state it shows, its fields,
+/// and what the viewport previews (view state: never saved, never undone).
+struct WeatherPanel {
+    bool shown = false;         ///< View > Weather
+    int selectedState = -1;     ///< index into Preset::weather
+    std::string nameBuffer;     ///< the name field (add, rename)
+    std::string from = "none";  ///< the transition's ends (the preview's pickers)
+    std::string to = "none";
+    double playSeconds = 10.0;  ///< Play transition's duration [s]
+    WeatherPreview preview;
+};
+
 /// The selection and the panels' editing state (outliner, inspector, timeline).
 struct EditState {
     Selection selection;
@@ -80,6 +94,8 @@ struct EditState {
     PendingEdits pending;
     /// Solo and mute of volumes and emitters in the viewport (view only).
     ViewFilter viewFilter;
+    /// The Weather panel and the viewport's weather preview.
+    WeatherPanel weather;
 
     /// A volume, an emitter or a cloud volume is selected.
     bool objectSelected() const { return selection.scope() != ParamScope::Global; }
@@ -132,12 +148,15 @@ struct SkyService {
     std::uint64_t compiles = 0;  ///< presets compiled (each a copy of the whole preset)
 
     /// Evaluates the document's preset, with the unkeyed changes keyed
-    /// (what the artist sees), at `timeHours`. While `dragging` (a field
-    /// is being dragged) the changes are written over the document's own
-    /// evaluation, compiled only when the document changes; otherwise the
-    /// preset with the changes keyed is compiled again after a change of
-    /// either, once. True when it compiled or bound anything again.
-    bool evaluate(const Document& doc, const PendingEdits& pending, double timeHours, bool dragging = false);
+    /// (what the artist sees), at `timeHours`, with the weather `weather`
+    /// (the Weather panel's preview; empty: the keyed values). While
+    /// `dragging` (a field is being dragged) the changes are written over
+    /// the document's own evaluation (a dragged parameter shows its change,
+    /// not the weather's), compiled only when the document changes;
+    /// otherwise the preset with the changes keyed is compiled again after
+    /// a change of either, once. True when it compiled or bound anything again.
+    bool evaluate(const Document& doc, const PendingEdits& pending, double timeHours, bool dragging = false,
+                  const WeatherMix& weather = {});
     /// Solves both tables again when the atmosphere or a light direction
     /// changed since the last solve. True when it solved.
     bool solve();
@@ -269,6 +288,7 @@ struct ScriptRunner {
     bool waitsForMouse = false;
     std::deque<double> times;  ///< scrub: one time per frame
     bool waitsForAutosave = false;
+    bool waitsForWeather = false;  ///< weather_wait: until the played transition ends
     int autosaveWrites = 0;
     std::string windowShotPath;  ///< window_screenshot: captured after the next frame is drawn
     /// curve_drag, curve_drag_box, curve_wheel, curve_pan_drag: ImGui's

@@ -12,7 +12,8 @@
 // declares the actions that only scripts run: files, prompts and checks;
 // editor_script_edit.cpp those that edit the preset, the layout and the
 // time, editor_script_view.cpp those of the viewport and
-// editor_script_curves.cpp those of the timeline's curve view.
+// editor_script_curves.cpp those of the timeline's curve view and
+// editor_script_weather.cpp those of the Weather panel.
 //
 // Parameters are addressed as in preset_edit.hpp: "fog.density_per_m",
 // "volume[0].density_per_m", "emitter[1].intensity_cd". Times are hours
@@ -44,6 +45,12 @@ void Editor::stepScript() {
         playback_.timeHours = runner_.times.front();
         runner_.times.pop_front();
         return;
+    }
+    if (runner_.waitsForWeather) {
+        if (edit_.weather.preview.playing()) return;
+        runner_.waitsForWeather = false;
+        std::printf("weather %s\n", edit_.weather.preview.describe().c_str());
+        std::fflush(stdout);
     }
     if (runner_.waitsForAutosave) {
         if (autosave_ && autosave_->writes() > runner_.autosaveWrites) {
@@ -412,6 +419,7 @@ void Editor::declareScriptCommands() {
     declareEditScriptCommands();
     declareCurveScriptCommands();
     declareViewScriptCommands();
+    declareWeatherScriptCommands();
 }
 
 }  // namespace aerial::editor

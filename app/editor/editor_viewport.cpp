@@ -78,7 +78,7 @@ void Editor::renderViewport() {
     const CameraState& c = view_.camera.state();
     std::snprintf(signature, sizeof signature,
                   "%d %d %.17g %llu %llu %llu %llu %.17g %.17g %.17g %.17g %.17g %.17g "
-                  "%d%d%d%d%d%d%d%d%d%d%d %s %s %.17g %p",
+                  "%d%d%d%d%d%d%d%d%d%d%d %s %s %.17g %p w%llu",
                   width, height, playback_.timeHours, static_cast<unsigned long long>(doc_.revision()),
                   static_cast<unsigned long long>(edit_.pending.revision()), edit_.viewFilter.revision(),
                   static_cast<unsigned long long>(sky_.generation), c.target.x, c.target.y, c.target.z,
@@ -86,7 +86,8 @@ void Editor::renderViewport() {
                   view_.passes.scene, view_.passes.globalFog, view_.passes.volumes, view_.passes.emitters,
                   view_.passes.transparent, view_.passes.particles, view_.passes.clouds, view_.passes.shadows,
                   int(view_.fogModeFor(sky_.state.environment)), view_.showStars, view_.displayName.c_str(),
-                  view_.viewName.c_str(), view_.exposureEv, static_cast<const void*>(view_.display.get()));
+                  view_.viewName.c_str(), view_.exposureEv, static_cast<const void*>(view_.display.get()),
+                  static_cast<unsigned long long>(edit_.weather.preview.revision()));
     const auto now = std::chrono::steady_clock::now();
     const double dt = view_.lastExposureStep.time_since_epoch().count() == 0
                           ? 0.0
@@ -209,6 +210,14 @@ void Editor::drawViewport() {
         ImGui::SetTooltip(
             "RMB orbit/fly (WASDQE), Alt+LMB orbit, MMB pan, wheel zoom, F frame the selection,\n"
             "G game view, F11 maximize, F1 keys and workflow");
+    // The Weather panel's preview: the picture is not the keyed one.
+    if (edit_.weather.preview.mode() != WeatherPreview::Mode::None) {
+        ImGui::SameLine();
+        ImGui::TextColored(ImVec4(0.55f, 0.75f, 1.0f, 1.0f), "weather: %s",
+                           edit_.weather.preview.describe().c_str());
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("Weather preview (View > Weather): the viewport only, never saved");
+    }
 
     const ImVec2 avail = ImGui::GetContentRegionAvail();
     const ImVec2 origin = ImGui::GetCursorScreenPos();

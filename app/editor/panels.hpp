@@ -9,6 +9,7 @@
 //   editor_timeline.cpp   drawTimeline
 //   editor_curves.cpp     drawCurveView, curveColour, drawSunKeyRays (the
 //                         timeline's curve area)
+//   editor_weather.cpp    drawWeatherPanel
 #pragma once
 
 #include "actions.hpp"
@@ -38,6 +39,15 @@ void drawInspector(Document& doc, EditState& edit, double timeHours, const Prese
 /// The timeline: playback controls, ruler, keys and the selected parameter's curve.
 void drawTimeline(Document& doc, EditState& edit, Playback& playback, const ActionTable& actions,
                   std::string& status);
+
+/// The Weather panel (View > Weather): the preset's weather states; the
+/// selected state's overrides, each with the value keyed at `timeHours` and
+/// the one the state gives; adding, renaming and removing states, adding,
+/// changing and removing overrides (weather_edit.hpp, one undo step each);
+/// and the viewport's preview (edit.weather.preview: none, a state, a
+/// transition at a fraction, Play transition from the clock `nowSeconds`
+/// [s]), which never edits the document.
+void drawWeatherPanel(Document& doc, EditState& edit, double timeHours, double nowSeconds, std::string& status);
 
 /// The timeline's key operations (the action table's timeline_delete_keys,
 /// timeline_copy_key and timeline_paste_key, and the timeline's buttons).

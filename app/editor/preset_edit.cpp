@@ -2,6 +2,7 @@
 #include "preset_edit.hpp"
 
 #include "document.hpp"
+#include "weather_edit.hpp"
 
 #include <glm/geometric.hpp>
 
@@ -550,13 +551,17 @@ int duplicateObject(Preset& preset, ParamScope scope, int index, const glm::dvec
 
 bool deleteObject(Preset& preset, ParamScope scope, int index) {
     // Copy the id: removeObject erases the object that holds it.
+    std::string id;
     if (scope == ParamScope::Volume && index >= 0 && index < int(preset.volumes.size()))
-        return removeObject(preset, scope, std::string(preset.volumes[std::size_t(index)].id));
-    if (scope == ParamScope::Emitter && index >= 0 && index < int(preset.emitters.size()))
-        return removeObject(preset, scope, std::string(preset.emitters[std::size_t(index)].id));
-    if (scope == ParamScope::CloudVolume && index >= 0 && index < int(preset.cloudVolumes.size()))
-        return removeObject(preset, scope, std::string(preset.cloudVolumes[std::size_t(index)].id));
-    return false;
+        id = preset.volumes[std::size_t(index)].id;
+    else if (scope == ParamScope::Emitter && index >= 0 && index < int(preset.emitters.size()))
+        id = preset.emitters[std::size_t(index)].id;
+    else if (scope == ParamScope::CloudVolume && index >= 0 && index < int(preset.cloudVolumes.size()))
+        id = preset.cloudVolumes[std::size_t(index)].id;
+    else
+        return false;
+    removeWeatherOverridesOf(preset, scope, id);  // removeObject sees only the tracks
+    return removeObject(preset, scope, id);
 }
 
 std::string presetNameFromFile(const std::string& path) {
@@ -628,6 +633,7 @@ bool setObjectId(Preset& preset, ParamScope scope, int index, const std::string&
         error = "an id must be 1..64 characters of A-Z a-z 0-9 _ - . (got \"" + id + "\")";
         return false;
     }
+    retargetWeatherOverrides(preset, scope, old, id);  // changeObjectId retargets only the tracks
     return true;
 }
 

@@ -171,7 +171,8 @@ int addCloudVolume(Preset& preset, FogVolumeShape shape, const CloudVolume& plac
 /// Duplicates a volume, emitter or cloud volume (new id, " copy" name, tracks copied,
 /// offset by `offset`); returns the new index or -1.
 int duplicateObject(Preset& preset, ParamScope scope, int index, const glm::dvec3& offset);
-/// Removes a volume, emitter or cloud volume and its tracks.
+/// Removes a volume, emitter or cloud volume, its tracks and the weather
+/// overrides of it.
 bool deleteObject(Preset& preset, ParamScope scope, int index);
 /// Renames (the shown name, not the id).
 bool renameObject(Preset& preset, ParamScope scope, int index, const std::string& name);
@@ -186,7 +187,7 @@ std::string nameAfterSaveAs(const std::string& currentName, const std::string& o
 
 /// Changes an object's id (what tracks and games refer to): 1..64
 /// characters of A-Z a-z 0-9 _ - . and unique among the objects of its
-/// kind; every track of the object follows it. False with `error` (the
+/// kind; every track and weather override of the object follows it. False with `error` (the
 /// reason) otherwise, the preset unchanged.
 bool setObjectId(Preset& preset, ParamScope scope, int index, const std::string& id, std::string& error);
 

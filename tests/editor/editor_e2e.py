@@ -6,7 +6,8 @@ file code paths. Python standard library only.
     editor_e2e.py --editor PATH --source-dir DIR --work-dir DIR CASE
 
 CASE: workflow | undo_redo | crash_recovery | screenshot | exposure | errors | prompts | session |
-      cloud_volume | autokey | placement | curves | curves_mouse | sun_anchor | curve_edit
+      cloud_volume | autokey | placement | curves | curves_mouse | sun_anchor | curve_edit | weather
+(weather: e2e_weather.py)
 
 Every case FAILS (never skips) when the editor cannot start under Xvfb.
 """
@@ -22,6 +23,7 @@ import time
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts"))
 from pngio import PngError, decode_png  # noqa: E402  (the one PNG reader)
+from e2e_weather import case_weather  # noqa: E402  (its own file: this one is long enough)
 
 WINDOW = "640x360"
 
@@ -1408,6 +1410,7 @@ CASES = {
     "curves_mouse": case_curves_mouse,
     "sun_anchor": case_sun_anchor,
     "curve_edit": case_curve_edit,
+    "weather": case_weather,
 }
 
 
