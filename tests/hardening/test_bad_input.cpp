@@ -156,9 +156,9 @@ const BadInput kBadPresets[] = {
     {"unknown_track_param.json", ":6:16: error: /tracks/0/param: unknown global parameter \"fog.thickness\""},
     {"utf16_bom.json", ":1:1: error: UTF-16 text (byte order mark); a preset is UTF-8 JSON"},
     {"version_fraction.json", ":2:14: error: /version: expected an integer, got a number"},
-    {"version_missing.json", ":1:1: error: /version: missing \"version\" (this library reads versions 1 to 4)"},
+    {"version_missing.json", ":1:1: error: /version: missing \"version\" (this library reads versions 1 to 5)"},
     {"version_newer.json",
-     ":2:14: error: /version: preset version 7 is newer than this library reads (4); update Aerial to load "
+     ":2:14: error: /version: preset version 7 is newer than this library reads (5); update Aerial to load "
      "it"},
     {"version_string.json", ":2:14: error: /version: expected an integer, got a string"},
     {"version_zero.json", ":2:14: error: /version: unsupported version 0"},
