@@ -205,13 +205,14 @@ StepMaps bakeStepMaps(const PresetState& state, const SkyTable& sun, const SkyTa
     // windowed form: it swings at most half the mean, so it is never clamped
     // along the axes and (L(+e) -+ L(-e)) / 2 recovers both exactly.
     const double k1 = miePhaseFirstMoment(desc.mieAnisotropy);
-    glm::dvec3 l0(0.0), l1[3];
+    glm::dvec3 l1[3];
+    glm::dvec3 l0(0.0);
     for (int k = 0; k < 3; ++k) {
         glm::dvec3 axis(0.0);
         axis[k] = 1.0;
         const glm::dvec3 plus = fogSkyInScatter(desc.skyLight, k1, axis);
         const glm::dvec3 minus = fogSkyInScatter(desc.skyLight, k1, -axis);
-        l0 = 0.5 * (plus + minus);
+        if (k == 0) l0 = 0.5 * (plus + minus);  // the same on every axis
         l1[k] = 0.5 * (plus - minus);
     }
     Json direct = Json::array();

@@ -560,8 +560,7 @@ bool deleteObject(Preset& preset, ParamScope scope, int index) {
         id = preset.cloudVolumes[std::size_t(index)].id;
     else
         return false;
-    removeWeatherOverridesOf(preset, scope, id);  // removeObject sees only the tracks
-    return removeObject(preset, scope, id);
+    return removeObject(preset, scope, id);  // its tracks and weather overrides go with it
 }
 
 std::string presetNameFromFile(const std::string& path) {
@@ -627,13 +626,13 @@ bool setObjectId(Preset& preset, ParamScope scope, int index, const std::string&
         error = "another " + std::string(addressPrefix(scope)) + " already has the id \"" + id + "\"";
         return false;
     }
-    // core's changeObjectId checks the characters and retargets the tracks.
+    // core's changeObjectId checks the characters and retargets the tracks
+    // and weather overrides.
     const std::string old = *current;  // a copy: the call changes the object's id first
     if (!changeObjectId(preset, scope, old, id)) {
         error = "an id must be 1..64 characters of A-Z a-z 0-9 _ - . (got \"" + id + "\")";
         return false;
     }
-    retargetWeatherOverrides(preset, scope, old, id);  // changeObjectId retargets only the tracks
     return true;
 }
 

@@ -5,6 +5,7 @@
 #include "curve_view.hpp"
 
 #include <aerial/param_table.hpp>
+#include <aerial/weather.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -172,27 +173,6 @@ bool removeWeatherOverride(Preset& preset, int state, int index) {
     return true;
 }
 
-int removeWeatherOverridesOf(Preset& preset, ParamScope scope, const std::string& objectId) {
-    int removed = 0;
-    for (WeatherState& state : preset.weather)
-        removed += int(std::erase_if(state.overrides, [&](const WeatherOverride& o) {
-            return o.target.scope == scope && o.target.objectId == objectId;
-        }));
-    return removed;
-}
-
-int retargetWeatherOverrides(Preset& preset, ParamScope scope, const std::string& oldId,
-                             const std::string& newId) {
-    int changed = 0;
-    for (WeatherState& state : preset.weather)
-        for (WeatherOverride& o : state.overrides)
-            if (o.target.scope == scope && o.target.objectId == oldId) {
-                o.target.objectId = newId;
-                ++changed;
-            }
-    return changed;
-}
-
 WeatherOverride newWeatherOverride(const Preset& preset, const ParamRef& ref, double timeHours) {
     WeatherOverride o;
     o.target = trackTargetOf(preset, ref);
@@ -207,12 +187,8 @@ WeatherOverride newWeatherOverride(const Preset& preset, const ParamRef& ref, do
 
 void overriddenValue(const ParamDesc& desc, const double keyed[4], const WeatherOverride& o, double out[4]) {
     out[0] = out[1] = out[2] = out[3] = 0.0;
-    for (int c = 0; c < componentCount(desc); ++c) {
-        double v = o.value[c];
-        if (o.mode == WeatherOverrideMode::Add) v = keyed[c] + o.value[c];
-        if (o.mode == WeatherOverrideMode::Scale) v = keyed[c] * o.value[c];
-        out[c] = std::clamp(v, desc.minValue, desc.maxValue);
-    }
+    const glm::dvec3 v = weatherOverrideValue(o, glm::dvec3(keyed[0], keyed[1], keyed[2]));  // as core blends it
+    for (int c = 0; c < std::min(componentCount(desc), 3); ++c) out[c] = std::clamp(v[c], desc.minValue, desc.maxValue);
 }
 
 glm::dvec3 valueForMode(const ParamDesc& desc, const double keyed[4], const WeatherOverride& o,

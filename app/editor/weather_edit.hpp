@@ -62,13 +62,6 @@ bool setWeatherOverride(Preset& preset, int state, int index, WeatherOverrideMod
 /// Removes override `index` of state `state`; false when there is none.
 bool removeWeatherOverride(Preset& preset, int state, int index);
 
-/// What an object's removal or new id does to the overrides that name it
-/// (core's removeObject and changeObjectId see only the tracks): they go
-/// with the object, or follow its new id. Return how many changed.
-int removeWeatherOverridesOf(Preset& preset, ParamScope scope, const std::string& objectId);
-int retargetWeatherOverrides(Preset& preset, ParamScope scope, const std::string& oldId,
-                             const std::string& newId);
-
 // ---------------------------------------------------------------------------
 // Values
 

@@ -188,6 +188,25 @@ TEST(Weather, TransitionFractionsLieBetweenTheStates) {
     EXPECT_FALSE(transitionWeather(compiled.preset(), "fog", "hail", 0.5, mix));
 }
 
+// Renaming or removing an object carries the overrides that name it, as
+// its tracks (core's editing helpers; the editor calls them).
+TEST(Weather, OverridesFollowTheirObject) {
+    Preset p = load("foggy_valley_morning.json");
+    const auto countTargets = [&](const std::string& id) {
+        int n = 0;
+        for (const WeatherState& s : p.weather)
+            for (const WeatherOverride& o : s.overrides) n += o.target.objectId == id;
+        return n;
+    };
+    ASSERT_EQ(countTargets("river_mist"), 1);
+    ASSERT_TRUE(changeObjectId(p, ParamScope::Volume, "river_mist", "creek_mist"));
+    EXPECT_EQ(countTargets("river_mist"), 0);
+    EXPECT_EQ(countTargets("creek_mist"), 1);
+    ASSERT_TRUE(removeObject(p, ParamScope::Volume, "creek_mist"));
+    EXPECT_EQ(countTargets("creek_mist"), 0);
+    EXPECT_TRUE(validatePreset(p).empty());  // nothing left dangling: the preset still saves
+}
+
 TEST(Weather, TwoPresetsBlendContinuously) {
     const PresetState a = CompiledPreset(load("clear_summer_day.json")).evaluate(10.0);
     const PresetState b = CompiledPreset(load("foggy_valley_morning.json")).evaluate(10.0);

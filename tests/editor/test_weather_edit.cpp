@@ -61,7 +61,7 @@ TEST(WeatherEdit, RefusedNamesSayWhatValidatePresetSaysAndRecordNothing) {
     EXPECT_FALSE(applyAddWeatherState(doc, "storm", error));
     EXPECT_NE(error.find("a second weather state named \"storm\""), std::string::npos) << error;
     EXPECT_FALSE(applyAddWeatherState(doc, "heavy rain", error));
-    EXPECT_NE(error.find("letters, digits, _ or -"), std::string::npos) << error;
+    EXPECT_NE(error.find("1 to 64 of A-Z a-z 0-9 _ - . (got \"heavy rain\")"), std::string::npos) << error;
     EXPECT_FALSE(applyAddWeatherState(doc, "", error));
     // Renaming the first state to the last's name: core reports it at the later state.
     EXPECT_FALSE(applyRenameWeatherState(doc, 0, "storm", error));

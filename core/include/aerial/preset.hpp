@@ -197,7 +197,8 @@ Track* findTrack(Preset& preset, const TrackTarget& target);
 const Track* findTrack(const Preset& preset, const TrackTarget& target);
 
 /// Editing helper: gives a volume (scope Volume), emitter (scope Emitter) or
-/// cloud volume (scope CloudVolume) a new id and retargets its tracks. Returns false and changes nothing when
+/// cloud volume (scope CloudVolume) a new id and retargets its tracks and
+/// weather overrides. Returns false and changes nothing when
 /// `oldId` is unknown or `newId` is malformed or taken.
 bool changeObjectId(Preset& preset, ParamScope scope, const std::string& oldId, const std::string& newId);
 
@@ -211,7 +212,8 @@ bool changeObjectId(Preset& preset, ParamScope scope, const std::string& oldId, 
 std::size_t resolveKeyAnchors(Preset& preset);
 
 /// Editing helper: removes a volume, emitter or cloud volume and the tracks
-/// that target it. Returns false when there is no such object.
+/// and weather overrides that target it. Returns false when there is no
+/// such object.
 bool removeObject(Preset& preset, ParamScope scope, const std::string& id);
 
 /// The built-in preset the editor opens on: Earth's atmosphere at 45 deg N

@@ -307,4 +307,9 @@ bool parseSunEvent(std::string_view name, SunEvent& event);
 /// continuously with the date and the latitude.
 double sunEventHours(const Location& where, SunEvent event);
 
+/// The same where the sun really crosses the event's elevation that day;
+/// NaN where sunEventHours falls back to midnight or noon (a polar day or
+/// night). Noon always happens. One scan of the day, as sunEventHours.
+double sunEventCrossingHours(const Location& where, SunEvent event);
+
 }  // namespace aerial

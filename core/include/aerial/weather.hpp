@@ -60,6 +60,11 @@ inline constexpr int kWeatherCategoryCount = 7;
 /// change, fog and wind faster.
 inline constexpr double kWeatherCategoryShare[kWeatherCategoryCount] = {1.0, 0.6, 0.4, 0.8, 0.8, 0.3, 1.0};
 
+/// o(k): what an override makes of the keyed value k (per component: set
+/// -> value, add -> k + value, scale -> k value), before the parameter's
+/// range clamps it.
+glm::dvec3 weatherOverrideValue(const WeatherOverride& o, const glm::dvec3& keyed);
+
 /// The category of a target (above).
 WeatherCategory weatherCategory(const TrackTarget& target);
 /// "clouds", "fog", "wind", "haze", "light", "lightning", "other".

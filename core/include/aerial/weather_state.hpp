@@ -46,7 +46,7 @@ struct WeatherOverride {
 
 /// A named weather: the overrides that hold while it does.
 struct WeatherState {
-    /// 1..64 bytes of [A-Za-z0-9_-], unique in the preset; "none" is taken
+    /// 1..64 of A-Z a-z 0-9 _ - . (as object ids), unique in the preset; "none" is taken
     /// (the keyed values alone).
     std::string name;
     std::vector<WeatherOverride> overrides;

@@ -328,13 +328,17 @@ bool parseSunEvent(std::string_view name, SunEvent& event) {
     return false;
 }
 
-double sunEventHours(const Location& where, SunEvent event) {
-    const double noon = solarNoonHours(where);
-    if (event == SunEvent::Noon) return wrap(noon, 24.0);
+double sunEventCrossingHours(const Location& where, SunEvent event) {
+    if (event == SunEvent::Noon) return wrap(solarNoonHours(where), 24.0);
     const SunEventInfo& info = infoOf(event);
-    const double elevation = info.elevationDeg * kDegToRad;
-    const double t = crossingHours(where, elevation, info.rising);
+    return crossingHours(where, info.elevationDeg * kDegToRad, info.rising);
+}
+
+double sunEventHours(const Location& where, SunEvent event) {
+    const double t = sunEventCrossingHours(where, event);
     if (std::isfinite(t)) return t;
+    const double noon = solarNoonHours(where);
+    const double elevation = infoOf(event).elevationDeg * kDegToRad;
     // No crossing: where the sun comes closest to the elevation.
     const bool staysAbove = sunPosition(where, noon + 12.0).elevation > elevation;
     return wrap(staysAbove ? noon + 12.0 : noon, 24.0);

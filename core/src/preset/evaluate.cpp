@@ -90,8 +90,7 @@ struct WeatherBinding {
     std::size_t object = 0;  // index into volumes / emitters / cloud volumes
     std::size_t state = 0;   // index into Preset::weather
     int category = 0;        // WeatherCategory
-    WeatherOverrideMode mode = WeatherOverrideMode::Set;
-    glm::dvec3 value{0.0};
+    WeatherOverride override_;
 };
 
 /// Same field: the same accessor on the same object.
@@ -177,8 +176,7 @@ struct CompiledPreset::Impl {
                 if (!isFinite(o.value)) continue;
                 b.state = s;
                 b.category = int(weatherCategory(o.target));
-                b.mode = o.mode;
-                b.value = o.value;
+                b.override_ = o;
                 if (tableDependsOn(*desc)) useTable = false;
                 weather.push_back(b);
             }
@@ -251,9 +249,7 @@ void applyWeather(const std::vector<WeatherBinding>& bindings, const WeatherMix&
             if (b.state >= mix.weights.size()) continue;
             const double w = mix.weights[b.state][std::size_t(b.category)];
             if (!(w > 0.0)) continue;
-            glm::dvec3 target = b.value;
-            if (b.mode == WeatherOverrideMode::Add) target = keyed + b.value;
-            if (b.mode == WeatherOverrideMode::Scale) target = keyed * b.value;
+            glm::dvec3 target = weatherOverrideValue(b.override_, keyed);
             if (b.desc->type == ParamType::Scalar) target.y = target.z = 0.0;
             if (b.desc->type == ParamType::Vec2) target.z = 0.0;
             value += std::min(w, 1.0) * (target - keyed);
@@ -281,30 +277,8 @@ void CompiledPreset::evaluate(double timeHours, const WeatherMix& mix, PresetSta
 
     // 2. Tracks, written through their pre-bound accessors, clamped to range.
     for (const Binding& b : impl.bindings) {
-        void* object = nullptr;
-        switch (b.scope) {
-            case ParamScope::Global:
-                object = &state.environment;
-                break;
-            case ParamScope::Volume:
-                object = &state.volumes[b.object];
-                break;
-            case ParamScope::Emitter:
-                object = &state.emitters[b.object];
-                break;
-            case ParamScope::CloudVolume:
-                object = &state.cloudVolumes[b.object];
-                break;
-        }
-        const glm::dvec3 v = evaluateTrack(b.track, t);
-        const ParamDesc& d = *b.desc;
-        if (d.type == ParamType::Scalar)
-            *d.scalar(object) = std::clamp(v.x, d.minValue, d.maxValue);
-        else if (d.type == ParamType::Vec2)
-            *d.vec2(object) =
-                glm::clamp(glm::dvec2(v.x, v.y), glm::dvec2(d.minValue), glm::dvec2(d.maxValue));
-        else
-            *d.vec3(object) = glm::clamp(v, glm::dvec3(d.minValue), glm::dvec3(d.maxValue));
+        void* object = objectOf(state, b.scope, b.object);
+        writeField(*b.desc, object, evaluateTrack(b.track, t));
     }
     // 2b. The weather's overrides on top of the keys (weather.hpp).
     if (!mix.weights.empty()) applyWeather(impl.weather, mix, state);

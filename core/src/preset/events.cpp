@@ -8,31 +8,6 @@
 namespace aerial {
 namespace {
 
-constexpr double kDegrees = 180.0 / 3.14159265358979323846;
-
-/// The elevation [deg] each sun event is the crossing of (sun.cpp's table).
-double eventElevationDeg(SunEvent e) {
-    switch (e) {
-        case SunEvent::Sunrise:
-        case SunEvent::Sunset: return -0.833;
-        case SunEvent::CivilDawn:
-        case SunEvent::CivilDusk: return -6.0;
-        case SunEvent::NauticalDawn:
-        case SunEvent::NauticalDusk: return -12.0;
-        case SunEvent::Noon:
-        default: return NAN;
-    }
-}
-
-/// Whether the sun really stands at the event's elevation then (not the
-/// midnight or noon sunEventHours falls back to in a polar day or night).
-bool realCrossing(const Location& where, SunEvent e, double hours) {
-    const double target = eventElevationDeg(e);
-    if (std::isnan(target)) return true;  // noon always is
-    const CelestialBody sun = sunPosition(where, hours);
-    return std::abs(sun.elevation * kDegrees - target) < 0.25;  // geometric, as sun.cpp's table
-}
-
 /// Appends the time-of-day events in (from, to] of one day, 0 <= from <= to <= 24.
 void dayEvents(const CompiledPreset& compiled, const WeatherMix& mix, double from, double to,
                std::vector<Event>& events) {
@@ -40,8 +15,8 @@ void dayEvents(const CompiledPreset& compiled, const WeatherMix& mix, double fro
     const Preset& preset = compiled.preset();
     const Location& where = preset.environment.location;
     for (SunEvent e : kSunEvents) {
-        const double t = sunEventHours(where, e);
-        if (t > from && t <= to && realCrossing(where, e, t)) {
+        const double t = sunEventCrossingHours(where, e);  // NaN: no such event that day
+        if (t > from && t <= to) {
             Event ev;
             ev.kind = EventKind::Sun;
             ev.timeHours = t;
@@ -57,7 +32,11 @@ void dayEvents(const CompiledPreset& compiled, const WeatherMix& mix, double fro
         events.push_back(ev);
     }
     // Lightning: each emitter as keyed (and as the weather has it) at the
-    // middle of the range: its rate does not jump within a frame.
+    // middle of the range: its rate does not jump within a frame. A preset
+    // without lightning is not evaluated.
+    if (std::none_of(preset.emitters.begin(), preset.emitters.end(),
+                     [](const Emitter& e) { return e.kind == EmitterKind::Lightning; }))
+        return;
     PresetState state;
     compiled.evaluate(0.5 * (from + to), mix, state);
     std::vector<double> starts;

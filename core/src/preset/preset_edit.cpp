@@ -1,6 +1,6 @@
 // preset_edit.cpp — editing helpers on a Preset (aerial/preset.hpp):
 // finding a track, renaming and removing volumes, emitters and cloud volumes
-// together with the tracks that target them.
+// together with the tracks and weather overrides that target them.
 #include "preset_validate.hpp"
 
 #include <aerial/preset.hpp>
@@ -25,8 +25,8 @@ const Track* findTrack(const Preset& preset, const TrackTarget& target) {
 namespace {
 
 template <class Object>
-bool changeId(std::vector<Object>& objects, std::vector<Track>& tracks, ParamScope scope,
-              const std::string& oldId, const std::string& newId) {
+bool changeId(std::vector<Object>& objects, Preset& preset, ParamScope scope, const std::string& oldId,
+              const std::string& newId) {
     if (!detail::validId(newId)) return false;
     Object* found = nullptr;
     for (Object& o : objects) {
@@ -35,18 +35,24 @@ bool changeId(std::vector<Object>& objects, std::vector<Track>& tracks, ParamSco
     }
     if (!found) return false;
     found->id = newId;
-    for (Track& t : tracks)
+    for (Track& t : preset.tracks)
         if (t.target.scope == scope && t.target.objectId == oldId) t.target.objectId = newId;
+    for (WeatherState& state : preset.weather)
+        for (WeatherOverride& o : state.overrides)
+            if (o.target.scope == scope && o.target.objectId == oldId) o.target.objectId = newId;
     return true;
 }
 
 template <class Object>
-bool removeById(std::vector<Object>& objects, std::vector<Track>& tracks, ParamScope scope,
-                const std::string& id) {
+bool removeById(std::vector<Object>& objects, Preset& preset, ParamScope scope, const std::string& id) {
     const auto it = std::find_if(objects.begin(), objects.end(), [&](const Object& o) { return o.id == id; });
     if (it == objects.end()) return false;
     objects.erase(it);
-    std::erase_if(tracks, [&](const Track& t) { return t.target.scope == scope && t.target.objectId == id; });
+    std::erase_if(preset.tracks,
+                  [&](const Track& t) { return t.target.scope == scope && t.target.objectId == id; });
+    for (WeatherState& state : preset.weather)
+        std::erase_if(state.overrides,
+                      [&](const WeatherOverride& o) { return o.target.scope == scope && o.target.objectId == id; });
     return true;
 }
 
@@ -55,11 +61,11 @@ bool removeById(std::vector<Object>& objects, std::vector<Track>& tracks, ParamS
 bool changeObjectId(Preset& preset, ParamScope scope, const std::string& oldId, const std::string& newId) {
     switch (scope) {
         case ParamScope::Volume:
-            return changeId(preset.volumes, preset.tracks, scope, oldId, newId);
+            return changeId(preset.volumes, preset, scope, oldId, newId);
         case ParamScope::Emitter:
-            return changeId(preset.emitters, preset.tracks, scope, oldId, newId);
+            return changeId(preset.emitters, preset, scope, oldId, newId);
         case ParamScope::CloudVolume:
-            return changeId(preset.cloudVolumes, preset.tracks, scope, oldId, newId);
+            return changeId(preset.cloudVolumes, preset, scope, oldId, newId);
         case ParamScope::Global:
             return false;
     }
@@ -93,11 +99,11 @@ std::size_t resolveKeyAnchors(Preset& preset) {
 bool removeObject(Preset& preset, ParamScope scope, const std::string& id) {
     switch (scope) {
         case ParamScope::Volume:
-            return removeById(preset.volumes, preset.tracks, scope, id);
+            return removeById(preset.volumes, preset, scope, id);
         case ParamScope::Emitter:
-            return removeById(preset.emitters, preset.tracks, scope, id);
+            return removeById(preset.emitters, preset, scope, id);
         case ParamScope::CloudVolume:
-            return removeById(preset.cloudVolumes, preset.tracks, scope, id);
+            return removeById(preset.cloudVolumes, preset, scope, id);
         case ParamScope::Global:
             return false;
     }

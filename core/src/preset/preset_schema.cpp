@@ -296,7 +296,7 @@ std::string presetJsonSchema() {
     defs["weather_state"] = {
         {"type", "object"},
         {"properties",
-         {{"name", {{"type", "string"}, {"pattern", "^[A-Za-z0-9_-]{1,64}$"}, {"not", {{"const", "none"}}}}},
+         {{"name", {{"allOf", {idSchema(), {{"not", {{"const", "none"}}}}}}}},
           {"overrides", arraySchema("#/$defs/weather_override", limits::kMaxWeatherOverrides)}}},
         {"required", {"name", "overrides"}},
         {"additionalProperties", false}};

@@ -243,14 +243,11 @@ void checkWeather(const Preset& preset, Issues& issues) {
     for (std::size_t i = 0; i < preset.weather.size(); ++i) {
         const WeatherState& state = preset.weather[i];
         const std::string at = pointerJoin("/weather/states", i);
-        const bool nameOk = !state.name.empty() && state.name.size() <= limits::kMaxIdBytes &&
-                            std::all_of(state.name.begin(), state.name.end(), [](char c) {
-                                return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
-                            });
+        const bool nameOk = detail::validId(state.name);  // named as objects are
         if (!nameOk)
             issues.error(pointerJoin(at, "name"), "a weather state's name is 1 to " +
                                                       std::to_string(limits::kMaxIdBytes) +
-                                                      " letters, digits, _ or - (got " + quoteString(state.name) + ")");
+                                                      " of A-Z a-z 0-9 _ - . (got " + quoteString(state.name) + ")");
         else if (state.name == "none")
             issues.error(pointerJoin(at, "name"), "\"none\" is taken: it names the keyed values without weather");
         for (std::size_t j = 0; j < i; ++j)

@@ -54,6 +54,15 @@ double fractionOf(const WeatherChange& change, double nowSeconds) {
 
 }  // namespace
 
+glm::dvec3 weatherOverrideValue(const WeatherOverride& o, const glm::dvec3& keyed) {
+    switch (o.mode) {
+        case WeatherOverrideMode::Add: return keyed + o.value;
+        case WeatherOverrideMode::Scale: return keyed * o.value;
+        case WeatherOverrideMode::Set:
+        default: return o.value;
+    }
+}
+
 WeatherCategory weatherCategory(const TrackTarget& target) {
     switch (target.scope) {
         case ParamScope::Volume: return WeatherCategory::Fog;
