@@ -30,6 +30,12 @@
 //       layers, all threads, table rebuilt) over it.
 //   BM_SkyAmortisedRow
 //       continueSolve(1): one row of an amortised solve on the caller.
+//   BM_SkyTableLookup/sun:S
+//       aerial::skyRadiance (the table sampled through its coordinates,
+//       sky.hpp "Table coordinates") at 4096 random directions of the upper
+//       hemisphere, for a sun at S = 30 deg (plain rows and columns) and S =
+//       -0.3 deg written as -3 (rows crowded at the earth's shadow, columns
+//       warped around its cap: searched per lookup); time per lookup.
 //
 //   build/sky/bench/aerial_bench --benchmark_filter=Sky
 #include <aerial/sky.hpp>
@@ -211,6 +217,25 @@ void BM_SkyReferenceSolve(benchmark::State& state) {
     state.SetLabel("4 of 64 rows (260 directions), scaled x16 to the whole table");
 }
 BENCHMARK(BM_SkyReferenceSolve)->Unit(benchmark::kMillisecond)->Iterations(1)->UseRealTime();
+
+void BM_SkyTableLookup(benchmark::State& state) {
+    const double sun = state.range(0) >= 0 ? double(state.range(0)) : 0.1 * double(state.range(0));
+    aerial::SkySolver solver;
+    const aerial::AtmosphereParams air;
+    solver.solve(air, sunAt(sun));
+    std::vector<glm::dvec3> views(4096);
+    std::uint32_t seed = 12345;
+    auto next = [&] { return (seed = seed * 1664525u + 1013904223u) / 4294967296.0; };
+    for (glm::dvec3& v : views) {
+        const double z = next(), a = 2.0 * aerial::kPi * next(), r = std::sqrt(1.0 - z * z);
+        v = {r * std::sin(a), z, -r * std::cos(a)};
+    }
+    for (auto _ : state)
+        for (const glm::dvec3& v : views)
+            benchmark::DoNotOptimize(aerial::skyRadiance(solver.table(), air.mieAnisotropy, v, glm::dvec3(1.0)));
+    state.SetItemsProcessed(state.iterations() * std::int64_t(views.size()));
+}
+BENCHMARK(BM_SkyTableLookup)->ArgName("sun")->Arg(30)->Arg(-3)->Unit(benchmark::kMicrosecond);
 
 void BM_SkyAmortisedRow(benchmark::State& state) {
     aerial::SkySolverDesc desc;

@@ -45,7 +45,7 @@
 //   transmittance. tests/renderer/test_renderer_stars.cpp holds a CPU copy
 //   of this function and compares every pixel.
 //
-// Table mapping and lookup: common/sky_table.glsl.
+// The tables' coordinates and lookup: common/sky_table.glsl.
 #include "common/frame.glsl"
 
 #ifdef AERIAL_VERTEX_SHADER

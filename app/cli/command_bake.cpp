@@ -5,20 +5,20 @@
 // Layout of DIR:
 //   sky_<NNN>_<HHMM>_sun.exr, sky_<NNN>_<HHMM>_moon.exr
 //       one file per time step per light: the light's hemisphere sky table
-//       (sky.hpp), W x H pixels, half float, ZIP compressed (--compression),
-//       nine channels
-//         rayleigh.R rayleigh.G rayleigh.B   phase-less Rayleigh integral I_R
-//         mie.R mie.G mie.B                  phase-less Mie integral I_M
-//         multiple.R multiple.G multiple.B   isotropic higher orders I_ms [1/sr]
+//       (sky.hpp), W x H pixels, ZIP compressed (--compression), eleven
+//       channels
+//         rayleigh.R rayleigh.G rayleigh.B   phase-less Rayleigh integral I_R (half)
+//         mie.R mie.G mie.B                  phase-less Mie integral I_M (half)
+//         multiple.R multiple.G multiple.B   isotropic higher orders I_ms [1/sr] (half)
+//         elevation azimuth                  where the texel lies (float, rad:
+//                                            SkyTable::rowElevation, columnAzimuth)
 //       pixel (x, y) = table texel (column i = x, row j = y): the first line
 //       (y = 0) is the horizon, the last the zenith. Header attributes:
 //       aerialLight ("sun"/"moon"), aerialTimeHours, aerialLightAzimuthRad,
-//       aerialLightDirection (V3d), aerialMapping (the mapping in words) and
-//       the row mapping's parameters (aerialBandElevationRad, aerialBandShare,
-//       aerialShadowElevationRad, aerialShadowWidthRad, aerialShadowShare) and
-//       the column mapping's (aerialCapCurvature, aerialCapStrength),
-//       aerialMieAnisotropy, aerialLightIlluminance (V3d, above the
-//       atmosphere) and aerialRadiance (how to turn a texel into radiance).
+//       aerialLightDirection (V3d), aerialSampling (how to sample the table
+//       through its coordinates, in words), aerialMieAnisotropy,
+//       aerialLightIlluminance (V3d, above the atmosphere) and aerialRadiance
+//       (how to turn a texel into radiance).
 //   sky_<NNN>_<HHMM>_skyview.exr, sky_<NNN>_<HHMM>_farfog.exr
 //       the sky of both lights and the night sky as plain RGB radiance
 //       (channels R, G, B, 32-bit float) over the upper hemisphere, lines
@@ -40,11 +40,11 @@
 //       position, rotation and half extents), so that the bake carries the
 //       meshes the preset's "mesh" paths name outside it.
 //   manifest.json
-//       format (format_version 2; the changes in the README), preset, steps
-//       and table mapping, and for every step: the time, the full evaluated
-//       state (sun, moon, every parameter, volumes, emitters, cloud volumes:
-//       as `aerial eval --json`), per light its EXR file name, light
-//       direction and azimuth, row mapping, and horizon averages; the
+//       format (format_version 3; the changes in the README), preset, steps
+//       and how to sample a table, and for every step: the time, the full
+//       evaluated state (sun, moon, every parameter, volumes, emitters, cloud
+//       volumes: as `aerial eval --json`), per light its EXR file name, light
+//       direction and azimuth, and horizon averages; the
 //       sky-view and far fog files, the environment's irradiance as nine
 //       spherical-harmonic coefficients (sky_irradiance_sh9) and the global
 //       fog's light in the form of the manifest's fog formula ("fog");
@@ -53,23 +53,19 @@
 //       of the texels aerial::cloudNoise(seed) gives ("clouds"); the
 //       layout's file name ("layout").
 //
-// Radiance in a world direction v (unit): for each light,
-//   el = asin(max(v.y, 0)), j = (H - 1) v(el)   (v: the row mapping, rowMappingText;
-//                                                  (H - 1) sqrt(el / (pi/2)) above 1 deg)
-//   phi = (atan2(v.x, -v.z) - light_azimuth_rad) mod 2 pi,  i = W phi / (2 pi)
-//                                                 (columnMappingText: warped by cap_curvature)
-//   I_R, I_M, I_ms = bilinear(i, j), the azimuth wrapping;  mu = dot(v, light)
-//   L += E (3/(16 pi) (1 + mu^2) I_R + P_CS(mu, g) I_M + I_ms),
+// Radiance in a world direction v (unit): for each light, the table sampled
+// through its coordinates (kTableSampling; sampleSkyTable in aerial/sky.hpp),
+//   L += E (3/(16 pi) (1 + mu^2) I_R + P_CS(mu, g) I_M + I_ms),  mu = dot(v, light),
 // E = illuminance_space_rgb of that light, g = parameters.atmosphere.mie.
-// anisotropy. Far fog seen along v: the same with H = (1 - s) horizon_x +
-// s (row 0 at v's azimuth), s = |v.xz| = cos(elevation), for each of
-// rayleigh / mie / multiple (the sky behind the fog; horizonSkySample).
+// anisotropy. Far fog seen along v: the same with H = (1 - s) horizon_x + s
+// (row 0 at v's azimuth), s = |v.xz| = cos(elevation), for each of rayleigh
+// / mie / multiple (the sky behind the fog; horizonSkySample).
 //
 // Writing is atomic: every file is written to a hidden temporary beside
 // it, fsync'ed and renamed into place, and manifest.json is removed first and
 // written last, so a directory with a manifest always holds a complete bake.
-#include "cli_common.hpp"
 #include "bake_maps.hpp"
+#include "cli_common.hpp"
 #include "layout_gltf.hpp"
 
 #include <aerial/fog_mesh.hpp>
@@ -129,93 +125,32 @@ Json cloudsToJson(std::int64_t seed, bool cloudy) {
     }
     return clouds;
 }
-constexpr int kManifestFormatVersion = 2;
-constexpr int kChannelCount = 9;
+constexpr int kManifestFormatVersion = 3;
+constexpr int kChannelCount = 9;  // half; then the two float coordinates
 constexpr const char* kChannelNames[kChannelCount] = {"rayleigh.R", "rayleigh.G", "rayleigh.B",
                                                       "mie.R",      "mie.G",      "mie.B",
                                                       "multiple.R", "multiple.G", "multiple.B"};
+constexpr const char* kCoordinateNames[2] = {"elevation", "azimuth"};
 
-/// A mapping constant as the manifest's text writes it (%g).
-std::string constantText(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", value);
-    return text;
-}
-
-/// "k x" in words: "x" where k is 1.
-std::string timesText(double k, const char* x) { return k == 1.0 ? std::string(x) : constantText(k) + " " + x; }
-
-/// The row mapping in words, its constants from <aerial/sky.hpp>.
-std::string rowMappingText() {
-    const std::string boostStart = constantText(kSkyCapBoostStartDeg);
-    const std::string boostRange = constantText(kSkyCapBoostStartDeg - kSkyCapBoostFullDeg);
-    const std::string logScale = constantText(kSkyCapLogScale);
-    return "row j = EXR line y (y = 0 first) holds the elevation el_j [rad] above the horizon where v(el_j) "
-           "= "
-           "j / (H - 1), v(el) = (1 - a - b - d) sqrt(el / (pi/2)) + a atan(el / E) / atan(pi/2 / E) + "
-           "b (atan((el - c) / w) - atan(-c / w)) / (atan((pi/2 - c) / w) - atan(-c / w)) + "
-           "d/2 (1 - B(u)) below c, d/2 (1 + cbrt(u)) above, u = min(|el - c|, c) / c, B(u) = (1 - m) u^" +
-           constantText(kSkyCapBelowPower) + " + m ln(1 + u / s) / ln(1 + 1 / s), s = min(" + logScale +
-           ", " + constantText(kSkyCapLogScalePerKink) + " c), m = clamp((" + boostStart + " deg - c) / " +
-           boostRange +
-           " deg, 0, 1), with E = band_elevation_rad, a = band_share, c = shadow_elevation_rad, w = "
-           "shadow_width_rad, b = shadow_share, d = " +
-           constantText(kSkyCapRowShare) + " cap_strength (1 + " + timesText(kSkyCapRowBoost - 1.0, "m") +
-           ") where cap_curvature > 0, else 0 "
-           "(row_mapping per step and light; EXR header aerialBandElevationRad, aerialBandShare, "
-           "aerialShadowElevationRad, aerialShadowWidthRad, aerialShadowShare, aerialCapCurvature, "
-           "aerialCapStrength; a term is absent when its share is 0). A light above 1 deg has a = b = 0: "
-           "el_j = "
-           "pi/2 * (j / (H - 1))^2 (quadratic: more rows near "
-           "the horizon); a low or set light crowds rows towards the horizon and the earth's shadow. "
-           "Directions "
-           "below the horizon use row 0";
-}
-
-/// The column mapping in words, its constants from <aerial/sky.hpp>.
-std::string columnMappingText() {
-    const double x1 = 128.0 * kSkyCapInsideShare, x2 = x1 + 128.0 * kSkyCapOnsetShare;
-    const double x3 = x2 + 128.0 * kSkyCapNearShare;
-    const double y1 = 128.0 * kSkyCapInsideShareSet, y2 = y1 + 128.0 * kSkyCapOnsetShareSet;
-    const double y3 = y2 + 128.0 * kSkyCapNearShare;
-    // For a light just set (the boost fraction m of the row mapping) the
-    // shares and the band's knot blend linearly towards the *Set constants
-    // (skyCapShape).
-    const std::string blend =
-        ". For a light just set the " + constantText(kSkyCapOnsetGrowth) +
-        " in q2 and the knots x1, x2, x3 blend linearly with the row mapping's m towards " +
-        constantText(kSkyCapOnsetGrowthSet) + " and (" + constantText(y1) + ", " + constantText(y2) + ", " +
-        constantText(y3) +
-        ") W / 128, each rounded to the nearest whole column where that keeps it above the knot before it "
-        "(t then runs between the rounded knots)";
-    return "column i = EXR pixel x holds the azimuth relative to the light phi_i = 2 pi i / W rad, measured "
-           "from the light's azimuth towards east; the azimuth wraps (column W = column 0) and column i "
-           "equals "
-           "column W - i. Where cap_curvature k > 0 and cap_strength g > 0 (a light less than 1 deg below "
-           "the "
-           "horizon) the columns of the row at elevation el are instead piecewise linear in psi = |pi - phi| "
-           "(in ln(1 + (psi^2 - p1^2) / Y0), Y0 = (" +
-           constantText(kSkyCapBandScale) + " c)^2 + (" + timesText(kSkyCapBandOnsetScale, "P") +
-           ")^2, between p1 and p2) through the knots x = |i - W/2| = (0, " + constantText(x1) + ", " +
-           constantText(x2) + ", " + constantText(x3) +
-           ", 64) W / 128 at psi = (0, p1, p2, p3, pi), p_m = g q_m + (1 - g) 2 pi x_m / W with q1 = P, q2 = "
-           "sqrt((" +
-           constantText(kSkyCapOnsetGrowth) +
-           " P)^2 + D^2), q3 = F2, P = min(sqrt(max(c - el, 0) / k), F), "
-           "F = min(sqrt(c / k), pi/4), D = max(F / 2, min(" +
-           constantText(kSkyCapMinBandDeg) + " deg, " + constantText(kSkyCapBandPerKink) +
-           " c)), F2 = min(2 (F + max(F / 2, " + constantText(kSkyCapMinBandDeg) +
-           " deg)), 3 pi / 4) (the onset of the lit sky around the cap of the earth's shadow, el = c - k "
-           "psi^2, "
-           "on column W/2 -+ " +
-           constantText(x1) +
-           " W / 128 in every row), except from p2 to p3 and from p3 to pi: psi = p + (q - p) "
-           "(a t + (1 - a) t^2) from p to q, t = (x - " +
-           constantText(x2) + " W / 128) / (" + constantText(x3 - x2) + " W / 128), a = 1 - " +
-           constantText(1.0 - kSkyCapNearSlope) + " g from p2 to p3, t = (x - " + constantText(x3) +
-           " W / 128) / (" + constantText(64.0 - x3) + " W / 128), a = 1 - " +
-           constantText(1.0 - kSkyCapFarSlope) + " g from p3 to pi" + blend;
-}
+/// How to sample a table through the coordinates its texels carry (the
+/// manifest's table.sampling and every table file's aerialSampling).
+constexpr const char* kTableSampling =
+    "each texel carries where it lies: channel elevation [rad] (the same along a line, rising from 0 on "
+    "line y = 0 to pi/2 on the last) and channel azimuth [rad, 0..2 pi) from the light's azimuth towards "
+    "east (non-decreasing along a line from 0 at x = 0; columns i and W - i mirror each other). A "
+    "direction at elevation el = asin(max(v.y, 0)) (below the horizon: line 0) and azimuth phi = "
+    "(atan2(v.x, -v.z) - light_azimuth_rad) mod 2 pi: the lines j, j + 1 with elevation_j <= el < "
+    "elevation_j+1 (at or above the last line: j = j + 1 = the last line), x = (el - elevation_j) / "
+    "(elevation_j+1 - elevation_j), t = (x^3 - 2 x^2 + x) m_j + (3 x^2 - 2 x^3) + (x^3 - x^2) m_j+1 "
+    "(the monotone cubic through the lines), m_j = 2 (elevation_j+1 - elevation_j) / (elevation_j+1 - "
+    "elevation_j-1) and m_j+1 = 2 (elevation_j+1 - elevation_j) / (elevation_j+2 - elevation_j), 1 "
+    "where the line before or after does not exist; each column's azimuth between them b_i = (1 - t) "
+    "azimuth(i, j) + t azimuth(i, j + 1), wrapping (b_-1 = b_W-1 - 2 pi, b_W = 2 pi, b_W+1 = b_1 + 2 pi); "
+    "the columns i, i + 1 with b_i <= phi < b_i+1, y = (phi - b_i) / (b_i+1 - b_i), s = (y^3 - 2 y^2 + y) "
+    "m_i + (3 y^2 - 2 y^3) + (y^3 - y^2) m_i+1 with m_i = 2 (b_i+1 - b_i) / (b_i+1 - b_i-1) and m_i+1 = 2 "
+    "(b_i+1 - b_i) / (b_i+2 - b_i) (s = y between evenly spaced columns; 0 where b_i = b_i+1); the "
+    "table's value is the bilinear blend of texels (i, j), (i + 1, j), (i, j + 1), (i + 1, j + 1) with "
+    "weights s and t";
 
 struct BakeOptions {
     std::string preset;
@@ -236,6 +171,13 @@ Imf::Compression exrCompression(const std::string& name) {
     usageError("--compression: \"" + name + "\" is not one of none, zip, piz");
 }
 
+/// The table files' channels: the nine halves, then the two coordinates.
+Json tableChannels() {
+    std::vector<std::string> names(std::begin(kChannelNames), std::end(kChannelNames));
+    names.insert(names.end(), std::begin(kCoordinateNames), std::end(kCoordinateNames));
+    return Json(names);
+}
+
 Imath::half toHalf(float value) {
     // No NaN or Inf reaches a file; half's largest finite value is 65504.
     if (!std::isfinite(value) || value < 0.0f) return Imath::half(0.0f);
@@ -247,12 +189,15 @@ void writeSkyExr(const fs::path& path, const SkyTable& table, const char* light,
     const int w = table.azimuthCount, h = table.elevationCount;
     constexpr std::size_t n = kChannelCount;
     std::vector<Imath::half> pixels(std::size_t(w) * std::size_t(h) * n);
+    std::vector<float> elevation(std::size_t(w) * std::size_t(h)), azimuth(elevation.size());
     for (std::size_t texel = 0; texel < std::size_t(w) * std::size_t(h); ++texel) {
         for (int c = 0; c < 3; ++c) {
             pixels[texel * n + std::size_t(c)] = toHalf(table.rayleigh[texel * 3 + std::size_t(c)]);
             pixels[texel * n + 3 + std::size_t(c)] = toHalf(table.mie[texel * 3 + std::size_t(c)]);
             pixels[texel * n + 6 + std::size_t(c)] = toHalf(table.multiple[texel * 3 + std::size_t(c)]);
         }
+        elevation[texel] = float(table.rowElevation[texel / std::size_t(w)]);
+        azimuth[texel] = float(table.columnAzimuth[texel]);
     }
     // Encoded in memory, then written atomically (every byte through the
     // writer's fault-injection seam, aerial/detail/file_system.hpp).
@@ -262,21 +207,15 @@ void writeSkyExr(const fs::path& path, const SkyTable& table, const char* light,
             Imf::Header header(w, h);
             header.compression() = compression;
             for (const char* name : kChannelNames) header.channels().insert(name, Imf::Channel(Imf::HALF));
+            for (const char* name : kCoordinateNames)
+                header.channels().insert(name, Imf::Channel(Imf::FLOAT));
             header.insert("aerialLight", Imf::StringAttribute(light));
             header.insert("aerialTimeHours", Imf::DoubleAttribute(timeHours));
             header.insert("aerialLightAzimuthRad", Imf::DoubleAttribute(table.lightAzimuth));
             header.insert("aerialLightDirection",
                           Imf::V3dAttribute(Imath::V3d(table.lightDirection.x, table.lightDirection.y,
                                                        table.lightDirection.z)));
-            header.insert("aerialMapping",
-                          Imf::StringAttribute(rowMappingText() + "; " + columnMappingText()));
-            header.insert("aerialBandElevationRad", Imf::DoubleAttribute(table.bandElevation));
-            header.insert("aerialBandShare", Imf::DoubleAttribute(table.bandShare));
-            header.insert("aerialShadowElevationRad", Imf::DoubleAttribute(table.shadowElevation));
-            header.insert("aerialShadowWidthRad", Imf::DoubleAttribute(table.shadowWidth));
-            header.insert("aerialShadowShare", Imf::DoubleAttribute(table.shadowShare));
-            header.insert("aerialCapCurvature", Imf::DoubleAttribute(table.capCurvature));
-            header.insert("aerialCapStrength", Imf::DoubleAttribute(table.capStrength));
+            header.insert("aerialSampling", Imf::StringAttribute(kTableSampling));
             header.insert("aerialMieAnisotropy", Imf::DoubleAttribute(mieAnisotropy));
             header.insert(
                 "aerialLightIlluminance",
@@ -291,6 +230,11 @@ void writeSkyExr(const fs::path& path, const SkyTable& table, const char* light,
                 frame.insert(
                     kChannelNames[k],
                     Imf::Slice(Imf::HALF, reinterpret_cast<char*>(pixels.data() + k), xStride, yStride));
+            std::vector<float>* coordinates[2] = {&elevation, &azimuth};
+            for (int k = 0; k < 2; ++k)
+                frame.insert(kCoordinateNames[k],
+                             Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(coordinates[k]->data()),
+                                        sizeof(float), sizeof(float) * std::size_t(w)));
             Imf::OutputFile file(encoded, header);
             file.setFrameBuffer(frame);
             file.writePixels(h);
@@ -337,14 +281,6 @@ Json lightBakeToJson(const SkyTable& table, const std::string& file) {
     return {{"table_file", file},
             {"light_direction", toJson(table.lightDirection)},
             {"light_azimuth_rad", table.lightAzimuth},
-            {"row_mapping",
-             {{"band_elevation_rad", table.bandElevation},
-              {"band_share", table.bandShare},
-              {"shadow_elevation_rad", table.shadowElevation},
-              {"shadow_width_rad", table.shadowWidth},
-              {"shadow_share", table.shadowShare},
-              {"cap_curvature", table.capCurvature},
-              {"cap_strength", table.capStrength}}},
             {"horizon_rayleigh", toJson(table.horizonRayleigh)},
             {"horizon_mie", toJson(table.horizonMie)},
             {"horizon_multiple", toJson(table.horizonMultiple)}};
@@ -382,7 +318,8 @@ int runBake(const BakeOptions& options) {
     // Each weather state's own tables keep their atmosphere's cache warm.
     const std::vector<WeatherState>& weatherStates = compiled.preset().weather;
     std::vector<std::unique_ptr<SkyTables>> weatherTables;
-    for (std::size_t w = 0; w < weatherStates.size(); ++w) weatherTables.push_back(std::make_unique<SkyTables>(desc));
+    for (std::size_t w = 0; w < weatherStates.size(); ++w)
+        weatherTables.push_back(std::make_unique<SkyTables>(desc));
     PresetState weatherState;
     WeatherMix weatherMix;
     Json steps = Json::array();
@@ -431,7 +368,8 @@ int runBake(const BakeOptions& options) {
             wt.solve(weatherState);
             const StepMaps wm = bakeStepMaps(weatherState, wt.sun(), wt.moon(), skyViewWidth, skyViewHeight,
                                              farFogWidth, farFogHeight);
-            const std::string wSky = stem + "_skyview_" + name + ".exr", wFog = stem + "_farfog_" + name + ".exr";
+            const std::string wSky = stem + "_skyview_" + name + ".exr",
+                              wFog = stem + "_farfog_" + name + ".exr";
             writeRgbExr(dir / wSky, wm.skyView, t, kSkyViewMapping, compression);
             writeRgbExr(dir / wFog, wm.farFog, t, kFarFogMapping, compression);
             Json entry = {{"parameters", parametersToJson(weatherState.environment)},
@@ -475,16 +413,14 @@ int runBake(const BakeOptions& options) {
           {"file_pattern",
            "sky_<index>_<HHMM>_<light>.exr, light = sun | moon (HHMMSS when the step's time has seconds; "
            "per step and light: table_file)"},
-          {"pixel_type", "half"},
+          {"pixel_type", "half; the coordinates float"},
           {"compression", options.compression},
-          {"channels", Json(std::vector<std::string>(std::begin(kChannelNames), std::end(kChannelNames)))},
+          {"channels", tableChannels()},
           {"pixel", "pixel (x, y) = texel (column i = x, row j = y); y = 0 is the first line in the file"},
-          {"rows", rowMappingText()},
-          {"columns", columnMappingText()},
           {"world_azimuth",
            "from north (-Z) towards east (+X): direction = (cos(el) sin(az), sin(el), -cos(el) cos(az)); "
            "light_azimuth_rad per step and light"},
-          {"sampling", "bilinear in (i, j); i wraps, j clamps to [0, H - 1]"},
+          {"sampling", kTableSampling},
           {"radiance",
            "L(v) = sum over sun and moon of E * (P_R(mu) * rayleigh + P_M(mu, g) * mie + multiple), mu = "
            "dot(v, light_direction), E = illuminance_space_rgb, g = parameters.atmosphere.mie.anisotropy"},

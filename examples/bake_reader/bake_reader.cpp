@@ -104,8 +104,8 @@ public:
         std::ifstream in(dir_ + "/manifest.json");
         if (!in) throw std::runtime_error(dir_ + "/manifest.json: cannot open");
         manifest_ = nlohmann::json::parse(in);
-        if (manifest_.at("format") != "aerial-bake" || manifest_.at("format_version") != 2)
-            throw std::runtime_error(dir_ + "/manifest.json: format_version: this reader reads version 2");
+        if (manifest_.at("format") != "aerial-bake" || manifest_.at("format_version") != 3)
+            throw std::runtime_error(dir_ + "/manifest.json: format_version: this reader reads version 3");
     }
 
     const nlohmann::json& step(int index) const { return manifest_.at("steps").at(std::size_t(index)); }

@@ -143,8 +143,8 @@ FrameBlock makeFrameBlock(const Camera& camera, const CameraFrame& view, const P
     // glow, when the preset has one, joins it.
     const LightPollution& glow = env.lightPollution;
     const glm::dvec3 airglow = airglowIrradiance(state.zenithTransmittance) + lightPollutionIrradiance(glow);
-    fb.lightPollutionZenith =
-        toVec3(colourOf(lightPollutionRadiance(glow, glm::dvec3(0.0, 1.0, 0.0), env.location.northOffsetDeg)));
+    fb.lightPollutionZenith = toVec3(
+        colourOf(lightPollutionRadiance(glow, glm::dvec3(0.0, 1.0, 0.0), env.location.northOffsetDeg)));
     fb.lightPollutionCity = toVec3(lightPollutionCityDirection(glow, env.location.northOffsetDeg));
     fb.lightPollutionUplightDepth = static_cast<float>(kLightPollutionUplightDepth);
     fb.airglowZenithRadiance = toVec3(kAirglowZenithRadiance);
@@ -203,19 +203,8 @@ FrameBlock makeFrameBlock(const Camera& camera, const CameraFrame& view, const P
     fb.subtractActive = in.subtractActive ? 1 : 0;
     fb.moonTableColumns = in.moon.columns;
     fb.moonTableRows = in.moon.rows;
-    auto band = [](const FrameSkyInput& sky) {
-        return Vec3{float(sky.bandElevation), float(sky.bandShare), float(sky.shadowElevation)};
-    };
-    fb.sunTableBand = band(in.sun);
-    fb.moonTableBand = band(in.moon);
-    fb.sunTableShadowWidth = float(in.sun.shadowWidth);
-    fb.moonTableShadowWidth = float(in.moon.shadowWidth);
-    fb.sunTableShadowShare = float(in.sun.shadowShare);
-    fb.moonTableShadowShare = float(in.moon.shadowShare);
-    fb.sunTableCapCurvature = float(in.sun.capCurvature);
-    fb.sunTableCapStrength = float(in.sun.capStrength);
-    fb.moonTableCapCurvature = float(in.moon.capCurvature);
-    fb.moonTableCapStrength = float(in.moon.capStrength);
+    fb.sunTableWarped = in.sun.warped ? 1.0f : 0.0f;
+    fb.moonTableWarped = in.moon.warped ? 1.0f : 0.0f;
 
     // Stars: the celestial frame, the brightest star's illuminance, the
     // Gaussian radius of a star, sigma = 0.6 pixel (vertical angle / rows),

@@ -22,10 +22,7 @@ struct FrameSkyInput {
     double lightAzimuth = 0.0;        ///< [rad]
     int columns = 1;
     int rows = 1;
-    /// The table's row mapping (SkyTable::bandElevation .. shadowShare).
-    double bandElevation = 0.0, bandShare = 0.0;
-    double shadowElevation = 0.0, shadowWidth = 0.0, shadowShare = 0.0;
-    double capCurvature = 0.0, capStrength = 0.0;  ///< the column mapping (SkyTable)
+    bool warped = false;  ///< the table's columns are warped (skyTableColumnsWarped)
     glm::dvec3 horizonRayleigh{0.0};
     glm::dvec3 horizonMie{0.0};
     glm::dvec3 horizonMultiple{0.0};

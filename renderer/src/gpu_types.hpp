@@ -92,16 +92,13 @@ struct FrameBlock {
     /// bright limb (the terminator lies across it).
     Vec3 moonBrightLimb;
     float padBrightLimb = 0.0f;
-    /// The tables' row mappings (aerial/sky.hpp, SkyTable): bandElevation
-    /// [rad], bandShare, shadowElevation [rad]; shadowWidth [rad]; shadowShare.
-    Vec3 sunTableBand;
-    float sunTableShadowWidth = 0.0f;
-    Vec3 moonTableBand;
-    float moonTableShadowWidth = 0.0f;
-    float sunTableShadowShare = 0.0f;
-    float moonTableShadowShare = 0.0f;
-    float padTableShadow0 = 0.0f;
-    float padTableShadow1 = 0.0f;
+    /// 1 where a table's columns are warped (aerial/sky.hpp,
+    /// skyTableColumnsWarped: its texels' azimuths are searched), else 0
+    /// (uniform columns); the rows are always searched (sky_table.glsl).
+    float sunTableWarped = 0.0f;
+    float moonTableWarped = 0.0f;
+    float padTableWarped0 = 0.0f;
+    float padTableWarped1 = 0.0f;
     /// Ambient on an upward surface under the cloud deck (OvercastLight::
     /// groundIrradiance, with the airglow through the gaps); skyAmbient
     /// exactly without clouds.
@@ -112,11 +109,6 @@ struct FrameBlock {
     /// CloudOvercast::skyCover: the deck over the whole sky (cosine-weighted),
     /// what a mirror sees of it looking up (atmosphere.glsl, overcastCoverTowards).
     float overcastSkyCover = 0.0f;
-    /// The tables' column mappings (SkyTable::capCurvature [1/rad], capStrength).
-    float sunTableCapCurvature = 0.0f;
-    float sunTableCapStrength = 0.0f;
-    float moonTableCapCurvature = 0.0f;
-    float moonTableCapStrength = 0.0f;
     // The light that reaches the fog (aerial/fog_light.hpp): the sky's two
     // spherical-harmonic bands a_0, a_1 (fogSkyLight), the clouds' mean
     // visibility of the sun and moon (fogDirectVisibility) and D of the
@@ -190,28 +182,22 @@ static_assert(offsetof(FrameBlock, sunDiscDirection) == 512);
 static_assert(offsetof(FrameBlock, moonLitFraction) == 524);
 static_assert(offsetof(FrameBlock, moonDiscDirection) == 528);
 static_assert(offsetof(FrameBlock, moonBrightLimb) == 544);
-static_assert(offsetof(FrameBlock, sunTableBand) == 560);
-static_assert(offsetof(FrameBlock, sunTableShadowWidth) == 572);
-static_assert(offsetof(FrameBlock, moonTableBand) == 576);
-static_assert(offsetof(FrameBlock, moonTableShadowWidth) == 588);
-static_assert(offsetof(FrameBlock, sunTableShadowShare) == 592);
-static_assert(offsetof(FrameBlock, moonTableShadowShare) == 596);
+static_assert(offsetof(FrameBlock, sunTableWarped) == 560);
+static_assert(offsetof(FrameBlock, moonTableWarped) == 564);
 static_assert(offsetof(FrameBlock, overcastCover) == 348);
-static_assert(offsetof(FrameBlock, groundAmbient) == 608);
-static_assert(offsetof(FrameBlock, overcastRadiance) == 624);
-static_assert(offsetof(FrameBlock, overcastSkyCover) == 636);
-static_assert(offsetof(FrameBlock, sunTableCapCurvature) == 640);
-static_assert(offsetof(FrameBlock, moonTableCapStrength) == 652);
-static_assert(offsetof(FrameBlock, fogSkyL0) == 656);
-static_assert(offsetof(FrameBlock, fogHorizonDistance) == 668);
-static_assert(offsetof(FrameBlock, fogSkyL1x) == 672);
-static_assert(offsetof(FrameBlock, fogDirectVisibility) == 684);
-static_assert(offsetof(FrameBlock, fogSkyL1y) == 688);
-static_assert(offsetof(FrameBlock, fogSkyL1z) == 704);
-static_assert(offsetof(FrameBlock, airglowZenithRadiance) == 720);
-static_assert(offsetof(FrameBlock, lightPollutionZenith) == 736);
-static_assert(offsetof(FrameBlock, lightPollutionCity) == 752);
-static_assert(sizeof(FrameBlock) == 768);
+static_assert(offsetof(FrameBlock, groundAmbient) == 576);
+static_assert(offsetof(FrameBlock, overcastRadiance) == 592);
+static_assert(offsetof(FrameBlock, overcastSkyCover) == 604);
+static_assert(offsetof(FrameBlock, fogSkyL0) == 608);
+static_assert(offsetof(FrameBlock, fogHorizonDistance) == 620);
+static_assert(offsetof(FrameBlock, fogSkyL1x) == 624);
+static_assert(offsetof(FrameBlock, fogDirectVisibility) == 636);
+static_assert(offsetof(FrameBlock, fogSkyL1y) == 640);
+static_assert(offsetof(FrameBlock, fogSkyL1z) == 656);
+static_assert(offsetof(FrameBlock, airglowZenithRadiance) == 672);
+static_assert(offsetof(FrameBlock, lightPollutionZenith) == 688);
+static_assert(offsetof(FrameBlock, lightPollutionCity) == 704);
+static_assert(sizeof(FrameBlock) == 720);
 
 /// shaders/common/volume.glsl, VolumeBlock (binding 1): one fog volume.
 struct VolumeBlock {

@@ -274,13 +274,7 @@ void Renderer::Impl::render(const Camera& camera, const PresetState& state, cons
         in.lightAzimuth = sky.lightAzimuth;
         in.columns = sky.columns;
         in.rows = sky.rows;
-        in.bandElevation = sky.bandElevation;
-        in.bandShare = sky.bandShare;
-        in.shadowElevation = sky.shadowElevation;
-        in.shadowWidth = sky.shadowWidth;
-        in.shadowShare = sky.shadowShare;
-        in.capCurvature = sky.capCurvature;
-        in.capStrength = sky.capStrength;
+        in.warped = sky.warped;
         in.horizonRayleigh = sky.horizonRayleigh;
         in.horizonMie = sky.horizonMie;
         in.horizonMultiple = sky.horizonMultiple;

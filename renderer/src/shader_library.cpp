@@ -25,50 +25,6 @@ std::string join(std::initializer_list<std::string_view> pieces) {
     return out;
 }
 
-/// A GLSL float literal of `value` (round trip to float, always with a
-/// decimal point or an exponent).
-std::string floatLiteral(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.9g", value);
-    std::string out(text);
-    if (out.find_first_of(".eEn") == std::string::npos) out.append(".0");
-    return out;
-}
-
-/// The text of kCoreConstantsPath: the constants the GLSL shares with the
-/// C++ of aerial_core, written from the C++ (no copy to keep in step).
-std::string coreConstantsGlsl() {
-    const struct {
-        const char* name;
-        double value;
-    } constants[] = {
-        {"kSkyCapInsideShare", kSkyCapInsideShare},
-        {"kSkyCapOnsetShare", kSkyCapOnsetShare},
-        {"kSkyCapNearShare", kSkyCapNearShare},
-        {"kSkyCapMinBand", kSkyCapMinBandDeg * kPi / 180.0},  // [rad]
-        {"kSkyCapOnsetGrowth", kSkyCapOnsetGrowth},
-        {"kSkyCapBandPerKink", kSkyCapBandPerKink},
-        {"kSkyCapBandScale", kSkyCapBandScale},
-        {"kSkyCapBandOnsetScale", kSkyCapBandOnsetScale},
-        {"kSkyCapFarSlope", kSkyCapFarSlope},
-        {"kSkyCapNearSlope", kSkyCapNearSlope},
-        {"kSkyCapRowShare", kSkyCapRowShare},
-        {"kSkyCapBelowPower", kSkyCapBelowPower},
-        {"kSkyCapLogScale", kSkyCapLogScale},
-        {"kSkyCapLogScalePerKink", kSkyCapLogScalePerKink},
-        {"kSkyCapInsideShareSet", kSkyCapInsideShareSet},
-        {"kSkyCapOnsetShareSet", kSkyCapOnsetShareSet},
-        {"kSkyCapOnsetGrowthSet", kSkyCapOnsetGrowthSet},
-        {"kSkyCapRowBoost", kSkyCapRowBoost},
-        {"kSkyCapBoostStart", kSkyCapBoostStartDeg * kPi / 180.0},  // [rad]
-        {"kSkyCapBoostFull", kSkyCapBoostFullDeg * kPi / 180.0},    // [rad]
-    };
-    std::string out = "// Generated from aerial_core's constants (shader_library.cpp, coreConstantsGlsl).\n";
-    for (const auto& c : constants)
-        out.append(join({"const float ", c.name, " = ", floatLiteral(c.value), ";\n"}));
-    return out;
-}
-
 bool resolveInto(const std::string& path, const ShaderReader& reader, std::string& out,
                  std::vector<std::string>& files, std::vector<std::string>& included, int depth,
                  std::string& error) {
@@ -77,11 +33,7 @@ bool resolveInto(const std::string& path, const ShaderReader& reader, std::strin
         return false;
     }
     std::string text;
-    if (path == kCoreConstantsPath) {
-        text = coreConstantsGlsl();
-    } else if (!reader(path, text, error)) {
-        return false;
-    }
+    if (!reader(path, text, error)) return false;
     const int index = static_cast<int>(files.size());
     files.push_back(path);
     included.push_back(path);

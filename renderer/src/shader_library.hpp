@@ -21,10 +21,6 @@ using ShaderReader = std::function<bool(const std::string& path, std::string& te
 
 ShaderReader embeddedShaderReader();
 
-/// The include path of the constants the GLSL shares with aerial_core's C++
-/// (the sky table's column and row mapping, kSkyCap*): written from the C++
-/// by the include resolver, whatever the reader (not a file in shaders/).
-inline constexpr const char* kCoreConstantsPath = "generated/core_constants.glsl";
 ShaderReader directoryShaderReader(const std::string& directory);
 
 /// Expands #include lines; false with `error` on a missing file or an

@@ -1,5 +1,5 @@
-// sky_textures.cpp — uploading the solver's tables (mapping in
-// <aerial/sky.hpp>) and integrating them into an ambient irradiance.
+// sky_textures.cpp — uploading the solver's tables with their coordinates
+// (<aerial/sky.hpp>, "Table coordinates") as textures.
 #include "sky_textures.hpp"
 
 #include <aerial/atmosphere.hpp>
@@ -37,7 +37,9 @@ void SkyTextures::upload(const SkyTable& table) {
     const std::size_t texels = table.azimuthCount > 0 && table.elevationCount > 0
                                    ? static_cast<std::size_t>(table.azimuthCount) * table.elevationCount
                                    : 0;
-    valid = texels > 0 && table.rayleigh.size() >= texels * 3 && table.mie.size() >= texels * 3;
+    valid = texels > 0 && table.rayleigh.size() >= texels * 3 && table.mie.size() >= texels * 3 &&
+            table.rowElevation.size() == std::size_t(table.elevationCount) &&
+            table.columnAzimuth.size() == texels;
     columns = valid ? table.azimuthCount : 1;
     rows = valid ? table.elevationCount : 1;
     std::vector<float> r(static_cast<std::size_t>(columns) * rows * 4, 0.0f);
@@ -51,19 +53,17 @@ void SkyTextures::upload(const SkyTable& table) {
                 m[i * 4 + c] = table.mie[i * 3 + c];
                 if (hasMultiple) x[i * 4 + c] = table.multiple[i * 3 + c];
             }
+            // Where the texel lies (the difference from pi in double: exact
+            // near the anti-light point, where a light just set needs it).
+            r[i * 4 + 3] = static_cast<float>(table.columnAzimuth[i] - kPi);
+            m[i * 4 + 3] = static_cast<float>(table.rowElevation[i / std::size_t(columns)]);
         }
     }
     rayleigh = makeTexture(columns, rows, r);
     mie = makeTexture(columns, rows, m);
     multiple = makeTexture(columns, rows, x);
     lightAzimuth = valid ? table.lightAzimuth : 0.0;
-    bandElevation = valid ? table.bandElevation : 0.0;
-    bandShare = valid ? table.bandShare : 0.0;
-    shadowElevation = valid ? table.shadowElevation : 0.0;
-    shadowWidth = valid ? table.shadowWidth : 0.0;
-    shadowShare = valid ? table.shadowShare : 0.0;
-    capCurvature = valid ? table.capCurvature : 0.0;
-    capStrength = valid ? table.capStrength : 0.0;
+    warped = valid && skyTableColumnsWarped(table);
     lightDirection = table.lightDirection;
     horizonRayleigh = valid ? table.horizonRayleigh : glm::dvec3(0.0);
     horizonMie = valid ? table.horizonMie : glm::dvec3(0.0);

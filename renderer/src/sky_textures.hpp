@@ -9,8 +9,12 @@
 
 namespace aerial::renderer::detail {
 
-/// I_R, I_M and I_ms of one table as RGBA32F textures (alpha 0), GL_LINEAR,
-/// GL_REPEAT on s (the azimuth wraps), GL_CLAMP_TO_EDGE on t.
+/// I_R, I_M and I_ms of one table as RGBA32F textures, GL_LINEAR, GL_REPEAT
+/// on s (the azimuth wraps), GL_CLAMP_TO_EDGE on t. The alphas carry the
+/// table's coordinates (aerial/sky.hpp, "Table coordinates"; read by
+/// common/sky_table.glsl): the Mie texture's the row's elevation [rad], the
+/// Rayleigh texture's the texel's azimuth from the point opposite the light,
+/// phi - pi [rad, -pi..pi); the multiple's alpha is 0.
 struct SkyTextures {
     GLuint rayleigh = 0;
     GLuint mie = 0;
@@ -18,15 +22,12 @@ struct SkyTextures {
     int columns = 1;
     int rows = 1;
     double lightAzimuth = 0.0;
-    /// The table's row mapping (SkyTable::bandElevation .. shadowShare; 0: quadratic).
-    double bandElevation = 0.0, bandShare = 0.0;
-    double shadowElevation = 0.0, shadowWidth = 0.0, shadowShare = 0.0;
-    double capCurvature = 0.0, capStrength = 0.0;  ///< the column mapping (SkyTable)
+    bool warped = false;  ///< the columns are warped (skyTableColumnsWarped): searched per row
     glm::dvec3 lightDirection{0.0, 1.0, 0.0};
     glm::dvec3 horizonRayleigh{0.0};
     glm::dvec3 horizonMie{0.0};
     glm::dvec3 horizonMultiple{0.0};
-    bool valid = false;  ///< false: the table was empty or malformed (black)
+    bool valid = false;  ///< false: the table was empty, malformed or without coordinates (black)
 
     ~SkyTextures();
     /// Uploads a table (a malformed one uploads one black texel).

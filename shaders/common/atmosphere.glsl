@@ -87,18 +87,19 @@ float exponentialOpticalDepth(float b, float c, float height, float rise, float 
 /// H = (1 - s) average + s row0(azimuth). Row 0 is the texel row's centre,
 /// so only the columns are filtered, as in sampleSkyTable.
 void horizonSky(sampler2D rayleighTable, sampler2D mieTable, sampler2D multipleTable, vec3 v, float azimuth,
-                float lightAzimuth, vec2 size, vec3 cap, vec3 meanRayleigh, vec3 meanMie, vec3 meanMultiple,
+                float lightAzimuth, vec2 size, bool warped, vec3 meanRayleigh, vec3 meanMie, vec3 meanMultiple,
                 out vec3 rayleigh, out vec3 mie, out vec3 multiple) {
     rayleigh = meanRayleigh;
     mie = meanMie;
     multiple = meanMultiple;
     float s = min(length(v.xz), 1.0);
     if (!(s > 0.0) || !(size.x >= 1.0)) return;
-    // Row 0's column mapping: cap = (k, g, c) (skyTableColumnAt).
-    vec2 texel = skyTableTexelAt(vec2(0.0, azimuth), lightAzimuth, size, vec3(0.0, 0.0, cap.z), 0.0, 0.0, cap.xy);
-    rayleigh = mix(meanRayleigh, sampleTable(rayleighTable, texel, size), s);
-    mie = mix(meanMie, sampleTable(mieTable, texel, size), s);
-    multiple = mix(meanMultiple, sampleTable(multipleTable, texel, size), s);
+    float column =
+        skyTableColumnAt(rayleighTable, 0, 0, 0.0, skyTableAntiLightAzimuth(azimuth, lightAzimuth), int(size.x), warped);
+    vec2 at = skyTableCoordinate(column, 0.0, size);
+    rayleigh = mix(meanRayleigh, texture(rayleighTable, at).rgb, s);
+    mie = mix(meanMie, texture(mieTable, at).rgb, s);
+    multiple = mix(meanMultiple, texture(multipleTable, at).rgb, s);
 }
 
 /// Both lights' horizons behind direction v (the azimuth found once; a light
@@ -116,13 +117,13 @@ HorizonSkies horizonSkies(vec3 v) {
     if (any(greaterThan(frame.sunIlluminanceSpace, vec3(0.0))))
         horizonSky(uSunRayleigh, uSunMie, uSunMultiple, v, azimuth, frame.sunTableAzimuth,
                    vec2(frame.sunTableColumns, frame.sunTableRows),
-                   vec3(frame.sunTableCapCurvature, frame.sunTableCapStrength, frame.sunTableBand.z),
+                   frame.sunTableWarped != 0.0,
                    frame.sunHorizonRayleigh, frame.sunHorizonMie, frame.sunHorizonMultiple, h.sunRayleigh, h.sunMie,
                    h.sunMultiple);
     if (any(greaterThan(frame.moonIlluminanceSpace, vec3(0.0))))
         horizonSky(uMoonRayleigh, uMoonMie, uMoonMultiple, v, azimuth, frame.moonTableAzimuth,
                    vec2(frame.moonTableColumns, frame.moonTableRows),
-                   vec3(frame.moonTableCapCurvature, frame.moonTableCapStrength, frame.moonTableBand.z),
+                   frame.moonTableWarped != 0.0,
                    frame.moonHorizonRayleigh, frame.moonHorizonMie, frame.moonHorizonMultiple, h.moonRayleigh,
                    h.moonMie, h.moonMultiple);
     return h;

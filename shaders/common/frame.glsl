@@ -42,11 +42,8 @@
 //                       The fog passes only interpolate between the target and
 //                       capped colours, so they stay below the cap too.
 //   sunTableColumns, sunTableRows, moonTableColumns, moonTableRows  table sizes
-//   <light>TableBand, <light>TableShadowWidth, <light>TableShadowShare,
-//   <light>TableCapCurvature, <light>TableCapStrength  the tables' mappings
-//                       the table's row mapping (aerial/sky.hpp, SkyTable):
-//                       band = (bandElevation [rad], bandShare,
-//                       shadowElevation [rad]), shadowWidth [rad], shadowShare
+//   sunTableWarped, moonTableWarped  1 where the table's columns are warped
+//                       (their azimuths are searched, common/sky_table.glsl)
 //   emitterCount        emitters in the EmitterBlock (common/emitters.glsl)
 //   subtractActive      1 when subtract volumes cut the fog this frame: the
 //                       per-pixel intervals of common/subtract.glsl are valid
@@ -144,22 +141,14 @@ layout(std140, binding = 0) uniform FrameBlock {
     float padMoonDisc;
     vec3 moonBrightLimb;
     float padBrightLimb;
-    vec3 sunTableBand;
-    float sunTableShadowWidth;
-    vec3 moonTableBand;
-    float moonTableShadowWidth;
-    float sunTableShadowShare;
-    float moonTableShadowShare;
-    float padTableShadow0;
-    float padTableShadow1;
+    float sunTableWarped;
+    float moonTableWarped;
+    float padTableWarped0;
+    float padTableWarped1;
     vec3 groundAmbient;
     float padGroundAmbient;
     vec3 overcastRadiance;
     float overcastSkyCover;
-    float sunTableCapCurvature;
-    float sunTableCapStrength;
-    float moonTableCapCurvature;
-    float moonTableCapStrength;
     vec3 fogSkyL0;
     float fogHorizonDistance;
     vec3 fogSkyL1x;

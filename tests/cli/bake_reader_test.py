@@ -75,7 +75,7 @@ class BakeReader(unittest.TestCase):
 
     def test_the_manifest_is_format_2(self):
         for name, (_, manifest) in self.bakes.items():
-            self.assertEqual(manifest["format_version"], 2, name)
+            self.assertEqual(manifest["format_version"], 3, name)
             step = manifest["steps"][0]
             for key in ("sky_view_file", "far_fog_file", "sky_irradiance_sh9", "fog"):
                 self.assertIn(key, step, name)

@@ -111,22 +111,25 @@ def parse_exr_header(data, path):
 
 
 def read_uncompressed_exr(path):
-    """Pixels of a single-part, uncompressed, HALF scanline file: {channel: rows of values}."""
+    """Pixels of a single-part, uncompressed, HALF or FLOAT scanline file: {channel: rows of values}."""
     with open(path, "rb") as f:
         data = f.read()
     _, attributes, pos = parse_exr_header(data, path)
     if attributes["compression"][1] != b"\0":
         raise ValueError(path + ": compressed")
-    channels = list(read_chlist(attributes["channels"][1]))  # stored in this (sorted) order
+    channels = read_chlist(attributes["channels"][1])  # stored in this (sorted) order
     x0, y0, x1, y1 = struct.unpack("<4i", attributes["dataWindow"][1])
     width, height = x1 - x0 + 1, y1 - y0 + 1
     offsets = struct.unpack("<%dQ" % height, data[pos:pos + 8 * height])
     pixels = {c: [None] * height for c in channels}
+    formats = {1: "e", 2: "f"}  # HALF, FLOAT
     for offset in offsets:
         y, size = struct.unpack("<2i", data[offset:offset + 8])
-        line = struct.unpack("<%de" % (width * len(channels)), data[offset + 8:offset + 8 + size])
-        for k, c in enumerate(channels):
-            pixels[c][y - y0] = line[k * width:(k + 1) * width]
+        at = offset + 8
+        for c, pixel_type in channels.items():
+            fmt = "<%d%s" % (width, formats[pixel_type])
+            pixels[c][y - y0] = struct.unpack(fmt, data[at:at + struct.calcsize(fmt)])
+            at += struct.calcsize(fmt)
     return width, height, pixels
 
 
@@ -620,7 +623,7 @@ class BakeSkyView(unittest.TestCase):
             cls.manifest = json.load(f)
 
     def test_manifest_names_the_files_and_the_mapping(self):
-        self.assertEqual(self.manifest["format_version"], 2)
+        self.assertEqual(self.manifest["format_version"], 3)
         self.assertEqual(self.manifest["sky_view"]["channels"], ["R", "G", "B"])
         self.assertIn("line y = 0 lies exactly on the horizon", self.manifest["sky_view"]["mapping"])
         self.assertEqual((self.manifest["sky_view"]["width"], self.manifest["sky_view"]["height"]), (64, 32))
@@ -833,7 +836,7 @@ class Clouds(unittest.TestCase):
 
 class Bake(unittest.TestCase):
     CHANNELS = {"rayleigh.R", "rayleigh.G", "rayleigh.B", "mie.R", "mie.G", "mie.B", "multiple.R", "multiple.G",
-                "multiple.B"}
+                "multiple.B", "elevation", "azimuth"}
 
     def test_bake_writes_exr_tables_and_a_manifest(self):
         out_dir = os.path.join(WORK, "bake_hazy_sunset")
@@ -855,7 +858,7 @@ class Bake(unittest.TestCase):
         table = manifest["table"]
         self.assertEqual((table["azimuth_count"], table["elevation_count"]), (128, 64))
         self.assertEqual(set(table["channels"]), self.CHANNELS)
-        self.assertIn("pi/2 * (j / (H - 1))^2", table["rows"])
+        self.assertIn("elevation_j <= el < elevation_j+1", table["sampling"])
         self.assertEqual([s["time_h"] for s in manifest["steps"]], [0.0, 6.0, 12.0, 18.0])
 
         referenced = set()
@@ -869,7 +872,9 @@ class Bake(unittest.TestCase):
                 self.assertEqual(kind, "chlist")
                 channels = read_chlist(value)
                 self.assertEqual(set(channels), self.CHANNELS)
-                self.assertEqual(set(channels.values()), {1}, "HALF pixels")
+                self.assertEqual({v for c, v in channels.items() if c not in ("elevation", "azimuth")}, {1},
+                                 "HALF pixels")
+                self.assertEqual((channels["elevation"], channels["azimuth"]), (2, 2), "FLOAT coordinates")
                 kind, value = attributes["dataWindow"]
                 self.assertEqual(kind, "box2i")
                 x0, y0, x1, y1 = struct.unpack("<4i", value)
@@ -901,32 +906,48 @@ class Bake(unittest.TestCase):
         with open(os.path.join(out_dir, "manifest.json")) as f:
             self.assertEqual(json.load(f)["step_count"], 2)
 
-    def test_pixels_follow_the_documented_table_mapping(self):
+    def test_pixels_lie_where_their_coordinates_say(self):
         # Texel (i, j) of a baked file holds the table value in the direction
-        # the manifest's mapping gives; `aerial sky` samples the same table.
+        # its own coordinate channels give (elevation, azimuth from the
+        # light); `aerial sky` samples the same table. At 06:00 the sun is low
+        # (the sky varies strongly with azimuth, the rows crowd at the horizon)
+        # and at 19:45 it has just set (the columns crowd around the earth's
+        # shadow opposite it).
         out_dir = os.path.join(WORK, "bake_pixels")
-        code, _, err = run("bake", preset("clear_summer_day"), "--out", out_dir, "--step", "6h", "--size",
-                           "16x8", "--compression", "none", "--quiet")
+        code, _, err = run("bake", preset("clear_summer_day"), "--out", out_dir, "--step", "0.25h", "--size",
+                           "16x8", "--sky-view-size", "8x4", "--far-fog-size", "8x4", "--compression", "none",
+                           "--quiet")
         self.assertEqual(code, 0, err)
         with open(os.path.join(out_dir, "manifest.json")) as f:
             manifest = json.load(f)
-        step = manifest["steps"][1]  # a low morning sun: the sky varies strongly with azimuth
-        self.assertEqual(step["time"], "06:00")
-        width, height, pixels = read_uncompressed_exr(os.path.join(out_dir, step["sun"]["table_file"]))
-        self.assertEqual((width, height), (16, 8))
-        light_azimuth = step["sun"]["light_azimuth_rad"]
-        for i, j in ((0, 0), (3, 2), (8, 5), (13, 6), (5, 1)):
-            with self.subTest(texel=(i, j)):
-                el = math.pi / 2 * (j / (height - 1)) ** 2
-                az = light_azimuth + 2 * math.pi * i / width
-                v = (math.cos(el) * math.sin(az), math.sin(el), -math.cos(el) * math.cos(az))
-                sky = run_json(self, "sky", preset("clear_summer_day"), "--time", "06:00", "--size", "16x8",
-                               "--dir=%.17g,%.17g,%.17g" % v)
-                for layer in ("rayleigh", "mie"):
-                    for c, name in enumerate("RGB"):
-                        baked = pixels[layer + "." + name][j][i]
-                        table = sky["table"]["sun"][layer][c]
-                        self.assertAlmostEqual(baked, table, delta=1e-3 * abs(table) + 1e-7)
+        steps = {s["time"]: s for s in manifest["steps"]}
+        for time, texels in (("06:00", ((0, 0), (3, 2), (8, 5), (13, 6), (5, 1))),
+                             ("19:45", ((8, 0), (7, 1), (9, 2), (6, 3), (12, 1)))):
+            step = steps[time]
+            width, height, pixels = read_uncompressed_exr(os.path.join(out_dir, step["sun"]["table_file"]))
+            self.assertEqual((width, height), (16, 8))
+            light_azimuth = step["sun"]["light_azimuth_rad"]
+            # Rows rise from the horizon to the zenith; azimuths rise along a row.
+            rows = [pixels["elevation"][j][0] for j in range(height)]
+            self.assertEqual(rows[0], 0.0)
+            self.assertAlmostEqual(rows[-1], math.pi / 2, delta=1e-6)
+            self.assertEqual(rows, sorted(rows), time)
+            for j in range(height):
+                self.assertEqual(list(pixels["azimuth"][j]), sorted(pixels["azimuth"][j]), (time, j))
+            for i, j in texels:
+                with self.subTest(time=time, texel=(i, j)):
+                    el = pixels["elevation"][j][i]
+                    az = light_azimuth + pixels["azimuth"][j][i]
+                    v = (math.cos(el) * math.sin(az), math.sin(el), -math.cos(el) * math.cos(az))
+                    sky = run_json(self, "sky", preset("clear_summer_day"), "--time", time, "--size", "16x8",
+                                   "--dir=%.17g,%.17g,%.17g" % v)
+                    for layer in ("rayleigh", "mie"):
+                        for c, name in enumerate("RGB"):
+                            baked = pixels[layer + "." + name][j][i]
+                            # A reddened light just set is out of Rec.709's gamut (a
+                            # little below 0 in blue): the file keeps no negative value.
+                            table = max(sky["table"]["sun"][layer][c], 0.0)
+                            self.assertAlmostEqual(baked, table, delta=2e-3 * abs(table) + 1e-7)
 
     def test_plain_progress_lines_when_not_a_terminal(self):
         out_dir = os.path.join(WORK, "bake_progress")

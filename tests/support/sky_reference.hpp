@@ -36,17 +36,16 @@ glm::dvec3 opticalDepthToTop(const AtmosphereParams& air, double height, double 
 /// Azimuth [rad] of a direction, from north (-Z) towards east (+X).
 double azimuthOf(const glm::dvec3& direction);
 
-/// Elevation [rad] of row j of a table, per the row mapping in
-/// <aerial/sky.hpp> with the table's parameters (re-implemented here, and
-/// inverted by bisection).
+/// Elevation [rad] of row j of a table: its coordinates
+/// (SkyTable::rowElevation, aerial/sky.hpp "Table coordinates").
 double texelElevation(int j, const SkyTable& table);
 
-/// Azimuth from the light [rad] of column i in the row at `elevation` [rad],
-/// per the column mapping in <aerial/sky.hpp> (re-implemented here).
-double texelAzimuth(int i, double elevation, const SkyTable& table);
+/// Azimuth from the light [rad] of texel (i, j): the table's coordinates
+/// (SkyTable::columnAzimuth).
+double texelAzimuth(int i, int j, const SkyTable& table);
 
-/// World direction of texel (i, j) of a table (its size, light azimuth and
-/// row and column mappings), per the mapping in <aerial/sky.hpp> (re-implemented here).
+/// World direction of texel (i, j) of a table (its light's azimuth and its
+/// coordinates).
 glm::dvec3 texelDirection(int i, int j, const SkyTable& table);
 
 /// Fills a whole SkyTable by brute force (same layout and row mapping as

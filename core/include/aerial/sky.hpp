@@ -78,93 +78,40 @@
 // alpha + beta cos(phi)), within 0.12% of the pixel of integrating every
 // column.
 //
-// Table mapping (the one contract between the solver and every sampler):
-//   * rows j = 0..elevationCount-1 hold the elevation el_j with
-//     v(el_j) = j / (elevationCount - 1), v increasing from v(0) = 0 to
-//     v(pi/2) = 1 (skyTableRow, skyTableElevation):
-//       v(el) = (1 - a - b - d) sqrt(el / (pi/2))
-//             + a atan(el / E) / atan(pi/2 / E)
-//             + b (atan((el - c) / w) - atan(-c / w)) / (atan((pi/2 - c) / w) - atan(-c / w))
-//             + d/2 (1 - u^0.35) below c, d/2 (1 + cbrt(u)) above, u = min(|el - c|, c) / c,
-//     E = bandElevation, a = bandShare, c = shadowElevation, w = shadowWidth,
-//     b = shadowShare, carried in the SkyTable and set by the solver from the
-//     light (setSkyTableMapping). The rows go where the light changes fastest:
-//     - a light above 1 deg: a = b = 0, the quadratic el_j = pi/2 (j / (H - 1))^2
-//       (more rows near the horizon);
-//     - a light below 1 deg: a = 0.7 (fading to 0 at 1 deg) of the rows in a
-//       horizon band of width E = max(1.8 L^0.7, 1.2) deg, L = the light's
-//       depression below the horizon [deg]: the band between the horizon and
-//       the top of the earth's shadow, whose edge rises to about L above the
-//       horizon opposite the light;
-//     - a light below the horizon also: b = 0.15 (0.05 from L = 6 deg; fading
-//       in over the first 0.01 deg; L beyond 18 deg counts as 18) of the rows
-//       around c with width w = 0.25 L min(L / 0.3, 1): the edge of the earth's shadow
-//       opposite the light, which is sharpest (a kink in the radiance a few
-//       hundredths of a degree above a black sliver) for a light just set;
-//       the lit sky's onset above the kink narrows about as L^2 there, so
-//       below 0.3 deg the width does too.
-//       c is the kink's elevation straight opposite the light (the view ray
-//       that leaves the shadow cylinder exactly at the top of the
-//       atmosphere, about 1.1 L; for a light more than ~6 deg down that ray
-//       is shadowed up to the top and c = 1.1 L), and b is adjusted so that
-//       a row lies exactly on it;
-//     - a light 0-1 deg below the horizon also: d = (16/63) g of the rows
-//       (twice that for c below 0.005 deg, fading in from 0.01 deg:
-//       skyCapRowShare)
-//       (taken from the band's a) between 0 and 2c, half below c uniform in
-//       (c - el)^0.35 (kSkyCapBelowPower: crowded towards c, where the lit
-//       sky beside the cap ramps up over a width that grows fast with
-//       c - el), blending into uniform in ln(1 + u / s), u = (c - el) / c,
-//       s = min(5e-4, 3 c), as the boost comes in (kSkyCapLogScale,
-//       kSkyCapLogScalePerKink), half above c uniform in cbrt(el - c),
-//       crowded at the cap's top where straight opposite the light the lit
-//       sky switches on within a few 1e-4 deg for a light 0.01 deg down;
-//       g = capStrength, 1 up to 0.5 deg, fading to 0 at 1 deg;
-//     With 128 x 64 texels this keeps the table within 2% of the exact
-//     single-scattering integral relative to the pixel (floored at 1% of the
-//     brightest sky) in every direction tests/core/test_sky.cpp probes, off
-//     the texel centres too, for suns from -6 to 90 deg (SkyOffTexel), and
-//     within 1.5% in dense sweeps of the anti-light quarter near the kink
-//     for suns 0.00002-0.3 deg below the horizon (SkyShadowOnset,
-//     AERIAL_SKY_SHADOW_ONSET; docs/sky_table_notes.md has the figures and
-//     their history);
-//   * columns i = 0..azimuthCount-1 hold the azimuth relative to the light
-//       phi_i = 2 pi * i / azimuthCount,
-//     measured from the light's azimuth towards east (the same sense as the
-//     world azimuth); the azimuth wraps. Because single scattering is
-//     symmetric about the light's vertical plane, column i equals column
-//     azimuthCount - i. Except for a light 0-1 deg below the horizon
-//     (capCurvature k > 0, capStrength g > 0): opposite it the earth's
-//     shadow is a cap, dark below a parabola el = c - k psi^2 (psi: azimuth
-//     from the anti-light point, k ~ 0.069/rad fitted to the exact onset
-//     where it crosses c/2), above which the lit sky switches on within
-//     thousandths of a degree. The columns of the row at elevation el are
-//     then piecewise linear in psi (in psi^2 between the second and third
-//     knot) through the knots
-//       x = |i - W/2| = (0, 3, 15, 28, 64) W / 128,
-//       psi = (0, P, sqrt((2 P)^2 + D^2), F2, pi),  P = min(sqrt(max(c - el, 0) / k), F),
-//       F = min(sqrt(c / k), pi/4),  D = max(F / 2, min(1 deg, 500 c)),
-//       F2 = min(2 (F + max(F / 2, 1 deg)), 3 pi / 4),
-//     except that the last two segments are quadratic, psi = p + (q - p)
-//     (a t + (1 - a) t^2) with t = 0..1 along the segment from p to q and
-//     a = 1 - g (1 - kSkyCapNearSlope) from the band's outer knot to F2, a
-//     = 1 - g (1 - kSkyCapFarSlope) from F2 to pi (their columns crowd
-//     at the segment's start: beyond the band just below the cap's top,
-//     where the lit sky beside the cap still ramps up, and beyond F2, where
-//     it still climbs steeply near the horizon), and each inner psi blended
-//     with g towards 2 pi x / W (skyTableColumn, skyTableAzimuth): the onset lies on column W/2 -+ 3 W / 128
-//     in every row below the cap's top, with 12 columns in the band above it. Only P depends on the row, so
-//     between two rows the onset stays on its column. The band is uniform in ln(1 + (psi^2 - P^2) / Y0), Y0 =
-//     (kSkyCapBandScale c)^2 + (kSkyCapBandOnsetScale P)^2 (10 c and P): geometric in the height above the
-//     onset beyond Y0, where the lit sky at the cap's top switches on (~10 c from the anti-light point) and
-//     levels off (~100-1000 c), and widens with P (the 2 in its outer knot is kSkyCapOnsetGrowth): lower down
-//     the cap the lit sky ramps up over an azimuth that grows with P. For a light just set (c below 0.01
-//     deg, the boost fraction m of the rows) the shares and G blend towards 2 columns inside the cap, 20 in
-//     the band and G = 6 (SkyCapShape), each blended knot x rounded to a whole column (so that no knot
-//     bends the bilinear filter's line inside a texel). The knots are mirror-symmetric, so
-//     column i still equals column W - i. The horizon averages then weight row 0 by azimuth;
-//   * texel (i, j) is stored at index (j * azimuthCount + i) * 3 (RGB, float).
-//   Directions below the horizon use row 0.
+// Table coordinates (what every sampler reads): texel (i, j) holds the
+// sky in the direction at elevation SkyTable::rowElevation[j] and azimuth
+// SkyTable::columnAzimuth[j * azimuthCount + i] from the light's. Rows
+// rise from the horizon (row 0, elevation 0) to the zenith (the last row,
+// pi/2); each row's columns run from the light's azimuth (column 0) round
+// towards east, and columns i and azimuthCount - i mirror each other about
+// the light's vertical plane (single scattering is symmetric about it).
+// Where they lie follows the light (setSkyTableMapping): rows crowded at the
+// horizon, more so around the earth's shadow of a low or set light, and for
+// a light 0-1 deg below the horizon the columns of each row crowded around
+// the cap of the earth's shadow opposite it; with 128 x 64 texels the table
+// is within 2% of the exact single-scattering integral relative to the
+// pixel (floored at 1% of the brightest sky) in every direction
+// tests/core/test_sky.cpp probes, off the texel centres too, for lights
+// from -6 to 90 deg, and within 1.6% in dense sweeps around the earth's
+// shadow of lights 0.0002-0.3 deg down (2.1% at 0.00002 deg, where the
+// shadow's cap is 1/2400 of a pixel tall; docs/sky_table_notes.md). A
+// sampler (sampleSkyTable, the renderer's sky pass, a game reading a bake)
+// takes the two rows j, j + 1 around the view's elevation el with the
+// upper one's weight t = f(x; m_j, m_j+1), x = (el - el_j) / (el_j+1 -
+// el_j), f the monotone cubic (Fritsch and Carlson 1980)
+//   f(x; m0, m1) = (x^3 - 2 x^2 + x) m0 + (3 x^2 - 2 x^3) + (x^3 - x^2) m1,
+// with the slopes at the rows m_j = 2 (el_j+1 - el_j) / (el_j+1 - el_j-1),
+// m_j+1 = 2 (el_j+1 - el_j) / (el_j+2 - el_j) (1 at the first and the last
+// row), so that it follows how the rows' spacing changes; blends each
+// column's azimuth between the two rows with t, b_i = (1 - t) phi_i,j +
+// t phi_i,j+1 (wrapping: b_-1 = b_W-1 - 2 pi, b_W = 2 pi, b_W+1 = b_1 +
+// 2 pi); takes the two columns i, i + 1 with b_i <= phi < b_i+1 and the
+// second one's weight s = f(y; m_i, m_i+1) in the same way, y = (phi - b_i)
+// / (b_i+1 - b_i) (s = y between uniform columns); and blends the four
+// texels bilinearly with s and t. A column warped around the earth's
+// shadow keeps its place relative to the shadow's edge from row to row, so
+// blending along it follows the edge. Directions below the horizon use row 0. The RGB of texel (i, j) is
+// at index (j * azimuthCount + i) * 3.
 //
 // Horizon average (SkyTable::horizonRayleigh / horizonMie / horizonMultiple): row 0 only
 // (elevation exactly 0), all azimuthCount columns with equal weight
@@ -197,7 +144,7 @@ struct SkySolverDesc {
     /// texel, horizon rows included, is within 2% of the brute-force
     /// reference for suns from -5 to 90 deg (tests/core/test_sky.cpp prints
     /// the error for 16..96 layers), and so are the directions between the
-    /// texels for suns from -6 to 90 deg (with the row mapping above).
+    /// texels for suns from -6 to 90 deg (with the coordinates above).
     int layerCount = 32;
     /// Optical-depth table rows (height): the table has exactly one row per
     /// shell (layerCount + 1, no interpolation in height); the value given is
@@ -250,7 +197,7 @@ struct MultipleScatteringTable {
 struct SkyTable {
     int azimuthCount = 0;
     int elevationCount = 0;
-    std::vector<float> rayleigh;  ///< I_R, RGB per texel (see mapping above)
+    std::vector<float> rayleigh;  ///< I_R, RGB per texel (see "Table coordinates" above)
     std::vector<float> mie;       ///< I_M, RGB per texel
     std::vector<float> multiple;  ///< I_ms [1/sr], RGB per texel (phases applied: none to apply)
     /// Average of the horizon row(s): the colour of far fog is
@@ -262,17 +209,27 @@ struct SkyTable {
     glm::dvec3 lightDirection{0.0, 1.0, 0.0};
     /// Azimuth of the light [rad], from north (-Z) towards east (+X).
     double lightAzimuth = 0.0;
-    /// The row mapping (see "Table mapping" above), set by the solver from
-    /// the light (setSkyTableMapping). All 0 (the default, and any light above
-    /// 1 deg): the quadratic mapping.
+    /// Where the texels lie (see "Table coordinates" above), set with the
+    /// mapping by setSkyTableMapping: the elevation [rad] of each row
+    /// (elevationCount, increasing from 0 to pi/2) and the azimuth [rad, 0..2
+    /// pi) from the light's of each texel (azimuthCount per row, row after
+    /// row; non-decreasing along a row: columns that meet at the anti-light
+    /// point hold the same direction).
+    std::vector<double> rowElevation;
+    std::vector<double> columnAzimuth;
+    /// The parameters the coordinates were made from (setSkyTableMapping;
+    /// core/src/sky/sky_table_mapping.hpp): the rows' band at the horizon and
+    /// at the earth's shadow. All 0 (the default, and any light above 1 deg):
+    /// the plain rows el_j = pi/2 (j / (H - 1))^2.
     double bandElevation = 0.0;    ///< E [rad], > 0 where bandShare > 0
     double bandShare = 0.0;        ///< a, 0..1: share of the rows in the horizon band
     double shadowElevation = 0.0;  ///< c [rad]: centre of the rows at the earth's shadow
     double shadowWidth = 0.0;      ///< w [rad], > 0 where shadowShare > 0
     double shadowShare = 0.0;      ///< b, 0..1 - a: share of the rows at the earth's shadow
-    /// The column mapping (see "Table mapping" above): k [1/rad] of the cap
-    /// of the earth's shadow, whose onset lies at el = c - k psi^2, and the
-    /// warp's strength g (0..1). Both 0: columns uniform in azimuth.
+    /// The columns' warp: k [1/rad] of the cap of the earth's shadow, whose
+    /// onset lies at el = c - k psi^2 (psi the azimuth from the anti-light
+    /// point), and the warp's strength g (0..1). Both 0: columns uniform in
+    /// azimuth, 2 pi i / azimuthCount.
     double capCurvature = 0.0;
     double capStrength = 0.0;
     /// Bumped on every completed solve.
@@ -286,147 +243,23 @@ struct SkySample {
     glm::dvec3 multiple{0.0};  ///< 0 where the table has no multiple channel
 };
 
-/// Sets the row mapping of `table` (bandElevation .. shadowShare) for a
-/// light direction and atmosphere (the planet, the top and the viewer's
-/// height place the earth's shadow), as SkySolver does for every solve (the
-/// mapping above). Needs table.elevationCount.
+/// Sets where the texels of `table` lie for a light direction and
+/// atmosphere (the planet, the top and the viewer's height place the earth's
+/// shadow), as SkySolver does for every solve: the mapping's parameters
+/// (bandElevation .. capStrength) and the coordinates made from them
+/// (rowElevation, columnAzimuth; "Table coordinates" above). Needs
+/// table.azimuthCount and table.elevationCount.
 void setSkyTableMapping(SkyTable& table, const AtmosphereParams& air, const glm::dvec3& lightDirection);
 
-/// Continuous row (0..elevationCount-1) of an elevation [rad, clamped to
-/// 0..pi/2] in the table's mapping (sky.hpp, "Table mapping").
-double skyTableRow(const SkyTable& table, double elevation);
-/// Elevation [rad] of a continuous row (0..elevationCount-1), the inverse of
-/// skyTableRow; row elevationCount-1 is exactly pi/2.
-double skyTableElevation(const SkyTable& table, double row);
-/// skyTableElevation of the whole rows 0..count-1 (the same to within
-/// 1e-13 of the mapped position; each row's root is started from the row
-/// before, a fraction of the cost).
-void skyTableElevations(const SkyTable& table, int count, double* out);
-
-/// The column mapping's constants (sky.hpp, "Table mapping", columns): the
-/// shares of azimuthCount (each side of the anti-light point) inside the cap
-/// of the earth's shadow, in the band of its onset and between that band
-/// and the knot psiE; and the band's least width [deg].
-inline constexpr double kSkyCapInsideShare = 3.0 / 128.0;
-inline constexpr double kSkyCapOnsetShare = 12.0 / 128.0;
-inline constexpr double kSkyCapNearShare = 13.0 / 128.0;
-inline constexpr double kSkyCapMinBandDeg = 1.0;
-/// The onset band's outer knot: sqrt((kSkyCapOnsetGrowth P)^2 + D^2).
-inline constexpr double kSkyCapOnsetGrowth = 2.0;
-/// The band's width D is at most this many times c (below kSkyCapMinBandDeg;
-/// psiE keeps the 1 deg floor).
-inline constexpr double kSkyCapBandPerKink = 500.0;
-/// The band's columns are uniform in ln(1 + y / Y0), y = psi^2 - P^2, Y0
-/// = (kSkyCapBandScale c)^2 + (kSkyCapBandOnsetScale P)^2: geometric in
-/// the height above the onset beyond Y0. At the cap's top the lit sky
-/// switches on as ~psi^5 ~10 c from the anti-light point and levels off
-/// over ~100-1000 c, and below it it ramps up over ~10 P: two decades of
-/// azimuth in the band's 12-20 columns.
-inline constexpr double kSkyCapBandScale = 10.0;
-inline constexpr double kSkyCapBandOnsetScale = 1.0;
-/// The last segment (psiE .. pi) is quadratic in its columns, with this
-/// slope at psiE relative to its mean (and 2 - it at pi).
-inline constexpr double kSkyCapFarSlope = 0.2;
-/// The segment between the band's outer knot and psiE likewise: just below
-/// the cap's top of a light less than 0.005 deg down the lit sky beside the
-/// cap levels off 0.2-0.4 deg from the anti-light point, just beyond the
-/// band, where its kSkyCapNearShare columns crowd.
-inline constexpr double kSkyCapNearSlope = 0.25;
-/// The share of the rows in the cap (0 .. c) and as far above it (c .. 2c),
-/// taken from the horizon band's: half uniform in (c - el)^kSkyCapBelowPower
-/// below c, half in cbrt(el - c) above.
-inline constexpr double kSkyCapRowShare = 16.0 / 63.0;
-/// The power of the cap's rows below c (0.5 would be uniform in the
-/// onset's azimuth; 0.35 crowds them towards c).
-inline constexpr double kSkyCapBelowPower = 0.35;
-/// For a light just set the cap's share grows by up to kSkyCapRowBoost, as
-/// the kink's elevation c falls from kSkyCapBoostStartDeg to
-/// kSkyCapBoostFullDeg (c ~ L there), taken from the band's share too:
-/// below c the lit sky beside the cap ramps up over a width that grows from
-/// ~0.3 to ~1.5 deg within 1% of c.
-inline constexpr double kSkyCapRowBoost = 2.0;
-inline constexpr double kSkyCapBoostStartDeg = 0.01;
-inline constexpr double kSkyCapBoostFullDeg = 0.005;
-/// The cap's share of the rows, d = kSkyCapRowShare g times the boost, for
-/// the kink's elevation c [rad] and the cap's strength g.
-/// Below c the cap's rows go from uniform in u^kSkyCapBelowPower (u = (c -
-/// el) / c) to uniform in ln(1 + u / kSkyCapLogScale) as the boost comes in
-/// (skyCapBoostFraction): for a light less than 0.005 deg down the lit sky
-/// beside the cap changes its shape about as ln u, from ~0.05 deg wide at
-/// 0.9998 c to 1.5 deg at 0.97 c; with ln(1 + u / 5e-4) the 16 rows below
-/// c are ~1.6x apart in u from 3e-4 to 0.2.
-inline constexpr double kSkyCapLogScale = 5e-4;
-/// 0..1, how far the cap's rows are boosted for the kink's elevation c
-/// [rad]: 0 above kSkyCapBoostStartDeg, 1 below kSkyCapBoostFullDeg.
-inline double skyCapBoostFraction(double c) {
-    const double t = (kSkyCapBoostStartDeg - c * 180.0 / kPi) / (kSkyCapBoostStartDeg - kSkyCapBoostFullDeg);
-    return t > 1.0 ? 1.0 : t > 0.0 ? t : 0.0;
-}
-/// For a light just set the column mapping's shares and the band's outer
-/// knot change with the boost fraction m (skyCapBoostFraction), from the
-/// constants above at m = 0 to these at m = 1: 20 columns in the band (2
-/// from inside the cap, whose single scattering is dark, and 6 from the last
-/// segment), its outer knot at 6 P (just below the cap's top the lit sky
-/// ramps up over ~10 P), and the cap's rows below c logarithmic on the
-/// scale min(kSkyCapLogScale, 3 c).
-inline constexpr double kSkyCapInsideShareSet = 2.0 / 128.0;
-inline constexpr double kSkyCapOnsetShareSet = 20.0 / 128.0;
-inline constexpr double kSkyCapOnsetGrowthSet = 6.0;
-inline constexpr double kSkyCapLogScalePerKink = 3.0;
-/// The column mapping's shape for the kink's elevation c [rad] (above).
-struct SkyCapShape {
-    double insideShare = kSkyCapInsideShare;  ///< of the columns, each side
-    double onsetShare = kSkyCapOnsetShare;
-    double onsetGrowth = kSkyCapOnsetGrowth;
-    double logScale = kSkyCapLogScale;  ///< of the cap's rows below c (skyCapBelowRow)
-};
-inline SkyCapShape skyCapShape(double c) {
-    const double m = skyCapBoostFraction(c);
-    SkyCapShape s;
-    s.insideShare = kSkyCapInsideShare + m * (kSkyCapInsideShareSet - kSkyCapInsideShare);
-    s.onsetShare = kSkyCapOnsetShare + m * (kSkyCapOnsetShareSet - kSkyCapOnsetShare);
-    s.onsetGrowth = kSkyCapOnsetGrowth + m * (kSkyCapOnsetGrowthSet - kSkyCapOnsetGrowth);
-    const double scale = kSkyCapLogScalePerKink * c;
-    s.logScale = scale > 0.0 && scale < kSkyCapLogScale ? scale : kSkyCapLogScale;
-    return s;
-}
-inline double skyCapRowShare(double c, double g) {
-    const double boost = 1.0 + (kSkyCapRowBoost - 1.0) * skyCapBoostFraction(c);
-    return kSkyCapRowShare * boost * (g > 1.0 ? 1.0 : g > 0.0 ? g : 0.0);
-}
-/// The cap's rows below c: 0 at u = (c - el) / c = 0 (the kink) to 1 at u = 1
-/// (the horizon), (1 - m) u^kSkyCapBelowPower + m ln(1 + u / s) / ln(1 + 1 /
-/// s) for the boost fraction m and the log scale s (SkyCapShape::logScale).
-/// The terms whose weight is 0 are skipped (the same value: m is 0 or 1
-/// but for kinks 0.005-0.01 deg up); `logNorm` = ln(1 + 1 / s), for a caller
-/// that evaluates many u with one s.
-inline double skyCapBelowRow(double u, double m, double s, double logNorm) {
-    if (m == 0.0) return std::pow(u, kSkyCapBelowPower);
-    if (m == 1.0) return std::log1p(u / s) / logNorm;
-    return (1.0 - m) * std::pow(u, kSkyCapBelowPower) + m * std::log1p(u / s) / logNorm;
-}
-inline double skyCapBelowRow(double u, double m, double s) {
-    return skyCapBelowRow(u, m, s, std::log1p(1.0 / s));
-}
-
-/// Continuous column (0..azimuthCount, wrapping) of an azimuth `relative`
-/// [rad] from the light's (any value, wrapped into [0, 2 pi)) in the row at
-/// `elevation` [rad] (the column mapping: uniform except around the cap of
-/// the earth's shadow opposite a light just set).
-double skyTableColumn(const SkyTable& table, double relative, double elevation);
-/// skyTableAzimuth of the whole columns 0..count-1 of the row at `elevation`
-/// into out[0..count-1] (the row's mapping set up once).
-void skyTableAzimuths(const SkyTable& table, double elevation, int count, double* out);
 /// Whether the table's columns are warped (else uniform in azimuth in every row).
 inline bool skyTableColumnsWarped(const SkyTable& table) {
     return table.capCurvature > 0.0 && table.capStrength > 0.0 && table.shadowElevation > 0.0 &&
            table.azimuthCount >= 4;
 }
-/// Azimuth from the light [rad, 0..2 pi] of a continuous column
-/// (0..azimuthCount) in the row at `elevation`, the inverse of skyTableColumn.
-double skyTableAzimuth(const SkyTable& table, double column, double elevation);
 
-/// Table lookup for a unit view direction (world space).
+/// Table lookup for a view direction (world space; normalised here): the
+/// bilinear sample through the table's coordinates ("Table coordinates"
+/// above). Zeros for a table without texels or coordinates.
 SkySample sampleSkyTable(const SkyTable& table, const glm::dvec3& viewDirection);
 
 /// Radiance [same unit as illuminance / sr] in a view direction: the table

@@ -135,7 +135,6 @@ SkySolver::Impl::Impl(const SkySolverDesc& d) : desc(d) {
     msRowWeight.assign(std::size_t(4) * elevationCount, 0.0f);
     msRowValue.assign(std::size_t(3) * kMsSkyColumns * elevationCount, 0.0f);
     msRowDone = std::make_unique<std::atomic<int>[]>(std::size_t(elevationCount));
-    publishAzimuths.assign(std::size_t(columns), 0.0);
     cosPhiF.assign(std::size_t(paddedColumns), 1.0f);  // padding: a harmless direction
     msCosPhiF.assign(std::size_t(kMsSkyColumns), 1.0f);
     for (int k = 0; k < kMsSkyColumns; ++k)
@@ -286,8 +285,8 @@ void SkySolver::Impl::setLight(const glm::dvec3& direction) {
     SkyTable& back = tables[1 - front];
     back.lightDirection = light;
     back.lightAzimuth = lightAzimuth;
-    setSkyTableMapping(back, air, light);
-    skyTableElevations(back, elevationCount, rowElevation.data());
+    setSkyTableMapping(back, air, light);  // the texels' coordinates
+    std::copy(back.rowElevation.begin(), back.rowElevation.end(), rowElevation.begin());
     planMultipleRows();
 }
 
@@ -388,8 +387,7 @@ void SkySolver::Impl::publish() {
     glm::dvec3 sumR(0.0), sumM(0.0), sumX(0.0);
     const bool uniform = !skyTableColumnsWarped(back);
     // Row 0's column azimuths 0..azimuthCount/2 (the rest mirror them).
-    double* az = publishAzimuths.data();
-    if (!uniform) skyTableAzimuths(back, 0.0, columns, az);
+    const double* az = back.columnAzimuth.data();
     // Table column m's azimuth, m in -2..azimuthCount + 1 (mirrored, wrapped).
     auto azimuthOf = [&](int m) {
         const double wrap = m < 0 ? -2.0 * kPi : (m > azimuthCount ? 2.0 * kPi : 0.0);

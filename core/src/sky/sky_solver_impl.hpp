@@ -136,7 +136,6 @@ struct SkySolver::Impl {
     std::vector<int> spreadIndex;     // [4][padded columns] spreadMultiple's Catmull-Rom stencil
     std::vector<float> spreadWeight;  // [4][padded columns] and weights
 
-    std::vector<double> publishAzimuths;  // [columns] row 0's column azimuths (publish)
     // Double-buffered output: tables[front] is published.
     SkyTable tables[2];
     int front = 0;
@@ -164,7 +163,7 @@ struct SkySolver::Impl {
     void buildLayers();
     void planMultipleRows();
     void buildDepthRow(int row, Scratch& s);
-    void rowColumns(double elevation, Scratch& s) const;
+    void rowColumns(int row, Scratch& s) const;
     void solveRow(int row, Scratch& s);
     void shadowEdgeLayers(Scratch& s, double r0, double sinEl, bool straightOn);
     void spreadMultiple(Scratch& s) const;

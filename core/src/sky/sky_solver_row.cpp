@@ -84,7 +84,7 @@ void layerStencil(const double* crossing, int layers, int l, LayerConstants& lc)
 
 }  // namespace
 
-// The azimuths of a row's columns 0..azimuthCount/2 (skyTableAzimuth): the
+// The azimuths of a row's columns 0..azimuthCount/2 (SkyTable::columnAzimuth): the
 // uniform ones, or where the column mapping warps the row (around the cap
 // of the earth's shadow opposite a light just set) the row's own, with their
 // cosines and spreadMultiple's stencil. A warped row's azimuths reach pi
@@ -96,7 +96,7 @@ void layerStencil(const double* crossing, int layers, int l, LayerConstants& lc)
 // same to the bit). The lanes past a row's distinct columns hold what an
 // earlier row left there (finite azimuths, shadow spans and stencils); the
 // kernels compute them like padding and nothing reads them back.
-void SkySolver::Impl::rowColumns(double elevation, Scratch& s) const {
+void SkySolver::Impl::rowColumns(int row, Scratch& s) const {
     const SkyTable& back = tables[1 - front];
     const bool uniform = !skyTableColumnsWarped(back);
     s.rowColumnCount = columns;
@@ -111,9 +111,9 @@ void SkySolver::Impl::rowColumns(double elevation, Scratch& s) const {
         s.spreadWeight = spreadWeight.data();
         return;
     }
-    skyTableAzimuths(back, elevation, columns, s.rowPhi.data());
+    const double* azimuth = back.columnAzimuth.data() + std::size_t(row) * std::size_t(azimuthCount);
     for (int i = 0; i < columns; ++i) {
-        s.rowPhi[std::size_t(i)] = std::min(s.rowPhi[std::size_t(i)], kPi);
+        s.rowPhi[std::size_t(i)] = std::min(azimuth[i], kPi);
         if (s.rowPhi[std::size_t(i)] == kPi) {
             s.rowColumnCount = i + 1;
             break;
@@ -141,7 +141,7 @@ void SkySolver::Impl::solveRow(int row, Scratch& s) {
     const double h0 = shellHeight[0];
     const double r0 = rg + h0;
     const double elevation = rowElevation[std::size_t(row)];
-    rowColumns(elevation, s);
+    rowColumns(row, s);
     const double sinEl = row == elevationCount - 1 ? 1.0 : std::sin(elevation);
     const double cosEl = row == elevationCount - 1 ? 0.0 : std::cos(elevation);
 

@@ -53,7 +53,8 @@ bool sameMapping(const SkyTable& a, const SkyTable& b) {
            same(a.bandElevation, b.bandElevation) && same(a.bandShare, b.bandShare) &&
            same(a.shadowElevation, b.shadowElevation) && same(a.shadowWidth, b.shadowWidth) &&
            same(a.shadowShare, b.shadowShare) && same(a.capCurvature, b.capCurvature) &&
-           same(a.capStrength, b.capStrength) && a.lightDirection == b.lightDirection &&
+           same(a.capStrength, b.capStrength) && a.rowElevation == b.rowElevation &&
+           a.columnAzimuth == b.columnAzimuth && a.lightDirection == b.lightDirection &&
            same(a.lightAzimuth, b.lightAzimuth);
 }
 
@@ -159,6 +160,8 @@ struct SpectralSkySolver::Impl {
         out.shadowShare = first.shadowShare;
         out.capCurvature = first.capCurvature;
         out.capStrength = first.capStrength;
+        out.rowElevation = first.rowElevation;
+        out.columnAzimuth = first.columnAzimuth;
         for (int k = 1; k < kSpectralSkyPasses; ++k) {
             [[maybe_unused]] const bool same = sameMapping(first, passes[std::size_t(k)]->table());
             assert(same && "the passes' tables share one mapping (geometry only)");
