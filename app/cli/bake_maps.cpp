@@ -116,6 +116,16 @@ Json bakeWeatherManifest(const Preset& preset) {
         shares[weatherCategoryName(WeatherCategory(c))] = kWeatherCategoryShare[c];
     return {{"states", states},
             {"category_share", shares},
+            {"regions", weatherRegionsToJson(preset)},
+            {"regions_blend",
+             "a region (a box: the unit cube, an ellipsoid: the unit sphere, placed by world = position_m + "
+             "rotation_xyzw * (half_extents_m * object); +Y up, -Z north) has weight r = smoothstep(clamp(d / "
+             "blend_m, 0, 1)) at the camera, d its depth inside: the distance to its surface (box: min_i "
+             "(h_i - |p_i|) in object space; ellipsoid: the distance to the closest surface point), r = 0 "
+             "outside. Starting from the global weights W_s,c (per state s and category c; the keyed values hold "
+             "1 - sum_s W_s,c), the regions are applied in ascending priority, equal priorities in list order: "
+             "W_s,c <- (1 - r) W_s,c + r [s = region.state] (\"none\": every W_s,c <- (1 - r) W_s,c). The "
+             "library does this in aerial::regionalWeather"},
             {"what",
              "per step, weather.<state>: that state held fully (aerial/weather.hpp): its parameters, the "
              "light reaching the ground, its sky-view and far fog maps, irradiance coefficients and fog, as "

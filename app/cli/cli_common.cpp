@@ -484,13 +484,37 @@ Json weatherFromOptions(const Preset& preset, const std::string& weather, const 
     known(from, "--transition");
     known(to, "--transition");
     transitionWeather(preset, from, to, f, mix);
+    return {{"from", from}, {"to", to}, {"fraction", f}, {"weights", weatherMixToJson(preset, mix)}};
+}
+
+Json weatherMixToJson(const Preset& preset, const WeatherMix& mix) {
     Json weights = Json::object();
     for (std::size_t i = 0; i < preset.weather.size(); ++i) {
         Json w = Json::object();
-        for (int c = 0; c < kWeatherCategoryCount; ++c) w[weatherCategoryName(WeatherCategory(c))] = mix.weights[i][std::size_t(c)];
+        for (int c = 0; c < kWeatherCategoryCount; ++c)
+            w[weatherCategoryName(WeatherCategory(c))] =
+                i < mix.weights.size() ? mix.weights[i][std::size_t(c)] : 0.0;
         weights[preset.weather[i].name] = w;
     }
-    return {{"from", from}, {"to", to}, {"fraction", f}, {"weights", weights}};
+    return weights;
+}
+
+Json weatherRegionsToJson(const Preset& preset, const glm::dvec3* camera) {
+    Json regions = Json::array();
+    for (const WeatherRegion& r : preset.weatherRegions) {
+        Json j = {{"id", r.id},
+                  {"name", r.name},
+                  {"shape", r.shape == WeatherRegionShape::Ellipsoid ? "ellipsoid" : "box"},
+                  {"position_m", toJson(r.position)},
+                  {"rotation_xyzw", Json::array({r.rotation.x, r.rotation.y, r.rotation.z, r.rotation.w})},
+                  {"half_extents_m", toJson(r.halfExtents)},
+                  {"blend_m", r.blend},
+                  {"priority", r.priority},
+                  {"state", r.state}};
+        if (camera) j["weight"] = weatherRegionWeight(r, *camera);
+        regions.push_back(std::move(j));
+    }
+    return regions;
 }
 
 }  // namespace aerial::cli

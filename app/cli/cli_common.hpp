@@ -208,4 +208,14 @@ glm::dvec3 tableSkyRadiance(const PresetState& state, const SkyTables& tables, c
 Json weatherFromOptions(const Preset& preset, const std::string& weather, const std::string& transition,
                         WeatherMix& mix);
 
+/// A mix as {state: {category: weight}} (every state of the preset; an
+/// empty mix gives 0 everywhere: the keyed values).
+Json weatherMixToJson(const Preset& preset, const WeatherMix& mix);
+
+/// The preset's weather regions as the file spells them: [{"id", "name",
+/// "shape", "position_m", "rotation_xyzw", "half_extents_m", "blend_m",
+/// "priority", "state"}] (aerial/weather_state.hpp); with `camera`, each
+/// also carries its "weight" there (aerial::weatherRegionWeight).
+Json weatherRegionsToJson(const Preset& preset, const glm::dvec3* camera = nullptr);
+
 }  // namespace aerial::cli

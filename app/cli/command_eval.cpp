@@ -27,11 +27,17 @@
 //    where they fall that day),
 //    "weather": {"states": [{"name", "overrides": [{"target", "mode",
 //    "value", "category"}]}], "applied": "STATE" or {"from", "to",
-//    "fraction", "weights": {state: {category: weight}}}}}
+//    "fraction", "weights": {state: {category: weight}}},
+//    "regions": [{"id", "name", "shape", "position_m", "rotation_xyzw",
+//    "half_extents_m", "blend_m", "priority", "state", "weight" (with
+//    --camera: the region's weight there)}],
+//    "camera": {"position_m", "weights": {state: {category: weight}}} (with
+//    --camera: the mix evaluated, the regions applied)}}
 // --weather STATE applies a weather state fully (aerial/weather.hpp);
 // --transition A:B:F the weather a fraction F (0..1) of the way through a
 // change from A to B, each category at its own speed ("none" names the keyed
-// values alone in both).
+// values alone in both). --camera X,Y,Z [m] applies the preset's weather
+// regions at that point on top of that global weather (regionalWeather).
 // Keyed values are applied; emitter intensities include the lightning flash.
 // Without --json: a readable summary, one parameter per line with its unit.
 #include "cli_common.hpp"
@@ -55,7 +61,8 @@ struct EvalOptions {
     bool json = false;
     bool light = true;
     std::string weather;
-    std::string transition;  ///< false: --no-light
+    std::string transition;
+    std::string camera;  ///< "x,y,z" [m]; empty: no regions applied
 };
 
 void printLight(const char* name, const LightState& light) {
@@ -135,8 +142,10 @@ void printAnchors(const Preset& preset) {
     }
 }
 
-/// The preset's weather states and what --weather / --transition applied.
-Json weatherToJson(const Preset& preset, const Json& applied) {
+/// The preset's weather states and regions, what --weather / --transition
+/// applied and, with --camera, the mix there.
+Json weatherToJson(const Preset& preset, const Json& applied, const glm::dvec3* camera,
+                   const WeatherMix& mix) {
     Json states = Json::array();
     for (const WeatherState& s : preset.weather) {
         Json overrides = Json::array();
@@ -154,7 +163,9 @@ Json weatherToJson(const Preset& preset, const Json& applied) {
         }
         states.push_back({{"name", s.name}, {"overrides", overrides}});
     }
-    return {{"states", states}, {"applied", applied}};
+    Json out = {{"states", states}, {"applied", applied}, {"regions", weatherRegionsToJson(preset, camera)}};
+    if (camera) out["camera"] = {{"position_m", toJson(*camera)}, {"weights", weatherMixToJson(preset, mix)}};
+    return out;
 }
 
 int runEval(const EvalOptions& options) {
@@ -164,6 +175,11 @@ int runEval(const EvalOptions& options) {
     const CompiledPreset compiled(std::move(preset));
     WeatherMix mix;
     const Json applied = weatherFromOptions(compiled.preset(), options.weather, options.transition, mix);
+    std::optional<glm::dvec3> camera;
+    if (!options.camera.empty()) {
+        camera = parseVec3(options.camera, "--camera");
+        regionalWeather(compiled.preset(), *camera, mix, mix);  // the global weather, then the regions there
+    }
     PresetState state;
     compiled.evaluate(t, mix, state);
     // The light report needs both sky tables (a solve of ~1 ms, and the
@@ -181,7 +197,7 @@ int runEval(const EvalOptions& options) {
         out.update(stateToJson(state));
         if (light) out["light"] = lightReportToJson(*light);
         out.update(anchorsToJson(compiled.preset()));
-        out["weather"] = weatherToJson(compiled.preset(), applied);
+        out["weather"] = weatherToJson(compiled.preset(), applied, camera ? &*camera : nullptr, mix);
         printJson(out);
         return kExitOk;
     }
@@ -201,6 +217,26 @@ int runEval(const EvalOptions& options) {
         for (const WeatherState& s : compiled.preset().weather) std::printf(" %s", s.name.c_str());
         std::printf(applied.is_null() ? " (none applied)\n" : " (applied: %s)\n",
                     applied.is_string() ? applied.get<std::string>().c_str() : options.transition.c_str());
+    }
+    for (const WeatherRegion& r : compiled.preset().weatherRegions) {
+        std::printf(
+            "region %s \"%s\": %s at (%g, %g, %g) m, half extents (%g, %g, %g) m, blend %g m, priority %d, "
+            "state %s",
+            r.id.c_str(), r.name.c_str(), r.shape == WeatherRegionShape::Ellipsoid ? "ellipsoid" : "box",
+            r.position.x, r.position.y, r.position.z, r.halfExtents.x, r.halfExtents.y, r.halfExtents.z,
+            r.blend, r.priority, r.state.c_str());
+        if (camera) std::printf("; weight %.4g at the camera", weatherRegionWeight(r, *camera));
+        std::printf("\n");
+    }
+    if (camera && !compiled.preset().weather.empty()) {
+        std::printf("camera (%g, %g, %g) m: weather", camera->x, camera->y, camera->z);
+        for (std::size_t i = 0; i < compiled.preset().weather.size(); ++i) {
+            // The clouds' weight stands for the state's (categories differ only within a transition).
+            const double w =
+                i < mix.weights.size() ? mix.weights[i][std::size_t(WeatherCategory::Clouds)] : 0.0;
+            std::printf(" %s %.4g", compiled.preset().weather[i].name.c_str(), w);
+        }
+        std::printf(" (clouds' weights; --json has every category)\n");
     }
     std::printf("\nparameters\n");
     printParameters(ParamScope::Global, state.environment, "  ");
@@ -242,10 +278,16 @@ Command addEvalCommand(CLI::App& parent) {
     app->add_option("--transition", options->transition,
                     "The weather a fraction of the way through a change: FROM:TO:FRACTION, FRACTION in 0..1")
         ->type_name("A:B:F");
-    app->footer(
-        helpFooter("  aerial eval presets/hazy_sunset.json --time 18:30\n"
-                   "  aerial eval presets/hazy_sunset.json --time 18.5 --json\n"
-                   "  aerial eval presets/clear_summer_day.json --time 14:00 --transition clear:storm:0.5"));
+    app->add_option(
+           "--camera", options->camera,
+           "Apply the preset's weather regions at this point [m] (x,y,z; Y up, north -Z, east +X) on top "
+           "of the global weather (--weather, --transition, else the keyed values)")
+        ->type_name("X,Y,Z");
+    app->footer(helpFooter(
+        "  aerial eval presets/hazy_sunset.json --time 18:30\n"
+        "  aerial eval presets/hazy_sunset.json --time 18.5 --json\n"
+        "  aerial eval presets/clear_summer_day.json --time 14:00 --transition clear:storm:0.5\n"
+        "  aerial eval presets/clear_summer_day.json --time 14:00 --weather clear --camera=2500,600,-6000"));
     return {app, [options] { return runEval(*options); }};
 }
 

@@ -423,7 +423,8 @@ void Editor::updateEvaluation() {
     // While a field is dragged its unkeyed change is drawn without compiling the preset each frame.
     const bool dragging = imguiReady_ && ImGui::IsAnyItemActive();
     // The Weather panel's preview (view state) on the editor's clock.
-    edit_.weather.preview.update(doc_.preset(), nowSeconds());
+    const glm::dvec3 eye = view_.camera.eye();
+    edit_.weather.preview.update(doc_.preset(), nowSeconds(), &eye);  // the regions at the camera
     if (sky_.evaluate(doc_, edit_.pending, playback_.timeHours, dragging, edit_.weather.preview.mix()))
         edit_.validate(doc_.preset());
 }
@@ -533,7 +534,7 @@ void Editor::layout() {
         ImGui::SetNextWindowSize(ImVec2(weatherW, std::max(160.0f, std::min(480.0f, middleH - 40.0f))),
                                  ImGuiCond_Appearing);
         if (ImGui::Begin("Weather", &edit_.weather.shown, ImGuiWindowFlags_NoSavedSettings))
-            drawWeatherPanel(doc_, edit_, playback_.timeHours, nowSeconds(), status_);
+            drawWeatherPanel(doc_, edit_, playback_.timeHours, nowSeconds(), view_.camera, status_);
         ImGui::End();
     }
 

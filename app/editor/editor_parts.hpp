@@ -71,6 +71,7 @@ struct Selection {
 struct WeatherPanel {
     bool shown = false;         ///< View > Weather
     int selectedState = -1;     ///< index into Preset::weather
+    int selectedRegion = -1;    ///< index into Preset::weatherRegions
     std::string nameBuffer;     ///< the name field (add, rename)
     std::string from = "none";  ///< the transition's ends (the preview's pickers)
     std::string to = "none";

@@ -86,7 +86,8 @@ void Editor::declareWeatherScriptCommands() {
             "what the viewport shows of the weather: the keyed values, a state, or F (0..1) of a transition")
         .handles([this](W w, E error) {
             if (parseWeatherPreview(doc_.preset(), w[1], edit_.weather.preview, error)) {
-                edit_.weather.preview.update(doc_.preset(), nowSeconds());
+                const glm::dvec3 eye = view_.camera.eye();
+                edit_.weather.preview.update(doc_.preset(), nowSeconds(), &eye);
                 return true;
             }
             error = "weather_preview: " + error;
@@ -199,6 +200,71 @@ void Editor::declareWeatherScriptCommands() {
             return applyRemoveWeatherOverride(doc_, state, index, error);
         });
 
+    // --- regions (one undo step each) ----------------------------------------------------
+    // The index of region `id`, or -1 with `error` set.
+    const auto regionOf = [this](const std::string& command, const std::string& id, std::string& error) {
+        const int index = weatherRegionIndex(doc_.preset(), id);
+        if (index < 0) error = command + ": no weather region \"" + id + "\"";
+        return index;
+    };
+    table.add("weather_add_region")
+        .takes({word("ID"), choice("SHAPE", {"box", "ellipsoid"}), word("STATE")})
+        .oneUndoStep()
+        .helps("a new weather region holding STATE (or none) around the camera's target, 2 x 1 x 2 km")
+        .handles([this](W w, E error) {
+            WeatherRegion r;
+            weatherRegionShapeFromName(w[2], r.shape);
+            r = newWeatherRegion(doc_.preset(), r.shape, w[3], view_.camera.state().target);
+            r.id = w[1];
+            if (!applyAddWeatherRegion(doc_, r, error)) {
+                error = "weather_add_region: " + error;
+                return false;
+            }
+            edit_.weather.selectedRegion = int(doc_.preset().weatherRegions.size()) - 1;
+            return true;
+        });
+    table.add("weather_set_region")
+        .takes({word("ID"), word("FIELD"), rest("VALUE")}, "weather_set_region ID FIELD VALUE...")
+        .oneUndoStep()
+        .helps(
+            "set a region's field: id, name, shape, position_m X Y Z, half_extents_m X Y Z, yaw_deg, "
+            "blend_m, priority or state")
+        .handles([this, regionOf](W w, E error) {
+            const int index = regionOf(w[0], w[1], error);
+            if (index < 0) return false;
+            WeatherRegion r = doc_.preset().weatherRegions[std::size_t(index)];
+            const std::vector<std::string> values(w.words().begin() + 3, w.words().end());
+            if (!setWeatherRegionField(r, w[2], values, error) ||
+                !applySetWeatherRegion(doc_, index, r, false, error)) {
+                error = "weather_set_region: " + error;
+                return false;
+            }
+            return true;
+        });
+    table.add("weather_remove_region")
+        .takes({word("ID")})
+        .oneUndoStep()
+        .helps("remove a weather region")
+        .handles([this, regionOf](W w, E error) {
+            const int index = regionOf(w[0], w[1], error);
+            return index >= 0 && applyRemoveWeatherRegion(doc_, index, error);
+        });
+    table.add("expect_weather_region")
+        .takes({word("ID"), number("WEIGHT").opt(), number("TOL").opt()})
+        .helps("the preset has the weather region ID (with that weight at the camera, within TOL)")
+        .handles([this, regionOf](W w, E error) {
+            const int index = regionOf(w[0], w[1], error);
+            if (index < 0) return false;
+            if (!w.has(2)) return true;
+            const double have =
+                weatherRegionWeight(doc_.preset().weatherRegions[std::size_t(index)], view_.camera.eye());
+            const double tol = w.has(3) ? w.number(3) : 0.0;
+            if (std::abs(have - w.number(2)) <= tol) return true;
+            error = "expect_weather_region " + w[1] + ": weight " + std::to_string(have) +
+                    " at the camera, want " + w[2];
+            return false;
+        });
+
     // --- checks and printing -------------------------------------------------------------
     table.add("print_weather")
         .ignoresExtraWords()
@@ -215,6 +281,14 @@ void Editor::declareWeatherScriptCommands() {
                     std::printf("  %s\n", weatherOverrideText(preset, o, s.name, keyed).c_str());
                 }
             }
+            const glm::dvec3 eye = view_.camera.eye();
+            for (const WeatherRegion& r : preset.weatherRegions)
+                std::printf(
+                    "weather region %s: %s at (%.6g, %.6g, %.6g) m, half extents (%.6g, %.6g, %.6g) m, "
+                    "yaw %.6g deg, blend %.6g m, priority %d, state %s; weight %.4f at the camera\n",
+                    r.id.c_str(), weatherRegionShapeName(r.shape), r.position.x, r.position.y, r.position.z,
+                    r.halfExtents.x, r.halfExtents.y, r.halfExtents.z, weatherRegionYawDeg(r), r.blend,
+                    r.priority, r.state.c_str(), weatherRegionWeight(r, eye));
             std::fflush(stdout);
             return true;
         });
@@ -253,7 +327,9 @@ void Editor::declareWeatherScriptCommands() {
                 return false;
             }
             // The words compared without "(playing)": a played transition counts by where it is.
+            // Nor the regions at the camera (print_weather lists them): the preview's own words.
             std::string haveText = have.describe(), wantText = want.describe();
+            if (const std::size_t p = haveText.find(" + regions "); p != std::string::npos) haveText.erase(p);
             if (const std::size_t p = haveText.find(" (playing)"); p != std::string::npos) haveText.erase(p);
             if (haveText == wantText) return true;
             error = "expect_weather_preview: have \"" + have.describe() + "\", want \"" + wantText + "\"";

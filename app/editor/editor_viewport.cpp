@@ -211,12 +211,16 @@ void Editor::drawViewport() {
             "RMB orbit/fly (WASDQE), Alt+LMB orbit, MMB pan, wheel zoom, F frame the selection,\n"
             "G game view, F11 maximize, F1 keys and workflow");
     // The Weather panel's preview: the picture is not the keyed one.
-    if (edit_.weather.preview.mode() != WeatherPreview::Mode::None) {
+    if (edit_.weather.preview.mode() != WeatherPreview::Mode::None ||
+        !edit_.weather.preview.regionsShown().empty()) {
         ImGui::SameLine();
         ImGui::TextColored(ImVec4(0.55f, 0.75f, 1.0f, 1.0f), "weather: %s",
                            edit_.weather.preview.describe().c_str());
         if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("Weather preview (View > Weather): the viewport only, never saved");
+            ImGui::SetTooltip(
+                "Weather preview (View > Weather) and the weather regions at the camera: the viewport only, "
+                "never "
+                "saved");
     }
 
     const ImVec2 avail = ImGui::GetContentRegionAvail();
@@ -412,6 +416,20 @@ void Editor::viewportInteraction(bool hovered, glm::dvec2 mouse, glm::dvec2 orig
         // Light blue-white: apart from the fog volumes' orange and grey.
         drawVolumeOutline(dl, origin, frame, view_.size, shapeOf(sky_.state.cloudVolumes[i]),
                           selected ? overlayColour(0.75, 0.88, 1.0) : overlayColour(0.75, 0.88, 1.0, 0.45),
+                          selected ? 2.0f : 1.0f);
+    }
+    // Weather regions while the Weather panel is open: violet, the selected one brighter.
+    for (std::size_t i = 0; edit_.weather.shown && i < doc_.preset().weatherRegions.size(); ++i) {
+        const WeatherRegion& r = doc_.preset().weatherRegions[i];
+        FogVolume outline;
+        outline.shape =
+            r.shape == WeatherRegionShape::Ellipsoid ? FogVolumeShape::Ellipsoid : FogVolumeShape::Box;
+        outline.position = r.position;
+        outline.rotation = r.rotation;
+        outline.halfExtents = r.halfExtents;
+        const bool selected = edit_.weather.selectedRegion == int(i);
+        drawVolumeOutline(dl, origin, frame, view_.size, outline,
+                          selected ? overlayColour(0.8, 0.55, 1.0) : overlayColour(0.7, 0.5, 1.0, 0.45),
                           selected ? 2.0f : 1.0f);
     }
     for (std::size_t i = 0; i < sky_.state.emitters.size(); ++i)

@@ -4,7 +4,10 @@
 // current time next to the one the state gives: "keyed 0.3 -> 0.97 storm"),
 // their edits (weather_edit.hpp, one undo step each) and the viewport's
 // weather preview (weather_preview.hpp: none, a state, a transition A -> B at
-// a fraction, Play transition on the editor's clock). The preview is view
+// a fraction, Play transition on the editor's clock), and the weather
+// regions (a list with each one's weight at the camera, Add box / Add
+// ellipsoid around the camera's target, Remove, and the selected region's
+// fields, one undo step per edit, a drag one step). The preview is view
 // state: it never edits the document.
 #include "panels.hpp"
 #include "weather_edit.hpp"
@@ -16,6 +19,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -253,14 +257,144 @@ void drawAddOverride(Document& doc, int state, double timeHours, std::string& st
     if (!error.empty()) status = error;
 }
 
+/// The selected region's fields; each change is one undo step (a drag one).
+void drawRegionFields(Document& doc, int index, std::string& status) {
+    WeatherRegion r = doc.preset().weatherRegions[std::size_t(index)];
+    std::string error;
+    const auto set = [&](bool continuous) { applySetWeatherRegion(doc, index, r, continuous, error); };
+    const auto closeDrag = [&] {
+        if (ImGui::IsItemDeactivated()) doc.closeMerge();
+    };
+    std::string id = r.id;
+    if (ImGui::InputText("Id", &id, ImGuiInputTextFlags_EnterReturnsTrue) && id != r.id) {
+        r.id = id;
+        set(false);
+    }
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("The region's id (Enter to apply): A-Z a-z 0-9 _ - ., unique");
+    if (ImGui::InputText("Name", &r.name)) set(true);
+    closeDrag();
+    int shape = int(r.shape);
+    const char* shapes[] = {"box", "ellipsoid"};
+    if (ImGui::Combo("Shape", &shape, shapes, 2) && shape != int(r.shape)) {
+        r.shape = WeatherRegionShape(shape);
+        set(false);
+    }
+    std::string state = r.state;
+    if (stateCombo("State", doc.preset(), state) && state != r.state) {
+        r.state = state;
+        set(false);
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("The state that holds inside; none = the keyed values");
+    const double lo = -kWeatherRegionMaxCoordinate, hi = kWeatherRegionMaxCoordinate;
+    if (ImGui::DragScalarN("Position [m]", ImGuiDataType_Double, &r.position.x, 3, 10.0f, &lo, &hi, "%.0f",
+                           ImGuiSliderFlags_AlwaysClamp))
+        set(true);
+    closeDrag();
+    const double minHalf = kWeatherRegionMinHalfExtent, maxHalf = kWeatherRegionMaxHalfExtent;
+    if (ImGui::DragScalarN("Half extents [m]", ImGuiDataType_Double, &r.halfExtents.x, 3, 10.0f, &minHalf,
+                           &maxHalf, "%.0f", ImGuiSliderFlags_AlwaysClamp))
+        set(true);
+    closeDrag();
+    double yaw = weatherRegionYawDeg(r);
+    const double minYaw = -180.0, maxYaw = 180.0;
+    if (ImGui::DragScalar("Yaw [deg]", ImGuiDataType_Double, &yaw, 0.5f, &minYaw, &maxYaw, "%.1f",
+                          ImGuiSliderFlags_AlwaysClamp)) {
+        setWeatherRegionYawDeg(r, yaw);
+        set(true);
+    }
+    closeDrag();
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Turn about +Y, counter-clockwise seen from above");
+    const double minBlend = 0.0, maxBlend = kWeatherRegionMaxBlend;
+    if (ImGui::DragScalar("Blend [m]", ImGuiDataType_Double, &r.blend, 5.0f, &minBlend, &maxBlend, "%.0f",
+                          ImGuiSliderFlags_AlwaysClamp))
+        set(true);
+    closeDrag();
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("The soft edge, inwards from the surface: the state holds fully this deep inside");
+    int priority = r.priority;
+    if (ImGui::InputInt("Priority", &priority) && priority != r.priority) {
+        r.priority = std::clamp(priority, -kWeatherRegionMaxPriority, kWeatherRegionMaxPriority);
+        set(false);
+    }
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Higher over lower; equal ones in list order, the later on top");
+    if (!error.empty()) {
+        status = error;
+        ImGui::TextColored(kErrorColour, "%s", error.c_str());
+    }
+}
+
+/// The region list (each with its weight at the camera) and its buttons.
+void drawRegions(Document& doc, WeatherPanel& panel, const CameraController& camera, std::string& status) {
+    const Preset& preset = doc.preset();
+    const glm::dvec3 eye = camera.eye();
+    ImGui::TextUnformatted("Regions");
+    ImGui::SameLine();
+    bool atCamera = panel.preview.regionsAtCamera();
+    if (ImGui::Checkbox("applied at the camera", &atCamera)) panel.preview.setRegionsAtCamera(atCamera);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("The viewport shows the weather at its camera, as a game does (regionalWeather)");
+    const int count = int(preset.weatherRegions.size());
+    if (panel.selectedRegion >= count) panel.selectedRegion = count - 1;
+    if (panel.selectedRegion < 0 && count > 0) panel.selectedRegion = 0;
+    if (ImGui::BeginListBox(
+            "##regions",
+            ImVec2(-1.0f, ImGui::GetTextLineHeightWithSpacing() * float(std::clamp(count, 2, 5)) + 6.0f))) {
+        for (int i = 0; i < count; ++i) {
+            const WeatherRegion& r = preset.weatherRegions[std::size_t(i)];
+            char weight[32];
+            std::snprintf(weight, sizeof weight, "%.2f", weatherRegionWeight(r, eye));
+            const std::string item = r.id + " (" + weatherRegionShapeName(r.shape) + ", " + r.state +
+                                     ") at camera " + weight + "##region" + std::to_string(i);
+            if (ImGui::Selectable(item.c_str(), i == panel.selectedRegion)) panel.selectedRegion = i;
+        }
+        ImGui::EndListBox();
+    }
+    std::string error;
+    const std::string state = panel.selectedState >= 0 && panel.selectedState < int(preset.weather.size())
+                                  ? preset.weather[std::size_t(panel.selectedState)].name
+                                  : std::string("none");
+    for (WeatherRegionShape shape : {WeatherRegionShape::Box, WeatherRegionShape::Ellipsoid}) {
+        const std::string label = std::string("Add ") + weatherRegionShapeName(shape);
+        if (shape != WeatherRegionShape::Box) ImGui::SameLine();
+        if (ImGui::Button(label.c_str())) {
+            const WeatherRegion r = newWeatherRegion(preset, shape, state, camera.state().target);
+            if (applyAddWeatherRegion(doc, r, error)) {
+                panel.selectedRegion = int(doc.preset().weatherRegions.size()) - 1;
+                status = "Added weather region " + r.id + " (" + state + ")";
+            }
+        }
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("A region holding the selected state (%s) around the camera's target",
+                              state.c_str());
+    }
+    ImGui::BeginDisabled(panel.selectedRegion < 0);
+    ImGui::SameLine();
+    if (ImGui::Button("Remove##region") && panel.selectedRegion >= 0) {
+        const std::string id = preset.weatherRegions[std::size_t(panel.selectedRegion)].id;
+        if (applyRemoveWeatherRegion(doc, panel.selectedRegion, error))
+            status = "Removed weather region " + id;
+    }
+    ImGui::EndDisabled();
+    if (!error.empty()) status = error;
+    if (panel.selectedRegion >= 0 && panel.selectedRegion < int(doc.preset().weatherRegions.size())) {
+        ImGui::PushID("region_fields");
+        drawRegionFields(doc, panel.selectedRegion, status);
+        ImGui::PopID();
+    }
+}
+
 }  // namespace
 
 void drawWeatherPanel(Document& doc, EditState& edit, double timeHours, double nowSeconds,
-                      std::string& status) {
+                      const CameraController& camera, std::string& status) {
     WeatherPanel& panel = edit.weather;
     drawPreview(doc, panel, nowSeconds, status);
     ImGui::Separator();
     drawStates(doc, panel, status);
+    ImGui::Separator();
+    drawRegions(doc, panel, camera, status);
     const Preset& preset = doc.preset();
     if (panel.selectedState < 0 || panel.selectedState >= int(preset.weather.size())) {
         ImGui::TextDisabled("No weather state: add one (a name, then Add)");

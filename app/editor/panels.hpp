@@ -46,8 +46,10 @@ void drawTimeline(Document& doc, EditState& edit, Playback& playback, const Acti
 /// changing and removing overrides (weather_edit.hpp, one undo step each);
 /// and the viewport's preview (edit.weather.preview: none, a state, a
 /// transition at a fraction, Play transition from the clock `nowSeconds`
-/// [s]), which never edits the document.
-void drawWeatherPanel(Document& doc, EditState& edit, double timeHours, double nowSeconds, std::string& status);
+/// [s]), which never edits the document; the weather regions, each with its
+/// weight at `camera`'s eye, added (around its target), edited and removed.
+void drawWeatherPanel(Document& doc, EditState& edit, double timeHours, double nowSeconds,
+                      const CameraController& camera, std::string& status);
 
 /// The timeline's key operations (the action table's timeline_delete_keys,
 /// timeline_copy_key and timeline_paste_key, and the timeline's buttons).

@@ -7,6 +7,9 @@
 #include <aerial/param_table.hpp>
 #include <aerial/weather.hpp>
 
+#include <glm/common.hpp>
+#include <glm/gtc/quaternion.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -15,7 +18,7 @@
 namespace aerial::editor {
 namespace {
 
-constexpr std::string_view kStatesPointer = "/weather/states";
+constexpr std::string_view kWeatherPointer = "/weather";
 
 /// validatePreset's errors at `pointer` or below it.
 std::vector<PresetIssue> issuesAt(const Preset& preset, const std::string& pointer) {
@@ -43,19 +46,21 @@ std::string newIssue(const std::vector<PresetIssue>& before, const std::vector<P
 }
 
 /// Runs `edit` on `preset` and keeps it when validatePreset finds no error
-/// in the weather states that it did not find before; otherwise restores
-/// the states and sets `error` to the first new one. (A duplicate name or
-/// target is reported at the later of the two, so the whole of the states
-/// is compared, not only the one edited.)
+/// in the weather (states and regions) that it did not find before;
+/// otherwise restores them and sets `error` to the first new one. (A
+/// duplicate name, target or id is reported at the later of the two, so the
+/// whole of the weather is compared, not only what was edited.)
 template <class Edit>
 bool checkedEdit(Preset& preset, std::string& error, Edit&& edit) {
-    const std::string at(kStatesPointer);
+    const std::string at(kWeatherPointer);
     const std::vector<PresetIssue> before = issuesAt(preset, at);
     std::vector<WeatherState> saved = preset.weather;
+    std::vector<WeatherRegion> savedRegions = preset.weatherRegions;
     edit(preset);
     const std::string message = newIssue(before, issuesAt(preset, at));
     if (!message.empty()) {
         preset.weather = std::move(saved);
+        preset.weatherRegions = std::move(savedRegions);
         error = message;
         return false;
     }
@@ -133,12 +138,19 @@ bool renameWeatherState(Preset& preset, int state, const std::string& name, std:
         error = "no weather state " + std::to_string(state);
         return false;
     }
-    return checkedEdit(preset, error, [&](Preset& p) { p.weather[std::size_t(state)].name = name; });
+    return checkedEdit(preset, error, [&](Preset& p) {
+        std::string& old = p.weather[std::size_t(state)].name;
+        for (WeatherRegion& r : p.weatherRegions)  // the regions that hold it follow
+            if (r.state == old) r.state = name;
+        old = name;
+    });
 }
 
 bool removeWeatherState(Preset& preset, int state) {
     if (!validState(preset, state)) return false;
+    const std::string name = preset.weather[std::size_t(state)].name;
     preset.weather.erase(preset.weather.begin() + state);
+    std::erase_if(preset.weatherRegions, [&](const WeatherRegion& r) { return r.state == name; });
     return true;
 }
 
@@ -290,6 +302,152 @@ bool applyRemoveWeatherOverride(Document& doc, int state, int index, std::string
                                 e = "no such weather override";
                                 return false;
                             });
+}
+
+int weatherRegionIndex(const Preset& preset, std::string_view id) {
+    for (std::size_t i = 0; i < preset.weatherRegions.size(); ++i)
+        if (preset.weatherRegions[i].id == id) return int(i);
+    return -1;
+}
+
+std::string uniqueWeatherRegionId(const Preset& preset, std::string_view base) {
+    std::string id(base);
+    for (int n = 2; weatherRegionIndex(preset, id) >= 0; ++n)
+        id = std::string(base) + "_" + std::to_string(n);
+    return id;
+}
+
+WeatherRegion newWeatherRegion(const Preset& preset, WeatherRegionShape shape, const std::string& state,
+                               const glm::dvec3& centre) {
+    WeatherRegion r;
+    r.id = uniqueWeatherRegionId(preset, "region");
+    r.shape = shape;
+    r.position =
+        glm::clamp(centre, glm::dvec3(-kWeatherRegionMaxCoordinate), glm::dvec3(kWeatherRegionMaxCoordinate));
+    if (!std::isfinite(r.position.x + r.position.y + r.position.z)) r.position = glm::dvec3(0.0);
+    r.halfExtents = glm::dvec3(1000.0, 500.0, 1000.0);
+    r.blend = 200.0;
+    r.state = state;
+    return r;
+}
+
+const char* weatherRegionShapeName(WeatherRegionShape shape) {
+    return shape == WeatherRegionShape::Ellipsoid ? "ellipsoid" : "box";
+}
+
+bool weatherRegionShapeFromName(std::string_view name, WeatherRegionShape& shape) {
+    if (name == "box")
+        shape = WeatherRegionShape::Box;
+    else if (name == "ellipsoid")
+        shape = WeatherRegionShape::Ellipsoid;
+    else
+        return false;
+    return true;
+}
+
+double weatherRegionYawDeg(const WeatherRegion& region) {
+    // Where the rotation takes +X, seen from above: atan2(-z, x) is the turn about +Y.
+    const glm::dvec3 x = glm::normalize(region.rotation) * glm::dvec3(1.0, 0.0, 0.0);
+    const double yaw = std::atan2(-x.z, x.x) * 180.0 / 3.14159265358979323846;
+    return yaw <= -180.0 ? yaw + 360.0 : yaw;
+}
+
+void setWeatherRegionYawDeg(WeatherRegion& region, double degrees) {
+    const double half = 0.5 * degrees * 3.14159265358979323846 / 180.0;
+    region.rotation = glm::dquat(std::cos(half), 0.0, std::sin(half), 0.0);
+}
+
+bool setWeatherRegionField(WeatherRegion& region, std::string_view key,
+                           const std::vector<std::string>& values, std::string& error) {
+    const std::string k(key);
+    auto count = [&](std::size_t n) {
+        if (values.size() == n) return true;
+        error = k + " takes " + std::to_string(n) + " value(s)";
+        return false;
+    };
+    auto numbers = [&](double* out, std::size_t n) {
+        if (!count(n)) return false;
+        for (std::size_t i = 0; i < n; ++i)
+            if (!toNumber(values[i], out[i])) {
+                error = k + ": \"" + values[i] + "\" is not a number";
+                return false;
+            }
+        return true;
+    };
+    double v[3] = {0.0, 0.0, 0.0};
+    if (key == "name") {  // the words joined by spaces
+        region.name.clear();
+        for (const std::string& word : values) region.name += (region.name.empty() ? "" : " ") + word;
+    } else if (key == "id" || key == "state") {
+        if (!count(1)) return false;
+        (key == "id" ? region.id : region.state) = values[0];
+    } else if (key == "shape") {
+        if (!count(1)) return false;
+        if (!weatherRegionShapeFromName(values[0], region.shape)) {
+            error = "shape \"" + values[0] + "\" is not one of box, ellipsoid";
+            return false;
+        }
+    } else if (key == "position_m" || key == "half_extents_m") {
+        if (!numbers(v, 3)) return false;
+        (key == "position_m" ? region.position : region.halfExtents) = glm::dvec3(v[0], v[1], v[2]);
+    } else if (key == "blend_m" || key == "yaw_deg" || key == "priority") {
+        if (!numbers(v, 1)) return false;
+        if (key == "blend_m") region.blend = v[0];
+        if (key == "yaw_deg") setWeatherRegionYawDeg(region, v[0]);
+        if (key == "priority") {
+            if (!(std::trunc(v[0]) == v[0] && std::abs(v[0]) <= kWeatherRegionMaxPriority)) {
+                error = "priority \"" + values[0] + "\" is not an integer in -1000..1000";
+                return false;
+            }
+            region.priority = int(v[0]);
+        }
+    } else {
+        error = "unknown region field \"" + k +
+                "\" (id, name, shape, position_m, half_extents_m, yaw_deg, blend_m, priority, state)";
+        return false;
+    }
+    return true;
+}
+
+bool addWeatherRegion(Preset& preset, const WeatherRegion& region, std::string& error) {
+    return checkedEdit(preset, error, [&](Preset& p) { p.weatherRegions.push_back(region); });
+}
+
+bool setWeatherRegion(Preset& preset, int index, const WeatherRegion& region, std::string& error) {
+    if (index < 0 || std::size_t(index) >= preset.weatherRegions.size()) {
+        error = "no weather region " + std::to_string(index);
+        return false;
+    }
+    return checkedEdit(preset, error, [&](Preset& p) { p.weatherRegions[std::size_t(index)] = region; });
+}
+
+bool removeWeatherRegion(Preset& preset, int index) {
+    if (index < 0 || std::size_t(index) >= preset.weatherRegions.size()) return false;
+    preset.weatherRegions.erase(preset.weatherRegions.begin() + index);
+    return true;
+}
+
+bool applyAddWeatherRegion(Document& doc, const WeatherRegion& region, std::string& error) {
+    return applyWeatherEdit(doc, "Add weather region " + region.id, "", error,
+                            [&](Preset& p, std::string& e) { return addWeatherRegion(p, region, e); });
+}
+
+bool applySetWeatherRegion(Document& doc, int index, const WeatherRegion& region, bool continuous,
+                           std::string& error) {
+    const std::string merge = continuous ? "weather_region:" + std::to_string(index) : std::string();
+    return applyWeatherEdit(doc, "Weather region " + region.id, merge, error,
+                            [&](Preset& p, std::string& e) { return setWeatherRegion(p, index, region, e); });
+}
+
+bool applyRemoveWeatherRegion(Document& doc, int index, std::string& error) {
+    const std::string id = index >= 0 && std::size_t(index) < doc.preset().weatherRegions.size()
+                               ? doc.preset().weatherRegions[std::size_t(index)].id
+                               : std::string("?");
+    return applyWeatherEdit(doc, "Remove weather region " + id, "", error, [&](Preset& p, std::string& e) {
+        if (removeWeatherRegion(p, index)) return true;
+        e = "no weather region " + std::to_string(index);
+        return false;
+    });
 }
 
 std::vector<ParamRef> animatableParams(const Preset& preset) {

@@ -1,9 +1,10 @@
 // editor/weather_edit.hpp — the edits of the Weather panel (no GUI,
 // unit-tested): a preset's weather states (aerial/weather_state.hpp) added,
-// renamed and removed, their overrides added, changed and removed, and the
+// renamed and removed, their overrides added, changed and removed, the
 // panel's line for an override ("Cloud coverage: set 0.97 (keyed 0.3 ->
-// 0.97 storm)"). The viewport's preview of the weather is
-// weather_preview.hpp.
+// 0.97 storm)"), and the weather regions added, changed and removed (a
+// state's rename carries the regions that hold it; removing a state removes
+// them too). The viewport's preview of the weather is weather_preview.hpp.
 //
 // Each edit checks its result with core's validatePreset, so a refused name
 // or value says exactly what the loader would ("\"none\" is taken: it names
@@ -100,6 +101,44 @@ bool applyAddWeatherOverride(Document& doc, int state, const WeatherOverride& o,
 bool applySetWeatherOverride(Document& doc, int state, int index, WeatherOverrideMode mode,
                              const glm::dvec3& value, bool continuous, std::string& error);
 bool applyRemoveWeatherOverride(Document& doc, int state, int index, std::string& error);
+
+// ---------------------------------------------------------------------------
+// Weather regions (weather_state.hpp). The same rules: refused with
+// validatePreset's message, applied as one undo step.
+
+/// The index of the region with id `id` in preset.weatherRegions, or -1.
+int weatherRegionIndex(const Preset& preset, std::string_view id);
+/// A region id the preset does not use yet: `base`, else `base_2`, ...
+std::string uniqueWeatherRegionId(const Preset& preset, std::string_view base);
+/// A new region: a fresh id ("region"), `shape`, holding `state`, centred on
+/// `centre` [m] (the camera's target), 2 km x 1 km x 2 km, a 200 m blend.
+WeatherRegion newWeatherRegion(const Preset& preset, WeatherRegionShape shape, const std::string& state,
+                               const glm::dvec3& centre);
+/// "box", "ellipsoid"; and the inverse (false for another word).
+const char* weatherRegionShapeName(WeatherRegionShape shape);
+bool weatherRegionShapeFromName(std::string_view name, WeatherRegionShape& shape);
+/// The region's heading [deg]: its rotation's turn about +Y (from +X towards
+/// -Z, i.e. counter-clockwise seen from above), in (-180, 180]. Setting it
+/// replaces the rotation by that turn alone (a region tilted in a file
+/// loses its tilt).
+double weatherRegionYawDeg(const WeatherRegion& region);
+void setWeatherRegionYawDeg(WeatherRegion& region, double degrees);
+/// Sets one field from the script's words, the keys as in a file ("id",
+/// "name" (its words joined by spaces), "shape", "position_m" X Y Z, "half_extents_m" X Y Z, "blend_m",
+/// "priority", "state") plus "yaw_deg"; false with `error` for an unknown
+/// key or a value that is not one (ranges are validatePreset's).
+bool setWeatherRegionField(WeatherRegion& region, std::string_view key,
+                           const std::vector<std::string>& values, std::string& error);
+
+bool addWeatherRegion(Preset& preset, const WeatherRegion& region, std::string& error);
+/// Replaces region `index` by `region` (every field, the id included).
+bool setWeatherRegion(Preset& preset, int index, const WeatherRegion& region, std::string& error);
+bool removeWeatherRegion(Preset& preset, int index);
+
+bool applyAddWeatherRegion(Document& doc, const WeatherRegion& region, std::string& error);
+bool applySetWeatherRegion(Document& doc, int index, const WeatherRegion& region, bool continuous,
+                           std::string& error);
+bool applyRemoveWeatherRegion(Document& doc, int index, std::string& error);
 
 /// Every animatable parameter of the preset, globals first, then each
 /// volume's, emitter's and cloud volume's (what an override may target), in

@@ -72,7 +72,7 @@ void WeatherPreview::stop() {
     weather_.reset();
 }
 
-bool WeatherPreview::update(const Preset& preset, double nowSeconds) {
+bool WeatherPreview::update(const Preset& preset, double nowSeconds, const glm::dvec3* camera) {
     // A state the preview names went (removed, renamed): the keyed values.
     const auto known = [&](const std::string& name) {
         return name == "none" || weatherStateIndex(preset, name) >= 0;
@@ -98,6 +98,17 @@ bool WeatherPreview::update(const Preset& preset, double nowSeconds) {
     } else if (mode_ == Mode::Transition) {
         transitionWeather(preset, from_, to_, fraction_, next);
     }
+    regionsShown_.clear();
+    if (regionsAtCamera_ && camera) {
+        regionalWeather(preset, *camera, next, next);
+        for (const WeatherRegion& r : preset.weatherRegions) {
+            const double w = weatherRegionWeight(r, *camera);
+            if (!(w > 0.0)) continue;
+            char weight[32];
+            std::snprintf(weight, sizeof weight, " %.2f", w);
+            regionsShown_ += (regionsShown_.empty() ? "" : ", ") + r.id + weight;
+        }
+    }
     if (next.weights == mix_.weights) return false;
     mix_ = std::move(next);
     ++revision_;
@@ -105,13 +116,14 @@ bool WeatherPreview::update(const Preset& preset, double nowSeconds) {
 }
 
 std::string WeatherPreview::describe() const {
-    if (mode_ == Mode::State) return state_;
+    std::string text = "none";
+    if (mode_ == Mode::State) text = state_;
     if (mode_ == Mode::Transition) {
         char fraction[32];
         std::snprintf(fraction, sizeof fraction, "%.2f", fraction_);
-        return from_ + " -> " + to_ + " " + fraction + (playing_ ? " (playing)" : "");
+        text = from_ + " -> " + to_ + " " + fraction + (playing_ ? " (playing)" : "");
     }
-    return "none";
+    return regionsShown_.empty() ? text : text + " + regions " + regionsShown_;
 }
 
 bool parseWeatherPreview(const Preset& preset, const std::string& text, WeatherPreview& preview,

@@ -5,14 +5,20 @@
 // only (no GUI, unit-tested): it never edits the document, is never saved
 // and is not in the undo history.
 //
+// The preset's weather regions are applied at the viewport's camera on top
+// of what the preview shows (as a game does with regionalWeather), unless
+// turned off.
+//
 //   WeatherPreview preview;
 //   preview.play(doc.preset(), "clear", "storm", 10.0, nowSeconds, error);
-//   preview.update(doc.preset(), nowSeconds);        // every frame
-//   compiled.evaluate(t, preview.mix(), state);      // SkyService::evaluate
+//   preview.update(doc.preset(), nowSeconds, &cameraEye);  // every frame
+//   compiled.evaluate(t, preview.mix(), state);             // SkyService::evaluate
 #pragma once
 
 #include <aerial/preset.hpp>
 #include <aerial/weather.hpp>
+
+#include <glm/vec3.hpp>
 
 #include <cstdint>
 #include <optional>
@@ -43,9 +49,18 @@ public:
     void stop();
 
     /// Recomputes the mix for `preset` at the clock's `nowSeconds` (a
-    /// played transition ends at `to`, fraction 1); a state that was removed
-    /// or renamed ends the preview (None). True when the mix changed.
-    bool update(const Preset& preset, double nowSeconds);
+    /// played transition ends at `to`, fraction 1), then applies the
+    /// preset's weather regions at `camera` [m, world] when it is given and
+    /// regionsAtCamera(); a state that was removed or renamed ends the
+    /// preview (None). True when the mix changed.
+    bool update(const Preset& preset, double nowSeconds, const glm::dvec3* camera = nullptr);
+
+    /// Whether update() applies the weather regions at the camera (default on).
+    void setRegionsAtCamera(bool on) { regionsAtCamera_ = on; }
+    bool regionsAtCamera() const { return regionsAtCamera_; }
+    /// The regions that weighed at the camera in the last update: "ridge_storm
+    /// 0.42, valley 1.00"; "" when none did.
+    const std::string& regionsShown() const { return regionsShown_; }
 
     Mode mode() const { return mode_; }
     const std::string& state() const { return state_; }
@@ -59,7 +74,8 @@ public:
     const WeatherMix& mix() const { return mix_; }
     /// Bumped whenever the mix changes (what the viewport compares).
     std::uint64_t revision() const { return revision_; }
-    /// "none", "storm", "clear -> storm 0.50" (the script's and the viewport's words).
+    /// "none", "storm", "clear -> storm 0.50" (the script's and the viewport's
+    /// words), then " + regions ridge_storm 0.42" while a region weighs at the camera.
     std::string describe() const;
 
 private:
@@ -72,6 +88,8 @@ private:
     double playStart_ = 0.0, playSeconds_ = 0.0;
     WeatherMix mix_;
     std::uint64_t revision_ = 0;
+    bool regionsAtCamera_ = true;
+    std::string regionsShown_;
 };
 
 /// Reads a preview as the script writes it: "none", a state's name, or

@@ -222,6 +222,8 @@ class Validate(unittest.TestCase):
         ("weather_duplicate_name.json", "/weather/states/1/name", 5, 14, 'a second weather state named "storm"'),
         ("weather_out_of_range.json", "/weather/states/0/overrides/0/set", 4, 41, 'out of range: 1.5 is not in 0..1'),
         ("weather_unknown_volume.json", "/weather/states/0/overrides/0/volume", 4, 16, 'no volume with id "nope"'),
+        ("weather_region_unknown_state.json", "/weather/regions/0/state", 4, 82, 'no weather state "fog" (the preset has none, storm)'),
+        ("weather_region_bad_shape.json", "/weather/regions/0/shape", 4, 30, 'unknown value "cylinder"; expected one of box, ellipsoid'),
         ("cloud_volume_zero_extent.json", "/cloud_volumes/0/half_extents_m/1", 5, 61,
          "out of range: 0 is not in 1..1e+07 m"),
         ("cloud_volume_unknown_target.json", "/tracks/1/cloud_volume", 6, 22, 'no cloud volume with id "nope"'),
@@ -409,6 +411,102 @@ class Eval(unittest.TestCase):
         self.assertIn("Stormy night", out)
         self.assertIn("fog.density_per_m", out)
         self.assertRegex(out, r"(?m)^sun +elevation")
+
+
+class EvalWeatherRegions(unittest.TestCase):
+    """`aerial eval --camera`: the preset's weather regions applied at a point
+    on top of --weather / --transition (aerial/weather.hpp, regionalWeather);
+    clear_summer_day's storm ellipsoid over the ridge."""
+
+    CATEGORIES = ("clouds", "fog", "wind", "haze", "light", "lightning", "other")
+
+    def region(self):
+        with open(preset("clear_summer_day")) as f:
+            return json.load(f)["weather"]["regions"][0]
+
+    def world(self, region, local):
+        """position + rotation * local, the quaternion [x, y, z, w] applied by hand."""
+        x, y, z, w = region["rotation_xyzw"]
+        u = (x, y, z)
+        cross = lambda a, b: (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+        t = tuple(2 * c for c in cross(u, local))
+        r = [local[i] + w * t[i] + cross(u, t)[i] for i in range(3)]
+        return [region["position_m"][i] + r[i] for i in range(3)]
+
+    def eval_at(self, camera, *weather):
+        return run_json(self, "eval", preset("clear_summer_day"), "--time", "14:00", "--no-light", *weather,
+                        "--camera=" + ",".join(repr(c) for c in camera))
+
+    def test_regions_are_listed_without_a_camera(self):
+        r = run_json(self, "eval", preset("clear_summer_day"), "--time", "14:00", "--no-light")
+        regions = r["weather"]["regions"]
+        self.assertEqual([g["id"] for g in regions], ["ridge_storm"])
+        self.assertEqual(regions[0], self.region())  # as the file spells it, no weight
+        self.assertNotIn("camera", r["weather"])
+
+    def test_inside_the_region_its_state_holds_exactly(self):
+        region = self.region()
+        inside = self.eval_at(region["position_m"], "--weather", "clear")
+        storm = run_json(self, "eval", preset("clear_summer_day"), "--time", "14:00", "--no-light",
+                         "--weather", "storm")
+        self.assertEqual(inside["weather"]["regions"][0]["weight"], 1.0)
+        weights = inside["weather"]["camera"]["weights"]
+        for c in self.CATEGORIES:
+            self.assertEqual((weights["clear"][c], weights["overcast"][c], weights["storm"][c]), (0.0, 0.0, 1.0))
+        self.assertEqual(inside["parameters"], storm["parameters"])  # every number, exactly
+        self.assertEqual(inside["weather"]["camera"]["position_m"], region["position_m"])
+
+    def test_outside_the_global_weather_is_untouched(self):
+        for weather in (("--weather", "clear"), ("--transition", "clear:overcast:0.4"), ()):
+            with self.subTest(weather=weather):
+                far = self.eval_at([0.0, 2.0, 0.0], *weather)
+                plain = run_json(self, "eval", preset("clear_summer_day"), "--time", "14:00", "--no-light", *weather)
+                self.assertEqual(far["weather"]["regions"][0]["weight"], 0.0)
+                self.assertEqual(far["parameters"], plain["parameters"])
+                if weather and weather[0] == "--transition":
+                    self.assertEqual(far["weather"]["camera"]["weights"], plain["weather"]["applied"]["weights"])
+
+    def test_half_way_through_the_blend_band(self):
+        # On the region's local +X axis, half the blend inside the surface:
+        # the depth is exactly 400 m (an axis of the ellipsoid), the weight
+        # smoothstep(0.5) = 0.5, so clear and storm share every category.
+        region = self.region()
+        depth = region["blend_m"] / 2
+        camera = self.world(region, (region["half_extents_m"][0] - depth, 0.0, 0.0))
+        r = self.eval_at(camera, "--weather", "clear")
+        self.assertAlmostEqual(r["weather"]["regions"][0]["weight"], 0.5, delta=1e-9)
+        for c in self.CATEGORIES:
+            self.assertAlmostEqual(r["weather"]["camera"]["weights"]["storm"][c], 0.5, delta=1e-9)
+            self.assertAlmostEqual(r["weather"]["camera"]["weights"]["clear"][c], 0.5, delta=1e-9)
+        # A cloud coverage half-way between the two states' (both "set").
+        self.assertAlmostEqual(r["parameters"]["clouds"]["coverage"], 0.5 * 0.12 + 0.5 * 0.97, delta=1e-9)
+        # 1 m either side the weight moves by at most 1.5 / blend per metre.
+        for step in (-1.0, 1.0):
+            moved = self.world(region, (region["half_extents_m"][0] - depth + step, 0.0, 0.0))
+            w = self.eval_at(moved)["weather"]["regions"][0]["weight"]
+            self.assertLessEqual(abs(w - 0.5), 1.5 / region["blend_m"] + 1e-9)
+        code, out, err = run("eval", preset("clear_summer_day"), "--time", "14:00", "--no-light",
+                             "--camera=" + ",".join(repr(c) for c in camera))
+        self.assertEqual(code, 0, err)
+        self.assertIn('region ridge_storm "Storm over the ridge": ellipsoid', out)
+        self.assertIn("weight 0.5 at the camera", out)
+
+    def test_a_bad_camera_is_a_usage_error(self):
+        for text, why in (("1,2", "is not three finite numbers x,y,z"), ("0,0,2e7", "is out of range")):
+            code, out, err = run("eval", preset("clear_summer_day"), "--time", "12", "--camera=" + text)
+            self.assertEqual(code, 2, err)
+            self.assertEqual(out, "")
+            self.assertIn("--camera: \"%s\" %s" % (text, why), err)
+
+    def test_the_bake_manifest_lists_the_regions(self):
+        out_dir = os.path.join(WORK, "bake_regions")
+        code, out, err = run("bake", preset("clear_summer_day"), "--out", out_dir, "--step", "12h",
+                             "--size", "32x16", "--sky-view-size", "64x40", "--far-fog-size", "32x16")
+        self.assertEqual(code, 0, err)
+        with open(os.path.join(out_dir, "manifest.json")) as f:
+            weather = json.load(f)["weather"]
+        self.assertEqual(weather["regions"], [self.region()])
+        self.assertIn("smoothstep(clamp(d / blend_m, 0, 1))", weather["regions_blend"])
 
 
 class Sky(unittest.TestCase):

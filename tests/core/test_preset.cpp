@@ -350,6 +350,8 @@ const Fixture kFixtures[] = {
     {"weather_duplicate_name.json", "/weather/states/1/name", 5, 14, "a second weather state named \"storm\""},
     {"weather_out_of_range.json", "/weather/states/0/overrides/0/set", 4, 41, "out of range: 1.5 is not in 0..1"},
     {"weather_unknown_volume.json", "/weather/states/0/overrides/0/volume", 4, 16, "no volume with id \"nope\""},
+    {"weather_region_unknown_state.json", "/weather/regions/0/state", 4, 82, "no weather state \"fog\" (the preset has none, storm)"},
+    {"weather_region_bad_shape.json", "/weather/regions/0/shape", 4, 30, "unknown value \"cylinder\"; expected one of box, ellipsoid"},
 };
 
 TEST(Preset, MalformedFilesGiveLocatedErrors) {

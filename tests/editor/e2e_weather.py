@@ -1,6 +1,7 @@
 """The editor's weather end to end (editor_e2e.py's case `weather`): the
 viewport's weather preview darkens the picture and never touches the file;
-states and overrides added through the Weather panel's commands are saved.
+states, overrides and regions added through the Weather panel's commands
+are saved, and a region over the camera changes what the viewport draws.
 Kept beside editor_e2e.py, which runs it with its own helpers."""
 import os
 import shutil
@@ -102,6 +103,46 @@ quit
     h.check(overrides[0] == {"param": "clouds.coverage", "add": 0.25}, "saved %s" % overrides[0])
     h.check(overrides[1] == {"param": "fog.density_per_m", "scale": 2}, "saved %s" % overrides[1])
     h.check(len(states["storm"]["overrides"]) == 11, "the storm lost overrides")
+
+    # Regions: added around the camera's target, edited, one undo step each;
+    # a region over the camera changes what the viewport draws; saved.
+    regions_window = env.path("weather_regions.png")
+    p = env.run(env.script("weather_regions.txt", """
+open {preset}
+show_weather on
+expect_weather_region ridge_storm 0 0
+weather_add_region valley box storm
+weather_set_region valley half_extents_m 5000 5000 5000
+weather_set_region valley blend_m 0
+weather_set_region valley name Storm over the camera
+weather_set_region valley yaw_deg 30
+expect_undo 5
+expect_weather_region valley 1 0
+expect_viewport_param clouds.coverage 0.97 1e-9
+expect_weather_preview none
+weather_set_region valley state none
+expect_viewport_param clouds.thickness_m 1800 1e-9
+weather_set_region valley state storm
+weather_remove_region ridge_storm
+undo
+expect_weather_region ridge_storm
+print_weather
+window_screenshot {window}
+wait_frames 2
+save
+quit
+""".format(preset=preset, window=regions_window)))
+    h.read_png(regions_window)
+    h.check("weather region valley: box at " in p.stdout and "state storm; weight 1.0000 at the camera" in p.stdout,
+            "print_weather did not list the new region:\n" + p.stdout[-2000:])
+    h.check("weather preview: none + regions valley 1.00" in p.stdout, "the preview does not name the region")
+    regions = {r["id"]: r for r in h.load_json(preset)["weather"]["regions"]}
+    h.check(sorted(regions) == ["ridge_storm", "valley"], "saved regions: %s" % sorted(regions))
+    valley = regions["valley"]
+    h.check(valley["shape"] == "box" and valley["state"] == "storm" and valley["blend_m"] == 0 and
+            valley["half_extents_m"] == [5000, 5000, 5000] and valley["name"] == "Storm over the camera",
+            "saved %s" % valley)
+    h.check(abs(valley["rotation_xyzw"][1] - 0.25881904510252074) < 1e-12, "saved yaw %s" % valley)
 
     # A reserved name: the script fails with validatePreset's message, nothing saved.
     p = env.run(env.script("weather_none.txt", "open {preset}\nweather_add_state none\nsave\nquit\n".format(

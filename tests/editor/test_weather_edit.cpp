@@ -1,7 +1,8 @@
 // The Weather panel's model: its edits of a preset's weather states (one
 // undo step each, refused with validatePreset's own message), the value an
 // override gives (checked against CompiledPreset::evaluate), and the
-// viewport's preview, which never touches the document.
+// viewport's preview, which never touches the document; the weather
+// regions' edits and the preview's regions at the camera.
 #include "document.hpp"
 #include "editor_parts.hpp"
 #include "weather_edit.hpp"
@@ -282,6 +283,121 @@ TEST(WeatherPreview, PlaysOnTheClockAndEndsAtTheTarget) {
     EXPECT_TRUE(preview.update(fewer, 112.0));
     EXPECT_EQ(preview.mode(), WeatherPreview::Mode::None);
     EXPECT_TRUE(preview.mix().weights.empty());
+}
+
+// ---------------------------------------------------------------------------
+// Weather regions
+
+TEST(WeatherRegionEdit, AddChangeAndRemoveEachOneUndoStep) {
+    Document doc;
+    doc.reset(summerDay(), "summer.json");
+    std::string error;
+    const WeatherRegion r =
+        newWeatherRegion(doc.preset(), WeatherRegionShape::Box, "overcast", glm::dvec3(100.0, 0.0, -200.0));
+    EXPECT_EQ(r.id, "region");
+    ASSERT_TRUE(applyAddWeatherRegion(doc, r, error)) << error;
+    EXPECT_EQ(doc.undoLabel(), "Add weather region region");
+    ASSERT_EQ(doc.preset().weatherRegions.size(), 2u);
+    EXPECT_EQ(uniqueWeatherRegionId(doc.preset(), "region"), "region_2");
+    // A drag: two continuous edits are one step until closeMerge.
+    WeatherRegion moved = doc.preset().weatherRegions[1];
+    ASSERT_TRUE(setWeatherRegionField(moved, "position_m", {"10", "20", "30"}, error)) << error;
+    ASSERT_TRUE(applySetWeatherRegion(doc, 1, moved, true, error)) << error;
+    ASSERT_TRUE(setWeatherRegionField(moved, "blend_m", {"350"}, error)) << error;
+    ASSERT_TRUE(applySetWeatherRegion(doc, 1, moved, true, error)) << error;
+    doc.closeMerge();
+    EXPECT_EQ(doc.undoCount(), 2u);
+    EXPECT_EQ(doc.preset().weatherRegions[1].position, glm::dvec3(10.0, 20.0, 30.0));
+    EXPECT_EQ(doc.preset().weatherRegions[1].blend, 350.0);
+    // Refused with validatePreset's words, nothing recorded.
+    WeatherRegion bad = moved;
+    bad.id = "ridge_storm";
+    EXPECT_FALSE(applySetWeatherRegion(doc, 1, bad, false, error));
+    EXPECT_EQ(error, "duplicate id \"ridge_storm\" (also /weather/regions/0)");
+    bad = moved;
+    bad.state = "hail";
+    EXPECT_FALSE(applySetWeatherRegion(doc, 1, bad, false, error));
+    EXPECT_EQ(error, "no weather state \"hail\" (the preset has none, clear, overcast, storm)");
+    bad = moved;
+    bad.halfExtents.y = 0.0;
+    EXPECT_FALSE(applySetWeatherRegion(doc, 1, bad, false, error));
+    EXPECT_EQ(error, "out of range: 0 is not in 1..1e+07 m");
+    EXPECT_FALSE(setWeatherRegionField(bad, "shape", {"cone"}, error));
+    EXPECT_EQ(error, "shape \"cone\" is not one of box, ellipsoid");
+    EXPECT_FALSE(setWeatherRegionField(bad, "priority", {"1.5"}, error));
+    EXPECT_FALSE(setWeatherRegionField(bad, "colour", {"1"}, error));
+    EXPECT_EQ(doc.undoCount(), 2u);
+    // Remove, undo, redo.
+    ASSERT_TRUE(applyRemoveWeatherRegion(doc, 1, error)) << error;
+    EXPECT_EQ(doc.preset().weatherRegions.size(), 1u);
+    EXPECT_FALSE(applyRemoveWeatherRegion(doc, 5, error));
+    ASSERT_TRUE(doc.undo());
+    EXPECT_EQ(doc.preset().weatherRegions[1].blend, 350.0);
+    ASSERT_TRUE(doc.undo());
+    ASSERT_TRUE(doc.undo());
+    EXPECT_EQ(doc.preset().weatherRegions.size(), 1u);
+    EXPECT_FALSE(doc.dirty());
+}
+
+TEST(WeatherRegionEdit, RenamingAStateCarriesItsRegionsAndRemovingItTakesThem) {
+    Document doc;
+    doc.reset(summerDay());
+    std::string error;
+    ASSERT_EQ(doc.preset().weatherRegions.at(0).state, "storm");
+    ASSERT_TRUE(applyRenameWeatherState(doc, 2, "thunder", error)) << error;
+    EXPECT_EQ(doc.preset().weatherRegions[0].state, "thunder");
+    ASSERT_TRUE(applyRemoveWeatherState(doc, 2, error)) << error;
+    EXPECT_TRUE(doc.preset().weatherRegions.empty());
+    EXPECT_TRUE(validatePreset(doc.preset()).empty());
+    ASSERT_TRUE(doc.undo());
+    ASSERT_EQ(doc.preset().weatherRegions.size(), 1u);
+    EXPECT_EQ(doc.preset().weatherRegions[0].state, "thunder");
+    ASSERT_TRUE(doc.undo());
+    EXPECT_EQ(doc.preset().weatherRegions[0].state, "storm");
+}
+
+TEST(WeatherRegionEdit, YawIsTheTurnAboutUp) {
+    const Preset preset = summerDay();
+    EXPECT_NEAR(weatherRegionYawDeg(preset.weatherRegions.at(0)), 30.0, 1e-9);  // the shipped ridge
+    WeatherRegion r;
+    std::string error;
+    for (double yaw : {-179.5, -90.0, 0.0, 45.0, 180.0}) {
+        ASSERT_TRUE(setWeatherRegionField(r, "yaw_deg", {std::to_string(yaw)}, error)) << error;
+        EXPECT_NEAR(weatherRegionYawDeg(r), yaw, 1e-9);
+        EXPECT_NEAR(glm::length(r.rotation), 1.0, 1e-15);
+    }
+    // 90 degrees takes +X to -Z (north): counter-clockwise seen from above.
+    setWeatherRegionYawDeg(r, 90.0);
+    const glm::dvec3 x = r.rotation * glm::dvec3(1.0, 0.0, 0.0);
+    EXPECT_NEAR(x.z, -1.0, 1e-12);
+}
+
+TEST(WeatherPreview, AppliesTheRegionsAtTheCamera) {
+    const Preset preset = summerDay();
+    const WeatherRegion& ridge = preset.weatherRegions.at(0);
+    WeatherPreview preview;
+    ASSERT_TRUE(preview.regionsAtCamera());
+    WeatherMix storm;
+    settledWeather(preset, "storm", storm);
+    // In the storm's ellipsoid: the storm, and the words say so.
+    EXPECT_TRUE(preview.update(preset, 0.0, &ridge.position));
+    EXPECT_EQ(preview.mix().weights, storm.weights);
+    EXPECT_EQ(preview.describe(), "none + regions ridge_storm 1.00");
+    // Far away, or with the regions off: the preview's own mix.
+    const glm::dvec3 far(0.0, 2.0, 0.0);
+    EXPECT_TRUE(preview.update(preset, 0.0, &far));
+    EXPECT_TRUE(preview.mix().weights.empty());
+    EXPECT_EQ(preview.describe(), "none");
+    preview.setRegionsAtCamera(false);
+    EXPECT_FALSE(preview.update(preset, 0.0, &ridge.position));
+    EXPECT_TRUE(preview.mix().weights.empty());
+    // A state previewed under a region: the region is applied over it.
+    preview.setRegionsAtCamera(true);
+    std::string error;
+    ASSERT_TRUE(preview.showState(preset, "clear", error));
+    preview.update(preset, 0.0, &ridge.position);
+    EXPECT_EQ(preview.mix().weights, storm.weights);
+    EXPECT_EQ(preview.describe(), "clear + regions ridge_storm 1.00");
 }
 
 }  // namespace

@@ -12,7 +12,8 @@
 // Where each cap is enforced:
 //   * preset files (loadPreset, parsePreset, validatePreset, savePreset):
 //     kMaxPresetFileBytes, kMaxJsonDepth, kMaxJsonValues, kMaxVolumes, kMaxEmitters,
-//     kMaxCloudVolumes, kMaxTracks, kMaxKeysPerTrack, kMaxStringBytes (name, description,
+//     kMaxCloudVolumes, kMaxTracks, kMaxKeysPerTrack, kMaxWeatherStates,
+//     kMaxWeatherOverrides, kMaxWeatherRegions, kMaxStringBytes (name, description,
 //     ids are 1..kMaxIdBytes), kMaxPresetIssues (more problems are counted
 //     in one last issue, not listed);
 //   * the sky solver (SkySolverDesc): kMaxSkyAzimuthCount,
@@ -66,6 +67,8 @@ inline constexpr std::size_t kMaxKeysPerTrack = 4096;
 /// Weather states in a preset, and overrides in one state.
 inline constexpr std::size_t kMaxWeatherStates = 64;
 inline constexpr std::size_t kMaxWeatherOverrides = 256;
+/// Weather regions in a preset (each frame tests the camera against all).
+inline constexpr std::size_t kMaxWeatherRegions = 64;
 /// Longest name, description or other free text [bytes of UTF-8].
 inline constexpr std::size_t kMaxStringBytes = 4096;
 /// Longest object id [bytes] (ids are 1..64 of A-Z a-z 0-9 _ - .).

@@ -154,6 +154,10 @@ struct Preset {
     /// limits::kMaxWeatherStates, each with at most
     /// limits::kMaxWeatherOverrides overrides.
     std::vector<WeatherState> weather;
+    /// Regions where a weather state holds (weather_state.hpp), ids unique,
+    /// each naming a state of `weather` or "none"; at most
+    /// limits::kMaxWeatherRegions. In a file: "weather": {"regions": [...]}.
+    std::vector<WeatherRegion> weatherRegions;
 };
 
 /// One problem with a preset (an error or a warning).
@@ -263,8 +267,8 @@ std::string presetToJson(const Preset& preset);
 SaveResult savePreset(const Preset& preset, const std::string& path);
 
 /// True when both presets hold the same values, bit for bit on every
-/// number (compared through the parameter table, plus tracks and weather
-/// states).
+/// number (compared through the parameter table, plus tracks, weather
+/// states and weather regions).
 bool presetsIdentical(const Preset& a, const Preset& b);
 
 /// The JSON Schema (draft 2020-12) of the preset format, generated from the

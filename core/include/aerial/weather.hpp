@@ -16,6 +16,15 @@
 // network peer rebuilds the weather from initial() and changes() (names and
 // times, no raw values).
 //
+// Regional weather (the preset's weather regions, weather_state.hpp): the
+// global weather, then each region the camera is in pulling it towards the
+// region's state:
+//   weather.mix(gameSeconds, global);                 // both mixes reused
+//   aerial::regionalWeather(compiled.preset(), cameraPosition, global, mix);
+//   compiled.evaluate(timeOfDayHours, mix, state);
+// Outside every region `mix` is `global`, bit for bit; deep inside a region
+// its state holds exactly (with the regions above it in priority on top).
+//
 // The blend. Every overridden parameter takes
 //   v = k + sum_i W_i,c (o_i(k) - k),
 // k the keyed value, o_i the state i's override of it (set, add or scale),
@@ -136,6 +145,42 @@ private:
     std::string initial_;
     std::vector<WeatherChange> changes_;
 };
+
+/// Signed depth [m] of a world point inside a region: > 0 inside, 0 on the
+/// surface, < 0 outside; the exact distance to the surface, measured in the
+/// region's object frame (position, rotation; half extents h, metres):
+///   box:       inside min_i (h_i - |p_i|), outside minus the distance to the box;
+///   ellipsoid: the distance to the closest surface point (Eberly 2013, the
+///              root of a monotone function found by bisection, to ~1e-9
+///              of the smallest half extent).
+/// An invalid region (a half extent not in [1e-6, 1e30], a non-finite
+/// position or rotation, a zero rotation) or a non-finite point gives -inf.
+double weatherRegionDepth(const WeatherRegion& region, const glm::dvec3& point);
+
+/// The region's weight at a world point, in [0, 1]: s(clamp(depth / blend,
+/// 0, 1)), s(x) = x^2 (3 - 2 x) the smoothstep, depth weatherRegionDepth.
+/// 0 on the surface and outside, 1 from `blend` metres inside on, continuous
+/// (the depth is a distance, so the weight moves at most 1.5 / blend per
+/// metre the point moves). A blend of 0 (or not finite, or negative): 1
+/// inside and on the surface, 0 outside. Cheap where the answer is plain:
+/// outside, or (ellipsoid) deeper than the blend by a lower bound, no root
+/// is sought.
+double weatherRegionWeight(const WeatherRegion& region, const glm::dvec3& point);
+
+/// The weather at `camera` [m, world]: `global` (a mix of this preset's
+/// states, e.g. Weather::mix or settledWeather; empty = the keyed values)
+/// with the preset's weather regions applied in priority order (lower
+/// first; equal priorities in file order), each pulling every category
+/// towards its state by its weight r at the camera:
+///   out = (1 - r) under + r settled(region.state).
+/// A region with weight 0 (the camera outside it) changes nothing: outside
+/// every region `out` equals `global` bit for bit. A region whose state the
+/// preset does not have is skipped. When a region applied and left every
+/// weight 0 (a "none" region), `out` is empty (the keyed values). `out` may
+/// be `global` itself; reusing `out` makes it allocation-free once it has
+/// held the preset's state count. Deterministic: the same inputs give the
+/// same bits.
+void regionalWeather(const Preset& preset, const glm::dvec3& camera, const WeatherMix& global, WeatherMix& out);
 
 /// The blend of two whole presets' states for a game that moves between
 /// regions: t = 0 is `a`, 1 is `b`, clamped. Every animatable global

@@ -1,6 +1,6 @@
 // preset_compare.cpp — presetsIdentical: two presets compared value by
 // value through the parameter table (bit for bit on every number), plus
-// their tracks and weather states.
+// their tracks, weather states and weather regions.
 #include <aerial/param_table.hpp>
 #include <aerial/preset.hpp>
 
@@ -76,6 +76,20 @@ bool presetsIdentical(const Preset& constA, const Preset& constB) {
             const double u[3] = {o.value.x, o.value.y, o.value.z}, v[3] = {q.value.x, q.value.y, q.value.z};
             if (!(o.target == q.target) || o.mode != q.mode || std::memcmp(u, v, sizeof u) != 0) return false;
         }
+    }
+    if (a.weatherRegions.size() != b.weatherRegions.size()) return false;
+    for (std::size_t i = 0; i < a.weatherRegions.size(); ++i) {
+        const WeatherRegion& r = a.weatherRegions[i];
+        const WeatherRegion& s = b.weatherRegions[i];
+        const double u[12] = {r.position.x,    r.position.y,    r.position.z,    r.rotation.x,
+                              r.rotation.y,    r.rotation.z,    r.rotation.w,    r.halfExtents.x,
+                              r.halfExtents.y, r.halfExtents.z, r.blend,         double(r.priority)};
+        const double v[12] = {s.position.x,    s.position.y,    s.position.z,    s.rotation.x,
+                              s.rotation.y,    s.rotation.z,    s.rotation.w,    s.halfExtents.x,
+                              s.halfExtents.y, s.halfExtents.z, s.blend,         double(s.priority)};
+        if (r.id != s.id || r.name != s.name || r.shape != s.shape || r.state != s.state ||
+            std::memcmp(u, v, sizeof u) != 0)
+            return false;
     }
     return true;
 }

@@ -366,7 +366,7 @@ void Reader::readPreset(Preset& preset) {
                 if (legacyTrack_) legacyIntensityTracks_.push_back(preset.tracks.size() - 1);
             }
         } else if (n.key == "weather") {
-            readWeather(c, at, preset.weather);
+            readWeather(c, at, preset.weather, preset.weatherRegions);
         } else if (isGlobalGroup(n.key)) {
             readGlobalGroup(preset.environment, c, n.key + ".", at);
         } else {

@@ -1,6 +1,8 @@
-// preset_read_weather.cpp — the reader's targets and weather states
-// (preset_reader.hpp): "weather": {"states": [{"name", "overrides":
-// [{target, "set" | "add" | "scale": value}]}]} (aerial/weather_state.hpp).
+// preset_read_weather.cpp — the reader's targets, weather states and weather
+// regions (preset_reader.hpp): "weather": {"states": [{"name", "overrides":
+// [{target, "set" | "add" | "scale": value}]}], "regions": [{"id", "name",
+// "shape", "position_m", "rotation_xyzw", "half_extents_m", "blend_m",
+// "priority", "state"}]} (aerial/weather_state.hpp).
 #include "json_text.hpp"
 #include "preset_reader.hpp"
 #include "preset_validate.hpp"
@@ -9,6 +11,7 @@
 #include <aerial/param_table.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <utility>
 
@@ -39,9 +42,20 @@ void Reader::readTarget(std::int32_t node, const std::string& pointer, const cha
         target.param = nodes_[std::size_t(param)].text;
 }
 
-void Reader::readWeather(std::int32_t node, const std::string& pointer, std::vector<WeatherState>& states) {
+void Reader::readWeather(std::int32_t node, const std::string& pointer, std::vector<WeatherState>& states,
+                         std::vector<WeatherRegion>& regions) {
     if (!expectKind(node, pointer, JNode::Object)) return;
-    warnUnknownMembers(node, pointer, {"states"});
+    warnUnknownMembers(node, pointer, {"states", "regions"});
+    if (const std::int32_t list = member(node, "regions"); list >= 0) {
+        const std::string at = pointerJoin(pointer, "regions");
+        if (expectKind(list, at, JNode::Array) &&
+            withinLimit(list, at, limits::kMaxWeatherRegions, "weather regions")) {
+            std::size_t i = 0;
+            for (std::int32_t c = nodes_[std::size_t(list)].firstChild; c >= 0;
+                 c = nodes_[std::size_t(c)].nextSibling, ++i)
+                readRegion(c, pointerJoin(at, i), regions.emplace_back());
+        }
+    }
     const std::int32_t list = member(node, "states");
     const std::string at = pointerJoin(pointer, "states");
     if (list < 0) {
@@ -109,6 +123,67 @@ void Reader::readOverride(std::int32_t node, const std::string& pointer, Weather
         const int count = p->components() == 2 ? 2 : 3;
         double v[3] = {0.0, 0.0, 0.0};
         if (readNumbers(value, at, v, count)) o.value = glm::dvec3(v[0], v[1], v[2]);
+    }
+}
+
+void Reader::readRegion(std::int32_t node, const std::string& pointer, WeatherRegion& region) {
+    if (!expectKind(node, pointer, JNode::Object)) return;
+    warnUnknownMembers(node, pointer,
+                       {"id", "name", "shape", "position_m", "rotation_xyzw", "half_extents_m", "blend_m",
+                        "priority", "state"});
+    auto text = [&](sv key, bool required, std::string& out) {
+        const std::int32_t m = member(node, key);
+        const std::string at = pointerJoin(pointer, key);
+        if (m < 0) {
+            if (required) error(node, at, "missing required field " + quoteString(key));
+        } else if (expectKind(m, at, JNode::String)) {
+            out = nodes_[std::size_t(m)].text;
+        }
+    };
+    text("id", true, region.id);
+    text("name", false, region.name);
+    text("state", true, region.state);
+    if (const std::int32_t m = member(node, "shape"); m >= 0) {
+        const std::string at = pointerJoin(pointer, "shape");
+        if (expectKind(m, at, JNode::String)) {
+            const std::string& shape = nodes_[std::size_t(m)].text;
+            if (shape == "box")
+                region.shape = WeatherRegionShape::Box;
+            else if (shape == "ellipsoid")
+                region.shape = WeatherRegionShape::Ellipsoid;
+            else
+                error(m, at, "unknown value " + quoteString(shape) + "; expected one of box, ellipsoid");
+        }
+    }
+    auto vector3 = [&](sv key, glm::dvec3& out) {
+        const std::int32_t m = member(node, key);
+        double v[3];
+        if (m >= 0 && readNumbers(m, pointerJoin(pointer, key), v, 3)) out = glm::dvec3(v[0], v[1], v[2]);
+    };
+    vector3("position_m", region.position);
+    vector3("half_extents_m", region.halfExtents);
+    if (const std::int32_t m = member(node, "rotation_xyzw"); m >= 0) {
+        const std::string at = pointerJoin(pointer, "rotation_xyzw");
+        double v[4];
+        if (readNumbers(m, at, v, 4) && normaliseOrRefuse(m, at, v, 4, "a unit quaternion"))
+            region.rotation = glm::dquat(v[3], v[0], v[1], v[2]);
+    }
+    if (const std::int32_t m = member(node, "blend_m"); m >= 0)
+        readNumber(m, pointerJoin(pointer, "blend_m"), region.blend);
+    if (const std::int32_t m = member(node, "priority"); m >= 0) {
+        const JNode& n = nodes_[std::size_t(m)];
+        const double v = n.isNumber() ? n.asDouble() : 0.0;
+        const bool integral = n.kind == JNode::Integer || n.kind == JNode::Unsigned ||
+                              (n.kind == JNode::Float && std::isfinite(v) && std::trunc(v) == v);
+        const std::string at = pointerJoin(pointer, "priority");
+        if (!integral)
+            error(m, at, std::string("expected an integer, got ") + kindName(n.kind));
+        else if (std::abs(v) > kWeatherRegionMaxPriority)
+            error(m, at, "out of range: " + formatDouble(v) + " is not in " +
+                             std::to_string(-kWeatherRegionMaxPriority) + ".." +
+                             std::to_string(kWeatherRegionMaxPriority));
+        else
+            region.priority = int(v);
     }
 }
 

@@ -105,9 +105,12 @@ public:
     /// parameter), "param" the parameter (preset_read_weather.cpp).
     void readTarget(std::int32_t node, const std::string& pointer, const char* what, TrackTarget& target);
 
-    /// "weather": {"states": [{"name", "overrides": [...]}]}
-    /// (weather_state.hpp); what names and targets mean is validatePreset's.
-    void readWeather(std::int32_t node, const std::string& pointer, std::vector<WeatherState>& states);
+    /// "weather": {"states": [{"name", "overrides": [...]}], "regions":
+    /// [...]} (weather_state.hpp); what names, targets and ranges mean is
+    /// validatePreset's.
+    void readWeather(std::int32_t node, const std::string& pointer, std::vector<WeatherState>& states,
+                     std::vector<WeatherRegion>& regions);
+    void readRegion(std::int32_t node, const std::string& pointer, WeatherRegion& region);
     void readOverride(std::int32_t node, const std::string& pointer, WeatherOverride& o);
     void warnUnknownMembers(std::int32_t node, const std::string& pointer, std::initializer_list<sv> known);
 

@@ -184,8 +184,10 @@ std::string presetJsonSchema() {
     props["cloud_volumes"] = arraySchema("#/$defs/cloud_volume", limits::kMaxCloudVolumes);
     props["tracks"] = arraySchema("#/$defs/track", limits::kMaxTracks);
     props["weather"] = {{"type", "object"},
-                        {"description", "named weather states layered on the keys (aerial/weather_state.hpp)"},
-                        {"properties", {{"states", arraySchema("#/$defs/weather_state", limits::kMaxWeatherStates)}}},
+                        {"description", "named weather states layered on the keys, and the regions where one holds "
+                                         "(aerial/weather_state.hpp)"},
+                        {"properties", {{"states", arraySchema("#/$defs/weather_state", limits::kMaxWeatherStates)},
+                                        {"regions", arraySchema("#/$defs/weather_region", limits::kMaxWeatherRegions)}}},
                         {"required", {"states"}},
                         {"additionalProperties", false}};
     root["properties"] = props;
@@ -299,6 +301,50 @@ std::string presetJsonSchema() {
          {{"name", {{"allOf", {idSchema(), {{"not", {{"const", "none"}}}}}}}},
           {"overrides", arraySchema("#/$defs/weather_override", limits::kMaxWeatherOverrides)}}},
         {"required", {"name", "overrides"}},
+        {"additionalProperties", false}};
+    auto numbers = [](int count, double lo, double hi, double fill, const char* description) {
+        ojson def = ojson::array();
+        for (int i = 0; i < count; ++i) def.push_back(fill);
+        return ojson{{"type", "array"},
+                     {"items", {{"type", "number"}, {"minimum", lo}, {"maximum", hi}}},
+                     {"minItems", count},
+                     {"maxItems", count},
+                     {"default", def},
+                     {"description", description}};
+    };
+    const WeatherRegion region;  // its defaults
+    ojson rotation = numbers(4, -1.000001, 1.000001, 0.0, "Rotation, world from object, unit quaternion [x, y, z, w]");
+    rotation["default"] = {0, 0, 0, 1};
+    ojson state = idSchema();
+    state["description"] = "the state that holds inside: one of weather.states' names, or \"none\"";
+    defs["weather_region"] = {
+        {"type", "object"},
+        {"description",
+         "a box or ellipsoid where a weather state holds, blended over blend_m inwards from its surface "
+         "(aerial/weather_state.hpp)"},
+        {"properties",
+         {{"id", idSchema()},
+          {"name", textSchema()},
+          {"shape", {{"enum", {"box", "ellipsoid"}}, {"default", "box"}}},
+          {"position_m", numbers(3, -kWeatherRegionMaxCoordinate, kWeatherRegionMaxCoordinate, 0.0,
+                                 "Centre [m], world (+Y up, -Z north, +X east)")},
+          {"rotation_xyzw", rotation},
+          {"half_extents_m", numbers(3, kWeatherRegionMinHalfExtent, kWeatherRegionMaxHalfExtent,
+                                     region.halfExtents.x, "Half extents along the object axes [m]")},
+          {"blend_m",
+           {{"type", "number"},
+            {"minimum", 0},
+            {"maximum", kWeatherRegionMaxBlend},
+            {"default", region.blend},
+            {"description", "Width of the soft edge [m], inwards from the surface; 0 a hard edge"}}},
+          {"priority",
+           {{"type", "integer"},
+            {"minimum", -kWeatherRegionMaxPriority},
+            {"maximum", kWeatherRegionMaxPriority},
+            {"default", 0},
+            {"description", "Higher over lower; equal ones in file order, the later over the earlier"}}},
+          {"state", state}}},
+        {"required", {"id", "state"}},
         {"additionalProperties", false}};
     root["$defs"] = defs;
     return root.dump(2) + "\n";

@@ -289,6 +289,80 @@ void checkWeather(const Preset& preset, Issues& issues) {
     }
 }
 
+/// A region's number: finite and in [lo, hi] (the unit in the message).
+void checkRegionNumber(double v, double lo, double hi, const std::string& pointer, Issues& issues) {
+    if (!std::isfinite(v)) {
+        issues.error(pointer, "must be a finite number (got " + formatDouble(v) + ")");
+    } else if (v < lo || v > hi) {
+        std::string m = "out of range: ";
+        m += formatDouble(v);
+        m += " is not in ";
+        m += formatDouble(lo);
+        m += "..";
+        m += formatDouble(hi);
+        m += " m";
+        issues.error(pointer, std::move(m));
+    }
+}
+
+void checkWeatherRegions(const Preset& preset, Issues& issues) {
+    checkCount(preset.weatherRegions.size(), limits::kMaxWeatherRegions, "/weather/regions", "weather regions",
+               issues);
+    for (std::size_t i = 0; i < preset.weatherRegions.size(); ++i) {
+        const WeatherRegion& r = preset.weatherRegions[i];
+        const std::string at = pointerJoin("/weather/regions", i);
+        if (!validId(r.id)) {
+            issues.error(pointerJoin(at, "id"), "an id must be 1..64 characters of A-Z a-z 0-9 _ - . (got " +
+                                                    quoteString(validUtf8(r.id) ? r.id : std::string("?")) + ")");
+        } else {
+            for (std::size_t j = 0; j < i; ++j)
+                if (preset.weatherRegions[j].id == r.id) {
+                    issues.error(pointerJoin(at, "id"), "duplicate id " + quoteString(r.id) + " (also " +
+                                                            pointerJoin("/weather/regions", j) + ")");
+                    break;
+                }
+        }
+        checkText(r.name, pointerJoin(at, "name"), issues);
+        if (r.shape != WeatherRegionShape::Box && r.shape != WeatherRegionShape::Ellipsoid)
+            issues.error(pointerJoin(at, "shape"), "unknown shape; expected one of box, ellipsoid");
+        for (int c = 0; c < 3; ++c) {
+            checkRegionNumber(r.position[c], -kWeatherRegionMaxCoordinate, kWeatherRegionMaxCoordinate,
+                              pointerJoin(pointerJoin(at, "position_m"), std::size_t(c)), issues);
+            checkRegionNumber(r.halfExtents[c], kWeatherRegionMinHalfExtent, kWeatherRegionMaxHalfExtent,
+                              pointerJoin(pointerJoin(at, "half_extents_m"), std::size_t(c)), issues);
+        }
+        const glm::dquat q = r.rotation;
+        const double qc[4] = {q.x, q.y, q.z, q.w};
+        bool finite = true;
+        for (int c = 0; c < 4; ++c)
+            if (!std::isfinite(qc[c])) {
+                issues.error(pointerJoin(pointerJoin(at, "rotation_xyzw"), std::size_t(c)),
+                             "must be a finite number (got " + formatDouble(qc[c]) + ")");
+                finite = false;
+            }
+        if (finite) {
+            const double len = std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
+            if (!(std::abs(len - 1.0) <= 1e-6))
+                issues.error(pointerJoin(at, "rotation_xyzw"),
+                             "must be a unit quaternion (length " + formatDouble(len) + ")");
+        }
+        checkRegionNumber(r.blend, 0.0, kWeatherRegionMaxBlend, pointerJoin(at, "blend_m"), issues);
+        if (std::abs(r.priority) > kWeatherRegionMaxPriority)
+            issues.error(pointerJoin(at, "priority"), "out of range: " + std::to_string(r.priority) + " is not in " +
+                                                          std::to_string(-kWeatherRegionMaxPriority) + ".." +
+                                                          std::to_string(kWeatherRegionMaxPriority));
+        const bool known = r.state == "none" || std::any_of(preset.weather.begin(), preset.weather.end(),
+                                                            [&](const WeatherState& s) { return s.name == r.state; });
+        if (!known) {
+            std::string names = "none";
+            for (const WeatherState& s : preset.weather) names += ", " + s.name;
+            issues.error(pointerJoin(at, "state"), "no weather state " +
+                                                       quoteString(validUtf8(r.state) ? r.state : std::string("?")) +
+                                                       " (the preset has " + names + ")");
+        }
+    }
+}
+
 void validateInto(const Preset& constPreset, Issues& issues) {
     // The accessors take non-const objects; validation only reads.
     Preset& preset = const_cast<Preset&>(constPreset);
@@ -371,6 +445,7 @@ void validateInto(const Preset& constPreset, Issues& issues) {
         }
     }
     checkWeather(preset, issues);
+    checkWeatherRegions(preset, issues);
 }
 
 }  // namespace

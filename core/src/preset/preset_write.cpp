@@ -236,8 +236,9 @@ public:
         newline(1);
         out += ']';
     }
-    /// "weather": {"states": [{"name", "overrides": [{target, "set"|"add"|"scale": value}]}]}
-    void weather(const std::vector<WeatherState>& states) {
+    /// "weather": {"states": [{"name", "overrides": [{target, "set"|"add"|"scale": value}]}],
+    /// "regions": [{...}] (only when there are regions)}
+    void weather(const std::vector<WeatherState>& states, const std::vector<WeatherRegion>& regions) {
         out += ',';
         newline(1);
         key("weather");
@@ -276,8 +277,55 @@ public:
         }
         if (!states.empty()) newline(2);
         out += ']';
+        if (!regions.empty()) {  // files without regions stay as they were
+            out += ',';
+            newline(2);
+            key("regions");
+            out += '[';
+            for (std::size_t i = 0; i < regions.size(); ++i) {
+                if (i) out += ',';
+                newline(3);
+                out += '{';
+                region(regions[i]);
+                newline(3);
+                out += '}';
+            }
+            newline(2);
+            out += ']';
+        }
         newline(1);
         out += '}';
+    }
+    /// A region's members, one per line (weather_state.hpp).
+    void region(const WeatherRegion& r) {
+        auto member = [&](sv k) {
+            newline(4);
+            key(k);
+        };
+        member("id");
+        out += quoteString(r.id) + ",";
+        member("name");
+        out += quoteString(r.name) + ",";
+        member("shape");
+        out += r.shape == WeatherRegionShape::Ellipsoid ? "\"ellipsoid\"," : "\"box\",";
+        const double position[3] = {r.position.x, r.position.y, r.position.z};
+        member("position_m");
+        numbers(position, 3);
+        out += ',';
+        const double rotation[4] = {r.rotation.x, r.rotation.y, r.rotation.z, r.rotation.w};
+        member("rotation_xyzw");
+        numbers(rotation, 4);
+        out += ',';
+        const double half[3] = {r.halfExtents.x, r.halfExtents.y, r.halfExtents.z};
+        member("half_extents_m");
+        numbers(half, 3);
+        out += ',';
+        member("blend_m");
+        out += formatDouble(r.blend) + ",";
+        member("priority");
+        out += std::to_string(r.priority) + ",";
+        member("state");
+        out += quoteString(r.state);
     }
 };
 
@@ -302,7 +350,8 @@ std::string presetToJson(const Preset& constPreset) {
     w.objectArray("emitters", preset.emitters, ParamScope::Emitter);
     w.objectArray("cloud_volumes", preset.cloudVolumes, ParamScope::CloudVolume);
     w.tracks(preset.tracks);
-    if (!preset.weather.empty()) w.weather(preset.weather);  // files without weather stay as they were
+    if (!preset.weather.empty() || !preset.weatherRegions.empty())  // files without weather stay as they were
+        w.weather(preset.weather, preset.weatherRegions);
     w.out += "\n}\n";
     return std::move(w.out);
 }

@@ -43,6 +43,22 @@ def track(keys, **target):
     return t
 
 
+REGION = {"id": "ridge_storm", "shape": "ellipsoid", "position_m": [2500, 600, -6000],
+          "half_extents_m": [3000, 2000, 1800], "blend_m": 800, "state": "storm"}
+
+
+def weather(*regions, states=("storm",)):
+    """A version-5 preset whose weather has `states` (no overrides) and `regions`."""
+    return preset(version=5, weather={"states": [{"name": n, "overrides": []} for n in states],
+                                      "regions": list(regions)})
+
+
+def region(**changes):
+    r = copy.deepcopy(REGION)
+    r.update(changes)
+    return r
+
+
 def mesh_volume(mesh, **changes):
     v = vol(id="room", shape="mesh", mesh=mesh)
     v.update(changes)
@@ -122,6 +138,16 @@ PRESETS = {
     "id_missing.json": dump(preset(volumes=[{k: v for k, v in VOLUME.items() if k != "id"}])),
     "name_too_long.json": dump(preset(name="n" * 4097)),
     "latitude_out_of_range.json": dump(preset(location={"latitude_deg": 91})),
+    "region_unknown_state.json": dump(weather(region(state="hail"))),
+    "region_bad_shape.json": dump(weather(region(shape="cone"))),
+    "region_zero_size.json": dump(weather(region(half_extents_m=[3000, 0, 1800]))),
+    "region_negative_size.json": dump(weather(region(half_extents_m=[-3000, 2000, 1800]))),
+    "region_negative_blend.json": dump(weather(region(blend_m=-50))),
+    "region_duplicate_id.json": dump(weather(region(), region(position_m=[0, 0, 0]))),
+    "region_huge_number.json": b'{"version": 5, "weather": {"states": [], "regions": [\n'
+                               b'  {"id": "r", "state": "none", "blend_m": 1e400}]}}\n',
+    "region_fractional_priority.json": dump(weather(region(priority=0.5))),
+    "region_missing_state.json": dump(weather({k: v for k, v in REGION.items() if k != "state"})),
 }
 
 
