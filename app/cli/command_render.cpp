@@ -10,6 +10,10 @@
 // preset (aerial::defaultPreset(); a file literally named "default" is
 // ./default).
 //
+// Weather: --weather STATE or --transition A:B:F as `aerial eval`; the
+// preset's weather regions (aerial/weather.hpp, regionalWeather) then apply
+// at the camera (--eye), as they do at the editor's camera.
+//
 // Output by extension (case-insensitive):
 //   .exr  scene-linear Rec.709 radiance, RGBA half float, ZIP compressed;
 //         values beyond the half range clamp to 65504. --exposure does not
@@ -294,6 +298,7 @@ int runRender(const RenderOptions& options) {
     const auto solveStart = std::chrono::steady_clock::now();
     WeatherMix mix;
     weatherFromOptions(compiled.preset(), options.weather, options.transition, mix);
+    regionalWeather(compiled.preset(), eye, mix, mix);  // the preset's weather regions at the camera
     PresetState state;
     compiled.evaluate(t, mix, state);
     SkyTables tables;

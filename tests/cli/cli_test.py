@@ -437,6 +437,26 @@ class EvalWeatherRegions(unittest.TestCase):
         return run_json(self, "eval", preset("clear_summer_day"), "--time", "14:00", "--no-light", *weather,
                         "--camera=" + ",".join(repr(c) for c in camera))
 
+    def test_render_applies_the_regions_at_the_eye(self):
+        # From inside the storm ellipsoid every global weather renders as the
+        # storm; from the valley, outside it, the global weather holds.
+        if not has_render_command():
+            self.skipTest("aerial built without the renderer")
+        inside = ",".join(repr(c) for c in self.region()["position_m"])
+        frames = {}
+        for name, eye, weather in (("inside", inside, ()), ("inside_storm", inside, ("--weather", "storm")),
+                                   ("inside_clear", inside, ("--weather", "clear")), ("valley", "0,100,120", ()),
+                                   ("valley_storm", "0,100,120", ("--weather", "storm"))):
+            out = os.path.join(WORK, "render_region_%s.exr" % name)
+            code, _, err = run("render", preset("clear_summer_day"), "--time", "14:00", "--size", "32x18",
+                               "--eye=" + eye, "--target=0,600,-20000", "--out", out, *weather)
+            self.assertEqual(code, 0, err)
+            with open(out, "rb") as f:
+                frames[name] = f.read()
+        self.assertEqual(frames["inside"], frames["inside_storm"])
+        self.assertEqual(frames["inside_clear"], frames["inside_storm"])
+        self.assertNotEqual(frames["valley"], frames["valley_storm"])
+
     def test_regions_are_listed_without_a_camera(self):
         r = run_json(self, "eval", preset("clear_summer_day"), "--time", "14:00", "--no-light")
         regions = r["weather"]["regions"]
