@@ -68,9 +68,11 @@ vec2 skyTableRowAt(sampler2D mie, float el, int rows) {
 /// texture's alpha) blended between rows j0 and j1 with weight t, for i =
 /// -1..columns + 1 (wrapping by 2 pi).
 float skyTableBlendedAzimuth(sampler2D rayleigh, int i, int j0, int j1, float t, int columns) {
-    int k = i < 0 ? i + columns : (i >= columns ? i - columns : i);
+    // Whole turns without % or / on a negative int (undefined in GLSL).
+    int turns = i < 0 ? -((columns - 1 - i) / columns) : i / columns;
+    int k = i - turns * columns;
     float a = mix(texelFetch(rayleigh, ivec2(k, j0), 0).a, texelFetch(rayleigh, ivec2(k, j1), 0).a, t);
-    return a + (i < 0 ? -2.0 * kPi : (i >= columns ? 2.0 * kPi : 0.0));
+    return a + 2.0 * kPi * float(turns);
 }
 
 /// The continuous column (0..columns) at the azimuth s = phi - pi [rad,

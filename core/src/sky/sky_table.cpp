@@ -77,9 +77,11 @@ Neighbours columnsAround(const SkyTable& table, const Neighbours& rows, double p
     const double* a1 = table.columnAzimuth.data() + std::size_t(rows.second) * std::size_t(w);
     const double t = rows.weight;
     auto blended = [&](int i) { return a0[i] + t * (a1[i] - a0[i]); };
-    // Column i's blended azimuth for i = -1..w + 1, wrapping (column w is column 0 at 2 pi).
+    // Column i's blended azimuth for i = -1..w + 1, wrapping (column w is
+    // column 0 at 2 pi; a table of one column wraps onto it twice).
     auto azimuth = [&](int i) {
-        return i < 0 ? blended(w + i) - 2.0 * kPi : i < w ? blended(i) : blended(i - w) + 2.0 * kPi;
+        const int k = (i % w + w) % w;
+        return blended(k) + 2.0 * kPi * double((i - k) / w);
     };
     int lo = 0, hi = w;  // azimuth(lo) <= phi < azimuth(hi): non-decreasing, azimuth(0) = 0
     while (hi - lo > 1) {
