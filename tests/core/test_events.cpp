@@ -6,17 +6,13 @@
 
 #include <gtest/gtest.h>
 
+#include "shipped_preset.hpp"
+
 #include <string>
 #include <vector>
 
 namespace aerial {
 namespace {
-
-Preset loadShipped(const char* file) {
-    const PresetLoadResult r = loadPreset(std::string(AERIAL_SOURCE_DIR) + "/presets/" + file);
-    EXPECT_TRUE(r.ok()) << file;
-    return r.ok() ? *r.preset : Preset{};
-}
 
 int count(const std::vector<Event>& events, EventKind kind) {
     int n = 0;
@@ -25,7 +21,7 @@ int count(const std::vector<Event>& events, EventKind kind) {
 }
 
 TEST(Events, ADayHasItsHoursAndItsSunEventsInOrder) {
-    const CompiledPreset compiled(loadShipped("clear_summer_day.json"));
+    const CompiledPreset compiled(test::loadShippedPreset("clear_summer_day.json"));
     std::vector<Event> events;
     pollEvents(compiled, nullptr, 0.0, 24.0, 0.0, 0.0, events);
     EXPECT_EQ(count(events, EventKind::Hour), 24);
@@ -47,7 +43,7 @@ TEST(Events, ADayHasItsHoursAndItsSunEventsInOrder) {
 }
 
 TEST(Events, MidnightIsCrossedOnce) {
-    const CompiledPreset compiled(loadShipped("clear_summer_day.json"));
+    const CompiledPreset compiled(test::loadShippedPreset("clear_summer_day.json"));
     std::vector<Event> events;
     pollEvents(compiled, nullptr, 23.5, 0.5, 0.0, 0.0, events);
     ASSERT_EQ(count(events, EventKind::Hour), 1);
@@ -55,7 +51,7 @@ TEST(Events, MidnightIsCrossedOnce) {
 }
 
 TEST(Events, NoSunriseInAPolarDay) {
-    Preset p = loadShipped("clear_summer_day.json");
+    Preset p = test::loadShippedPreset("clear_summer_day.json");
     p.environment.location.latitudeDeg = 80.0;  // June
     p.environment.location.date.clear();
     p.environment.location.dayOfYear = 172.0;
@@ -68,7 +64,7 @@ TEST(Events, NoSunriseInAPolarDay) {
 // Every flash lightningFlash draws starts at a reported strike (scanned at
 // a tenth of a flash), and each strike starts a flash.
 TEST(Events, LightningStrikesAreTheFlashesTheRendererDraws) {
-    const CompiledPreset compiled(loadShipped("stormy_night.json"));
+    const CompiledPreset compiled(test::loadShippedPreset("stormy_night.json"));
     std::vector<Event> events;
     pollEvents(compiled, nullptr, 1.0, 2.0, 0.0, 0.0, events);
     const PresetState state = compiled.evaluate(1.5);
@@ -102,7 +98,7 @@ TEST(Events, LightningStrikesAreTheFlashesTheRendererDraws) {
 }
 
 TEST(Events, WeatherChangesStartAndEnd) {
-    const CompiledPreset compiled(loadShipped("clear_summer_day.json"));
+    const CompiledPreset compiled(test::loadShippedPreset("clear_summer_day.json"));
     Weather weather(compiled.preset(), "clear");
     ASSERT_TRUE(weather.change("storm", 300.0, 10.0));
     std::vector<Event> events;

@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include "shipped_preset.hpp"
+
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -16,12 +18,6 @@
 
 namespace aerial {
 namespace {
-
-Preset load(const char* file) {
-    const PresetLoadResult r = loadPreset(std::string(AERIAL_SOURCE_DIR) + "/presets/" + file);
-    EXPECT_TRUE(r.ok()) << file;
-    return r.ok() ? *r.preset : Preset{};
-}
 
 /// Every animatable global parameter's components, in table order.
 std::vector<double> globals(const PresetState& state) {
@@ -43,7 +39,8 @@ std::vector<double> shares(const PresetState& state) {
     std::vector<double> out;
     for (const ParamDesc& d : paramTable(ParamScope::Global)) {
         if (!d.animatable) continue;
-        const double share = kWeatherCategoryShare[int(weatherCategory(TrackTarget::global(std::string(d.path))))];
+        const double share =
+            kWeatherCategoryShare[int(weatherCategory(TrackTarget::global(std::string(d.path))))];
         out.insert(out.end(), std::size_t(d.components()), share);
     }
     out.insert(out.end(), state.volumes.size(), kWeatherCategoryShare[int(WeatherCategory::Fog)]);
@@ -59,14 +56,15 @@ PresetState settled(const CompiledPreset& compiled, const char* name, double hou
 }
 
 TEST(Weather, StatesOverrideTheKeys) {
-    const CompiledPreset compiled(load("clear_summer_day.json"));
+    const CompiledPreset compiled(test::loadShippedPreset("clear_summer_day.json"));
     const PresetState plain = compiled.evaluate(14.0);
     const PresetState none = settled(compiled, "none", 14.0);
     EXPECT_EQ(globals(plain), globals(none));
     const PresetState storm = settled(compiled, "storm", 14.0);
-    EXPECT_EQ(storm.environment.clouds.coverage, 0.97);  // set
+    EXPECT_EQ(storm.environment.clouds.coverage, 0.97);                                    // set
     EXPECT_DOUBLE_EQ(storm.environment.fog.density, 6.0 * plain.environment.fog.density);  // scale
-    EXPECT_DOUBLE_EQ(storm.environment.exposure.compensationEv, plain.environment.exposure.compensationEv - 1.0);
+    EXPECT_DOUBLE_EQ(storm.environment.exposure.compensationEv,
+                     plain.environment.exposure.compensationEv - 1.0);
     // The seed never changes with the weather: the cloud noise keeps its phase.
     EXPECT_EQ(storm.environment.clouds.seed, plain.environment.clouds.seed);
     // Derived values follow: the hazier storm dims the sun that reaches the ground.
@@ -79,7 +77,7 @@ TEST(Weather, StatesOverrideTheKeys) {
 // difference between the states, per frame), and at 600 s the state is the
 // storm's exactly.
 TEST(Weather, TenMinutesClearToStormIsContinuousAndEndsAtTheStorm) {
-    const CompiledPreset compiled(load("clear_summer_day.json"));
+    const CompiledPreset compiled(test::loadShippedPreset("clear_summer_day.json"));
     const double hours = 14.0, duration = 600.0, frame = 1.0 / 60.0;
     const std::vector<double> clear = globals(settled(compiled, "clear", hours));
     const std::vector<double> storm = globals(settled(compiled, "storm", hours));
@@ -114,7 +112,7 @@ TEST(Weather, TenMinutesClearToStormIsContinuousAndEndsAtTheStorm) {
 }
 
 TEST(Weather, TheSameCallsGiveTheSameValuesBitForBit) {
-    const CompiledPreset compiled(load("clear_summer_day.json"));
+    const CompiledPreset compiled(test::loadShippedPreset("clear_summer_day.json"));
     auto run = [&](Weather& w, double t) {
         WeatherMix mix;
         w.mix(t, mix);
@@ -127,11 +125,11 @@ TEST(Weather, TheSameCallsGiveTheSameValuesBitForBit) {
         ASSERT_TRUE(w->change("overcast", 300.0, 10.0));
         ASSERT_TRUE(w->change("storm", 200.0, 160.0));  // during the first
     }
-    for (double t : {0.0, 50.0, 160.0, 161.0, 250.0, 359.9, 400.0})
-        EXPECT_EQ(run(a, t), run(b, t)) << t;
+    for (double t : {0.0, 50.0, 160.0, 161.0, 250.0, 359.9, 400.0}) EXPECT_EQ(run(a, t), run(b, t)) << t;
     // A peer rebuilds it from the names and times alone.
     Weather c(compiled.preset(), a.initial());
-    for (const WeatherChange& ch : a.changes()) ASSERT_TRUE(c.change(ch.state, ch.durationSeconds, ch.startSeconds));
+    for (const WeatherChange& ch : a.changes())
+        ASSERT_TRUE(c.change(ch.state, ch.durationSeconds, ch.startSeconds));
     for (double t : {170.0, 250.0, 400.0}) EXPECT_EQ(run(a, t), run(c, t)) << t;
     // A change started during another begins where the weather was.
     EXPECT_EQ(run(a, 160.0), [&] {
@@ -148,8 +146,10 @@ TEST(Weather, TheSameCallsGiveTheSameValuesBitForBit) {
 
 TEST(Weather, CloudsChangeSlowerThanFog) {
     for (double f : {0.1, 0.3, 0.5}) {
-        EXPECT_GT(weatherTransitionWeight(WeatherCategory::Fog, f), weatherTransitionWeight(WeatherCategory::Clouds, f));
-        EXPECT_GT(weatherTransitionWeight(WeatherCategory::Wind, f), weatherTransitionWeight(WeatherCategory::Fog, f));
+        EXPECT_GT(weatherTransitionWeight(WeatherCategory::Fog, f),
+                  weatherTransitionWeight(WeatherCategory::Clouds, f));
+        EXPECT_GT(weatherTransitionWeight(WeatherCategory::Wind, f),
+                  weatherTransitionWeight(WeatherCategory::Fog, f));
     }
     for (int c = 0; c < kWeatherCategoryCount; ++c) {
         EXPECT_EQ(weatherTransitionWeight(WeatherCategory(c), 0.0), 0.0);
@@ -162,7 +162,7 @@ TEST(Weather, CloudsChangeSlowerThanFog) {
 // `--transition A:B:F`: 0 is A, 1 is B, 0.5 lies between for every
 // parameter that differs (the valley clearing: its fog volumes too).
 TEST(Weather, TransitionFractionsLieBetweenTheStates) {
-    const CompiledPreset compiled(load("foggy_valley_morning.json"));
+    const CompiledPreset compiled(test::loadShippedPreset("foggy_valley_morning.json"));
     const double hours = 6.5;
     const std::vector<double> fog = globals(settled(compiled, "fog", hours));
     const std::vector<double> clearing = globals(settled(compiled, "clearing", hours));
@@ -191,7 +191,7 @@ TEST(Weather, TransitionFractionsLieBetweenTheStates) {
 // Renaming or removing an object carries the overrides that name it, as
 // its tracks (core's editing helpers; the editor calls them).
 TEST(Weather, OverridesFollowTheirObject) {
-    Preset p = load("foggy_valley_morning.json");
+    Preset p = test::loadShippedPreset("foggy_valley_morning.json");
     const auto countTargets = [&](const std::string& id) {
         int n = 0;
         for (const WeatherState& s : p.weather)
@@ -208,8 +208,8 @@ TEST(Weather, OverridesFollowTheirObject) {
 }
 
 TEST(Weather, TwoPresetsBlendContinuously) {
-    const PresetState a = CompiledPreset(load("clear_summer_day.json")).evaluate(10.0);
-    const PresetState b = CompiledPreset(load("foggy_valley_morning.json")).evaluate(10.0);
+    const PresetState a = CompiledPreset(test::loadShippedPreset("clear_summer_day.json")).evaluate(10.0);
+    const PresetState b = CompiledPreset(test::loadShippedPreset("foggy_valley_morning.json")).evaluate(10.0);
     PresetState out;
     blendPresetStates(a, b, 0.0, out);
     EXPECT_EQ(out.environment.fog.density, a.environment.fog.density);

@@ -9,7 +9,9 @@
 #include <aerial/weather.hpp>
 
 #include <gtest/gtest.h>
+
 #include <glm/gtc/quaternion.hpp>
+#include "shipped_preset.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -20,12 +22,6 @@
 
 namespace aerial {
 namespace {
-
-Preset load(const char* file) {
-    const PresetLoadResult r = loadPreset(std::string(AERIAL_SOURCE_DIR) + "/presets/" + file);
-    EXPECT_TRUE(r.ok()) << file;
-    return r.ok() ? *r.preset : Preset{};
-}
 
 WeatherRegion region(const char* id, WeatherRegionShape shape, glm::dvec3 position, glm::dvec3 half,
                      double blend, const char* state, int priority = 0) {
@@ -43,7 +39,7 @@ WeatherRegion region(const char* id, WeatherRegionShape shape, glm::dvec3 positi
 /// clear_summer_day (states clear, overcast, storm) with its own regions
 /// replaced by `regions`.
 Preset withRegions(std::vector<WeatherRegion> regions) {
-    Preset p = load("clear_summer_day.json");
+    Preset p = test::loadShippedPreset("clear_summer_day.json");
     p.weatherRegions = std::move(regions);
     EXPECT_TRUE(validatePreset(p).empty());
     return p;
@@ -265,7 +261,7 @@ TEST(WeatherRegions, BoxAndEllipsoidDepthsAreDistances) {
 }
 
 TEST(WeatherRegions, TheSameInputsGiveTheSameBitsWithoutReallocating) {
-    const Preset preset = load("clear_summer_day.json");  // its shipped region
+    const Preset preset = test::loadShippedPreset("clear_summer_day.json");  // its shipped region
     ASSERT_FALSE(preset.weatherRegions.empty());
     const WeatherRegion& r = preset.weatherRegions[0];
     Weather weather(preset, "clear");
@@ -350,7 +346,7 @@ TEST(WeatherRegions, MissingFieldsTakeTheDefaults) {
 }
 
 TEST(WeatherRegions, ValidationNamesTheFieldAndTheReason) {
-    Preset p = load("clear_summer_day.json");
+    Preset p = test::loadShippedPreset("clear_summer_day.json");
     p.weatherRegions = {region("ridge", WeatherRegionShape::Box, {0, 0, 0}, {100, 100, 100}, 10, "storm"),
                         region("ridge", WeatherRegionShape::Box, {0, 0, 0}, {100, 100, 100}, 10, "storm")};
     p.weatherRegions[0].position.y = std::nan("");
