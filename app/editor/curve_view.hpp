@@ -25,6 +25,13 @@
 // The selected keys' time and value can be typed (setCurvePointsTime,
 // setCurvePointsValue: one undo step each).
 //
+// A selected key's tangent handles (TrackKey::tangents) are drawn along its
+// slopes and set them when dragged (tangentHandleOffset, slopeOfHandle,
+// setKeyTangent; unified or broken, setTangentMode). Keys of several curves
+// are copied with their relative times and pasted at another time, each
+// onto its own curve, never beside an existing key (copyCurvePoints,
+// pasteCurveKeys).
+//
 // Keys that follow the sun (TrackKey::anchor, timeline.hpp) are shown as
 // "sunset + 0:20 (19:52)"; a selection is anchored to an event where it
 // stands (the curve does not change), and shifted by a typed amount with
