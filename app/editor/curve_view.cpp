@@ -149,6 +149,23 @@ int curvePaletteIndex(const TrackTarget& target, int paletteSize) {
     return int(hash % std::uint32_t(paletteSize));
 }
 
+std::vector<int> curvePaletteIndices(const std::vector<TrackTarget>& curves, int paletteSize) {
+    std::vector<int> indices;
+    indices.reserve(curves.size());
+    std::vector<bool> used(std::size_t(std::max(paletteSize, 1)), false);
+    int free = int(used.size());
+    for (const TrackTarget& target : curves) {
+        int index = curvePaletteIndex(target, paletteSize);
+        if (free > 0) {  // probe to the next free entry; past a full palette, the curve's own
+            while (used[std::size_t(index)]) index = (index + 1) % int(used.size());
+            used[std::size_t(index)] = true;
+            --free;
+        }
+        indices.push_back(index);
+    }
+    return indices;
+}
+
 std::vector<double> valueTicks(const CurveRange& range, int maxTicks) {
     std::vector<double> ticks;
     const double span = range.hi - range.lo;
@@ -347,8 +364,9 @@ int setFlatTangents(Preset& preset, const std::vector<CurvePoint>& points, bool 
         Track* track = findTrack(preset, p.target);
         if (!track || p.key < 0 || p.key >= int(track->keys.size())) continue;
         TrackKey& k = track->keys[std::size_t(p.key)];
-        if (k.flat != flat) {
+        if (k.flat != flat || k.tangents) {  // flat or automatic: the key's own tangents go
             k.flat = flat;
+            k.tangents.reset();
             ++changed;
         }
     }

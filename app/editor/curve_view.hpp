@@ -19,10 +19,18 @@
 // Picking prefers the inspector's parameter: where another curve's key lies
 // on one of its keys, a click takes the inspector's (pickCurvePoint). The
 // legend names a curve by its object's name and the parameter's label
-// ("Haze bank density"); its colour comes from its target alone
-// (curvePaletteIndex), so showing or hiding another curve recolours none.
+// ("Haze bank density"); its colour is its target's own palette entry
+// unless a curve shown before it has that one (curvePaletteIndices), so
+// two curves shown never share a colour.
 // The selected keys' time and value can be typed (setCurvePointsTime,
 // setCurvePointsValue: one undo step each).
+//
+// A selected key's tangent handles (TrackKey::tangents) are drawn along its
+// slopes and set them when dragged (tangentHandleOffset, slopeOfHandle,
+// setKeyTangent; unified or broken, setTangentMode). Keys of several curves
+// are copied with their relative times and pasted at another time, each
+// onto its own curve, never beside an existing key (copyCurvePoints,
+// pasteCurveKeys).
 //
 // Keys that follow the sun (TrackKey::anchor, timeline.hpp) are shown as
 // "sunset + 0:20 (19:52)"; a selection is anchored to an event where it
@@ -117,10 +125,17 @@ std::optional<TrackTarget> curveTargetOf(std::string_view key);
 std::string curveLabel(const Preset& preset, const TrackTarget& target);
 /// How many colours the curve view's palette has (editor_curves.cpp).
 inline constexpr int kCurvePaletteSize = 12;
-/// The palette entry [0, paletteSize) a curve is drawn in: a hash (FNV-1a)
-/// of its curve key (scope, object id, parameter), so a curve keeps its
-/// colour whatever else is shown, in every session.
+/// A curve's own palette entry [0, paletteSize): a hash (FNV-1a) of its
+/// curve key (scope, object id, parameter), the same in every session.
 int curvePaletteIndex(const TrackTarget& target, int paletteSize);
+/// The palette entries of the curves shown together, in the order shown
+/// (CurveViewState::shown, then the inspector's parameter): each curve takes
+/// its own entry (curvePaletteIndex) unless a curve before it has it, else
+/// the next free entry after it (wrapping). So no two curves share a colour
+/// while there are no more of them than colours (past that, the extra ones
+/// take their own entries), a curve keeps its own colour wherever it does
+/// not clash, and showing a curve recolours none shown before it.
+std::vector<int> curvePaletteIndices(const std::vector<TrackTarget>& curves, int paletteSize);
 
 /// The ticks of a value axis over `range`: the multiples inside it of the
 /// finest step of 1, 2 or 5 x 10^n that gives at most `maxTicks` of them,
@@ -188,14 +203,81 @@ std::string moveLabel(const std::vector<CurvePoint>& points);
 int removeCurvePoints(Preset& preset, const std::vector<CurvePoint>& points);
 /// The undo step's name for that: "Delete key", "Delete 3 keys".
 std::string deleteLabel(const std::vector<CurvePoint>& points);
-/// Sets (or clears) the flat tangent of the points' keys; returns how many
-/// keys changed.
+/// Sets (or clears) the flat tangent of the points' keys; either way their
+/// own tangents (TrackKey::tangents) go: "Automatic tangent" resets a key's
+/// handles. Returns how many keys changed.
 int setFlatTangents(Preset& preset, const std::vector<CurvePoint>& points, bool flat);
 /// Sets the interpolation of the segment after each of the points' keys
 /// (TrackKey::interpolation; nullopt: the track's again); returns how many
 /// keys changed.
 int setKeyInterpolation(Preset& preset, const std::vector<CurvePoint>& points,
                         std::optional<Interpolation> interpolation);
+
+// --- tangent handles (TrackKey::tangents; curve_keys.cpp) ---------------------------------------
+
+/// The length of a selected key's tangent handles on screen [px].
+inline constexpr double kTangentHandlePx = 40.0;
+/// A key's two handles: the slope arriving at it (in, drawn before the key)
+/// and the one leaving it (out, after it).
+enum class TangentSide { In, Out };
+/// Where a handle of slope `slope` [value unit per h] is drawn, relative to
+/// its key [px, y down]: kTangentHandlePx along the slope as the curve is
+/// drawn (`pxPerHour` across, `heightPx` for the whole of `range` up), on
+/// the side's side of the key.
+glm::dvec2 tangentHandleOffset(double slope, const CurveRange& range, double pxPerHour, double heightPx,
+                               TangentSide side);
+/// The slope [value unit per h] of a handle dragged to `offsetPx` from its
+/// key (the inverse of tangentHandleOffset at any length); a handle dragged
+/// past its key counts as a pixel on its own side (the slope of a vertical
+/// line is out of reach), clamped to limits::kMaxKeyTangent.
+double slopeOfHandle(glm::dvec2 offsetPx, const CurveRange& range, double pxPerHour, double heightPx,
+                     TangentSide side);
+/// Sets the point's component's slope on `side` (unified handles: both
+/// sides). A key without its own tangents gets them from the automatic ones
+/// first (unified, no longer flat), so the other handle stays where it was
+/// drawn. False when the preset has no such key or the slope is not finite.
+bool setKeyTangent(Preset& preset, const CurvePoint& point, TangentSide side, double slope);
+/// Makes the points' keys' handles unified (both slopes become their mean)
+/// or broken (independent from now on); keys without their own tangents
+/// take the automatic ones first. Returns how many keys changed.
+int setTangentMode(Preset& preset, const std::vector<CurvePoint>& points, TangentMode mode);
+/// The undo step's name for that: "Unify tangent", "Break 3 tangents".
+std::string tangentModeLabel(const std::vector<CurvePoint>& points, TangentMode mode);
+/// The point's key's handle mode; nullopt when it has automatic tangents
+/// (or the preset has no such key).
+std::optional<TangentMode> tangentModeOf(const Preset& preset, const CurvePoint& point);
+
+// --- copy and paste of keys across curves and times (curve_keys.cpp) ----------------------------
+
+/// A copied key: its curve, its time after the earliest copied key [h] and
+/// the key itself (value, flat, interpolation, tangents).
+struct CopiedKey {
+    TrackTarget target;
+    double offsetHours = 0.0;
+    TrackKey key;
+};
+/// The keys Ctrl+C took from the curves (several curves, their times kept
+/// relative to each other).
+struct CurveClipboard {
+    std::vector<CopiedKey> keys;
+    bool empty() const { return keys.empty(); }
+};
+/// Copies the points' keys (each key once, whatever its components), their
+/// offsets from the earliest of them (a selection across midnight counts
+/// from its first key after the longest gap, so 23:30 and 00:30 are an hour
+/// apart).
+CurveClipboard copyCurvePoints(const Preset& preset, const std::vector<CurvePoint>& points);
+/// Pastes the clipboard with its earliest key at `timeHours` [h], each key
+/// onto its own curve at `timeHours` + its offset (wrapped into the day),
+/// as a key at a fixed time (a copied anchor is not kept). A key landing
+/// within kMinKeyGap of an existing key replaces that key at its own time,
+/// so the track never gets two keys closer than a minute; a curve whose
+/// object is gone is left out; a track is created for a parameter that has
+/// none. Returns the pasted keys' points (component 0), in the clipboard's
+/// order.
+std::vector<CurvePoint> pasteCurveKeys(Preset& preset, const CurveClipboard& clipboard, double timeHours);
+/// The undo step's name for that: "Paste key", "Paste 3 keys".
+std::string pasteLabel(const CurveClipboard& clipboard);
 
 // --- typed shifts and keys that follow the sun (TrackKey::anchor) ------------------------------
 
@@ -275,7 +357,7 @@ std::string keyReadout(const TrackKey& key, int component, const ParamDesc& desc
 
 /// A mouse drag on the timeline's canvas, from press to release.
 struct CurveDrag {
-    enum class Kind { None, Keys, Box, Pan } kind = Kind::None;
+    enum class Kind { None, Keys, Box, Pan, Handle } kind = Kind::None;
     glm::dvec2 from{0.0};  ///< where the button went down [px]
     /// Keys: the points dragged as they began, the one under the mouse
     /// (its time snaps), whether time and value have moved past the dead
@@ -284,6 +366,11 @@ struct CurveDrag {
     int lead = -1;
     bool timeMoved = false, valueMoved = false;
     double appliedHours = 0.0, appliedNormalised = 0.0;
+    /// Handle: the key point whose tangent handle is dragged, which one,
+    /// and where the key is drawn [px].
+    CurvePoint handlePoint;
+    TangentSide handleSide = TangentSide::Out;
+    glm::dvec2 handleKeyPx{0.0};
     bool additive = false;  ///< Box: Ctrl adds to the selection
     TimeView viewFrom;      ///< Pan: the view when it began
 };

@@ -329,20 +329,29 @@ void Editor::declareActions() {
             error = "timeline_delete_keys: no key selected";
             return false;
         });
-    t.add("timeline_copy_key", "Timeline: copy key")
+    t.add("timeline_copy_key", "Timeline: copy keys")
         .key(GLFW_KEY_C, S::kCtrl, false, KeyContext::Timeline)
-        .helps("copy the selected key of the inspector's parameter")
+        .helps(
+            "copy the keys selected on the curves (several curves, their times relative to each other), "
+            "else the selected key of the inspector's parameter")
         .handles([this](const ActionArgs&, std::string& error) {
             if (copyTimelineKey(doc_, edit_)) return true;
             error = "timeline_copy_key: no key selected";
             return false;
         });
-    t.add("timeline_paste_key", "Timeline: paste key")
+    t.add("timeline_paste_key", "Timeline: paste keys")
         .key(GLFW_KEY_V, S::kCtrl, false, KeyContext::Timeline)
         .oneUndoStep()
-        .helps("paste the copied key on the inspector's parameter at the current time")
-        .enabledWhen([this] { return edit_.keyClipboard.valid && edit_.selectedParam.has_value(); },
-                     "timeline_paste_key: copy a key and select a parameter first")
+        .helps(
+            "paste the copied keys at the current time: curve keys each onto its own curve, the earliest "
+            "at the time and the others at their offsets (a key on an existing key replaces it, at its "
+            "time); a track row's key on the inspector's parameter")
+        .enabledWhen(
+            [this] {
+                return !edit_.curveClipboard.empty() ||
+                       (edit_.keyClipboard.valid && edit_.selectedParam.has_value());
+            },
+            "timeline_paste_key: copy a key and select a parameter first")
         .handles([this](const ActionArgs&, std::string& error) {
             if (pasteTimelineKey(doc_, edit_, playback_.timeHours)) return true;
             error = "timeline_paste_key: the copied key does not fit this parameter";

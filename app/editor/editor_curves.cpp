@@ -10,7 +10,10 @@
 // show beside the cursor); where keys overlap, the inspector's parameter's
 // is picked; Ctrl+click adds a key to the selection; a drag on empty curve
 // area selects the keys in its box (Ctrl adds), a click there sets the
-// time; right-click a key for flat / automatic tangents, Follow the sun
+// time; a selected key of a smooth segment shows its tangent handles (drag
+// an end to set the slope, one undo step; unified: the other side
+// mirrors, broken: it stays); right-click a key for flat / automatic
+// tangents, unified / broken handles, Follow the sun
 // (anchor the selection to sunrise, sunset, a dawn or a dusk where it
 // stands), Time, Value, Shift by and delete. A key that follows the sun
 // wears rays and reads "sunset + 0:20 (19:52)". Below the legend: the
@@ -29,6 +32,8 @@
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
+
+#include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -113,7 +118,44 @@ void drawSunKeyRays(float x, float y, float radius) {
     }
 }
 
-unsigned curveColour(const TrackTarget& target) {
+void followTheSunMenu(Document& doc, const std::vector<CurvePoint>& picked, const std::string& suffix) {
+    // The keys keep their time today and move with the event when the date or the place changes;
+    // each event shows its time today.
+    if (ImGui::BeginMenu(("Follow the sun" + suffix).c_str())) {
+        const Location& where = doc.preset().environment.location;
+        for (SunEvent event : kSunEvents) {
+            const std::string when = formatClock(sunEventHours(where, event), ClockResolution::Minutes);
+            if (ImGui::MenuItem(eventMenuLabel(event).c_str(), when.c_str(),
+                                allAnchoredTo(doc.preset(), picked, event)))
+                doc.apply(anchorLabel(picked, event), "",
+                          [&](Preset& p) { anchorCurvePoints(p, picked, event); });
+        }
+        ImGui::Separator();
+        if (ImGui::MenuItem("Fixed time", nullptr, allAnchoredTo(doc.preset(), picked, std::nullopt)))
+            doc.apply(anchorLabel(picked, std::nullopt), "",
+                      [&](Preset& p) { anchorCurvePoints(p, picked, std::nullopt); });
+        ImGui::EndMenu();
+    }
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "Anchor the keys to a moment of the sun where they stand (\"sunset + 0:20\"): the curve "
+            "stays as it is, and the keys move with the sun when the date or the place changes");
+}
+
+std::vector<TrackTarget> shownCurveTargets(const Preset& preset, const EditState& edit) {
+    std::vector<TrackTarget> targets = edit.curves.shown;
+    if (edit.selectedParam) {
+        const TrackTarget primary = trackTargetOf(preset, *edit.selectedParam);
+        if (!edit.curves.isShown(primary)) targets.push_back(primary);
+    }
+    return targets;
+}
+
+unsigned curveColour(const Preset& preset, const EditState& edit, const TrackTarget& target) {
+    const std::vector<TrackTarget> shown = shownCurveTargets(preset, edit);
+    const std::vector<int> indices = curvePaletteIndices(shown, kCurvePaletteSize);
+    for (std::size_t i = 0; i < shown.size(); ++i)
+        if (shown[i] == target) return kPalette[indices[i]];
     return kPalette[curvePaletteIndex(target, kCurvePaletteSize)];
 }
 
@@ -146,7 +188,7 @@ void drawCurveView(Document& doc, EditState& edit, Playback& playback, float lab
         d.track = findTrack(preset, target);
         d.components = std::clamp(ref->desc->components(), 1, 3);
         d.primary = primary && *primary == target;
-        d.colour = curveColour(target);
+        d.colour = curveColour(preset, edit, target);  // clashes among the curves shown resolved
         if (d.track) {
             d.compiled = compileTrack(*d.track, d.components);
             d.range = view.rangeOf(preset, target);  // pinned by the first drag until the view is fit
@@ -231,6 +273,15 @@ void drawCurveView(Document& doc, EditState& edit, Playback& playback, float lab
     // --- key points: this day's are picked; yesterday's and tomorrow's copies are dimmed ---------
     std::vector<glm::dvec2> points;
     std::vector<CurvePoint> ids;
+    // The tangent handles of the selected keys of smooth segments (the first few selected).
+    struct Handle {
+        glm::dvec2 end{0.0}, key{0.0};
+        CurvePoint point;
+        TangentSide side = TangentSide::Out;
+    };
+    std::vector<Handle> handles;
+    const double pxPerHour = double(x1 - x0) / view.time.span();
+    const double heightPx = double(yBottom - yTop);
     for (const Drawn& d : curves) {
         if (!d.track) continue;
         for (std::size_t k = 0; k < d.track->keys.size(); ++k) {
@@ -254,6 +305,28 @@ void drawCurveView(Document& doc, EditState& edit, Playback& playback, float lab
                                       IM_COL32(235, 235, 235, 255));
                     dl->AddRectFilled(ImVec2(x + 12.5f, y - 1.5f), ImVec2(x + 15.5f, y + 1.5f),
                                       IM_COL32(235, 235, 235, 255));
+                }
+                const std::size_t n = d.track->keys.size();
+                if (selected && handles.size() < 16 && d.compiled.tangents.size() == n &&
+                    d.compiled.tangentsIn.size() == n) {
+                    // Unified handles white, broken ones orange, automatic ones grey.
+                    const ImU32 colour = !key.tangents ? IM_COL32(170, 170, 170, 220)
+                                         : key.tangents->mode == TangentMode::Broken
+                                             ? IM_COL32(255, 170, 80, 240)
+                                             : IM_COL32(240, 240, 240, 240);
+                    const bool smoothAfter = d.compiled.segments[k] == Interpolation::Smooth;
+                    const bool smoothBefore = d.compiled.segments[(k + n - 1) % n] == Interpolation::Smooth;
+                    for (TangentSide side : {TangentSide::In, TangentSide::Out}) {
+                        if (!(side == TangentSide::Out ? smoothAfter : smoothBefore)) continue;
+                        const double slope = side == TangentSide::Out ? d.compiled.tangents[k][c]
+                                                                      : d.compiled.tangentsIn[k][c];
+                        const glm::dvec2 end =
+                            glm::dvec2(x, y) + tangentHandleOffset(slope, d.range, pxPerHour, heightPx, side);
+                        dl->AddLine(ImVec2(x, y), ImVec2(float(end.x), float(end.y)), colour, 1.5f);
+                        dl->AddRectFilled(ImVec2(float(end.x) - 3.0f, float(end.y) - 3.0f),
+                                          ImVec2(float(end.x) + 3.0f, float(end.y) + 3.0f), colour);
+                        handles.push_back({end, glm::dvec2(x, y), id, side});
+                    }
                 }
                 dl->AddCircleFilled(ImVec2(x, y), selected ? 4.5f : 3.5f, shade(d.colour, brightness, 1.0f));
                 if (key.anchor) drawSunKeyRays(x, y, selected ? 4.5f : 3.5f);  // follows the sun
@@ -307,10 +380,26 @@ void drawCurveView(Document& doc, EditState& edit, Playback& playback, float lab
     auto selectPrimaryKey = [&](const CurvePoint& p) {  // the track row and Delete / Copy follow the curve
         if (primary && p.target == *primary) edit.selectedKey = p.key;
     };
+    // A selected key's tangent handle under the mouse (drawn on top of the keys, so picked first).
+    int handleHit = -1;
+    if (hovered) {
+        double nearest = kPickRadiusPx;
+        for (std::size_t i = 0; i < handles.size(); ++i) {
+            const double distance = glm::length(handles[i].end - mouse);
+            if (distance <= nearest) nearest = distance, handleHit = int(i);
+        }
+    }
     if (ImGui::IsItemClicked(ImGuiMouseButton_Left) && !io.KeyAlt) {
         drag = CurveDrag{};
         drag.from = mouse;
-        if (hit >= 0) {
+        if (handleHit >= 0) {
+            const Handle& h = handles[std::size_t(handleHit)];
+            drag.kind = CurveDrag::Kind::Handle;
+            drag.handlePoint = h.point;
+            drag.handleSide = h.side;
+            drag.handleKeyPx = h.key;
+            view.pinRange(preset, h.point.target);  // the slope reads in the range it is drawn in
+        } else if (hit >= 0) {
             const CurvePoint& p = ids[std::size_t(hit)];
             if (io.KeyCtrl) {
                 if (view.isSelected(p))
@@ -379,6 +468,23 @@ void drawCurveView(Document& doc, EditState& edit, Playback& playback, float lab
                     ImGui::SetTooltip(
                         "%s", keyReadout(track->keys[std::size_t(p.key)], p.component, *desc).c_str());
             }
+        } else {
+            doc.closeMerge();
+            drag = CurveDrag{};
+        }
+    } else if (drag.kind == CurveDrag::Kind::Handle) {
+        if (leftDown) {
+            // The slope from the key to the mouse, in the range the curve is drawn in; one undo step.
+            const CurveRange range = view.rangeOf(doc.preset(), drag.handlePoint.target);
+            const double slope =
+                slopeOfHandle(mouse - drag.handleKeyPx, range, pxPerHour, heightPx, drag.handleSide);
+            const CurvePoint point = drag.handlePoint;
+            const TangentSide side = drag.handleSide;
+            if (glm::length(mouse - drag.from) > 0.0)
+                doc.apply("Tangent", "curve-tangent",
+                          [&](Preset& p) { setKeyTangent(p, point, side, slope); });
+            const ParamDesc* desc = findParam(point.target.scope, point.target.param);
+            ImGui::SetTooltip("slope %s per h", valueWithUnit(slope, desc ? desc->unit : "").c_str());
         } else {
             doc.closeMerge();
             drag = CurveDrag{};
@@ -479,7 +585,25 @@ void drawCurveView(Document& doc, EditState& edit, Playback& playback, float lab
                       [&](Preset& p) { setFlatTangents(p, picked, false); });
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip(
-                "Smooth tracks: flat levels the curve at the key; automatic follows its neighbours");
+                "Smooth tracks: flat levels the curve at the key; automatic follows its neighbours (and "
+                "resets the key's handles)");
+        // The first key's handles: -1 automatic, else its TangentMode (what the menu ticks).
+        int handleMode = -1;
+        if (!picked.empty())
+            if (const std::optional<TangentMode> m = tangentModeOf(doc.preset(), picked.front()))
+                handleMode = int(*m);
+        if (ImGui::MenuItem(("Unified tangents" + suffix).c_str(), nullptr,
+                            handleMode == int(TangentMode::Unified)))
+            doc.apply(tangentModeLabel(picked, TangentMode::Unified), "",
+                      [&](Preset& p) { setTangentMode(p, picked, TangentMode::Unified); });
+        if (ImGui::MenuItem(("Broken tangents" + suffix).c_str(), nullptr,
+                            handleMode == int(TangentMode::Broken)))
+            doc.apply(tangentModeLabel(picked, TangentMode::Broken), "",
+                      [&](Preset& p) { setTangentMode(p, picked, TangentMode::Broken); });
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip(
+                "The selected key's handles (drag their ends): unified keep one slope through the key, "
+                "broken move apart (a corner). Saved with the key (\"tangent_in\", \"tangent_out\")");
         // The segment after the key: its own interpolation or the track's ("interpolation" on the
         // key in the preset).
         if (ImGui::BeginMenu(("Interpolation after" + suffix).c_str())) {
@@ -496,27 +620,7 @@ void drawCurveView(Document& doc, EditState& edit, Playback& playback, float lab
             ImGui::EndMenu();
         }
         ImGui::Separator();
-        // Follow the sun: the keys keep their time today and move with the event when the date or
-        // the place changes; each event shows its time today.
-        if (ImGui::BeginMenu(("Follow the sun" + suffix).c_str())) {
-            const Location& where = doc.preset().environment.location;
-            for (SunEvent event : kSunEvents) {
-                const std::string when = formatClock(sunEventHours(where, event), ClockResolution::Minutes);
-                if (ImGui::MenuItem(eventMenuLabel(event).c_str(), when.c_str(),
-                                    allAnchoredTo(doc.preset(), picked, event)))
-                    doc.apply(anchorLabel(picked, event), "",
-                              [&](Preset& p) { anchorCurvePoints(p, picked, event); });
-            }
-            ImGui::Separator();
-            if (ImGui::MenuItem("Fixed time", nullptr, allAnchoredTo(doc.preset(), picked, std::nullopt)))
-                doc.apply(anchorLabel(picked, std::nullopt), "",
-                          [&](Preset& p) { anchorCurvePoints(p, picked, std::nullopt); });
-            ImGui::EndMenu();
-        }
-        if (ImGui::IsItemHovered())
-            ImGui::SetTooltip(
-                "Anchor the keys to a moment of the sun where they stand (\"sunset + 0:20\"): the curve "
-                "stays as it is, and the keys move with the sun when the date or the place changes");
+        followTheSunMenu(doc, picked, suffix);
         ImGui::SetNextItemWidth(120.0f);
         if (ImGui::InputText("Time", &timeText, ImGuiInputTextFlags_EnterReturnsTrue) && typeTime(timeText))
             ImGui::CloseCurrentPopup();

@@ -206,7 +206,7 @@ void curveButton(const Document& doc, EditState& edit, const ParamRef& ref) {
     if (ImGui::InvisibleButton("##curve", ImVec2(size * 0.8f, size))) edit.curves.setShown(target, !shown);
     const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
     const ImU32 colour =
-        shown ? ImU32(curveColour(target))
+        shown ? ImU32(curveColour(doc.preset(), edit, target))
               : (ImGui::IsItemHovered() ? IM_COL32(200, 200, 200, 255) : IM_COL32(100, 100, 100, 255));
     // A little S-curve: the icon of a curve editor.
     ImDrawList* dl = ImGui::GetWindowDrawList();

@@ -36,10 +36,10 @@
 
 #include <aerial/evaluate.hpp>
 #include <aerial/photometry.hpp>
-#include <aerial/sky_spectral.hpp>
 #include <aerial/renderer/display.hpp>
 #include <aerial/renderer/renderer.hpp>
 #include <aerial/sky.hpp>
+#include <aerial/sky_spectral.hpp>
 
 #include <chrono>
 #include <cstdint>
@@ -87,9 +87,10 @@ struct EditState {
     bool draggingKey = false;
     /// The timeline's curve view: time span, curves shown, selected key points.
     CurveViewState curves;
-    bool timelineHovered = false;  ///< Delete then deletes keys, not the object
-    KeyClipboard keyClipboard;
-    bool renaming = false;  ///< the outliner's inline rename
+    bool timelineHovered = false;   ///< Delete then deletes keys, not the object
+    KeyClipboard keyClipboard;      ///< a key copied from the track row (Ctrl+C with no curve selection)
+    CurveClipboard curveClipboard;  ///< keys copied from the curves (Ctrl+C on a curve selection)
+    bool renaming = false;          ///< the outliner's inline rename
     std::string renameBuffer;
     /// Auto-key and the changes not keyed yet (pending_edits.hpp).
     PendingEdits pending;
@@ -127,7 +128,7 @@ struct Playback {
 struct SkyService {
     std::unique_ptr<CompiledPreset> compiled;
     std::uint64_t compiledRevision = 0;
-    PresetState state;  ///< every parameter at the current time
+    PresetState state;                                         ///< every parameter at the current time
     std::unique_ptr<SpectralSkySolver> sunSolver, moonSolver;  ///< the colours of twilight
     bool valid = false;
     AtmosphereParams solvedAir{};

@@ -6,6 +6,8 @@
 // anchor them to a moment of the sun (curve_anchor sunset, the key menu's
 // Follow the sun), type the selected keys' time and value (curve_time
 // 19:52:00, curve_value 0.0031: the Time and Value fields), flat tangents,
+// tangent handles (curve_tangent, curve_tangent_mode, curve_handle_drag with
+// the mouse, print_tangents),
 // zoom and pan; print a track's keys as the view reads them ("sunset + 0:20
 // (19:52)"), what the Time and Value fields show, the legend (names and
 // colours) and the day's sun events; and real mouse drags over the curve
@@ -277,14 +279,11 @@ void Editor::declareCurveScriptCommands() {
             "prints a line per curve the view shows (those toggled on, then the inspector's parameter): "
             "\"legend KEY PALETTE_INDEX NAME\", NAME as the legend reads it (\"Haze bank density\")")
         .handles([this](W, E) {
-            std::vector<TrackTarget> targets = edit_.curves.shown;
-            if (edit_.selectedParam) {
-                const TrackTarget primary = trackTargetOf(doc_.preset(), *edit_.selectedParam);
-                if (!edit_.curves.isShown(primary)) targets.push_back(primary);
-            }
-            for (const TrackTarget& t : targets)
-                std::printf("legend %s %d %s\n", curveKey(t).c_str(), curvePaletteIndex(t, kCurvePaletteSize),
-                            curveLabel(doc_.preset(), t).c_str());
+            const std::vector<TrackTarget> targets = shownCurveTargets(doc_.preset(), edit_);
+            const std::vector<int> palette = curvePaletteIndices(targets, kCurvePaletteSize);
+            for (std::size_t i = 0; i < targets.size(); ++i)
+                std::printf("legend %s %d %s\n", curveKey(targets[i]).c_str(), palette[i],
+                            curveLabel(doc_.preset(), targets[i]).c_str());
             return true;
         });
     table.add("curve_anchor")
@@ -355,6 +354,27 @@ void Editor::declareCurveScriptCommands() {
             for (std::size_t k = 0; k < track.keys.size(); ++k)
                 std::printf("key %zu %.9f %s\n", k, track.keys[k].timeHours,
                             keyTimeText(track.keys[k]).c_str());
+            return true;
+        });
+    table.add("print_tangents")
+        .takes({word("KEY")})
+        .helps(
+            "prints a line per key of KEY's track: \"tangent INDEX TIME_H MODE IN OUT\", MODE unified, "
+            "broken or "
+            "auto (automatic), IN and OUT the first component's slopes as the curve uses them [unit per h]")
+        .handles([this, animated](W w, E error) {
+            const std::optional<TrackTarget> target = animated(w[1], error);
+            if (!target) return false;
+            const Track& track = *findTrack(doc_.preset(), *target);
+            const ParamDesc* desc = findParam(target->scope, target->param);
+            const CompiledTrack compiled = compileTrack(track, desc ? desc->components() : 3);
+            for (std::size_t k = 0; k < track.keys.size(); ++k) {
+                const std::optional<KeyTangents>& own = track.keys[k].tangents;
+                const char* mode = !own ? "auto" : own->mode == TangentMode::Broken ? "broken" : "unified";
+                const bool slopes = compiled.tangentsIn.size() == track.keys.size();
+                std::printf("tangent %zu %.9f %s %.9g %.9g\n", k, track.keys[k].timeHours, mode,
+                            slopes ? compiled.tangentsIn[k].x : 0.0, slopes ? compiled.tangents[k].x : 0.0);
+            }
             return true;
         });
     table.add("print_sun")
@@ -456,6 +476,85 @@ void Editor::declareCurveScriptCommands() {
             doc_.apply(flat ? (one ? "Flat tangent" : "Flat tangents")
                             : (one ? "Automatic tangent" : "Automatic tangents"),
                        "", [&](Preset& p) { setFlatTangents(p, picked, flat); });
+            return true;
+        });
+    // The one selected key point whose handles a tangent command works on, or nullopt with `error`.
+    const auto handleKey = [this](const char* command, std::string& error) -> std::optional<CurvePoint> {
+        const std::vector<CurvePoint>& picked = edit_.curves.selected;
+        if (picked.size() != 1 || dragItemsOf(doc_.preset(), picked).empty()) {
+            error = std::string(command) + ": select one key point first (curve_select KEY T [COMPONENT])";
+            return std::nullopt;
+        }
+        return picked.front();
+    };
+    table.add("curve_tangent")
+        .takes({choice("SIDE", {"in", "out"}), number("SLOPE")})
+        .helps(
+            "set the selected key's tangent slope arriving (in) or leaving (out) to SLOPE [value unit per "
+            "h], as dragging that handle does (unified handles: both sides); one undo step")
+        .handles([this, handleKey](W w, E error) {
+            const std::optional<CurvePoint> point = handleKey("curve_tangent", error);
+            const double slope = w.number(2);
+            if (!point) return false;
+            const TangentSide side = w[1] == "in" ? TangentSide::In : TangentSide::Out;
+            doc_.apply("Tangent", "", [&](Preset& p) { setKeyTangent(p, *point, side, slope); });
+            return true;
+        });
+    table.add("curve_tangent_mode")
+        .takes({choice("MODE", {"unified", "broken", "auto"})})
+        .helps(
+            "the selected keys' handles unified (one slope, the mean of the two), broken (two) or "
+            "automatic again (the key menu's Automatic tangent); one undo step")
+        .handles([this](W w, E error) {
+            const std::vector<CurvePoint> picked = edit_.curves.selected;
+            if (dragItemsOf(doc_.preset(), picked).empty()) {
+                error = "curve_tangent_mode: no keys selected";
+                return false;
+            }
+            int changed = 0;
+            if (w[1] == "auto") {
+                doc_.apply(keyCountOf(picked) == 1 ? "Automatic tangent" : "Automatic tangents", "",
+                           [&](Preset& p) { changed = setFlatTangents(p, picked, false); });
+            } else {
+                const TangentMode mode = w[1] == "broken" ? TangentMode::Broken : TangentMode::Unified;
+                doc_.apply(tangentModeLabel(picked, mode), "",
+                           [&](Preset& p) { changed = setTangentMode(p, picked, mode); });
+            }
+            std::printf("curve_tangent_mode: %s (%d changed)\n", w[1].c_str(), changed);
+            return true;
+        });
+    table.add("curve_handle_drag")
+        .takes({choice("SIDE", {"in", "out"}), number("DX"), number("DY")})
+        .helps(
+            "drag the selected key's in or out tangent handle by DX DY pixels with the mouse (the key "
+            "must be selected, its curve shown and its segment on that side smooth)")
+        .handles([this, handleKey, queueDrag, pixelOf](W w, E error) {
+            const std::optional<CurvePoint> point = handleKey("curve_handle_drag", error);
+            if (!point) return false;
+            const CurveViewState& v = edit_.curves;
+            if (!(v.drawnX1 > v.drawnX0) || !(v.drawnBottom > v.drawnTop)) {
+                error = "curve_handle_drag: the timeline's curve area is not shown";
+                return false;
+            }
+            const Track& track = *findTrack(doc_.preset(), point->target);
+            const ParamDesc* desc = findParam(point->target.scope, point->target.param);
+            const CompiledTrack compiled = compileTrack(track, desc ? desc->components() : 3);
+            const std::size_t k = std::size_t(point->key);
+            if (compiled.tangentsIn.size() != track.keys.size()) {
+                error = "curve_handle_drag: the key has no smooth segment";
+                return false;
+            }
+            const TangentSide side = w[1] == "in" ? TangentSide::In : TangentSide::Out;
+            const double slope = side == TangentSide::Out ? compiled.tangents[k][point->component]
+                                                          : compiled.tangentsIn[k][point->component];
+            const CurveRange range = v.rangeOf(doc_.preset(), point->target);
+            const TrackKey& key = track.keys[k];
+            const double pxPerHour = (v.drawnX1 - v.drawnX0) / v.time.span();
+            const glm::dvec2 from =
+                pixelOf(key.timeHours, range.normalised(key.value[point->component])) +
+                tangentHandleOffset(slope, range, pxPerHour, v.drawnBottom - v.drawnTop, side);
+            queueDrag(from, from + glm::dvec2(w.number(2), w.number(3)), false, false, 8);
+            std::printf("curve_handle_drag: press at %.1f %.1f\n", from.x, from.y);
             return true;
         });
     table.add("curve_zoom")

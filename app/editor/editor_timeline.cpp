@@ -3,9 +3,11 @@
 // noon, sunset, the time as HH:MM), a 00:00-24:00 ruler to scrub on, a
 // summary row of every key in the preset, the selected parameter's track
 // (select, drag in time, double-click to add, right-click to delete, flatten
-// its tangent or set the interpolation; Delete, Ctrl+C / Ctrl+V while the
+// its tangent, make it follow the sun or set the interpolation; Delete, Ctrl+C / Ctrl+V while the
 // mouse is over the timeline are the action table's timeline_delete_keys,
-// timeline_copy_key and timeline_paste_key; a key that follows the sun is a
+// timeline_copy_key and timeline_paste_key: Ctrl+C copies the keys selected
+// on the curves, of one curve or several, else the track row's key, and
+// Ctrl+V pastes them at the time, each onto its own curve; a key that follows the sun is a
 // round mark with rays, "sunset + 0:20 (19:52)") and the curve area
 // (editor_curves.cpp). The time axis zooms
 // with the wheel around the mouse and pans with a middle or Alt drag; F or
@@ -58,13 +60,28 @@ bool deleteTimelineKeys(Document& doc, EditState& edit) {
 }
 
 bool copyTimelineKey(const Document& doc, EditState& edit) {
+    // The keys selected on the curves (several curves, their times relative), else the track row's key.
+    if (CurveClipboard copied = copyCurvePoints(doc.preset(), edit.curves.selected); !copied.empty()) {
+        edit.curveClipboard = std::move(copied);
+        edit.keyClipboard = KeyClipboard{};
+        return true;
+    }
     const Track* t = edit.selectedParam ? trackOf(doc.preset(), *edit.selectedParam) : nullptr;
     if (!t || edit.selectedKey < 0 || edit.selectedKey >= int(t->keys.size())) return false;
     edit.keyClipboard = {true, edit.selectedParam->desc->type, t->keys[std::size_t(edit.selectedKey)].value};
+    edit.curveClipboard = CurveClipboard{};
     return true;
 }
 
 bool pasteTimelineKey(Document& doc, EditState& edit, double timeHours) {
+    if (!edit.curveClipboard.empty()) {  // each key onto its own curve, the earliest at `timeHours`
+        const CurveClipboard clipboard = edit.curveClipboard;
+        std::vector<CurvePoint> pasted;
+        doc.apply(pasteLabel(clipboard), "",
+                  [&](Preset& p) { pasted = pasteCurveKeys(p, clipboard, timeHours); });
+        edit.curves.selected = pasted;  // the pasted keys, ready to move
+        return !pasted.empty();
+    }
     if (!edit.selectedParam || !edit.keyClipboard.valid) return false;
     const ParamRef ref = *edit.selectedParam;
     const KeyClipboard clip = edit.keyClipboard;
@@ -394,6 +411,10 @@ void drawTimeline(Document& doc, EditState& edit, Playback& playback, const Acti
                 doc.apply(flat ? "Automatic tangent" : "Flat tangent", "",
                           [&](Preset& p) { setFlatTangents(p, key, !flat); });
         }
+        // Follow the sun: the curve view's key menu's, on this key.
+        if (const Track* t = edit.selectedParam ? trackOf(doc.preset(), *edit.selectedParam) : nullptr;
+            t && edit.selectedKey >= 0 && edit.selectedKey < int(t->keys.size()))
+            followTheSunMenu(doc, {{target, edit.selectedKey, 0}}, "");
         if (ImGui::MenuItem("Copy", actions.shortcutOf("timeline_copy_key").c_str()))
             actions.run("timeline_copy_key");
         if (ImGui::MenuItem("Jump to key") && edit.selectedParam) {

@@ -68,10 +68,18 @@ bool pasteTimelineKey(Document& doc, EditState& edit, double timeHours);
 /// `labelX` to x0; picks, drags and box-selects keys, sets the time on a click.
 void drawCurveView(Document& doc, EditState& edit, Playback& playback, float labelX, float x0, float x1,
                    float top, float bottom);
-/// The colour (ImU32) a curve is drawn in: a palette entry chosen by its
-/// target alone (curvePaletteIndex), so showing or hiding another curve
-/// recolours none.
-unsigned curveColour(const TrackTarget& target);
+/// The key menu's "Follow the sun" submenu (the curve view's and the track
+/// row's): anchors the keys of `picked` to a sun event where they stand, or
+/// gives them a fixed time again, one undo step; `suffix` follows the
+/// menu's name (" (3 keys)").
+void followTheSunMenu(Document& doc, const std::vector<CurvePoint>& picked, const std::string& suffix);
+/// The curves the timeline's curve view shows, in order: those toggled on
+/// (edit.curves.shown), then the inspector's parameter when it is not among them.
+std::vector<TrackTarget> shownCurveTargets(const Preset& preset, const EditState& edit);
+/// The colour (ImU32) a curve is drawn in: its palette entry among the
+/// curves shown (curvePaletteIndices over shownCurveTargets), its own entry
+/// when it is not shown.
+unsigned curveColour(const Preset& preset, const EditState& edit, const TrackTarget& target);
 /// The mark of a key that follows the sun (TrackKey::anchor): eight short
 /// rays around its point at (x, y) [px] of `radius` [px], in the current
 /// window (the curve view and the timeline's track row draw it).

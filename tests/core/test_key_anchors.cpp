@@ -55,9 +55,10 @@ TEST(SunEvents, UndatedEventsMatchTheClosedForm) {
         double elevationDeg;
         double sign;  // -1 before noon, +1 after
     };
-    const Event events[] = {{aerial::SunEvent::NauticalDawn, -12.0, -1.0}, {aerial::SunEvent::CivilDawn, -6.0, -1.0},
-                            {aerial::SunEvent::Sunrise, -0.833, -1.0},     {aerial::SunEvent::Sunset, -0.833, 1.0},
-                            {aerial::SunEvent::CivilDusk, -6.0, 1.0},      {aerial::SunEvent::NauticalDusk, -12.0, 1.0}};
+    const Event events[] = {
+        {aerial::SunEvent::NauticalDawn, -12.0, -1.0}, {aerial::SunEvent::CivilDawn, -6.0, -1.0},
+        {aerial::SunEvent::Sunrise, -0.833, -1.0},     {aerial::SunEvent::Sunset, -0.833, 1.0},
+        {aerial::SunEvent::CivilDusk, -6.0, 1.0},      {aerial::SunEvent::NauticalDusk, -12.0, 1.0}};
     int checked = 0;
     for (double lat = -60.0; lat <= 60.0; lat += 7.5) {
         for (double day : {1.0, 80.0, 172.0, 264.0, 355.0}) {
@@ -116,10 +117,10 @@ TEST(SunEvents, EventsThatDoNotHappenFallWhereTheSunComesClosest) {
     // elevation: 0.002 deg of latitude is ~0.05 h there.
     EXPECT_LT(worstStep, 0.1);
     // At 60 N the lowest sun is -6.56 deg.
-    EXPECT_NEAR(hoursApart(aerial::sunEventHours(undated(60.0, day), aerial::SunEvent::NauticalDusk), 0.0), 0.0,
-                1e-12);
-    EXPECT_NEAR(hoursApart(aerial::sunEventHours(undated(60.0, day), aerial::SunEvent::NauticalDawn), 0.0), 0.0,
-                1e-12);
+    EXPECT_NEAR(hoursApart(aerial::sunEventHours(undated(60.0, day), aerial::SunEvent::NauticalDusk), 0.0),
+                0.0, 1e-12);
+    EXPECT_NEAR(hoursApart(aerial::sunEventHours(undated(60.0, day), aerial::SunEvent::NauticalDawn), 0.0),
+                0.0, 1e-12);
     // Civil dusk still happens at 60 N (lowest -6.56 < -6), just before midnight.
     const double civilDusk = aerial::sunEventHours(undated(60.0, day), aerial::SunEvent::CivilDusk);
     EXPECT_GT(civilDusk, 22.5);
@@ -163,7 +164,8 @@ TEST(KeyAnchors, ALoadedKeyFollowsTheSunAndIsSavedAsItsAnchor) {
     EXPECT_NEAR(sunset, 21.0 + 26.0 / 60.0, 2.0 / 60.0);
 
     const std::string json = aerial::presetToJson(preset);
-    EXPECT_NE(json.find(R"({"anchor": "sunset", "offset_h": 0.25, "value": 0.02})"), std::string::npos) << json;
+    EXPECT_NE(json.find(R"({"anchor": "sunset", "offset_h": 0.25, "value": 0.02})"), std::string::npos)
+        << json;
     const aerial::Preset back = load(json);
     EXPECT_EQ(back.tracks[0].keys[1].anchor, key.anchor);
     EXPECT_EQ(back.tracks[0].keys[1].offsetHours, 0.25);
@@ -240,8 +242,8 @@ TEST(KeyAnchors, MovingAnAnchoredKeyChangesItsOffsetAndAnchoringKeepsItsTime) {
 
 TEST(KeyAnchors, BadOffsetsAreErrorsNamingTheField) {
     const auto errorsOf = [](const std::string& keys) {
-        return aerial::parsePreset(R"({"version": 4, "tracks": [{"param": "fog.density_per_m", "keys": [)" + keys +
-                                   "]}]}")
+        return aerial::parsePreset(R"({"version": 4, "tracks": [{"param": "fog.density_per_m", "keys": [)" +
+                                   keys + "]}]}")
             .errors;
     };
     auto first = errorsOf(R"({"anchor": "sunrise", "offset_h": 13, "value": 0.01})");
@@ -279,14 +281,18 @@ TEST(KeyTimes, KeysUnderAMinuteApartGetAWarning) {
     ASSERT_EQ(w.size(), 1u);
     EXPECT_EQ(w[0].pointer, "/tracks/0/keys/2/time_h");
     EXPECT_EQ(w[0].line, 2);
-    EXPECT_NE(w[0].message.find("keys at 19:30 and 19:30:20 are 20 s apart"), std::string::npos) << w[0].message;
-    w = warningsOf(R"({"time_h": 0.005, "value": 0.01}, {"time_h": 12, "value": 0.02}, {"time_h": 23.995, "value": 0.0})",
-                   true);
+    EXPECT_NE(w[0].message.find("keys at 19:30 and 19:30:20 are 20 s apart"), std::string::npos)
+        << w[0].message;
+    w = warningsOf(
+        R"({"time_h": 0.005, "value": 0.01}, {"time_h": 12, "value": 0.02}, {"time_h": 23.995, "value": 0.0})",
+        true);
     ASSERT_EQ(w.size(), 1u);
     EXPECT_EQ(w[0].pointer, "/tracks/0/keys/0/time_h");
-    EXPECT_TRUE(warningsOf(R"({"time_h": 0.005, "value": 0.01}, {"time_h": 23.995, "value": 0.0})", false).empty());
-    EXPECT_TRUE(warningsOf(R"({"time_h": 19.5, "value": 0.01}, {"time_h": 19.516666666666667, "value": 0.0})", true)
-                    .empty());
+    EXPECT_TRUE(
+        warningsOf(R"({"time_h": 0.005, "value": 0.01}, {"time_h": 23.995, "value": 0.0})", false).empty());
+    EXPECT_TRUE(
+        warningsOf(R"({"time_h": 19.5, "value": 0.01}, {"time_h": 19.516666666666667, "value": 0.0})", true)
+            .empty());
     // Every shipped preset is free of them.
     for (const char* name : {"clear_summer_day", "desert_dusk", "foggy_valley_morning", "hazy_sunset",
                              "misty_river_farm", "stormy_night"}) {
@@ -310,7 +316,8 @@ TEST(KeyTimes, AKeysInterpolationRoundTrips) {
     EXPECT_FALSE(track.keys[1].interpolation.has_value());
     EXPECT_EQ(track.keys[2].interpolation, aerial::Interpolation::Linear);
     const std::string json = aerial::presetToJson(*r.preset);
-    EXPECT_NE(json.find(R"({"time_h": 6, "value": 0.01, "interpolation": "step"})"), std::string::npos) << json;
+    EXPECT_NE(json.find(R"({"time_h": 6, "value": 0.01, "interpolation": "step"})"), std::string::npos)
+        << json;
     EXPECT_NE(json.find(R"({"time_h": 12, "value": 0.02})"), std::string::npos) << json;
     const aerial::PresetLoadResult back = aerial::parsePreset(json);
     ASSERT_TRUE(back.ok());
@@ -322,4 +329,85 @@ TEST(KeyTimes, AKeysInterpolationRoundTrips) {
     ASSERT_FALSE(bad.errors.empty());
     EXPECT_EQ(bad.errors[0].pointer, "/tracks/0/keys/0/interpolation");
     EXPECT_NE(bad.errors[0].message.find("unknown interpolation \"cubic\""), std::string::npos);
+}
+
+// A key's own tangents ("tangent_in", "tangent_out", "tangent_mode") load,
+// save as written (in the value's shape, only where set) and load back bit
+// for bit; the library evaluates them as the Hermite slopes.
+TEST(KeyTimes, AKeysTangentsRoundTrip) {
+    const aerial::PresetLoadResult r = aerial::parsePreset(
+        R"({"version": 5, "tracks": [{"param": "fog.density_per_m", "keys": [
+            {"time_h": 0, "value": 0}, {"time_h": 8, "value": 1, "tangent_in": 0.5, "tangent_out": -0.25,
+            "tangent_mode": "broken"}, {"time_h": 16, "value": 2}]},
+            {"param": "fog.colour_rgb", "keys": [{"time_h": 6, "value": [1, 0.5, 0.25],
+            "tangent_in": [0.125, 0, -0.125], "tangent_out": [0.125, 0, -0.125]}, {"time_h": 18, "value": [0.5, 0.5, 0.5]}]}]})");
+    ASSERT_TRUE(r.ok()) << r.errors[0].toString();
+    const aerial::TrackKey& scalar = r.preset->tracks[0].keys[1];
+    ASSERT_TRUE(scalar.tangents.has_value());
+    EXPECT_EQ(scalar.tangents->in.x, 0.5);
+    EXPECT_EQ(scalar.tangents->out.x, -0.25);
+    EXPECT_EQ(scalar.tangents->mode, aerial::TangentMode::Broken);
+    const aerial::TrackKey& colour = r.preset->tracks[1].keys[0];
+    ASSERT_TRUE(colour.tangents.has_value());
+    EXPECT_EQ(colour.tangents->mode, aerial::TangentMode::Unified);  // the default
+    EXPECT_EQ(colour.tangents->out, glm::dvec3(0.125, 0.0, -0.125));
+    EXPECT_FALSE(r.preset->tracks[0].keys[0].tangents.has_value());
+    const std::string json = aerial::presetToJson(*r.preset);
+    EXPECT_NE(
+        json.find(
+            R"({"time_h": 8, "value": 1, "tangent_in": 0.5, "tangent_out": -0.25, "tangent_mode": "broken"})"),
+        std::string::npos)
+        << json;
+    EXPECT_NE(
+        json.find(
+            R"("tangent_in": [0.125, 0, -0.125], "tangent_out": [0.125, 0, -0.125], "tangent_mode": "unified"})"),
+        std::string::npos)
+        << json;
+    EXPECT_NE(json.find(R"({"time_h": 16, "value": 2})"), std::string::npos) << json;
+    const aerial::PresetLoadResult back = aerial::parsePreset(json);
+    ASSERT_TRUE(back.ok()) << back.errors[0].toString();
+    EXPECT_TRUE(aerial::presetsIdentical(*r.preset, *back.preset));
+    aerial::Preset changed = *back.preset;
+    changed.tracks[0].keys[1].tangents->out.x = -0.3;
+    EXPECT_FALSE(aerial::presetsIdentical(*r.preset, changed));
+    // The game's evaluation: 2s^3 - s^2 on 0..8 h (Timeline's closed form), at s = 3/4 0.28125.
+    const aerial::CompiledPreset compiled(*r.preset);
+    EXPECT_NEAR(compiled.evaluate(6.0).environment.fog.density, 2.0 * 27.0 / 64.0 - 9.0 / 16.0, 1e-15);
+}
+
+// Malformed tangents: each error names the field and the reason.
+TEST(KeyTimes, BadKeyTangentsAreNamed) {
+    struct Case {
+        const char* key;
+        const char* pointer;
+        const char* message;
+    };
+    const Case cases[] = {
+        {R"({"time_h": 6, "value": 0.01, "tangent_in": 0.1})", "/tracks/0/keys/0/tangent_out",
+         "missing field \"tangent_out\""},
+        {R"({"time_h": 6, "value": 0.01, "tangent_mode": "broken"})", "/tracks/0/keys/0/tangent_mode",
+         "\"tangent_mode\" goes with \"tangent_in\" and \"tangent_out\""},
+        {R"({"time_h": 6, "value": 0.01, "tangent_in": 0.1, "tangent_out": 0.1, "tangent_mode": "free"})",
+         "/tracks/0/keys/0/tangent_mode", "unknown tangent mode \"free\"; expected one of unified, broken"},
+        {R"({"time_h": 6, "value": 0.01, "tangent_in": 0.1, "tangent_out": 0.2})",
+         "/tracks/0/keys/0/tangent_out",
+         "unified tangents have one slope: tangent_in 0.1 and tangent_out 0.2 differ"},
+        {R"({"time_h": 6, "value": 0.01, "tangent_in": "up", "tangent_out": 0.2, "tangent_mode": "broken"})",
+         "/tracks/0/keys/0/tangent_in", "expected a number"},
+        {R"({"time_h": 6, "value": 0.01, "tangent_in": 1e300, "tangent_out": 1e300})",
+         "/tracks/0/keys/0/tangent_in",
+         "a tangent must be a finite slope of at most 1e+150 per hour (got 1e+300)"},
+        {R"({"time_h": 6, "value": 0.01, "flat": true, "tangent_in": 0.1, "tangent_out": 0.1})",
+         "/tracks/0/keys/0/flat", "either flat (tangent 0) or has its own tangents, not both"},
+    };
+    for (const Case& c : cases) {
+        const std::string text =
+            std::string(R"({"version": 5, "tracks": [{"param": "fog.density_per_m", "keys": [)") + c.key +
+            "]}]}";
+        const aerial::PresetLoadResult r = aerial::parsePreset(text);
+        ASSERT_FALSE(r.errors.empty()) << c.key;
+        EXPECT_EQ(r.errors[0].pointer, c.pointer) << c.key;
+        EXPECT_NE(r.errors[0].message.find(c.message), std::string::npos)
+            << c.key << ": " << r.errors[0].message;
+    }
 }

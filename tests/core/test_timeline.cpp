@@ -316,13 +316,15 @@ TEST(Timeline, FlatKeysHaveLevelTangentsClosedForm) {
     // Every component of a vector key levels out.
     Track v;
     v.interpolation = Interpolation::Smooth;
-    v.keys = {{0.0, glm::dvec3(0.0, 0.0, 0.0)}, {8.0, glm::dvec3(1.0, 2.0, 3.0), true},
+    v.keys = {{0.0, glm::dvec3(0.0, 0.0, 0.0)},
+              {8.0, glm::dvec3(1.0, 2.0, 3.0), true},
               {16.0, glm::dvec3(2.0, 4.0, 6.0)}};
     const aerial::CompiledTrack cv = aerial::compileTrack(v, 3);
     EXPECT_EQ(cv.tangents[1], glm::dvec3(0.0));
     for (double s = 0.0; s <= 1.0; s += 1.0 / 16.0)
         for (int c = 0; c < 3; ++c)
-            EXPECT_NEAR(aerial::evaluateTrack(cv, 8.0 * s)[c], (c + 1.0) * (3.0 * s * s - 2.0 * s * s * s), 1e-12);
+            EXPECT_NEAR(aerial::evaluateTrack(cv, 8.0 * s)[c], (c + 1.0) * (3.0 * s * s - 2.0 * s * s * s),
+                        1e-12);
     // Step and linear ignore it.
     for (Interpolation interpolation : {Interpolation::Step, Interpolation::Linear}) {
         Track a = scalarTrack(interpolation, {{0.0, 0.0}, {8.0, 1.0}, {16.0, 2.0}});
@@ -359,13 +361,15 @@ TEST(Timeline, FlatKeysOnHeldTracksClosedForm) {
 TEST(Timeline, AKeysInterpolationGovernsTheSegmentAfterIt) {
     aerial::Track track;
     track.interpolation = aerial::Interpolation::Smooth;
-    track.keys = {{2.0, glm::dvec3(0.0)}, {6.0, glm::dvec3(1.0)}, {10.0, glm::dvec3(3.0)}, {14.0, glm::dvec3(4.0)}};
+    track.keys = {
+        {2.0, glm::dvec3(0.0)}, {6.0, glm::dvec3(1.0)}, {10.0, glm::dvec3(3.0)}, {14.0, glm::dvec3(4.0)}};
     const aerial::CompiledTrack smooth = aerial::compileTrack(track, 1);
     track.keys[1].interpolation = aerial::Interpolation::Step;
     track.keys[2].interpolation = aerial::Interpolation::Linear;
     const aerial::CompiledTrack mixed = aerial::compileTrack(track, 1);
     for (double t = 6.0; t < 10.0; t += 0.25) EXPECT_EQ(aerial::evaluateTrack(mixed, t).x, 1.0) << t;
-    for (double t = 10.0; t <= 14.0; t += 0.25) EXPECT_NEAR(aerial::evaluateTrack(mixed, t).x, 3.0 + (t - 10.0) / 4.0, 1e-12);
+    for (double t = 10.0; t <= 14.0; t += 0.25)
+        EXPECT_NEAR(aerial::evaluateTrack(mixed, t).x, 3.0 + (t - 10.0) / 4.0, 1e-12);
     // The segments without an override are unchanged, the wrap through midnight included.
     for (double t : {2.5, 4.0, 5.9, 15.0, 20.0, 1.0})
         EXPECT_EQ(aerial::evaluateTrack(mixed, t).x, aerial::evaluateTrack(smooth, t).x) << t;
@@ -378,4 +382,75 @@ TEST(Timeline, AKeysInterpolationGovernsTheSegmentAfterIt) {
     EXPECT_EQ(oneSmooth.tangents.size(), 4u);
     EXPECT_EQ(aerial::evaluateTrack(oneSmooth, 4.0).x, aerial::evaluateTrack(smooth, 4.0).x);
     EXPECT_NEAR(aerial::evaluateTrack(oneSmooth, 8.0).x, 2.0, 1e-12);  // linear 6 -> 10
+}
+
+// A key's own tangents (TrackKey::tangents) are the slopes of the Hermite
+// segments at the key: keys 0 / 8 / 16 h at 0 / 1 / 2, cyclic, smooth. The
+// 0 h and 16 h keys are extrema (tangent 0). With broken slopes at 8 h,
+// in 0.5 and out -0.25 per h, h = 8 and s the segment's fraction:
+//   0..8 h:  v = h01(s) + h11(s) * 8 * 0.5 = 3s^2 - 2s^3 + 4(s^3 - s^2)
+//              = 2s^3 - s^2 (below 0 near the start: the artist's overshoot)
+//   8..16 h: v = h00(s) + h10(s) * 8 * (-0.25) + 2 h01(s)
+//              = -4s^3 + 7s^2 - 2s + 1
+// and the segment 16..24 h, which does not touch the key, is unchanged.
+TEST(Timeline, KeyTangentsAreTheHermiteSlopesClosedForm) {
+    using aerial::Interpolation;
+    aerial::Track track;
+    track.interpolation = Interpolation::Smooth;
+    track.keys = {{0.0, glm::dvec3(0.0)}, {8.0, glm::dvec3(1.0)}, {16.0, glm::dvec3(2.0)}};
+    const aerial::CompiledTrack automatic = aerial::compileTrack(track, 1);
+    EXPECT_EQ(aerial::automaticTangent(track, 1, 1).x, 1.0 / 8.0);  // the mean of the secants 1/8, 1/8
+    track.keys[1].tangents =
+        aerial::KeyTangents{glm::dvec3(0.5), glm::dvec3(-0.25), aerial::TangentMode::Broken};
+    const aerial::CompiledTrack given = aerial::compileTrack(track, 1);
+    for (double s = 0.0; s <= 1.0; s += 1.0 / 64.0) {
+        EXPECT_NEAR(aerial::evaluateTrack(given, 8.0 * s).x, 2.0 * s * s * s - s * s, 1e-12) << s;
+        EXPECT_NEAR(aerial::evaluateTrack(given, 8.0 + 8.0 * s).x,
+                    -4.0 * s * s * s + 7.0 * s * s - 2.0 * s + 1.0, 1e-12)
+            << s;
+    }
+    EXPECT_LT(aerial::evaluateTrack(given, 2.0).x, 0.0);  // 2/64 - 1/16: not clamped to the keys' range
+    for (double t = 16.0; t < 24.0; t += 0.25)
+        EXPECT_EQ(aerial::evaluateTrack(given, t).x, aerial::evaluateTrack(automatic, t).x) << t;
+    // The automatic tangent ignores the key's own.
+    EXPECT_EQ(aerial::automaticTangent(track, 1, 1).x, 1.0 / 8.0);
+    // Step and linear segments ignore tangents.
+    for (Interpolation interpolation : {Interpolation::Step, Interpolation::Linear}) {
+        aerial::Track a = track;
+        a.interpolation = interpolation;
+        aerial::Track b = a;
+        b.keys[1].tangents.reset();
+        for (double t = 0.0; t < 24.0; t += 0.25)
+            EXPECT_EQ(aerial::evaluateTrack(a, t, 1).x, aerial::evaluateTrack(b, t, 1).x) << t;
+    }
+    // Unified slopes on a colour, per channel: (0.5, 0, -0.5) per h at 8 h,
+    // every channel keyed 0, 1, 2; on 0..8 h channel 0 is
+    // 3s^2 - 2s^3 + 4(s^3 - s^2), channel 1 the smoothstep 3s^2 - 2s^3,
+    // channel 2 3s^2 - 2s^3 - 4(s^3 - s^2).
+    aerial::Track colour;
+    colour.interpolation = Interpolation::Smooth;
+    colour.keys = {{0.0, glm::dvec3(0.0)}, {8.0, glm::dvec3(1.0)}, {16.0, glm::dvec3(2.0)}};
+    colour.keys[1].tangents = aerial::KeyTangents{glm::dvec3(0.5, 0.0, -0.5), glm::dvec3(0.5, 0.0, -0.5)};
+    const aerial::CompiledTrack cc = aerial::compileTrack(colour, 3);
+    for (double s = 0.0; s <= 1.0; s += 1.0 / 16.0) {
+        const glm::dvec3 v = aerial::evaluateTrack(cc, 8.0 * s);
+        const double smoothstep = 3.0 * s * s - 2.0 * s * s * s, h11 = s * s * s - s * s;
+        EXPECT_NEAR(v.x, smoothstep + 4.0 * h11, 1e-12) << s;
+        EXPECT_NEAR(v.y, smoothstep, 1e-12) << s;
+        EXPECT_NEAR(v.z, smoothstep - 4.0 * h11, 1e-12) << s;
+    }
+}
+
+// Tracks without their own tangents evaluate exactly as the automatic ones.
+TEST(Timeline, TracksWithoutKeyTangentsAreUnchanged) {
+    aerial::Track track;
+    track.interpolation = aerial::Interpolation::Smooth;
+    track.keys = {
+        {1.0, glm::dvec3(0.2)}, {7.0, glm::dvec3(0.9)}, {13.0, glm::dvec3(0.4)}, {20.0, glm::dvec3(0.6)}};
+    const aerial::CompiledTrack c = aerial::compileTrack(track, 1);
+    EXPECT_EQ(c.tangentsIn, c.tangents);
+    for (std::size_t k = 0; k < track.keys.size(); ++k) {
+        EXPECT_FALSE(c.givenTangents[k]);
+        EXPECT_EQ(aerial::automaticTangent(track, k, 1), c.tangents[k]);
+    }
 }

@@ -143,6 +143,7 @@ add_volume ellipsoid
 expect_selected volume 1
 expect_dirty
 gizmo_drag translate x 120 0 10
+time 12
 print volume[1].position_m
 time 6
 set fog.density_per_m 0.01
@@ -1393,6 +1394,173 @@ quit
     print("OK: mesh_volume")
 
 
+def case_tangents(env):
+    """Tangent handles (1280x720): the selected 08:00 key's out handle dragged up
+    with the mouse gives it its own unified slope (both sides, one undo step),
+    saved as "tangent_in"/"tangent_out"; broken, lifting the in handle lowers
+    that side's slope only; a typed slope is saved exactly; Automatic takes them away."""
+    paths = [env.path("tangents_%d.json" % i) for i in range(4)]
+    p = env.run(env.script("tangents.txt", """
+new
+time 6
+set fog.density_per_m 0.01
+key fog.density_per_m
+time 8
+set fog.density_per_m 0.02
+key fog.density_per_m
+time 10
+set fog.density_per_m 0.005
+key fog.density_per_m
+curve fog.density_per_m on
+curve_select fog.density_per_m 8
+wait_frames 2
+curve_handle_drag out 0 -20
+wait_frames 2
+print_tangents fog.density_per_m
+undo
+print_tangents fog.density_per_m
+redo
+save {p0}
+curve_tangent_mode broken
+curve_handle_drag in 0 -30
+wait_frames 2
+save {p1}
+curve_tangent out 0.004
+save {p2}
+curve_tangent_mode auto
+save {p3}
+quit
+""".format(p0=paths[0], p1=paths[1], p2=paths[2], p3=paths[3])), window="1280x720")
+    check("curve_handle_drag: press at" in p.stdout, "the handle drag did not start")
+    # print_tangents: "tangent INDEX TIME_H MODE IN OUT"; the 08:00 key's mode after the drag and after undo.
+    printed = [[w[3] for w in (line.split() for line in block) if len(w) == 6 and abs(float(w[2]) - 8.0) < 1e-9]
+               for block in printed_blocks(p.stdout, "print_tangents")]
+    check(printed == [["unified"], ["auto"]], "one undo did not take the whole handle drag back: %s" % printed)
+    keys = [track(load_json(path), "fog.density_per_m")["keys"] for path in paths]
+    unified, broken, typed, automatic = [key_at({"keys": k}, 8.0) for k in keys]
+    check(len(set(len(k) for k in keys)) == 1, "a tangent edit added or removed keys: %s" % keys)
+    check(unified.get("tangent_mode") == "unified" and unified["tangent_out"] > 0.0 and
+          unified["tangent_in"] == unified["tangent_out"],
+          "an upward drag of the out handle did not give one rising slope: %s" % unified)
+    check(unified["time_h"] == 8 and unified["value"] == 0.02, "the tangent drag moved the key: %s" % unified)
+    check(broken.get("tangent_mode") == "broken" and broken["tangent_out"] == unified["tangent_out"] and
+          broken["tangent_in"] < unified["tangent_in"],
+          "lifting the broken in handle (the curve comes down into the key) did not lower the in slope "
+          "alone: %s -> %s" % (unified, broken))
+    check(typed["tangent_out"] == 0.004 and typed["tangent_in"] == broken["tangent_in"],
+          "the typed out slope was not saved exactly: %s" % typed)
+    check("tangent_in" not in automatic and "tangent_mode" not in automatic,
+          "Automatic tangent did not take the key's own tangents away: %s" % automatic)
+    print("OK: tangents")
+
+
+def case_paste_keys(env):
+    """Copy and paste of keys across curves: the 06:00 fog base height key and the
+    08:00 falloff key copied together (Ctrl+C on a curve selection) and pasted
+    at 14:00 (Ctrl+V) land at 14:00 and 16:00 on their own curves, one undo
+    step; pasted at 09:59:40 each lands 20 s before a key (10:00, 12:00) and
+    replaces it at that key's time (no near-duplicates)."""
+    paths = [env.path("paste_%d.json" % i) for i in range(2)]
+    env.run(env.script("paste.txt", """
+new
+time 6
+set fog.base_height_m 10
+key fog.base_height_m
+time 10
+set fog.base_height_m 50
+key fog.base_height_m
+time 8
+set fog.falloff_per_m 0.05
+key fog.falloff_per_m
+time 12
+set fog.falloff_per_m 0.2
+key fog.falloff_per_m
+curve fog.base_height_m on
+curve fog.falloff_per_m on
+curve_select fog.base_height_m 6
+curve_select fog.falloff_per_m 8
+timeline_copy_key
+time 14
+timeline_paste_key
+print_curves
+undo
+expect_keys fog.base_height_m 2
+expect_keys fog.falloff_per_m 2
+redo
+save {p0}
+time 9:59:40
+timeline_paste_key
+save {p1}
+quit
+""".format(p0=paths[0], p1=paths[1])))
+    first, second = load_json(paths[0]), load_json(paths[1])
+    height = {k["time_h"]: key_value(k) for k in track(first, "fog.base_height_m")["keys"]}
+    falloff = {k["time_h"]: key_value(k) for k in track(first, "fog.falloff_per_m")["keys"]}
+    check(height == {6: 10, 10: 50, 14: 10}, "base height after the paste at 14:00: %s" % height)
+    check(falloff == {8: 0.05, 12: 0.2, 16: 0.05}, "falloff after the paste at 14:00: %s" % falloff)
+    falloff2 = {k["time_h"]: key_value(k) for k in track(second, "fog.falloff_per_m")["keys"]}
+    check(falloff2.get(12) == 0.05 and len(falloff2) == 3,
+          "a pasted key 20 s from 12:00 did not replace the 12:00 key: %s" % falloff2)
+    check(not near_duplicate_keys(second), "near-duplicate keys: %s" % near_duplicate_keys(second))
+    height2 = {k["time_h"]: key_value(k) for k in track(second, "fog.base_height_m")["keys"]}
+    check(height2 == {6: 10, 10: 10, 14: 10}, "a pasted key 20 s from 10:00 did not replace the 10:00 key: %s" % height2)
+    print("OK: paste_keys")
+
+
+def case_key_paths(env):
+    """The gizmo and auto-key edit keys at their own time: a volume's position
+    keyed at 12:00 and dragged with the gizmo at 12:00:20, and the fog base
+    height keyed at 06:00 and set with auto-key on at 06:00:20; saved, reopened and
+    saved again, each track keeps one key at its time with the new value, and
+    no two keys of a track are under a minute apart."""
+    saved, again = env.path("key_paths.json"), env.path("key_paths_again.json")
+    p = env.run(env.script("key_paths.txt", """
+new
+add_volume ellipsoid
+expect_selected volume 1
+time 12
+key volume[1].position_m
+time 18
+key volume[1].position_m
+time 12:00:20
+gizmo_drag translate x 120 0 10
+time 12
+print volume[1].position_m
+time 6
+set fog.base_height_m 10
+key fog.base_height_m
+time 10
+set fog.base_height_m 50
+key fog.base_height_m
+autokey on
+time 6:00:20
+set fog.base_height_m 20
+expect_pending 0
+save {saved}
+new
+open {saved}
+expect_keys volume[1].position_m 2
+expect_keys fog.base_height_m 2
+save {again}
+quit
+""".format(saved=saved, again=again)))
+    printed = re.search(r"volume\[1\]\.position_m = (\S+) (\S+) (\S+)", p.stdout)
+    check(printed, "no position printed after the gizmo drag")
+    moved = [float(printed.group(i)) for i in (1, 2, 3)]
+    for path in (saved, again):
+        preset = load_json(path)
+        check(not near_duplicate_keys(preset), "%s: near-duplicate keys %s" % (path, near_duplicate_keys(preset)))
+        position = track(preset, "position_m", preset["volumes"][1]["id"])
+        times = [k["time_h"] for k in position["keys"]]
+        check(times == [12, 18], "%s: the gizmo drag at 12:00:20 did not edit the 12:00 key: %s" % (path, times))
+        check(all(abs(a - b) < 1e-9 for a, b in zip(position["keys"][0]["value"], moved)),
+              "%s: the 12:00 key is %s, the gizmo left %s" % (path, position["keys"][0]["value"], moved))
+        check(position["keys"][1]["value"] != position["keys"][0]["value"], "the 18:00 key moved too")
+        height = {k["time_h"]: key_value(k) for k in track(preset, "fog.base_height_m")["keys"]}
+        check(height == {6: 20, 10: 50}, "%s: auto-key at 06:00:20 gave %s" % (path, height))
+    print("OK: key_paths")
+
+
 CASES = {
     "session": case_session,
     "prompts": case_prompts,
@@ -1411,6 +1579,9 @@ CASES = {
     "sun_anchor": case_sun_anchor,
     "curve_edit": case_curve_edit,
     "weather": case_weather,
+    "tangents": case_tangents,
+    "paste_keys": case_paste_keys,
+    "key_paths": case_key_paths,
 }
 
 

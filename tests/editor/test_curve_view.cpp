@@ -688,3 +688,190 @@ TEST(CurveView, ATypedValueSetsEveryKeyOfTheSameParameter) {
 
 }  // namespace
 }  // namespace aerial::editor
+
+namespace aerial::editor {
+namespace {
+
+// A handle drawn for a slope reads back as that slope, on its own side of
+// the key; one dragged past the key stays a pixel on its side.
+TEST(CurveTangents, AHandlesPlaceAndSlopeAreInverse) {
+    const CurveRange range{0.0, 0.04};
+    const double pxPerHour = 50.0, heightPx = 200.0;
+    for (double slope : {0.0, 0.01, -0.003, 0.2}) {
+        for (TangentSide side : {TangentSide::In, TangentSide::Out}) {
+            const glm::dvec2 offset = tangentHandleOffset(slope, range, pxPerHour, heightPx, side);
+            EXPECT_NEAR(std::hypot(offset.x, offset.y), kTangentHandlePx, 1e-9);
+            EXPECT_EQ(offset.x > 0.0, side == TangentSide::Out);
+            EXPECT_NEAR(slopeOfHandle(offset, range, pxPerHour, heightPx, side), slope,
+                        1e-12 + 1e-12 * std::abs(slope));
+        }
+    }
+    // 10 px right and 20 px up of the key: 0.2 h and 0.004 (a tenth of the range): 0.02 per h.
+    EXPECT_DOUBLE_EQ(slopeOfHandle({10.0, -20.0}, range, pxPerHour, heightPx, TangentSide::Out), 0.02);
+    // The in handle 10 px left and 20 px up: the curve comes down into the key.
+    EXPECT_DOUBLE_EQ(slopeOfHandle({-10.0, -20.0}, range, pxPerHour, heightPx, TangentSide::In), -0.02);
+    // Past the key: a pixel on its side (50 px per h: 0.02 h).
+    EXPECT_DOUBLE_EQ(slopeOfHandle({-5.0, -20.0}, range, pxPerHour, heightPx, TangentSide::Out),
+                     0.004 / 0.02);
+}
+
+// Dragging one handle gives the key its own tangents, taken from the
+// automatic ones: unified, the other side follows; broken, it stays. The
+// key menu's Automatic tangent takes them away again. One undo step per
+// drag.
+TEST(CurveTangents, HandlesAreUnifiedOrBrokenAndOneUndoStepPerDrag) {
+    Document doc;
+    doc.reset(twoTracks());
+    const TrackTarget fog = doc.preset().tracks[0].target;
+    const CurvePoint point{fog, 1, 0};  // 08:00, a maximum: automatic tangent 0
+    const double automatic = automaticTangent(doc.preset().tracks[0], 1, 1).x;
+    EXPECT_EQ(automatic, 0.0);
+    EXPECT_FALSE(tangentModeOf(doc.preset(), point).has_value());
+    for (int frame = 1; frame <= 4; ++frame)
+        doc.apply("Tangent", "curve-tangent",
+                  [&](Preset& p) { setKeyTangent(p, point, TangentSide::Out, 0.001 * frame); });
+    doc.closeMerge();
+    EXPECT_EQ(doc.undoCount(), 1u);
+    const TrackKey* key = &doc.preset().tracks[0].keys[1];
+    ASSERT_TRUE(key->tangents.has_value());
+    EXPECT_EQ(key->tangents->mode, TangentMode::Unified);
+    EXPECT_EQ(key->tangents->out.x, 0.004);
+    EXPECT_EQ(key->tangents->in.x, 0.004);  // unified: the in handle follows
+    // The game evaluates the curve with it: past 08:00 it still rises.
+    EXPECT_GT(evaluateTrack(doc.preset().tracks[0], 8.05, 1).x, 0.02);
+    // Broken: the in side moves alone.
+    doc.apply(tangentModeLabel({point}, TangentMode::Broken), "",
+              [&](Preset& p) { setTangentMode(p, {point}, TangentMode::Broken); });
+    EXPECT_EQ(doc.undoLabel(), "Break tangent");
+    doc.apply("Tangent", "", [&](Preset& p) { setKeyTangent(p, point, TangentSide::In, -0.002); });
+    key = &doc.preset().tracks[0].keys[1];
+    EXPECT_EQ(key->tangents->in.x, -0.002);
+    EXPECT_EQ(key->tangents->out.x, 0.004);
+    // Unified again: the mean of the two.
+    doc.apply("", "", [&](Preset& p) { setTangentMode(p, {point}, TangentMode::Unified); });
+    key = &doc.preset().tracks[0].keys[1];
+    EXPECT_EQ(key->tangents->in.x, 0.001);
+    EXPECT_EQ(key->tangents->out.x, 0.001);
+    // Automatic again; a flat key loses its flatness to its own tangents.
+    doc.apply("", "", [&](Preset& p) { EXPECT_EQ(setFlatTangents(p, {point}, false), 1); });
+    EXPECT_FALSE(doc.preset().tracks[0].keys[1].tangents.has_value());
+    doc.apply("", "", [&](Preset& p) { setFlatTangents(p, {point}, true); });
+    doc.apply("", "", [&](Preset& p) { setKeyTangent(p, point, TangentSide::Out, 0.003); });
+    EXPECT_FALSE(doc.preset().tracks[0].keys[1].flat);
+    EXPECT_TRUE(validatePreset(doc.preset()).empty());
+    // The undo steps walk back to the automatic key.
+    while (doc.undo()) {
+    }
+    EXPECT_FALSE(doc.preset().tracks[0].keys[1].tangents.has_value());
+}
+
+}  // namespace
+}  // namespace aerial::editor
+
+namespace aerial::editor {
+namespace {
+
+// Two curves shown together never share a colour: the later one probes to
+// the next free entry; one that clashes with none keeps its own; showing a
+// curve recolours none shown before it.
+TEST(CurveColours, CurvesShownTogetherNeverShareAColour) {
+    // Two global parameters whose own entries clash (12 entries: there are some).
+    std::vector<TrackTarget> globals;
+    for (const ParamDesc& d : paramTable(ParamScope::Global))
+        if (d.animatable) globals.push_back(TrackTarget::global(std::string(d.path)));
+    std::optional<std::pair<TrackTarget, TrackTarget>> clash;
+    for (std::size_t i = 0; i < globals.size() && !clash; ++i)
+        for (std::size_t j = i + 1; j < globals.size() && !clash; ++j)
+            if (curvePaletteIndex(globals[i], kCurvePaletteSize) ==
+                curvePaletteIndex(globals[j], kCurvePaletteSize))
+                clash = std::make_pair(globals[i], globals[j]);
+    ASSERT_TRUE(clash.has_value());
+    const auto& [a, b] = *clash;
+    const int own = curvePaletteIndex(a, kCurvePaletteSize);
+    EXPECT_EQ(curvePaletteIndices({a, b}, kCurvePaletteSize),
+              (std::vector<int>{own, (own + 1) % kCurvePaletteSize}));
+    EXPECT_EQ(curvePaletteIndices({b, a}, kCurvePaletteSize),
+              (std::vector<int>{own, (own + 1) % kCurvePaletteSize}));
+    // Alone, each has its own colour again.
+    EXPECT_EQ(curvePaletteIndices({b}, kCurvePaletteSize), std::vector<int>{own});
+    // Every animatable global shown at once: the first 12 all differ, and
+    // each prefix keeps the colours it had (showing more recolours none).
+    const std::vector<int> all = curvePaletteIndices(globals, kCurvePaletteSize);
+    ASSERT_EQ(all.size(), globals.size());
+    ASSERT_GT(globals.size(), std::size_t(kCurvePaletteSize));
+    const std::set<int> first(all.begin(), all.begin() + kCurvePaletteSize);
+    EXPECT_EQ(int(first.size()), kCurvePaletteSize);
+    for (std::size_t n = 1; n < globals.size(); ++n) {
+        const std::vector<TrackTarget> prefix(globals.begin(), globals.begin() + long(n));
+        const std::vector<int> colours = curvePaletteIndices(prefix, kCurvePaletteSize);
+        EXPECT_TRUE(std::equal(colours.begin(), colours.end(), all.begin())) << n;
+    }
+    // Past a full palette, a curve takes its own entry.
+    for (std::size_t i = kCurvePaletteSize; i < globals.size(); ++i)
+        EXPECT_EQ(all[i], curvePaletteIndex(globals[i], kCurvePaletteSize));
+}
+
+}  // namespace
+}  // namespace aerial::editor
+
+namespace aerial::editor {
+namespace {
+
+// Keys of two curves copied together paste at another time, each onto its
+// own curve with their relative times; one landing within a minute of an
+// existing key replaces it at that key's time (no near-duplicates).
+TEST(CurveClipboard, KeysOfSeveralCurvesPasteAtTheirOffsets) {
+    Preset preset = twoTracks();  // fog 6, 8, 10 h; haze 12, 18 h
+    const TrackTarget fog = preset.tracks[0].target, haze = preset.tracks[1].target;
+    preset.tracks[0].keys[1].tangents = KeyTangents{glm::dvec3(0.001), glm::dvec3(0.001)};
+    // 08:00 fog (its value and tangents), 12:00 haze, and the fog key's second point counted once.
+    const CurveClipboard clip = copyCurvePoints(preset, {{fog, 1, 0}, {haze, 0, 0}, {fog, 1, 0}});
+    ASSERT_EQ(clip.keys.size(), 2u);
+    EXPECT_EQ(clip.keys[0].offsetHours, 0.0);
+    EXPECT_EQ(clip.keys[1].offsetHours, 4.0);
+    EXPECT_EQ(pasteLabel(clip), "Paste 2 keys");
+    // At 17:59:40: the fog key lands there and the haze key at 21:59:40, no key near either: both new.
+    Preset a = preset;
+    std::vector<CurvePoint> pasted = pasteCurveKeys(a, clip, 17.0 + 59.0 / 60.0 + 40.0 / 3600.0);
+    ASSERT_EQ(pasted.size(), 2u);
+    ASSERT_EQ(a.tracks[0].keys.size(), 4u);
+    EXPECT_EQ(a.tracks[0].keys[3].timeHours, 17.0 + 59.0 / 60.0 + 40.0 / 3600.0);
+    EXPECT_EQ(a.tracks[0].keys[3].value.x, 0.02);
+    EXPECT_EQ(a.tracks[0].keys[3].tangents, preset.tracks[0].keys[1].tangents);
+    EXPECT_EQ(pasted[0], (CurvePoint{fog, 3, 0}));
+    EXPECT_EQ(a.tracks[1].keys.size(), 3u);
+    EXPECT_NEAR(a.tracks[1].keys[2].timeHours, 21.0 + 59.0 / 60.0 + 40.0 / 3600.0, 1e-12);
+    // At 13:59:40: the haze key lands 20 s before the 18:00 key and replaces it at 18:00 exactly;
+    // the fog key is new at 13:59:40.
+    Preset b = preset;
+    pasted = pasteCurveKeys(b, clip, 13.0 + 59.0 / 60.0 + 40.0 / 3600.0);
+    ASSERT_EQ(b.tracks[1].keys.size(), 2u);
+    EXPECT_EQ(b.tracks[1].keys[1].timeHours, 18.0);
+    EXPECT_EQ(b.tracks[1].keys[1].value.x, 1e-5);
+    EXPECT_EQ(pasted[1], (CurvePoint{haze, 1, 0}));
+    for (const Track& t : b.tracks)
+        for (std::size_t k = 1; k < t.keys.size(); ++k)
+            EXPECT_GE(t.keys[k].timeHours - t.keys[k - 1].timeHours, kMinKeyGap);
+    // Across midnight: keys at 23:30 and 00:30 are an hour apart, the 23:30 one first.
+    Preset night = preset;
+    night.tracks[0].keys = {{0.5, glm::dvec3(0.01)}, {23.5, glm::dvec3(0.02)}};
+    const CurveClipboard wrap = copyCurvePoints(night, {{fog, 0, 0}, {fog, 1, 0}});
+    ASSERT_EQ(wrap.keys.size(), 2u);
+    EXPECT_EQ(wrap.keys[0].key.value.x, 0.02);
+    EXPECT_EQ(wrap.keys[1].offsetHours, 1.0);
+    // A deleted track comes back with the pasted key; one undo step through the document.
+    Document doc;
+    doc.reset(preset);
+    doc.apply(pasteLabel(clip), "", [&](Preset& p) {
+        p.tracks.erase(p.tracks.begin() + 1);
+        pasteCurveKeys(p, clip, 3.0);
+    });
+    ASSERT_NE(findTrack(doc.preset(), haze), nullptr);
+    EXPECT_EQ(findTrack(doc.preset(), haze)->keys.size(), 1u);
+    EXPECT_EQ(findTrack(doc.preset(), haze)->keys[0].timeHours, 7.0);
+    EXPECT_EQ(doc.undoLabel(), "Paste 2 keys");
+    EXPECT_EQ(doc.undoCount(), 1u);
+}
+
+}  // namespace
+}  // namespace aerial::editor

@@ -83,20 +83,24 @@ const BadInput kBadPresets[] = {
     {"latitude_out_of_range.json",
      ":5:21: error: /location/latitude_deg: out of range: 91 is not in -90..90 deg"},
     {"mesh_degenerate_triangle.json",
-     ":25:15: error: /volumes/0/mesh: mesh volume \"room\": ../meshes/degenerate_triangle.gltf: triangle 12 is "
+     ":25:15: error: /volumes/0/mesh: mesh volume \"room\": ../meshes/degenerate_triangle.gltf: triangle 12 "
+     "is "
      "degenerate (zero area) at (-1, -1, -1)"},
     {"mesh_flipped_triangle.json",
-     ":25:15: error: /volumes/0/mesh: mesh volume \"room\": ../meshes/flipped_triangle.gltf: flipped triangle 1: "
+     ":25:15: error: /volumes/0/mesh: mesh volume \"room\": ../meshes/flipped_triangle.gltf: flipped "
+     "triangle 1: "
      "the edge between (1, -1, -1) and (1, 1, 1) runs the same way in both its triangles (the mesh is not "
      "consistently oriented)"},
     {"mesh_index_count_overflow.json",
-     ":25:15: error: /volumes/0/mesh: mesh volume \"room\": ../meshes/index_count_overflow.gltf: accessors[1]: "
+     ":25:15: error: /volumes/0/mesh: mesh volume \"room\": ../meshes/index_count_overflow.gltf: "
+     "accessors[1]: "
      "count 4611686018427387905 is over the limit of 16777216"},
     {"mesh_inside_out.json",
      ":25:15: error: /volumes/0/mesh: mesh volume \"room\": ../meshes/inside_out.gltf: the triangles face "
      "inwards (enclosed volume -8.000000 < 0); flip the normals so they point out of the fog"},
     {"mesh_lines.json",
-     ":25:15: error: /volumes/0/mesh: mesh volume \"room\": ../meshes/lines.gltf: meshes[0].primitives[0]: mode "
+     ":25:15: error: /volumes/0/mesh: mesh volume \"room\": ../meshes/lines.gltf: meshes[0].primitives[0]: "
+     "mode "
      "1; a fog mesh is made of triangles (mode 4)"},
     {"mesh_missing_file.json",
      ":25:15: error: /volumes/0/mesh: mesh volume \"room\": ../meshes/no_such_mesh.gltf: no such file (a "
@@ -105,18 +109,21 @@ const BadInput kBadPresets[] = {
      ":25:15: error: /volumes/0/mesh: mesh volume \"room\": ../meshes/non_manifold.gltf: non-manifold edge "
      "between (1, -1, -1) and (1, 1, -1) (shared by 4 triangles; a fog mesh is a closed surface)"},
     {"mesh_not_gltf.json",
-     ":25:15: error: /volumes/0/mesh: mesh volume \"room\": ../meshes/not_gltf.gltf: not a valid glTF 2.0 file: "
+     ":25:15: error: /volumes/0/mesh: mesh volume \"room\": ../meshes/not_gltf.gltf: not a valid glTF 2.0 "
+     "file: "
      "[json.exception.parse_error.101] parse error at line 1, column 2: syntax error while parsing value - "
      "invalid literal; last read: 'th'"},
     {"mesh_open_edge.json",
-     ":25:15: error: /volumes/0/mesh: mesh volume \"room\": ../meshes/open_edge.gltf: open edge between (-1, -1, "
+     ":25:15: error: /volumes/0/mesh: mesh volume \"room\": ../meshes/open_edge.gltf: open edge between (-1, "
+     "-1, "
      "-1) and (1, -1, -1) (triangle 6; a fog mesh must be closed)"},
     {"mesh_unknown_blend.json",
      ":25:16: error: /volumes/0/blend: unknown value \"multiply\"; expected one of add, subtract"},
     {"mesh_without_file.json",
      ":25:15: error: /volumes/0/mesh: a mesh volume needs \"mesh\": the glTF file of its closed mesh"},
     {"mesh_zero_rotation.json",
-     ":25:15: error: /volumes/0/mesh: mesh volume \"room\": ../meshes/zero_rotation.gltf: nodes[0]: rotation is "
+     ":25:15: error: /volumes/0/mesh: mesh volume \"room\": ../meshes/zero_rotation.gltf: nodes[0]: rotation "
+     "is "
      "not a unit quaternion"},
     {"mie_extinction_below_scattering.json",
      ":13:9: error: /atmosphere/mie/extinction_per_m/1: Mie extinction 1e-06 must be >= Mie scattering "
@@ -155,6 +162,9 @@ const BadInput kBadPresets[] = {
     {"single_quotes.json",
      ":1:2: error: syntax error while parsing object key - invalid literal; last read: '{''; expected string "
      "literal"},
+    {"tangents_unified_differ.json",
+     ":5:80: error: /tracks/0/keys/0/tangent_out: unified tangents have one slope: tangent_in 0.002 and "
+     "tangent_out 0.004 differ (\"tangent_mode\": \"broken\" for two)"},
     {"track_without_keys.json", ":7:15: error: /tracks/0/keys: a track needs at least one key"},
     {"trailing_comma.json",
      ":1:28: error: syntax error while parsing object key - unexpected '}'; expected string literal"},
@@ -172,7 +182,8 @@ const BadInput kBadPresets[] = {
     {"unknown_track_param.json", ":6:16: error: /tracks/0/param: unknown global parameter \"fog.thickness\""},
     {"utf16_bom.json", ":1:1: error: UTF-16 text (byte order mark); a preset is UTF-8 JSON"},
     {"version_fraction.json", ":2:14: error: /version: expected an integer, got a number"},
-    {"version_missing.json", ":1:1: error: /version: missing \"version\" (this library reads versions 1 to 5)"},
+    {"version_missing.json",
+     ":1:1: error: /version: missing \"version\" (this library reads versions 1 to 5)"},
     {"version_newer.json",
      ":2:14: error: /version: preset version 7 is newer than this library reads (5); update Aerial to load "
      "it"},

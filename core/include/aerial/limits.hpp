@@ -129,5 +129,9 @@ inline constexpr double kMaxCoordinate = 1.0e30;
 inline constexpr double kMinHalfExtent = 1.0e-6;
 /// Density, falloff and gradient-offset magnitudes are clamped to this.
 inline constexpr double kMaxFogParameter = 1.0e150;
+/// A key's tangent slopes (TrackKey::tangents) beyond this magnitude
+/// [value unit per h] are rejected: with values within a parameter's range,
+/// a Hermite segment's terms stay finite.
+inline constexpr double kMaxKeyTangent = 1.0e150;
 
 }  // namespace aerial::limits

@@ -27,6 +27,15 @@
 //     flat (TrackKey::flat, "flat": true in a preset) has tangent 0 in every
 //     component whatever its neighbours: the curve levels out there (an
 //     ease in and out), and stays monotone, since step 4 only shrinks.
+//   * Tangent handles: a key may carry its own slopes (TrackKey::tangents;
+//     "tangent_in", "tangent_out" [unit per h] and "tangent_mode" in a
+//     preset). The smooth segment ending at the key uses its in-slope, the
+//     one starting there its out-slope, in the same cubic Hermite basis;
+//     the other keys' tangents are the automatic ones above, computed as if
+//     no key had its own. A segment with a given slope at either end may
+//     leave the range of its two keys (the artist's overshoot; a preset's
+//     evaluation, evaluate.hpp, still clamps every parameter to its valid
+//     range); the others are clamped to it as before.
 //   * Colours interpolate per channel in scene-linear RGB; vectors (3 or
 //     2 components) per component.
 //   * Targets are stable: a global parameter by its path
@@ -62,6 +71,22 @@ enum class ParamScope {
 };
 
 enum class Interpolation { Step, Linear, Smooth };
+
+/// How a key's two tangent handles move together in the editor: unified
+/// (one slope through the key, in == out) or broken (two independent
+/// slopes, a corner).
+enum class TangentMode { Unified, Broken };
+
+/// A key's own slopes, per component [value unit per h]: `in` is the slope
+/// of the segment arriving at the key, `out` of the one leaving it. Scalars
+/// use .x only, 2-vectors .x and .y, as TrackKey::value does. Unified
+/// tangents have in == out (validatePreset checks it).
+struct KeyTangents {
+    glm::dvec3 in{0.0};
+    glm::dvec3 out{0.0};
+    TangentMode mode = TangentMode::Unified;
+    bool operator==(const KeyTangents&) const = default;
+};
 
 /// What a track animates.
 struct TrackTarget {
@@ -111,6 +136,12 @@ struct TrackKey {
     /// whole track as before, so a smooth segment beside a linear one keeps
     /// its shape.
     std::optional<Interpolation> interpolation;
+    /// Smooth segments: the key's own slopes ("tangent_in", "tangent_out",
+    /// "tangent_mode" in a preset; written only when set). Empty (default):
+    /// automatic tangents (Fritsch-Carlson, or 0 when `flat`). Each slope is
+    /// finite, at most limits::kMaxKeyTangent in magnitude. A key has
+    /// either `flat` or its own tangents, not both.
+    std::optional<KeyTangents> tangents;
 };
 
 struct Track {
@@ -129,11 +160,18 @@ struct Track {
 /// tangents, computed once.
 struct CompiledTrack {
     Interpolation interpolation = Interpolation::Smooth;
-    bool wrap = true;  ///< Track::wrap
+    bool wrap = true;           ///< Track::wrap
     int components = 1;         ///< 1 (scalar), 2 (vec2 in x, y) or 3 (vec3 / colour)
     std::vector<double> times;  ///< [h], strictly increasing in [0, 24)
     std::vector<glm::dvec3> values;
-    std::vector<glm::dvec3> tangents;  ///< d value / d t [unit per h] (when some segment is Smooth)
+    /// d value / d t leaving each key [unit per h] (when some segment is Smooth).
+    std::vector<glm::dvec3> tangents;
+    /// d value / d t arriving at each key [unit per h]; equal to `tangents`
+    /// except at keys with broken tangent handles.
+    std::vector<glm::dvec3> tangentsIn;
+    /// Per key: true where the key has its own tangents (TrackKey::tangents);
+    /// the segments touching it are not clamped to their keys' range.
+    std::vector<bool> givenTangents;
     /// The interpolation of each segment, key k to k + 1 (TrackKey::interpolation or the track's).
     std::vector<Interpolation> segments;
 };
@@ -154,6 +192,12 @@ glm::dvec3 evaluateTrack(const Track& track, double timeHours, int components = 
 /// Editing helper: sets the key at `timeHours` (wrapped into [0, 24)),
 /// replacing a key at exactly that time or inserting one in order.
 void setKey(Track& track, double timeHours, const glm::dvec3& value);
+
+/// The automatic tangents of a key, as compileTrack computes them when the
+/// key has none of its own (d value / d t [unit per h]; 0 for a flat key,
+/// and when no segment of the track is smooth). The editor's handles start
+/// there.
+glm::dvec3 automaticTangent(const Track& track, std::size_t key, int components);
 
 /// t wrapped into [0, 24) [h]; non-finite values give 0.
 double wrapHours(double timeHours);

@@ -8,6 +8,18 @@
 
 namespace aerial {
 
+namespace {
+
+/// Bit for bit, as the key's other numbers.
+bool sameTangents(const std::optional<KeyTangents>& a, const std::optional<KeyTangents>& b) {
+    if (!a || !b) return !a && !b;
+    const double u[6] = {a->in.x, a->in.y, a->in.z, a->out.x, a->out.y, a->out.z};
+    const double v[6] = {b->in.x, b->in.y, b->in.z, b->out.x, b->out.y, b->out.z};
+    return std::memcmp(u, v, sizeof u) == 0 && a->mode == b->mode;
+}
+
+}  // namespace
+
 bool presetsIdentical(const Preset& constA, const Preset& constB) {
     Preset& a = const_cast<Preset&>(constA);
     Preset& b = const_cast<Preset&>(constB);
@@ -56,12 +68,13 @@ bool presetsIdentical(const Preset& constA, const Preset& constB) {
             s.keys.size() != t.keys.size())
             return false;
         for (std::size_t k = 0; k < s.keys.size(); ++k) {
-            const double u[5] = {s.keys[k].timeHours, s.keys[k].value.x, s.keys[k].value.y,
-                                 s.keys[k].value.z, s.keys[k].offsetHours};
-            const double v[5] = {t.keys[k].timeHours, t.keys[k].value.x, t.keys[k].value.y,
-                                 t.keys[k].value.z, t.keys[k].offsetHours};
+            const double u[5] = {s.keys[k].timeHours, s.keys[k].value.x, s.keys[k].value.y, s.keys[k].value.z,
+                                 s.keys[k].offsetHours};
+            const double v[5] = {t.keys[k].timeHours, t.keys[k].value.x, t.keys[k].value.y, t.keys[k].value.z,
+                                 t.keys[k].offsetHours};
             if (std::memcmp(u, v, sizeof u) != 0 || s.keys[k].flat != t.keys[k].flat ||
-                s.keys[k].anchor != t.keys[k].anchor || s.keys[k].interpolation != t.keys[k].interpolation)
+                s.keys[k].anchor != t.keys[k].anchor || s.keys[k].interpolation != t.keys[k].interpolation ||
+                !sameTangents(s.keys[k].tangents, t.keys[k].tangents))
                 return false;
         }
     }
@@ -81,12 +94,12 @@ bool presetsIdentical(const Preset& constA, const Preset& constB) {
     for (std::size_t i = 0; i < a.weatherRegions.size(); ++i) {
         const WeatherRegion& r = a.weatherRegions[i];
         const WeatherRegion& s = b.weatherRegions[i];
-        const double u[12] = {r.position.x,    r.position.y,    r.position.z,    r.rotation.x,
-                              r.rotation.y,    r.rotation.z,    r.rotation.w,    r.halfExtents.x,
-                              r.halfExtents.y, r.halfExtents.z, r.blend,         double(r.priority)};
-        const double v[12] = {s.position.x,    s.position.y,    s.position.z,    s.rotation.x,
-                              s.rotation.y,    s.rotation.z,    s.rotation.w,    s.halfExtents.x,
-                              s.halfExtents.y, s.halfExtents.z, s.blend,         double(s.priority)};
+        const double u[12] = {r.position.x,    r.position.y,    r.position.z, r.rotation.x,
+                              r.rotation.y,    r.rotation.z,    r.rotation.w, r.halfExtents.x,
+                              r.halfExtents.y, r.halfExtents.z, r.blend,      double(r.priority)};
+        const double v[12] = {s.position.x,    s.position.y,    s.position.z, s.rotation.x,
+                              s.rotation.y,    s.rotation.z,    s.rotation.w, s.halfExtents.x,
+                              s.halfExtents.y, s.halfExtents.z, s.blend,      double(s.priority)};
         if (r.id != s.id || r.name != s.name || r.shape != s.shape || r.state != s.state ||
             std::memcmp(u, v, sizeof u) != 0)
             return false;

@@ -108,6 +108,7 @@ void Reader::readTrack(std::int32_t node, const std::string& pointer, Track& tra
                     if (readNumbers(value, pointerJoin(at, "value"), v, count))
                         key.value = glm::dvec3(v[0], v[1], v[2]);
                 }
+                readKeyTangents(c, at, p, key);
                 if (const std::int32_t flat = member(c, "flat"); flat >= 0) {
                     if (nodes_[std::size_t(flat)].kind == JNode::Bool)
                         key.flat = nodes_[std::size_t(flat)].boolean;
@@ -119,7 +120,8 @@ void Reader::readTrack(std::int32_t node, const std::string& pointer, Track& tra
                      m = nodes_[std::size_t(m)].nextSibling) {
                     const std::string& name = nodes_[std::size_t(m)].key;
                     if (name != "time_h" && name != "value" && name != "flat" && name != "anchor" &&
-                        name != "offset_h" && name != "interpolation")
+                        name != "offset_h" && name != "interpolation" && name != "tangent_in" &&
+                        name != "tangent_out" && name != "tangent_mode")
                         warnUnknown(m, pointerJoin(at, name));
                 }
             }
@@ -134,6 +136,55 @@ void Reader::readTrack(std::int32_t node, const std::string& pointer, Track& tra
         if (!objectKey && name != "param" && name != "interpolation" && name != "wrap" && name != "keys")
             warnUnknown(m, pointerJoin(pointer, name));
     }
+}
+
+void Reader::readKeyTangents(std::int32_t node, const std::string& at, const ParamDesc* p, TrackKey& key) {
+    const std::int32_t in = member(node, "tangent_in");
+    const std::int32_t out = member(node, "tangent_out");
+    const std::int32_t mode = member(node, "tangent_mode");
+    if (in < 0 && out < 0) {
+        if (mode >= 0)
+            error(mode, pointerJoin(at, "tangent_mode"),
+                  "\"tangent_mode\" goes with \"tangent_in\" and \"tangent_out\"; this key has neither");
+        return;
+    }
+    if (in < 0 || out < 0) {
+        const char* missing = in < 0 ? "tangent_in" : "tangent_out";
+        error(in < 0 ? out : in, pointerJoin(at, missing),
+              std::string("missing field \"") + missing +
+                  "\": a key's own tangents give both slopes (equal ones for unified handles)");
+        return;
+    }
+    KeyTangents tangents;
+    if (mode >= 0) {
+        const std::string modeAt = pointerJoin(at, "tangent_mode");
+        if (!expectKind(mode, modeAt, JNode::String)) return;
+        const std::string& text = nodes_[std::size_t(mode)].text;
+        if (text == "unified")
+            tangents.mode = TangentMode::Unified;
+        else if (text == "broken")
+            tangents.mode = TangentMode::Broken;
+        else {
+            error(mode, modeAt,
+                  "unknown tangent mode " + quoteString(text) + "; expected one of unified, broken");
+            return;
+        }
+    }
+    if (!p) return;  // the target is reported elsewhere; the value's shape is unknown
+    // Slopes take the value's shape: a number for scalars, components()
+    // numbers for vectors and colours.
+    auto slope = [&](std::int32_t n, const char* name, glm::dvec3& outSlope) {
+        const std::string slopeAt = pointerJoin(at, name);
+        if (p->type == ParamType::Scalar) return readNumber(n, slopeAt, outSlope.x);
+        const int count = p->components() == 2 ? 2 : 3;
+        double v[3] = {0.0, 0.0, 0.0};
+        if (!readNumbers(n, slopeAt, v, count)) return false;
+        outSlope = glm::dvec3(v[0], v[1], v[2]);
+        return true;
+    };
+    const bool inRead = slope(in, "tangent_in", tangents.in);
+    const bool outRead = slope(out, "tangent_out", tangents.out);
+    if (inRead && outRead) key.tangents = tangents;
 }
 
 void Reader::warnCloseKeys(const Preset& preset) {

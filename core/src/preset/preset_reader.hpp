@@ -99,6 +99,9 @@ public:
                          std::vector<Object>& out);
 
     void readTrack(std::int32_t node, const std::string& pointer, Track& track);
+    /// A key's "tangent_in", "tangent_out" (both or neither; the value's
+    /// shape) and "tangent_mode" into key.tangents (preset_read_tracks.cpp).
+    void readKeyTangents(std::int32_t node, const std::string& at, const ParamDesc* p, TrackKey& key);
 
     /// A track's or a weather override's target: the object key ("volume",
     /// "emitter", "cloud_volume") names the scope (none: a global

@@ -184,10 +184,12 @@ std::string presetJsonSchema() {
     props["cloud_volumes"] = arraySchema("#/$defs/cloud_volume", limits::kMaxCloudVolumes);
     props["tracks"] = arraySchema("#/$defs/track", limits::kMaxTracks);
     props["weather"] = {{"type", "object"},
-                        {"description", "named weather states layered on the keys, and the regions where one holds "
-                                         "(aerial/weather_state.hpp)"},
-                        {"properties", {{"states", arraySchema("#/$defs/weather_state", limits::kMaxWeatherStates)},
-                                        {"regions", arraySchema("#/$defs/weather_region", limits::kMaxWeatherRegions)}}},
+                        {"description",
+                         "named weather states layered on the keys, and the regions where one holds "
+                         "(aerial/weather_state.hpp)"},
+                        {"properties",
+                         {{"states", arraySchema("#/$defs/weather_state", limits::kMaxWeatherStates)},
+                          {"regions", arraySchema("#/$defs/weather_region", limits::kMaxWeatherRegions)}}},
                         {"required", {"states"}},
                         {"additionalProperties", false}};
     root["properties"] = props;
@@ -200,41 +202,64 @@ std::string presetJsonSchema() {
     defs["cloud_volume"] = objectSchema(ParamScope::CloudVolume);
     int fewest = 3, most = 3;
     keyArrayLengths(fewest, most);
+    auto tangentSchema = [&](const char* what) {
+        return ojson{{"oneOf",
+                      {{{"type", "number"}},
+                       {{"type", "array"},
+                        {"items", {{"type", "number"}}},
+                        {"minItems", fewest},
+                        {"maxItems", most}}}},
+                     {"description",
+                      std::string(what) + " [value unit per h] in the value's shape (smooth segments)"}};
+    };
     ojson key;
     key["type"] = "object";
-    key["properties"] = {{"time_h", {{"type", "number"}, {"minimum", 0}, {"exclusiveMaximum", 24}}},
-                         {"value",
-                          {{"oneOf",
-                            {{{"type", "number"}},
-                             {{"type", "array"},
-                              {"items", {{"type", "number"}}},
-                              {"minItems", fewest},
-                              {"maxItems", most}}}}}},
-                         {"flat",
-                          {{"type", "boolean"},
-                           {"default", false},
-                           {"description",
-                            "smooth tracks: the curve is level at this key (tangent 0) instead of "
-                            "following its neighbours"}}},
-                         {"anchor",
-                          {{"enum", ojson::array()},
-                           {"description",
-                            "a key that follows the sun: its time is this event's at the preset's location "
-                            "and date plus offset_h (sunrise and sunset at -0.833 deg, civil -6, nautical -12)"}}},
-                         {"interpolation",
-                          {{"enum", {"step", "linear", "smooth"}},
-                           {"description",
-                            "the segment from this key to the next: this interpolation instead of the track's"}}},
-                         {"offset_h",
-                          {{"type", "number"},
-                           {"minimum", -12},
-                           {"maximum", 12},
-                           {"default", 0},
-                           {"description", "the anchored key's offset from its event [h]; negative is before it"}}}};
+    key["properties"] = {
+        {"time_h", {{"type", "number"}, {"minimum", 0}, {"exclusiveMaximum", 24}}},
+        {"value",
+         {{"oneOf",
+           {{{"type", "number"}},
+            {{"type", "array"},
+             {"items", {{"type", "number"}}},
+             {"minItems", fewest},
+             {"maxItems", most}}}}}},
+        {"flat",
+         {{"type", "boolean"},
+          {"default", false},
+          {"description",
+           "smooth tracks: the curve is level at this key (tangent 0) instead of "
+           "following its neighbours"}}},
+        {"anchor",
+         {{"enum", ojson::array()},
+          {"description",
+           "a key that follows the sun: its time is this event's at the preset's location "
+           "and date plus offset_h (sunrise and sunset at -0.833 deg, civil -6, nautical -12)"}}},
+        {"interpolation",
+         {{"enum", {"step", "linear", "smooth"}},
+          {"description",
+           "the segment from this key to the next: this interpolation instead of the track's"}}},
+        {"tangent_in", tangentSchema("the slope arriving at the key")},
+        {"tangent_out", tangentSchema("the slope leaving the key")},
+        {"tangent_mode",
+         {{"enum", {"unified", "broken"}},
+          {"default", "unified"},
+          {"description",
+           "unified: one slope through the key (tangent_in equals tangent_out); broken: two"}}},
+        {"offset_h",
+         {{"type", "number"},
+          {"minimum", -12},
+          {"maximum", 12},
+          {"default", 0},
+          {"description", "the anchored key's offset from its event [h]; negative is before it"}}}};
     for (SunEvent event : kSunEvents) key["properties"]["anchor"]["enum"].push_back(sunEventName(event));
     key["required"] = {"value"};
+    // A key's own tangents give both slopes; tangent_mode only with them.
+    key["dependentRequired"] = {{"tangent_in", {"tangent_out"}},
+                                {"tangent_out", {"tangent_in"}},
+                                {"tangent_mode", {"tangent_in", "tangent_out"}}};
     // A fixed time or a sun event, never both (offset_h only with an anchor).
-    key["oneOf"] = {{{"required", {"time_h"}}, {"not", {{"anyOf", {{{"required", {"anchor"}}}, {{"required", {"offset_h"}}}}}}}},
+    key["oneOf"] = {{{"required", {"time_h"}},
+                     {"not", {{"anyOf", {{{"required", {"anchor"}}}, {{"required", {"offset_h"}}}}}}}},
                     {{"required", {"anchor"}}, {"not", {{"required", {"time_h"}}}}}};
     key["additionalProperties"] = false;
     defs["key"] = key;
@@ -274,8 +299,10 @@ std::string presetJsonSchema() {
         ojson op = ojson::object();
         if (objectKey) op[objectKey] = idSchema();
         op["param"] = {{"$ref", std::string("#/$defs/animatable_") + (objectKey ? objectKey : "global")}};
-        op[mode] = {{"oneOf", {{{"type", "number"}},
-                               {{"type", "array"}, {"items", {{"type", "number"}}}, {"minItems", 2}, {"maxItems", 3}}}}};
+        op[mode] = {
+            {"oneOf",
+             {{{"type", "number"}},
+              {{"type", "array"}, {"items", {{"type", "number"}}}, {"minItems", 2}, {"maxItems", 3}}}}};
         o["properties"] = op;
         ojson req = ojson::array();
         if (objectKey) req.push_back(objectKey);
@@ -305,15 +332,13 @@ std::string presetJsonSchema() {
     auto numbers = [](int count, double lo, double hi, double fill, const char* description) {
         ojson def = ojson::array();
         for (int i = 0; i < count; ++i) def.push_back(fill);
-        return ojson{{"type", "array"},
-                     {"items", {{"type", "number"}, {"minimum", lo}, {"maximum", hi}}},
-                     {"minItems", count},
-                     {"maxItems", count},
-                     {"default", def},
-                     {"description", description}};
+        return ojson{{"type", "array"},   {"items", {{"type", "number"}, {"minimum", lo}, {"maximum", hi}}},
+                     {"minItems", count}, {"maxItems", count},
+                     {"default", def},    {"description", description}};
     };
     const WeatherRegion region;  // its defaults
-    ojson rotation = numbers(4, -1.000001, 1.000001, 0.0, "Rotation, world from object, unit quaternion [x, y, z, w]");
+    ojson rotation =
+        numbers(4, -1.000001, 1.000001, 0.0, "Rotation, world from object, unit quaternion [x, y, z, w]");
     rotation["default"] = {0, 0, 0, 1};
     ojson state = idSchema();
     state["description"] = "the state that holds inside: one of weather.states' names, or \"none\"";

@@ -65,6 +65,43 @@ struct Issues {
     }
 };
 
+/// A key's own tangents (TrackKey::tangents): finite slopes within
+/// limits::kMaxKeyTangent, equal ones for unified handles, and no "flat".
+void checkKeyTangents(const TrackKey& key, const ParamDesc* p, const std::string& keyAt, Issues& issues) {
+    const KeyTangents& tangents = *key.tangents;
+    const int count = p ? p->components() : 3;
+    bool valid = true;
+    const std::pair<const glm::dvec3*, const char*> slopes[2] = {{&tangents.in, "tangent_in"},
+                                                                 {&tangents.out, "tangent_out"}};
+    for (const auto& [slope, name] : slopes) {
+        for (int c = 0; c < count; ++c) {
+            const double v = (*slope)[c];
+            if (std::isfinite(v) && std::abs(v) <= limits::kMaxKeyTangent) continue;
+            const std::string at =
+                count == 1 ? pointerJoin(keyAt, name) : pointerJoin(pointerJoin(keyAt, name), std::size_t(c));
+            issues.error(at, "a tangent must be a finite slope of at most " +
+                                 formatDouble(limits::kMaxKeyTangent) + " per hour (got " + formatDouble(v) +
+                                 ")");
+            valid = false;
+        }
+    }
+    if (int(tangents.mode) < 0 || int(tangents.mode) > 1)
+        issues.error(pointerJoin(keyAt, "tangent_mode"), "unknown tangent mode");
+    if (valid && tangents.mode == TangentMode::Unified) {
+        for (int c = 0; c < count; ++c) {
+            if (tangents.in[c] == tangents.out[c]) continue;
+            issues.error(pointerJoin(keyAt, "tangent_out"),
+                         "unified tangents have one slope: tangent_in " + formatDouble(tangents.in[c]) +
+                             " and tangent_out " + formatDouble(tangents.out[c]) +
+                             " differ (\"tangent_mode\": \"broken\" for two)");
+            break;
+        }
+    }
+    if (key.flat)
+        issues.error(pointerJoin(keyAt, "flat"),
+                     "a key is either flat (tangent 0) or has its own tangents, not both");
+}
+
 void checkNumber(const ParamDesc& p, double v, const std::string& pointer, Issues& issues) {
     if (!std::isfinite(v)) {
         issues.error(pointer, "must be a finite number (got " + formatDouble(v) + ")");
@@ -206,36 +243,36 @@ std::string globalPointer(sv path) {
 void checkTarget(const Preset& preset, const TrackTarget& target, const std::string& at, const char* what,
                  Issues& issues) {
     const ParamDesc* p = findParam(target.scope, target.param);
-    const sv objectKey = trackObjectKey(target.scope);        if (!p) {
-            issues.error(pointerJoin(at, "param"), "unknown " + std::string(scopeName(target.scope)) +
-                                                       " parameter " + quoteString(target.param));
-        } else if (!p->animatable) {
-            issues.error(pointerJoin(at, "param"),
-                         "parameter " + quoteString(target.param) +
-                             (std::string(what) == "override"
-                                  ? " does not change with the weather (only a parameter a track may key does)"
-                                  : " cannot be animated"));
-        }
-        if (target.scope == ParamScope::Volume) {
-            const bool found = std::any_of(preset.volumes.begin(), preset.volumes.end(),
-                                           [&](const FogVolume& v) { return v.id == target.objectId; });
-            if (!found)
-                issues.error(pointerJoin(at, objectKey), "no volume with id " + quoteString(target.objectId));
-        } else if (target.scope == ParamScope::Emitter) {
-            const bool found = std::any_of(preset.emitters.begin(), preset.emitters.end(),
-                                           [&](const Emitter& e) { return e.id == target.objectId; });
-            if (!found)
-                issues.error(pointerJoin(at, objectKey),
-                             "no emitter with id " + quoteString(target.objectId));
-        } else if (target.scope == ParamScope::CloudVolume) {
-            const bool found = std::any_of(preset.cloudVolumes.begin(), preset.cloudVolumes.end(),
-                                           [&](const CloudVolume& v) { return v.id == target.objectId; });
-            if (!found)
-                issues.error(pointerJoin(at, objectKey),
-                             "no cloud volume with id " + quoteString(target.objectId));
-        } else if (!target.objectId.empty()) {
-            issues.error(at, "a global parameter's " + std::string(what) + " has no object id");
-        }
+    const sv objectKey = trackObjectKey(target.scope);
+    if (!p) {
+        issues.error(pointerJoin(at, "param"), "unknown " + std::string(scopeName(target.scope)) +
+                                                   " parameter " + quoteString(target.param));
+    } else if (!p->animatable) {
+        issues.error(pointerJoin(at, "param"),
+                     "parameter " + quoteString(target.param) +
+                         (std::string(what) == "override"
+                              ? " does not change with the weather (only a parameter a track may key does)"
+                              : " cannot be animated"));
+    }
+    if (target.scope == ParamScope::Volume) {
+        const bool found = std::any_of(preset.volumes.begin(), preset.volumes.end(),
+                                       [&](const FogVolume& v) { return v.id == target.objectId; });
+        if (!found)
+            issues.error(pointerJoin(at, objectKey), "no volume with id " + quoteString(target.objectId));
+    } else if (target.scope == ParamScope::Emitter) {
+        const bool found = std::any_of(preset.emitters.begin(), preset.emitters.end(),
+                                       [&](const Emitter& e) { return e.id == target.objectId; });
+        if (!found)
+            issues.error(pointerJoin(at, objectKey), "no emitter with id " + quoteString(target.objectId));
+    } else if (target.scope == ParamScope::CloudVolume) {
+        const bool found = std::any_of(preset.cloudVolumes.begin(), preset.cloudVolumes.end(),
+                                       [&](const CloudVolume& v) { return v.id == target.objectId; });
+        if (!found)
+            issues.error(pointerJoin(at, objectKey),
+                         "no cloud volume with id " + quoteString(target.objectId));
+    } else if (!target.objectId.empty()) {
+        issues.error(at, "a global parameter's " + std::string(what) + " has no object id");
+    }
 }
 
 void checkWeather(const Preset& preset, Issues& issues) {
@@ -245,27 +282,31 @@ void checkWeather(const Preset& preset, Issues& issues) {
         const std::string at = pointerJoin("/weather/states", i);
         const bool nameOk = detail::validId(state.name);  // named as objects are
         if (!nameOk)
-            issues.error(pointerJoin(at, "name"), "a weather state's name is 1 to " +
-                                                      std::to_string(limits::kMaxIdBytes) +
-                                                      " of A-Z a-z 0-9 _ - . (got " + quoteString(state.name) + ")");
+            issues.error(pointerJoin(at, "name"),
+                         "a weather state's name is 1 to " + std::to_string(limits::kMaxIdBytes) +
+                             " of A-Z a-z 0-9 _ - . (got " + quoteString(state.name) + ")");
         else if (state.name == "none")
-            issues.error(pointerJoin(at, "name"), "\"none\" is taken: it names the keyed values without weather");
+            issues.error(pointerJoin(at, "name"),
+                         "\"none\" is taken: it names the keyed values without weather");
         for (std::size_t j = 0; j < i; ++j)
             if (preset.weather[j].name == state.name && nameOk) {
-                issues.error(pointerJoin(at, "name"), "a second weather state named " + quoteString(state.name) +
-                                                          " (also " + pointerJoin("/weather/states", j) + ")");
+                issues.error(pointerJoin(at, "name"), "a second weather state named " +
+                                                          quoteString(state.name) + " (also " +
+                                                          pointerJoin("/weather/states", j) + ")");
                 break;
             }
         const std::string overridesAt = pointerJoin(at, "overrides");
-        checkCount(state.overrides.size(), limits::kMaxWeatherOverrides, overridesAt.c_str(), "overrides", issues);
+        checkCount(state.overrides.size(), limits::kMaxWeatherOverrides, overridesAt.c_str(), "overrides",
+                   issues);
         for (std::size_t k = 0; k < state.overrides.size(); ++k) {
             const WeatherOverride& o = state.overrides[k];
             const std::string oAt = pointerJoin(overridesAt, k);
             checkTarget(preset, o.target, oAt, "override", issues);
             for (std::size_t j = 0; j < k; ++j)
                 if (state.overrides[j].target == o.target) {
-                    issues.error(pointerJoin(oAt, "param"), "a second override of the same target in this state (also " +
-                                                                pointerJoin(overridesAt, j) + ")");
+                    issues.error(pointerJoin(oAt, "param"),
+                                 "a second override of the same target in this state (also " +
+                                     pointerJoin(overridesAt, j) + ")");
                     break;
                 }
             const ParamDesc* p = findParam(o.target.scope, o.target.param);
@@ -306,14 +347,15 @@ void checkRegionNumber(double v, double lo, double hi, const std::string& pointe
 }
 
 void checkWeatherRegions(const Preset& preset, Issues& issues) {
-    checkCount(preset.weatherRegions.size(), limits::kMaxWeatherRegions, "/weather/regions", "weather regions",
-               issues);
+    checkCount(preset.weatherRegions.size(), limits::kMaxWeatherRegions, "/weather/regions",
+               "weather regions", issues);
     for (std::size_t i = 0; i < preset.weatherRegions.size(); ++i) {
         const WeatherRegion& r = preset.weatherRegions[i];
         const std::string at = pointerJoin("/weather/regions", i);
         if (!validId(r.id)) {
             issues.error(pointerJoin(at, "id"), "an id must be 1..64 characters of A-Z a-z 0-9 _ - . (got " +
-                                                    quoteString(validUtf8(r.id) ? r.id : std::string("?")) + ")");
+                                                    quoteString(validUtf8(r.id) ? r.id : std::string("?")) +
+                                                    ")");
         } else {
             for (std::size_t j = 0; j < i; ++j)
                 if (preset.weatherRegions[j].id == r.id) {
@@ -348,17 +390,19 @@ void checkWeatherRegions(const Preset& preset, Issues& issues) {
         }
         checkRegionNumber(r.blend, 0.0, kWeatherRegionMaxBlend, pointerJoin(at, "blend_m"), issues);
         if (std::abs(r.priority) > kWeatherRegionMaxPriority)
-            issues.error(pointerJoin(at, "priority"), "out of range: " + std::to_string(r.priority) + " is not in " +
+            issues.error(pointerJoin(at, "priority"), "out of range: " + std::to_string(r.priority) +
+                                                          " is not in " +
                                                           std::to_string(-kWeatherRegionMaxPriority) + ".." +
                                                           std::to_string(kWeatherRegionMaxPriority));
-        const bool known = r.state == "none" || std::any_of(preset.weather.begin(), preset.weather.end(),
-                                                            [&](const WeatherState& s) { return s.name == r.state; });
+        const bool known =
+            r.state == "none" || std::any_of(preset.weather.begin(), preset.weather.end(),
+                                             [&](const WeatherState& s) { return s.name == r.state; });
         if (!known) {
             std::string names = "none";
             for (const WeatherState& s : preset.weather) names += ", " + s.name;
-            issues.error(pointerJoin(at, "state"), "no weather state " +
-                                                       quoteString(validUtf8(r.state) ? r.state : std::string("?")) +
-                                                       " (the preset has " + names + ")");
+            issues.error(pointerJoin(at, "state"),
+                         "no weather state " + quoteString(validUtf8(r.state) ? r.state : std::string("?")) +
+                             " (the preset has " + names + ")");
         }
     }
 }
@@ -433,6 +477,7 @@ void validateInto(const Preset& constPreset, Issues& issues) {
             }
             if (key.interpolation && (int(*key.interpolation) < 0 || int(*key.interpolation) > 2))
                 issues.error(pointerJoin(keyAt, "interpolation"), "unknown interpolation");
+            if (key.tangents) checkKeyTangents(key, p, keyAt, issues);
             if (!p || !p->animatable) continue;
             const std::string valueAt = pointerJoin(keyAt, "value");
             if (p->type == ParamType::Scalar) {

@@ -226,6 +226,21 @@ public:
                 if (const auto& mode = t.keys[k].interpolation;
                     mode && int(*mode) >= 0 && int(*mode) <= 2)  // only when the key has its own
                     out += std::string(", \"interpolation\": ") + quoteString(interpolationName(*mode));
+                if (const auto& tangents = t.keys[k].tangents) {  // only when the key has its own
+                    const glm::dvec3* slopes[2] = {&tangents->in, &tangents->out};
+                    const char* names[2] = {", \"tangent_in\": ", ", \"tangent_out\": "};
+                    for (int s = 0; s < 2; ++s) {
+                        out += names[s];
+                        if (valueCount == 1) {
+                            out += formatDouble(slopes[s]->x);
+                        } else {
+                            const double c[3] = {slopes[s]->x, slopes[s]->y, slopes[s]->z};
+                            numbers(c, valueCount);
+                        }
+                    }
+                    out += tangents->mode == TangentMode::Broken ? ", \"tangent_mode\": \"broken\""
+                                                                 : ", \"tangent_mode\": \"unified\"";
+                }
                 out += '}';
             }
             if (!t.keys.empty()) newline(3);
@@ -259,7 +274,8 @@ public:
                 newline(4);
                 out += '{';
                 if (o.target.scope != ParamScope::Global)
-                    out += quoteString(trackObjectKey(o.target.scope)) + ": " + quoteString(o.target.objectId) + ", ";
+                    out += quoteString(trackObjectKey(o.target.scope)) + ": " +
+                           quoteString(o.target.objectId) + ", ";
                 out += "\"param\": " + quoteString(o.target.param) + ", ";
                 out += o.mode == WeatherOverrideMode::Add     ? "\"add\": "
                        : o.mode == WeatherOverrideMode::Scale ? "\"scale\": "

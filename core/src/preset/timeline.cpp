@@ -102,7 +102,28 @@ CompiledTrack compileTrack(const Track& track, int components) {
         }
         for (std::size_t k = 0; k < n; ++k) out.tangents[k][c] = m[k];
     }
+    // Keys with their own slopes replace the automatic ones (computed above
+    // as if no key had any, so the neighbours' stay as they were).
+    out.tangentsIn = out.tangents;
+    out.givenTangents.assign(n, false);
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::optional<KeyTangents>& given = track.keys[k].tangents;
+        if (!given) continue;
+        out.givenTangents[k] = true;
+        for (int c = 0; c < out.components; ++c) {
+            out.tangentsIn[k][c] = given->in[c];
+            out.tangents[k][c] = given->out[c];
+        }
+    }
     return out;
+}
+
+glm::dvec3 automaticTangent(const Track& track, std::size_t key, int components) {
+    if (key >= track.keys.size()) return glm::dvec3(0.0);
+    Track automatic = track;
+    for (TrackKey& k : automatic.keys) k.tangents.reset();
+    const CompiledTrack compiled = compileTrack(automatic, components);
+    return key < compiled.tangents.size() ? compiled.tangents[key] : glm::dvec3(0.0);
 }
 
 glm::dvec3 evaluateTrack(const CompiledTrack& track, double timeHours) {
@@ -131,7 +152,8 @@ glm::dvec3 evaluateTrack(const CompiledTrack& track, double timeHours) {
     const glm::dvec3& y0 = track.values[k];
     const glm::dvec3& y1 = track.values[next];
     // The segment's own interpolation (a key's override), else the track's.
-    const Interpolation mode = std::size_t(k) < track.segments.size() ? track.segments[k] : track.interpolation;
+    const Interpolation mode =
+        std::size_t(k) < track.segments.size() ? track.segments[k] : track.interpolation;
     if (mode == Interpolation::Step) return y0;
 
     const double h = t1 - t0;
@@ -146,8 +168,13 @@ glm::dvec3 evaluateTrack(const CompiledTrack& track, double timeHours) {
     const double h10 = s3 - 2.0 * s2 + s;
     const double h01 = -2.0 * s3 + 3.0 * s2;
     const double h11 = s3 - s2;
-    const glm::dvec3 v = h00 * y0 + h10 * h * track.tangents[k] + h01 * y1 + h11 * h * track.tangents[next];
-    // Monotone segments stay within [y0, y1]; the clamp only removes rounding.
+    const bool given =
+        track.givenTangents.size() == n && (track.givenTangents[k] || track.givenTangents[next]);
+    const glm::dvec3& arriving = track.tangentsIn.size() == n ? track.tangentsIn[next] : track.tangents[next];
+    const glm::dvec3 v = h00 * y0 + h10 * h * track.tangents[k] + h01 * y1 + h11 * h * arriving;
+    // The artist's slopes may overshoot; automatic (monotone) segments stay
+    // within [y0, y1], and the clamp only removes rounding.
+    if (given) return v;
     return glm::clamp(v, glm::min(y0, y1), glm::max(y0, y1));
 }
 
@@ -158,7 +185,7 @@ void setKey(Track& track, double timeHours, const glm::dvec3& value) {
     if (it != track.keys.end() && it->timeHours == t)
         it->value = value;
     else
-        track.keys.insert(it, TrackKey{t, value, false});
+        track.keys.insert(it, TrackKey{t, value, false, {}, 0.0, {}, {}});
 }
 
 namespace {
