@@ -459,6 +459,21 @@ void Editor::frameSelection() {
     view_.camera.frame(t.position, radius, aspect);
 }
 
+void Editor::goToPresetView() {
+    const std::optional<PresetView>& v = doc_.preset().view;
+    if (v)
+        view_.camera.setState(
+            cameraStateLookingAt(v->eye, v->target, v->verticalFovDeg, view_.camera.state()));
+}
+
+void Editor::setPresetViewFromCamera() {
+    PresetView v;
+    v.eye = view_.camera.eye();
+    v.target = view_.camera.state().target;
+    v.verticalFovDeg = view_.camera.state().verticalFovDeg;
+    doc_.apply("Set preset view", "", [&](Preset& p) { p.view = v; });
+}
+
 glm::dvec3 Editor::placeForNewObject() const {
     // On the scene's surface under the viewport's centre (its real
     // triangles, any scene), within twice the orbit distance; else where the

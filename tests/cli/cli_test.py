@@ -1408,6 +1408,77 @@ class Render(unittest.TestCase):
         self.assertFalse(os.path.exists(png))
 
 
+def rgb_bytes(path):
+    """(width, height, RGB bytes) of an 8-bit PNG that aerial wrote."""
+    width, height, colour, depth, rows = read_png(path)
+    channels = {2: 3, 6: 4}[colour]
+    rgb = bytearray()
+    for row in rows:
+        for x in range(width):
+            rgb += row[x * channels:x * channels + 3]
+    return width, height, bytes(rgb)
+
+
+class PresetView(unittest.TestCase):
+    """A preset's "view" (aerial/preset.hpp, PresetView): `aerial render`'s camera when the options leave
+    it open, the built-in default for a preset without one."""
+
+    def setUp(self):
+        if not has_render_command():
+            self.skipTest("aerial was built without the renderer (AERIAL_BUILD_RENDERER=OFF)")
+        self.dir = os.path.join(WORK, "preset_view")
+        os.makedirs(self.dir, exist_ok=True)
+
+    def render(self, path, *args):
+        out = os.path.join(self.dir, "view.png")
+        return run_json(self, "render", path, "--time", "12:00", "--size", "32x18", "--out", out, *args)["camera"]
+
+    def test_the_view_is_the_camera_unless_an_option_says_otherwise(self):
+        with open(preset("clear_summer_day")) as f:
+            doc = json.load(f)
+        self.assertNotIn("view", doc)
+        plain = self.render(preset("clear_summer_day"))
+        self.assertFalse(plain["preset_view"])
+        self.assertEqual((plain["eye"][0], plain["eye"][2], plain["target"][2], plain["fov_deg"]),
+                         (0.0, 120.0, -200.0, 60.0))  # the built-in default
+        doc["view"] = {"eye_m": [-40.5, 55.25, 90.0], "target_m": [10.0, 12.0, -150.0], "fov_deg": 42.0}
+        framed = os.path.join(self.dir, "framed.json")
+        with open(framed, "w") as f:
+            json.dump(doc, f)
+        camera = self.render(framed)
+        self.assertTrue(camera["preset_view"])
+        self.assertEqual((camera["eye"], camera["target"], camera["fov_deg"]),
+                         ([-40.5, 55.25, 90.0], [10.0, 12.0, -150.0], 42.0))
+        # Each option replaces its own part; the rest stays the view's.
+        camera = self.render(framed, "--eye", "1,50,100")
+        self.assertEqual((camera["eye"], camera["target"], camera["fov_deg"], camera["preset_view"]),
+                         ([1.0, 50.0, 100.0], [10.0, 12.0, -150.0], 42.0, True))
+        camera = self.render(framed, "--fov", "30")
+        self.assertEqual((camera["eye"], camera["fov_deg"]), ([-40.5, 55.25, 90.0], 30.0))
+        camera = self.render(framed, "--eye", "1,50,100", "--target", "0,0,0", "--fov", "30")
+        self.assertFalse(camera["preset_view"])
+        # An eye given on the command line at the view's target: no direction.
+        code, _, err = run("render", framed, "--eye", "10,12,-150", "--out", os.path.join(self.dir, "never.png"))
+        self.assertEqual(code, 2)
+        self.assertIn("--eye is the preset view's other point", err)
+
+    def test_a_bad_view_names_the_file_and_the_field(self):
+        with open(preset("clear_summer_day")) as f:
+            doc = json.load(f)
+        bad = os.path.join(self.dir, "bad_view.json")
+        for view, pointer, reason in (
+                ({"eye_m": [0, 40, 120]}, "/view/target_m", 'missing required field "target_m"'),
+                ({"eye_m": [0, 40, 120], "target_m": [0, 10, -200], "fov_deg": 0.5}, "/view/fov_deg",
+                 "out of range: 0.5 is not in 1..179 deg")):
+            doc["view"] = view
+            with open(bad, "w") as f:
+                json.dump(doc, f)
+            code, _, err = run("render", bad, "--out", os.path.join(self.dir, "never.png"))
+            self.assertEqual(code, 1, err)
+            self.assertIn(bad, err)
+            self.assertIn(pointer + ": " + reason, err)
+
+
 class WriteFaults(unittest.TestCase):
     """Every file aerial writes goes through core's atomic writer: faults injected
     through its seam (AERIAL_TEST_FILE_FAULT, aerial/detail/file_system.hpp) and a
