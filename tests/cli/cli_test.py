@@ -1478,6 +1478,26 @@ class PresetView(unittest.TestCase):
             self.assertIn(bad, err)
             self.assertIn(pointer + ": " + reason, err)
 
+    def test_misty_river_farm_shows_its_river_and_yard_not_the_foggy_valley(self):
+        """The two presets share their sky, fog and day (misty_river_farm adds the river's mist and the
+        yard's clear volume), so from one camera their contact-sheet rows were the same picture (mean
+        difference <= 0.08/255 at these hours). misty_river_farm's view frames the river and the farm yard:
+        at every hour of the sheet where both read, the pictures differ by a mean of at least 10/255 per
+        channel (a difference seen at a glance; two renders of one preset differ by 0)."""
+        with open(preset("misty_river_farm")) as f:
+            self.assertIn("view", json.load(f))
+        for hour in ("02:00", "05:30", "12:00", "18:45"):
+            images = []
+            for name in ("foggy_valley_morning", "misty_river_farm"):
+                out = os.path.join(self.dir, "%s_%s.png" % (name, hour.replace(":", "")))
+                code, _, err = run("render", preset(name), "--time", hour, "--size", "160x90", "--out", out)
+                self.assertEqual(code, 0, err)
+                images.append(rgb_bytes(out)[2])
+            a, b = images
+            mean = sum(abs(x - y) for x, y in zip(a, b)) / len(a)
+            with self.subTest(hour=hour):
+                self.assertGreaterEqual(mean, 10.0, "mean |difference| %.2f/255 at %s" % (mean, hour))
+
 
 class WriteFaults(unittest.TestCase):
     """Every file aerial writes goes through core's atomic writer: faults injected
