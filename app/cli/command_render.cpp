@@ -22,8 +22,11 @@
 //         (renderer/display.hpp): radiance times the preset's exposure
 //         (aerial/exposure.hpp: its manual EV100, or automatic — metered
 //         from this frame, clamped to its range, fully adapted — and its
-//         compensation at this time) times 2^EV (--exposure, default 0:
-//         added to the preset's), then the view (--view, default the
+//         compensation at this time), times the view's middle-grey
+//         calibration (DisplayTransform::middleGreyEv: the metered
+//         luminance shows as 118/255, as in a camera's picture), times 2^EV
+//         (--exposure, default 0: added to the preset's), then the view
+//         (--view, default the
 //         config's default: "ACES 1.0 - SDR Video" in Aerial's built-in
 //         config, a filmic tone map; "Un-tone-mapped" clamps to [0, 1] and
 //         sRGB-encodes) of the display (--display, default "sRGB - Display").
@@ -68,8 +71,10 @@
 //    "shadows" (true/false), "fog" ("analytic"/"volumetric": the mode drawn),
 //    "exposure": {"mode", "average_luminance" (metered, radiance units),
 //    "ev100" (what the preset's exposure chose), "compensation_ev",
-//    "exposure_ev" (--exposure), "display_ev" (the stops the display
-//    multiplied by: log2 radianceScale + exposure_ev; null for EXR)},
+//    "exposure_ev" (--exposure), "view_grey_ev" (the view's middle-grey
+//    calibration, DisplayTransform::middleGreyEv), "display_ev" (the stops
+//    the display multiplied by: log2 radianceScale + view_grey_ev +
+//    exposure_ev; both null for EXR)},
 //    "display", "view", "ocio_config" (null for EXR),
 //    "renderer" (GL_RENDERER and version),
 //    "setup_ms" (context, shaders, scene), "solve_ms" (sun and moon tables),
@@ -363,7 +368,8 @@ int runRender(const RenderOptions& options) {
     const double averageLuminance =
         meterAverageLuminance(image.pixels, image.channels, image.width, image.height);
     const double ev100 = targetEv100(exposure, averageLuminance);
-    const double displayEv = std::log2(radianceScale(exposure, ev100)) + exposureEv;
+    const double greyEv = display ? display->middleGreyEv() : 0.0;  // the view shows the metered grey as 0.46
+    const double displayEv = std::log2(radianceScale(exposure, ev100)) + greyEv + exposureEv;
     if (display) display->setExposureEv(displayEv);
 
     const auto writeStart = std::chrono::steady_clock::now();
@@ -394,6 +400,7 @@ int runRender(const RenderOptions& options) {
                      {"ev100", ev100},
                      {"compensation_ev", exposure.compensationEv},
                      {"exposure_ev", format == Format::Png ? Json(exposureEv) : Json(nullptr)},
+                     {"view_grey_ev", format == Format::Png ? Json(greyEv) : Json(nullptr)},
                      {"display_ev", format == Format::Png ? Json(displayEv) : Json(nullptr)}}},
                    {"display", display ? Json(display->display()) : Json(nullptr)},
                    {"view", display ? Json(display->view()) : Json(nullptr)},

@@ -166,7 +166,8 @@ void Editor::meterViewport() {
 }
 
 void Editor::showViewport(int width, int height) {
-    view_.display->setExposureEv(view_.exposure.displayEv(sky_.state.environment.exposure, view_.exposureEv));
+    view_.display->setExposureEv(view_.exposure.displayEv(sky_.state.environment.exposure,
+                                                          view_.exposureEv + view_.display->middleGreyEv()));
     view_.display->setNightVision(view_.nightVision);
     ensureDisplayTexture(width, height);
     view_.display->applyGpu(view_.renderer->colourTexture(), view_.displayTexture, width, height);
@@ -551,7 +552,8 @@ bool Editor::screenshot(const std::string& path, std::string& error) {
     ViewExposure settled;
     settled.meter(exposure, meterAverageLuminance(image.pixels, image.channels, image.width, image.height));
     settled.settle();
-    view_.display->setExposureEv(settled.displayEv(exposure, view_.exposureEv));
+    view_.display->setExposureEv(
+        settled.displayEv(exposure, view_.exposureEv + view_.display->middleGreyEv()));
     const bool ok = extension == ".exr" ? renderer::writeExr(image, path, error)
                                         : renderer::writePng(image, path, *view_.display, error);
     return ok;

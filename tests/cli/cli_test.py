@@ -1419,6 +1419,15 @@ def rgb_bytes(path):
     return width, height, bytes(rgb)
 
 
+def display_median(path):
+    """The median grey level of an 8-bit PNG, 0..1: the luma Y' = 0.2126 R' + 0.7152 G' + 0.0722 B' of
+    the encoded values of each pixel, the middle one (the mean of the two middle ones)."""
+    width, height, rgb = rgb_bytes(path)
+    luma = sorted(0.2126 * rgb[i] + 0.7152 * rgb[i + 1] + 0.0722 * rgb[i + 2] for i in range(0, len(rgb), 3))
+    n = len(luma)
+    return (luma[(n - 1) // 2] + luma[n // 2]) / 2.0 / 255.0
+
+
 class PresetView(unittest.TestCase):
     """A preset's "view" (aerial/preset.hpp, PresetView): `aerial render`'s camera when the options leave
     it open, the built-in default for a preset without one."""
@@ -1497,6 +1506,32 @@ class PresetView(unittest.TestCase):
             mean = sum(abs(x - y) for x, y in zip(a, b)) / len(a)
             with self.subTest(hour=hour):
                 self.assertGreaterEqual(mean, 10.0, "mean |difference| %.2f/255 at %s" % (mean, hour))
+
+
+class NoonExposure(unittest.TestCase):
+    """The automatic exposure meters as a photographer's camera does (aerial/exposure.hpp): a sunny noon
+    in every clear preset, from the preset's own camera, lands at a display median (the grey level of
+    the 8-bit picture) of 0.35-0.55: neither the dull grey nor the washed-out white of a miscalibrated
+    meter (issue 47.4)."""
+
+    CLEAR = ["clear_summer_day", "desert_dusk", "hazy_sunset"]
+
+    def setUp(self):
+        if not has_render_command():
+            self.skipTest("aerial was built without the renderer (AERIAL_BUILD_RENDERER=OFF)")
+        self.dir = os.path.join(WORK, "noon_exposure")
+        os.makedirs(self.dir, exist_ok=True)
+
+    def test_a_sunny_noon_reads_as_a_sunny_noon(self):
+        for name in self.CLEAR:
+            out = os.path.join(self.dir, name + ".png")
+            r = run_json(self, "render", preset(name), "--time", "12:00", "--size", "160x90", "--out", out)
+            self.assertEqual(r["exposure"]["mode"], "automatic")
+            self.assertEqual(r["exposure"]["compensation_ev"], 0.0)  # the meter alone
+            median = display_median(out)
+            with self.subTest(preset=name):
+                self.assertGreaterEqual(median, 0.35, "%s at noon: display median %.3f" % (name, median))
+                self.assertLessEqual(median, 0.55, "%s at noon: display median %.3f" % (name, median))
 
 
 class WriteFaults(unittest.TestCase):
