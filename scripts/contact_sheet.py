@@ -3,7 +3,8 @@
 in one PNG: how an artist chooses a preset (by looking, not by reading JSON).
 
 Each cell is `aerial render PRESET --time T` of the built-in scene from the
-default camera, with the preset's own exposure (its "exposure" block) and the
+preset's camera (its "view", else the CLI's default), with the preset's own
+exposure (its "exposure" block) and the
 default (tone-mapped) view: exactly what `aerial render` shows. The last
 column plots the preset's main parameters over the day (`aerial eval` every
 half hour): sun and moon elevation, the global fog density (log scale) and

@@ -22,8 +22,11 @@
 //         (renderer/display.hpp): radiance times the preset's exposure
 //         (aerial/exposure.hpp: its manual EV100, or automatic — metered
 //         from this frame, clamped to its range, fully adapted — and its
-//         compensation at this time) times 2^EV (--exposure, default 0:
-//         added to the preset's), then the view (--view, default the
+//         compensation at this time), times the view's middle-grey
+//         calibration (DisplayTransform::middleGreyEv: the metered
+//         luminance shows as 118/255, as in a camera's picture), times 2^EV
+//         (--exposure, default 0: added to the preset's), then the view
+//         (--view, default the
 //         config's default: "ACES 1.0 - SDR Video" in Aerial's built-in
 //         config, a filmic tone map; "Un-tone-mapped" clamps to [0, 1] and
 //         sRGB-encodes) of the display (--display, default "sRGB - Display").
@@ -51,21 +54,27 @@
 // instead of the built-in one; a bad or unsupported file is exit 1 with the
 // loader's one-line message, the loader's warnings go to stderr.
 //
-// Camera: Y up, metres; the default looks north (-Z) up the valley from
-// 30 m above the terrain at z = 120 towards a point 10 m above it at
-// z = -200, so both the valley floor and the horizon are in view.
+// Camera: Y up, metres. Each of --eye, --target and --fov that is not given
+// comes from the preset's "view" (aerial/preset.hpp, PresetView: the camera
+// that frames what the preset is about), or, for a preset without one, from
+// the built-in default: north (-Z) up the valley from 30 m above the terrain
+// at z = 120 towards a point 10 m above it at z = -200, so both the valley
+// floor and the horizon are in view, with a 60 deg vertical field of view.
 //
 // Prints one line: the file, its size, the time and how long the sky solve
 // and the render took. --json:
 //   {"file", "format" ("exr"/"png"), "width", "height",
 //    "preset": {"file", "name"}, "time_h", "time",
-//    "camera": {"eye", "target", "fov_deg"}, "precision" ("half"/"float"),
+//    "camera": {"eye", "target", "fov_deg", "preset_view" (true when the
+//    preset's view gave any of them)}, "precision" ("half"/"float"),
 //    "night_vision" (PNG shown with aerial::nightVision; false for EXR and --photopic),
 //    "shadows" (true/false), "fog" ("analytic"/"volumetric": the mode drawn),
 //    "exposure": {"mode", "average_luminance" (metered, radiance units),
 //    "ev100" (what the preset's exposure chose), "compensation_ev",
-//    "exposure_ev" (--exposure), "display_ev" (the stops the display
-//    multiplied by: log2 radianceScale + exposure_ev; null for EXR)},
+//    "exposure_ev" (--exposure), "view_grey_ev" (the view's middle-grey
+//    calibration, DisplayTransform::middleGreyEv), "display_ev" (the stops
+//    the display multiplied by: log2 radianceScale + view_grey_ev +
+//    exposure_ev; both null for EXR)},
 //    "display", "view", "ocio_config" (null for EXR),
 //    "renderer" (GL_RENDERER and version),
 //    "setup_ms" (context, shaders, scene), "solve_ms" (sun and moon tables),
@@ -108,6 +117,7 @@ struct RenderOptions {
     std::string eye;
     std::string target;
     double fovDeg = 60.0;
+    bool fovGiven = false;  ///< --fov was given (else the preset's view, else fovDeg)
     std::string size = "320x180";
     std::string out;
     std::string scene;     // "" = the built-in scene
@@ -137,7 +147,8 @@ Format formatOf(const std::string& out) {
                (extension.empty() ? std::string() : "; \"" + extension + "\" is neither"));
 }
 
-/// The default camera: above the valley floor, looking north up the valley.
+/// The default camera of a preset without a view: above the valley floor,
+/// looking north up the valley.
 void defaultView(glm::dvec3& eye, glm::dvec3& target) {
     eye = {0.0, renderer::builtinTerrainHeight(0.0, 120.0) + 30.0, 120.0};
     target = {0.0, renderer::builtinTerrainHeight(0.0, -200.0) + 10.0, -200.0};
@@ -211,9 +222,9 @@ int runRender(const RenderOptions& options) {
     defaultView(eye, target);
     if (!options.eye.empty()) eye = parseVec3(options.eye, "--eye");
     if (!options.target.empty()) target = parseVec3(options.target, "--target");
-    if (glm::dvec3(target - eye) == glm::dvec3(0.0))
+    if (!options.eye.empty() && !options.target.empty() && glm::dvec3(target - eye) == glm::dvec3(0.0))
         usageError("--eye and --target are the same point; the camera needs a direction");
-    if (!(options.fovDeg > 1.0 && options.fovDeg < 179.0))
+    if (options.fovGiven && !(options.fovDeg > 1.0 && options.fovDeg < 179.0))
         usageError("--fov: " + formatNumber(options.fovDeg) + " is out of range (1 < fov < 179 degrees)");
     double exposureEv = 0.0;
     if (!options.exposure.empty()) {
@@ -252,6 +263,19 @@ int runRender(const RenderOptions& options) {
     const bool builtin = options.preset == kDefaultPresetName;
     Preset preset = loadPresetOrFail(options.preset, "render");
     const std::string name = preset.name;
+    // What the options leave open comes from the preset's view (validated
+    // on load: apart, in range), else the built-in default.
+    double fovDeg = options.fovDeg;
+    const bool presetView =
+        preset.view && (options.eye.empty() || options.target.empty() || !options.fovGiven);
+    if (preset.view) {
+        if (options.eye.empty()) eye = preset.view->eye;
+        if (options.target.empty()) target = preset.view->target;
+        if (!options.fovGiven) fovDeg = preset.view->verticalFovDeg;
+    }
+    if (glm::dvec3(target - eye) == glm::dvec3(0.0))
+        usageError(std::string(options.eye.empty() ? "--target" : "--eye") +
+                   " is the preset view's other point; the camera needs a direction");
     const CompiledPreset compiled(std::move(preset));
 
     const fs::path out(options.out);
@@ -310,7 +334,7 @@ int runRender(const RenderOptions& options) {
     renderer::Camera camera;
     camera.eye = eye;
     camera.target = target;
-    camera.verticalFov = options.fovDeg / kDegreesPerRadian;
+    camera.verticalFov = fovDeg / kDegreesPerRadian;
     camera.aspect = double(width) / double(height);
     renderer::FrameDesc frame;
     frame.width = width;
@@ -344,7 +368,8 @@ int runRender(const RenderOptions& options) {
     const double averageLuminance =
         meterAverageLuminance(image.pixels, image.channels, image.width, image.height);
     const double ev100 = targetEv100(exposure, averageLuminance);
-    const double displayEv = std::log2(radianceScale(exposure, ev100)) + exposureEv;
+    const double greyEv = display ? display->middleGreyEv() : 0.0;  // the view shows the metered grey as 0.46
+    const double displayEv = std::log2(radianceScale(exposure, ev100)) + greyEv + exposureEv;
     if (display) display->setExposureEv(displayEv);
 
     const auto writeStart = std::chrono::steady_clock::now();
@@ -353,34 +378,38 @@ int runRender(const RenderOptions& options) {
 
     const char* formatName = format == Format::Exr ? "exr" : "png";
     if (options.json) {
-        printJson(
-            {{"file", out.string()},
-             {"format", formatName},
-             {"width", width},
-             {"height", height},
-             {"preset", {{"file", builtin ? "<built-in default>" : options.preset}, {"name", name}}},
-             {"time_h", state.timeHours},
-             {"time", formatTime(state.timeHours)},
-             {"camera", {{"eye", toJson(eye)}, {"target", toJson(target)}, {"fov_deg", options.fovDeg}}},
-             {"precision", options.halfTarget ? "half" : "float"},
-             {"night_vision", !options.photopic && format != Format::Exr},
-             {"shadows", options.shadows == "on"},
-             {"fog", frame.fogMode == renderer::FogMode::Volumetric ? "volumetric" : "analytic"},
-             {"exposure",
-              {{"mode", exposure.mode == ExposureMode::Manual ? "manual" : "automatic"},
-               {"average_luminance", averageLuminance},
-               {"ev100", ev100},
-               {"compensation_ev", exposure.compensationEv},
-               {"exposure_ev", format == Format::Png ? Json(exposureEv) : Json(nullptr)},
-               {"display_ev", format == Format::Png ? Json(displayEv) : Json(nullptr)}}},
-             {"display", display ? Json(display->display()) : Json(nullptr)},
-             {"view", display ? Json(display->view()) : Json(nullptr)},
-             {"ocio_config", display ? Json(display->configSource()) : Json(nullptr)},
-             {"renderer", context.rendererName()},
-             {"setup_ms", setupMs},
-             {"solve_ms", solveMs},
-             {"render_ms", renderMs},
-             {"write_ms", writeMs}});
+        const Json cameraJson = {{"eye", toJson(eye)},
+                                 {"target", toJson(target)},
+                                 {"fov_deg", fovDeg},
+                                 {"preset_view", presetView}};
+        printJson({{"file", out.string()},
+                   {"format", formatName},
+                   {"width", width},
+                   {"height", height},
+                   {"preset", {{"file", builtin ? "<built-in default>" : options.preset}, {"name", name}}},
+                   {"time_h", state.timeHours},
+                   {"time", formatTime(state.timeHours)},
+                   {"camera", cameraJson},
+                   {"precision", options.halfTarget ? "half" : "float"},
+                   {"night_vision", !options.photopic && format != Format::Exr},
+                   {"shadows", options.shadows == "on"},
+                   {"fog", frame.fogMode == renderer::FogMode::Volumetric ? "volumetric" : "analytic"},
+                   {"exposure",
+                    {{"mode", exposure.mode == ExposureMode::Manual ? "manual" : "automatic"},
+                     {"average_luminance", averageLuminance},
+                     {"ev100", ev100},
+                     {"compensation_ev", exposure.compensationEv},
+                     {"exposure_ev", format == Format::Png ? Json(exposureEv) : Json(nullptr)},
+                     {"view_grey_ev", format == Format::Png ? Json(greyEv) : Json(nullptr)},
+                     {"display_ev", format == Format::Png ? Json(displayEv) : Json(nullptr)}}},
+                   {"display", display ? Json(display->display()) : Json(nullptr)},
+                   {"view", display ? Json(display->view()) : Json(nullptr)},
+                   {"ocio_config", display ? Json(display->configSource()) : Json(nullptr)},
+                   {"renderer", context.rendererName()},
+                   {"setup_ms", setupMs},
+                   {"solve_ms", solveMs},
+                   {"render_ms", renderMs},
+                   {"write_ms", writeMs}});
         return kExitOk;
     }
     std::printf("wrote %s (%dx%d %s, %s at %s): sky solve %.1f ms, render %.1f ms\n", out.string().c_str(),
@@ -407,15 +436,20 @@ Command addRenderCommand(CLI::App& parent) {
     app->add_option("--scene", options->scene, "glTF 2.0 scene (.gltf or .glb) instead of the built-in one")
         ->type_name("FILE");
     app->add_option("--eye", options->eye,
-                    "Camera position x,y,z [m] (default: 30 m above the valley floor at z = 120)")
+                    "Camera position x,y,z [m] (default: the preset's view, else 30 m above the valley floor "
+                    "at z = 120)")
         ->type_name("X,Y,Z");
-    app->add_option("--target", options->target,
-                    "Point the camera looks at x,y,z [m] (default: up the valley, 10 m above it at z = -200)")
+    app->add_option(
+           "--target", options->target,
+           "Point the camera looks at x,y,z [m] (default: the preset's view, else up the valley, 10 m "
+           "above it at z = -200)")
         ->type_name("X,Y,Z");
-    app->add_option("--fov", options->fovDeg, "Vertical field of view [deg], between 1 and 179")
-        ->type_name("DEG")
-        ->check(finiteNumber())
-        ->capture_default_str();
+    CLI::Option* fov =
+        app->add_option(
+               "--fov", options->fovDeg,
+               "Vertical field of view [deg], between 1 and 179 (default: the preset's view, else 60)")
+            ->type_name("DEG")
+            ->check(finiteNumber());
     app->add_option("--size", options->size, "Image size in pixels, each side 1..8192 (limits.hpp)")
         ->type_name("WxH")
         ->capture_default_str();
@@ -465,7 +499,10 @@ Command addRenderCommand(CLI::App& parent) {
                    "--target=0,5,-100 --fov 45 --exposure 1 --out fog.png\n"
                    "  aerial render presets/hazy_sunset.json --time 19:00 --view \"ACES 1.0 - SDR Video\" "
                    "--out sunset.png"));
-    return {app, [options] { return runRender(*options); }};
+    return {app, [options, fov] {
+                options->fovGiven = fov->count() > 0;
+                return runRender(*options);
+            }};
 }
 
 }  // namespace aerial::cli

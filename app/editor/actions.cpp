@@ -36,6 +36,8 @@ std::string shortcutText(const Shortcut& shortcut) {
             return text + "Esc";
         case GLFW_KEY_END:
             return text + "End";
+        case GLFW_KEY_HOME:
+            return text + "Home";
         case GLFW_KEY_F1:
             return text + "F1";
         case GLFW_KEY_F11:

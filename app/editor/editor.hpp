@@ -144,6 +144,11 @@ private:
     bool selectedVolumeShape(FogVolume& out) const;
     void applyGizmoTransform(const GizmoTransform& t);
     void frameSelection();
+    /// The viewport camera at the preset's view (aerial/preset.hpp,
+    /// PresetView); nothing when it has none.
+    void goToPresetView();
+    /// The preset's view becomes the viewport camera (one undo step).
+    void setPresetViewFromCamera();
     glm::dvec3 placeForNewObject() const;
     /// Uploads a scene to the renderer and keeps its triangles for placing
     /// objects on it (view_.sceneHits).

@@ -297,6 +297,16 @@ void Editor::declareActions() {
         .key(GLFW_KEY_F, S::kNone, false, KeyContext::OutsideTimeline)  // over the timeline F fits its view
         .enabledWhen(objectSelected, needsObject("frame"))
         .does([this] { frameSelection(); });
+    t.add("preset_view", "Go to the preset's view", "View")
+        .key(GLFW_KEY_HOME, S::kNone, false, KeyContext::OutsideTimeline)
+        .helps(
+            "put the viewport camera at the preset's view (its \"view\": where it is meant to be seen from)")
+        .enabledWhen([this] { return doc_.preset().view.has_value(); }, "preset_view: the preset has no view")
+        .does([this] { goToPresetView(); });
+    t.add("set_preset_view", "Set the preset's view to this camera", "View")
+        .oneUndoStep()
+        .helps("save the viewport camera as the preset's view (aerial render and the contact sheet use it)")
+        .does([this] { setPresetViewFromCamera(); });
 
     t.add("timeline_fit", "Timeline: whole day", "View")
         .key(GLFW_KEY_F, S::kNone, false, KeyContext::Timeline)

@@ -129,6 +129,7 @@ bool Editor::openPreset(const std::string& path) {
     edit_.selectedParam.reset();
     edit_.selectedKey = -1;
     edit_.curves.resetRanges();  // another preset's curves: their ranges follow their keys
+    goToPresetView();            // a preset with a view opens where it is meant to be seen from
     std::string status = "Opened " + path;
     if (!result.warnings.empty()) {
         status += " (";

@@ -166,7 +166,8 @@ void Editor::meterViewport() {
 }
 
 void Editor::showViewport(int width, int height) {
-    view_.display->setExposureEv(view_.exposure.displayEv(sky_.state.environment.exposure, view_.exposureEv));
+    view_.display->setExposureEv(view_.exposure.displayEv(sky_.state.environment.exposure,
+                                                          view_.exposureEv + view_.display->middleGreyEv()));
     view_.display->setNightVision(view_.nightVision);
     ensureDisplayTexture(width, height);
     view_.display->applyGpu(view_.renderer->colourTexture(), view_.displayTexture, width, height);
@@ -459,6 +460,21 @@ void Editor::frameSelection() {
     view_.camera.frame(t.position, radius, aspect);
 }
 
+void Editor::goToPresetView() {
+    const std::optional<PresetView>& v = doc_.preset().view;
+    if (v)
+        view_.camera.setState(
+            cameraStateLookingAt(v->eye, v->target, v->verticalFovDeg, view_.camera.state()));
+}
+
+void Editor::setPresetViewFromCamera() {
+    PresetView v;
+    v.eye = view_.camera.eye();
+    v.target = view_.camera.state().target;
+    v.verticalFovDeg = view_.camera.state().verticalFovDeg;
+    doc_.apply("Set preset view", "", [&](Preset& p) { p.view = v; });
+}
+
 glm::dvec3 Editor::placeForNewObject() const {
     // On the scene's surface under the viewport's centre (its real
     // triangles, any scene), within twice the orbit distance; else where the
@@ -536,7 +552,8 @@ bool Editor::screenshot(const std::string& path, std::string& error) {
     ViewExposure settled;
     settled.meter(exposure, meterAverageLuminance(image.pixels, image.channels, image.width, image.height));
     settled.settle();
-    view_.display->setExposureEv(settled.displayEv(exposure, view_.exposureEv));
+    view_.display->setExposureEv(
+        settled.displayEv(exposure, view_.exposureEv + view_.display->middleGreyEv()));
     const bool ok = extension == ".exr" ? renderer::writeExr(image, path, error)
                                         : renderer::writePng(image, path, *view_.display, error);
     return ok;

@@ -88,6 +88,26 @@ struct DisplayTransform::Impl {
         }
     }
     std::vector<LutTexture> luts;
+    /// middleGreyEv() of the view, found once when it is built.
+    double findMiddleGreyEv() const {
+        // sRGB's encoding of 0.18 (IEC 61966-2-1): 1.055 * 0.18^(1/2.4) - 0.055.
+        const double target = 1.055 * std::pow(0.18, 1.0 / 2.4) - 0.055;
+        const auto shown = [&](double ev) {
+            float grey[3];
+            for (float& c : grey) c = static_cast<float>(0.18 * std::exp2(ev));
+            cpu->applyRGB(grey);
+            return double(grey[1]);
+        };
+        double lo = -2.0, hi = 2.0;  // a tone curve rises with its input: bisect
+        if (!(shown(lo) < target)) return lo;
+        if (!(shown(hi) > target)) return hi;
+        for (int i = 0; i < 40; ++i) {
+            const double mid = 0.5 * (lo + hi);
+            (shown(mid) < target ? lo : hi) = mid;
+        }
+        return 0.5 * (lo + hi);
+    }
+    double middleGreyEv = 0.0;
 
     void log(LogLevel level, const std::string& text) const {
         detail::logMessage(logger, level, text.c_str());
@@ -348,6 +368,7 @@ DisplayTransform::DisplayTransform(const DisplayDesc& desc) : impl_(std::make_un
         impl_->cpu.reset();
         impl_->shaderDesc.reset();
     }
+    if (impl_->cpu) impl_->middleGreyEv = impl_->findMiddleGreyEv();
 }
 
 DisplayTransform::~DisplayTransform() { impl_->releaseGl(); }
@@ -364,6 +385,8 @@ const std::string& DisplayTransform::display() const { return impl_->display; }
 const std::string& DisplayTransform::view() const { return impl_->view; }
 double DisplayTransform::exposureEv() const { return impl_->exposureEv; }
 void DisplayTransform::setExposureEv(double ev) { impl_->exposureEv = ev; }
+double DisplayTransform::middleGreyEv() const { return impl_->middleGreyEv; }
+
 bool DisplayTransform::nightVision() const { return impl_->nightVision; }
 void DisplayTransform::setNightVision(bool on) { impl_->nightVision = on; }
 

@@ -1408,6 +1408,132 @@ class Render(unittest.TestCase):
         self.assertFalse(os.path.exists(png))
 
 
+def rgb_bytes(path):
+    """(width, height, RGB bytes) of an 8-bit PNG that aerial wrote."""
+    width, height, colour, depth, rows = read_png(path)
+    channels = {2: 3, 6: 4}[colour]
+    rgb = bytearray()
+    for row in rows:
+        for x in range(width):
+            rgb += row[x * channels:x * channels + 3]
+    return width, height, bytes(rgb)
+
+
+def display_median(path):
+    """The median grey level of an 8-bit PNG, 0..1: the luma Y' = 0.2126 R' + 0.7152 G' + 0.0722 B' of
+    the encoded values of each pixel, the middle one (the mean of the two middle ones)."""
+    width, height, rgb = rgb_bytes(path)
+    luma = sorted(0.2126 * rgb[i] + 0.7152 * rgb[i + 1] + 0.0722 * rgb[i + 2] for i in range(0, len(rgb), 3))
+    n = len(luma)
+    return (luma[(n - 1) // 2] + luma[n // 2]) / 2.0 / 255.0
+
+
+class PresetView(unittest.TestCase):
+    """A preset's "view" (aerial/preset.hpp, PresetView): `aerial render`'s camera when the options leave
+    it open, the built-in default for a preset without one."""
+
+    def setUp(self):
+        if not has_render_command():
+            self.skipTest("aerial was built without the renderer (AERIAL_BUILD_RENDERER=OFF)")
+        self.dir = os.path.join(WORK, "preset_view")
+        os.makedirs(self.dir, exist_ok=True)
+
+    def render(self, path, *args):
+        out = os.path.join(self.dir, "view.png")
+        return run_json(self, "render", path, "--time", "12:00", "--size", "32x18", "--out", out, *args)["camera"]
+
+    def test_the_view_is_the_camera_unless_an_option_says_otherwise(self):
+        with open(preset("clear_summer_day")) as f:
+            doc = json.load(f)
+        self.assertNotIn("view", doc)
+        plain = self.render(preset("clear_summer_day"))
+        self.assertFalse(plain["preset_view"])
+        self.assertEqual((plain["eye"][0], plain["eye"][2], plain["target"][2], plain["fov_deg"]),
+                         (0.0, 120.0, -200.0, 60.0))  # the built-in default
+        doc["view"] = {"eye_m": [-40.5, 55.25, 90.0], "target_m": [10.0, 12.0, -150.0], "fov_deg": 42.0}
+        framed = os.path.join(self.dir, "framed.json")
+        with open(framed, "w") as f:
+            json.dump(doc, f)
+        camera = self.render(framed)
+        self.assertTrue(camera["preset_view"])
+        self.assertEqual((camera["eye"], camera["target"], camera["fov_deg"]),
+                         ([-40.5, 55.25, 90.0], [10.0, 12.0, -150.0], 42.0))
+        # Each option replaces its own part; the rest stays the view's.
+        camera = self.render(framed, "--eye", "1,50,100")
+        self.assertEqual((camera["eye"], camera["target"], camera["fov_deg"], camera["preset_view"]),
+                         ([1.0, 50.0, 100.0], [10.0, 12.0, -150.0], 42.0, True))
+        camera = self.render(framed, "--fov", "30")
+        self.assertEqual((camera["eye"], camera["fov_deg"]), ([-40.5, 55.25, 90.0], 30.0))
+        camera = self.render(framed, "--eye", "1,50,100", "--target", "0,0,0", "--fov", "30")
+        self.assertFalse(camera["preset_view"])
+        # An eye given on the command line at the view's target: no direction.
+        code, _, err = run("render", framed, "--eye", "10,12,-150", "--out", os.path.join(self.dir, "never.png"))
+        self.assertEqual(code, 2)
+        self.assertIn("--eye is the preset view's other point", err)
+
+    def test_a_bad_view_names_the_file_and_the_field(self):
+        with open(preset("clear_summer_day")) as f:
+            doc = json.load(f)
+        bad = os.path.join(self.dir, "bad_view.json")
+        for view, pointer, reason in (
+                ({"eye_m": [0, 40, 120]}, "/view/target_m", 'missing required field "target_m"'),
+                ({"eye_m": [0, 40, 120], "target_m": [0, 10, -200], "fov_deg": 0.5}, "/view/fov_deg",
+                 "out of range: 0.5 is not in 1..179 deg")):
+            doc["view"] = view
+            with open(bad, "w") as f:
+                json.dump(doc, f)
+            code, _, err = run("render", bad, "--out", os.path.join(self.dir, "never.png"))
+            self.assertEqual(code, 1, err)
+            self.assertIn(bad, err)
+            self.assertIn(pointer + ": " + reason, err)
+
+    def test_misty_river_farm_shows_its_river_and_yard_not_the_foggy_valley(self):
+        """The two presets share their sky, fog and day (misty_river_farm adds the river's mist and the
+        yard's clear volume), so from one camera their contact-sheet rows were the same picture (mean
+        difference <= 0.08/255 at these hours). misty_river_farm's view frames the river and the farm yard:
+        at every hour of the sheet where both read, the pictures differ by a mean of at least 10/255 per
+        channel (a difference seen at a glance; two renders of one preset differ by 0)."""
+        with open(preset("misty_river_farm")) as f:
+            self.assertIn("view", json.load(f))
+        for hour in ("02:00", "05:30", "12:00", "18:45"):
+            images = []
+            for name in ("foggy_valley_morning", "misty_river_farm"):
+                out = os.path.join(self.dir, "%s_%s.png" % (name, hour.replace(":", "")))
+                code, _, err = run("render", preset(name), "--time", hour, "--size", "160x90", "--out", out)
+                self.assertEqual(code, 0, err)
+                images.append(rgb_bytes(out)[2])
+            a, b = images
+            mean = sum(abs(x - y) for x, y in zip(a, b)) / len(a)
+            with self.subTest(hour=hour):
+                self.assertGreaterEqual(mean, 10.0, "mean |difference| %.2f/255 at %s" % (mean, hour))
+
+
+class NoonExposure(unittest.TestCase):
+    """The automatic exposure meters as a photographer's camera does (aerial/exposure.hpp): a sunny noon
+    in every clear preset, from the preset's own camera, lands at a display median (the grey level of
+    the 8-bit picture) of 0.35-0.55: neither the dull grey nor the washed-out white of a miscalibrated
+    meter (issue 47.4)."""
+
+    CLEAR = ["clear_summer_day", "desert_dusk", "hazy_sunset"]
+
+    def setUp(self):
+        if not has_render_command():
+            self.skipTest("aerial was built without the renderer (AERIAL_BUILD_RENDERER=OFF)")
+        self.dir = os.path.join(WORK, "noon_exposure")
+        os.makedirs(self.dir, exist_ok=True)
+
+    def test_a_sunny_noon_reads_as_a_sunny_noon(self):
+        for name in self.CLEAR:
+            out = os.path.join(self.dir, name + ".png")
+            r = run_json(self, "render", preset(name), "--time", "12:00", "--size", "160x90", "--out", out)
+            self.assertEqual(r["exposure"]["mode"], "automatic")
+            self.assertEqual(r["exposure"]["compensation_ev"], 0.0)  # the meter alone
+            median = display_median(out)
+            with self.subTest(preset=name):
+                self.assertGreaterEqual(median, 0.35, "%s at noon: display median %.3f" % (name, median))
+                self.assertLessEqual(median, 0.55, "%s at noon: display median %.3f" % (name, median))
+
+
 class WriteFaults(unittest.TestCase):
     """Every file aerial writes goes through core's atomic writer: faults injected
     through its seam (AERIAL_TEST_FILE_FAULT, aerial/detail/file_system.hpp) and a

@@ -7,9 +7,10 @@ black nor blown out.
 The band, on the 8-bit sRGB PNG (luma Y' = 0.2126 R' + 0.7152 G' + 0.0722 B'
 of the encoded values, 0..1):
   * mean luma in [0.06, 0.60]: below 0.06 (~15/255 average) a picture reads as
-    black on a normal monitor in a lit room, and 0.60 is well above any
-    exposed scene here (automatic exposure puts the average near 0.25; the
-    presets key a -1 to -1.5 EV night compensation, which lands near 0.12);
+    black on a normal monitor in a lit room, and 0.60 is above any exposed
+    scene here (automatic exposure shows a sunny noon's median grey near
+    0.45; the presets key a -1 to -1.5 EV night compensation, which lands
+    near 0.12-0.2);
   * at most 2 % of the pixels clipped to white (every channel >= 250): the
     sun's disc and an emitter may clip, a blown-out sky or ground may not;
   * at most 50 % of the pixels near black (luma < 0.02): a night may be dark,

@@ -97,15 +97,15 @@ TEST(Exposure, HistogramAverageMatchesTheSortedPixels) {
 
 TEST(Exposure, PresetExposureMetersTheFrameInCandelas) {
     // A frame of two luminances [radiance units]: 50 % at 0.2, 50 % at 4
-    // (a bright sky). The 10-60 % band holds 0.2 with weight 0.4 and 4 with
-    // weight 0.1; bins are half a stop, so within a quarter stop of the
+    // (a bright sky). The 10-90 % band holds 0.2 with weight 0.4 and 4 with
+    // weight 0.4; bins are half a stop, so within a quarter stop of the
     // geometric mean of the band. (The histogram ends at 2^16 cd/m^2 = 13 units.)
     std::vector<float> rgba;
     for (int i = 0; i < 1000; ++i) {
         const float v = i % 2 == 0 ? 4.0f : 0.2f;
         rgba.insert(rgba.end(), {v, v, v, 1.0f});
     }
-    const double band = (0.4 * std::log2(0.2 * 5000.0) + 0.1 * std::log2(4.0 * 5000.0)) / 0.5;
+    const double band = (0.4 * std::log2(0.2 * 5000.0) + 0.4 * std::log2(4.0 * 5000.0)) / 0.8;
     const double average = aerial::meterAverageLuminance(rgba, 4);
     EXPECT_NEAR(std::log2(average * aerial::kNitsPerRadianceUnit), band, 0.25);
     // Every 2nd pixel sees only the sky: step samples whole pixels.
@@ -126,25 +126,33 @@ TEST(Exposure, PresetExposureMetersTheFrameInCandelas) {
     EXPECT_NEAR(aerial::radianceScale(p, 11.0), 5000.0 * 1.44 / std::exp2(9.0), 1e-12);
 }
 
-// A camera's centre-weighted meter: a landscape frame whose top 55 % is a
-// sky 16x brighter than the ground meters near the ground (within half a
-// stop), where the unweighted meter sits almost a stop up; a small bright light
-// (a campfire: 2 % of the frame at 10 000x) does not move it.
-TEST(Exposure, CentreWeightedMeterReadsTheSubjectNotTheSky) {
+// A camera's centre-weighted meter: in a landscape frame whose top 55 % is a
+// sky 16x (4 stops) brighter than the ground, the sky counts, but less than
+// the ground: the weighted meter reads between them, above the ground by
+// less than the 2 stops of an even split and a quarter stop or more below
+// the unweighted meter; a small bright light (a campfire: 2 % of the frame
+// at 10 000x) does not move it (the 10-90 % band leaves it out).
+TEST(Exposure, CentreWeightedMeterCountsTheSkyLessThanTheSubject) {
     const int w = 64, h = 36;
-    std::vector<float> rgba;
-    for (int y = 0; y < h; ++y) {
-        for (int x = 0; x < w; ++x) {
-            const bool fire = std::abs(x - w / 2) < 3 && std::abs(y - 2 * h / 3) < 3;
-            const float v = fire ? 1000.0f : y < h * 55 / 100 ? 1.6f : 0.1f;
-            rgba.insert(rgba.end(), {v, v, v, 1.0f});
+    const auto frame = [&](bool withFire) {
+        std::vector<float> rgba;
+        for (int y = 0; y < h; ++y) {
+            for (int x = 0; x < w; ++x) {
+                const bool fire = withFire && std::abs(x - w / 2) < 3 && std::abs(y - 2 * h / 3) < 3;
+                const float v = fire ? 1000.0f : y < h * 55 / 100 ? 1.6f : 0.1f;
+                rgba.insert(rgba.end(), {v, v, v, 1.0f});
+            }
         }
-    }
+        return rgba;
+    };
+    const std::vector<float> rgba = frame(true);
     const double weighted = std::log2(aerial::meterAverageLuminance(rgba, 4, w, h) / 0.1);
     const double plain = std::log2(aerial::meterAverageLuminance(rgba, 4) / 0.1);
-    EXPECT_LT(weighted, 0.5) << weighted;
-    EXPECT_GT(weighted, -0.25) << weighted;
-    EXPECT_GT(plain, weighted + 0.5) << plain;
+    const double noFire = std::log2(aerial::meterAverageLuminance(frame(false), 4, w, h) / 0.1);
+    EXPECT_GT(weighted, 0.5) << weighted;
+    EXPECT_LT(weighted, 2.0) << weighted;
+    EXPECT_GT(plain, weighted + 0.25) << plain;
+    EXPECT_NEAR(weighted, noFire, 0.25);
     // A size that does not match the pixels falls back to the plain meter.
     EXPECT_DOUBLE_EQ(aerial::meterAverageLuminance(rgba, 4, w + 1, h), aerial::meterAverageLuminance(rgba, 4));
 }

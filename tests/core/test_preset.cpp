@@ -191,6 +191,55 @@ TEST(Preset, PresetsIdenticalSeesOneBit) {
     EXPECT_FALSE(aerial::presetsIdentical(a, b));
 }
 
+TEST(Preset, ViewRoundTripsAndAFileWithoutOneStaysAsItWas) {
+    // A preset without a view (every file before views) loads without one
+    // and writes no "view": the file comes back byte for byte.
+    const aerial::Preset plain = aerial::defaultPreset();
+    ASSERT_FALSE(plain.view.has_value());
+    const std::string plainText = aerial::presetToJson(plain);
+    EXPECT_EQ(plainText.find("\"view\""), std::string::npos);
+    const aerial::PresetLoadResult plainBack = aerial::parsePreset(plainText);
+    ASSERT_TRUE(plainBack.ok()) << joinIssues(plainBack.errors);
+    EXPECT_FALSE(plainBack.preset->view.has_value());
+    EXPECT_EQ(aerial::presetToJson(*plainBack.preset), plainText);
+
+    // A view with awkward doubles comes back bit for bit, through a file.
+    aerial::Preset framed = plain;
+    framed.view = aerial::PresetView{{-61.25, 0.1 + 0.2, 1.0 / 3.0}, {5.0, 18.000000000000004, -90.0}, 47.5};
+    TempDir dir;
+    const fs::path file = dir.path() / "framed.json";
+    ASSERT_TRUE(aerial::savePreset(framed, file.string()).ok());
+    const aerial::PresetLoadResult r = aerial::loadPreset(file.string());
+    ASSERT_TRUE(r.ok()) << joinIssues(r.errors);
+    ASSERT_TRUE(r.preset->view.has_value());
+    EXPECT_TRUE(aerial::presetsIdentical(framed, *r.preset));
+    EXPECT_EQ(aerial::presetToJson(*r.preset), readFile(file));
+
+    // presetsIdentical sees a view's one bit and its absence.
+    aerial::Preset other = framed;
+    other.view->verticalFovDeg = std::nextafter(other.view->verticalFovDeg, 90.0);
+    EXPECT_FALSE(aerial::presetsIdentical(framed, other));
+    EXPECT_FALSE(aerial::presetsIdentical(framed, plain));
+
+    // fov_deg may be left out: the default 60.
+    const aerial::PresetLoadResult bare =
+        aerial::parsePreset(R"({"version": 5, "view": {"eye_m": [0, 40, 120], "target_m": [0, 10, -200]}})");
+    ASSERT_TRUE(bare.ok()) << joinIssues(bare.errors);
+    EXPECT_EQ(bare.preset->view->verticalFovDeg, 60.0);
+    EXPECT_EQ(bare.preset->view->eye, glm::dvec3(0.0, 40.0, 120.0));
+    EXPECT_TRUE(bare.warnings.empty()) << joinIssues(bare.warnings);
+
+    // A view built in code is validated as a file's: savePreset refuses it.
+    aerial::Preset bad = plain;
+    bad.view = aerial::PresetView{{1.0, 2.0, 3.0}, {1.0, 2.0, 3.0}, std::nan("")};
+    const std::vector<aerial::PresetIssue> issues = aerial::validatePreset(bad);
+    ASSERT_EQ(issues.size(), 2u) << joinIssues(issues);
+    EXPECT_EQ(issues[0].pointer, "/view/fov_deg");
+    EXPECT_EQ(issues[0].message, "must be a finite number (got nan)");
+    EXPECT_EQ(issues[1].pointer, "/view/target_m");
+    EXPECT_FALSE(aerial::savePreset(bad, (dir.path() / "bad.json").string()).ok());
+}
+
 // ---------------------------------------------------------------------------
 // Shipped presets and the schema
 

@@ -13,6 +13,7 @@ Every case FAILS (never skips) when the editor cannot start under Xvfb.
 """
 import argparse
 import json
+import math
 import os
 import re
 import shutil
@@ -704,6 +705,42 @@ quit
     p = env.run(env.script("restore.txt", "print_camera\nquit\n"))
     restored = json.loads(re.findall(r"^camera (\{.*\})$", p.stdout, re.M)[0])
     check(restored == after, "the camera was not restored: %s, want %s" % (restored, after))
+    # A preset's view: the preset opens there (over the session's camera); an orbit, then
+    # preset_view (Home) goes back; set_preset_view makes the camera the view, and Save writes it.
+    with open(os.path.join(env.source, "presets", "clear_summer_day.json")) as f:
+        doc = json.load(f)
+    doc["view"] = {"eye_m": [-60.0, 62.5, 70.0], "target_m": [5.0, 18.0, -90.0], "fov_deg": 45.0}
+    framed, reframed = env.path("framed.json"), env.path("reframed.json")
+    with open(framed, "w") as f:
+        json.dump(doc, f)
+    p = env.run(env.script("view.txt", """
+open {framed}
+print_camera
+orbit 120 -40 8
+preset_view
+print_camera
+orbit 120 -40 8
+set_preset_view
+print_camera
+save {reframed}
+quit
+""".format(framed=framed, reframed=reframed)))
+    cams = [json.loads(c) for c in re.findall(r"^camera (\{.*\})$", p.stdout, re.M)]
+    check(len(cams) == 3, "cameras not printed: %s" % p.stdout)
+    opened, back, moved = cams
+
+    def eye_of(c):
+        yaw, pitch, d = c["yaw_rad"], c["pitch_rad"], c["distance_m"]
+        forward = [math.cos(pitch) * math.sin(yaw), math.sin(pitch), -math.cos(pitch) * math.cos(yaw)]
+        return [t - d * f for t, f in zip(c["target_m"], forward)]
+
+    for c, what in ((opened, "on opening"), (back, "after preset_view")):
+        check(c["target_m"] == doc["view"]["target_m"] and c["vertical_fov_deg"] == 45.0 and
+              max(abs(a - b) for a, b in zip(eye_of(c), doc["view"]["eye_m"])) < 1e-6,
+              "the camera %s is %s, not the preset's view %s" % (what, c, doc["view"]))
+    view = load_json(reframed)["view"]
+    check(view["target_m"] == moved["target_m"] and max(abs(a - b) for a, b in zip(view["eye_m"], eye_of(moved))) < 1e-6,
+          "the saved view %s is not the camera %s" % (view, moved))
     # Room for the picture: Maximize viewport gives it the window's width and
     # the timeline's height, Game view hides the helpers; both are kept.
     p = env.run(env.script("layout.txt", """

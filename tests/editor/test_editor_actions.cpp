@@ -288,6 +288,7 @@ TEST(EditorActions, EveryShortcutIsStillOnItsAction) {
         {"frame", {"F"}},
         {"timeline_fit", {"F"}},
         {"drop_to_ground", {"End"}},
+        {"preset_view", {"Home"}},
         {"help_sheet", {"F1"}},
         {"play_pause", {"Space"}},
         {"cancel_gizmo_drag", {"Esc"}},

@@ -291,6 +291,25 @@ TEST(CameraController, FrameFitsTheSphereInBothFieldsOfView) {
     EXPECT_GT(c.state().distance, 0.1);
 }
 
+TEST(CameraState, LookingAtAPresetViewPutsTheEyeAndTargetWhereItSays) {
+    CameraState base;
+    base.flySpeed = 37.0;
+    const glm::dvec3 eye(-60.0, 62.5, 70.0), target(5.0, 18.0, -90.0);
+    CameraController c(cameraStateLookingAt(eye, target, 45.0, base));
+    EXPECT_LT(glm::length(c.eye() - eye), 1e-9);
+    EXPECT_EQ(c.state().target, target);
+    EXPECT_NEAR(c.state().distance, glm::length(target - eye), 1e-12);
+    EXPECT_EQ(c.state().verticalFovDeg, 45.0);
+    EXPECT_EQ(c.state().flySpeed, 37.0);  // the base's
+    const renderer::Camera cam = c.camera(16.0 / 9.0);
+    EXPECT_LT(glm::length(glm::normalize(cam.target - cam.eye) - glm::normalize(target - eye)), 1e-12);
+    // Straight down tilts to the pitch limit about the target; the fov clamps to the editor's range.
+    const CameraState down = cameraStateLookingAt({0.0, 100.0, 0.0}, {0.0, 0.0, 0.0}, 170.0);
+    EXPECT_EQ(down.pitch, -kMaxPitch);
+    EXPECT_EQ(down.verticalFovDeg, kMaxFovDeg);
+    EXPECT_EQ(down.target, glm::dvec3(0.0));
+}
+
 TEST(CameraState, JsonRoundTripIsBitExact) {
     std::mt19937_64 rng(5);
     std::uniform_real_distribution<double> u(-1.0, 1.0);

@@ -2,7 +2,8 @@
 # tests/golden/check_golden.sh (the CTest) and scripts/update_golden.sh.
 #
 # Each case: NAME PRESET TIME. Every frame is the built-in scene from the
-# default camera of `aerial render`, 320x180, at the preset's own exposure
+# preset's camera in `aerial render` (its "view", else the default camera),
+# 320x180, at the preset's own exposure
 # (its "exposure" block; no --exposure offset) through the "ACES 1.0 - SDR
 # Video" view of Aerial's built-in OpenColorIO config ($OCIO is unset for
 # these renders so a user's config cannot change them).

@@ -189,6 +189,28 @@ TEST(Display, AcesViewToneMaps) {
     EXPECT_LT(one[0], 0.9f);  // an untone-mapped 1 clips; ACES keeps headroom
 }
 
+TEST(Display, MiddleGreyEvShowsTheMeteredGreyAsACameraDoes) {
+    ScopedOcio noEnv(std::nullopt);
+    const double encodedGrey = 1.055 * std::pow(0.18, 1.0 / 2.4) - 0.055;  // 118/255
+    DisplayDesc plainDesc;
+    plainDesc.view = kUntoneMapped;
+    DisplayTransform plain(plainDesc);
+    ASSERT_TRUE(plain.valid()) << plain.error();
+    EXPECT_NEAR(plain.middleGreyEv(), 0.0, 1e-6);  // the sRGB curve shows 0.18 at 118/255 already
+    DisplayDesc acesDesc;
+    acesDesc.view = kAces;
+    DisplayTransform aces(acesDesc);
+    ASSERT_TRUE(aces.valid()) << aces.error();
+    const double ev = aces.middleGreyEv();
+    EXPECT_GT(ev, 0.3);  // the filmic curve shows 0.18 darker (AcesViewToneMaps)
+    EXPECT_LT(ev, 0.8);
+    aces.setExposureEv(ev);
+    float grey[3] = {0.18f, 0.18f, 0.18f};
+    aces.applyCpu(grey);
+    for (float c : grey) EXPECT_NEAR(c, encodedGrey, 1e-3);
+    EXPECT_EQ(aces.middleGreyEv(), ev);  // the exposure does not enter
+}
+
 class DisplayGpu : public GlTest {};
 
 TEST_F(DisplayGpu, GpuMatchesCpu) {

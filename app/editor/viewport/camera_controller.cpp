@@ -51,6 +51,21 @@ CameraState sanitisedCameraState(const CameraState& state) {
     return s;
 }
 
+CameraState cameraStateLookingAt(const glm::dvec3& eye, const glm::dvec3& target, double verticalFovDeg,
+                                 const CameraState& base) {
+    CameraState s = base;
+    const glm::dvec3 d = target - eye;
+    const double distance = glm::length(d);
+    s.target = target;
+    s.distance = distance;
+    if (distance > 0.0 && std::isfinite(distance)) {
+        s.yaw = std::atan2(d.x, -d.z);
+        s.pitch = std::asin(std::clamp(d.y / distance, -1.0, 1.0));
+    }
+    s.verticalFovDeg = verticalFovDeg;
+    return sanitisedCameraState(s);
+}
+
 std::string cameraStateToJson(const CameraState& state) {
     nlohmann::json j;
     j["target_m"] = {state.target.x, state.target.y, state.target.z};

@@ -110,6 +110,15 @@ CameraState sanitisedCameraState(const CameraState& state);
 /// Unit view direction of a yaw/pitch pair (see the header comment).
 glm::dvec3 viewDirection(double yaw, double pitch);
 
+/// The orbit state that looks from `eye` at `target` [m] with a vertical
+/// field of view of `verticalFovDeg` (a preset's view, aerial/preset.hpp):
+/// the target is the pivot, the distance |target - eye|; the fly speed
+/// comes from `base`. Sanitised as setState does, so a view steeper than
+/// kMaxPitch tilts to it (about the pivot) and the field of view clamps to
+/// [kMinFovDeg, kMaxFovDeg].
+CameraState cameraStateLookingAt(const glm::dvec3& eye, const glm::dvec3& target, double verticalFovDeg,
+                                 const CameraState& base = {});
+
 /// The camera state as a one-line JSON object:
 /// {"target_m":[x,y,z],"distance_m":..,"yaw_rad":..,"pitch_rad":..,
 ///  "fly_speed_m_per_s":..,"vertical_fov_deg":..}. Numbers are written with

@@ -21,24 +21,27 @@
 //   * luminance of a linear Rec.709 colour Y = 0.2126 R + 0.7152 G + 0.0722 B;
 //   * the EV100 that exposes an average luminance L to middle grey (reflected-
 //     light meter, calibration K = 12.5, ISO S = 100): EV100 = log2(L S / K);
-//   * the scale from EV100 to the display transform's scene-linear input, as
-//     a photographer's camera calibrates it (ISO 12232's standard output
-//     sensitivity: the metered luminance is rendered as middle grey):
+//   * the scale from EV100 to the display transform's scene-linear input:
 //     kMiddleGrey S / (K 2^EV100), so a pixel at the metered luminance maps
-//     to 0.18 and a sunny-16 noon (EV100 15) renders a grey card in full sun
-//     (~5700 cd/m^2) at ~0.25;
+//     to scene-linear middle grey, 0.18, and a sunny-16 noon (EV100 15)
+//     renders a grey card in full sun (~5700 cd/m^2) at ~0.25. A camera's
+//     picture shows the metered grey at 118/255 (ISO 12232's standard output
+//     sensitivity); a filmic view shows 0.18 darker (ACES SDR video: 0.35),
+//     so the display adds its view's calibration (Aerial's renderer:
+//     DisplayTransform::middleGreyEv, +0.56 EV for ACES; a game with its own
+//     tone curve adds the stops that show 0.18 at 118/255) and the key reads
+//     as a camera's: the metered luminance shows at 118/255;
 //   * adaptation: an exponential approach to the target at `speed` per
 //     second, faster when the scene gets brighter (a pupil closes faster than
 //     it opens), 1 - exp(-dt * speed) of the gap closed in dt seconds;
-//   * the meter: centre-weighted, as a camera's, about a point a little
-//     below the frame's centre (a pixel counts 1 within ~kMeterCentreRadius
-//     frame heights of it, kMeterOutsideWeight at the edges: the bright sky
-//     at the top of a landscape frame counts less, as a photographer meters
-//     the subject); its average is taken in log2 luminance over a
-//     histogram, between the 10 % and 60 % quantiles (Unreal takes 10-90 %;
-//     the upper cut here also leaves out the bright half of a sky-filled
-//     frame), so a small bright sun, a campfire or a dark corner does not
-//     swing the exposure.
+//   * the meter: a photographer's centre-weighted average meter, about a
+//     point a little below the frame's centre (a pixel counts 1 within
+//     ~kMeterCentreRadius frame heights of it, kMeterOutsideWeight at the
+//     edges: the subject counts more than the sky at the top of a landscape
+//     frame, but the sky still counts, as in a camera's meter cell); its
+//     average is taken in log2 luminance over a histogram of half-stop bins,
+//     between the 10 % and 90 % quantiles of the weight, so a small bright
+//     sun, a campfire or a dark corner does not swing the exposure.
 // Units: the physical formulas take luminance in cd/m^2. Aerial's radiance
 // unit is kNitsPerRadianceUnit cd/m^2: the default sun intensity 20 lights
 // the ground like the ~100 000 lx of a clear noon, so one unit of
@@ -160,7 +163,8 @@ struct ExposureParams {
 };
 
 /// Where the metered luminance lands before the display transform: the
-/// scene-linear middle grey, 18 %.
+/// scene-linear middle grey, 18 % (the key). The display shows it as the
+/// picture's middle grey (see "Formulas").
 inline constexpr double kMiddleGrey = 0.18;
 /// The centre weighting of meterAverageLuminance with a frame size: a
 /// pixel's weight is kMeterOutsideWeight + exp(-r^2 / (2 R^2)), r its
@@ -172,7 +176,7 @@ inline constexpr double kMeterOutsideWeight = 0.1;
 
 /// The band of the metering histogram that counts (quantiles of the weight).
 inline constexpr double kMeterLowFraction = 0.10;
-inline constexpr double kMeterHighFraction = 0.60;
+inline constexpr double kMeterHighFraction = 0.90;
 
 /// The average luminance [radiance units] of a frame as the automatic
 /// exposure meters it: luminance() of every `step`-th pixel (of `channels`

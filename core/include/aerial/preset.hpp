@@ -16,7 +16,8 @@
 // "version": 1, "name", "description", the global parameters grouped as
 // "location", "atmosphere" {"rayleigh", "mie", "ozone"}, "sun", "moon",
 // "fog", "exposure", "clouds", then "volumes", "emitters" and "cloud_volumes"
-// (arrays of objects with string "id"s) and "tracks" (see timeline.hpp).
+// (arrays of objects with string "id"s), "tracks" (see timeline.hpp), and
+// the optional "weather" (weather_state.hpp) and "view" (PresetView).
 // Every key that carries a unit says it (`scale_height_m`, `density_per_m`). The keys, ranges and defaults
 // come from the parameter table (param_table.hpp); the JSON Schema in presets/aerial-preset.schema.json is
 // generated from the same table.
@@ -134,6 +135,31 @@ struct Environment {
     CloudParams clouds;
 };
 
+/// The valid ranges of a preset's view (validatePreset and the schema
+/// enforce them): eye and target components in [-kViewMaxCoordinate,
+/// kViewMaxCoordinate] m, at least kViewMinDistance apart; the vertical
+/// field of view in [kViewMinFovDeg, kViewMaxFovDeg] deg.
+inline constexpr double kViewMaxCoordinate = 1e7;
+inline constexpr double kViewMinDistance = 0.01;
+inline constexpr double kViewMinFovDeg = 1.0;
+inline constexpr double kViewMaxFovDeg = 179.0;
+
+/// The camera a preset is meant to be seen from, framing what it is about
+/// (file: "view": {"eye_m", "target_m", "fov_deg"}). `aerial render` and
+/// the contact sheet look from it when no camera is given; the editor
+/// opens the preset with its viewport there. World space, Y up, metres
+/// (DESIGN.md, "Units and axes"); the camera's up is +Y.
+struct PresetView {
+    /// Eye position [m], each component in [-1e7, 1e7].
+    glm::dvec3 eye{0.0, 30.0, 120.0};
+    /// A point the camera looks at [m], each component in [-1e7, 1e7], at
+    /// least 0.01 m from the eye.
+    glm::dvec3 target{0.0, 10.0, -200.0};
+    /// Vertical field of view [deg], 1..179. Default 60 (the file may leave
+    /// it out).
+    double verticalFovDeg = 60.0;
+};
+
 /// A whole preset: what a file holds, what the editor edits.
 struct Preset {
     /// Shown to the artist.
@@ -158,6 +184,10 @@ struct Preset {
     /// each naming a state of `weather` or "none"; at most
     /// limits::kMaxWeatherRegions. In a file: "weather": {"regions": [...]}.
     std::vector<WeatherRegion> weatherRegions;
+    /// The camera that frames the preset (PresetView); none: the
+    /// application's own default camera. Optional in a file, written only
+    /// when set.
+    std::optional<PresetView> view;
 };
 
 /// One problem with a preset (an error or a warning).

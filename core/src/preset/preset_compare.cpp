@@ -1,6 +1,6 @@
 // preset_compare.cpp — presetsIdentical: two presets compared value by
 // value through the parameter table (bit for bit on every number), plus
-// their tracks, weather states and weather regions.
+// their tracks, weather states, weather regions and view.
 #include <aerial/param_table.hpp>
 #include <aerial/preset.hpp>
 
@@ -103,6 +103,14 @@ bool presetsIdentical(const Preset& constA, const Preset& constB) {
         if (r.id != s.id || r.name != s.name || r.shape != s.shape || r.state != s.state ||
             std::memcmp(u, v, sizeof u) != 0)
             return false;
+    }
+    if (a.view.has_value() != b.view.has_value()) return false;
+    if (a.view) {
+        const PresetView& v = *a.view;
+        const PresetView& w = *b.view;
+        const double u[7] = {v.eye.x, v.eye.y, v.eye.z, v.target.x, v.target.y, v.target.z, v.verticalFovDeg};
+        const double x[7] = {w.eye.x, w.eye.y, w.eye.z, w.target.x, w.target.y, w.target.z, w.verticalFovDeg};
+        if (std::memcmp(u, x, sizeof u) != 0) return false;
     }
     return true;
 }

@@ -367,6 +367,8 @@ void Reader::readPreset(Preset& preset) {
             }
         } else if (n.key == "weather") {
             readWeather(c, at, preset.weather, preset.weatherRegions);
+        } else if (n.key == "view") {
+            readView(c, at, preset.view);
         } else if (isGlobalGroup(n.key)) {
             readGlobalGroup(preset.environment, c, n.key + ".", at);
         } else {

@@ -2,7 +2,8 @@
 // regions (preset_reader.hpp): "weather": {"states": [{"name", "overrides":
 // [{target, "set" | "add" | "scale": value}]}], "regions": [{"id", "name",
 // "shape", "position_m", "rotation_xyzw", "half_extents_m", "blend_m",
-// "priority", "state"}]} (aerial/weather_state.hpp).
+// "priority", "state"}]} (aerial/weather_state.hpp); and the preset's
+// "view": {"eye_m", "target_m", "fov_deg"} (aerial/preset.hpp, PresetView).
 #include "json_text.hpp"
 #include "preset_reader.hpp"
 #include "preset_validate.hpp"
@@ -185,6 +186,31 @@ void Reader::readRegion(std::int32_t node, const std::string& pointer, WeatherRe
         else
             region.priority = int(v);
     }
+}
+
+void Reader::readView(std::int32_t node, const std::string& pointer, std::optional<PresetView>& view) {
+    if (!expectKind(node, pointer, JNode::Object)) return;
+    warnUnknownMembers(node, pointer, {"eye_m", "target_m", "fov_deg"});
+    PresetView v;
+    bool complete = true;
+    auto point = [&](sv key, glm::dvec3& out) {
+        const std::int32_t m = member(node, key);
+        const std::string at = pointerJoin(pointer, key);
+        double xyz[3];
+        if (m < 0) {
+            error(node, at, "missing required field " + quoteString(key));
+            complete = false;
+        } else if (readNumbers(m, at, xyz, 3)) {
+            out = glm::dvec3(xyz[0], xyz[1], xyz[2]);
+        } else {
+            complete = false;
+        }
+    };
+    point("eye_m", v.eye);
+    point("target_m", v.target);
+    if (const std::int32_t m = member(node, "fov_deg"); m >= 0)
+        complete = readNumber(m, pointerJoin(pointer, "fov_deg"), v.verticalFovDeg) && complete;
+    if (complete) view = v;
 }
 
 void Reader::warnUnknownMembers(std::int32_t node, const std::string& pointer, std::initializer_list<sv> known) {

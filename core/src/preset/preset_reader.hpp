@@ -14,6 +14,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <initializer_list>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -115,6 +116,10 @@ public:
                      std::vector<WeatherRegion>& regions);
     void readRegion(std::int32_t node, const std::string& pointer, WeatherRegion& region);
     void readOverride(std::int32_t node, const std::string& pointer, WeatherOverride& o);
+    /// "view": {"eye_m", "target_m", "fov_deg"} (PresetView); eye_m and
+    /// target_m are required, ranges are validatePreset's
+    /// (preset_read_weather.cpp).
+    void readView(std::int32_t node, const std::string& pointer, std::optional<PresetView>& view);
     void warnUnknownMembers(std::int32_t node, const std::string& pointer, std::initializer_list<sv> known);
 
     void readPreset(Preset& preset);

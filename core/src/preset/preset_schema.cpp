@@ -192,6 +192,34 @@ std::string presetJsonSchema() {
                           {"regions", arraySchema("#/$defs/weather_region", limits::kMaxWeatherRegions)}}},
                         {"required", {"states"}},
                         {"additionalProperties", false}};
+    const PresetView view;  // its defaults
+    auto point = [](const glm::dvec3& fill, const char* description) {
+        return ojson{
+            {"type", "array"},
+            {"items",
+             {{"type", "number"}, {"minimum", -kViewMaxCoordinate}, {"maximum", kViewMaxCoordinate}}},
+            {"minItems", 3},
+            {"maxItems", 3},
+            {"default", {fill.x, fill.y, fill.z}},
+            {"description", description}};
+    };
+    props["view"] = {
+        {"type", "object"},
+        {"description",
+         "the camera that frames the preset: aerial render's and the contact sheet's camera when none is "
+         "given, the editor's on opening it (aerial/preset.hpp, PresetView); the eye and target at least "
+         "0.01 m apart, up is +Y"},
+        {"properties",
+         {{"eye_m", point(view.eye, "Eye position [m], world (+Y up, -Z north, +X east)")},
+          {"target_m", point(view.target, "A point the camera looks at [m], world")},
+          {"fov_deg",
+           {{"type", "number"},
+            {"minimum", kViewMinFovDeg},
+            {"maximum", kViewMaxFovDeg},
+            {"default", view.verticalFovDeg},
+            {"description", "Vertical field of view [deg]"}}}}},
+        {"required", {"eye_m", "target_m"}},
+        {"additionalProperties", false}};
     root["properties"] = props;
     root["required"] = {"version"};
     root["additionalProperties"] = false;

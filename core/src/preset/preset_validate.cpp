@@ -12,11 +12,14 @@
 #include <aerial/preset.hpp>
 #include <aerial/sun.hpp>
 
+#include <glm/geometric.hpp>
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <exception>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -330,7 +333,7 @@ void checkWeather(const Preset& preset, Issues& issues) {
     }
 }
 
-/// A region's number: finite and in [lo, hi] (the unit in the message).
+/// A region's or a view's number: finite and in [lo, hi] (metres in the message).
 void checkRegionNumber(double v, double lo, double hi, const std::string& pointer, Issues& issues) {
     if (!std::isfinite(v)) {
         issues.error(pointer, "must be a finite number (got " + formatDouble(v) + ")");
@@ -405,6 +408,31 @@ void checkWeatherRegions(const Preset& preset, Issues& issues) {
                              " (the preset has " + names + ")");
         }
     }
+}
+
+/// "view": finite coordinates and a field of view in range, the target
+/// apart from the eye (PresetView).
+void checkView(const std::optional<PresetView>& view, Issues& issues) {
+    if (!view) return;
+    const PresetView& v = *view;
+    for (int c = 0; c < 3; ++c) {
+        checkRegionNumber(v.eye[c], -kViewMaxCoordinate, kViewMaxCoordinate,
+                          pointerJoin("/view/eye_m", std::size_t(c)), issues);
+        checkRegionNumber(v.target[c], -kViewMaxCoordinate, kViewMaxCoordinate,
+                          pointerJoin("/view/target_m", std::size_t(c)), issues);
+    }
+    const double fov = v.verticalFovDeg;
+    if (!std::isfinite(fov))
+        issues.error("/view/fov_deg", "must be a finite number (got " + formatDouble(fov) + ")");
+    else if (fov < kViewMinFovDeg || fov > kViewMaxFovDeg)
+        issues.error("/view/fov_deg", "out of range: " + formatDouble(fov) + " is not in " +
+                                          formatDouble(kViewMinFovDeg) + ".." + formatDouble(kViewMaxFovDeg) +
+                                          " deg");
+    const double distance = glm::length(v.target - v.eye);
+    if (std::isfinite(distance) && distance < kViewMinDistance)
+        issues.error("/view/target_m", "the target is " + formatDouble(distance) +
+                                           " m from the eye; a view needs a direction (at least " +
+                                           formatDouble(kViewMinDistance) + " m apart)");
 }
 
 void validateInto(const Preset& constPreset, Issues& issues) {
@@ -491,6 +519,7 @@ void validateInto(const Preset& constPreset, Issues& issues) {
     }
     checkWeather(preset, issues);
     checkWeatherRegions(preset, issues);
+    checkView(preset.view, issues);
 }
 
 }  // namespace

@@ -312,6 +312,28 @@ public:
         newline(1);
         out += '}';
     }
+    /// "view": {"eye_m", "target_m", "fov_deg"} (preset.hpp, PresetView).
+    void view(const PresetView& v) {
+        out += ',';
+        newline(1);
+        key("view");
+        out += '{';
+        newline(2);
+        const double eye[3] = {v.eye.x, v.eye.y, v.eye.z};
+        key("eye_m");
+        numbers(eye, 3);
+        out += ',';
+        newline(2);
+        const double target[3] = {v.target.x, v.target.y, v.target.z};
+        key("target_m");
+        numbers(target, 3);
+        out += ',';
+        newline(2);
+        key("fov_deg");
+        out += formatDouble(v.verticalFovDeg);
+        newline(1);
+        out += '}';
+    }
     /// A region's members, one per line (weather_state.hpp).
     void region(const WeatherRegion& r) {
         auto member = [&](sv k) {
@@ -368,6 +390,7 @@ std::string presetToJson(const Preset& constPreset) {
     w.tracks(preset.tracks);
     if (!preset.weather.empty() || !preset.weatherRegions.empty())  // files without weather stay as they were
         w.weather(preset.weather, preset.weatherRegions);
+    if (preset.view) w.view(*preset.view);  // files without a view stay as they were
     w.out += "\n}\n";
     return std::move(w.out);
 }

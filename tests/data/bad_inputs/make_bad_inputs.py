@@ -148,6 +148,13 @@ PRESETS = {
                                b'  {"id": "r", "state": "none", "blend_m": 1e400}]}}\n',
     "region_fractional_priority.json": dump(weather(region(priority=0.5))),
     "region_missing_state.json": dump(weather({k: v for k, v in REGION.items() if k != "state"})),
+    "view_not_object.json": dump(preset(version=5, view=[0, 40, 120])),
+    "view_missing_target.json": dump(preset(version=5, view={"eye_m": [0, 40, 120]})),
+    "view_eye_two_numbers.json": dump(preset(version=5, view={"eye_m": [0, 40], "target_m": [0, 10, -200]})),
+    "view_same_point.json": dump(preset(version=5, view={"eye_m": [0, 40, 120], "target_m": [0, 40, 120]})),
+    "view_fov_out_of_range.json": dump(preset(version=5, view={"eye_m": [0, 40, 120], "target_m": [0, 10, -200],
+                                                               "fov_deg": 180})),
+    "view_far_away.json": dump(preset(version=5, view={"eye_m": [0, 40, 2e7], "target_m": [0, 10, -200]})),
 }
 
 

@@ -81,6 +81,17 @@ public:
 
     double exposureEv() const;
     void setExposureEv(double ev);
+    /// The stops [EV] that make this view show scene-linear middle grey
+    /// (aerial::kMiddleGrey, 0.18: where aerial/exposure.hpp puts the
+    /// metered luminance) as the picture's middle grey, the display value of
+    /// 0.18 through the sRGB curve (0.461, 118/255: ISO 12232's standard
+    /// output sensitivity, what a camera's picture shows a metered grey
+    /// card as). 0 for "Un-tone-mapped"; about +0.5 for "ACES 1.0 - SDR
+    /// Video", whose tone curve shows 0.18 at 0.35. Add it to the exposure
+    /// so a view reads like a camera; clamped to [-2, 2] (a view that cannot
+    /// reach middle grey); 0 when not valid(). Night vision and exposureEv()
+    /// do not enter.
+    double middleGreyEv() const;
     bool nightVision() const;
     void setNightVision(bool on);
 
