@@ -38,22 +38,18 @@ constexpr double kDeepestDeg = 18.0;  // depressions beyond this [deg] map as th
 /// v(x) = (1 - a - b - d) x / sqrt(pi/2) + a atan(x^2 / E) / atan(pi/2 / E)
 ///        + b (atan((x^2 - c) / w) - atan(-c / w)) / (atan((pi/2 - c) / w) - atan(-c / w))
 ///        + d/2 (1 - B(u)) below c, d/2 (1 + cbrt(u)) above, u = min(|x^2 - c|, c) / c
-///          (the cap's rows, d = skyCapRowShare(c, g) where the columns are warped,
-///          B = skyCapBelowRow, u^kSkyCapBelowPower going logarithmic with the
-///          boost: crowded towards c below it, crowded at the
+///          (the cap's rows, d = skyCapRowShare(g) where the columns are warped,
+///          B(u) = u^kSkyCapBelowPower: crowded towards c below it, crowded at the
 ///          cap's top above it, where the lit sky switches on within 1e-4 deg),
 /// increasing in x, with v(0) = 0 and v(sqrt(pi/2)) = 1.
 struct RowMapping {
     double plain = 1.0, a = 0.0, e = 1.0, bandNorm = 1.0;
     double b = 0.0, c = 0.0, w = 1.0, shadowLow = 0.0, shadowNorm = 1.0;
-    double d = 0.0, cap = 1.0, logMix = 0.0, logScale = kSkyCapLogScale, logNorm = 1.0;
-    /// The cap's rows below c as a function of u = (c - el) / c, 0..1
-    /// (skyCapBelowRow), and its derivative.
-    double belowMap(double u) const { return skyCapBelowRow(u, logMix, logScale, logNorm); }
-    double belowSlope(double u) const {
-        const double power = logMix == 1.0 ? 0.0 : kSkyCapBelowPower * std::pow(u, kSkyCapBelowPower - 1.0);
-        return (1.0 - logMix) * power + logMix / ((u + logScale) * logNorm);
-    }
+    double d = 0.0, cap = 1.0;
+    /// The cap's rows below c as a function of u = (c - el) / c, 0..1, and
+    /// its derivative.
+    static double belowMap(double u) { return std::pow(u, kSkyCapBelowPower); }
+    static double belowSlope(double u) { return kSkyCapBelowPower * std::pow(u, kSkyCapBelowPower - 1.0); }
 
     explicit RowMapping(const SkyTable& t) {
         if (t.bandElevation > 0.0 && t.bandShare > 0.0) {
@@ -69,11 +65,8 @@ struct RowMapping {
             shadowNorm = 1.0 / (std::atan((0.5 * kPi - c) / w) - shadowLow);
         }
         if (skyTableColumnsWarped(t)) {
-            d = std::min(skyCapRowShare(t.shadowElevation, t.capStrength), 1.0 - a - b);
+            d = std::min(skyCapRowShare(t.capStrength), 1.0 - a - b);
             cap = t.shadowElevation;
-            logMix = skyCapBoostFraction(cap);
-            logScale = skyCapShape(cap).logScale;
-            logNorm = std::log1p(1.0 / logScale);
         }
         plain = (1.0 - a - b - d) / std::sqrt(0.5 * kPi);
     }
@@ -205,8 +198,7 @@ constexpr double kCapEndDeg = 1.0;  // and none from this one
 /// the cap of the earth's shadow in this row, D = max(psiC(0) / 2, min(1
 /// deg, kSkyCapBandPerKink c)) the band's width at the cap's top, G =
 /// kSkyCapOnsetGrowth, psiE = min(2 (psiC(0) + max(psiC(0) / 2, 1 deg)),
-/// 3 pi / 4), and (a0, a1, xE) = (3, 12, 28) / 128 of N; for a light just
-/// set a0, a1 and G blend towards 2 / 128, 20 / 128 and 6 (SkyCapShape),
+/// 3 pi / 4), and (a0, a1, xE) = (3, 12, 28) / 128 of N,
 /// the knots x rounded to whole columns: a knot inside a texel kinks the
 /// mapping within it, where the bilinear filter is linear in the column
 /// (for a light 0.009 deg down the band's end at x = 16.4 left the horizon
@@ -258,7 +250,6 @@ struct ColumnMapping {
         if (!(k > 0.0) || !(g > 0.0) || !(c > 0.0) || !(n >= 4.0)) return;
         constexpr double kDeg = kPi / 180.0;
         const double foot = std::min(std::sqrt(c / k), 0.25 * kPi);  // psiC at the horizon
-        const SkyCapShape shape = skyCapShape(c);
         const double wide = std::max(0.5 * foot, kSkyCapMinBandDeg * kDeg);
         const double band = std::max(0.5 * foot, std::min(kSkyCapMinBandDeg * kDeg, kSkyCapBandPerKink * c));
         const double end = std::min(2.0 * (foot + wide), 0.75 * kPi);
@@ -266,19 +257,17 @@ struct ColumnMapping {
         bandScale = std::pow(kSkyCapBandScale * c, 2) + std::pow(kSkyCapBandOnsetScale * onset, 2);
         // On whole columns where that keeps each knot above the one before
         // it (tables under ~32 columns keep a knot that rounds onto it).
-        const double share[3] = {shape.insideShare, shape.insideShare + shape.onsetShare,
-                                 shape.insideShare + shape.onsetShare + kSkyCapNearShare};
+        const double share[3] = {kSkyCapInsideShare, kSkyCapInsideShare + kSkyCapOnsetShare,
+                                 kSkyCapInsideShare + kSkyCapOnsetShare + kSkyCapNearShare};
         for (int m = 1; m < 4; ++m) {
             const double whole = std::round(share[m - 1] * n);
             x[m] = whole > x[m - 1] ? whole : share[m - 1] * n;
         }
         x[4] = 0.5 * n;
-        // The band's outer knot, and psiE beyond it: for a light just set the
-        // band grows to 6 P, past psiE near the horizon (P = F = 0.75 deg at
-        // -0.0005 deg: 4.5 deg against 3.5), which folded the columns between
-        // them back (not monotone in the azimuth); psiE then lies half the
-        // band's knot beyond it.
-        const double bandKnot = std::hypot(shape.onsetGrowth * onset, band);
+        // psiE lies at least half the band's outer knot beyond it: nearer,
+        // the horizon 7-9 deg from the anti-light point of a light
+        // 0.005-0.01 deg down is 2.0-2.4% off (SkyCapFoot).
+        const double bandKnot = std::hypot(kSkyCapOnsetGrowth * onset, band);
         const double capPsi[5] = {0.0, onset, bandKnot, std::min(std::max(end, 1.5 * bandKnot), 0.75 * kPi),
                                   kPi};
         for (int m = 1; m < 4; ++m) psi[m] = g * capPsi[m] + (1.0 - g) * 2.0 * kPi * x[m] / n;
@@ -413,7 +402,7 @@ void setMappingParameters(SkyTable& table, const AtmosphereParams& air, const gl
                 table.capCurvature = 0.5 * kink / (halfway * halfway);
                 table.capStrength =
                     std::clamp((kCapEndDeg - depression) / (kCapEndDeg - kCapTopDeg), 0.0, 1.0);
-                table.bandShare -= skyCapRowShare(kink, table.capStrength);
+                table.bandShare -= skyCapRowShare(table.capStrength);
             }
             const double rows = table.elevationCount - 1;
             // The kink's row with shadow share b (the mapping only, no

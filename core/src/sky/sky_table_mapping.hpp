@@ -38,14 +38,10 @@
 //       is shadowed up to the top and c = 1.1 L), and b is adjusted so that
 //       a row lies exactly on it;
 //     - a light 0-1 deg below the horizon also: d = (16/63) g of the rows
-//       (twice that for c below 0.005 deg, fading in from 0.01 deg:
-//       skyCapRowShare)
-//       (taken from the band's a) between 0 and 2c, half below c uniform in
-//       (c - el)^0.35 (kSkyCapBelowPower: crowded towards c, where the lit
-//       sky beside the cap ramps up over a width that grows fast with
-//       c - el), blending into uniform in ln(1 + u / s), u = (c - el) / c,
-//       s = min(5e-4, 3 c), as the boost comes in (kSkyCapLogScale,
-//       kSkyCapLogScalePerKink), half above c uniform in cbrt(el - c),
+//       (skyCapRowShare, taken from the band's a) between 0 and 2c, half
+//       below c uniform in (c - el)^0.35 (kSkyCapBelowPower: crowded towards
+//       c, where the lit sky beside the cap ramps up over a width that grows
+//       fast with c - el), half above c uniform in cbrt(el - c),
 //       crowded at the cap's top where straight opposite the light the lit
 //       sky switches on within a few 1e-4 deg for a light 0.01 deg down;
 //       g = capStrength, 1 up to 0.5 deg, fading to 0 at 1 deg;
@@ -53,10 +49,9 @@
 //     single-scattering integral relative to the pixel (floored at 1% of the
 //     brightest sky) in every direction tests/core/test_sky.cpp probes, off
 //     the texel centres too, for suns from -6 to 90 deg (SkyOffTexel), and
-//     within 1.5% in dense sweeps of the anti-light quarter near the kink
-//     for suns 0.00002-0.3 deg below the horizon (SkyShadowOnset,
-//     AERIAL_SKY_SHADOW_ONSET; docs/sky_table_notes.md has the figures and
-//     their history);
+//     averaged over a pixel (1920 px across 90 deg) in dense sweeps of the
+//     anti-light quarter near the kink for suns 0.00002-0.3 deg below the
+//     horizon (SkyShadowOnset; docs/sky_table_notes.md has the figures);
 //   * columns i = 0..azimuthCount-1 hold the azimuth relative to the light
 //       phi_i = 2 pi * i / azimuthCount,
 //     measured from the light's azimuth towards east (the same sense as the
@@ -87,11 +82,10 @@
 //     (kSkyCapBandScale c)^2 + (kSkyCapBandOnsetScale P)^2 (10 c and P): geometric in the height above the
 //     onset beyond Y0, where the lit sky at the cap's top switches on (~10 c from the anti-light point) and
 //     levels off (~100-1000 c), and widens with P (the 2 in its outer knot is kSkyCapOnsetGrowth): lower down
-//     the cap the lit sky ramps up over an azimuth that grows with P. For a light just set (c below 0.01
-//     deg, the boost fraction m of the rows) the shares and G blend towards 2 columns inside the cap, 20 in
-//     the band and G = 6 (SkyCapShape), each blended knot x rounded to a whole column (so that no knot
-//     bends the bilinear filter's line inside a texel). The knots are mirror-symmetric, so
-//     column i still equals column W - i. The horizon averages then weight row 0 by azimuth;
+//     the cap the lit sky ramps up over an azimuth that grows with P. Each knot x is rounded to a whole
+//     column (so that no knot bends the bilinear filter's line inside a texel). The knots are
+//     mirror-symmetric, so column i still equals column W - i. The horizon averages then weight row 0 by
+//     azimuth;
 //   * texel (i, j) is stored at index (j * azimuthCount + i) * 3 (RGB, float).
 //   Directions below the horizon use row 0.
 //
@@ -150,75 +144,9 @@ inline constexpr double kSkyCapRowShare = 16.0 / 63.0;
 /// The power of the cap's rows below c (0.5 would be uniform in the
 /// onset's azimuth; 0.35 crowds them towards c).
 inline constexpr double kSkyCapBelowPower = 0.35;
-/// For a light just set the cap's share grows by up to kSkyCapRowBoost, as
-/// the kink's elevation c falls from kSkyCapBoostStartDeg to
-/// kSkyCapBoostFullDeg (c ~ L there), taken from the band's share too:
-/// below c the lit sky beside the cap ramps up over a width that grows from
-/// ~0.3 to ~1.5 deg within 1% of c.
-inline constexpr double kSkyCapRowBoost = 2.0;
-inline constexpr double kSkyCapBoostStartDeg = 0.01;
-inline constexpr double kSkyCapBoostFullDeg = 0.005;
-/// The cap's share of the rows, d = kSkyCapRowShare g times the boost, for
-/// the kink's elevation c [rad] and the cap's strength g.
-/// Below c the cap's rows go from uniform in u^kSkyCapBelowPower (u = (c -
-/// el) / c) to uniform in ln(1 + u / kSkyCapLogScale) as the boost comes in
-/// (skyCapBoostFraction): for a light less than 0.005 deg down the lit sky
-/// beside the cap changes its shape about as ln u, from ~0.05 deg wide at
-/// 0.9998 c to 1.5 deg at 0.97 c; with ln(1 + u / 5e-4) the 16 rows below
-/// c are ~1.6x apart in u from 3e-4 to 0.2.
-inline constexpr double kSkyCapLogScale = 5e-4;
-/// 0..1, how far the cap's rows are boosted for the kink's elevation c
-/// [rad]: 0 above kSkyCapBoostStartDeg, 1 below kSkyCapBoostFullDeg.
-inline double skyCapBoostFraction(double c) {
-    const double t = (kSkyCapBoostStartDeg - c * 180.0 / kPi) / (kSkyCapBoostStartDeg - kSkyCapBoostFullDeg);
-    return t > 1.0 ? 1.0 : t > 0.0 ? t : 0.0;
-}
-/// For a light just set the column mapping's shares and the band's outer
-/// knot change with the boost fraction m (skyCapBoostFraction), from the
-/// constants above at m = 0 to these at m = 1: 20 columns in the band (2
-/// from inside the cap, whose single scattering is dark, and 6 from the last
-/// segment), its outer knot at 6 P (just below the cap's top the lit sky
-/// ramps up over ~10 P), and the cap's rows below c logarithmic on the
-/// scale min(kSkyCapLogScale, 3 c).
-inline constexpr double kSkyCapInsideShareSet = 2.0 / 128.0;
-inline constexpr double kSkyCapOnsetShareSet = 20.0 / 128.0;
-inline constexpr double kSkyCapOnsetGrowthSet = 6.0;
-inline constexpr double kSkyCapLogScalePerKink = 3.0;
-/// The column mapping's shape for the kink's elevation c [rad] (above).
-struct SkyCapShape {
-    double insideShare = kSkyCapInsideShare;  ///< of the columns, each side
-    double onsetShare = kSkyCapOnsetShare;
-    double onsetGrowth = kSkyCapOnsetGrowth;
-    double logScale = kSkyCapLogScale;  ///< of the cap's rows below c (skyCapBelowRow)
-};
-inline SkyCapShape skyCapShape(double c) {
-    const double m = skyCapBoostFraction(c);
-    SkyCapShape s;
-    s.insideShare = kSkyCapInsideShare + m * (kSkyCapInsideShareSet - kSkyCapInsideShare);
-    s.onsetShare = kSkyCapOnsetShare + m * (kSkyCapOnsetShareSet - kSkyCapOnsetShare);
-    s.onsetGrowth = kSkyCapOnsetGrowth + m * (kSkyCapOnsetGrowthSet - kSkyCapOnsetGrowth);
-    const double scale = kSkyCapLogScalePerKink * c;
-    s.logScale = scale > 0.0 && scale < kSkyCapLogScale ? scale : kSkyCapLogScale;
-    return s;
-}
-inline double skyCapRowShare(double c, double g) {
-    const double boost = 1.0 + (kSkyCapRowBoost - 1.0) * skyCapBoostFraction(c);
-    return kSkyCapRowShare * boost * (g > 1.0 ? 1.0 : g > 0.0 ? g : 0.0);
-}
-/// The cap's rows below c: 0 at u = (c - el) / c = 0 (the kink) to 1 at u = 1
-/// (the horizon), (1 - m) u^kSkyCapBelowPower + m ln(1 + u / s) / ln(1 + 1 /
-/// s) for the boost fraction m and the log scale s (SkyCapShape::logScale).
-/// The terms whose weight is 0 are skipped (the same value: m is 0 or 1
-/// but for kinks 0.005-0.01 deg up); `logNorm` = ln(1 + 1 / s), for a caller
-/// that evaluates many u with one s.
-inline double skyCapBelowRow(double u, double m, double s, double logNorm) {
-    if (m == 0.0) return std::pow(u, kSkyCapBelowPower);
-    if (m == 1.0) return std::log1p(u / s) / logNorm;
-    return (1.0 - m) * std::pow(u, kSkyCapBelowPower) + m * std::log1p(u / s) / logNorm;
-}
-inline double skyCapBelowRow(double u, double m, double s) {
-    return skyCapBelowRow(u, m, s, std::log1p(1.0 / s));
-}
+/// The cap's share of the rows, d = kSkyCapRowShare g, for the cap's
+/// strength g (clamped to 0..1).
+inline double skyCapRowShare(double g) { return kSkyCapRowShare * (g > 1.0 ? 1.0 : g > 0.0 ? g : 0.0); }
 
 /// Continuous column (0..azimuthCount, wrapping) of an azimuth `relative`
 /// [rad] from the light's (any value, wrapped into [0, 2 pi)) in the row at
