@@ -473,13 +473,18 @@ void Editor::layout() {
     // The panels may collapse (their title bar's arrow); the state is ours
     // (remembered in the session), handed to ImGui every frame.
     const ImGuiWindowFlags panel = fixed & ~ImGuiWindowFlags_NoCollapse;
+    // A collapsed side panel is only its arrow wide: its title would show a
+    // clipped first letter beside the viewport's ("OViewport"), so it shows
+    // none (the same window id, "###Outliner") and the tooltip names it.
     auto beginPanel = [&](const char* title, bool& collapsed) {
         ImGui::SetNextWindowCollapsed(collapsed, ImGuiCond_Always);
-        const bool open = ImGui::Begin(title, nullptr, panel);
+        const std::string label = (collapsed ? "" : std::string(title)) + "###" + title;
+        const bool open = ImGui::Begin(label.c_str(), nullptr, panel);
         collapsed = ImGui::IsWindowCollapsed();
         if (ImGui::IsItemHovered() || (collapsed && ImGui::IsWindowHovered()))
-            ImGui::SetTooltip(collapsed ? "Expand (click the arrow or double-click the title)"
-                                        : "Collapse in place (click the arrow or double-click the title)");
+            ImGui::SetTooltip("%s: %s", title,
+                              collapsed ? "expand (click the arrow or double-click the title)"
+                                        : "collapse in place (click the arrow or double-click the title)");
         return open && !collapsed;
     };
 

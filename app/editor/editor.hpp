@@ -96,6 +96,8 @@ private:
     void updateEvaluation();
     void updateSky();
     void setStatus(std::string text);
+    /// The status after a finished export: the bake's summary, which names the folder.
+    std::string exportedStatus() const;
     /// The current time as HH:MM.
     std::string clockText() const;
     void showError(std::string title, std::string text);

@@ -269,7 +269,7 @@ void Editor::drawFileDialogs() {
     }
     if (export_.done()) {
         if (export_.succeeded())
-            setStatus("Exported for game into " + export_.directory() + ": " + export_.summary());
+            setStatus(exportedStatus());
         else
             showError("Export for game failed:", export_.summary());
         export_.acknowledge();
@@ -381,6 +381,13 @@ void Editor::recover(bool accept) {
     }
     Autosave::discard(*dialogs_.recovery);
     dialogs_.recovery.reset();
+}
+
+std::string Editor::exportedStatus() const {
+    const std::string& summary = export_.summary();
+    if (summary.find(" into " + export_.directory()) != std::string::npos)
+        return "Exported for game: " + summary;
+    return "Exported for game into " + export_.directory() + ": " + summary;
 }
 
 void Editor::startExport(const std::string& directory) {

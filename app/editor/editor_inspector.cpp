@@ -107,22 +107,33 @@ std::string editParam(Document& doc, EditState& edit, const ParamRef& ref, const
         const int n = p.type == ParamType::Vec3 || p.type == ParamType::Colour ? 3
                       : p.type == ParamType::Vec2                              ? 2
                                                                                : 1;
-        bool outside = false;
-        double shown[4] = {value[0], value[1], value[2], value[3]};
+        // Every value that was clamped is named: one edit of a colour may clamp all three.
+        const char* names = p.type == ParamType::Colour ? "rgb" : p.type == ParamType::Vec2 ? "xz" : "xyz";
+        std::string values;
+        int outside = 0;
+        char text[256];
         for (int i = 0; i < n; ++i) {
-            if (!(value[i] >= p.minValue && value[i] <= p.maxValue)) outside = true;
-            shown[i] = std::isfinite(value[i]) ? std::clamp(value[i], p.minValue, p.maxValue) : 0.0;
+            if (value[i] >= p.minValue && value[i] <= p.maxValue) continue;
+            const double shown = std::isfinite(value[i]) ? std::clamp(value[i], p.minValue, p.maxValue) : 0.0;
+            if (n == 1)
+                std::snprintf(text, sizeof text, "%.6g", shown);
+            else
+                std::snprintf(text, sizeof text, "%s%c %.6g to %.6g", outside ? ", " : "", names[i], value[i],
+                              shown);
+            values += text;
+            ++outside;
         }
-        if (outside) {
-            char text[256];
-            std::string values;
-            for (int i = 0; i < n; ++i) {
-                std::snprintf(text, sizeof text, "%s%.6g", i ? " " : "", shown[i]);
-                values += text;
-            }
-            std::snprintf(text, sizeof text, "%s clamped to %s (valid %g..%g%s%s)",
-                          std::string(p.label).c_str(), values.c_str(), p.minValue, p.maxValue,
-                          p.unit.empty() ? "" : " ", std::string(p.unit).c_str());
+        if (outside > 0) {
+            const std::string label(p.label);
+            std::string unit;  // " 1/m" (appended: GCC 12 warns falsely on " " + unit, -Wrestrict)
+            if (!p.unit.empty()) unit.append(" ").append(p.unit);
+            if (n == 1)
+                std::snprintf(text, sizeof text, "%s clamped to %s (valid %g..%g%s)", label.c_str(),
+                              values.c_str(), p.minValue, p.maxValue, unit.c_str());
+            else
+                std::snprintf(text, sizeof text, "%s: %d value%s clamped: %s (valid %g..%g%s)", label.c_str(),
+                              outside, outside == 1 ? "" : "s", values.c_str(), p.minValue, p.maxValue,
+                              unit.c_str());
             clamped = text;
         }
     }
@@ -187,7 +198,7 @@ bool keyButton(Document& doc, EditState& edit, const ParamRef& ref, double timeH
         }
         edit.selectedParam = ref;
         const Track* after = trackOf(doc.preset(), ref);
-        edit.selectedKey = after ? keyIndexAt(*after, time) : -1;
+        edit.selectTrackKey(doc.preset(), after ? keyIndexAt(*after, time) : -1);
     }
     return clicked;
 }
@@ -283,6 +294,25 @@ void drawParam(Document& doc, EditState& edit, const ParamRef& ref, double timeH
                                                         : ImVec4(0.35f, 0.27f, 0.10f, 0.8f));
     if (selected) ImGui::PushStyleColor(ImGuiCol_Border, ImVec4(0.95f, 0.75f, 0.25f, 1.0f));
     if (selected) ImGui::PushStyleVar(ImGuiStyleVar_FrameBorderSize, 1.0f);
+    // An unkeyed change puts Key and Revert after the field: the field leaves them room.
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float buttonsW = unkeyed ? ImGui::CalcTextSize("KeyRevert").x + 4.0f * style.FramePadding.x +
+                                         2.0f * style.ItemSpacing.x
+                                   : 0.0f;
+    ImGui::PushItemWidth(std::max(1.0f, ImGui::CalcItemWidth() - buttonsW));
+    // A row of numbers too narrow for them ("5.802e-06" for each of Rayleigh's
+    // three): the label on its own line, the numbers across the panel below it.
+    auto numbersLabel = [&](int count) {
+        const float need =
+            float(count) * (ImGui::CalcTextSize("-0.000e-00").x + 2.0f * style.FramePadding.x) +
+            float(count - 1) * style.ItemInnerSpacing.x;
+        if (ImGui::CalcItemWidth() >= need) return label;
+        ImGui::TextUnformatted(label.c_str());
+        ImGui::SetNextItemWidth(std::max(1.0f, ImGui::GetContentRegionAvail().x - buttonsW));
+        std::string hidden = "##";  // (not "##" + label: GCC 12 warns falsely, -Wrestrict)
+        hidden += label;
+        return hidden;
+    };
     bool changed = false;
     bool continuous = true;
     switch (p.type) {
@@ -302,15 +332,15 @@ void drawParam(Document& doc, EditState& edit, const ParamRef& ref, double timeH
         case ParamType::Vec3: {
             const double lo = p.minValue, hi = p.maxValue;
             const double span = (p.uiMax > p.uiMin ? p.uiMax - p.uiMin : 1.0);
-            changed = ImGui::DragScalarN(label.c_str(), ImGuiDataType_Double, v, 3, float(span / 400.0), &lo,
-                                         &hi, "%.4g");
+            changed = ImGui::DragScalarN(numbersLabel(3).c_str(), ImGuiDataType_Double, v, 3,
+                                         float(span / 400.0), &lo, &hi, "%.4g");
             break;
         }
         case ParamType::Vec2: {  // [x, z], the label carries the unit
             const double lo = p.minValue, hi = p.maxValue;
             const double span = (p.uiMax > p.uiMin ? p.uiMax - p.uiMin : 1.0);
-            changed = ImGui::DragScalarN(label.c_str(), ImGuiDataType_Double, v, 2, float(span / 400.0), &lo,
-                                         &hi, "%.4g");
+            changed = ImGui::DragScalarN(numbersLabel(2).c_str(), ImGuiDataType_Double, v, 2,
+                                         float(span / 400.0), &lo, &hi, "%.4g");
             break;
         }
         case ParamType::Colour: {
@@ -382,6 +412,7 @@ void drawParam(Document& doc, EditState& edit, const ParamRef& ref, double timeH
             break;
         }
     }
+    ImGui::PopItemWidth();
     if (selected) ImGui::PopStyleVar();
     if (selected) ImGui::PopStyleColor();
     if (animated) ImGui::PopStyleColor();

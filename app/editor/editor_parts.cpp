@@ -58,6 +58,25 @@ void EditState::validate(const Preset& p) {
     }
 }
 
+void EditState::selectTrackKey(const Preset& p, int key) {
+    selectedKey = key;
+    curves.selected.clear();
+    if (key >= 0 && selectedParam && trackOf(p, *selectedParam))
+        curves.selected.push_back({trackTargetOf(p, *selectedParam), key, 0});
+}
+
+void EditState::followCurveSelection(const Preset& p) {
+    if (curves.selected.empty()) return;
+    selectedKey = -1;
+    if (!selectedParam || !trackOf(p, *selectedParam)) return;
+    const TrackTarget target = trackTargetOf(p, *selectedParam);
+    for (const CurvePoint& point : curves.selected)
+        if (point.target == target) {
+            selectedKey = point.key;
+            return;
+        }
+}
+
 void Playback::advance(double dt) {
     if (!playing || !(dt > 0.0)) return;
     double t = timeHours + speed * std::min(dt, 0.25);

@@ -103,6 +103,14 @@ struct EditState {
     bool objectSelected() const { return selection.scope() != ParamScope::Global; }
     /// Clears what refers to objects, parameters or keys that `preset` no longer has.
     void validate(const Preset& preset);
+    /// Picks `key` of the inspector's parameter's track (-1: none). The
+    /// timeline has one key selection: the curve view's becomes that key,
+    /// so Delete, Copy and the curves act on the key picked last.
+    void selectTrackKey(const Preset& preset, int key);
+    /// The track row follows the curve view's selection: while the curves
+    /// have keys selected, selectedKey is the inspector parameter's one
+    /// among them, else -1.
+    void followCurveSelection(const Preset& preset);
 };
 
 /// The outliner's sky preview: a small fisheye of the solved sky.

@@ -173,6 +173,7 @@ void Editor::declareScriptCommands() {
                 return false;
             }
             std::printf("exported %s: %s\n", w[1].c_str(), export_.summary().c_str());
+            setStatus(exportedStatus());  // as an export from the menu says it
             export_.acknowledge();
             return true;
         });
@@ -291,6 +292,13 @@ void Editor::declareScriptCommands() {
         .ignoresExtraWords()
         .helps("the document has no unsaved changes")
         .handles(dirtyCheck(false));
+    table.add("print_status")
+        .ignoresExtraWords()
+        .helps("print the status bar's message")
+        .handles([this](W, E) {
+            std::printf("status %s\n", status_.c_str());
+            return true;
+        });
     table.add("expect_status")
         .takes({rest("TEXT")}, "expect_status TEXT")
         .helps("TEXT is part of the status bar's message")

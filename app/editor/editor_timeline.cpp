@@ -150,12 +150,10 @@ void drawTimeline(Document& doc, EditState& edit, Playback& playback, const Acti
     const Track* track = edit.selectedParam ? trackOf(preset, *edit.selectedParam) : nullptr;
     const TrackTarget target =
         edit.selectedParam ? trackTargetOf(preset, *edit.selectedParam) : TrackTarget{};
-    // The selected key's operations: the buttons, the key menu and the keyboard share them.
-    auto deleteSelectedKey = [&] {
-        const int key = edit.selectedKey;
-        doc.apply("Delete key", "", [&](Preset& p) { removeKey(p, target, key); });
-        edit.selectedKey = -1;
-    };
+    // One key selection: the track row shows the curve view's. The buttons, the key menu and
+    // the keyboard delete it alike (deleteTimelineKeys).
+    edit.followCurveSelection(preset);
+    auto deleteSelectedKey = [&] { deleteTimelineKeys(doc, edit); };
     ImGui::SameLine();
     ImGui::TextDisabled("|");
     ImGui::SameLine();
@@ -165,16 +163,22 @@ void drawTimeline(Document& doc, EditState& edit, Playback& playback, const Acti
         const std::string address = paramAddress(*edit.selectedParam);
         ImGui::Text("%s", address.c_str());
         ImGui::SameLine();
+    }
+    // The parameter table says which parameters may carry keys: the others get no Key.
+    if (edit.selectedParam && !edit.selectedParam->desc->animatable) {
+        ImGui::TextDisabled("is not animated (one value for the whole day)");
+    } else if (edit.selectedParam) {
         if (ImGui::Button("Key")) {
             const ParamRef ref = *edit.selectedParam;
             const double t = playback.timeHours;
             keyParamNow(doc, edit, ref, t);
-            if (const Track* after = trackOf(doc.preset(), ref)) edit.selectedKey = keyIndexAt(*after, t);
+            if (const Track* after = trackOf(doc.preset(), ref))
+                edit.selectTrackKey(doc.preset(), keyIndexAt(*after, t));
             track = trackOf(doc.preset(), ref);
         }
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("Key the parameter at the current time");
         ImGui::SameLine();
-        ImGui::BeginDisabled(!(track && edit.selectedKey >= 0));
+        ImGui::BeginDisabled(!(track && edit.selectedKey >= 0) && edit.curves.selected.empty());
         if (ImGui::Button("Delete key")) {
             deleteSelectedKey();
             track = trackOf(doc.preset(), *edit.selectedParam);
@@ -226,9 +230,11 @@ void drawTimeline(Document& doc, EditState& edit, Playback& playback, const Acti
     }
 
     // --- canvas: ruler, summary row, track row, curve ----------------------------
-    const float labelW = 190.0f;  // the curves' legend and the typed Time and Value fields
     const ImVec2 canvasPos = ImGui::GetCursorScreenPos();
     const ImVec2 avail = ImGui::GetContentRegionAvail();
+    // The curves' legend and the typed Time and Value fields: wider in a wide
+    // window, where "Valley fog density" and its fields then fit.
+    const float labelW = std::clamp(avail.x * 0.16f, 190.0f, 320.0f);
     if (avail.x < labelW + 40.0f || avail.y < 50.0f) return;
     ImDrawList* dl = ImGui::GetWindowDrawList();
     const float x0 = canvasPos.x + labelW, x1 = canvasPos.x + avail.x - 8.0f;
@@ -355,18 +361,19 @@ void drawTimeline(Document& doc, EditState& edit, Playback& playback, const Acti
             if (std::abs(x - mouseX) < 6.0f) hoveredKey = int(i);
         }
         if (ImGui::IsItemClicked(0) && !io.KeyAlt) {
-            edit.selectedKey = hoveredKey;
+            edit.selectTrackKey(preset, hoveredKey);
             edit.draggingKey = hoveredKey >= 0;
         }
         if (ImGui::IsItemClicked(1) && hoveredKey >= 0) {
-            edit.selectedKey = hoveredKey;
+            edit.selectTrackKey(preset, hoveredKey);
             ImGui::OpenPopup("##keymenu");
         }
         if (trackHovered && ImGui::IsMouseDoubleClicked(0) && hoveredKey < 0) {
             const ParamRef ref = *edit.selectedParam;
             const double t = tOf(mouseX);
             doc.apply("Add key", "", [&](Preset& p) { keyParam(p, ref, t); });
-            if (const Track* after = trackOf(doc.preset(), ref)) edit.selectedKey = keyIndexAt(*after, t);
+            if (const Track* after = trackOf(doc.preset(), ref))
+                edit.selectTrackKey(doc.preset(), keyIndexAt(*after, t));
             hoveredKey = -1;
         }
         if (edit.draggingKey && trackActive && edit.selectedKey >= 0 && ImGui::GetIO().MouseDelta.x != 0.0f) {
@@ -401,7 +408,7 @@ void drawTimeline(Document& doc, EditState& edit, Playback& playback, const Acti
     }
     if (ImGui::BeginPopup("##keymenu")) {
         const std::string deleteKeys = actions.shortcutOf("timeline_delete_keys");
-        if (ImGui::MenuItem("Delete key", deleteKeys.c_str()) && edit.selectedKey >= 0) deleteSelectedKey();
+        if (ImGui::MenuItem("Delete key", deleteKeys.c_str())) deleteSelectedKey();
         // Flat: the smooth curve levels out at the key (TrackKey::flat).
         if (const Track* t = edit.selectedParam ? trackOf(doc.preset(), *edit.selectedParam) : nullptr;
             t && edit.selectedKey >= 0 && edit.selectedKey < int(t->keys.size())) {

@@ -522,7 +522,14 @@ bool Editor::dropSelectionToGround() {
         else
             p.emitters[std::size_t(index)].position = position;
     });
-    setStatus("Dropped to the ground at " + std::to_string(*ground).substr(0, 8) + " m");
+    // The height it now has (read back from the document), and the ground's under it.
+    const Preset& after = doc_.preset();
+    const double y = scope == ParamScope::Volume ? after.volumes[std::size_t(index)].position.y
+                                                 : after.emitters[std::size_t(index)].position.y;
+    char text[160];
+    std::snprintf(text, sizeof text, "Dropped to the ground: %s at y = %.3f m (the ground at %.3f m)",
+                  scope == ParamScope::Volume ? "the volume" : "the emitter", y, *ground);
+    setStatus(text);
     return true;
 }
 

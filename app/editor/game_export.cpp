@@ -38,6 +38,14 @@ std::string aerialCliPath() {
 
 GameExport::~GameExport() { cancel(); }
 
+std::string exportSummaryLine(const std::string& line, const std::string& directory) {
+    const std::string here = " into . ";
+    std::string out = line;
+    if (const std::size_t at = out.find(here); at != std::string::npos)
+        out.replace(at, here.size(), " into " + directory + " ");
+    return out;
+}
+
 bool exportDirectoryUsable(const std::string& directory, std::string& error) {
     std::error_code ec;
     if (!fs::exists(directory, ec)) return true;
@@ -145,7 +153,7 @@ void GameExport::consume(const char* data, long size) {
             steps_ = k;
             total_ = n;
         } else {
-            lastLine_ = line;
+            lastLine_ = exportSummaryLine(line, directory_);
         }
     }
 }

@@ -36,6 +36,10 @@ struct ExportOptions {
 /// folder"), so an export never mixes its files into someone else's.
 bool exportDirectoryUsable(const std::string& directory, std::string& error);
 
+/// A line the bake printed, as the editor shows it: the bake runs inside
+/// the export folder (--out .), so its "into ." names `directory` instead.
+std::string exportSummaryLine(const std::string& line, const std::string& directory);
+
 class GameExport {
 public:
     GameExport() = default;

@@ -91,7 +91,9 @@ void drawSunKeyRays(float x, float y, float radius);
 /// value, as one undo step (with `continuous` part of the step of a drag,
 /// until Document::closeMerge). Returns "" or, when a value lies outside
 /// the parameter's valid range, what it was clamped to:
-/// "<label> clamped to <value> (valid <lo>..<hi> <unit>)".
+/// "<label> clamped to <value> (valid <lo>..<hi> <unit>)", and for a
+/// colour or vector every value clamped, "<label>: 2 values clamped: r 1.5
+/// to 1, b -0.2 to 0 (valid <lo>..<hi> <unit>)".
 std::string editParam(Document& doc, EditState& edit, const ParamRef& ref, const double value[4],
                       bool continuous, double timeHours);
 /// Keys `ref` at `timeHours` (the key diamond, the script's key): its

@@ -6,7 +6,8 @@ file code paths. Python standard library only.
     editor_e2e.py --editor PATH --source-dir DIR --work-dir DIR CASE
 
 CASE: workflow | undo_redo | crash_recovery | screenshot | exposure | errors | prompts | session |
-      cloud_volume | autokey | placement | curves | curves_mouse | sun_anchor | curve_edit | weather
+      cloud_volume | autokey | placement | curves | curves_mouse | sun_anchor | curve_edit | weather |
+      small_things
 (weather: e2e_weather.py)
 
 Every case FAILS (never skips) when the editor cannot start under Xvfb.
@@ -299,7 +300,10 @@ quit
     os.makedirs(other, exist_ok=True)
     with open(os.path.join(other, "notes.txt"), "w") as f:
         f.write("mine")
-    p = env.run(env.script("export_options.txt", "export {bake} 2 64x32\nquit\n".format(bake=bake)))
+    p = env.run(env.script("export_options.txt", "export {bake} 2 64x32\nprint_status\nquit\n".format(bake=bake)))
+    status = re.search(r"^status (.*)$", p.stdout, re.M)
+    check(status and "into %s " % bake in status.group(1) and "into . " not in status.group(1),
+          "the export's status does not name its folder: %r" % (status.group(1) if status else p.stdout))
     manifest = load_json(os.path.join(bake, "manifest.json"))
     check(manifest["step_count"] == 12 and manifest["table"]["azimuth_count"] == 64,
           "the export options were not used: %d steps, %d columns" % (manifest["step_count"], manifest["table"]["azimuth_count"]))
@@ -1598,6 +1602,68 @@ quit
     print("OK: key_paths")
 
 
+def case_small_things(env):
+    """Small things the study met (issue 50, point 4): Drop to ground says the
+    height the emitter now has; one edit that clamps two values of a colour
+    names both; a parameter that cannot be animated (location.day_of_year)
+    refuses keys. Window screenshots at 1280x720 and 1920x1080 with the
+    day of year inspected and the fog's red (unkeyed) row, the atmosphere's
+    Rayleigh row, and the side panels collapsed, to look at."""
+    shots = {size: env.path("small_things_%s.png" % size) for size in ("1280x720", "1920x1080")}
+    script = """
+new
+collapse outliner off
+collapse inspector off
+add_emitter point
+set emitter[1].position_m 12 250 -40
+drop_to_ground
+print emitter[1].position_m
+print_status
+set atmosphere.ground_albedo_rgb 1.5 0.5 -0.25
+print_status
+time 6
+set fog.base_height_m 10
+key fog.base_height_m
+time 9
+set fog.base_height_m 40
+inspect location.day_of_year
+select fog
+wait_frames 3
+window_screenshot {shot}
+wait_frames 2
+select atmosphere
+wait_frames 3
+window_screenshot {atmosphere}
+wait_frames 2
+collapse outliner on
+collapse inspector on
+wait_frames 3
+window_screenshot {collapsed}
+wait_frames 2
+quit
+"""
+    for size, shot in shots.items():
+        collapsed, atmosphere = shot.replace(".png", "_collapsed.png"), shot.replace(".png", "_atmosphere.png")
+        p = env.run(env.script("small_things_%s.txt" % size,
+                               script.format(shot=shot, atmosphere=atmosphere, collapsed=collapsed)), window=size)
+        check(all(os.path.isfile(f) for f in (shot, atmosphere, collapsed)), "no window screenshots at %s" % size)
+    position = re.search(r"emitter\[1\]\.position_m = (\S+) (\S+) (\S+)", p.stdout)
+    check(position, "the emitter's position was not printed:\n" + p.stdout)
+    statuses = re.findall(r"^status (.*)$", p.stdout, re.M)
+    check(len(statuses) == 2, "print_status printed %s" % statuses)
+    dropped = re.search(r"at y = (-?[0-9.]+) m \(the ground at (-?[0-9.]+) m\)", statuses[0])
+    check(dropped, "Drop to ground did not say the height: %r" % statuses[0])
+    check(abs(float(dropped.group(1)) - float(position.group(2))) < 5e-4,
+          "Drop to ground said y = %s, the emitter is at %s" % (dropped.group(1), position.group(2)))
+    check(abs(float(dropped.group(1)) - float(dropped.group(2)) - 0.5) < 2e-3,
+          "an emitter floats 0.5 m above the ground: %r" % statuses[0])
+    check("2 values clamped" in statuses[1] and "r 1.5 to 1" in statuses[1] and "b -0.25 to 0" in statuses[1],
+          "the clamp message does not name both clamped values: %r" % statuses[1])
+    p = env.run(env.script("day_key.txt", "new\nkey location.day_of_year\n"), expect_rc=1)
+    check("is not animatable" in p.stderr, "keying the day of year was not refused:\n" + p.stderr[-1500:])
+    print("OK: small_things (look at %s)" % ", ".join(shots.values()))
+
+
 CASES = {
     "session": case_session,
     "prompts": case_prompts,
@@ -1619,6 +1685,7 @@ CASES = {
     "tangents": case_tangents,
     "paste_keys": case_paste_keys,
     "key_paths": case_key_paths,
+    "small_things": case_small_things,
 }
 
 

@@ -52,6 +52,17 @@ TEST(EditorActions, EveryShortcutIsUniqueInItsContext) {
         }
 }
 
+TEST(EditorActions, EveryShortcutHasAName) {
+    // Menus and the help sheet (F1) show shortcutText; a key it does not know reads "?".
+    for (const Action& a : editorActions().all())
+        for (const Shortcut& s : a.keys) {
+            const std::string text = shortcutText(s);
+            EXPECT_FALSE(text.empty()) << a.name;
+            EXPECT_EQ(text.find('?'), std::string::npos)
+                << a.name << "'s key " << s.key << " shows as " << text;
+        }
+}
+
 TEST(EditorActions, EveryMenuItemResolvesToAnEntry) {
     const ActionTable& table = editorActions();
     const std::vector<std::string>& menus = ActionTable::menus();
