@@ -9,6 +9,8 @@
 //   editor_timeline.cpp   drawTimeline
 //   editor_curves.cpp     drawCurveView, curveColour, drawSunKeyRays (the
 //                         timeline's curve area)
+//   editor_key_menu.cpp   keyShapeMenu, followTheSunMenu (the key menu's
+//                         parts the curve view and the track row share)
 //   editor_weather.cpp    drawWeatherPanel
 #pragma once
 
@@ -73,6 +75,10 @@ void drawCurveView(Document& doc, EditState& edit, Playback& playback, float lab
 /// gives them a fixed time again, one undo step; `suffix` follows the
 /// menu's name (" (3 keys)").
 void followTheSunMenu(Document& doc, const std::vector<CurvePoint>& picked, const std::string& suffix);
+/// The key menu's shape items for the keys of `picked` (editor_key_menu.cpp):
+/// flat or automatic tangents, unified or broken handles, the interpolation
+/// of the segment after each key; each choice one undo step.
+void keyShapeMenu(Document& doc, const std::vector<CurvePoint>& picked, const std::string& suffix);
 /// The curves the timeline's curve view shows, in order: those toggled on
 /// (edit.curves.shown), then the inspector's parameter when it is not among them.
 std::vector<TrackTarget> shownCurveTargets(const Preset& preset, const EditState& edit);
