@@ -23,7 +23,8 @@
 // depth is the global-fog formula with o.y - h0 -> dot(o - centre, g) - offset
 // and d.y -> dot(d, g) (core/src/fog/bvh.hpp, opticalDepthPrepared). With
 // subtract volumes (frame.subtractActive) the segment minus the pixel's
-// subtract union (common/subtract.glsl).
+// subtract union (common/subtract.glsl). A soft edge (edgeSoftness > 0)
+// multiplies the density by the profile of common/soft_volume.glsl.
 #include "common/frame.glsl"
 #include "common/volume.glsl"
 
@@ -31,7 +32,35 @@
 void main() { transformHullVertex(); }
 #else
 #include "common/atmosphere.glsl"
+#include "common/soft_volume.glsl"
 #include "common/subtract.glsl"
+
+/// Optical depth over [t0, t1] of a soft-edged volume (volume.edgeSoftness
+/// > 0), the pixel's subtract union cut out as maskedExponentialDepth does.
+float maskedSoftDepth(ivec2 pixel, vec3 o, vec3 d, float heightAt0, float rate, float lengthPerT, float t0,
+                      float t1) {
+    float sigma = volume.edgeSoftness;
+    float b = volume.density;
+    float c = volume.falloff;
+    if (frame.subtractActive == 0)
+        return softVolumeDepth(volume.shape, sigma, o, d, b, c, heightAt0, rate, lengthPerT, t0, t1);
+    vec4 first, second;
+    pixelSubtractIntervals(pixel, first, second);
+    float cuts[8] = float[8](first.x, first.y, first.z, first.w, second.x, second.y, second.z, second.w);
+    float tau = 0.0;
+    float start = t0;
+    for (int i = 0; i < 4; ++i) {
+        float lo = cuts[2 * i];
+        float hi = cuts[2 * i + 1];
+        if (!(hi > lo)) continue;  // empty
+        if (lo > start)
+            tau += softVolumeDepth(volume.shape, sigma, o, d, b, c, heightAt0, rate, lengthPerT, start, min(lo, t1));
+        start = max(start, hi);
+        if (start >= t1) break;
+    }
+    if (t1 > start) tau += softVolumeDepth(volume.shape, sigma, o, d, b, c, heightAt0, rate, lengthPerT, start, t1);
+    return min(tau, kMaxOpticalDepth);
+}
 
 layout(location = 0) out vec4 outColour;
 
@@ -47,7 +76,10 @@ void main() {
     float height = dot(eye - centre, g) + tIn * rate - volume.gradientOffset;
     float tau = exponentialOpticalDepth(volume.density, volume.falloff, height,
                                         span * rate, span * length(farRay));
-    if (frame.subtractActive != 0) {
+    if (volume.edgeSoftness > 0.0) {
+        tau = maskedSoftDepth(ivec2(gl_FragCoord.xy), toObject(eye - centre), toObject(farRay), height - tIn * rate,
+                              rate, length(farRay), tIn, tOut);
+    } else if (frame.subtractActive != 0) {
         tau = maskedExponentialDepth(ivec2(gl_FragCoord.xy), volume.density, volume.falloff, height - tIn * rate,
                                      rate, length(farRay), tIn, tOut);
     }

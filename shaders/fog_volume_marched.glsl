@@ -15,6 +15,7 @@
 void main() { transformHullVertex(); }
 #else
 #include "common/atmosphere.glsl"
+#include "common/soft_volume.glsl"
 
 layout(location = 0) out vec4 outColour;
 
@@ -34,7 +35,14 @@ void main() {
     for (int i = 0; i < kSteps; ++i) {
         vec3 p = eye + (tIn + (float(i) + 0.5) * dt) * farRay;
         float height = dot(p - centre, g) - volume.gradientOffset;
-        sum += b * exp(min(-c * height, 80.0));
+        float w = 1.0;  // the soft edge's profile (common/soft_volume.glsl)
+        float sigma = volume.edgeSoftness;
+        if (sigma > 0.0) {
+            vec3 q = toObject(p - centre);
+            w = volume.shape < 0.5 ? softBoxRamp(q.x, sigma) * softBoxRamp(q.y, sigma) * softBoxRamp(q.z, sigma)
+                                   : clamp((1.0 - dot(q, q)) / (1.0 - (1.0 - sigma) * (1.0 - sigma)), 0.0, 1.0);
+        }
+        sum += w * b * exp(min(-c * height, 80.0));
     }
     float tau = min(sum * dt * length(farRay), kMaxOpticalDepth);
     // The fog colour of the pixel's whole sight line, to its scene point (fog_light.hpp).

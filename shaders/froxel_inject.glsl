@@ -40,6 +40,7 @@
 #include "common/emitters.glsl"
 #include "common/shadows.glsl"
 #include "common/clouds.glsl"
+#include "common/soft_volume.glsl"
 #include "common/unit_shape.glsl"
 #include "common/subtract.glsl"
 #include "common/froxel_volumes.glsl"
@@ -183,7 +184,10 @@ void main() {
         float rate = dot(d, fv.gradientDirection);
         float height = dot(rel, fv.gradientDirection) + tIn * rate - fv.gradientOffset;
         float span = tOut - tIn;
-        float tv = exponentialOpticalDepth(fv.density, fv.falloff, height, span * rate, span * len);
+        float tv = fv.edgeSoftness > 0.0
+                       ? softVolumeDepth(fv.shape, fv.edgeSoftness, oo, dd, fv.density, fv.falloff,
+                                         height - tIn * rate, rate, len, tIn, tOut)
+                       : exponentialOpticalDepth(fv.density, fv.falloff, height, span * rate, span * len);
         addMedium(tv, fv.colourMode, fv.colour, wSky, wOwn);
         tau += tv;
     }

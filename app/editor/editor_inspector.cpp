@@ -660,6 +660,10 @@ void drawInspector(Document& doc, EditState& edit, double timeHours, const Prese
                     continue;
                 }
                 if (emitter && !lightning && lightningOnly(p.path)) continue;
+                if (volume && p.path == "edge_softness" &&
+                    (preset.volumes[i].shape == FogVolumeShape::Mesh ||
+                     preset.volumes[i].blend == FogVolumeBlend::Subtract))
+                    continue;  // a mesh or subtract volume keeps a hard edge
                 drawParam(doc, edit, {&p, index}, timeHours, status);
             }
             if (scope == ParamScope::CloudVolume && i < state.cloudVolumes.size()) {

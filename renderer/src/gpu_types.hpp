@@ -213,7 +213,9 @@ struct VolumeBlock {
     Vec3 gradientDirection;       ///< unit
     float colourMode = 0.0f;      ///< 0 sky, 1 tinted, 2 custom
     Vec3 colour;
-    float blend = 0.0f;  ///< 0 adds fog, 1 subtracts it (FogVolumeBlend)
+    float blend = 0.0f;         ///< 0 adds fog, 1 subtracts it (FogVolumeBlend)
+    float edgeSoftness = 0.0f;  ///< sigma, 0..1 (0 hard; fog_volume.hpp "Soft edges")
+    float padSoftness[3] = {};
 };
 static_assert(offsetof(VolumeBlock, objectFromWorldRow0) == 64);
 static_assert(offsetof(VolumeBlock, shape) == 76);
@@ -227,7 +229,8 @@ static_assert(offsetof(VolumeBlock, gradientDirection) == 128);
 static_assert(offsetof(VolumeBlock, colourMode) == 140);
 static_assert(offsetof(VolumeBlock, colour) == 144);
 static_assert(offsetof(VolumeBlock, blend) == 156);
-static_assert(sizeof(VolumeBlock) == 160);
+static_assert(offsetof(VolumeBlock, edgeSoftness) == 160);
+static_assert(sizeof(VolumeBlock) == 176);
 
 /// shaders/common/object.glsl, ObjectBlock (binding 3; scene and
 /// transparent passes).

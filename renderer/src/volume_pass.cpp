@@ -152,6 +152,7 @@ bool packVolumeBlock(const PreparedFogVolume& p, VolumeBlock& block) {
     block.colourMode = static_cast<float>(static_cast<int>(p.colourMode));
     block.colour = toVec3(p.colour);
     block.blend = subtract ? 1.0f : 0.0f;
+    block.edgeSoftness = static_cast<float>(p.edgeSoftness);
     return true;
 }
 

@@ -20,6 +20,10 @@ struct PackedVolume {
     float colourMode;
     vec3 colour;
     float blend;  // 0 add, 1 subtract
+    float edgeSoftness;  // sigma 0..1 (0 hard; common/soft_volume.glsl)
+    float padSoftness0;
+    float padSoftness1;
+    float padSoftness2;
 };
 
 #endif

@@ -23,6 +23,10 @@ layout(std140, binding = 1) uniform VolumeBlock {
     float colourMode;          // 0 sky, 1 tinted, 2 custom
     vec3 colour;
     float blend;                // 0 add, 1 subtract
+    float edgeSoftness;         // sigma 0..1 (0 hard; common/soft_volume.glsl)
+    float padSoftness0;
+    float padSoftness1;
+    float padSoftness2;
 } volume;
 
 #ifdef AERIAL_VERTEX_SHADER

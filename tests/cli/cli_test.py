@@ -330,8 +330,8 @@ class Eval(unittest.TestCase):
         globals_in_file = leaf_paths({k: document[k] for k in ("location", "atmosphere", "sun", "moon", "fog", "exposure", "clouds", "night")})
         self.assertEqual(leaf_paths(state["parameters"]), globals_in_file)
         self.assertEqual([v["id"] for v in state["volumes"]], [v["id"] for v in document["volumes"]])
-        # A file leaves out "blend" and "mesh" at their defaults; eval lists every parameter.
-        optional = {"blend", "mesh"}
+        # A file leaves out "blend", "mesh" and "edge_softness" at their defaults; eval lists every parameter.
+        optional = {"blend", "mesh", "edge_softness"}
         for volume, in_file in zip(state["volumes"], document["volumes"]):
             self.assertEqual(set(volume) - optional, set(in_file) - optional)
             self.assertEqual(volume["blend"], in_file.get("blend", "add"))

@@ -258,9 +258,9 @@ TEST(ParamTable, CoversEveryParameterTheIssueLists) {
                             "fog.base_height_m",
                             "fog.colour_mode"};
     for (const char* path : global) EXPECT_NE(aerial::findParam(ParamScope::Global, path), nullptr) << path;
-    for (const char* key :
-         {"id", "name", "shape", "position_m", "rotation_xyzw", "half_extents_m", "density_per_m",
-          "falloff_per_m", "gradient_direction", "gradient_offset_m", "colour_mode", "colour_rgb"})
+    for (const char* key : {"id", "name", "shape", "position_m", "rotation_xyzw", "half_extents_m",
+                            "density_per_m", "falloff_per_m", "gradient_direction", "gradient_offset_m",
+                            "edge_softness", "colour_mode", "colour_rgb"})
         EXPECT_NE(aerial::findParam(ParamScope::Volume, key), nullptr) << key;
     for (const char* key : {"id", "name", "kind", "position_m", "intensity_cd", "attenuation_per_m2", "temperature_k",
                             "colour_rgb", "seed", "flashes_per_minute", "flash_duration_s", "time_scale"})

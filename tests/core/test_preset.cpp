@@ -379,6 +379,8 @@ const Fixture kFixtures[] = {
     {"mie_extinction_below_scattering.json", "/atmosphere/mie/extinction_per_m/1", 6, 37, "must be >="},
     {"not_an_object.json", "", 1, 1, "expected an object"},
     {"bad_track_value.json", "/tracks/0/keys/0/value", 4, 65, "array of 3 numbers"},
+    {"volume_edge_softness_out_of_range.json", "/volumes/0/edge_softness", 4, 53,
+     "out of range: 1.5 is not in 0..1"},
     {"cloud_coverage_out_of_range.json", "/clouds/coverage", 3, 26, "out of range: 1.5 is not in 0..1"},
     {"cloud_thickness_zero.json", "/clouds/thickness_m", 4, 29, "out of range: 0 is not in 10..20000 m"},
     {"cloud_negative_density.json", "/clouds/density_per_m", 3, 31, "out of range: -0.01 is not in 0..1 1/m"},
@@ -1065,3 +1067,34 @@ TEST(CloudVolumes, ChangingAnIdRetargetsTracksAndRemovingDropsThem) {
 }
 
 }  // namespace
+
+TEST(FogVolumes, EdgeSoftnessRoundTripsAndIsLeftOutAtItsDefault) {
+    aerial::Preset p;
+    aerial::FogVolume hard;
+    hard.id = "hard";
+    aerial::FogVolume soft;
+    soft.id = "soft";
+    soft.edgeSoftness = 0.1 + 0.2;  // not a short decimal
+    p.volumes = {hard, soft};
+    aerial::Track track;
+    track.target = aerial::TrackTarget::volume("soft", "edge_softness");
+    track.keys = {{6.0, glm::dvec3(0.25, 0.0, 0.0)}, {18.0, glm::dvec3(1.0, 0.0, 0.0)}};
+    p.tracks.push_back(track);
+    ASSERT_TRUE(aerial::validatePreset(p).empty()) << joinIssues(aerial::validatePreset(p));
+    const std::string text = aerial::presetToJson(p);
+    // Written once (the soft volume), absent for the hard one: old presets
+    // save as they were.
+    const std::size_t first = text.find("\"edge_softness\": ");
+    ASSERT_NE(first, std::string::npos) << text;
+    EXPECT_EQ(text.find("\"edge_softness\": ", first + 1), std::string::npos) << text;
+    EXPECT_NE(text.find("\"param\": \"edge_softness\""), std::string::npos) << text;  // keyable
+    const aerial::PresetLoadResult r = aerial::parsePreset(text, "soft.json");
+    ASSERT_TRUE(r.ok()) << joinIssues(r.errors);
+    EXPECT_TRUE(aerial::presetsIdentical(p, *r.preset));
+    EXPECT_TRUE(sameBits(r.preset->volumes[1].edgeSoftness, 0.1 + 0.2));
+    EXPECT_TRUE(sameBits(r.preset->volumes[0].edgeSoftness, 0.0));
+    EXPECT_EQ(aerial::presetToJson(*r.preset), text);
+    aerial::Preset q = p;
+    q.volumes[1].edgeSoftness = std::nextafter(0.1 + 0.2, 1.0);
+    EXPECT_FALSE(aerial::presetsIdentical(p, q));
+}

@@ -146,6 +146,32 @@ TEST_F(Froxels, ConvergesToTheAnalyticInsideAVolume) {
     EXPECT_LT(e.p99, 0.05);
 }
 
+TEST_F(Froxels, ConvergesToTheAnalyticInsideSoftEdgedVolumes) {
+    // froxel_inject.glsl integrates a soft volume's slice with the same
+    // closed form (common/soft_volume.glsl): the volume of the hard test
+    // above as an ellipsoid that is all ramp (sigma = 1) and as a box with
+    // sigma 0.5; the bounds of the hard test. Measured at 128 slices: mean /
+    // p99 0.0024 / 0.0094 (ellipsoid), 0.0032 / 0.015 (box); the hard
+    // ellipsoid gives 0.0021 / 0.012.
+    PresetState s = baseState();
+    s.environment.fog = {0.0005, 0.01, 0.0};
+    for (FogVolumeShape shape : {FogVolumeShape::Ellipsoid, FogVolumeShape::Box}) {
+        FogVolume v;
+        v.shape = shape;
+        v.position = {0.0, 10.0, -40.0};
+        v.halfExtents = {60.0, 15.0, 70.0};
+        v.density = 0.02;
+        v.falloff = 0.05;
+        v.edgeSoftness = shape == FogVolumeShape::Box ? 0.5 : 1.0;
+        s.volumes = {v};
+        const Errors e =
+            convergence(shape == FogVolumeShape::Box ? "inside a soft box" : "inside a soft ellipsoid",
+                        makeCamera({0, 10, -20}, {10, 6, -100}, 1500.0, 1.1), s, 128);
+        EXPECT_LT(e.mean, 0.01);
+        EXPECT_LT(e.p99, 0.05);
+    }
+}
+
 TEST_F(Froxels, ConvergesToTheAnalyticWithMeshAndSubtractVolumes) {
     // A torus mesh volume (the eye inside its tube: chords behind and ahead)
     // and a subtract box through it and the global fog.

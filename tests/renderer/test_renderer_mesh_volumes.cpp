@@ -224,6 +224,23 @@ TEST_F(MeshVolumesVsCpu, SubtractBoxCutsAddVolumes) {
     EXPECT_EQ(renderer_->stats().volumesDrawn, 2);
 }
 
+TEST_F(MeshVolumesVsCpu, SubtractBoxCutsSoftEdgedVolumes) {
+    // fog_volume.glsl's masked soft integral (maskedSoftDepth): the soft
+    // profile's pieces between the subtract union's gaps, against the CPU.
+    for (FogVolumeShape shape : {FogVolumeShape::Box, FogVolumeShape::Ellipsoid}) {
+        PresetState air = baseFrame();
+        air.environment.fog = {0.002, 0.02, 0.0};
+        FogVolume v = testVolume(shape);
+        v.edgeSoftness = 0.6;
+        air.volumes.push_back(v);
+        air.volumes.push_back(subtractBox({0.0, 8.0, -70.0}, {10.0, 12.0, 80.0}, 0.2));
+        const FogComparison c = run(shape == FogVolumeShape::Box ? "subtract box through a soft box"
+                                                                 : "subtract box through a soft ellipsoid",
+                                    fogCamera({0, 26, 10}, {0, 5, -100}), air);
+        EXPECT_LT(c.maxError, kTolerance);
+    }
+}
+
 TEST_F(MeshVolumesVsCpu, SubtractVolumeAroundTheViewRemovesAllFogInBothModes) {
     // Known answer: uniform fog, a subtract box (or cube mesh) holding the
     // whole frustum up to the far plane: the fogged frame is the unfogged

@@ -97,8 +97,9 @@ struct ParamDesc {
     /// Required in a file (ids); the others take their default when absent.
     bool required = false;
     /// Left out of a saved file while it has its default (an Enum at
-    /// defaultValue[0], an empty String): fields most objects never use
-    /// ("mesh", "blend") do not clutter every volume.
+    /// defaultValue[0], an empty String, a Scalar bit-identical to
+    /// defaultValue[0]): fields most objects never use ("mesh", "blend",
+    /// "edge_softness") do not clutter every volume.
     bool omitWhenDefault = false;
     /// Enum: JSON spelling of each value, index = the enum's integer value.
     std::span<const std::string_view> enumNames;

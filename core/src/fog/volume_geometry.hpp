@@ -126,8 +126,14 @@ inline void clippedChords(const PreparedFogVolume& p, const glm::dvec3& origin, 
 /// Optical depth of one stretch [seg.tIn, seg.tOut] of the line under the
 /// volume's density law, ignoring its shape (the caller knows the stretch
 /// is inside).
+double softStretchOpticalDepth(const PreparedFogVolume& p, const glm::dvec3& origin,
+                               const glm::dvec3& direction, const VolumeSegment& seg);
+
 inline double stretchOpticalDepth(const PreparedFogVolume& p, const glm::dvec3& origin,
                                   const glm::dvec3& direction, const VolumeSegment& seg) {
+    if (p.edgeSoftness > 0.0) {
+        return softStretchOpticalDepth(p, origin, direction, seg);  // box or ellipsoid that adds
+    }
     const double span = seg.tOut - seg.tIn;
     const double rate = glm::dot(direction, p.gradient);  // height change per unit t
     const double height = glm::dot(origin - p.position, p.gradient) + seg.tIn * rate - p.gradientOffset;

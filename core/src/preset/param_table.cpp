@@ -528,6 +528,14 @@ const std::vector<ParamDesc>& volumeTable() {
             V, "gradient_offset_m", "Gradient offset", "m", {-1e7, 1e7, -100, 100}, 0.0, false, true,
             [](void* o) { return &vol(o).gradientOffset; },
             "Offset of the b_v plane from the centre along g [m]. Default 0."));
+        ParamDesc softness = scalar(
+            V, "edge_softness", "Edge softness", "", {0, 1, 0, 1}, 0.0, false, true,
+            [](void* o) { return &vol(o).edgeSoftness; },
+            "Outer fraction of a box or ellipsoid over which its density falls to 0 (no hard line "
+            "at the top of a haze bank), 0..1 (0 a hard edge). Unused by mesh and subtract volumes. "
+            "Default 0.");
+        softness.omitWhenDefault = true;  // presets without soft volumes stay as they were
+        t.push_back(softness);
         t.push_back(enumeration(
             V, "colour_mode", "Colour mode", kColourModeNames, 0,
             [](const void* o) { return std::int64_t(static_cast<const FogVolume*>(o)->colourMode); },

@@ -11,6 +11,7 @@
 #include <aerial/param_table.hpp>
 #include <aerial/preset.hpp>
 
+#include <cmath>
 #include <cstdint>
 #include <exception>
 #include <string>
@@ -90,7 +91,9 @@ public:
         for (const ParamDesc& p : paramTable(scope)) {
             if (p.omitWhenDefault &&
                 ((p.type == ParamType::String && p.string(object)->empty()) ||
-                 (p.type == ParamType::Enum && double(p.getInt(object)) == p.defaultValue[0]))) {
+                 (p.type == ParamType::Enum && double(p.getInt(object)) == p.defaultValue[0]) ||
+                 (p.type == ParamType::Scalar && *p.scalar(object) == p.defaultValue[0] &&
+                  std::signbit(*p.scalar(object)) == std::signbit(p.defaultValue[0])))) {
                 continue;
             }
             if (!first) out += ',';
