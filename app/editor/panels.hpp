@@ -5,7 +5,8 @@
 // goes to `status` (the status bar).
 //
 //   editor_outliner.cpp   drawOutliner, drawSkyPreview
-//   editor_inspector.cpp  drawInspector, editParam, keyAllChangedAt
+//   editor_inspector.cpp  drawInspector, keyAllChangedAt
+//   editor_param_edits.cpp editParam, editTextParam, keyParamNow
 //   editor_timeline.cpp   drawTimeline
 //   editor_curves.cpp     drawCurveView, curveColour, drawSunKeyRays (the
 //                         timeline's curve area)
