@@ -194,7 +194,7 @@ void drawParam(Document& doc, EditState& edit, const ParamRef& ref, double timeH
     ImGui::SameLine(0.0f, 0.0f);
     curveButton(doc, edit, ref);
     ImGui::SameLine(0.0f, 4.0f);
-    const std::string label = labelOf(p);
+    std::string label = labelOf(p);
     double v[4];
     displayedValueAt(doc.preset(), edit.pending, ref, timeHours, v);
     const bool animated = trackOf(doc.preset(), ref) != nullptr;
@@ -212,13 +212,27 @@ void drawParam(Document& doc, EditState& edit, const ParamRef& ref, double timeH
                                          2.0f * style.ItemSpacing.x
                                    : 0.0f;
     ImGui::PushItemWidth(std::max(1.0f, ImGui::CalcItemWidth() - buttonsW));
+    // A label longer than the label column ("Volumetric noise scale [m]" in a
+    // narrow panel): on its own line, the field across the panel below it.
+    const std::string visible = label.substr(0, label.find("##"));
+    const bool ownLine = p.type != ParamType::Quaternion &&
+                         ImGui::CalcTextSize(visible.c_str()).x > ImGui::GetContentRegionAvail().x -
+                                                                      ImGui::CalcItemWidth() -
+                                                                      style.ItemInnerSpacing.x;
+    if (ownLine) {
+        ImGui::TextUnformatted(visible.c_str());
+        ImGui::SetNextItemWidth(std::max(1.0f, ImGui::GetContentRegionAvail().x - buttonsW));
+        std::string hidden = "##";  // (not "##" + label: GCC 12 warns falsely, -Wrestrict)
+        hidden += label;
+        label = hidden;
+    }
     // A row of numbers too narrow for them ("5.802e-06" for each of Rayleigh's
     // three): the label on its own line, the numbers across the panel below it.
     auto numbersLabel = [&](int count) {
         const float need =
             float(count) * (ImGui::CalcTextSize("-0.000e-00").x + 2.0f * style.FramePadding.x) +
             float(count - 1) * style.ItemInnerSpacing.x;
-        if (ImGui::CalcItemWidth() >= need) return label;
+        if (ownLine || ImGui::CalcItemWidth() >= need) return label;
         ImGui::TextUnformatted(label.c_str());
         ImGui::SetNextItemWidth(std::max(1.0f, ImGui::GetContentRegionAvail().x - buttonsW));
         std::string hidden = "##";  // (not "##" + label: GCC 12 warns falsely, -Wrestrict)
