@@ -44,21 +44,11 @@ float maskedSoftDepth(ivec2 pixel, vec3 o, vec3 d, float heightAt0, float rate, 
     float c = volume.falloff;
     if (frame.subtractActive == 0)
         return softVolumeDepth(volume.shape, sigma, o, d, b, c, heightAt0, rate, lengthPerT, t0, t1);
-    vec4 first, second;
-    pixelSubtractIntervals(pixel, first, second);
-    float cuts[8] = float[8](first.x, first.y, first.z, first.w, second.x, second.y, second.z, second.w);
+    vec2 gaps[5];
+    int n = subtractGaps(pixel, t0, t1, gaps);
     float tau = 0.0;
-    float start = t0;
-    for (int i = 0; i < 4; ++i) {
-        float lo = cuts[2 * i];
-        float hi = cuts[2 * i + 1];
-        if (!(hi > lo)) continue;  // empty
-        if (lo > start)
-            tau += softVolumeDepth(volume.shape, sigma, o, d, b, c, heightAt0, rate, lengthPerT, start, min(lo, t1));
-        start = max(start, hi);
-        if (start >= t1) break;
-    }
-    if (t1 > start) tau += softVolumeDepth(volume.shape, sigma, o, d, b, c, heightAt0, rate, lengthPerT, start, t1);
+    for (int i = 0; i < n; ++i)
+        tau += softVolumeDepth(volume.shape, sigma, o, d, b, c, heightAt0, rate, lengthPerT, gaps[i].x, gaps[i].y);
     return min(tau, kMaxOpticalDepth);
 }
 

@@ -36,27 +36,38 @@ float exponentialDepthBetween(float b, float c, float heightAt0, float rate, flo
     return exponentialOpticalDepth(b, c, heightAt0 + t0 * rate, span * rate, span * lengthPerT);
 }
 
+/// The gaps of [t0, t1] outside the pixel's subtract union, in order, into
+/// gaps[0..n-1] (the union is at most 4 intervals, so at most 5 gaps);
+/// returns n. The masked integrals below sum their integral over these.
+int subtractGaps(ivec2 pixel, float t0, float t1, out vec2 gaps[5]) {
+    if (!(t1 > t0)) return 0;
+    vec4 first, second;
+    pixelSubtractIntervals(pixel, first, second);
+    float cuts[8] = float[8](first.x, first.y, first.z, first.w, second.x, second.y, second.z, second.w);
+    int n = 0;
+    float start = t0;
+    for (int i = 0; i < 4; ++i) {
+        float lo = cuts[2 * i];
+        float hi = cuts[2 * i + 1];
+        if (!(hi > lo)) continue;  // empty
+        if (lo > start) gaps[n++] = vec2(start, min(lo, t1));
+        start = max(start, hi);
+        if (start >= t1) break;
+    }
+    if (t1 > start) gaps[n++] = vec2(start, t1);
+    return n;
+}
+
 /// The same over [t0, t1] minus the pixel's subtract union: the sum over
 /// the gaps between the intervals (never a difference, so a fog-free
 /// interior is exactly 0). Without subtract volumes the plain integral.
 float maskedExponentialDepth(ivec2 pixel, float b, float c, float heightAt0, float rate, float lengthPerT,
                              float t0, float t1) {
     if (frame.subtractActive == 0) return exponentialDepthBetween(b, c, heightAt0, rate, lengthPerT, t0, t1);
-    if (!(t1 > t0)) return 0.0;
-    vec4 first, second;
-    pixelSubtractIntervals(pixel, first, second);
-    float cuts[8] = float[8](first.x, first.y, first.z, first.w, second.x, second.y, second.z, second.w);
+    vec2 gaps[5];
+    int n = subtractGaps(pixel, t0, t1, gaps);
     float tau = 0.0;
-    float start = t0;
-    for (int i = 0; i < 4; ++i) {
-        float lo = cuts[2 * i];
-        float hi = cuts[2 * i + 1];
-        if (!(hi > lo)) continue;  // empty
-        if (lo > start) tau += exponentialDepthBetween(b, c, heightAt0, rate, lengthPerT, start, min(lo, t1));
-        start = max(start, hi);
-        if (start >= t1) break;
-    }
-    tau += exponentialDepthBetween(b, c, heightAt0, rate, lengthPerT, start, t1);
+    for (int i = 0; i < n; ++i) tau += exponentialDepthBetween(b, c, heightAt0, rate, lengthPerT, gaps[i].x, gaps[i].y);
     return min(tau, kMaxOpticalDepth);
 }
 
