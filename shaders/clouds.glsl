@@ -77,14 +77,26 @@
 //     HG(mu, -0.3 c^i), 0.3): the forward lobe g = clouds.anisotropy gives
 //     the silver lining round a cloud in front of the sun, the back lobe
 //     (-0.3, weight 0.3) lightens the side facing the light.
-//   Ambient: the sky's upward irradiance E_sky seen as a uniform upper
-//     hemisphere (radiance E_sky / pi, half of the sphere: E_sky / (2 pi) as
-//     for the particles), darkened with depth in the cloud by A(f) =
-//     mix(0.25, 1, f), f the height fraction in the layer (bases see less
-//     sky than tops).
-//   From below: the ground's bounce of the sun, moon and sky (albedo, seen
-//     through the gaps) and a city's light (lightPollutionUplight), as a
-//     uniform lower hemisphere E / (2 pi), darkened towards the tops.
+//   Ambient: the sky above as a uniform upper hemisphere of radiance
+//     L_sky = E_sky / pi (E_sky the sky's irradiance on the ground) and the
+//     ground below as a uniform lower one of L_gnd = a E_gnd / pi (albedo
+//     a under the sun, the moon and the sky, seen through the gaps, and a
+//     city's uplight, lightPollutionUplight), each scattered towards the
+//     eye by the cloud's phase: F(mu), the share of the light arriving
+//     from a hemisphere that the octave-0 phase sends into a direction at
+//     cosine mu from that hemisphere's pole (cloudHemisphereShare: the
+//     Legendre series of the two lobes by Funk-Hecke, sum (2l+1)/2 g_l
+//     c_l P_l(mu), c_l = int_0^1 P_l, exact to 1e-4). A thin
+//     forward-scattering cloud seen from below hence gives back most of the
+//     sky it hides (F = 0.76 at g = 0.85), seen from above little. Deeper in
+//     the cloud the light from a hemisphere is dimmed and made isotropic by
+//     the optical depth tau between the sample and that side of the cloud:
+//     D = 1 / (1 + 3/4 tau (1 - 0.85)) (the two-stream diffuse
+//     transmittance, Bohren 1987, as for the sun's diffuse light) and the share
+//     mix(1/2, F, D); tau = rho (f_top - f) H above and rho f H below, from
+//     the sample's own extinction rho, its height fraction f, the profile's
+//     top f_top and the layer's thickness H (a local estimate: no march).
+//     A thin deck's base sees the whole sky; a thick cloud's a quarter.
 //   Emitters: their fog falloff read as irradiance (as in shading.glsl),
 //     isotropic, unshadowed: lightning inside the layer lights it up.
 // Air: the clouds' radiance is seen through the atmosphere between the eye
@@ -126,7 +138,7 @@ const float kBackLobeG = -0.3;
 const float kBackLobeWeight = 0.3;
 const float kLightMaxDistanceFactor = 4.0;
 const float kTransmittanceCutoff = 1e-3;
-const float kAmbientBase = 0.25;
+const float kDiffuseG = 0.85;  // the droplets' g of the two-stream terms (Bohren 1987)
 const float kSubStepDepth = 0.5;  // optical depth of a sub-step of a thick step
 const int kMaxSubSteps = 8;
 const int kEntrySubSteps = 6;  // sub-steps of a cloud's entry (1.5 steps)
@@ -142,6 +154,43 @@ float henyeyGreenstein(float mu, float g) {
 float cloudPhase(float mu, float octaveScale) {
     return mix(henyeyGreenstein(mu, clouds.anisotropy * octaveScale),
                henyeyGreenstein(mu, kBackLobeG * octaveScale), kBackLobeWeight);
+}
+
+/// The share of light arriving uniformly from a hemisphere that the octave-0
+/// phase scatters into a direction at cosine mu from the hemisphere's pole
+/// (the direction the light travels in): F(mu) = int_hemisphere P(w . d) dw,
+/// 1/2 for an isotropic phase, F(mu) + F(-mu) = 1. By Funk-Hecke on the
+/// Legendre series of each HG lobe (coefficients g^l): F = 1/2 + sum over
+/// odd l of g_l (P_(l-1)(0) - P_(l+1)(0)) / 2 P_l(mu), g_l the lobes'
+/// mixed g^l, summed until they fall below 1e-4 (l <= ~180 at g = 0.95).
+float cloudHemisphereShare(float mu) {
+    mu = clamp(mu, -1.0, 1.0);
+    float share = 0.5;
+    float forward = clouds.anisotropy, back = kBackLobeG;  // g^l of the two lobes, l odd
+    float p0Below = 1.0;                                    // P_(l-1)(0)
+    float pBelow = 1.0, p = mu;                             // P_(l-1)(mu), P_l(mu)
+    for (int l = 1; l < 400; l += 2) {
+        float gl = mix(forward, back, kBackLobeWeight);
+        if (abs(forward) + abs(back) < 1e-4) break;
+        float p0Above = -p0Below * float(l) / float(l + 1);  // P_(l+1)(0)
+        share += gl * 0.5 * (p0Below - p0Above) * p;
+        float pNext = (float(2 * l + 1) * mu * p - float(l) * pBelow) / float(l + 1);  // P_(l+1)
+        float pNext2 = (float(2 * l + 3) * mu * pNext - float(l + 1) * p) / float(l + 2);
+        pBelow = pNext;
+        p = pNext2;
+        p0Below = p0Above;
+        forward *= clouds.anisotropy * clouds.anisotropy;
+        back *= kBackLobeG * kBackLobeG;
+    }
+    return clamp(share, 0.0, 1.0);
+}
+
+/// The light of a hemisphere of radiance L at a cloud sample: L D mix(1/2,
+/// F, D), D the two-stream transmittance of the optical depth tau between
+/// the sample and that side of the cloud (the Ambient paragraph above).
+vec3 hemisphereLight(vec3 radiance, float share, float tau) {
+    float d = 1.0 / (1.0 + 0.75 * (1.0 - kDiffuseG) * max(tau, 0.0));
+    return radiance * (d * mix(0.5, share, d));
 }
 
 /// Schueler's analytic Chapman function (Schueler 2012, "An efficient and
@@ -211,7 +260,7 @@ vec3 lightScattering(vec3 p, vec3 l, vec3 E, float mu) {
     // edges keep the octaves' look. Without it sunlit tops read darker than
     // the ground between them and bases go black.
     float muUp = max(dot(normalize(p + vec3(0.0, clouds.planetRadius, 0.0)), l), 0.0);
-    sum += kDiffuseWeight * (1.0 - exp(-tau)) / (1.0 + 0.75 * tau * (1.0 - 0.85)) * muUp / kPi * E;
+    sum += kDiffuseWeight * (1.0 - exp(-tau)) / (1.0 + 0.75 * tau * (1.0 - kDiffuseG)) * muUp / kPi * E;
     return sum;
 }
 
@@ -254,18 +303,19 @@ void main() {
     float total = (segments[0].y - segments[0].x) + (count > 1 ? segments[1].y - segments[1].x : 0.0);
     float muSun = dot(v, frame.sunDirection);
     float muMoon = dot(v, frame.moonDirection);
-    vec3 ambient = frame.skyAmbient / (2.0 * kPi);
-    // Light bounced off the ground into the bases: a Lambertian ground of
-    // the atmosphere's albedo under the sun, the moon and the sky, seen
-    // through the gaps between the clouds (the clear fraction, 1 - coverage),
-    // as a uniform lower hemisphere (E a / (2 pi), the sky term's convention).
+    // The sky above and the ground below as uniform hemispheres (the
+    // Ambient paragraph): the ground a Lambertian of the atmosphere's albedo
+    // under the sun, the moon and the sky, seen through the gaps between the
+    // clouds (the clear fraction, 1 - coverage), and a city's light from
+    // below (lightPollutionUplight, night_sky.hpp): clouds over a city glow.
+    vec3 skyLight = frame.skyAmbient / kPi;
     vec3 groundIrradiance = frame.sunIlluminance * max(frame.sunDirection.y, 0.0) +
                             frame.moonIlluminance * max(frame.moonDirection.y, 0.0) + frame.skyAmbient;
-    vec3 bounce = clouds.groundAlbedo * groundIrradiance * (1.0 - 0.8 * cloudSaturate(clouds.coverage)) /
-                  (2.0 * kPi);
-    // A city's light from below (lightPollutionUplight, night_sky.hpp), on
-    // the bases as the bounce is: clouds over a city glow.
-    bounce += lightPollutionUplight(v) / (2.0 * kPi);
+    vec3 groundLight = clouds.groundAlbedo * groundIrradiance * (1.0 - 0.8 * cloudSaturate(clouds.coverage)) / kPi +
+                       lightPollutionUplight(v) / kPi;
+    // The light travels from the sky down (pole -y) and towards the eye (-v).
+    float skyShare = cloudHemisphereShare(v.y);
+    float layerTop = (0.3 + 0.7 * cloudSaturate(clouds.type)) * clouds.thicknessM;  // cloudHeightProfile's top
     // The moon's light is marched only when it matters (> 1 % of the sun's).
     bool moonLit = dot(frame.moonIlluminanceSpace, vec3(1.0)) > 0.01 * dot(frame.sunIlluminanceSpace, vec3(1.0)) ||
                    frame.sunDirection.y < -0.15;
@@ -313,8 +363,8 @@ void main() {
                 }
                 vec3 S = lightScattering(p, frame.sunDirection,
                                          lightAtCloud(p, frame.sunDirection, frame.sunIlluminanceSpace), muSun) +
-                         ambient * mix(kAmbientBase, 1.0, cloudSaturate(f)) +
-                         bounce * mix(1.0, kAmbientBase, cloudSaturate(f));
+                         hemisphereLight(skyLight, skyShare, rhoSub * (layerTop - f * clouds.thicknessM)) +
+                         hemisphereLight(groundLight, 1.0 - skyShare, rhoSub * f * clouds.thicknessM);
                 if (moonLit)
                     S += lightScattering(p, frame.moonDirection,
                                          lightAtCloud(p, frame.moonDirection, frame.moonIlluminanceSpace), muMoon);

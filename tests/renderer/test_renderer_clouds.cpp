@@ -417,25 +417,28 @@ DeckAtNight deckAtNight(renderer::Renderer& r, const renderer::Camera& camera, c
 // deck L_behind and with it L_through; the share of the hidden light the
 // cloud gives back is g = (L_through - T L_behind) / ((1 - T) L_behind),
 // over pixels with 1 - T >= 0.05.
-//  - Thin (1e-3 /m, mean T 0.74): every pixel L_through >= T L_behind
-//    (g >= 0, measured min 0.026 moonless, 4.8 moonlit: the lit march's
-//    refined entries against the plain march leave no deficit here), and
-//    moonless a mean g >= 0.15: the night sky's light from above scattered
-//    isotropically by a non-absorbing cloud gives back half the upper
-//    hemisphere's mean radiance, >= L_behind / 2 (the airglow brightens
-//    towards the horizon); the renderer's ambient is dimmed with depth in
-//    the layer (mix(0.25, 1, f)), measured 0.28; bound half of that. A deck
-//    lit by nothing at night (the airglow left out of the clouds' ambient,
-//    the black blobs of the issue) gives g = 0 and fails. Moonlit, the
-//    moon's direct light outshines the moonlit sky it hides: mean g >= 1,
-//    measured 7.1.
+//  - Thin (1e-3 /m, mean T 0.74), moonless. The reference is the thin
+//    slab's radiative transfer: under a uniform sky of radiance L and a
+//    black ground a non-absorbing slab seen from below shows T L + (1 - T)
+//    F L, F the share of the light from the upper hemisphere its phase
+//    sends towards the eye -- for the default clouds (HG g = 0.6, a 0.3
+//    back lobe of g = -0.3) F = 0.69 at 56 deg (numerical integral of the
+//    phase over the hemisphere); what it loses, (1 - T)(1 - F), is the light
+//    it reflects back up. So L_through / L_behind >= 0.74 + 0.26 x 0.69 =
+//    0.92 under a uniform sky, more under the night sky that brightens
+//    towards the horizon (van Rhijn): bound mean >= 0.9 (measured 0.953)
+//    and g >= 0.6 (measured 0.82); every pixel L_through >= T L_behind.
+//    The clouds' sky light taken as isotropic and dimmed to a quarter at
+//    the base (mix(0.25, 1, f), the model before) gives 0.83 and g = 0.28
+//    and fails; a deck lit by nothing at night (the black blobs of the
+//    issue) gives g = 0.
+//  - Thin, moonlit: the moon's direct light outshines the moonlit sky it
+//    hides: mean g >= 1 (measured 7.8).
 //  - Thick (2e-2 /m, optical depth ~40 through the layer, mean T 0.11
 //    where 1 - T >= 0.05): it may be darker, and moonless it is -- the
 //    overcast of a dark site darkens the sky (Jechow et al. 2019):
-//    mean L_through / L_behind < 0.9, measured 0.33.
-// (What the model still lacks: a thin cloud gives back 0.28 of what it
-// hides where a forward-scattering one should give back most: the ambient
-// is isotropic and dimmed at the base.) ~3 s on llvmpipe.
+//    mean L_through / L_behind < 0.9, measured 0.53.
+// ~6 s on llvmpipe.
 TEST_F(GlTest, ThinCloudsAtNightAreNotBlackBlobs) {
     renderer::Renderer r(rendererDesc());
     ASSERT_TRUE(r.valid()) << r.error();
@@ -457,7 +460,10 @@ TEST_F(GlTest, ThinCloudsAtNightAreNotBlackBlobs) {
             if (density < 1e-2) {
                 EXPECT_GT(d.meanT, 0.5) << "thin";
                 EXPECT_GE(d.minGiven, 0.0) << date;
-                EXPECT_GE(d.meanGiven, moonlit ? 1.0 : 0.15) << date;
+                EXPECT_GE(d.meanGiven, moonlit ? 1.0 : 0.6) << date;
+                if (!moonlit) {
+                    EXPECT_GE(d.meanRatio, 0.9) << "a thin deck darkens by what it reflects";
+                }
             } else if (!moonlit) {
                 EXPECT_LT(d.meanRatio, 0.9);
             }
