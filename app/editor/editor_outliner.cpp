@@ -165,10 +165,13 @@ void drawOutliner(Document& doc, EditState& edit, const ActionTable& actions,
     objects(ParamScope::CloudVolume);
     ImGui::Spacing();
     // The add buttons flow onto a new line when the panel is narrow.
+    // (The room left on the line is measured from the end of the button
+    // before: once a button is drawn the cursor is already on the next line.)
     auto flowButton = [first = true](const char* label) mutable {
         const ImGuiStyle& style = ImGui::GetStyle();
         const float width = ImGui::CalcTextSize(label).x + style.FramePadding.x * 2.0f;
-        if (!first && ImGui::GetContentRegionAvail().x > width + style.ItemSpacing.x) ImGui::SameLine();
+        const float lineEnd = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+        if (!first && ImGui::GetItemRectMax().x + style.ItemSpacing.x + width <= lineEnd) ImGui::SameLine();
         first = false;
         return ImGui::SmallButton(label);
     };
