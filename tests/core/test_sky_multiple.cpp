@@ -9,8 +9,10 @@
 // |L_solver - L_ref| / max(L_ref, 1% of the brightest reference radiance of
 // that sun over the compared directions and channels); the worst per sun is
 // printed. Under AddressSanitizer / UndefinedBehaviorSanitizer builds (or
-// with AERIAL_TEST_QUICK set) the comparison runs 3 of the 7 sun elevations
-// (-2, +10 and +90 deg), with the same paths per direction.
+// with AERIAL_TEST_QUICK set) the comparison runs 2 of the 7 sun elevations
+// (+10 and +90 deg) with 4096 paths per direction: that pass checks memory,
+// not convergence (0.015 and 0.022 against the 5% bound, as against 0.017
+// and 0.016 with the release pass's 16384).
 #include <aerial/atmosphere.hpp>
 #include <aerial/sky.hpp>
 #include <aerial/sky_reference.hpp>
@@ -144,9 +146,12 @@ TEST(SkyMultiple, TotalRadianceAgainstPathTracer) {
     std::printf("%s", kReportHeader);
     for (const SunCase& sun : kSuns) {
         // The sanitizer pass checks memory, not convergence: the two suns
-        // with 16384 paths (the twilight ones take 8-16x longer).
+        // with 16384 paths (the twilight ones take 8-16x longer), with a
+        // quarter of them (the tracer under ASan is ~14x slower).
         if (quick() && sun.elevation != 10.0 && sun.elevation != 90.0) continue;
-        const int paths = pathsEnv != nullptr ? std::clamp(std::atoi(pathsEnv), 256, 1 << 20) : sun.paths;
+        const int paths = pathsEnv != nullptr ? std::clamp(std::atoi(pathsEnv), 256, 1 << 20)
+                          : quick()           ? sun.paths / 4
+                                              : sun.paths;
         EXPECT_LT(worstAgainstTracer(air, tracer, solver, sun.elevation, paths), sun.tolerance)
             << "sun " << sun.elevation;
     }

@@ -3,6 +3,7 @@
 #include "ms_reference.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -41,7 +42,7 @@ struct Step {
 };
 
 struct March {
-    std::vector<Step> steps;
+    std::array<Step, kSteps> steps;  // on the stack: a march per path vertex, no allocation
     double totalWeight = 0.0;
     glm::dvec3 single{0.0};  // once-scattered sun along the ray, unit illuminance
     glm::dvec3 exitT{1.0};
@@ -66,8 +67,15 @@ struct MultipleScatteringTracer::Impl {
     double rg = 0.0, rt = 0.0;
     std::vector<glm::dvec3> depth;  // [kTableHeights][kTableCosines] optical depth to the top
 
-    glm::dvec3 scatteringR(double h) const { return air.rayleighScattering * rayleighDensity(air, h); }
-    glm::dvec3 scatteringM(double h) const { return air.mieScattering * mieDensity(air, h); }
+    // extinctionAt's coefficients (atmosphere.cpp: negative and NaN -> 0,
+    // capped at 1e10), so that march() forms extinctionAt's sum from the
+    // densities it needs for the scattering coefficients anyway, bit for bit.
+    glm::dvec3 extinctionR{0.0}, extinctionM{0.0}, extinctionO{0.0};
+
+    static double coefficient(double x) { return x > 0.0 ? std::min(x, 1e10) : 0.0; }
+    static glm::dvec3 coefficient(const glm::dvec3& v) {
+        return {coefficient(v.x), coefficient(v.y), coefficient(v.z)};
+    }
 
     /// Optical depth from radius r along zenith cosine mu to the top (the ray
     /// misses the ground): composite Simpson in w on each monotonic piece,
@@ -98,6 +106,9 @@ struct MultipleScatteringTracer::Impl {
     explicit Impl(const AtmosphereParams& a) : air(a) {
         rg = air.planetRadius;
         rt = air.atmosphereRadius;
+        extinctionR = coefficient(air.rayleighScattering);
+        extinctionM = coefficient(air.mieExtinction);
+        extinctionO = coefficient(air.ozoneAbsorption);
         depth.resize(std::size_t(kTableHeights) * kTableCosines);
         for (int i = 0; i < kTableHeights; ++i) {
             const double v = double(i) / (kTableHeights - 1);
@@ -138,7 +149,6 @@ struct MultipleScatteringTracer::Impl {
         } else {
             length = distanceToTop(air, r, mu);
         }
-        m.steps.resize(kSteps);
         m.totalWeight = 0.0;
         m.single = glm::dvec3(0.0);
         glm::dvec3 t(1.0);
@@ -151,11 +161,13 @@ struct MultipleScatteringTracer::Impl {
             st.ds = length * (u1 * u1 - u0 * u0);
             const glm::dvec3 y = x + st.s * w;
             const double h = std::max(length3(y) - rg, 0.0);
-            const glm::dvec3 ext = extinctionAt(air, h);
+            const double densityR = rayleighDensity(air, h), densityM = mieDensity(air, h);
+            const glm::dvec3 ext =  // extinctionAt(air, h)
+                extinctionR * densityR + extinctionM * densityM + extinctionO * ozoneDensity(air, h);
             const glm::dvec3 half(std::exp(-0.5 * ext.x * st.ds), std::exp(-0.5 * ext.y * st.ds),
                                   std::exp(-0.5 * ext.z * st.ds));
-            st.sigmaR = scatteringR(h);
-            st.sigmaM = scatteringM(h);
+            st.sigmaR = air.rayleighScattering * densityR;
+            st.sigmaM = air.mieScattering * densityM;
             st.t = t * half;
             st.weight = average((st.sigmaR + st.sigmaM) * st.t) * st.ds;
             m.totalWeight += st.weight;
