@@ -41,6 +41,24 @@ PresetState cloudyState(double hours, double coverage = 0.6) {
 
 CloudField fieldOf(const PresetState& state) { return prepareClouds(state); }
 
+/// The same frame rendered without the cloud pass, then with it (the
+/// renderer's stats are then the cloudy frame's).
+struct CloudPair {
+    renderer::Image without, with;
+};
+
+CloudPair renderWithoutAndWithClouds(renderer::Renderer& r, const renderer::Camera& camera,
+                                     const PresetState& state, renderer::FrameDesc frame) {
+    CloudPair out;
+    frame.passes.clouds = false;
+    r.render(camera, state, frame);
+    out.without = r.readColour();
+    frame.passes.clouds = true;
+    r.render(camera, state, frame);
+    out.with = r.readColour();
+    return out;
+}
+
 /// The unit ray through the centre of image pixel (x, y) (row 0 at the top),
 /// in double: the GPU's bilinear far-corner ray (common/frame.glsl).
 glm::dvec3 pixelRay(const renderer::CameraFrame& f, int x, int y, int width, int height, double& farLength) {
@@ -254,12 +272,7 @@ TEST_F(GlTest, CoverageZeroRendersBitIdenticallyToNoCloudPass) {
         renderer::FrameDesc frame;
         frame.width = kWidth;
         frame.height = kHeight;
-        frame.passes.clouds = false;
-        r.render(camera, state, frame);
-        const renderer::Image without = r.readColour();
-        frame.passes.clouds = true;
-        r.render(camera, state, frame);
-        const renderer::Image with = r.readColour();
+        const auto [without, with] = renderWithoutAndWithClouds(r, camera, state, frame);
         EXPECT_FALSE(r.stats().cloudShadow.drawn);
         EXPECT_EQ(r.readCloudShadow().pixels.size(), 0u);
         ASSERT_EQ(with.pixels.size(), without.pixels.size());
@@ -376,12 +389,7 @@ DeckAtNight deckAtNight(renderer::Renderer& r, const renderer::Camera& camera, c
     frame.passes.transparent = frame.passes.particles = false;
     frame.sunDiscRadius = frame.moonDiscRadius = 0.0;
     frame.cloudSteps = 64;
-    frame.passes.clouds = false;
-    r.render(camera, state, frame);
-    const renderer::Image behind = r.readColour();
-    frame.passes.clouds = true;
-    r.render(camera, state, frame);
-    const renderer::Image through = r.readColour();
+    const auto [behind, through] = renderWithoutAndWithClouds(r, camera, state, frame);
     const renderer::Image transmittance = [&] {
         renderer::FrameDesc t = transmittanceFrame(64);
         t.passes.scene = false;
@@ -559,8 +567,9 @@ HorizonBand horizonBand(const renderer::Image& image, const renderer::Image& ref
 // 4x; 1.5 lies between. (The RMS residual against the reference does not
 // measure aliasing here: the filter's far layer departs from the
 // supersampled mean by more than point samples do, 0.20 against 0.10 of the
-// band's mean, its mean 0.865 of the reference's against 1.008 -- printed,
-// not bounded.) ~4.5 s on llvmpipe.
+// band's mean, its mean 0.88 of the reference's against 1.008 -- 0.72
+// within 0.5 deg of the horizon, where the filtered layer fades into the
+// haze, 0.95 above 1 deg; printed, not bounded.) ~4.5 s on llvmpipe.
 TEST_F(GlTest, FarCloudsDoNotAliasAtTheHorizon) {
     PresetLoadResult loaded = loadPreset(std::string(AERIAL_SOURCE_DIR) + "/presets/clear_summer_day.json");
     ASSERT_TRUE(loaded.ok());
@@ -580,12 +589,8 @@ TEST_F(GlTest, FarCloudsDoNotAliasAtTheHorizon) {
     frame.passes.globalFog = frame.passes.volumes = frame.passes.emitters = false;
     frame.passes.transparent = frame.passes.particles = false;
     frame.sunDiscRadius = frame.moonDiscRadius = 0.0;
-    frame.passes.clouds = false;
-    r.render(camera, state, frame);
-    const renderer::Image clear = r.readColour();
+    const auto [clear, image] = renderWithoutAndWithClouds(r, camera, state, frame);
     frame.passes.clouds = true;
-    r.render(camera, state, frame);
-    const renderer::Image image = r.readColour();
     frame.width *= 4;
     frame.height *= 4;
     r.render(camera, state, frame);
