@@ -93,6 +93,30 @@ TEST(CloudNoise, ValuesInUnitRangeAndShapeUniformSoCoverageMeansCoverage) {
     }
 }
 
+TEST(CloudNoise, RowsAreTheFieldAtTheTexelCentres) {
+    // generateCloudNoise fills the shape texture a row at a time
+    // (shapeRow: the Worley octaves set up once per cell); every texel must
+    // be the field itself at the texel's centre, bit for bit, at any size,
+    // for rows at the tile's borders and inside.
+    for (std::int64_t seed : {1LL, 11LL, -5LL}) {
+        const aerial::detail::CloudNoiseFields fields(seed);
+        for (int size : {128, 40, 7}) {
+            std::vector<float> row(static_cast<std::size_t>(size));
+            for (int j : {0, 1, size / 2, size - 1}) {
+                for (int k : {0, size / 3, size - 1}) {
+                    fields.shapeRow(j, k, size, row.data());
+                    int differ = 0;
+                    for (int i = 0; i < size; ++i) {
+                        const float want = float(fields.shape((glm::dvec3(i, j, k) + 0.5) / double(size)));
+                        differ += std::memcmp(&want, &row[std::size_t(i)], sizeof want) != 0;
+                    }
+                    EXPECT_EQ(differ, 0) << "seed " << seed << ", size " << size << ", row " << j << ", " << k;
+                }
+            }
+        }
+    }
+}
+
 TEST(CloudNoise, TilesSeamlesslyAtItsBorders) {
     // The fields the texels are sampled from have period 1 and are
     // continuous across the wrap: f(u + e_axis) = f(u), and f just below 1

@@ -137,6 +137,43 @@ struct WorleyLattice {
         }
         return 1.0 - std::min(1.0, std::sqrt(nearest2));
     }
+
+    /// billow() at (x[i], y, z) for the n points of a row, bit for bit: the
+    /// 27 candidates of each run of points in one cell are set up once (their
+    /// dx + jitter.x and the row's fixed squares ey^2, ez^2, which billow()
+    /// adds in the same order), then every point of the run goes through
+    /// each candidate together, a loop over the points that vectorises.
+    /// `nearest2` is scratch of n doubles.
+    void billowRow(const double* x, double y, double z, int n, double* nearest2, double* out) const {
+        const double cy = std::floor(y), cz = std::floor(z);
+        const double fy = y - cy, fz = z - cz;
+        const int iy = int(cy), iz = int(cz);
+        for (int begin = 0; begin < n;) {
+            const double cx = std::floor(x[begin]);
+            int end = begin + 1;
+            while (end < n && std::floor(x[end]) == cx) ++end;
+            const int ix = int(cx);
+            for (int p = begin; p < end; ++p) nearest2[p] = 3.0;
+            for (int dz = -1; dz <= 1; ++dz) {
+                const int rowZ = wrapPow2(iz + dz, period) * period;
+                for (int dy = -1; dy <= 1; ++dy) {
+                    const int row = (rowZ + wrapPow2(iy + dy, period)) * period;
+                    for (int dx = -1; dx <= 1; ++dx) {
+                        const glm::dvec3& jitter = points[std::size_t(row + wrapPow2(ix + dx, period))];
+                        const double ox = dx + jitter.x;
+                        const double ey = dy + jitter.y - fy, ez = dz + jitter.z - fz;
+                        const double ey2 = ey * ey, ez2 = ez * ez;
+                        for (int p = begin; p < end; ++p) {
+                            const double ex = ox - (x[p] - cx);
+                            nearest2[p] = std::min(nearest2[p], ex * ex + ey2 + ez2);
+                        }
+                    }
+                }
+            }
+            for (int p = begin; p < end; ++p) out[p] = 1.0 - std::min(1.0, std::sqrt(nearest2[p]));
+            begin = end;
+        }
+    }
 };
 
 double remap(double v, double lo, double hi, double newLo, double newHi) {
@@ -197,16 +234,47 @@ CloudNoiseFields::CloudNoiseFields(std::int64_t seed)
           mix32(std::uint32_t(seed) ^ mix32(std::uint32_t(std::uint64_t(seed) >> 32))))) {}
 CloudNoiseFields::~CloudNoiseFields() = default;
 
-double CloudNoiseFields::shape(const glm::dvec3& u) const {
-    const Lattices& l = *lattices_;
-    const double p =
-        l.perlin4.noise(u * 4.0) + 0.5 * l.perlin8.noise(u * 8.0) + 0.25 * l.perlin16.noise(u * 16.0);
+namespace {
+
+/// The shape field from its octaves (CloudNoiseFields::shape).
+double combineShape(double perlin4, double perlin8, double perlin16, double billow4, double worley8,
+                    double worley16, double worley32) {
+    const double p = perlin4 + 0.5 * perlin8 + 0.25 * perlin16;
     const double perlin01 = saturate(0.5 + 0.5 * p / 1.75 * 1.6);
     // Perlin-Worley: the Perlin fBm remapped to start at the Worley billow.
-    const double perlinWorley = remap(perlin01, 0.0, 1.0, l.billow4.billow(u * 4.0), 1.0);
-    const double fbm = 0.625 * l.worley8.billow(u * 8.0) + 0.25 * l.worley16.billow(u * 16.0) +
-                       0.125 * l.worley32.billow(u * 32.0);
+    const double perlinWorley = remap(perlin01, 0.0, 1.0, billow4, 1.0);
+    const double fbm = 0.625 * worley8 + 0.25 * worley16 + 0.125 * worley32;
     return saturate(remap(perlinWorley, fbm - 1.0, 1.0, 0.0, 1.0));
+}
+
+}  // namespace
+
+double CloudNoiseFields::shape(const glm::dvec3& u) const {
+    const Lattices& l = *lattices_;
+    return combineShape(l.perlin4.noise(u * 4.0), l.perlin8.noise(u * 8.0), l.perlin16.noise(u * 16.0),
+                        l.billow4.billow(u * 4.0), l.worley8.billow(u * 8.0), l.worley16.billow(u * 16.0),
+                        l.worley32.billow(u * 32.0));
+}
+
+void CloudNoiseFields::shapeRow(int j, int k, int size, float* out) const {
+    const Lattices& l = *lattices_;
+    const double uy = (double(j) + 0.5) / double(size), uz = (double(k) + 0.5) / double(size);
+    const std::size_t n = std::size_t(std::max(size, 0));
+    std::vector<double> ux(n), x(n), scratch(n), billow4(n), worley8(n), worley16(n), worley32(n);
+    for (int i = 0; i < size; ++i) ux[std::size_t(i)] = (double(i) + 0.5) / double(size);
+    const std::pair<const WorleyLattice*, std::vector<double>*> worley[] = {
+        {&l.billow4, &billow4}, {&l.worley8, &worley8}, {&l.worley16, &worley16}, {&l.worley32, &worley32}};
+    for (const auto& [lattice, values] : worley) {
+        const double scale = double(lattice->period);  // each octave is read at u x its period
+        for (int i = 0; i < size; ++i) x[std::size_t(i)] = ux[std::size_t(i)] * scale;
+        lattice->billowRow(x.data(), uy * scale, uz * scale, size, scratch.data(), values->data());
+    }
+    for (int i = 0; i < size; ++i) {
+        const glm::dvec3 u(ux[std::size_t(i)], uy, uz);
+        const std::size_t at = std::size_t(i);
+        out[i] = float(combineShape(l.perlin4.noise(u * 4.0), l.perlin8.noise(u * 8.0), l.perlin16.noise(u * 16.0),
+                                    billow4[at], worley8[at], worley16[at], worley32[at]));
+    }
 }
 
 double CloudNoiseFields::detail(const glm::dvec3& u) const {
@@ -229,9 +297,7 @@ CloudNoise generateCloudNoise(std::int64_t seed, int threadCount) {
     detail::WorkerPool pool(threadCount > 0 ? std::min(threadCount, 64) : machineThreads());
     auto shapeSlice = [&](int k, int) {
         for (int j = 0; j < kShape; ++j)
-            for (int i = 0; i < kShape; ++i)
-                noise.shape[std::size_t((k * kShape + j) * kShape + i)] =
-                    float(fields.shape((glm::dvec3(i, j, k) + 0.5) / double(kShape)));
+            fields.shapeRow(j, k, kShape, noise.shape.data() + std::size_t(k * kShape + j) * kShape);
     };
     pool.run(kShape, shapeSlice);
     equalise(noise.shape);

@@ -19,6 +19,10 @@ public:
 
     /// The shape field at u (period 1) before equalisation, in [0, 1].
     double shape(const glm::dvec3& u) const;
+    /// shape() at the texel centres ((i + 0.5) / size, (j + 0.5) / size,
+    /// (k + 0.5) / size) of row (j, k), i = 0 .. size - 1, bit for bit, into
+    /// out[0 .. size): the Worley octaves a row at a time.
+    void shapeRow(int j, int k, int size, float* out) const;
     /// The erosion field at u (period 1), in [0, 1].
     double detail(const glm::dvec3& u) const;
 
