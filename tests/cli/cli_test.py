@@ -39,7 +39,13 @@ def preset(name):
     return os.path.join(ROOT, "presets", name + ".json")
 
 
-def run(*args, timeout=120):
+# A hang guard per aerial process, not a speed bound: the 96-step bake of
+# test_pixels_lie_where_their_coordinates_say went past 120 s under
+# AddressSanitizer on a loaded 2-core machine.
+PROCESS_TIMEOUT = 600
+
+
+def run(*args, timeout=PROCESS_TIMEOUT):
     """Runs aerial with args; returns (exit code, stdout, stderr)."""
     p = subprocess.run([AERIAL, *args], capture_output=True, text=True, timeout=timeout)
     return p.returncode, p.stdout, p.stderr
@@ -1334,7 +1340,7 @@ class Render(unittest.TestCase):
         # A broken $OCIO: a warning, and the built-in config.
         env = dict(os.environ, OCIO=os.path.join(WORK, "no_such_config.ocio"))
         p = subprocess.run([AERIAL, "render", "default", "--size", "16x9", "--out", plain, "--json"],
-                           capture_output=True, text=True, timeout=120, env=env)
+                           capture_output=True, text=True, timeout=PROCESS_TIMEOUT, env=env)
         self.assertEqual(p.returncode, 0, p.stderr)
         self.assertIn("warning", p.stderr)
         self.assertIn("no_such_config.ocio", p.stderr)
@@ -1557,7 +1563,7 @@ class WriteFaults(unittest.TestCase):
         env.pop("AERIAL_TEST_FILE_FAULT", None)
         if fault:
             env["AERIAL_TEST_FILE_FAULT"] = fault
-        p = subprocess.run([AERIAL, *args], capture_output=True, text=True, timeout=120, env=env,
+        p = subprocess.run([AERIAL, *args], capture_output=True, text=True, timeout=PROCESS_TIMEOUT, env=env,
                            preexec_fn=preexec_fn)
         return p.returncode, p.stdout, p.stderr
 
