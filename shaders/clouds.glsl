@@ -315,7 +315,7 @@ void main() {
                        lightPollutionUplight(v) / kPi;
     // The light travels from the sky down (pole -y) and towards the eye (-v).
     float skyShare = cloudHemisphereShare(v.y);
-    float layerTop = (0.3 + 0.7 * cloudSaturate(clouds.type)) * clouds.thicknessM;  // cloudHeightProfile's top
+    float layerTop = cloudProfileTop(clouds.type) * clouds.thicknessM;
     // The moon's light is marched only when it matters (> 1 % of the sun's).
     bool moonLit = dot(frame.moonIlluminanceSpace, vec3(1.0)) > 0.01 * dot(frame.sunIlluminanceSpace, vec3(1.0)) ||
                    frame.sunDirection.y < -0.15;

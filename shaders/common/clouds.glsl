@@ -114,11 +114,15 @@ float cloudHeightAboveGround(vec3 p) {
     return r2MinusRg2 / (length(oc) + rg);
 }
 
+/// The height fraction where cloudHeightProfile ends: 0.3 (stratus) .. 1
+/// (cumulus).
+float cloudProfileTop(float type) { return 0.3 + 0.7 * cloudSaturate(type); }
+
 /// cloudHeightProfile of clouds.cpp.
 float cloudHeightProfile(float heightFraction, float type) {
     float f = heightFraction, k = cloudSaturate(type);
     if (!(f > 0.0) || !(f < 1.0)) return 0.0;
-    float top = 0.3 + 0.7 * k;
+    float top = cloudProfileTop(type);
     float fall = top * (0.5 + 0.3 * k);
     return cloudSmooth01(f / 0.08) * cloudSmooth01((top - f) / fall);
 }

@@ -95,9 +95,11 @@ TEST(CloudNoise, ValuesInUnitRangeAndShapeUniformSoCoverageMeansCoverage) {
 
 TEST(CloudNoise, RowsAreTheFieldAtTheTexelCentres) {
     // generateCloudNoise fills the shape texture a row at a time
-    // (shapeRow: the Worley octaves set up once per cell); every texel must
-    // be the field itself at the texel's centre, bit for bit, at any size,
-    // for rows at the tile's borders and inside.
+    // (shapeRow: each Worley octave's candidates set up once per run of
+    // texels in a cell); every texel must be the field itself at the
+    // texel's centre, shape() point by point, bit for bit, at any size, for
+    // rows at the tile's borders and inside (runs cut at the cells and the
+    // wrap).
     for (std::int64_t seed : {1LL, 11LL, -5LL}) {
         const aerial::detail::CloudNoiseFields fields(seed);
         for (int size : {128, 40, 7}) {

@@ -120,30 +120,18 @@ struct WorleyLattice {
     /// 1 - F1 (distance to the nearest feature point, in cells, clamped to
     /// 1) at x in cell units: 1 at a feature point, billows around them.
     double billow(const glm::dvec3& x) const {
-        const glm::dvec3 cell = glm::floor(x);
-        const glm::dvec3 f = x - cell;
-        const int ix = int(cell.x), iy = int(cell.y), iz = int(cell.z);
-        double nearest2 = 3.0;
-        for (int dz = -1; dz <= 1; ++dz) {
-            const int rowZ = wrapPow2(iz + dz, period) * period;
-            for (int dy = -1; dy <= 1; ++dy) {
-                const int row = (rowZ + wrapPow2(iy + dy, period)) * period;
-                for (int dx = -1; dx <= 1; ++dx) {
-                    const glm::dvec3& jitter = points[std::size_t(row + wrapPow2(ix + dx, period))];
-                    const double ex = dx + jitter.x - f.x, ey = dy + jitter.y - f.y, ez = dz + jitter.z - f.z;
-                    nearest2 = std::min(nearest2, ex * ex + ey * ey + ez * ez);
-                }
-            }
-        }
-        return 1.0 - std::min(1.0, std::sqrt(nearest2));
+        double nearest2 = 0.0, out = 0.0;
+        billowRow(&x.x, x.y, x.z, 1, &nearest2, &out);
+        return out;
     }
 
-    /// billow() at (x[i], y, z) for the n points of a row, bit for bit: the
-    /// 27 candidates of each run of points in one cell are set up once (their
-    /// dx + jitter.x and the row's fixed squares ey^2, ez^2, which billow()
-    /// adds in the same order), then every point of the run goes through
-    /// each candidate together, a loop over the points that vectorises.
-    /// `nearest2` is scratch of n doubles.
+    /// billow() at (x[i], y, z) for the n points of a row: the 27 candidates
+    /// of each run of points in one cell (the cell and its neighbours) are
+    /// set up once (their dx + jitter.x and the row's fixed squares ey^2,
+    /// ez^2), then every point of the run goes through each candidate
+    /// together, a loop over the points that vectorises. A point's result
+    /// does not depend on the others in the row. `nearest2` is scratch of n
+    /// doubles.
     void billowRow(const double* x, double y, double z, int n, double* nearest2, double* out) const {
         const double cy = std::floor(y), cz = std::floor(z);
         const double fy = y - cy, fz = z - cz;
