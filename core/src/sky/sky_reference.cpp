@@ -96,44 +96,31 @@ RayExtent rayExtent(const AtmosphereParams& air, const glm::dvec3& p, const glm:
 }
 
 /// Optical depth [dimensionless], RGB, of one piece: composite Simpson in u.
-/// The nodes go in batches: heights and exponents first, then the
-/// exponentials, then the sum in node order. Each node's arithmetic is that
-/// of heightOf, densitiesAt and extinctionOf, so the result is bit for bit
-/// what one loop over the nodes gives, in about 3/4 of its time (the first
-/// loop vectorises, core/CMakeLists.txt; the exponentials no longer wait on
-/// each node's square root and divisions; most of every reference integral
-/// is spent here).
+/// The nodes go in batches: their heights first (a loop that vectorises,
+/// core/CMakeLists.txt), then their densities, then the sum in node order,
+/// so the exponentials no longer wait on each node's square root (about
+/// 3/4 of the time of one loop over the nodes, the same values; most of
+/// every reference integral is spent here).
 glm::dvec3 pieceOpticalDepth(const AtmosphereParams& air, const glm::dvec3& p, const glm::dvec3& dir,
                              const Piece& piece, int steps) {
     const int n = evenSteps(steps);
     const double du = 1.0 / n;
-    const bool rayleigh = air.rayleighScaleHeight > 0.0, mie = air.mieScaleHeight > 0.0;
-    const bool ozone = air.ozoneWidth > 0.0;
-    const double halfWidth = 0.5 * air.ozoneWidth;
     constexpr int kBatch = 32;
-    double densityR[kBatch], densityM[kBatch], densityO[kBatch], dsdu[kBatch];
+    double height[kBatch], dsdu[kBatch];
+    Densities density[kBatch];
     glm::dvec3 sum(0.0);
     for (int first = 0; first <= n; first += kBatch) {
         const int count = std::min(kBatch, n + 1 - first);
         for (int i = 0; i < count; ++i) {
             const double u = (first + i) * du;
-            const double s = piece.at(u);
-            const glm::dvec3 x = p + dir * s;
-            const double h = std::max(std::sqrt(dot3(x, x)) - air.planetRadius, 0.0);  // heightOf
-            densityR[i] = rayleigh ? -h / air.rayleighScaleHeight : 0.0;  // exponents, for now
-            densityM[i] = mie ? -h / air.mieScaleHeight : 0.0;
-            densityO[i] = ozone ? std::max(0.0, 1.0 - std::abs(h - air.ozoneCenterHeight) / halfWidth) : 0.0;
+            height[i] = heightOf(air, p + dir * piece.at(u));
             dsdu[i] = piece.derivative(u);
         }
-        for (int i = 0; i < count; ++i) {
-            if (rayleigh) densityR[i] = std::exp(densityR[i]);
-            if (mie) densityM[i] = std::exp(densityM[i]);
-        }
+        for (int i = 0; i < count; ++i) density[i] = densitiesAt(air, height[i]);
         for (int i = 0; i < count; ++i) {
             const int k = first + i;
             const double weight = (k == 0 || k == n) ? 1.0 : (k % 2 == 1 ? 4.0 : 2.0);
-            const Densities d{densityR[i], densityM[i], densityO[i]};
-            sum += weight * extinctionOf(air, d) * dsdu[i];
+            sum += weight * extinctionOf(air, density[i]) * dsdu[i];
         }
     }
     return sum * (du / 3.0);
